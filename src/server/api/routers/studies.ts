@@ -1,0 +1,85 @@
+import { TRPCError } from "@trpc/server";
+import { and, desc, eq, sql } from "drizzle-orm";
+import { z } from "zod";
+import { audit } from "../../audit";
+import { experiments, participants, studies, studyMembers, trials } from "../../db/schema";
+import { guarded, router } from "../trpc";
+import { id, text } from "../validation";
+
+const STATUS = ["draft", "active", "completed", "archived"] as const;
+
+export const studiesRouter = router({
+  /** The studies I am a member of, with my role: nobody sees any other. */
+  mine: guarded("account.read").query(async ({ ctx }) => {
+    return ctx.db
+      .select({
+        id: studies.id,
+        title: studies.title,
+        description: studies.description,
+        status: studies.status,
+        role: studyMembers.role,
+        updatedAt: studies.updatedAt,
+        experimentCount: sql<number>`(select count(*)::int from ${experiments} where ${experiments.studyId} = ${studies.id})`,
+        trialCount: sql<number>`(select count(*)::int from ${trials} where ${trials.studyId} = ${studies.id})`,
+        participantCount: sql<number>`(select count(*)::int from ${participants} where ${participants.studyId} = ${studies.id})`,
+      })
+      .from(studies)
+      .innerJoin(studyMembers, and(eq(studyMembers.studyId, studies.id), eq(studyMembers.userId, ctx.user.id)))
+      .orderBy(desc(studies.updatedAt));
+  }),
+
+  get: guarded("study.read")
+    .input(z.object({ studyId: id }))
+    .query(async ({ ctx, input }) => {
+      const [study] = await ctx.db.select().from(studies).where(eq(studies.id, input.studyId));
+      if (!study) throw new TRPCError({ code: "NOT_FOUND", message: "Study not found." });
+      return { ...study, myRole: ctx.studyRole! };
+    }),
+
+  create: guarded("study.create")
+    .input(z.object({ title: text("Title", 200), description: z.string().max(5000).default("") }))
+    .mutation(async ({ ctx, input }) => {
+      return ctx.db.transaction(async (tx) => {
+        const [study] = await tx
+          .insert(studies)
+          .values({ title: input.title, description: input.description, createdBy: ctx.user.id })
+          .returning();
+        await tx.insert(studyMembers).values({ studyId: study!.id, userId: ctx.user.id, role: "owner" });
+        await audit(tx, { actorId: ctx.user.id, studyId: study!.id, action: "study.create", target: study!.id });
+        return study!;
+      });
+    }),
+
+  update: guarded("study.update")
+    .input(
+      z.object({
+        studyId: id,
+        title: text("Title", 200).optional(),
+        description: z.string().max(5000).optional(),
+        status: z.enum(STATUS).optional(),
+      }),
+    )
+    .mutation(async ({ ctx, input }) => {
+      const { studyId, ...changes } = input;
+      return ctx.db.transaction(async (tx) => {
+        const [study] = await tx
+          .update(studies)
+          .set({ ...changes, updatedAt: new Date() })
+          .where(eq(studies.id, studyId))
+          .returning();
+        await audit(tx, { actorId: ctx.user.id, studyId, action: "study.update", target: studyId, details: changes });
+        return study!;
+      });
+    }),
+
+  delete: guarded("study.delete")
+    .input(z.object({ studyId: id, confirmTitle: z.string() }))
+    .mutation(async ({ ctx, input }) => {
+      const [study] = await ctx.db.select().from(studies).where(eq(studies.id, input.studyId));
+      if (study!.title !== input.confirmTitle) {
+        throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: confirmTitle: type the study's exact title to delete it" });
+      }
+      await ctx.db.delete(studies).where(eq(studies.id, input.studyId));
+      return { deleted: input.studyId };
+    }),
+});

@@ -1,0 +1,30 @@
+// Every setting the server reads from its environment, in one place.
+// The README's configuration table lists the same variables.
+import { z } from "zod";
+
+const flag = z
+  .enum(["true", "false", "1", "0", "yes", "no"])
+  .transform((v) => v === "true" || v === "1" || v === "yes");
+
+const schema = z.object({
+  DATABASE_URL: z.string().url().optional(),
+  HRI_DATA_DIR: z.string().default("./data"),
+  HOST: z.string().default("127.0.0.1"),
+  PORT: z.coerce.number().int().min(0).max(65535).optional(),
+  BETTER_AUTH_SECRET: z.string().min(32, "must be at least 32 characters").optional(),
+  BETTER_AUTH_URL: z.string().url().optional(),
+  HRI_ALLOW_SIGNUP: flag.default(false),
+  HRI_SIGNIN_PER_MINUTE: z.coerce.number().int().min(1).default(10),
+  HRI_SEED_DEMO: flag.optional(),
+});
+
+export type Config = z.infer<typeof schema>;
+
+export function readConfig(env: NodeJS.ProcessEnv = process.env): Config {
+  const parsed = schema.safeParse(env);
+  if (!parsed.success) {
+    const lines = parsed.error.issues.map((i) => `  ${i.path.join(".")}: ${i.message}`);
+    throw new Error(`The environment has settings that cannot be used:\n${lines.join("\n")}`);
+  }
+  return parsed.data;
+}

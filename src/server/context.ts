@@ -1,0 +1,42 @@
+// The server's shared parts for the Next.js process, built once from the environment.
+import { readConfig } from "./config";
+import { createAuth, type Auth } from "./auth/auth";
+import { createDatabase, type Database } from "./db/client";
+import type { Context, SessionUser } from "./api/trpc";
+import { SYSTEM_ROLES, type SystemRole } from "@/core/access/policy";
+
+interface Server {
+  db: Database;
+  auth: Auth;
+}
+
+const globalForServer = globalThis as unknown as { hriServer?: Server };
+
+export function server(): Server {
+  if (globalForServer.hriServer) return globalForServer.hriServer;
+  const config = readConfig();
+  if (!config.DATABASE_URL) throw new Error("DATABASE_URL is not set: start the app with `npm start`.");
+  if (!config.BETTER_AUTH_SECRET) throw new Error("BETTER_AUTH_SECRET is not set: start the app with `npm start`.");
+  const { db } = createDatabase(config.DATABASE_URL);
+  const auth = createAuth({
+    db,
+    secret: config.BETTER_AUTH_SECRET,
+    baseURL: config.BETTER_AUTH_URL ?? `http://${config.HOST}:${config.PORT ?? 3000}`,
+    allowSignUp: config.HRI_ALLOW_SIGNUP,
+    signInPerMinute: config.HRI_SIGNIN_PER_MINUTE,
+  });
+  globalForServer.hriServer = { db, auth };
+  return globalForServer.hriServer;
+}
+
+export function toSessionUser(u: { id: string; name: string; email: string; role?: unknown; disabled?: unknown }): SessionUser | null {
+  if (u.disabled === true) return null;
+  const role = SYSTEM_ROLES.includes(u.role as SystemRole) ? (u.role as SystemRole) : "observer";
+  return { id: u.id, name: u.name, email: u.email, role };
+}
+
+export async function contextFromHeaders(headers: Headers): Promise<Context> {
+  const { db, auth } = server();
+  const session = await auth.api.getSession({ headers });
+  return { db, user: session ? toSessionUser(session.user) : null };
+}

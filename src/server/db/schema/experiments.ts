@@ -1,0 +1,75 @@
+import { sql } from "drizzle-orm";
+import { index, integer, jsonb, pgTable, text, timestamp, uniqueIndex } from "drizzle-orm/pg-core";
+import { user } from "./auth";
+import { createdAt, id, studies } from "./studies";
+
+export const experiments = pgTable(
+  "experiments",
+  {
+    id: id(),
+    studyId: text("study_id")
+      .notNull()
+      .references(() => studies.id, { onDelete: "cascade" }),
+    name: text("name").notNull(),
+    description: text("description").notNull().default(""),
+    // The robot plugin the experiment targets, by the plugin's robotId.
+    robotPluginId: text("robot_plugin_id").notNull(),
+    // Bumped by every saved design, so a save based on an older draft is refused.
+    draftRevision: integer("draft_revision").notNull().default(0),
+    createdAt: createdAt(),
+    updatedAt: timestamp("updated_at", { withTimezone: true }).notNull().defaultNow(),
+    updatedBy: text("updated_by").references(() => user.id, { onDelete: "set null" }),
+  },
+  (t) => [index("experiments_study_idx").on(t.studyId)],
+);
+
+export const steps = pgTable(
+  "steps",
+  {
+    id: id(),
+    experimentId: text("experiment_id")
+      .notNull()
+      .references(() => experiments.id, { onDelete: "cascade" }),
+    position: integer("position").notNull(),
+    name: text("name").notNull(),
+    description: text("description").notNull().default(""),
+  },
+  (t) => [index("steps_experiment_idx").on(t.experimentId, t.position)],
+);
+
+export const actions = pgTable(
+  "actions",
+  {
+    id: id(),
+    stepId: text("step_id")
+      .notNull()
+      .references(() => steps.id, { onDelete: "cascade" }),
+    position: integer("position").notNull(),
+    type: text("type").notNull(),
+    name: text("name").notNull().default(""),
+    parameters: jsonb("parameters").notNull().default(sql`'{}'::jsonb`),
+    // Actions sharing a group id start together.
+    parallelGroup: text("parallel_group"),
+  },
+  (t) => [index("actions_step_idx").on(t.stepId, t.position)],
+);
+
+// An immutable, published snapshot of an experiment's design.
+export const experimentVersions = pgTable(
+  "experiment_versions",
+  {
+    id: id(),
+    experimentId: text("experiment_id")
+      .notNull()
+      .references(() => experiments.id, { onDelete: "cascade" }),
+    version: integer("version").notNull(),
+    snapshot: jsonb("snapshot").notNull(),
+    // SHA-256 over the canonical JSON of the snapshot.
+    hash: text("hash").notNull(),
+    pluginId: text("plugin_id").notNull(),
+    pluginVersion: text("plugin_version"),
+    publishedBy: text("published_by").references(() => user.id, { onDelete: "set null" }),
+    publishedAt: timestamp("published_at", { withTimezone: true }).notNull().defaultNow(),
+  },
+  (t) => [uniqueIndex("experiment_versions_number_idx").on(t.experimentId, t.version)],
+);

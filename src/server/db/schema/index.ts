@@ -1,0 +1,5 @@
+export * from "./auth";
+export * from "./experiments";
+export * from "./plugins";
+export * from "./studies";
+export * from "./trials";

@@ -1,0 +1,71 @@
+import { sql } from "drizzle-orm";
+import { index, jsonb, pgTable, primaryKey, text, timestamp, uniqueIndex } from "drizzle-orm/pg-core";
+import { user } from "./auth";
+
+const id = () =>
+  text("id")
+    .primaryKey()
+    .$defaultFn(() => crypto.randomUUID());
+const createdAt = () => timestamp("created_at", { withTimezone: true }).notNull().defaultNow();
+
+export { id, createdAt };
+
+export const studies = pgTable("studies", {
+  id: id(),
+  title: text("title").notNull(),
+  description: text("description").notNull().default(""),
+  status: text("status", { enum: ["draft", "active", "completed", "archived"] })
+    .notNull()
+    .default("draft"),
+  createdBy: text("created_by").references(() => user.id, { onDelete: "set null" }),
+  createdAt: createdAt(),
+  updatedAt: timestamp("updated_at", { withTimezone: true }).notNull().defaultNow(),
+});
+
+export const studyMembers = pgTable(
+  "study_members",
+  {
+    studyId: text("study_id")
+      .notNull()
+      .references(() => studies.id, { onDelete: "cascade" }),
+    userId: text("user_id")
+      .notNull()
+      .references(() => user.id, { onDelete: "cascade" }),
+    role: text("role", { enum: ["owner", "researcher", "wizard", "observer"] }).notNull(),
+    addedAt: createdAt(),
+  },
+  (t) => [primaryKey({ columns: [t.studyId, t.userId] }), index("study_members_user_idx").on(t.userId)],
+);
+
+export const participants = pgTable(
+  "participants",
+  {
+    id: id(),
+    studyId: text("study_id")
+      .notNull()
+      .references(() => studies.id, { onDelete: "cascade" }),
+    code: text("code").notNull(),
+    consentStatus: text("consent_status", { enum: ["pending", "given", "declined", "withdrawn"] })
+      .notNull()
+      .default("pending"),
+    consentDate: timestamp("consent_date", { withTimezone: true }),
+    notes: text("notes").notNull().default(""),
+    createdAt: createdAt(),
+  },
+  (t) => [uniqueIndex("participants_study_code_idx").on(t.studyId, t.code)],
+);
+
+// Who changed what, for administrative changes (members, roles, users, plugins).
+export const auditLog = pgTable(
+  "audit_log",
+  {
+    id: id(),
+    at: timestamp("at", { withTimezone: true }).notNull().defaultNow(),
+    actorId: text("actor_id").references(() => user.id, { onDelete: "set null" }),
+    studyId: text("study_id").references(() => studies.id, { onDelete: "cascade" }),
+    action: text("action").notNull(),
+    target: text("target").notNull(),
+    details: jsonb("details").notNull().default(sql`'{}'::jsonb`),
+  },
+  (t) => [index("audit_log_study_idx").on(t.studyId, t.at)],
+);

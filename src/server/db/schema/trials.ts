@@ -1,0 +1,121 @@
+import { sql } from "drizzle-orm";
+import {
+  bigint,
+  bigserial,
+  boolean,
+  doublePrecision,
+  index,
+  integer,
+  jsonb,
+  pgTable,
+  primaryKey,
+  text,
+  timestamp,
+} from "drizzle-orm/pg-core";
+import { user } from "./auth";
+import { experimentVersions, experiments } from "./experiments";
+import { createdAt, id, participants, studies } from "./studies";
+
+export const trials = pgTable(
+  "trials",
+  {
+    id: id(),
+    studyId: text("study_id")
+      .notNull()
+      .references(() => studies.id, { onDelete: "cascade" }),
+    experimentId: text("experiment_id")
+      .notNull()
+      .references(() => experiments.id, { onDelete: "cascade" }),
+    // Null only for a rehearsal, which runs the snapshot of the draft below.
+    versionId: text("version_id").references(() => experimentVersions.id, { onDelete: "restrict" }),
+    rehearsalSnapshot: jsonb("rehearsal_snapshot"),
+    participantId: text("participant_id").references(() => participants.id, { onDelete: "restrict" }),
+    wizardId: text("wizard_id").references(() => user.id, { onDelete: "set null" }),
+    status: text("status", { enum: ["scheduled", "in_progress", "paused", "completed", "aborted"] })
+      .notNull()
+      .default("scheduled"),
+    isRehearsal: boolean("is_rehearsal").notNull().default(false),
+    t0: timestamp("t0", { withTimezone: true }),
+    endedAt: timestamp("ended_at", { withTimezone: true }),
+    createdBy: text("created_by").references(() => user.id, { onDelete: "set null" }),
+    createdAt: createdAt(),
+  },
+  (t) => [index("trials_study_idx").on(t.studyId, t.createdAt)],
+);
+
+// The append-only log a trial's state is folded from.
+export const trialEvents = pgTable(
+  "trial_events",
+  {
+    trialId: text("trial_id")
+      .notNull()
+      .references(() => trials.id, { onDelete: "cascade" }),
+    seq: integer("seq").notNull(),
+    type: text("type").notNull(),
+    serverTime: timestamp("server_time", { withTimezone: true, precision: 6 }).notNull(),
+    // Milliseconds since the trial's t0; null for events before the start.
+    relMs: doublePrecision("rel_ms"),
+    actorId: text("actor_id").references(() => user.id, { onDelete: "set null" }),
+    stepId: text("step_id"),
+    actionId: text("action_id"),
+    payload: jsonb("payload").notNull().default(sql`'{}'::jsonb`),
+    deviation: boolean("deviation").notNull().default(false),
+  },
+  (t) => [primaryKey({ columns: [t.trialId, t.seq] })],
+);
+
+// High-rate robot data (joint states, battery…), written in batches.
+export const trialSamples = pgTable(
+  "trial_samples",
+  {
+    id: bigserial("id", { mode: "number" }).primaryKey(),
+    trialId: text("trial_id")
+      .notNull()
+      .references(() => trials.id, { onDelete: "cascade" }),
+    topic: text("topic").notNull(),
+    relMs: doublePrecision("rel_ms").notNull(),
+    data: jsonb("data").notNull(),
+  },
+  (t) => [index("trial_samples_trial_idx").on(t.trialId, t.topic, t.relMs)],
+);
+
+export const annotations = pgTable(
+  "annotations",
+  {
+    id: id(),
+    trialId: text("trial_id")
+      .notNull()
+      .references(() => trials.id, { onDelete: "cascade" }),
+    authorId: text("author_id").references(() => user.id, { onDelete: "set null" }),
+    relMs: doublePrecision("rel_ms").notNull(),
+    label: text("label").notNull(),
+    note: text("note").notNull().default(""),
+    createdAt: createdAt(),
+    updatedAt: timestamp("updated_at", { withTimezone: true }).notNull().defaultNow(),
+  },
+  (t) => [index("annotations_trial_idx").on(t.trialId, t.relMs)],
+);
+
+export const mediaRecordings = pgTable(
+  "media_recordings",
+  {
+    id: id(),
+    trialId: text("trial_id")
+      .notNull()
+      .references(() => trials.id, { onDelete: "cascade" }),
+    kind: text("kind", { enum: ["video", "audio"] }).notNull(),
+    storageKey: text("storage_key").notNull(),
+    mimeType: text("mime_type").notNull(),
+    sizeBytes: bigint("size_bytes", { mode: "number" }).notNull().default(0),
+    status: text("status", { enum: ["recording", "complete", "failed"] })
+      .notNull()
+      .default("recording"),
+    // Recording start minus the trial's t0, as measured.
+    offsetMs: doublePrecision("offset_ms"),
+    durationMs: doublePrecision("duration_ms"),
+    chunkCount: integer("chunk_count").notNull().default(0),
+    createdAt: createdAt(),
+    finishedAt: timestamp("finished_at", { withTimezone: true }),
+  },
+  (t) => [index("media_recordings_trial_idx").on(t.trialId)],
+);
