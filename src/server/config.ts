@@ -16,6 +16,8 @@ const schema = z.object({
   HRI_ALLOW_SIGNUP: flag.default(false),
   HRI_SIGNIN_PER_MINUTE: z.coerce.number().int().min(1).default(10),
   HRI_SEED_DEMO: flag.optional(),
+  // One password for every demo account (workshops, tests); random when unset.
+  HRI_DEMO_PASSWORD: z.string().min(8, "must be at least 8 characters").optional(),
 });
 
 export type Config = z.infer<typeof schema>;

@@ -17,6 +17,8 @@ export const studies = pgTable("studies", {
   status: text("status", { enum: ["draft", "active", "completed", "archived"] })
     .notNull()
     .default("draft"),
+  // Study-level switches (e.g. consent gating, blinding), versioned by the app.
+  settings: jsonb("settings").notNull().default(sql`'{}'::jsonb`),
   createdBy: text("created_by").references(() => user.id, { onDelete: "set null" }),
   createdAt: createdAt(),
   updatedAt: timestamp("updated_at", { withTimezone: true }).notNull().defaultNow(),

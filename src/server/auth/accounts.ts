@@ -1,0 +1,26 @@
+// Accounts are made by administrators (and the demo seed), not by sign-up.
+import type { SystemRole } from "@/core/access/policy";
+import type { Database } from "../db/client";
+import { account, user } from "../db/schema";
+import type { Auth } from "./auth";
+
+export interface NewAccount {
+  name: string;
+  email: string;
+  password: string;
+  role: SystemRole;
+}
+
+/** Creates a user with an email/password credential, hashed the way better-auth checks it. */
+export async function createAccount(auth: Auth, db: Database, input: NewAccount) {
+  const hash = await (await auth.$context).password.hash(input.password);
+  const id = crypto.randomUUID();
+  return db.transaction(async (tx) => {
+    const [created] = await tx
+      .insert(user)
+      .values({ id, name: input.name, email: input.email.toLowerCase(), role: input.role, emailVerified: true })
+      .returning();
+    await tx.insert(account).values({ id: crypto.randomUUID(), accountId: id, providerId: "credential", userId: id, password: hash });
+    return created!;
+  });
+}

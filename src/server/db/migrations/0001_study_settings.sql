@@ -1,0 +1,1 @@
+ALTER TABLE "studies" ADD COLUMN "settings" jsonb DEFAULT '{}'::jsonb NOT NULL;

@@ -1,0 +1,95 @@
+// The demo data for a first start: one account per role and a study holding
+// the Interactive Storyteller. Never touches a database that holds data.
+import { randomBytes } from "node:crypto";
+import { sql } from "drizzle-orm";
+import type { SystemRole, StudyRole } from "@/core/access/policy";
+import type { Auth } from "../auth/auth";
+import { createAccount } from "../auth/accounts";
+import type { Database } from "../db/client";
+import { actions, experiments, participants, steps, studies, studyMembers, user } from "../db/schema";
+import { STORYTELLER, STORYTELLER_STEPS } from "./storyteller";
+
+export interface DemoAccount {
+  email: string;
+  password: string;
+  systemRole: SystemRole;
+  studyRole: StudyRole | null;
+}
+
+const PEOPLE: Array<{ name: string; email: string; systemRole: SystemRole; studyRole: StudyRole | null }> = [
+  { name: "Ada Admin", email: "admin@demo.hristudio", systemRole: "administrator", studyRole: null },
+  { name: "Rosa Researcher", email: "researcher@demo.hristudio", systemRole: "researcher", studyRole: "owner" },
+  { name: "Wim Wizard", email: "wizard@demo.hristudio", systemRole: "wizard", studyRole: "wizard" },
+  { name: "Olu Observer", email: "observer@demo.hristudio", systemRole: "observer", studyRole: "observer" },
+];
+
+export async function databaseIsEmpty(db: Database): Promise<boolean> {
+  const [row] = await db.select({ n: sql<number>`count(*)::int` }).from(user);
+  return row!.n === 0;
+}
+
+/** Seeds the demo, or returns null if the database already holds users. */
+export async function seedDemo(db: Database, auth: Auth, password?: string): Promise<DemoAccount[] | null> {
+  if (!(await databaseIsEmpty(db))) return null;
+  const accounts: DemoAccount[] = [];
+  const ids = new Map<string, string>();
+  for (const person of PEOPLE) {
+    const pw = password ?? randomBytes(9).toString("base64url");
+    const created = await createAccount(auth, db, { name: person.name, email: person.email, password: pw, role: person.systemRole });
+    ids.set(person.email, created.id);
+    accounts.push({ email: person.email, password: pw, systemRole: person.systemRole, studyRole: person.studyRole });
+  }
+  const owner = ids.get("researcher@demo.hristudio")!;
+
+  await db.transaction(async (tx) => {
+    const [study] = await tx
+      .insert(studies)
+      .values({
+        title: "Storytelling and memory (demo)",
+        description: "A demo study: does the way a robot tells a story change what a listener remembers?",
+        status: "active",
+        createdBy: owner,
+      })
+      .returning();
+    await tx.insert(studyMembers).values(
+      PEOPLE.filter((p) => p.studyRole).map((p) => ({ studyId: study!.id, userId: ids.get(p.email)!, role: p.studyRole! })),
+    );
+    const [experiment] = await tx
+      .insert(experiments)
+      .values({ ...STORYTELLER, studyId: study!.id, updatedBy: owner })
+      .returning();
+    const stepIds = new Map(STORYTELLER_STEPS.map((s) => [s.key, crypto.randomUUID()]));
+    await tx.insert(steps).values(
+      STORYTELLER_STEPS.map((s, position) => ({
+        id: stepIds.get(s.key)!,
+        experimentId: experiment!.id,
+        position,
+        name: s.name,
+        description: s.description,
+      })),
+    );
+    await tx.insert(actions).values(
+      STORYTELLER_STEPS.flatMap((s) =>
+        s.actions.map((a, position) => ({
+          stepId: stepIds.get(s.key)!,
+          position,
+          type: a.type,
+          name: a.name,
+          parameters: resolveStepKeys(a.parameters, stepIds),
+          parallelGroup: a.parallelGroup ?? null,
+        })),
+      ),
+    );
+    await tx.insert(participants).values(
+      ["P001", "P002", "P003"].map((code) => ({ studyId: study!.id, code, consentStatus: "given" as const, consentDate: new Date() })),
+    );
+  });
+  return accounts;
+}
+
+/** "@key" strings in branch targets become the id of the step with that key. */
+function resolveStepKeys(value: Record<string, unknown>, stepIds: Map<string, string>): Record<string, unknown> {
+  return JSON.parse(
+    JSON.stringify(value, (_k, v) => (typeof v === "string" && v.startsWith("@") && stepIds.has(v.slice(1)) ? stepIds.get(v.slice(1)) : v)),
+  );
+}
