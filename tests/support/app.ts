@@ -1,0 +1,95 @@
+// Runs the real launcher (`src/launcher/start.ts` under bun), as `npm start`
+// does, with its own data folder and port: embedded PostgreSQL, migrations,
+// demo seed and the built web app.
+import { spawn, type ChildProcess } from "node:child_process";
+import { mkdirSync, mkdtempSync } from "node:fs";
+import { join, resolve } from "node:path";
+import { freePort } from "../../src/server/db/embedded";
+
+const root = resolve(import.meta.dirname, "..", "..");
+export const BUN = join(root, "node_modules", "@oven", `bun-${process.platform}-${process.arch}`, "bin", "bun");
+export const DEMO_PASSWORD = "demo-password-for-tests";
+
+export interface RunningApp {
+  url: string;
+  dataDir: string;
+  process: ChildProcess;
+  output: () => string;
+  /** Ctrl+C: the launcher stops the web app and PostgreSQL cleanly. */
+  stop(): Promise<void>;
+  /**
+   * kill -9, as a crash would: of the launcher alone (its web app and
+   * PostgreSQL run on as orphans), or of every process it started.
+   */
+  crash(what: "launcher" | "everything"): Promise<void>;
+}
+
+export function newDataDir(): string {
+  mkdirSync(join(root, ".tmp"), { recursive: true });
+  return mkdtempSync(join(root, ".tmp", "app-"));
+}
+
+export async function startApp(options: { dataDir?: string; env?: Record<string, string> } = {}): Promise<RunningApp> {
+  const dataDir = options.dataDir ?? newDataDir();
+  const port = await freePort();
+  let output = "";
+  const child = spawn(BUN, ["run", "src/launcher/start.ts"], {
+    cwd: root,
+    detached: true,
+    stdio: ["ignore", "pipe", "pipe"],
+    env: {
+      ...process.env,
+      DATABASE_URL: "",
+      HRI_DATA_DIR: dataDir,
+      PORT: String(port),
+      HRI_DEMO_PASSWORD: DEMO_PASSWORD,
+      HRI_SIGNIN_PER_MINUTE: "1000",
+      ...options.env,
+    },
+  });
+  child.stdout!.on("data", (d) => (output += d));
+  child.stderr!.on("data", (d) => (output += d));
+  const url = await new Promise<string>((ok, fail) => {
+    const timer = setTimeout(() => fail(new Error(`The app did not start in time:\n${output}`)), 120_000);
+    child.stdout!.on("data", () => {
+      const m = /running at (http:\/\/\S+)/.exec(output);
+      if (m) {
+        clearTimeout(timer);
+        ok(m[1]!);
+      }
+    });
+    child.on("exit", (code) => {
+      clearTimeout(timer);
+      fail(new Error(`The launcher exited with ${code}:\n${output}`));
+    });
+  });
+  await waitForHttp(`${url}/api/auth/ok`);
+  const exited = new Promise<void>((ok) => child.once("exit", () => ok()));
+  return {
+    url,
+    dataDir,
+    process: child,
+    output: () => output,
+    async stop() {
+      if (child.exitCode === null) child.kill("SIGINT");
+      await exited;
+    },
+    async crash(what) {
+      process.kill(what === "launcher" ? child.pid! : -child.pid!, "SIGKILL");
+      await exited;
+    },
+  };
+}
+
+async function waitForHttp(url: string) {
+  for (let i = 0; i < 200; i++) {
+    try {
+      const res = await fetch(url);
+      if (res.ok) return;
+    } catch {
+      // Not listening yet.
+    }
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  throw new Error(`${url} never answered`);
+}

@@ -1,0 +1,19 @@
+// Talks to a running app the way a browser does: a session cookie and tRPC over HTTP.
+import { createTRPCClient, httpLink } from "@trpc/client";
+import type { AppRouter } from "../../src/server/api/root";
+
+export async function signIn(baseUrl: string, email: string, password: string): Promise<string> {
+  const res = await fetch(`${baseUrl}/api/auth/sign-in/email`, {
+    method: "POST",
+    headers: { "content-type": "application/json", origin: baseUrl },
+    body: JSON.stringify({ email, password }),
+  });
+  if (!res.ok) throw new Error(`Sign-in as ${email} failed: ${res.status} ${await res.text()}`);
+  return res.headers.getSetCookie().map((c) => c.split(";")[0]).join("; ");
+}
+
+export function apiClient(baseUrl: string, cookie?: string) {
+  return createTRPCClient<AppRouter>({
+    links: [httpLink({ url: `${baseUrl}/api/trpc`, headers: () => (cookie ? { cookie } : {}) })],
+  });
+}
