@@ -1,5 +1,7 @@
 // Nothing a request confirmed is lost when the app dies with kill -9, and the
 // next start copes with whatever the dead one left behind.
+import { existsSync } from "node:fs";
+import { join } from "node:path";
 import { afterAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { apiClient, signIn } from "../support/http";
@@ -41,5 +43,12 @@ describe.sequential("the app after kill -9", () => {
     // The demo seed ran once, on the empty database only.
     expect(titles.filter((t) => t === "Storytelling and memory (demo)")).toHaveLength(1);
     expect(app!.output()).not.toContain("Demo accounts");
+  });
+
+  it("stops the embedded PostgreSQL cleanly on Ctrl+C", async () => {
+    const { dataDir } = app!;
+    await app!.stop();
+    expect(existsSync(join(dataDir, "postgres", "postmaster.pid"))).toBe(false);
+    expect(app!.output()).toContain("Stopping");
   });
 });
