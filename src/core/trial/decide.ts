@@ -1,0 +1,180 @@
+// The trial engine: (state, command) → the events it causes, or a rejection
+// the wizard can read. Pure: the runtime supplies ids, clock and robot.
+import { answerOptions, branchTarget, findAction, findStep, nextUnit } from "./protocol";
+import type { Command, Decision, DeviationKind, EngineEvent, ProtocolAction, TrialProtocol, TrialState } from "./types";
+
+const ok = (...events: EngineEvent[]): Decision => ({ ok: true, events });
+const no = (reason: string): Decision => ({ ok: false, reason });
+
+const FINISHED = new Set(["done", "failed", "timed_out", "skipped"]);
+
+export function decide(protocol: TrialProtocol, state: TrialState, command: Command): Decision {
+  switch (command.kind) {
+    case "start": {
+      if (state.status !== "scheduled") return no("This trial has already started.");
+      const first = protocol.steps[0];
+      if (!first) return no("The protocol has no steps.");
+      return ok({ type: "trial.started" }, { type: "step.entered", stepId: first.id, via: "start" });
+    }
+    case "note":
+      if (!command.text.trim()) return no("The note is empty.");
+      return ok({ type: "note.added", text: command.text });
+    case "abort":
+      if (state.status === "completed" || state.status === "aborted") return no("This trial has already ended.");
+      return ok({ type: "trial.aborted", reason: command.reason });
+    case "emergency_stop":
+      if (state.status !== "in_progress" && state.status !== "paused") return no("The trial is not running.");
+      return ok({ type: "trial.emergency_stop" });
+    case "resume":
+      if (state.status !== "paused") return no("The trial is not paused.");
+      return ok({ type: "trial.resumed" });
+    case "dispatched":
+    case "completed":
+    case "failed":
+    case "timed_out":
+      return robotReport(state, command);
+  }
+  if (state.status === "paused") return no("The trial is paused: resume it first.");
+  if (state.status !== "in_progress") return no("The trial is not running.");
+  switch (command.kind) {
+    case "pause":
+      return ok({ type: "trial.paused" });
+    case "complete":
+      return ok({ type: "trial.completed", ...(reachedEnd(protocol, state) ? {} : { deviation: "ended_early" as const }) });
+    case "next":
+      return next(protocol, state);
+    case "trigger":
+      return trigger(protocol, state, command.actionId);
+    case "skip":
+      return skip(protocol, state, command.actionId);
+    case "answer":
+      return answer(protocol, state, command.actionId, command.optionId);
+    case "jump": {
+      const target = findStep(protocol, command.stepId);
+      if (!target) return no("That step is not in this protocol.");
+      if (command.stepId === state.currentStepId) return no("The trial is already at that step.");
+      return ok({ type: "step.entered", stepId: command.stepId, via: "manual_jump", deviation: "manual_jump" });
+    }
+    case "unscripted":
+      if (state.actions[command.actionId]) return no("That action id is already used.");
+      return ok({
+        type: "action.requested",
+        stepId: state.currentStepId,
+        actionId: command.actionId,
+        actionType: command.actionType,
+        parameters: command.parameters,
+        scripted: false,
+        deviation: "unscripted",
+      });
+  }
+}
+
+function next(protocol: TrialProtocol, state: TrialState): Decision {
+  const unit = nextUnit(protocol, state);
+  if (unit.length > 0) return request(protocol, state, unit, undefined);
+  const current = findStep(protocol, state.currentStepId)!;
+  const following = protocol.steps[current.index + 1];
+  if (!following) return ok({ type: "trial.completed" });
+  return ok({ type: "step.entered", stepId: following.id, via: "next" });
+}
+
+function trigger(protocol: TrialProtocol, state: TrialState, actionId: string): Decision {
+  const found = findAction(protocol, actionId);
+  if (!found) return no("That action is not in this protocol; use an unscripted action instead.");
+  if (found.step.id !== state.currentStepId) return no(`"${found.action.name ?? found.action.type}" belongs to another step: jump to "${found.step.name}" first.`);
+  if (state.actions[actionId]?.status !== "waiting") return no(`"${found.action.name ?? found.action.type}" has already run.`);
+  const inTurn = nextUnit(protocol, state).some((a) => a.id === actionId);
+  return request(protocol, state, [found.action], inTurn ? undefined : "out_of_order");
+}
+
+function request(protocol: TrialProtocol, state: TrialState, unit: ProtocolAction[], deviation: DeviationKind | undefined): Decision {
+  const stepId = state.currentStepId!;
+  const events: EngineEvent[] = [];
+  for (const action of unit) {
+    if (action.type === "record_answer") {
+      const labels = answerOptions(action).map((o) => o.label).join(" or ");
+      return no(`Record the participant's answer: ${labels}.`);
+    }
+    if (action.type === "branch") return no("This branch follows the recorded answer: record the answer first.");
+    events.push({
+      type: "action.requested",
+      stepId,
+      actionId: action.id,
+      actionType: action.type,
+      parameters: action.parameters,
+      scripted: true,
+      ...(deviation ? { deviation } : {}),
+    });
+    // Blocks the wizard carries out alone finish as they start.
+    if (action.type === "wizard_instruction") events.push({ type: "action.completed", actionId: action.id });
+    if (action.type === "end_trial") {
+      events.push({ type: "action.completed", actionId: action.id }, { type: "trial.completed" });
+      break;
+    }
+  }
+  return ok(...events);
+}
+
+function skip(protocol: TrialProtocol, state: TrialState, actionId: string | undefined): Decision {
+  const targets = actionId ? [findAction(protocol, actionId)?.action] : nextUnit(protocol, state);
+  const stepId = state.currentStepId!;
+  const events: EngineEvent[] = [];
+  for (const action of targets) {
+    if (!action || findAction(protocol, action.id)!.step.id !== stepId) return no("Only actions of the current step can be skipped.");
+    if (state.actions[action.id]?.status !== "waiting") return no(`"${action.name ?? action.type}" has already run.`);
+    events.push({ type: "action.skipped", stepId, actionId: action.id, deviation: "skipped" });
+  }
+  if (events.length === 0) return no("Nothing is left to skip in this step.");
+  return ok(...events);
+}
+
+function answer(protocol: TrialProtocol, state: TrialState, actionId: string, optionId: string): Decision {
+  const found = findAction(protocol, actionId);
+  if (!found || found.action.type !== "record_answer") return no("That is not a question of this protocol.");
+  if (found.step.id !== state.currentStepId) return no(`That question belongs to "${found.step.name}", not the current step.`);
+  if (state.actions[actionId]?.status !== "waiting") return no("The answer to this question is already recorded.");
+  const option = answerOptions(found.action).find((o) => o.id === optionId);
+  if (!option) return no(`"${optionId}" is not one of this question's answers.`);
+  const inTurn = nextUnit(protocol, state).some((a) => a.id === actionId);
+  const stepId = found.step.id;
+  const events: EngineEvent[] = [
+    { type: "answer.recorded", stepId, actionId, optionId, label: option.label, ...(inTurn ? {} : { deviation: "out_of_order" as const }) },
+  ];
+  // A branch right after the question resolves from the answer by itself.
+  const actions = found.step.actions;
+  const branch = actions[actions.indexOf(found.action) + 1];
+  if (branch?.type === "branch" && state.actions[branch.id]?.status === "waiting") {
+    const target = branchTarget(branch, optionId);
+    if (target && findStep(protocol, target)) {
+      events.push(
+        { type: "branch.resolved", stepId, actionId: branch.id, optionId, targetStepId: target },
+        { type: "step.entered", stepId: target, via: "branch" },
+      );
+    }
+  }
+  return ok(...events);
+}
+
+function robotReport(state: TrialState, command: Extract<Command, { kind: "dispatched" | "completed" | "failed" | "timed_out" }>): Decision {
+  const action = state.actions[command.actionId];
+  if (!action || action.status === "waiting") return no("The robot reported on an action that was never requested.");
+  if (FINISHED.has(action.status)) return no("The robot reported on an action that has already finished.");
+  switch (command.kind) {
+    case "dispatched":
+      if (action.status !== "requested") return no("That action was already dispatched.");
+      return ok({ type: "action.dispatched", actionId: command.actionId, ...(command.detail ? { detail: command.detail } : {}) });
+    case "completed":
+      return ok({ type: "action.completed", actionId: command.actionId, ...(command.detail ? { detail: command.detail } : {}) });
+    case "failed":
+      return ok({ type: "action.failed", actionId: command.actionId, reason: command.reason });
+    case "timed_out":
+      return ok({ type: "action.timed_out", actionId: command.actionId });
+  }
+}
+
+/** The protocol's end: the last step with nothing left waiting. */
+function reachedEnd(protocol: TrialProtocol, state: TrialState): boolean {
+  const current = findStep(protocol, state.currentStepId);
+  if (!current || current.index !== protocol.steps.length - 1) return false;
+  return current.step.actions.every((a) => state.actions[a.id]?.status !== "waiting");
+}

@@ -1,0 +1,117 @@
+import { describe, expect, it } from "vitest";
+import { apply, decide, fold, type Command, type EngineEvent, type TrialEvent, type TrialProtocol } from "./index";
+
+// A small Storyteller: speech and wave together, a pause, a question, a branch.
+const protocol: TrialProtocol = {
+  steps: [
+    {
+      id: "intro",
+      name: "Introduction",
+      actions: [
+        { id: "hello", type: "say", parameters: { text: "Hello." }, parallelGroup: "g1" },
+        { id: "wave", type: "wave", parameters: {}, parallelGroup: "g1" },
+        { id: "note", type: "wizard_instruction", parameters: { text: "Smile" } },
+      ],
+    },
+    {
+      id: "recall",
+      name: "Recall question",
+      actions: [
+        { id: "hold", type: "pause", parameters: { seconds: 2 } },
+        { id: "ask", type: "say", parameters: { text: "What color?" } },
+        { id: "answer", type: "record_answer", parameters: { options: [{ id: "correct", label: "red" }, { id: "incorrect", label: "other" }] } },
+        { id: "branch", type: "branch", parameters: { targets: { correct: "yes", incorrect: "no" } } },
+      ],
+    },
+    { id: "yes", name: "Correct", actions: [{ id: "nod", type: "nod", parameters: {} }, { id: "end-yes", type: "end_trial", parameters: {} }] },
+    { id: "no", name: "Incorrect", actions: [{ id: "shake", type: "head_shake", parameters: {} }, { id: "end-no", type: "end_trial", parameters: {} }] },
+  ],
+};
+
+/** Runs commands in order; returns the events of the last one, or its rejection. */
+function run(commands: Command[]) {
+  const log: TrialEvent[] = [];
+  let last: EngineEvent[] | string = [];
+  for (const command of commands) {
+    const decision = decide(protocol, fold(protocol, log), command);
+    if (!decision.ok) {
+      last = decision.reason;
+      continue;
+    }
+    last = decision.events;
+    for (const e of decision.events) log.push({ ...e, seq: log.length + 1, relMs: log.length * 10 });
+  }
+  return { last, log, state: fold(protocol, log) };
+}
+
+const start: Command[] = [{ kind: "start" }];
+const introDone: Command[] = [
+  ...start,
+  { kind: "next" },
+  { kind: "dispatched", actionId: "hello" },
+  { kind: "completed", actionId: "hello" },
+  { kind: "dispatched", actionId: "wave" },
+  { kind: "completed", actionId: "wave" },
+  { kind: "next" },
+];
+const atQuestion: Command[] = [...introDone, { kind: "next" }, { kind: "next" }, { kind: "next" }];
+
+const brief = (events: EngineEvent[] | string) =>
+  typeof events === "string" ? events : events.map((e) => [e.type, "actionId" in e ? e.actionId : "stepId" in e ? e.stepId : null, e.deviation ?? null]);
+
+describe("the trial engine", () => {
+  it.each<[string, Command[], unknown]>([
+    ["start enters the first step", start, [["trial.started", null, null], ["step.entered", "intro", null]]],
+    ["next starts a parallel group together", [...start, { kind: "next" }], [["action.requested", "hello", null], ["action.requested", "wave", null]]],
+    ["a wizard instruction finishes as it starts", [...introDone], [["action.requested", "note", null], ["action.completed", "note", null]]],
+    ["next on a finished step enters the following one", [...introDone, { kind: "next" }], [["step.entered", "recall", null]]],
+    ["a pause is requested; the clock completes it", [...introDone, { kind: "next" }, { kind: "next" }], [["action.requested", "hold", null]]],
+    ["the question must be answered, not skipped past by next", [...atQuestion, { kind: "next" }], "Record the participant's answer: red or other."],
+    [
+      "an answer resolves the branch to its step by itself",
+      [...atQuestion, { kind: "answer", actionId: "answer", optionId: "incorrect" }],
+      [["answer.recorded", "answer", null], ["branch.resolved", "branch", null], ["step.entered", "no", null]],
+    ],
+    ["an unknown answer is refused", [...atQuestion, { kind: "answer", actionId: "answer", optionId: "blue" }], '"blue" is not one of this question\'s answers.'],
+    ["skip marks a deviation", [...start, { kind: "skip", actionId: "wave" }], [["action.skipped", "wave", "skipped"]]],
+    ["skip with no action skips the whole next unit", [...start, { kind: "skip" }], [["action.skipped", "hello", "skipped"], ["action.skipped", "wave", "skipped"]]],
+    ["triggering a later action is out of order", [...start, { kind: "trigger", actionId: "note" }], [["action.requested", "note", "out_of_order"], ["action.completed", "note", null]]],
+    ["triggering the next action is in order", [...start, { kind: "trigger", actionId: "wave" }], [["action.requested", "wave", null]]],
+    ["an action of another step needs a jump first", [...start, { kind: "trigger", actionId: "nod" }], '"nod" belongs to another step: jump to "Correct" first.'],
+    ["a manual jump is a deviation", [...start, { kind: "jump", stepId: "yes" }], [["step.entered", "yes", "manual_jump"]]],
+    [
+      "an unscripted action is a deviation",
+      [...start, { kind: "unscripted", actionId: "u1", actionType: "say", parameters: { text: "Bless you" } }],
+      [["action.requested", "u1", "unscripted"]],
+    ],
+    ["end_trial completes the trial", [...atQuestion, { kind: "answer", actionId: "answer", optionId: "correct" }, { kind: "next" }, { kind: "next" }], [["action.requested", "end-yes", null], ["action.completed", "end-yes", null], ["trial.completed", null, null]]],
+    ["completing early is a deviation", [...start, { kind: "complete" }], [["trial.completed", null, "ended_early"]]],
+    ["a paused trial refuses next", [...start, { kind: "pause" }, { kind: "next" }], "The trial is paused: resume it first."],
+    ["resume continues a paused trial", [...start, { kind: "pause" }, { kind: "resume" }, { kind: "next" }], [["action.requested", "hello", null], ["action.requested", "wave", null]]],
+    ["emergency stop pauses the trial", [...start, { kind: "emergency_stop" }], [["trial.emergency_stop", null, null]]],
+    ["abort ends the trial", [...start, { kind: "abort", reason: "participant left" }], [["trial.aborted", null, null]]],
+    ["nothing runs after an abort", [...start, { kind: "abort", reason: "x" }, { kind: "next" }], "The trial is not running."],
+    ["a second start is refused", [...start, { kind: "start" }], "This trial has already started."],
+    ["a failure is recorded with its reason", [...start, { kind: "next" }, { kind: "failed", actionId: "hello", reason: "robot unreachable" }], [["action.failed", "hello", null]]],
+    ["a timeout is recorded", [...start, { kind: "next" }, { kind: "dispatched", actionId: "hello" }, { kind: "timed_out", actionId: "hello" }], [["action.timed_out", "hello", null]]],
+    ["a late completion after a timeout is refused", [...start, { kind: "next" }, { kind: "timed_out", actionId: "hello" }, { kind: "completed", actionId: "hello" }], "The robot reported on an action that has already finished."],
+    ["a report on an action never requested is refused", [...start, { kind: "completed", actionId: "hello" }], "The robot reported on an action that was never requested."],
+  ])("%s", (_name, commands, expected) => {
+    expect(brief(run(commands).last)).toEqual(expected);
+  });
+
+  it("resumes from its events: the fold of a log equals the state that produced it", () => {
+    const { log, state } = run([...atQuestion, { kind: "answer", actionId: "answer", optionId: "correct" }]);
+    // A runtime that crashed after event 5 folds those, then applies the rest as they come.
+    const resumed = log.slice(5).reduce(apply, fold(protocol, log.slice(0, 5)));
+    expect(resumed).toEqual(state);
+    expect(state.currentStepId).toBe("yes");
+    expect(state.answers).toEqual({ answer: "correct" });
+    expect(state.actions.hold!.status).toBe("requested");
+  });
+
+  it("times every action from its events", () => {
+    const { state } = run([...start, { kind: "next" }, { kind: "dispatched", actionId: "hello" }, { kind: "completed", actionId: "hello" }]);
+    expect(state.actions.hello).toEqual({ status: "done", requestedAt: 20, finishedAt: 50 });
+  });
+});

@@ -1,0 +1,89 @@
+// The trial engine's vocabulary: the protocol it runs, the events it writes,
+// the commands it accepts, and the state it folds events into.
+
+/** What the engine needs of a published protocol version (or a rehearsal's draft). */
+export interface TrialProtocol {
+  steps: Array<{
+    id: string;
+    name: string;
+    actions: Array<{ id: string; type: string; name?: string; parameters: Record<string, unknown>; parallelGroup?: string | null }>;
+  }>;
+}
+
+export type ProtocolAction = TrialProtocol["steps"][number]["actions"][number];
+
+/** Blocks that steer the trial rather than move the robot. */
+export const CONTROL_TYPES = ["record_answer", "branch", "end_trial", "wizard_instruction", "pause"] as const;
+
+export type DeviationKind = "skipped" | "out_of_order" | "unscripted" | "manual_jump" | "ended_early";
+
+export type EventBody =
+  | { type: "trial.started" }
+  | { type: "step.entered"; stepId: string; via: "start" | "next" | "branch" | "manual_jump" }
+  | {
+      type: "action.requested";
+      stepId: string | null;
+      actionId: string;
+      actionType: string;
+      parameters: Record<string, unknown>;
+      scripted: boolean;
+    }
+  | { type: "action.dispatched"; actionId: string; detail?: Record<string, unknown> }
+  | { type: "action.completed"; actionId: string; detail?: Record<string, unknown> }
+  | { type: "action.failed"; actionId: string; reason: string }
+  | { type: "action.timed_out"; actionId: string }
+  | { type: "action.skipped"; stepId: string; actionId: string }
+  | { type: "answer.recorded"; stepId: string; actionId: string; optionId: string; label: string }
+  | { type: "branch.resolved"; stepId: string; actionId: string; optionId: string; targetStepId: string }
+  | { type: "trial.paused" }
+  | { type: "trial.resumed" }
+  | { type: "trial.emergency_stop" }
+  | { type: "trial.aborted"; reason: string }
+  | { type: "trial.completed" }
+  | { type: "note.added"; text: string };
+
+/** An event as the engine produces it; the runtime adds seq, times and actor. */
+export type EngineEvent = EventBody & { deviation?: DeviationKind };
+
+/** An event as stored: what the fold reads. */
+export type TrialEvent = EngineEvent & { seq: number; relMs: number | null };
+
+export type Command =
+  | { kind: "start" }
+  | { kind: "next" }
+  | { kind: "skip"; actionId?: string }
+  | { kind: "trigger"; actionId: string }
+  | { kind: "answer"; actionId: string; optionId: string }
+  | { kind: "jump"; stepId: string }
+  | { kind: "unscripted"; actionId: string; actionType: string; parameters: Record<string, unknown> }
+  | { kind: "pause" }
+  | { kind: "resume" }
+  | { kind: "abort"; reason: string }
+  | { kind: "complete" }
+  | { kind: "emergency_stop" }
+  | { kind: "note"; text: string }
+  // What the robot side (or the clock, for pauses) reports back.
+  | { kind: "dispatched"; actionId: string; detail?: Record<string, unknown> }
+  | { kind: "completed"; actionId: string; detail?: Record<string, unknown> }
+  | { kind: "failed"; actionId: string; reason: string }
+  | { kind: "timed_out"; actionId: string };
+
+export type ActionStatus = "waiting" | "requested" | "running" | "done" | "failed" | "timed_out" | "skipped";
+
+export interface ActionState {
+  status: ActionStatus;
+  requestedAt: number | null;
+  finishedAt: number | null;
+}
+
+export interface TrialState {
+  status: "scheduled" | "in_progress" | "paused" | "completed" | "aborted";
+  emergencyStopped: boolean;
+  currentStepId: string | null;
+  /** Scripted and unscripted actions by id. */
+  actions: Record<string, ActionState>;
+  answers: Record<string, string>;
+  lastSeq: number;
+}
+
+export type Decision = { ok: true; events: EngineEvent[] } | { ok: false; reason: string };
