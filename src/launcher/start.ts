@@ -4,7 +4,6 @@ import { spawn, type ChildProcess } from "node:child_process";
 import { mkdirSync, writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { readConfig } from "../server/config";
-import { createAuth } from "../server/auth/auth";
 import { createDatabase } from "../server/db/client";
 import { freePort, startEmbeddedPostgres, type EmbeddedDatabase } from "../server/db/embedded";
 import { migrateDatabase } from "../server/db/migrate";
@@ -54,8 +53,7 @@ async function main() {
   const seedWanted = config.HRI_SEED_DEMO ?? !config.DATABASE_URL;
   if (seedWanted) {
     const { db, close } = createDatabase(databaseUrl, { max: 2 });
-    const auth = createAuth({ db, secret, baseURL, allowSignUp: false, signInPerMinute: config.HRI_SIGNIN_PER_MINUTE });
-    const accounts = await seedDemo(db, auth, config.HRI_DEMO_PASSWORD);
+    const accounts = await seedDemo(db, config.HRI_DEMO_PASSWORD);
     await close();
     if (accounts) printDemoAccounts(accounts, dataDir);
   }

@@ -1,8 +1,22 @@
-import { router } from "./trpc";
+import { accountRouter } from "./routers/account";
+import { adminRouter } from "./routers/admin";
+import { experimentsRouter } from "./routers/experiments";
+import { membersRouter } from "./routers/members";
+import { participantsRouter } from "./routers/participants";
 import { studiesRouter } from "./routers/studies";
+import { trialsRouter } from "./routers/trials";
+import { versionsRouter } from "./routers/versions";
+import { router } from "./trpc";
 
 export const appRouter = router({
+  account: accountRouter,
   studies: studiesRouter,
+  members: membersRouter,
+  experiments: experimentsRouter,
+  versions: versionsRouter,
+  participants: participantsRouter,
+  trials: trialsRouter,
+  admin: adminRouter,
 });
 
 export type AppRouter = typeof appRouter;

@@ -1,8 +1,8 @@
 // Accounts are made by administrators (and the demo seed), not by sign-up.
+import { hashPassword } from "better-auth/crypto";
 import type { SystemRole } from "@/core/access/policy";
 import type { Database } from "../db/client";
 import { account, user } from "../db/schema";
-import type { Auth } from "./auth";
 
 export interface NewAccount {
   name: string;
@@ -11,9 +11,9 @@ export interface NewAccount {
   role: SystemRole;
 }
 
-/** Creates a user with an email/password credential, hashed the way better-auth checks it. */
-export async function createAccount(auth: Auth, db: Database, input: NewAccount) {
-  const hash = await (await auth.$context).password.hash(input.password);
+/** A user with an email/password credential, hashed the way better-auth checks it (its default scrypt). */
+export async function createAccount(db: Database, input: NewAccount) {
+  const hash = await hashPassword(input.password);
   const id = crypto.randomUUID();
   return db.transaction(async (tx) => {
     const [created] = await tx

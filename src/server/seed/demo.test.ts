@@ -1,17 +1,15 @@
 import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { freshDatabase } from "../../../tests/support/db";
-import { createAuth } from "../auth/auth";
 import { actions, experiments, steps, studyMembers } from "../db/schema";
 import { seedDemo } from "./demo";
 
 describe("the demo seed", async () => {
   const { db, close } = await freshDatabase();
   afterAll(close);
-  const auth = createAuth({ db, secret: "x".repeat(32), baseURL: "http://127.0.0.1", allowSignUp: false, signInPerMinute: 10 });
 
   it("creates one account per role and the Storyteller study, with branch targets pointing at real steps", async () => {
-    const accounts = await seedDemo(db, auth);
+    const accounts = await seedDemo(db);
     expect(accounts!.map((a) => a.systemRole)).toEqual(["administrator", "researcher", "wizard", "observer"]);
     expect(new Set(accounts!.map((a) => a.password)).size).toBe(4);
     const [experiment] = await db.select().from(experiments);
@@ -25,7 +23,7 @@ describe("the demo seed", async () => {
   });
 
   it("never touches a database that already holds accounts", async () => {
-    expect(await seedDemo(db, auth)).toBeNull();
+    expect(await seedDemo(db)).toBeNull();
     expect(await db.select().from(experiments)).toHaveLength(1);
   });
 });

@@ -3,7 +3,6 @@
 import { randomBytes } from "node:crypto";
 import { sql } from "drizzle-orm";
 import type { SystemRole, StudyRole } from "@/core/access/policy";
-import type { Auth } from "../auth/auth";
 import { createAccount } from "../auth/accounts";
 import type { Database } from "../db/client";
 import { actions, experiments, participants, steps, studies, studyMembers, user } from "../db/schema";
@@ -29,13 +28,13 @@ export async function databaseIsEmpty(db: Database): Promise<boolean> {
 }
 
 /** Seeds the demo, or returns null if the database already holds users. */
-export async function seedDemo(db: Database, auth: Auth, password?: string): Promise<DemoAccount[] | null> {
+export async function seedDemo(db: Database, password?: string): Promise<DemoAccount[] | null> {
   if (!(await databaseIsEmpty(db))) return null;
   const accounts: DemoAccount[] = [];
   const ids = new Map<string, string>();
   for (const person of PEOPLE) {
     const pw = password ?? randomBytes(9).toString("base64url");
-    const created = await createAccount(auth, db, { name: person.name, email: person.email, password: pw, role: person.systemRole });
+    const created = await createAccount(db, { name: person.name, email: person.email, password: pw, role: person.systemRole });
     ids.set(person.email, created.id);
     accounts.push({ email: person.email, password: pw, systemRole: person.systemRole, studyRole: person.studyRole });
   }

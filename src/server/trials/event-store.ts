@@ -7,11 +7,7 @@ import { trialEvents, trials } from "../db/schema";
 
 export const NOTIFY_CHANNEL = "hri_trial_events";
 
-export interface StoredEvent extends TrialEvent {
-  trialId: string;
-  serverTime: Date;
-  actorId: string | null;
-}
+export type StoredEvent = TrialEvent & { trialId: string; serverTime: Date; actorId: string | null };
 
 type Row = typeof trialEvents.$inferSelect;
 

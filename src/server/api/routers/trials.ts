@@ -1,0 +1,78 @@
+import { TRPCError } from "@trpc/server";
+import { and, desc, eq } from "drizzle-orm";
+import { z } from "zod";
+import { experimentVersions, experiments, participants, studyMembers, trials, user } from "../../db/schema";
+import { guarded, router } from "../trpc";
+import { id } from "../validation";
+
+const columns = {
+  id: trials.id,
+  status: trials.status,
+  isRehearsal: trials.isRehearsal,
+  t0: trials.t0,
+  endedAt: trials.endedAt,
+  createdAt: trials.createdAt,
+  experimentId: trials.experimentId,
+  experimentName: experiments.name,
+  versionId: trials.versionId,
+  version: experimentVersions.version,
+  participantId: trials.participantId,
+  participantCode: participants.code,
+  wizardId: trials.wizardId,
+  wizardName: user.name,
+};
+
+export const trialsRouter = router({
+  create: guarded("trial.create")
+    .input(z.object({ versionId: id, participantId: id.nullable().default(null), wizardId: id.nullable().default(null) }))
+    .mutation(async ({ ctx, input }) => {
+      const [version] = await ctx.db
+        .select({ experimentId: experiments.id, studyId: experiments.studyId })
+        .from(experimentVersions)
+        .innerJoin(experiments, eq(experiments.id, experimentVersions.experimentId))
+        .where(eq(experimentVersions.id, input.versionId));
+      const studyId = version!.studyId;
+      if (input.participantId) {
+        const [p] = await ctx.db.select().from(participants).where(and(eq(participants.id, input.participantId), eq(participants.studyId, studyId)));
+        if (!p) throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: participantId: not a participant of this study" });
+      }
+      const wizardId = input.wizardId ?? ctx.user.id;
+      const [m] = await ctx.db.select().from(studyMembers).where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
+      if (!m || m.role === "observer") {
+        throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: wizardId: the wizard must be an owner, researcher or wizard of this study" });
+      }
+      const [row] = await ctx.db
+        .insert(trials)
+        .values({ studyId, experimentId: version!.experimentId, versionId: input.versionId, participantId: input.participantId, wizardId, createdBy: ctx.user.id })
+        .returning();
+      return row!;
+    }),
+
+  list: guarded("trial.read")
+    .input(z.object({ studyId: id }))
+    .query(({ ctx, input }) =>
+      ctx.db
+        .select(columns)
+        .from(trials)
+        .innerJoin(experiments, eq(experiments.id, trials.experimentId))
+        .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
+        .leftJoin(participants, eq(participants.id, trials.participantId))
+        .leftJoin(user, eq(user.id, trials.wizardId))
+        .where(eq(trials.studyId, input.studyId))
+        .orderBy(desc(trials.createdAt)),
+    ),
+
+  get: guarded("trial.read")
+    .input(z.object({ trialId: id }))
+    .query(async ({ ctx, input }) => {
+      const [row] = await ctx.db
+        .select({ ...columns, studyId: trials.studyId })
+        .from(trials)
+        .innerJoin(experiments, eq(experiments.id, trials.experimentId))
+        .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
+        .leftJoin(participants, eq(participants.id, trials.participantId))
+        .leftJoin(user, eq(user.id, trials.wizardId))
+        .where(eq(trials.id, input.trialId));
+      return row!;
+    }),
+});

@@ -1,0 +1,92 @@
+// Reading and writing an experiment's draft design. Every write bumps the
+// draft revision, so a save based on an older draft can be refused.
+import { TRPCError } from "@trpc/server";
+import { asc, eq, inArray, sql } from "drizzle-orm";
+import type { Database } from "../db/client";
+import { actions, experiments, steps } from "../db/schema";
+import type { DesignInput } from "../api/routers/design-input";
+
+export type Tx = Parameters<Parameters<Database["transaction"]>[0]>[0];
+
+export async function loadDesign(db: Database | Tx, experimentId: string) {
+  const [experiment] = await db.select().from(experiments).where(eq(experiments.id, experimentId));
+  if (!experiment) throw new TRPCError({ code: "NOT_FOUND", message: "Experiment not found." });
+  const stepRows = await db.select().from(steps).where(eq(steps.experimentId, experimentId)).orderBy(asc(steps.position));
+  const actionRows = stepRows.length
+    ? await db
+        .select()
+        .from(actions)
+        .where(inArray(actions.stepId, stepRows.map((s) => s.id)))
+        .orderBy(asc(actions.position))
+    : [];
+  return {
+    ...experiment,
+    steps: stepRows.map((s) => ({
+      ...s,
+      actions: actionRows.filter((a) => a.stepId === s.id).map((a) => ({ ...a, parameters: a.parameters as Record<string, unknown> })),
+    })),
+  };
+}
+
+export type Design = Awaited<ReturnType<typeof loadDesign>>;
+
+/** Marks the draft changed; with `expected`, refuses if someone saved since. */
+export async function bumpRevision(tx: Tx, experimentId: string, userId: string, expected?: number) {
+  const [row] = await tx
+    .update(experiments)
+    .set({ draftRevision: sql`${experiments.draftRevision} + 1`, updatedAt: new Date(), updatedBy: userId })
+    .where(eq(experiments.id, experimentId))
+    .returning({ revision: experiments.draftRevision });
+  if (expected !== undefined && row!.revision !== expected + 1) {
+    throw new TRPCError({
+      code: "CONFLICT",
+      message: "Someone else saved this experiment after you opened it. Reload to see their changes; yours were not saved.",
+    });
+  }
+  return row!.revision;
+}
+
+/** Replaces the whole draft in one transaction, keeping the ids it was given. */
+export async function saveDesign(db: Database, input: DesignInput, userId: string) {
+  return db.transaction(async (tx) => {
+    await bumpRevision(tx, input.experimentId, userId, input.baseRevision);
+    const current = await loadDesign(tx, input.experimentId);
+    const ownStepIds = new Set(current.steps.map((s) => s.id));
+    const ownActionIds = new Set(current.steps.flatMap((s) => s.actions.map((a) => a.id)));
+    const checkId = (given: string | undefined, own: Set<string>) => {
+      if (given !== undefined && !own.has(given)) assertFreshId(given);
+      return given ?? crypto.randomUUID();
+    };
+    const stepRows = input.steps.map((s, position) => {
+      return { id: checkId(s.id, ownStepIds), experimentId: input.experimentId, position, name: s.name, description: s.description };
+    });
+    const actionRows = input.steps.flatMap((s, i) =>
+      s.actions.map((a, position) => {
+        return { id: checkId(a.id, ownActionIds), stepId: stepRows[i]!.id, position, type: a.type, name: a.name, parameters: a.parameters, parallelGroup: a.parallelGroup };
+      }),
+    );
+    // Delete and re-insert under the same ids: references from branches stay valid.
+    if (current.steps.length) await tx.delete(steps).where(eq(steps.experimentId, input.experimentId));
+    if (stepRows.length) await tx.insert(steps).values(stepRows);
+    if (actionRows.length) await tx.insert(actions).values(actionRows);
+    return loadDesign(tx, input.experimentId);
+  });
+}
+
+/** A client may name a new block's id itself (so branches can point at it), but only a fresh UUID. */
+function assertFreshId(given: string) {
+  if (!/^[0-9a-f]{8}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{12}$/i.test(given)) {
+    throw new TRPCError({ code: "BAD_REQUEST", message: `Please correct: id: "${given}" is not an id of this experiment` });
+  }
+}
+
+/** Closes the gaps a deletion or a move leaves in positions. */
+export async function renumberSteps(tx: Tx, experimentId: string) {
+  const rows = await tx.select({ id: steps.id }).from(steps).where(eq(steps.experimentId, experimentId)).orderBy(asc(steps.position));
+  for (const [position, row] of rows.entries()) await tx.update(steps).set({ position }).where(eq(steps.id, row.id));
+}
+
+export async function renumberActions(tx: Tx, stepId: string) {
+  const rows = await tx.select({ id: actions.id }).from(actions).where(eq(actions.stepId, stepId)).orderBy(asc(actions.position));
+  for (const [position, row] of rows.entries()) await tx.update(actions).set({ position }).where(eq(actions.id, row.id));
+}

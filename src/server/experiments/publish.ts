@@ -1,0 +1,42 @@
+// Publishing freezes the draft into an immutable, numbered, hashed version.
+import { TRPCError } from "@trpc/server";
+import { eq, sql } from "drizzle-orm";
+import { hashCanonical } from "@/core/protocol/canonical";
+import { SNAPSHOT_SCHEMA_VERSION, type ProtocolSnapshot } from "@/core/protocol/snapshot";
+import type { Database } from "../db/client";
+import { experimentVersions, experiments } from "../db/schema";
+import { loadDesign, type Design } from "./design";
+
+export function snapshotOf(design: Design): ProtocolSnapshot {
+  return {
+    schemaVersion: SNAPSHOT_SCHEMA_VERSION,
+    experiment: { id: design.id, name: design.name, description: design.description, robotPluginId: design.robotPluginId },
+    steps: design.steps.map((s) => ({
+      id: s.id,
+      name: s.name,
+      description: s.description,
+      actions: s.actions.map((a) => ({ id: a.id, type: a.type, name: a.name, parameters: a.parameters, parallelGroup: a.parallelGroup })),
+    })),
+  };
+}
+
+export async function publish(db: Database, experimentId: string, userId: string) {
+  return db.transaction(async (tx) => {
+    // Locks the experiment so two publishes cannot take the same number.
+    await tx.select({ id: experiments.id }).from(experiments).where(eq(experiments.id, experimentId)).for("update");
+    const design = await loadDesign(tx, experimentId);
+    if (design.steps.length === 0) {
+      throw new TRPCError({ code: "BAD_REQUEST", message: "This experiment has no steps yet: add at least one step before publishing." });
+    }
+    const snapshot = snapshotOf(design);
+    const [{ next }] = (await tx
+      .select({ next: sql<number>`coalesce(max(${experimentVersions.version}), 0)::int + 1` })
+      .from(experimentVersions)
+      .where(eq(experimentVersions.experimentId, experimentId))) as [{ next: number }];
+    const [version] = await tx
+      .insert(experimentVersions)
+      .values({ experimentId, version: next, snapshot, hash: hashCanonical(snapshot), pluginId: design.robotPluginId, publishedBy: userId })
+      .returning();
+    return version!;
+  });
+}
