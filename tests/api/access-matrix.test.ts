@@ -1,0 +1,121 @@
+// Every procedure × every kind of caller, against the real database. The
+// expected table is written out by hand: it is the access rules as a person
+// states them, checked against what the server actually does.
+import { TRPCError } from "@trpc/server";
+import { afterAll, describe, expect, it } from "vitest";
+import { appRouter } from "../../src/server/api/root";
+import { freshDatabase } from "../support/db";
+import { buildFixture, CALLERS, newPerson, type Caller, type Fixture } from "./fixture";
+
+const MEMBERS: Caller[] = ["owner", "researcher", "wizard", "observer"];
+const SIGNED_IN: Caller[] = ["owner", "researcher", "wizard", "observer", "outsider", "admin"];
+const EDITORS: Caller[] = ["owner", "researcher"];
+const RUNNERS: Caller[] = ["owner", "researcher", "wizard"];
+const OWNER: Caller[] = ["owner"];
+const ADMIN: Caller[] = ["admin"];
+const CREATORS: Caller[] = ["owner", "researcher", "outsider", "admin"]; // system role researcher or administrator
+
+type Input = (f: Fixture, base: Base) => Promise<unknown> | unknown;
+type Base = Awaited<ReturnType<typeof baseData>>;
+
+async function baseData(f: Fixture) {
+  const study = await f.newStudy();
+  const experiment = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+  const step = await f.api("owner").experiments.createStep({ experimentId: experiment.id, name: "S1" });
+  const action = await f.api("owner").experiments.createAction({ stepId: step.id, type: "say", parameters: { text: "hi" } });
+  const version = await f.api("owner").versions.publish({ experimentId: experiment.id });
+  const participant = await f.api("owner").participants.create({ studyId: study.id, code: "P1" });
+  const trial = await f.api("owner").trials.create({ versionId: version.id, participantId: participant.id });
+  return { study, experiment, step, action, version, participant, trial };
+}
+
+// Destructive procedures get fresh rows for every call.
+const freshStep = async (f: Fixture, b: Base) => f.api("owner").experiments.createStep({ experimentId: b.experiment.id, name: "tmp" });
+const freshAction = async (f: Fixture, b: Base) => f.api("owner").experiments.createAction({ stepId: b.step.id, type: "wave" });
+const freshMember = async (f: Fixture, b: Base) => {
+  const person = await newPerson(db, "member");
+  await f.api("owner").members.add({ studyId: b.study.id, email: person.email, role: "observer" });
+  return person;
+};
+
+const MATRIX: Record<string, [Caller[], Input]> = {
+  "account.me": [SIGNED_IN, () => undefined],
+  "studies.mine": [SIGNED_IN, () => undefined],
+  "studies.get": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "studies.create": [CREATORS, () => ({ title: "New" })],
+  "studies.update": [OWNER, (_f, b) => ({ studyId: b.study.id, description: "changed" })],
+  "studies.delete": [OWNER, async (f) => ({ studyId: (await f.newStudy("Doomed")).id, confirmTitle: "Doomed" })],
+  "members.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "members.add": [OWNER, async (_f, b) => ({ studyId: b.study.id, email: (await newPerson(db, "invitee")).email, role: "observer" })],
+  "members.changeRole": [OWNER, async (f, b) => ({ studyId: b.study.id, userId: (await freshMember(f, b)).id, role: "wizard" })],
+  "members.remove": [OWNER, async (f, b) => ({ studyId: b.study.id, userId: (await freshMember(f, b)).id })],
+  "experiments.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "experiments.get": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "experiments.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, name: "E2", robotPluginId: "nao6-ros2" })],
+  "experiments.update": [EDITORS, (_f, b) => ({ experimentId: b.experiment.id, description: "d" })],
+  "experiments.delete": [EDITORS, async (f, b) => ({ experimentId: (await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotPluginId: "x" })).id })],
+  "experiments.saveDesign": [
+    EDITORS,
+    async (f, b) => {
+      const e = await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotPluginId: "x" });
+      return { experimentId: e.id, baseRevision: 0, steps: [{ name: "Only", actions: [] }] };
+    },
+  ],
+  "experiments.createStep": [EDITORS, (_f, b) => ({ experimentId: b.experiment.id, name: "S" })],
+  "experiments.updateStep": [EDITORS, (_f, b) => ({ stepId: b.step.id, name: "Renamed" })],
+  "experiments.deleteStep": [EDITORS, async (f, b) => ({ stepId: (await freshStep(f, b)).id })],
+  "experiments.reorderSteps": [
+    EDITORS,
+    async (f, b) => ({ experimentId: b.experiment.id, order: (await f.api("owner").experiments.get({ experimentId: b.experiment.id })).steps.map((s) => s.id).reverse() }),
+  ],
+  "experiments.createAction": [EDITORS, (_f, b) => ({ stepId: b.step.id, type: "nod" })],
+  "experiments.updateAction": [EDITORS, (_f, b) => ({ actionId: b.action.id, name: "Greeting" })],
+  "experiments.deleteAction": [EDITORS, async (f, b) => ({ actionId: (await freshAction(f, b)).id })],
+  "experiments.moveAction": [EDITORS, (_f, b) => ({ actionId: b.action.id, toStepId: b.step.id, toPosition: 0 })],
+  "versions.publish": [EDITORS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "versions.list": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "versions.get": [MEMBERS, (_f, b) => ({ versionId: b.version.id })],
+  "participants.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "participants.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, code: `P-${crypto.randomUUID().slice(0, 6)}` })],
+  "participants.update": [EDITORS, (_f, b) => ({ participantId: b.participant.id, notes: "seen" })],
+  "participants.delete": [EDITORS, async (f, b) => ({ participantId: (await f.api("owner").participants.create({ studyId: b.study.id, code: `D-${crypto.randomUUID().slice(0, 6)}` })).id })],
+  "trials.create": [RUNNERS, (_f, b) => ({ versionId: b.version.id, participantId: b.participant.id })],
+  "trials.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "trials.get": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
+  "admin.users.list": [ADMIN, () => undefined],
+  "admin.users.create": [ADMIN, () => ({ name: "New person", email: `new-${crypto.randomUUID().slice(0, 8)}@example.org`, password: "password-123", role: "observer" })],
+  "admin.users.setRole": [ADMIN, async () => ({ userId: (await newPerson(db, "promoted")).id, role: "wizard" })],
+  "admin.users.setDisabled": [ADMIN, async () => ({ userId: (await newPerson(db, "disabled")).id, disabled: true })],
+  "admin.auditLog": [ADMIN, () => ({ limit: 10 })],
+};
+
+const { db, close } = await freshDatabase();
+const f = await buildFixture(db);
+const base = await baseData(f);
+afterAll(close);
+
+async function call(caller: Caller, path: string, input: unknown) {
+  let target: unknown = f.api(caller);
+  for (const part of path.split(".")) target = (target as Record<string, unknown>)[part];
+  return (target as (i: unknown) => Promise<unknown>)(input);
+}
+
+describe("access matrix", () => {
+  it("covers every procedure of the API", () => {
+    expect(Object.keys(appRouter._def.procedures).sort()).toEqual(Object.keys(MATRIX).sort());
+  });
+
+  const cases = Object.entries(MATRIX).flatMap(([path, [allowed]]) => CALLERS.map((caller) => [path, caller, allowed.includes(caller)] as const));
+
+  it.each(cases)("%s by %s → allowed: %s", async (path, caller, allowed) => {
+    const input = await MATRIX[path]![1](f, base);
+    const outcome = await call(caller, path, input).then(
+      () => "ok",
+      (e: unknown) => (e instanceof TRPCError ? e.code : `unexpected: ${String(e)}`),
+    );
+    if (allowed) return expect(outcome).toBe("ok");
+    const studyScoped = MATRIX[path]![0] !== SIGNED_IN && !path.startsWith("admin.") && path !== "studies.create";
+    const denied = caller === "anonymous" ? "UNAUTHORIZED" : studyScoped && !MEMBERS.includes(caller) ? "NOT_FOUND" : "FORBIDDEN";
+    expect(outcome).toBe(denied);
+  });
+});

@@ -1,0 +1,46 @@
+// A study with one member per study role, plus people outside it, for API tests.
+import type { SystemRole } from "../../src/core/access/policy";
+import { createCallerFactory, type SessionUser } from "../../src/server/api/trpc";
+import { appRouter } from "../../src/server/api/root";
+import { createAccount } from "../../src/server/auth/accounts";
+import type { Database } from "../../src/server/db/client";
+import { studyMembers } from "../../src/server/db/schema";
+
+export const CALLERS = ["owner", "researcher", "wizard", "observer", "outsider", "admin", "anonymous"] as const;
+export type Caller = (typeof CALLERS)[number];
+
+const SYSTEM_ROLE: Record<Exclude<Caller, "anonymous">, SystemRole> = {
+  owner: "researcher",
+  researcher: "researcher",
+  wizard: "wizard",
+  observer: "observer",
+  outsider: "researcher",
+  admin: "administrator",
+};
+
+const callerFactory = createCallerFactory(appRouter);
+
+export async function newPerson(db: Database, label: string, role: SystemRole = "researcher"): Promise<SessionUser> {
+  const email = `${label}-${crypto.randomUUID().slice(0, 8)}@example.org`;
+  const created = await createAccount(db, { name: label, email, password: "password-123", role });
+  return { id: created.id, name: created.name, email: created.email, role };
+}
+
+export async function buildFixture(db: Database) {
+  const people = {} as Record<Exclude<Caller, "anonymous">, SessionUser>;
+  for (const caller of Object.keys(SYSTEM_ROLE) as Array<keyof typeof SYSTEM_ROLE>) {
+    people[caller] = await newPerson(db, caller, SYSTEM_ROLE[caller]);
+  }
+  const api = (caller: Caller) => callerFactory({ db, user: caller === "anonymous" ? null : people[caller] });
+  /** A study whose members are the four study-role callers. */
+  async function newStudy(title = "Fixture study") {
+    const study = await api("owner").studies.create({ title });
+    await db.insert(studyMembers).values(
+      (["researcher", "wizard", "observer"] as const).map((role) => ({ studyId: study.id, userId: people[role].id, role })),
+    );
+    return study;
+  }
+  return { people, api, newStudy };
+}
+
+export type Fixture = Awaited<ReturnType<typeof buildFixture>>;
