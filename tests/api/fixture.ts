@@ -1,4 +1,5 @@
 // A study with one member per study role, plus people outside it, for API tests.
+import { fetchRequestHandler } from "@trpc/server/adapters/fetch";
 import type { SystemRole } from "../../src/core/access/policy";
 import { createCallerFactory, type SessionUser } from "../../src/server/api/trpc";
 import { appRouter } from "../../src/server/api/root";
@@ -40,7 +41,18 @@ export async function buildFixture(db: Database) {
     );
     return study;
   }
-  return { people, api, newStudy };
+  /** The error a browser would receive for a mutation: the formatted shape, as JSON. */
+  async function httpError(caller: Caller, path: string, input: unknown) {
+    const res = await fetchRequestHandler({
+      endpoint: "/api/trpc",
+      req: new Request(`http://test/api/trpc/${path}`, { method: "POST", body: JSON.stringify(input), headers: { "content-type": "application/json" } }),
+      router: appRouter,
+      createContext: () => ({ db, user: caller === "anonymous" ? null : people[caller] }),
+    });
+    const body = (await res.json()) as { error?: { message: string; data: { code: string; issues: Array<{ field: string; message: string }> | null } } };
+    return body.error ?? null;
+  }
+  return { people, api, newStudy, httpError };
 }
 
 export type Fixture = Awaited<ReturnType<typeof buildFixture>>;

@@ -1,0 +1,134 @@
+// Saving a design is one transaction that keeps ids; bad input is refused
+// with messages that name the field.
+import { TRPCError } from "@trpc/server";
+import { afterAll, describe, expect, it } from "vitest";
+import { freshDatabase } from "../support/db";
+import { buildFixture } from "./fixture";
+
+const { db, close } = await freshDatabase();
+const f = await buildFixture(db);
+const owner = f.api("owner");
+afterAll(close);
+
+async function newExperiment() {
+  const study = await f.newStudy();
+  return owner.experiments.create({ studyId: study.id, name: "Design", robotPluginId: "nao6-ros2" });
+}
+
+async function failure(promise: Promise<unknown>) {
+  const error = await promise.then(
+    () => null,
+    (e: unknown) => e as TRPCError,
+  );
+  expect(error).toBeInstanceOf(TRPCError);
+  return error!;
+}
+
+describe("saving a design", () => {
+  it("keeps the ids of steps and actions across saves, and removes what was left out", async () => {
+    const e = await newExperiment();
+    const first = await owner.experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: 0,
+      steps: [
+        { name: "Intro", actions: [{ type: "say", parameters: { text: "Hello" } }, { type: "wave" }] },
+        { name: "End", actions: [{ type: "end_trial" }] },
+      ],
+    });
+    const [intro, end] = first.steps;
+    const second = await owner.experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: first.draftRevision,
+      steps: [
+        { id: end!.id, name: "End", actions: [{ id: end!.actions[0]!.id, type: "end_trial" }] },
+        { id: intro!.id, name: "Intro, renamed", actions: [{ id: intro!.actions[1]!.id, type: "wave" }] },
+      ],
+    });
+    expect(second.steps.map((s) => [s.id, s.name, s.position])).toEqual([
+      [end!.id, "End", 0],
+      [intro!.id, "Intro, renamed", 1],
+    ]);
+    expect(second.steps[1]!.actions.map((a) => a.id)).toEqual([intro!.actions[1]!.id]);
+    expect(second.draftRevision).toBe(first.draftRevision + 1);
+  });
+
+  it("changes nothing when any part of the save is invalid", async () => {
+    const e = await newExperiment();
+    const saved = await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "Kept", actions: [{ type: "say", parameters: { text: "x" } }] }] });
+    const error = await failure(
+      owner.experiments.saveDesign({
+        experimentId: e.id,
+        baseRevision: saved.draftRevision,
+        steps: [
+          { name: "New first", actions: [] },
+          // A foreign id in the middle: the whole save must roll back.
+          { name: "Bad", actions: [{ id: "not-one-of-ours", type: "wave" }] },
+        ],
+      }),
+    );
+    expect(error.message).toContain("id");
+    expect(await owner.experiments.get({ experimentId: e.id })).toEqual(saved);
+  });
+
+  it("refuses a save based on a revision someone else has already replaced", async () => {
+    const e = await newExperiment();
+    await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "Mine", actions: [] }] });
+    const error = await failure(f.api("researcher").experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "Theirs", actions: [] }] }));
+    expect(error.code).toBe("CONFLICT");
+    expect(error.message).toMatch(/Someone else saved this experiment/);
+    expect((await owner.experiments.get({ experimentId: e.id })).steps.map((s) => s.name)).toEqual(["Mine"]);
+  });
+
+  it("publishes immutable numbered versions whose hash follows the content", async () => {
+    const e = await newExperiment();
+    await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "One", actions: [{ type: "say", parameters: { text: 'He said "{{hi}}" $(rm -rf /)' } }] }] });
+    const v1 = await owner.versions.publish({ experimentId: e.id });
+    const again = await owner.versions.publish({ experimentId: e.id });
+    expect([v1.version, again.version]).toEqual([1, 2]);
+    expect(again.hash).toBe(v1.hash);
+    expect(v1.hash).toMatch(/^[0-9a-f]{64}$/);
+    const snapshot = v1.snapshot as { steps: Array<{ actions: Array<{ parameters: { text: string } }> }> };
+    expect(snapshot.steps[0]!.actions[0]!.parameters.text).toBe('He said "{{hi}}" $(rm -rf /)');
+    await owner.experiments.updateStep({ stepId: (await owner.experiments.get({ experimentId: e.id })).steps[0]!.id, name: "Changed" });
+    const v3 = await owner.versions.publish({ experimentId: e.id });
+    expect(v3.hash).not.toBe(v1.hash);
+    expect(((await owner.versions.get({ versionId: v1.id })).snapshot as { steps: Array<{ name: string }> }).steps[0]!.name).toBe("One");
+  });
+});
+
+describe("input errors a person can read", () => {
+  it.each<[string, string, (studyId: string) => unknown, string]>([
+    ["an empty study title", "studies.create", () => ({ title: "   " }), "title: Title must not be empty"],
+    ["a study title that is too long", "studies.create", () => ({ title: "x".repeat(201) }), "title: Title must be at most 200 characters"],
+    ["an unknown study status", "studies.update", (studyId) => ({ studyId, status: "finished" }), 'status: Invalid option: expected one of "draft"|"active"|"completed"|"archived"'],
+    ["a member role that does not exist", "members.add", (studyId) => ({ studyId, email: "a@b.org", role: "boss" }), "role: must be one of owner, researcher, wizard, observer"],
+    ["an email that is not one", "members.add", (studyId) => ({ studyId, email: "nobody", role: "observer" }), "email: must be an email address"],
+    ["a participant code with a space", "participants.create", (studyId) => ({ studyId, code: "Jane Doe" }), "code: Participant code may use letters, digits, '.', '_' and '-' only (no names)"],
+    ["a missing participant code", "participants.create", (studyId) => ({ studyId }), "code: Participant code is required"],
+  ])("%s", async (_name, path, input, expected) => {
+    const study = await f.newStudy();
+    const error = await f.httpError("owner", path, input(study.id));
+    expect(error!.data.code).toBe("BAD_REQUEST");
+    expect(error!.message).toBe(`Please correct: ${expected}`);
+    expect(error!.data.issues![0]!.field).toBe(expected.split(":")[0]);
+  });
+
+  it("names the nested field of an action in a design", async () => {
+    const e = await newExperiment();
+    const error = await f.httpError("owner", "experiments.saveDesign", { experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "say", parameters: "text" }] }] });
+    expect(error!.message).toBe("Please correct: steps.0.actions.0.parameters: must be an object of named values");
+  });
+
+  it("reports a duplicate participant code as a conflict that names the code", async () => {
+    const study = await f.newStudy();
+    await owner.participants.create({ studyId: study.id, code: "P007" });
+    const error = await failure(owner.participants.create({ studyId: study.id, code: "P007" }));
+    expect(error.message).toBe("Participant code P007 is already used in this study.");
+  });
+
+  it("never lets the last owner go", async () => {
+    const study = await f.newStudy();
+    const error = await failure(owner.members.remove({ studyId: study.id, userId: f.people.owner.id }));
+    expect(error.message).toMatch(/at least one owner/);
+  });
+});
