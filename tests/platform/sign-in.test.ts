@@ -42,8 +42,20 @@ describe.sequential("sign-in and sign-up", () => {
     const res = await post(app, "/sign-up/email", { name: "Eve", email: "eve@example.org", password: "long-enough-password", role: "administrator" });
     expect(res.ok).toBe(true);
     const cookie = await signIn(app.url, "eve@example.org", "long-enough-password");
-    expect(await apiClient(app.url, cookie).studies.mine.query()).toEqual([]);
-    const admin = await signIn(app.url, "admin@demo.hristudio", DEMO_PASSWORD);
-    expect(admin).toContain("session_token");
+    const eve = apiClient(app.url, cookie);
+    expect((await eve.account.me.query())!.role).toBe("researcher");
+    expect(await eve.studies.mine.query()).toEqual([]);
+  });
+
+  it("signs a disabled account out and keeps it out", async () => {
+    const app = apps[1]!;
+    const wizardCookie = await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD);
+    const admin = apiClient(app.url, await signIn(app.url, "admin@demo.hristudio", DEMO_PASSWORD));
+    const wizard = (await admin.admin.users.list.query()).find((u) => u.email === "wizard@demo.hristudio")!;
+    await admin.admin.users.setDisabled.mutate({ userId: wizard.id, disabled: true });
+    await expect(apiClient(app.url, wizardCookie).studies.mine.query()).rejects.toMatchObject({ data: { code: "UNAUTHORIZED" } });
+    expect((await post(app, "/sign-in/email", { email: "wizard@demo.hristudio", password: DEMO_PASSWORD })).ok).toBe(false);
+    await admin.admin.users.setDisabled.mutate({ userId: wizard.id, disabled: false });
+    expect(await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD)).toContain("session_token");
   });
 });
