@@ -64,14 +64,18 @@ export function decide(subject: Subject, op: Operation): Decision {
   if (subject.studyRole === null) {
     return { allow: false, hidden: true, reason: "Study not found." };
   }
-  const allowed: readonly StudyRole[] = STUDY_OPERATIONS[op];
-  return allowed.includes(subject.studyRole)
+  return studyRoleMay(subject.studyRole, op)
     ? { allow: true }
     : {
         allow: false,
         hidden: false,
         reason: `As ${article(subject.studyRole)} ${subject.studyRole} of this study you may not do this.`,
       };
+}
+
+/** What the interface asks to decide which controls to offer; the server decides again. */
+export function studyRoleMay(role: StudyRole, op: StudyOperation): boolean {
+  return (STUDY_OPERATIONS[op] as readonly StudyRole[]).includes(role);
 }
 
 function article(word: string) {

@@ -1,0 +1,10 @@
+import { UsersPage } from "@/features/admin/users-page";
+import { requireUser } from "@/features/auth/session";
+
+export default async function AdminPage() {
+  const user = await requireUser();
+  if (user.role !== "administrator") {
+    return <p className="text-slate-600">Only administrators manage accounts.</p>;
+  }
+  return <UsersPage selfId={user.id} />;
+}

@@ -1,0 +1,15 @@
+import type { ReactNode } from "react";
+import { requireUser } from "@/features/auth/session";
+import { TopBar } from "@/features/shell/top-bar";
+
+export const dynamic = "force-dynamic";
+
+export default async function AppLayout({ children }: { children: ReactNode }) {
+  const user = await requireUser();
+  return (
+    <div className="min-h-full">
+      <TopBar user={user} />
+      <main className="mx-auto max-w-6xl px-6 py-8">{children}</main>
+    </div>
+  );
+}

@@ -1,0 +1,7 @@
+import { requireUser } from "@/features/auth/session";
+import { StudyList } from "@/features/studies/study-list";
+
+export default async function StudiesPage() {
+  const user = await requireUser();
+  return <StudyList systemRole={user.role} />;
+}

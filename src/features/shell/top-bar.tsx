@@ -1,0 +1,45 @@
+"use client";
+import Link from "next/link";
+import { useRouter } from "next/navigation";
+import type { SessionUser } from "@/server/api/trpc";
+import { authClient } from "@/lib/auth-client";
+import { Button } from "@/ui/button";
+import { Badge, ROLE_TONE } from "@/ui/surface";
+
+export function TopBar({ user }: { user: SessionUser }) {
+  const router = useRouter();
+  return (
+    <header className="border-b border-slate-200 bg-white">
+      <div className="mx-auto flex h-14 max-w-6xl items-center gap-6 px-6">
+        <Link href="/studies" className="text-lg font-semibold text-brand-700">
+          HRIStudio
+        </Link>
+        <nav className="flex gap-4 text-sm" aria-label="Main">
+          <Link href="/studies" className="text-slate-700 hover:text-slate-950">
+            Studies
+          </Link>
+          {user.role === "administrator" && (
+            <Link href="/admin" className="text-slate-700 hover:text-slate-950">
+              Admin
+            </Link>
+          )}
+        </nav>
+        <div className="ml-auto flex items-center gap-3 text-sm">
+          <span data-testid="current-user">{user.name}</span>
+          <Badge tone={ROLE_TONE[user.role]}>{user.role}</Badge>
+          <Button
+            variant="ghost"
+            size="sm"
+            onClick={async () => {
+              await authClient.signOut();
+              router.replace("/sign-in");
+              router.refresh();
+            }}
+          >
+            Sign out
+          </Button>
+        </div>
+      </div>
+    </header>
+  );
+}

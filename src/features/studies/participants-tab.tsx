@@ -1,0 +1,115 @@
+"use client";
+import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
+import { useState, type FormEvent } from "react";
+import { studyRoleMay, type StudyRole } from "@/core/access/policy";
+import { useTRPC } from "@/lib/trpc";
+import { Button } from "@/ui/button";
+import { Field, Input, NativeSelect } from "@/ui/field";
+import { fieldError, Problem } from "@/ui/problem";
+import { Badge, Card, EmptyState, Spinner, STATUS_TONE } from "@/ui/surface";
+import { Table, Td, Th } from "@/ui/table";
+
+const CONSENT = ["pending", "given", "declined", "withdrawn"] as const;
+type Consent = (typeof CONSENT)[number];
+
+export function ParticipantsTab({ studyId, role }: { studyId: string; role: StudyRole }) {
+  const trpc = useTRPC();
+  const queryClient = useQueryClient();
+  const participants = useQuery(trpc.participants.list.queryOptions({ studyId }));
+  const refresh = () => queryClient.invalidateQueries({ queryKey: trpc.participants.list.queryKey({ studyId }) });
+  const update = useMutation(trpc.participants.update.mutationOptions({ onSuccess: refresh }));
+  const manage = studyRoleMay(role, "participant.manage");
+  return (
+    <div className="space-y-6">
+      {manage && <AddParticipant studyId={studyId} onAdded={refresh} />}
+      {participants.isPending && <Spinner />}
+      <Problem error={participants.error ?? update.error} />
+      {participants.data?.length === 0 && <EmptyState title="No participants yet." />}
+      {!!participants.data?.length && (
+        <Table>
+          <thead>
+            <tr>
+              <Th>Code</Th>
+              <Th>Consent</Th>
+              <Th>Consent date</Th>
+              <Th>Trials</Th>
+            </tr>
+          </thead>
+          <tbody>
+            {participants.data.map((p) => (
+              <tr key={p.id}>
+                <Td className="font-mono">{p.code}</Td>
+                <Td>
+                  {manage ? (
+                    <NativeSelect
+                      aria-label={`Consent of ${p.code}`}
+                      className="w-36"
+                      value={p.consentStatus}
+                      onChange={(e) => {
+                        const consentStatus = e.target.value as Consent;
+                        update.mutate({ participantId: p.id, consentStatus, consentDate: consentStatus === "given" ? new Date() : p.consentDate });
+                      }}
+                    >
+                      {CONSENT.map((c) => (
+                        <option key={c}>{c}</option>
+                      ))}
+                    </NativeSelect>
+                  ) : (
+                    <Badge tone={STATUS_TONE[p.consentStatus]}>{p.consentStatus}</Badge>
+                  )}
+                </Td>
+                <Td>{p.consentDate ? new Date(p.consentDate).toLocaleDateString() : "—"}</Td>
+                <Td>{p.trialCount}</Td>
+              </tr>
+            ))}
+          </tbody>
+        </Table>
+      )}
+    </div>
+  );
+}
+
+function AddParticipant({ studyId, onAdded }: { studyId: string; onAdded: () => void }) {
+  const trpc = useTRPC();
+  const [code, setCode] = useState("");
+  const [consent, setConsent] = useState<Consent>("pending");
+  const create = useMutation(
+    trpc.participants.create.mutationOptions({
+      onSuccess: () => {
+        setCode("");
+        onAdded();
+      },
+    }),
+  );
+  const submit = (e: FormEvent) => {
+    e.preventDefault();
+    create.mutate({ studyId, code, consentStatus: consent, consentDate: consent === "given" ? new Date() : null });
+  };
+  return (
+    <Card className="p-5">
+      <h2 className="mb-3 font-semibold">Add a participant</h2>
+      <form onSubmit={submit} className="flex flex-wrap items-end gap-3">
+        <div className="w-56">
+          <Field label="Participant code" required error={fieldError(create.error, "code")} hint="A code, never a name.">
+            {(p) => <Input {...p} value={code} onChange={(e) => setCode(e.target.value)} placeholder="P004" />}
+          </Field>
+        </div>
+        <div className="w-44">
+          <Field label="Consent">
+            {(p) => (
+              <NativeSelect {...p} value={consent} onChange={(e) => setConsent(e.target.value as Consent)}>
+                {CONSENT.map((c) => (
+                  <option key={c}>{c}</option>
+                ))}
+              </NativeSelect>
+            )}
+          </Field>
+        </div>
+        <Button type="submit" disabled={create.isPending} className="mb-5">
+          Add participant
+        </Button>
+      </form>
+      {create.error && !fieldError(create.error, "code") && <Problem error={create.error} />}
+    </Card>
+  );
+}

@@ -1,0 +1,108 @@
+"use client";
+import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
+import { useState, type FormEvent } from "react";
+import { studyRoleMay, type StudyRole } from "@/core/access/policy";
+import { useTRPC } from "@/lib/trpc";
+import { Button } from "@/ui/button";
+import { Field, NativeSelect } from "@/ui/field";
+import { Problem } from "@/ui/problem";
+import { Badge, Card, EmptyState, Spinner, STATUS_TONE } from "@/ui/surface";
+import { Table, Td, Th } from "@/ui/table";
+
+export function TrialsTab({ studyId, role }: { studyId: string; role: StudyRole }) {
+  const trpc = useTRPC();
+  const queryClient = useQueryClient();
+  const trials = useQuery(trpc.trials.list.queryOptions({ studyId }));
+  const refresh = () => queryClient.invalidateQueries({ queryKey: trpc.trials.list.queryKey({ studyId }) });
+  return (
+    <div className="space-y-6">
+      {studyRoleMay(role, "trial.create") && <NewTrial studyId={studyId} onCreated={refresh} />}
+      {trials.isPending && <Spinner />}
+      <Problem error={trials.error} />
+      {trials.data?.length === 0 && <EmptyState title="No trials yet." />}
+      {!!trials.data?.length && (
+        <Table>
+          <thead>
+            <tr>
+              <Th>Participant</Th>
+              <Th>Experiment</Th>
+              <Th>Wizard</Th>
+              <Th>Status</Th>
+              <Th>Created</Th>
+            </tr>
+          </thead>
+          <tbody>
+            {trials.data.map((t) => (
+              <tr key={t.id}>
+                <Td className="font-mono">{t.participantCode ?? "—"}</Td>
+                <Td>
+                  {t.experimentName} {t.isRehearsal ? <Badge tone="amber">rehearsal</Badge> : <span className="text-xs text-slate-500">v{t.version}</span>}
+                </Td>
+                <Td>{t.wizardName ?? "—"}</Td>
+                <Td>
+                  <Badge tone={STATUS_TONE[t.status]}>{t.status.replace("_", " ")}</Badge>
+                </Td>
+                <Td>{new Date(t.createdAt).toLocaleString()}</Td>
+              </tr>
+            ))}
+          </tbody>
+        </Table>
+      )}
+    </div>
+  );
+}
+
+/** Trials run only published versions, for a participant of this study. */
+function NewTrial({ studyId, onCreated }: { studyId: string; onCreated: () => void }) {
+  const trpc = useTRPC();
+  const experiments = useQuery(trpc.experiments.list.queryOptions({ studyId }));
+  const participants = useQuery(trpc.participants.list.queryOptions({ studyId }));
+  const [experimentId, setExperimentId] = useState("");
+  const [participantId, setParticipantId] = useState("");
+  const versions = useQuery({ ...trpc.versions.list.queryOptions({ experimentId }), enabled: Boolean(experimentId) });
+  const create = useMutation(trpc.trials.create.mutationOptions({ onSuccess: onCreated }));
+  const latest = versions.data?.[0];
+  const submit = (e: FormEvent) => {
+    e.preventDefault();
+    if (latest) create.mutate({ versionId: latest.id, participantId: participantId || null });
+  };
+  return (
+    <Card className="p-5">
+      <h2 className="mb-3 font-semibold">New trial</h2>
+      <form onSubmit={submit} className="flex flex-wrap items-end gap-3">
+        <div className="w-64">
+          <Field label="Experiment" required hint={experimentId && !latest && !versions.isPending ? "Publish this experiment first." : latest ? `Runs published version ${latest.version}.` : undefined}>
+            {(p) => (
+              <NativeSelect {...p} value={experimentId} onChange={(e) => setExperimentId(e.target.value)}>
+                <option value="">Choose…</option>
+                {experiments.data?.map((x) => (
+                  <option key={x.id} value={x.id}>
+                    {x.name}
+                  </option>
+                ))}
+              </NativeSelect>
+            )}
+          </Field>
+        </div>
+        <div className="w-48">
+          <Field label="Participant" required>
+            {(p) => (
+              <NativeSelect {...p} value={participantId} onChange={(e) => setParticipantId(e.target.value)}>
+                <option value="">Choose…</option>
+                {participants.data?.map((x) => (
+                  <option key={x.id} value={x.id}>
+                    {x.code}
+                  </option>
+                ))}
+              </NativeSelect>
+            )}
+          </Field>
+        </div>
+        <Button type="submit" disabled={!latest || !participantId || create.isPending} className="mb-5">
+          Create trial
+        </Button>
+      </form>
+      <Problem error={create.error} />
+    </Card>
+  );
+}

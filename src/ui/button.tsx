@@ -1,0 +1,29 @@
+import { Slot } from "@radix-ui/react-slot";
+import { cva, type VariantProps } from "class-variance-authority";
+import type { ButtonHTMLAttributes } from "react";
+import { cn } from "./cn";
+
+const button = cva(
+  "inline-flex items-center justify-center gap-2 rounded-md font-medium transition-colors focus-visible:outline-none focus-visible:ring-2 focus-visible:ring-brand-500 focus-visible:ring-offset-2 disabled:pointer-events-none disabled:opacity-50",
+  {
+    variants: {
+      variant: {
+        primary: "bg-brand-600 text-white hover:bg-brand-700",
+        secondary: "border border-slate-300 bg-white text-slate-800 hover:bg-slate-100",
+        ghost: "text-slate-700 hover:bg-slate-100",
+        danger: "bg-red-600 text-white hover:bg-red-700",
+      },
+      size: { sm: "h-8 px-3 text-sm", md: "h-10 px-4 text-sm", lg: "h-12 px-6 text-base" },
+    },
+    defaultVariants: { variant: "primary", size: "md" },
+  },
+);
+
+export interface ButtonProps extends ButtonHTMLAttributes<HTMLButtonElement>, VariantProps<typeof button> {
+  asChild?: boolean;
+}
+
+export function Button({ className, variant, size, asChild, type = "button", ...props }: ButtonProps) {
+  const Component = asChild ? Slot : "button";
+  return <Component type={asChild ? undefined : type} className={cn(button({ variant, size }), className)} {...props} />;
+}
