@@ -1,0 +1,14 @@
+// Robot plugins in the pure core: the format, loading, abstract actions,
+// portability and payloads. No I/O: src/robots reads files and sockets.
+export * from "./errors";
+export * from "./types";
+export { loadPlugin, checkDocument, parseJson } from "./load";
+export { parseRepository, parsePluginIndex } from "./repository";
+export { ABSTRACT_ACTIONS, abstractAction, type AbstractAction } from "./vocabulary";
+export { parseActionType, robotActionType, type ActionType } from "./action-type";
+export { validateParameters, withDefaults, type ParameterProblem } from "./parameters";
+export { fillTemplate, placeholders } from "./template";
+export { TRANSFORMS } from "./transforms";
+export { resolveAction, type Resolution } from "./resolve";
+export { portability, type PortableExperiment, type PortabilityReport, type ActionPortability } from "./portability";
+export { outgoingFor, type Outgoing } from "./payload";

@@ -1,0 +1,53 @@
+// The portability report: before a trial, every action of an experiment
+// against one plugin: supported, unsupported (with the reason), or supported
+// with parameter problems (each naming the parameter).
+import type { ParameterProblem } from "./parameters";
+import { resolveAction } from "./resolve";
+import type { Plugin } from "./types";
+
+/** The experiment shape the report reads: steps of typed actions. */
+export interface PortableExperiment {
+  steps: Array<{ id?: string; name?: string; actions: Array<{ id: string; type: string; parameters?: Record<string, unknown> }> }>;
+}
+
+export type PortabilityStatus = "supported" | "unsupported" | "parameter_problems";
+
+export interface ActionPortability {
+  stepIndex: number;
+  actionId: string;
+  type: string;
+  status: PortabilityStatus;
+  /** Who carries it out: the robot, or the trial runtime (pause, branch...). */
+  by: "robot" | "runtime";
+  /** The plugin action that performs it, when there is one. */
+  pluginAction?: string;
+  reason?: string;
+  problems: ParameterProblem[];
+}
+
+export interface PortabilityReport {
+  robotId: string;
+  pluginVersion: string;
+  portable: boolean;
+  actions: ActionPortability[];
+}
+
+export function portability(experiment: PortableExperiment, plugin: Plugin): PortabilityReport {
+  const actions = experiment.steps.flatMap((step, stepIndex) =>
+    step.actions.map((action): ActionPortability => {
+      const base = { stepIndex, actionId: action.id, type: action.type, problems: [] as ParameterProblem[] };
+      const resolution = resolveAction(plugin, action.type, action.parameters ?? {});
+      switch (resolution.status) {
+        case "runtime":
+          return { ...base, status: "supported", by: "runtime" };
+        case "supported":
+          return { ...base, status: "supported", by: "robot", pluginAction: resolution.action.id };
+        case "unsupported":
+          return { ...base, status: "unsupported", by: "robot", reason: resolution.reason };
+        case "parameter_problems":
+          return { ...base, status: "parameter_problems", by: "robot", pluginAction: resolution.action?.id, problems: resolution.problems };
+      }
+    }),
+  );
+  return { robotId: plugin.robotId, pluginVersion: plugin.version, portable: actions.every((a) => a.status === "supported"), actions };
+}

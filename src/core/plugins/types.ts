@@ -1,0 +1,75 @@
+// The shape of a loaded plugin file: the HRIStudio plugin format (as in
+// ../shared/fixtures/hristudio-plugins) plus our additive fields. The JSON
+// Schema in plugins/plugin.schema.json is the authority; these types mirror it.
+
+export type JsonValue = string | number | boolean | null | JsonValue[] | { [key: string]: JsonValue };
+export type JsonObject = { [key: string]: JsonValue };
+
+export type TrustLevel = "official" | "verified" | "community";
+export type TransportKind = "rosbridge" | "ssh" | "http" | "simulated";
+
+/** A parameter's JSON Schema: the one declaration forms, validation and types come from. */
+export interface ParameterSchema {
+  type: "object";
+  properties: Record<string, JsonObject & { type: string; default?: JsonValue }>;
+  required?: string[];
+  additionalProperties?: boolean;
+}
+
+export type PayloadMapping =
+  | { type: "static"; payload: JsonObject }
+  | { type: "transform"; transformFn: string; payload?: JsonObject }
+  | { type: "ssh"; sshCommand: string };
+
+/** How an action reaches the robot over rosbridge: a topic publish or a service call. */
+export type Ros2Dispatch =
+  | { topic: string; messageType: string; payloadMapping: PayloadMapping }
+  | { service: string; serviceType: string; args?: JsonObject };
+
+export interface PluginAction {
+  id: string;
+  name: string;
+  description?: string;
+  category: string;
+  icon?: string;
+  /** Milliseconds; HRIStudio's field. */
+  timeout?: number;
+  retryable?: boolean;
+  parameterSchema: ParameterSchema;
+  ros2?: Ros2Dispatch;
+}
+
+/** Our extension: which plugin action performs an abstract action, and with what parameters. */
+export interface AbstractBinding {
+  action: string;
+  /** A template over the abstract action's parameters, e.g. {"text": "{{text}}"}. */
+  parameters?: JsonObject;
+  /** Use this binding only when the abstract parameters have these values. */
+  when?: Record<string, string | number | boolean>;
+}
+
+export interface Plugin {
+  robotId: string;
+  name: string;
+  description?: string;
+  version: string;
+  pluginApiVersion: string;
+  trustLevel?: TrustLevel;
+  category?: string;
+  capabilities?: string[];
+  ros2Config?: { namespace?: string; nodePrefix?: string; defaultTopics?: Record<string, string> };
+  transport?: TransportKind;
+  actions: PluginAction[];
+  abstract?: Record<string, AbstractBinding | AbstractBinding[]>;
+  unsupported?: Array<{ action: string; reason: string }>;
+  /** Every other field of the file, kept as written. */
+  [extra: string]: unknown;
+}
+
+export interface PluginRepository {
+  id: string;
+  name: string;
+  trust?: TrustLevel;
+  pluginApiVersion?: string;
+  [extra: string]: unknown;
+}
