@@ -1,0 +1,110 @@
+// A researcher sets up a study in a real Chromium; the server keeps an
+// observer from editing it and a non-member from even seeing it.
+import type { Browser } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
+
+describe.sequential("the platform foundation, in the browser", () => {
+  let app: RunningApp;
+  let browser: Browser;
+  let studyUrl = "";
+
+  beforeAll(async () => {
+    app = await startApp();
+    browser = await launchBrowser();
+  });
+  afterAll(async () => {
+    await browser?.close();
+    await app?.stop();
+  });
+
+  it("lets each demo role sign in and shows their role", async () => {
+    for (const role of ["admin", "researcher", "wizard", "observer"]) {
+      const context = await newContext(browser, app.url);
+      const page = await context.newPage();
+      await signInAs(page, `${role}@demo.hristudio`, DEMO_PASSWORD);
+      await expect.poll(() => page.getByTestId("current-user").textContent()).toBeTruthy();
+      if (role === "admin") {
+        await page.getByRole("link", { name: "Admin" }).click();
+        await page.getByRole("heading", { name: "Accounts" }).waitFor();
+        await screenshot(page, "admin-accounts");
+      }
+      await context.close();
+    }
+  });
+
+  it("refuses a wrong password in plain language", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await page.goto("/sign-in");
+    await page.getByLabel("Email").fill("researcher@demo.hristudio");
+    await page.getByLabel("Password").fill("not-the-password");
+    await page.getByRole("button", { name: "Sign in" }).click();
+    await page.getByRole("alert").filter({ hasText: "That email and password do not match an account." }).waitFor();
+    await screenshot(page, "sign-in");
+    await page.context().close();
+  });
+
+  it("lets a researcher create a study and add an observer", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await page.getByRole("heading", { name: "Storytelling and memory (demo)" }).waitFor();
+    await screenshot(page, "dashboard");
+    await page.getByRole("button", { name: "New study" }).click();
+    await page.getByLabel("Title").fill("Gesture and recall");
+    await page.getByLabel("Description").fill("Do a robot's gestures help listeners remember?");
+    await page.getByRole("button", { name: "Create study" }).click();
+    await page.waitForURL(/\/studies\/[\w-]+$/);
+    await page.getByRole("heading", { name: "Gesture and recall", level: 1 }).waitFor();
+    studyUrl = page.url();
+    await page.getByRole("tab", { name: "Members" }).click();
+    await page.getByLabel("Member email").fill("observer@demo.hristudio");
+    await page.getByLabel("Study role").selectOption("observer");
+    await page.getByRole("button", { name: "Add member" }).click();
+    await page.getByRole("cell", { name: "observer@demo.hristudio" }).waitFor();
+    await screenshot(page, "study-members");
+    // An unknown email is explained, not swallowed.
+    await page.getByLabel("Member email").fill("nobody@example.org");
+    await page.getByRole("button", { name: "Add member" }).click();
+    await page.getByRole("alert").filter({ hasText: "No account uses nobody@example.org" }).waitFor();
+    await page.context().close();
+  });
+
+  it("shows an observer the study read-only, and the server refuses their edits", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "observer@demo.hristudio", DEMO_PASSWORD);
+    await page.goto(studyUrl);
+    await page.getByRole("heading", { name: "Gesture and recall" }).waitFor();
+    await page.getByText("About this study").waitFor();
+    expect(await page.getByRole("button", { name: "Save changes" }).count()).toBe(0);
+    await page.getByRole("tab", { name: "Members" }).click();
+    await page.getByRole("cell", { name: "observer@demo.hristudio" }).waitFor();
+    expect(await page.getByRole("button", { name: "Add member" }).count()).toBe(0);
+    // Past the interface, straight at the API with the observer's own session.
+    const studyId = studyUrl.split("/").pop()!;
+    const status = await page.evaluate(async (id) => {
+      const res = await fetch("/api/trpc/studies.update", { method: "POST", headers: { "content-type": "application/json" }, body: JSON.stringify({ studyId: id, title: "Hijacked" }) });
+      return (await res.json()).error?.data?.code as string;
+    }, studyId);
+    expect(status).toBe("FORBIDDEN");
+    await page.context().close();
+  });
+
+  it("does not let a non-member see the study, not even that it exists", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "wizard@demo.hristudio", DEMO_PASSWORD);
+    await page.getByRole("heading", { name: "Storytelling and memory (demo)" }).waitFor();
+    expect(await page.getByRole("heading", { name: "Gesture and recall" }).count()).toBe(0);
+    await page.goto(studyUrl);
+    await page.getByRole("heading", { name: "Study not found" }).waitFor();
+    expect(await page.content()).not.toContain("Gesture and recall");
+    await page.context().close();
+  });
+
+  it("sends a visitor without a session to the sign-in page", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await page.goto(studyUrl);
+    await page.waitForURL("**/sign-in");
+    await page.context().close();
+  });
+});
