@@ -1,0 +1,91 @@
+import { afterAll, describe, expect, it } from "vitest";
+import { freshDatabase } from "../../tests/support/db";
+import { experiments, studies, trials } from "@/server/db/schema";
+import { eventsSince } from "@/server/trials/event-store";
+import type { TrialProtocol } from "@/core/trial";
+import { timekeeperRobot } from "./robot";
+import { TrialHost } from "./trial-host";
+
+const protocol: TrialProtocol = {
+  steps: [
+    {
+      id: "s1",
+      name: "One",
+      actions: [
+        { id: "hold", type: "pause", parameters: { seconds: 0.05 } },
+        { id: "hi", type: "say", parameters: { text: "hi" } },
+      ],
+    },
+  ],
+};
+
+describe("a live trial host", async () => {
+  const { db, close } = await freshDatabase();
+  afterAll(close);
+
+  async function newTrialId() {
+    const [study] = await db.insert(studies).values({ title: "S" }).returning();
+    const [experiment] = await db.insert(experiments).values({ studyId: study!.id, name: "E", robotPluginId: "sim" }).returning();
+    const [trial] = await db.insert(trials).values({ studyId: study!.id, experimentId: experiment!.id, isRehearsal: true }).returning();
+    return trial!.id;
+  }
+
+  const settle = (host: TrialHost, predicate: () => boolean) =>
+    new Promise<void>((resolve) => {
+      const check = () => predicate() && resolve();
+      host.subscribe(check);
+      check();
+    });
+
+  it("commits, then tells subscribers, and carries out pauses and robot actions", async () => {
+    const trialId = await newTrialId();
+    const host = await TrialHost.open(db, trialId, protocol, timekeeperRobot());
+    const seen: number[] = [];
+    host.subscribe((events) => seen.push(...events.map((e) => e.seq)));
+    expect((await host.command({ kind: "start" }, null)).ok).toBe(true);
+    await host.command({ kind: "next" }, null);
+    await settle(host, () => host.current.actions.hold!.status === "done");
+    await host.command({ kind: "next" }, null);
+    await settle(host, () => host.current.actions.hi!.status === "done");
+    const log = await eventsSince(db, trialId);
+    expect(log.map((e) => e.type)).toEqual([
+      "trial.started",
+      "step.entered",
+      "action.requested",
+      "action.dispatched",
+      "action.completed",
+      "action.requested",
+      "action.dispatched",
+      "action.completed",
+    ]);
+    expect(seen).toEqual(log.map((e) => e.seq));
+    const held = log[4]!.relMs! - log[2]!.relMs!;
+    expect(held).toBeGreaterThanOrEqual(50);
+    await host.close();
+  });
+
+  it("refuses what the engine refuses, writing nothing", async () => {
+    const trialId = await newTrialId();
+    const host = await TrialHost.open(db, trialId, protocol, timekeeperRobot());
+    expect(await host.command({ kind: "next" }, null)).toEqual({ ok: false, reason: "The trial is not running." });
+    expect(await eventsSince(db, trialId)).toEqual([]);
+    await host.close();
+  });
+
+  it("rebuilds from its events after a restart and marks the interrupted action failed", async () => {
+    const trialId = await newTrialId();
+    const never = { ...timekeeperRobot(), perform() {} };
+    const first = await TrialHost.open(db, trialId, protocol, never);
+    await first.command({ kind: "start" }, null);
+    await first.command({ kind: "skip", actionId: "hold" }, null);
+    await first.command({ kind: "next" }, null);
+    // The process dies here: no close, the robot never answered.
+    const second = await TrialHost.open(db, trialId, protocol, timekeeperRobot());
+    expect(second.current.actions.hi!.status).toBe("failed");
+    expect(second.current.currentStepId).toBe("s1");
+    const log = await eventsSince(db, trialId);
+    expect(log.at(-1)).toMatchObject({ type: "action.failed", reason: "The trial runtime restarted while this action was running." });
+    expect(log.map((e) => e.seq)).toEqual([1, 2, 3, 4, 5]);
+    await second.close();
+  });
+});

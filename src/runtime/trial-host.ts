@@ -1,0 +1,91 @@
+// One live trial in the runtime: the only writer of its event log. Commands
+// run one at a time: decide (pure engine) → append (committed) → apply →
+// tell every client. Robot and clock reports come back as commands too.
+import { apply, decide, fold, type Command, type EngineEvent, type TrialProtocol, type TrialState } from "@/core/trial";
+import type { Database } from "@/server/db/client";
+import { appendEvents, eventsSince, type StoredEvent } from "@/server/trials/event-store";
+import { CONTROL_TYPES } from "@/core/trial/types";
+import type { RobotLink } from "./robot";
+
+export type CommandResult = { ok: true; events: StoredEvent[] } | { ok: false; reason: string };
+
+const BLOCKS_WITHOUT_ROBOT = new Set<string>(CONTROL_TYPES);
+
+export class TrialHost {
+  private state: TrialState;
+  private queue: Promise<unknown> = Promise.resolve();
+  private readonly listeners = new Set<(events: StoredEvent[]) => void>();
+  private readonly timers = new Set<ReturnType<typeof setTimeout>>();
+
+  private constructor(
+    private readonly db: Database,
+    readonly trialId: string,
+    readonly protocol: TrialProtocol,
+    private readonly robot: RobotLink,
+    history: StoredEvent[],
+  ) {
+    this.state = fold(protocol, history);
+  }
+
+  /** Rebuilds the trial from its events; actions cut off by a restart are marked failed. */
+  static async open(db: Database, trialId: string, protocol: TrialProtocol, robot: RobotLink) {
+    const host = new TrialHost(db, trialId, protocol, robot, await eventsSince(db, trialId));
+    const interrupted = Object.entries(host.state.actions).filter(([, a]) => a.status === "requested" || a.status === "running");
+    for (const [actionId] of interrupted) {
+      await host.command({ kind: "failed", actionId, reason: "The trial runtime restarted while this action was running." }, null);
+    }
+    return host;
+  }
+
+  get current(): TrialState {
+    return this.state;
+  }
+
+  subscribe(listener: (events: StoredEvent[]) => void) {
+    this.listeners.add(listener);
+    return () => this.listeners.delete(listener);
+  }
+
+  /** Runs after every earlier command has finished, so the log never forks. */
+  command(command: Command, actorId: string | null): Promise<CommandResult> {
+    const run = this.queue.then(() => this.execute(command, actorId));
+    this.queue = run.catch(() => undefined);
+    return run;
+  }
+
+  private async execute(command: Command, actorId: string | null): Promise<CommandResult> {
+    const decision = decide(this.protocol, this.state, command);
+    if (!decision.ok) return decision;
+    const stored = await appendEvents(this.db, this.trialId, decision.events, actorId);
+    for (const event of stored) this.state = apply(this.state, event);
+    for (const listener of this.listeners) listener(stored);
+    this.carryOut(decision.events);
+    return { ok: true, events: stored };
+  }
+
+  /** What happens in the world once the events are committed. */
+  private carryOut(events: EngineEvent[]) {
+    for (const event of events) {
+      if (event.type === "trial.emergency_stop" || event.type === "trial.aborted") this.robot.halt();
+      if (event.type !== "action.requested") continue;
+      const report = (command: Command) => void this.command(command, null);
+      if (event.actionType === "pause") {
+        report({ kind: "dispatched", actionId: event.actionId });
+        const seconds = Number(event.parameters.seconds ?? 0);
+        const timer = setTimeout(() => {
+          this.timers.delete(timer);
+          report({ kind: "completed", actionId: event.actionId, detail: { heldMs: seconds * 1000 } });
+        }, seconds * 1000);
+        this.timers.add(timer);
+      } else if (!BLOCKS_WITHOUT_ROBOT.has(event.actionType)) {
+        this.robot.perform({ actionId: event.actionId, actionType: event.actionType, parameters: event.parameters }, report);
+      }
+    }
+  }
+
+  async close() {
+    for (const t of this.timers) clearTimeout(t);
+    await this.queue;
+    this.robot.close();
+  }
+}
