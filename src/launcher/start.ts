@@ -59,13 +59,35 @@ async function main() {
   }
 
   if (!dev && !buildIfChanged(root, log)) return stop(1);
+  const runtimePort = config.HRI_RUNTIME_PORT === 3001 ? await firstFreePort(3001) : config.HRI_RUNTIME_PORT;
+  const shared = { DATABASE_URL: databaseUrl, BETTER_AUTH_SECRET: secret, HRI_RUNTIME_PORT: String(runtimePort) };
+  const remember = () => rememberChildren(dataDir, children.map((c) => c.pid!).filter(Boolean));
+
+  // The trial runtime is restarted if it dies: trials rebuild from their events.
+  const startRuntime = () => {
+    const runtime = spawn(process.execPath, ["run", join(root, "src", "runtime", "main.ts")], {
+      cwd: root,
+      stdio: ["ignore", "inherit", "inherit"],
+      env: { ...process.env, ...shared },
+    });
+    children.push(runtime);
+    remember();
+    runtime.on("exit", (code, signal) => {
+      children.splice(children.indexOf(runtime), 1);
+      if (stopping) return;
+      log(`The trial runtime stopped (${signal ?? `exit code ${code}`}); restarting it.`);
+      setTimeout(startRuntime, 500);
+    });
+  };
+  startRuntime();
+
   const web = spawn("node", [nextBin(root), dev ? "dev" : "start", "-H", config.HOST, "-p", String(port)], {
     cwd: root,
     stdio: ["ignore", "inherit", "inherit"],
-    env: { ...process.env, DATABASE_URL: databaseUrl, BETTER_AUTH_SECRET: secret, BETTER_AUTH_URL: baseURL, NEXT_TELEMETRY_DISABLED: "1" },
+    env: { ...process.env, ...shared, BETTER_AUTH_URL: baseURL, NEXT_TELEMETRY_DISABLED: "1" },
   });
   children.push(web);
-  rememberChildren(dataDir, children.map((c) => c.pid!).filter(Boolean));
+  remember();
   web.on("exit", (code) => {
     if (!stopping) {
       log(`The web app stopped (exit code ${code}).`);

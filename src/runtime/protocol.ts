@@ -41,6 +41,7 @@ export type ServerMessage =
   | { type: "ack"; requestId: string; seqs: number[] }
   | { type: "rejected"; requestId: string | null; reason: string }
   | { type: "presence"; viewers: Viewer[] }
+  | { type: "annotation"; annotation: { id: string; relMs: number; label: string; note: string; authorName: string } }
   | { type: "robot"; connected: boolean; detail?: string }
   | { type: "pong" };
 

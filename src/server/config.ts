@@ -11,6 +11,9 @@ const schema = z.object({
   HRI_DATA_DIR: z.string().default("./data"),
   HOST: z.string().default("127.0.0.1"),
   PORT: z.coerce.number().int().min(0).max(65535).optional(),
+  HRI_RUNTIME_PORT: z.coerce.number().int().min(0).max(65535).default(3001),
+  // Where browsers reach the trial runtime; defaults to HOST and HRI_RUNTIME_PORT.
+  HRI_RUNTIME_URL: z.string().url().optional(),
   BETTER_AUTH_SECRET: z.string().min(32, "must be at least 32 characters").optional(),
   BETTER_AUTH_URL: z.string().url().optional(),
   HRI_ALLOW_SIGNUP: flag.default(false),

@@ -8,6 +8,8 @@ import { SYSTEM_ROLES, type SystemRole } from "@/core/access/policy";
 interface Server {
   db: Database;
   auth: Auth;
+  secret: string;
+  runtimeUrl: string;
 }
 
 const globalForServer = globalThis as unknown as { hriServer?: Server };
@@ -25,7 +27,8 @@ export function server(): Server {
     allowSignUp: config.HRI_ALLOW_SIGNUP,
     signInPerMinute: config.HRI_SIGNIN_PER_MINUTE,
   });
-  globalForServer.hriServer = { db, auth };
+  const runtimeUrl = config.HRI_RUNTIME_URL ?? `ws://${config.HOST === "0.0.0.0" ? "localhost" : config.HOST}:${config.HRI_RUNTIME_PORT}`;
+  globalForServer.hriServer = { db, auth, secret: config.BETTER_AUTH_SECRET, runtimeUrl };
   return globalForServer.hriServer;
 }
 
@@ -36,7 +39,7 @@ export function toSessionUser(u: { id: string; name: string; email: string; role
 }
 
 export async function contextFromHeaders(headers: Headers): Promise<Context> {
-  const { db, auth } = server();
+  const { db, auth, secret, runtimeUrl } = server();
   const session = await auth.api.getSession({ headers });
-  return { db, user: session ? toSessionUser(session.user) : null };
+  return { db, user: session ? toSessionUser(session.user) : null, secret, runtimeUrl };
 }

@@ -20,6 +20,7 @@ const SYSTEM_ROLE: Record<Exclude<Caller, "anonymous">, SystemRole> = {
 };
 
 const callerFactory = createCallerFactory(appRouter);
+export const TEST_SECRET = "test-secret-".padEnd(40, "x");
 
 export async function newPerson(db: Database, label: string, role: SystemRole = "researcher"): Promise<SessionUser> {
   const email = `${label}-${crypto.randomUUID().slice(0, 8)}@example.org`;
@@ -32,7 +33,8 @@ export async function buildFixture(db: Database) {
   for (const caller of Object.keys(SYSTEM_ROLE) as Array<keyof typeof SYSTEM_ROLE>) {
     people[caller] = await newPerson(db, caller, SYSTEM_ROLE[caller]);
   }
-  const api = (caller: Caller) => callerFactory({ db, user: caller === "anonymous" ? null : people[caller] });
+  const context = (caller: Caller) => ({ db, user: caller === "anonymous" ? null : people[caller], secret: TEST_SECRET, runtimeUrl: "ws://127.0.0.1:1" });
+  const api = (caller: Caller) => callerFactory(context(caller));
   /** A study whose members are the four study-role callers. */
   async function newStudy(title = "Fixture study") {
     const study = await api("owner").studies.create({ title });
@@ -47,7 +49,7 @@ export async function buildFixture(db: Database) {
       endpoint: "/api/trpc",
       req: new Request(`http://test/api/trpc/${path}`, { method: "POST", body: JSON.stringify(input), headers: { "content-type": "application/json" } }),
       router: appRouter,
-      createContext: () => ({ db, user: caller === "anonymous" ? null : people[caller] }),
+      createContext: () => context(caller),
     });
     const body = (await res.json()) as { error?: { message: string; data: { code: string; issues: Array<{ field: string; message: string }> | null } } };
     return body.error ?? null;

@@ -12,6 +12,7 @@ export const DEMO_PASSWORD = "demo-password-for-tests";
 
 export interface RunningApp {
   url: string;
+  runtimeUrl: string;
   dataDir: string;
   process: ChildProcess;
   output: () => string;
@@ -32,6 +33,7 @@ export function newDataDir(): string {
 export async function startApp(options: { dataDir?: string; env?: Record<string, string> } = {}): Promise<RunningApp> {
   const dataDir = options.dataDir ?? newDataDir();
   const port = await freePort();
+  const runtimePort = await freePort();
   let output = "";
   const child = spawn(BUN, ["run", "src/launcher/start.ts"], {
     cwd: root,
@@ -42,6 +44,7 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
       DATABASE_URL: "",
       HRI_DATA_DIR: dataDir,
       PORT: String(port),
+      HRI_RUNTIME_PORT: String(runtimePort),
       HRI_DEMO_PASSWORD: DEMO_PASSWORD,
       HRI_SIGNIN_PER_MINUTE: "1000",
       ...options.env,
@@ -67,6 +70,7 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
   const exited = new Promise<void>((ok) => child.once("exit", () => ok()));
   return {
     url,
+    runtimeUrl: `ws://127.0.0.1:${runtimePort}`,
     dataDir,
     process: child,
     output: () => output,

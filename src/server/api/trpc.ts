@@ -15,6 +15,10 @@ export interface SessionUser {
 export interface Context {
   db: Database;
   user: SessionUser | null;
+  /** Signs the trial runtime's socket tokens. */
+  secret: string;
+  /** Where browsers reach the trial runtime. */
+  runtimeUrl: string;
 }
 
 export interface Meta {

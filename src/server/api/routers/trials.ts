@@ -2,6 +2,7 @@ import { TRPCError } from "@trpc/server";
 import { and, desc, eq } from "drizzle-orm";
 import { z } from "zod";
 import { experimentVersions, experiments, participants, studyMembers, trials, user } from "../../db/schema";
+import { signSocketToken } from "../../trials/socket-token";
 import { guarded, router } from "../trpc";
 import { id } from "../validation";
 
@@ -61,6 +62,14 @@ export const trialsRouter = router({
         .where(eq(trials.studyId, input.studyId))
         .orderBy(desc(trials.createdAt)),
     ),
+
+  /** A short-lived pass to the trial runtime's socket, carrying my role in the study. */
+  socketToken: guarded("trial.read")
+    .input(z.object({ trialId: id }))
+    .mutation(({ ctx, input }) => ({
+      url: ctx.runtimeUrl,
+      token: signSocketToken({ userId: ctx.user.id, name: ctx.user.name, trialId: input.trialId, studyRole: ctx.studyRole! }, ctx.secret),
+    })),
 
   get: guarded("trial.read")
     .input(z.object({ trialId: id }))

@@ -1,0 +1,47 @@
+// The live trials this runtime process owns. A trial is owned by one process
+// at a time: the first to take its PostgreSQL advisory lock.
+import { eq } from "drizzle-orm";
+import type postgres from "postgres";
+import type { TrialProtocol } from "@/core/trial";
+import type { Database } from "@/server/db/client";
+import { experimentVersions, trials } from "@/server/db/schema";
+import type { RobotLink } from "./robot";
+import { TrialHost } from "./trial-host";
+
+export interface TrialHosts {
+  get(trialId: string): Promise<TrialHost>;
+  closeAll(): Promise<void>;
+}
+
+export function trialHosts(db: Database, lockConnection: postgres.ReservedSql, robotFor: (trialId: string) => RobotLink): TrialHosts {
+  const hosts = new Map<string, Promise<TrialHost>>();
+
+  async function open(trialId: string) {
+    const [owned] = await lockConnection`select pg_try_advisory_lock(hashtextextended(${trialId}, 0)) as ok`;
+    if (!owned?.ok) throw new Error("Another runtime process is running this trial.");
+    const [row] = await db
+      .select({ snapshot: experimentVersions.snapshot, rehearsal: trials.rehearsalSnapshot })
+      .from(trials)
+      .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
+      .where(eq(trials.id, trialId));
+    const protocol = (row?.snapshot ?? row?.rehearsal) as TrialProtocol | null;
+    if (!protocol) throw new Error("This trial has no protocol to run.");
+    return TrialHost.open(db, trialId, protocol, robotFor(trialId));
+  }
+
+  return {
+    get(trialId) {
+      let host = hosts.get(trialId);
+      if (!host) {
+        host = open(trialId);
+        host.catch(() => hosts.delete(trialId));
+        hosts.set(trialId, host);
+      }
+      return host;
+    },
+    async closeAll() {
+      for (const host of hosts.values()) await (await host.catch(() => null))?.close();
+      hosts.clear();
+    },
+  };
+}

@@ -1,0 +1,110 @@
+// The trial runtime over real sockets: the wizard commands, observers watch
+// and annotate but cannot command, and kill -9 of the runtime loses and
+// duplicates nothing the wizard saw acknowledged.
+import { readFileSync } from "node:fs";
+import { join } from "node:path";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { apiClient, signIn } from "../support/http";
+import { connectTrial, type TrialSocket } from "../support/socket";
+
+type Api = ReturnType<typeof apiClient>;
+const seqsOf = (sockets: TrialSocket) =>
+  sockets.messages.flatMap((m) => ((m.events as Array<{ seq: number }> | undefined) ?? []).map((e) => e.seq));
+
+describe.sequential("a live trial through the runtime", () => {
+  let app: RunningApp;
+  let wizardApi: Api;
+  let observerApi: Api;
+  let trialId = "";
+
+  beforeAll(async () => {
+    app = await startApp();
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    wizardApi = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
+    observerApi = apiClient(app.url, await signIn(app.url, "observer@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await researcher.studies.mine.query();
+    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
+    const version = await researcher.versions.publish.mutate({ experimentId: experiment!.id });
+    const [participant] = await researcher.participants.list.query({ studyId: study!.id });
+    trialId = (await wizardApi.trials.create.mutate({ versionId: version.id, participantId: participant!.id })).id;
+  });
+  afterAll(async () => app?.stop());
+
+  const open = async (api: Api, lastSeq = 0) => {
+    const { url, token } = await api.trials.socketToken.mutate({ trialId });
+    expect(url).toBe(app.runtimeUrl);
+    return connectTrial(url, token, lastSeq);
+  };
+
+  it("acknowledges the wizard's commands after they are stored, and pushes them to observers", async () => {
+    const wizard = await open(wizardApi);
+    const observer = await open(observerApi);
+    expect(await wizard.command("r1", { kind: "start" })).toMatchObject({ type: "ack", seqs: [1, 2] });
+    await observer.next((m) => m.type === "events" && seqsOf({ ...observer, messages: [m] }).includes(2));
+    const stored = await wizardApi.trials.get.query({ trialId });
+    expect(stored.status).toBe("in_progress");
+    wizard.close();
+    observer.close();
+  });
+
+  it("never lets an observer command, but lets them mark a moment everyone sees", async () => {
+    const wizard = await open(wizardApi);
+    const observer = await open(observerApi);
+    expect(await observer.command("o1", { kind: "next" })).toMatchObject({ type: "rejected", reason: "As observer you may watch this trial but not run it." });
+    observer.send({ type: "annotate", requestId: "a1", label: "Participant laughed", note: "" });
+    await observer.next((m) => m.type === "ack" && m.requestId === "a1");
+    const seen = await wizard.next((m) => m.type === "annotation");
+    expect(seen).toMatchObject({ annotation: { label: "Participant laughed", authorName: "Olu Observer" } });
+    wizard.close();
+    observer.close();
+  });
+
+  it("refuses messages it does not understand and tokens it did not sign", async () => {
+    const wizard = await open(wizardApi);
+    wizard.send({ type: "command", requestId: "x", command: { kind: "fly" } });
+    expect((await wizard.next((m) => m.type === "rejected")).reason).toMatch(/^The message is not understood: command.kind/);
+    wizard.close();
+    const forged = await connectTrial(app.runtimeUrl, "forged.token");
+    expect(forged.closed).toEqual({ code: 4401, reason: "Your link to this trial has expired. Reload the page." });
+    expect(forged.messages).toEqual([]);
+  });
+
+  it("survives kill -9 of the runtime: the wizard resumes with nothing lost or repeated", async () => {
+    const wizard = await open(wizardApi);
+    await wizard.command("r2", { kind: "next" });
+    const acked = seqsOf(wizard);
+    const lastSeen = Math.max(...acked);
+    const runtimePid = childPids(app).find((pid) => cmdline(pid).includes("src/runtime/main.ts"))!;
+    process.kill(runtimePid, "SIGKILL");
+    // The launcher starts a new runtime; the wizard reconnects from what it saw.
+    let resumed: TrialSocket | null = null;
+    for (let i = 0; i < 100 && !resumed; i++) {
+      resumed = await open(wizardApi, lastSeen).catch(() => null);
+      if (!resumed) await new Promise((r) => setTimeout(r, 100));
+    }
+    const welcome = resumed!.messages.find((m) => m.type === "welcome")!;
+    const missed = (welcome.events as Array<{ seq: number }>).map((e) => e.seq);
+    expect(missed.every((s) => s > lastSeen)).toBe(true);
+    const next = await resumed!.command("r3", { kind: "next" });
+    expect(next.type).toBe("ack");
+    const all = await wizardApi.trials.get.query({ trialId });
+    expect(all.status).toBe("in_progress");
+    const seqs = [...acked, ...missed, ...(next.seqs as number[])];
+    expect(new Set(seqs).size).toBe(seqs.length);
+    expect(Math.min(...(next.seqs as number[]))).toBeGreaterThan(lastSeen);
+    resumed!.close();
+  });
+});
+
+function childPids(app: RunningApp): number[] {
+  return JSON.parse(readFileSync(join(app.dataDir, "launcher-children.json"), "utf8"));
+}
+
+function cmdline(pid: number): string {
+  try {
+    return readFileSync(`/proc/${pid}/cmdline`, "utf8").replaceAll("\0", " ");
+  } catch {
+    return "";
+  }
+}

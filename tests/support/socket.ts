@@ -1,0 +1,65 @@
+// A trial-runtime client for tests: a real WebSocket speaking the socket protocol.
+import WebSocket from "ws";
+import { SOCKET_PROTOCOL_VERSION } from "../../src/runtime/protocol";
+
+export interface TrialSocket {
+  messages: Array<Record<string, unknown>>;
+  /** Set when the server closed the connection. */
+  closed: { code: number; reason: string } | null;
+  send(message: Record<string, unknown>): void;
+  /** Resolves with the first message (already received or future) that matches. */
+  next(match: (m: Record<string, unknown>) => boolean, timeoutMs?: number): Promise<Record<string, unknown>>;
+  command(requestId: string, command: Record<string, unknown>): Promise<Record<string, unknown>>;
+  close(): void;
+}
+
+export async function connectTrial(url: string, token: string, lastSeq = 0): Promise<TrialSocket> {
+  const ws = new WebSocket(url);
+  const messages: Array<Record<string, unknown>> = [];
+  const waiters = new Set<() => void>();
+  ws.on("message", (data) => {
+    messages.push(JSON.parse(String(data)));
+    for (const w of [...waiters]) w();
+  });
+  await new Promise<void>((ok, fail) => {
+    ws.once("open", () => ok());
+    ws.once("error", fail);
+  });
+  const socket: TrialSocket = {
+    messages,
+    closed: null,
+    send: (message) => ws.send(JSON.stringify(message)),
+    next(match, timeoutMs = 10_000) {
+      return new Promise((ok, fail) => {
+        const check = () => {
+          const found = messages.find(match);
+          if (found) {
+            waiters.delete(check);
+            clearTimeout(timer);
+            ok(found);
+          }
+        };
+        const timer = setTimeout(() => {
+          waiters.delete(check);
+          fail(new Error(`No matching message; got ${JSON.stringify(messages).slice(-600)}`));
+        }, timeoutMs);
+        waiters.add(check);
+        check();
+      });
+    },
+    command(requestId, command) {
+      socket.send({ type: "command", requestId, command });
+      return socket.next((m) => m.requestId === requestId);
+    },
+    close: () => ws.close(),
+  };
+  const closed = new Promise<void>((ok) =>
+    ws.once("close", (code, reason) => {
+      socket.closed = { code, reason: String(reason) };
+      ok();
+    }),
+  );
+  socket.send({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token, lastSeq });
+  await Promise.race([socket.next((m) => m.type === "welcome" || m.type === "rejected"), closed]);
+  return socket;
+}
