@@ -1,0 +1,124 @@
+// The robot side of the simulated ROS graph: small "nodes" that publish robot
+// state and answer what clients send. Each returns a function that stops it.
+import type { Plugin } from "../../core/plugins";
+import type { RosGraph } from "./graph";
+
+export type RobotNode = (graph: RosGraph, state: RobotState) => () => void;
+
+/** What the simulated robot is doing, for tests and the robot view page. */
+export interface RobotState {
+  speaking: string | null;
+  lastSaid: string | null;
+  animation: string | null;
+  gesture: string | null;
+  posture: string;
+  velocity: { linear: number; angular: number };
+  headPitch: number;
+  battery: number;
+}
+
+export function initialState(): RobotState {
+  return { speaking: null, lastSaid: null, animation: null, gesture: null, posture: "stand", velocity: { linear: 0, angular: 0 }, headPitch: 0, battery: 100 };
+}
+
+const ROBOT = "robot";
+
+/**
+ * Speech: a std_msgs/String on /speech is "spoken" for msPerChar per
+ * character, then "said: <text>" is published on /speech_done (the shape the
+ * recorded test node used, so one client works against both).
+ */
+export function speech({ msPerChar = 60, topic = "/speech", doneTopic = "/speech_done" } = {}): RobotNode {
+  return (graph, state) => {
+    graph.declare(topic, "std_msgs/msg/String", ROBOT);
+    graph.declare(doneTopic, "std_msgs/msg/String", ROBOT);
+    const timers = new Set<NodeJS.Timeout>();
+    const stop = graph.listen(topic, (message) => {
+      const text = String(message.data);
+      state.speaking = text;
+      const timer = setTimeout(() => {
+        timers.delete(timer);
+        if (state.speaking === text) state.speaking = null;
+        state.lastSaid = text;
+        graph.publish(doneTopic, { data: `said: ${text}` });
+      }, msPerChar * text.length);
+      timers.add(timer);
+    });
+    return () => {
+      stop();
+      timers.forEach(clearTimeout);
+    };
+  };
+}
+
+const stamp = () => {
+  const now = Date.now();
+  return { sec: Math.floor(now / 1000), nanosec: (now % 1000) * 1_000_000 };
+};
+
+/** sensor_msgs/msg/JointState at a fixed rate; `position(n, state)` gives the nth sample. */
+export function jointStates({ hz = 10, names = ["head_yaw", "head_pitch"], position = (n: number, _: RobotState) => [0.01 * n, -0.5], velocity = [0.1, 0] } = {}): RobotNode {
+  return (graph, state) => {
+    graph.declare("/joint_states", "sensor_msgs/msg/JointState", ROBOT);
+    let n = 0;
+    const timer = setInterval(() => {
+      n++;
+      graph.publish("/joint_states", { header: { stamp: stamp(), frame_id: "base_link" }, name: names, position: position(n, state), velocity, effort: [] });
+    }, 1000 / hz);
+    return () => clearInterval(timer);
+  };
+}
+
+/** sensor_msgs/msg/BatteryState on /battery, draining 0.01 % per message. */
+export function battery({ hz = 1 } = {}): RobotNode {
+  return (graph, state) => {
+    graph.declare("/battery", "sensor_msgs/msg/BatteryState", ROBOT);
+    const timer = setInterval(() => {
+      state.battery = Math.max(0, state.battery - 0.01);
+      const percentage = state.battery / 100;
+      graph.publish("/battery", { header: { stamp: stamp(), frame_id: "" }, voltage: 21.6 + percentage * 4, current: -1.2, charge: percentage * 2.25, capacity: 2.25, percentage, power_supply_status: 2, present: true });
+    }, 1000 / hz);
+    return () => clearInterval(timer);
+  };
+}
+
+/** Declares every topic a plugin publishes to, and mirrors what arrives into the robot state. */
+export function pluginTopics(plugin: Plugin): RobotNode {
+  return (graph, state) => {
+    for (const action of plugin.actions) {
+      const ros2 = action.ros2;
+      if (ros2 && "topic" in ros2 && ros2.payloadMapping.type !== "ssh") graph.declare(ros2.topic, ros2.messageType, ROBOT);
+    }
+    const stops = [
+      graph.listen("/animation", (m) => void (state.animation = String(m.data))),
+      graph.listen("/gesture", (m) => void (state.gesture = String(m.data))),
+      graph.listen("/posture", (m) => void (state.posture = String(m.data))),
+      graph.listen("/cmd_vel", (m) => {
+        const { linear, angular } = m as { linear: { x: number }; angular: { z: number } };
+        state.velocity = { linear: linear.x, angular: angular.z };
+      }),
+      graph.listen("/joint_angles", (m) => {
+        const names = m.joint_names as string[];
+        const at = names.indexOf("HeadPitch");
+        if (at >= 0) state.headPitch = (m.joint_angles as number[])[at]!;
+      }),
+    ];
+    return () => stops.forEach((stop) => stop());
+  };
+}
+
+/** The services the recorded test node offered (README "ROS side"). */
+export function testServices({ slowMs = 3000 } = {}): RobotNode {
+  return (graph, state) => {
+    graph.offer("/set_led", "std_srvs/srv/SetBool", (r) => ({ success: true, message: `led=${r.data ? "True" : "False"}` }));
+    graph.offer("/wake_up", "std_srvs/srv/Trigger", () => {
+      state.posture = "stand";
+      return { success: true, message: "awake" };
+    });
+    graph.offer("/slow_op", "std_srvs/srv/Trigger", () => new Promise((done) => setTimeout(() => done({ success: true, message: `slow done after ${slowMs / 1000} s` }), slowMs)));
+    graph.offer("/broken", "std_srvs/srv/Trigger", () => {
+      throw new Error("motor fault");
+    });
+    return () => {};
+  };
+}

@@ -1,0 +1,92 @@
+// The simulated robot: a rosbridge v2 WebSocket server (ROS 2 flavour) with a
+// simulated ROS graph behind it. It records every message clients send, and
+// faults can be injected for tests: drop every socket, delay what it sends,
+// refuse new connections.
+import { WebSocketServer, type WebSocket } from "ws";
+import { Connection } from "./connection";
+import { RosGraph } from "./graph";
+import { initialState, type RobotNode, type RobotState } from "./nodes";
+
+export interface SimulatorOptions {
+  host?: string;
+  /** 0 picks a free port. */
+  port?: number;
+  nodes: RobotNode[];
+}
+
+export interface Received {
+  /** Milliseconds since the simulator started. */
+  at: number;
+  connection: string;
+  message: Record<string, unknown>;
+}
+
+export interface Simulator {
+  url: string;
+  port: number;
+  graph: RosGraph;
+  state: RobotState;
+  /** Every message clients sent, parsed, in arrival order. */
+  received: Received[];
+  /** What the real server would only have written to its log. */
+  log: Array<{ at: number; connection: string; text: string }>;
+  faults: { dropConnections(): void; refuseConnections(refuse: boolean): void; delayReplies(ms: number): void };
+  close(): Promise<void>;
+}
+
+export async function startSimulator(options: SimulatorOptions): Promise<Simulator> {
+  const t0 = performance.now();
+  const at = () => Math.round((performance.now() - t0) * 1000) / 1000;
+  const graph = new RosGraph();
+  const state = initialState();
+  const stops = options.nodes.map((node) => node(graph, state));
+  let refuse = false;
+  let delay = 0;
+  let next = 0;
+  const sockets = new Set<WebSocket>();
+  const server = new WebSocketServer({
+    host: options.host ?? "127.0.0.1",
+    port: options.port ?? 9090,
+    perMessageDeflate: false,
+    verifyClient: (_, accept) => accept(!refuse, 503, "refused by fault injection"),
+  });
+  await new Promise<void>((resolve, reject) => server.once("listening", resolve).once("error", reject));
+  const port = (server.address() as { port: number }).port;
+  const sim: Simulator = {
+    url: `ws://${options.host ?? "127.0.0.1"}:${port}`,
+    port,
+    graph,
+    state,
+    received: [],
+    log: [],
+    faults: {
+      dropConnections: () => sockets.forEach((s) => s.terminate()),
+      refuseConnections: (on) => void (refuse = on),
+      delayReplies: (ms) => void (delay = ms),
+    },
+    close: async () => {
+      stops.forEach((stop) => stop());
+      sockets.forEach((s) => s.terminate());
+      await new Promise<void>((resolve) => server.close(() => resolve()));
+    },
+  };
+  server.on("connection", (socket) => {
+    const id = String(next++);
+    sockets.add(socket);
+    const send = (text: string) => (delay ? setTimeout(() => socket.send(text), delay) : socket.send(text));
+    const connection = new Connection(id, graph, {
+      send,
+      log: (text) => sim.log.push({ at: at(), connection: id, text }),
+      record: (message) => sim.received.push({ at: at(), connection: id, message }),
+    });
+    // A binary frame is read as UTF-8 text (the real server happened to
+    // answer a binary JSON frame too; see transcript 07).
+    socket.on("message", (data) => connection.receive(data.toString()));
+    socket.on("close", () => {
+      sockets.delete(socket);
+      connection.close();
+    });
+    socket.on("error", () => socket.terminate());
+  });
+  return sim;
+}

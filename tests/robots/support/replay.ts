@@ -1,0 +1,64 @@
+// Replays the client side of a rosbridge transcript against a server, at the
+// recorded times, and collects what the server sends back.
+import { readFileSync } from "node:fs";
+import { WebSocket } from "ws";
+
+export const TRANSCRIPTS = "../shared/fixtures/rosbridge-transcripts";
+
+export interface Line {
+  dir: "send" | "recv" | "event";
+  t_ms: number;
+  frame?: unknown;
+  invalid_json?: true;
+  binary?: true;
+  event?: "open" | "close" | "terminate";
+  code?: number;
+  conn?: number;
+}
+
+export interface Got {
+  conn: number;
+  t: number;
+  frame: Record<string, unknown>;
+}
+
+export function readTranscript(name: string): Line[] {
+  return readFileSync(`${TRANSCRIPTS}/${name}`, "utf8")
+    .split("\n")
+    .filter(Boolean)
+    .map((line) => JSON.parse(line) as Line);
+}
+
+const sleepUntil = (start: number, t: number) => new Promise((r) => setTimeout(r, Math.max(0, start + t - performance.now())));
+
+export async function replay(lines: Line[], url: string, tailMs = 400): Promise<Got[]> {
+  const got: Got[] = [];
+  const sockets = new Map<number, WebSocket>();
+  const start = performance.now();
+  for (const line of lines) {
+    const conn = line.conn ?? 1;
+    if (line.dir === "recv") continue;
+    await sleepUntil(start, line.t_ms);
+    if (line.event === "open") {
+      const socket = new WebSocket(url, { perMessageDeflate: false });
+      socket.on("message", (data) => got.push({ conn, t: performance.now() - start, frame: JSON.parse(data.toString()) }));
+      await new Promise((resolve, reject) => socket.once("open", resolve).once("error", reject));
+      sockets.set(conn, socket);
+    } else if (line.event === "terminate") {
+      sockets.get(conn)!.terminate();
+    } else if (line.event === "close" && line.code === 1000) {
+      const socket = sockets.get(conn)!;
+      await new Promise((resolve) => {
+        socket.once("close", resolve);
+        socket.close(1000);
+      });
+    } else if (line.dir === "send") {
+      const socket = sockets.get(conn)!;
+      if (line.binary) socket.send(Buffer.from(line.frame as string, "base64"), { binary: true });
+      else socket.send(line.invalid_json ? (line.frame as string) : JSON.stringify(line.frame));
+    }
+  }
+  await new Promise((r) => setTimeout(r, tailMs));
+  sockets.forEach((s) => s.terminate());
+  return got;
+}
