@@ -1,5 +1,6 @@
 "use client";
 import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
+import Link from "next/link";
 import { useState, type FormEvent } from "react";
 import { studyRoleMay, type StudyRole } from "@/core/access/policy";
 import { useTRPC } from "@/lib/trpc";
@@ -29,6 +30,7 @@ export function TrialsTab({ studyId, role }: { studyId: string; role: StudyRole 
               <Th>Wizard</Th>
               <Th>Status</Th>
               <Th>Created</Th>
+              <Th className="text-right">Open</Th>
             </tr>
           </thead>
           <tbody>
@@ -43,6 +45,11 @@ export function TrialsTab({ studyId, role }: { studyId: string; role: StudyRole 
                   <Badge tone={STATUS_TONE[t.status]}>{t.status.replace("_", " ")}</Badge>
                 </Td>
                 <Td>{new Date(t.createdAt).toLocaleString()}</Td>
+                <Td className="text-right">
+                  <Link className="font-medium text-brand-600 hover:underline" href={`/trials/${t.id}`} aria-label={`${studyRoleMay(role, "trial.run") ? "Run" : "Watch"} trial of ${t.participantCode ?? "no participant"}`}>
+                    {studyRoleMay(role, "trial.run") ? "Run" : "Watch"}
+                  </Link>
+                </Td>
               </tr>
             ))}
           </tbody>

@@ -1,5 +1,6 @@
 import { TRPCError } from "@trpc/server";
-import { and, desc, eq } from "drizzle-orm";
+import { and, desc, eq, sql } from "drizzle-orm";
+import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
 import { experimentVersions, experiments, participants, studyMembers, trials, user } from "../../db/schema";
 import { signSocketToken } from "../../trials/socket-token";
@@ -75,13 +76,13 @@ export const trialsRouter = router({
     .input(z.object({ trialId: id }))
     .query(async ({ ctx, input }) => {
       const [row] = await ctx.db
-        .select({ ...columns, studyId: trials.studyId })
+        .select({ ...columns, studyId: trials.studyId, protocol: sql<ProtocolSnapshot>`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})` })
         .from(trials)
         .innerJoin(experiments, eq(experiments.id, trials.experimentId))
         .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
         .leftJoin(participants, eq(participants.id, trials.participantId))
         .leftJoin(user, eq(user.id, trials.wizardId))
         .where(eq(trials.id, input.trialId));
-      return row!;
+      return { ...row!, myRole: ctx.studyRole! };
     }),
 });

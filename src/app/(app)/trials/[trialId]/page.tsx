@@ -1,0 +1,6 @@
+import { TrialPage } from "@/features/execution/trial-page";
+
+export default async function Page({ params }: { params: Promise<{ trialId: string }> }) {
+  const { trialId } = await params;
+  return <TrialPage trialId={trialId} />;
+}

@@ -1,0 +1,69 @@
+"use client";
+// The protocol as both the wizard and observers see it: steps, the current
+// one highlighted, and each action's status and timing from the event log.
+import type { ActionState, TrialProtocol, TrialState } from "@/core/trial";
+import { cn } from "@/ui/cn";
+import { Badge, type Tone } from "@/ui/surface";
+
+const STATUS: Record<ActionState["status"], { label: string; tone: Tone }> = {
+  waiting: { label: "waiting", tone: "slate" },
+  requested: { label: "sent", tone: "blue" },
+  running: { label: "running", tone: "blue" },
+  done: { label: "done", tone: "green" },
+  failed: { label: "failed", tone: "red" },
+  timed_out: { label: "timed out", tone: "red" },
+  skipped: { label: "skipped", tone: "amber" },
+};
+
+export function describeAction(a: { type: string; name?: string; parameters: Record<string, unknown> }) {
+  const text = typeof a.parameters.text === "string" ? `“${a.parameters.text}”` : "";
+  return a.name || text || a.type.replaceAll("_", " ");
+}
+
+export function StepList({ protocol, state }: { protocol: TrialProtocol; state: TrialState }) {
+  return (
+    <ol className="space-y-1" aria-label="Steps">
+      {protocol.steps.map((step, i) => {
+        const current = step.id === state.currentStepId;
+        const done = step.actions.length > 0 && step.actions.every((a) => state.actions[a.id]?.status !== "waiting");
+        return (
+          <li
+            key={step.id}
+            aria-current={current ? "step" : undefined}
+            className={cn("rounded-md px-3 py-2 text-sm", current ? "bg-brand-600 font-semibold text-white" : done ? "text-slate-400" : "text-slate-700")}
+          >
+            {i + 1}. {step.name}
+          </li>
+        );
+      })}
+    </ol>
+  );
+}
+
+export function StepActions({ protocol, state }: { protocol: TrialProtocol; state: TrialState }) {
+  const step = protocol.steps.find((s) => s.id === state.currentStepId);
+  if (!step) return <p className="text-slate-500">The trial has not started.</p>;
+  return (
+    <section aria-label="Current step">
+      <h2 className="text-xl font-semibold" data-testid="current-step">
+        {step.name}
+      </h2>
+      <ul className="mt-3 divide-y divide-slate-100 rounded-lg border border-slate-200 bg-white">
+        {step.actions.map((a) => {
+          const s = state.actions[a.id]!;
+          const took = s.finishedAt != null && s.requestedAt != null ? `${((s.finishedAt - s.requestedAt) / 1000).toFixed(1)} s` : "";
+          return (
+            <li key={a.id} className="flex items-center gap-3 px-4 py-2 text-sm" data-testid={`action-${a.id}`}>
+              <Badge tone={STATUS[s.status].tone}>{STATUS[s.status].label}</Badge>
+              <span className="flex-1">
+                {a.type === "wizard_instruction" ? <strong>Instruction: {String(a.parameters.text ?? a.name)}</strong> : describeAction(a)}
+                {a.parallelGroup && <span className="ml-2 text-xs text-slate-400">together</span>}
+              </span>
+              <span className="text-xs tabular-nums text-slate-500">{took}</span>
+            </li>
+          );
+        })}
+      </ul>
+    </section>
+  );
+}

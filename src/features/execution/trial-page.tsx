@@ -1,0 +1,81 @@
+"use client";
+import { useQuery } from "@tanstack/react-query";
+import Link from "next/link";
+import { studyRoleMay } from "@/core/access/policy";
+import type { TrialProtocol } from "@/core/trial";
+import { useTRPC } from "@/lib/trpc";
+import { Problem } from "@/ui/problem";
+import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
+import { MarkMoment, Moments, Watching } from "./observer-panel";
+import { StepActions, StepList } from "./protocol-view";
+import { TrialClock } from "./trial-clock";
+import { useTrialSocket } from "./use-trial-socket";
+import { SHORTCUTS, WizardControls } from "./wizard-controls";
+
+export function TrialPage({ trialId }: { trialId: string }) {
+  const trpc = useTRPC();
+  const trial = useQuery(trpc.trials.get.queryOptions({ trialId }));
+  if (trial.isPending) return <Spinner />;
+  if (trial.error) return <Problem error={trial.error} />;
+  return <LiveTrial trial={trial.data} protocol={trial.data.protocol as TrialProtocol} />;
+}
+
+type Trial = { id: string; studyId: string; experimentName: string; participantCode: string | null; isRehearsal: boolean; version: number | null; myRole: "owner" | "researcher" | "wizard" | "observer" };
+
+function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol }) {
+  const live = useTrialSocket(trial.id, protocol);
+  const wizard = studyRoleMay(trial.myRole, "trial.run");
+  const started = live.events.find((e) => e.type === "trial.started");
+  const ended = live.state.status === "completed" || live.state.status === "aborted";
+  return (
+    <div className="space-y-4">
+      <div className="flex flex-wrap items-center gap-3">
+        <Link href={`/studies/${trial.studyId}`} className="text-sm text-slate-500 hover:text-slate-800">
+          ← Study
+        </Link>
+        <h1 className="text-xl font-semibold">
+          {trial.experimentName} · {trial.participantCode ?? "no participant"}
+        </h1>
+        {trial.isRehearsal ? <Badge tone="amber">rehearsal</Badge> : <Badge>version {trial.version}</Badge>}
+        <Badge tone={STATUS_TONE[live.state.status]}>
+          <span data-testid="trial-status">{live.state.status.replace("_", " ")}</span>
+        </Badge>
+        {live.state.emergencyStopped && <Badge tone="red">emergency stop</Badge>}
+        <span className="ml-auto flex items-center gap-4">
+          <Badge tone={live.connected ? "green" : "red"}>{live.connected ? "live" : "reconnecting"}</Badge>
+          <TrialClock startedAt={started?.serverTime ?? null} stopped={ended} />
+        </span>
+      </div>
+      {live.notice && <Problem error={{ message: live.notice }} />}
+      <div className="grid gap-6 lg:grid-cols-[14rem_1fr_20rem]">
+        <Card className="p-3">
+          <StepList protocol={protocol} state={live.state} />
+        </Card>
+        <div className="space-y-6">
+          <StepActions protocol={protocol} state={live.state} />
+          {wizard && <WizardControls protocol={protocol} state={live.state} send={live.command} />}
+        </div>
+        <div className="space-y-4">
+          <Watching viewers={live.viewers} />
+          {!wizard && <MarkMoment annotate={live.annotate} />}
+          <Moments annotations={live.annotations} />
+          {wizard && (
+            <Card className="p-4 text-sm">
+              <h2 className="mb-2 font-semibold">Keyboard</h2>
+              <dl className="grid grid-cols-[4rem_1fr] gap-y-1">
+                {SHORTCUTS.map(([key, what]) => (
+                  <div key={key} className="contents">
+                    <dt>
+                      <kbd className="rounded border border-slate-300 bg-slate-50 px-1.5 font-mono text-xs">{key}</kbd>
+                    </dt>
+                    <dd className="text-slate-600">{what}</dd>
+                  </div>
+                ))}
+              </dl>
+            </Card>
+          )}
+        </div>
+      </div>
+    </div>
+  );
+}

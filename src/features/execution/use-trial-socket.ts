@@ -1,0 +1,107 @@
+"use client";
+// The browser's side of the trial socket: connects with a fresh token,
+// resumes from the last event it saw after any drop, and folds the events
+// into the trial's state with the same engine the server uses.
+import { useMutation } from "@tanstack/react-query";
+import { useCallback, useEffect, useMemo, useRef, useState } from "react";
+import { fold, type TrialEvent, type TrialProtocol } from "@/core/trial";
+import type { WizardCommand } from "@/runtime/protocol";
+import { SOCKET_PROTOCOL_VERSION, type ServerMessage, type Viewer } from "@/runtime/protocol";
+import { useTRPC } from "@/lib/trpc";
+
+export type StoredEvent = TrialEvent & { serverTime: string; actorId: string | null };
+export type Annotation = Extract<ServerMessage, { type: "annotation" }>["annotation"];
+type Outcome = { ok: true } | { ok: false; reason: string };
+
+export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
+  const trpc = useTRPC();
+  const tokenFor = useMutation(trpc.trials.socketToken.mutationOptions());
+  const [events, setEvents] = useState<StoredEvent[]>([]);
+  const [viewers, setViewers] = useState<Viewer[]>([]);
+  const [annotations, setAnnotations] = useState<Annotation[]>([]);
+  const [connected, setConnected] = useState(false);
+  const [notice, setNotice] = useState<string | null>(null);
+  const socket = useRef<WebSocket | null>(null);
+  const lastSeq = useRef(0);
+  const pending = useRef(new Map<string, (o: Outcome) => void>());
+
+  const receive = useCallback((incoming: StoredEvent[]) => {
+    const fresh = incoming.filter((e) => e.seq > lastSeq.current);
+    if (!fresh.length) return;
+    lastSeq.current = fresh.at(-1)!.seq;
+    setEvents((before) => [...before, ...fresh]);
+  }, []);
+
+  useEffect(() => {
+    let stopped = false;
+    let retry = 500;
+    const connect = async () => {
+      let ticket: { url: string; token: string };
+      try {
+        ticket = await tokenFor.mutateAsync({ trialId });
+      } catch {
+        if (!stopped) setTimeout(connect, retry);
+        return;
+      }
+      const ws = new WebSocket(ticket.url);
+      socket.current = ws;
+      ws.onopen = () => ws.send(JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: ticket.token, lastSeq: lastSeq.current }));
+      ws.onmessage = (message) => {
+        const m = JSON.parse(String(message.data)) as ServerMessage;
+        if (m.type === "welcome") {
+          retry = 500;
+          setConnected(true);
+          setNotice(null);
+          setViewers(m.viewers);
+          receive(m.events as StoredEvent[]);
+        } else if (m.type === "events") receive(m.events as StoredEvent[]);
+        else if (m.type === "presence") setViewers(m.viewers);
+        else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
+        else if (m.type === "ack" || m.type === "rejected") {
+          const settle = m.requestId ? pending.current.get(m.requestId) : undefined;
+          if (m.requestId) pending.current.delete(m.requestId);
+          if (m.type === "rejected") setNotice(m.reason);
+          settle?.(m.type === "ack" ? { ok: true } : { ok: false, reason: m.reason });
+        }
+      };
+      ws.onclose = () => {
+        setConnected(false);
+        for (const settle of pending.current.values()) settle({ ok: false, reason: "The connection dropped before the server confirmed this." });
+        pending.current.clear();
+        if (stopped) return;
+        setNotice("Connection lost: reconnecting…");
+        retry = Math.min(retry * 2, 5000);
+        setTimeout(connect, retry);
+      };
+    };
+    void connect();
+    return () => {
+      stopped = true;
+      socket.current?.close();
+    };
+    // The connection lives as long as the page shows this trial.
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [trialId]);
+
+  const request = useCallback((message: Record<string, unknown>): Promise<Outcome> => {
+    const ws = socket.current;
+    if (!ws || ws.readyState !== WebSocket.OPEN) return Promise.resolve({ ok: false, reason: "Not connected to the trial yet." });
+    const requestId = crypto.randomUUID();
+    return new Promise((settle) => {
+      pending.current.set(requestId, settle);
+      ws.send(JSON.stringify({ ...message, requestId }));
+    });
+  }, []);
+
+  const state = useMemo(() => fold(protocol, events), [protocol, events]);
+  return {
+    state,
+    events,
+    viewers,
+    annotations,
+    connected,
+    notice,
+    command: (command: WizardCommand) => request({ type: "command", command }),
+    annotate: (label: string, note = "") => request({ type: "annotate", label, note }),
+  };
+}

@@ -1,0 +1,117 @@
+"use client";
+// The wizard's controls: the next scripted action as the big button, answer
+// choices by number, and everything off script one key away.
+import { useEffect, useRef, useState } from "react";
+import { answerOptions, nextUnit, type TrialProtocol, type TrialState } from "@/core/trial";
+import type { WizardCommand } from "@/runtime/protocol";
+import { Button } from "@/ui/button";
+import { Input } from "@/ui/field";
+import { describeAction } from "./protocol-view";
+
+type Send = (c: WizardCommand) => Promise<{ ok: boolean }>;
+
+export const SHORTCUTS = [
+  ["N", "start / next action"],
+  ["S", "skip the next action"],
+  ["1–9", "record answer"],
+  ["U", "unscripted speech"],
+  ["P", "pause / resume"],
+  ["Esc", "emergency stop"],
+] as const;
+
+export function nextLabel(protocol: TrialProtocol, state: TrialState): string {
+  if (state.status === "scheduled") return "Start trial";
+  const unit = nextUnit(protocol, state);
+  if (unit.length) return unit.map(describeAction).join(" + ");
+  const index = protocol.steps.findIndex((s) => s.id === state.currentStepId);
+  const following = protocol.steps[index + 1];
+  return following ? `Go to “${following.name}”` : "Finish trial";
+}
+
+export function WizardControls({ protocol, state, send }: { protocol: TrialProtocol; state: TrialState; send: Send }) {
+  const speech = useRef<HTMLInputElement>(null);
+  const [text, setText] = useState("");
+  const unit = nextUnit(protocol, state);
+  const question = unit[0]?.type === "record_answer" ? unit[0] : null;
+  const options = question ? answerOptions(question) : [];
+  const running = state.status === "in_progress";
+  const ended = state.status === "completed" || state.status === "aborted";
+  const next = () => void send(state.status === "scheduled" ? { kind: "start" } : { kind: "next" });
+
+  useEffect(() => {
+    const onKey = (e: KeyboardEvent) => {
+      if (e.key === "Escape") {
+        if (!ended) void send({ kind: "emergency_stop" });
+        return;
+      }
+      const typing = e.target instanceof HTMLInputElement || e.target instanceof HTMLTextAreaElement;
+      if (typing || e.ctrlKey || e.metaKey || e.altKey || ended) return;
+      const key = e.key.toLowerCase();
+      if (key === "n" && !question) next();
+      else if (key === "s" && running) void send({ kind: "skip" });
+      else if (key === "p") void send({ kind: state.status === "paused" ? "resume" : "pause" });
+      else if (key === "u") {
+        e.preventDefault();
+        speech.current?.focus();
+      } else if (/^[1-9]$/.test(key) && question) {
+        const option = options[Number(key) - 1];
+        if (option) void send({ kind: "answer", actionId: question.id, optionId: option.id });
+      }
+    };
+    window.addEventListener("keydown", onKey);
+    return () => window.removeEventListener("keydown", onKey);
+  });
+
+  const say = async () => {
+    if (!text.trim()) return;
+    const done = await send({ kind: "unscripted", actionType: "say", parameters: { text } });
+    if (done.ok) setText("");
+  };
+
+  return (
+    <div className="space-y-4">
+      {question ? (
+        <div className="rounded-lg border-2 border-brand-500 bg-brand-50 p-4">
+          <p className="font-medium">{String(question.parameters.prompt ?? "Record the participant's answer")}</p>
+          <div className="mt-3 flex flex-wrap gap-2">
+            {options.map((o, i) => (
+              <Button key={o.id} size="lg" onClick={() => void send({ kind: "answer", actionId: question.id, optionId: o.id })}>
+                <kbd className="rounded bg-white/20 px-1.5 text-xs">{i + 1}</kbd> {o.label}
+              </Button>
+            ))}
+          </div>
+        </div>
+      ) : (
+        <Button size="lg" className="h-16 w-full text-lg" disabled={ended || state.status === "paused"} onClick={next}>
+          <kbd className="rounded bg-white/20 px-1.5 text-xs">N</kbd> {ended ? "Trial ended" : nextLabel(protocol, state)}
+        </Button>
+      )}
+      <div className="flex flex-wrap gap-2">
+        <Button variant="secondary" disabled={!running || unit.length === 0} onClick={() => void send({ kind: "skip" })}>
+          Skip (S)
+        </Button>
+        <Button variant="secondary" disabled={ended || state.status === "scheduled"} onClick={() => void send({ kind: state.status === "paused" ? "resume" : "pause" })}>
+          {state.status === "paused" ? "Resume (P)" : "Pause (P)"}
+        </Button>
+        <Button variant="secondary" disabled={ended || state.status === "scheduled"} onClick={() => void send({ kind: "complete" })}>
+          Complete trial
+        </Button>
+        <Button variant="danger" disabled={ended || state.status === "scheduled"} onClick={() => void send({ kind: "emergency_stop" })}>
+          Emergency stop (Esc)
+        </Button>
+      </div>
+      <form
+        className="flex gap-2"
+        onSubmit={(e) => {
+          e.preventDefault();
+          void say();
+        }}
+      >
+        <Input ref={speech} aria-label="Unscripted speech" placeholder="Say something off script (U)…" value={text} onChange={(e) => setText(e.target.value)} disabled={!running} />
+        <Button type="submit" variant="secondary" disabled={!running}>
+          Say
+        </Button>
+      </form>
+    </div>
+  );
+}
