@@ -70,6 +70,11 @@ export function decide(protocol: TrialProtocol, state: TrialState, command: Comm
 }
 
 function next(protocol: TrialProtocol, state: TrialState): Decision {
+  // A designed pause holds the protocol: what follows waits until it is over.
+  const holding = findStep(protocol, state.currentStepId)!.step.actions.find(
+    (a) => a.type === "pause" && (state.actions[a.id]?.status === "requested" || state.actions[a.id]?.status === "running"),
+  );
+  if (holding) return no(`Wait: the ${Number(holding.parameters.seconds ?? 0)} s pause is still running.`);
   const unit = nextUnit(protocol, state);
   if (unit.length > 0) return request(protocol, state, unit, undefined);
   const current = findStep(protocol, state.currentStepId)!;

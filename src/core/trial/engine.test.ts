@@ -54,7 +54,7 @@ const introDone: Command[] = [
   { kind: "completed", actionId: "wave" },
   { kind: "next" },
 ];
-const atQuestion: Command[] = [...introDone, { kind: "next" }, { kind: "next" }, { kind: "next" }];
+const atQuestion: Command[] = [...introDone, { kind: "next" }, { kind: "next" }, { kind: "dispatched", actionId: "hold" }, { kind: "completed", actionId: "hold" }, { kind: "next" }];
 
 const brief = (events: EngineEvent[] | string) =>
   typeof events === "string" ? events : events.map((e) => [e.type, "actionId" in e ? e.actionId : "stepId" in e ? e.stepId : null, e.deviation ?? null]);
@@ -66,6 +66,7 @@ describe("the trial engine", () => {
     ["a wizard instruction finishes as it starts", [...introDone], [["action.requested", "note", null], ["action.completed", "note", null]]],
     ["next on a finished step enters the following one", [...introDone, { kind: "next" }], [["step.entered", "recall", null]]],
     ["a pause is requested; the clock completes it", [...introDone, { kind: "next" }, { kind: "next" }], [["action.requested", "hold", null]]],
+    ["next waits while a designed pause runs", [...introDone, { kind: "next" }, { kind: "next" }, { kind: "next" }], "Wait: the 2 s pause is still running."],
     ["the question must be answered, not skipped past by next", [...atQuestion, { kind: "next" }], "Record the participant's answer: red or other."],
     [
       "an answer resolves the branch to its step by itself",
@@ -107,7 +108,7 @@ describe("the trial engine", () => {
     expect(resumed).toEqual(state);
     expect(state.currentStepId).toBe("yes");
     expect(state.answers).toEqual({ answer: "correct" });
-    expect(state.actions.hold!.status).toBe("requested");
+    expect(state.actions.hold!.status).toBe("done");
   });
 
   it("times every action from its events", () => {
