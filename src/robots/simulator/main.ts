@@ -1,0 +1,20 @@
+// Runs the simulated robot on its own: `node --import tsx src/robots/simulator/main.ts`
+// or from the launcher. SIM_PORT (default 9090), SIM_HOST (default 127.0.0.1)
+// and SIM_PLUGIN (default plugins/nao6-ros2.json) choose where and as what.
+import { readFile } from "node:fs/promises";
+import { loadPlugin, formatPluginError } from "../../core/plugins";
+import { simulatedRobot, startSimulator, type Simulator } from "./index";
+
+export async function startDefaultSimulator(env: NodeJS.ProcessEnv = process.env): Promise<Simulator> {
+  const file = env.SIM_PLUGIN ?? "plugins/nao6-ros2.json";
+  const loaded = loadPlugin(file, await readFile(file, "utf8"));
+  if (!loaded.ok) throw new Error(loaded.errors.map(formatPluginError).join("\n"));
+  return startSimulator({ host: env.SIM_HOST ?? "127.0.0.1", port: Number(env.SIM_PORT ?? 9090), nodes: simulatedRobot(loaded.value) });
+}
+
+if (import.meta.url === `file://${process.argv[1]}`) {
+  const sim = await startDefaultSimulator();
+  console.log(`simulated robot: rosbridge on ${sim.url}`);
+  const stop = () => void sim.close().then(() => process.exit(0));
+  process.on("SIGINT", stop).on("SIGTERM", stop);
+}

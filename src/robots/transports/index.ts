@@ -1,0 +1,29 @@
+// Transports are chosen here and nowhere else, from the plugin's `transport`.
+// "simulated" is rosbridge to the built-in simulated robot.
+import type { Plugin } from "../../core/plugins";
+import { RosbridgeTransport } from "./rosbridge";
+import type { Transport } from "./transport";
+
+export type { DispatchOutcome, Health, Transport } from "./transport";
+
+export interface TransportConfig {
+  /** The robot's rosbridge, e.g. ws://nao.local:9090. */
+  rosbridgeUrl?: string;
+  /** The simulated robot's rosbridge, started by the launcher. */
+  simulatorUrl?: string;
+}
+
+export type TransportChoice = { ok: true; transport: Transport } | { ok: false; reason: string };
+
+export function transportFor(plugin: Plugin, config: TransportConfig): TransportChoice {
+  const kind = plugin.transport ?? "rosbridge";
+  if (kind === "simulated") {
+    if (!config.simulatorUrl) return { ok: false, reason: "the simulated robot is not running" };
+    return { ok: true, transport: new RosbridgeTransport({ url: config.simulatorUrl }) };
+  }
+  if (kind === "rosbridge") {
+    if (!config.rosbridgeUrl) return { ok: false, reason: `no rosbridge address configured for ${plugin.robotId}` };
+    return { ok: true, transport: new RosbridgeTransport({ url: config.rosbridgeUrl }) };
+  }
+  return { ok: false, reason: `the ${kind} transport is not available yet` };
+}
