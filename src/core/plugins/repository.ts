@@ -28,17 +28,23 @@ const validateIndex = ajv.compile({
 });
 
 export function parseRepository(file: string, text: string): LoadResult<PluginRepository> {
-  return check(file, text, validateRepository);
+  return check(file, text, validateRepository, 'must be lower-case letters, digits, "-" or "_"');
 }
 
 export function parsePluginIndex(file: string, text: string): LoadResult<string[]> {
-  return check(file, text, validateIndex);
+  return check(file, text, validateIndex, "must be a plugin file name ending in .json, without folders");
 }
 
-function check<T>(file: string, text: string, validate: ReturnType<typeof ajv.compile>): LoadResult<T> {
+/** `patternReason` replaces ajv's regular expression, which means nothing to a researcher. */
+function check<T>(file: string, text: string, validate: ReturnType<typeof ajv.compile>, patternReason: string): LoadResult<T> {
   const parsed = parseJson(file, text);
   if (!parsed.ok) return parsed;
   if (validate(parsed.value)) return { ok: true, value: parsed.value as T };
-  const reasons = plainErrors(validate.errors).map((e) => e.path === "" || !e.reason.includes("pattern") ? e : { ...e, reason: "must be a plugin file name ending in .json, without folders" });
-  return { ok: false, errors: reasons.map((e): PluginError => ({ file, path: e.path, code: "schema", reason: e.reason })) };
+  const errors = plainErrors(validate.errors).map((e): PluginError => ({
+    file,
+    path: e.path,
+    code: "schema",
+    reason: e.reason.startsWith("must match the pattern") ? patternReason : e.reason,
+  }));
+  return { ok: false, errors };
 }
