@@ -12,3 +12,4 @@ export { TRANSFORMS } from "./transforms";
 export { resolveAction, type Resolution } from "./resolve";
 export { portability, type PortableExperiment, type PortabilityReport, type ActionPortability } from "./portability";
 export { outgoingFor, type Outgoing } from "./payload";
+export { pluginChanges, effectiveTrust, type PluginChange } from "./changes";

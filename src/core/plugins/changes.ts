@@ -1,0 +1,43 @@
+// What a repository sync changed, for the administrator to review: plugins
+// added, removed or updated (with their versions), and which actions changed.
+import { canonicalJson } from "../protocol/canonical";
+import type { Plugin, TrustLevel } from "./types";
+
+export interface PluginChange {
+  robotId: string;
+  change: "added" | "removed" | "updated" | "unchanged";
+  fromVersion?: string;
+  toVersion?: string;
+  actions: { added: string[]; removed: string[]; changed: string[] };
+}
+
+export function pluginChanges(before: Plugin[], after: Plugin[]): PluginChange[] {
+  const old = new Map(before.map((p) => [p.robotId, p]));
+  const now = new Map(after.map((p) => [p.robotId, p]));
+  const ids = [...new Set([...old.keys(), ...now.keys()])].sort();
+  return ids.map((robotId) => {
+    const a = old.get(robotId);
+    const b = now.get(robotId);
+    const actions = actionChanges(a, b);
+    const change = !a ? "added" : !b ? "removed" : canonicalJson(a) === canonicalJson(b) ? "unchanged" : "updated";
+    return { robotId, change, fromVersion: a?.version, toVersion: b?.version, actions };
+  });
+}
+
+function actionChanges(a: Plugin | undefined, b: Plugin | undefined) {
+  const old = new Map((a?.actions ?? []).map((x) => [x.id, canonicalJson(x)]));
+  const now = new Map((b?.actions ?? []).map((x) => [x.id, canonicalJson(x)]));
+  return {
+    added: [...now.keys()].filter((id) => !old.has(id)),
+    removed: [...old.keys()].filter((id) => !now.has(id)),
+    changed: [...now.keys()].filter((id) => old.has(id) && old.get(id) !== now.get(id)),
+  };
+}
+
+const TRUST_ORDER: TrustLevel[] = ["community", "verified", "official"];
+
+/** A plugin is trusted no more than the repository it came from. */
+export function effectiveTrust(repositoryTrust: TrustLevel | undefined, pluginTrust: TrustLevel | undefined): TrustLevel {
+  const rank = (t: TrustLevel | undefined) => (t ? TRUST_ORDER.indexOf(t) : 0);
+  return TRUST_ORDER[Math.min(rank(repositoryTrust), rank(pluginTrust))]!;
+}
