@@ -145,7 +145,7 @@ describe("connection health", () => {
     transport.subscribe("/joint_states", "sensor_msgs/msg/JointState", (m) => joints.push(m));
     await until(() => joints.length > 2);
     sim.faults.dropConnections();
-    await until(() => states.includes("disconnected"), 200);
+    await until(() => states.includes("disconnected"), 1000);
     await until(() => transport.health().state === "connected");
     const before = joints.length;
     await until(() => joints.length > before + 2);
