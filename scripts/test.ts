@@ -27,6 +27,9 @@ function ensureChromium() {
 }
 
 ensureChromium();
+log("Type-checking…");
+const typecheck = spawnSync("node", [join(root, "node_modules", "typescript", "bin", "tsc"), "--noEmit", "-p", root], { cwd: root, stdio: "inherit" });
+if (typecheck.status !== 0) process.exit(typecheck.status ?? 1);
 if (!buildIfChanged(root, log)) process.exit(1);
 mkdirSync(join(root, ".tmp"), { recursive: true });
 const report = join(root, ".tmp", "vitest-report.json");

@@ -4,7 +4,7 @@ import { createHash } from "node:crypto";
 import { existsSync, readdirSync, readFileSync, statSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 
-const INPUTS = ["src", "next.config.ts", "postcss.config.mjs", "tsconfig.json", "package.json", "bun.lock", "plugins"];
+const INPUTS = ["src", "next.config.ts", "postcss.config.mjs", "tsconfig.json", "tsconfig.app.json", "package.json", "bun.lock", "plugins"];
 
 function fingerprint(root: string): string {
   const hash = createHash("sha256");

@@ -1,0 +1,88 @@
+// A wizard runs the whole Interactive Storyteller with the keyboard only,
+// while an observer in another browser watches each step change and marks a
+// moment the wizard sees.
+import type { Browser, Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
+import { apiClient, signIn } from "../support/http";
+
+describe.sequential("a live trial in two browsers", () => {
+  let app: RunningApp;
+  let browser: Browser;
+  let trialPath = "";
+
+  beforeAll(async () => {
+    app = await startApp();
+    browser = await launchBrowser();
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await researcher.studies.mine.query();
+    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
+    const version = await researcher.versions.publish.mutate({ experimentId: experiment!.id });
+    const [participant] = await researcher.participants.list.query({ studyId: study!.id });
+    const wizard = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
+    trialPath = `/trials/${(await wizard.trials.create.mutate({ versionId: version.id, participantId: participant!.id })).id}`;
+  });
+  afterAll(async () => {
+    await browser?.close();
+    await app?.stop();
+  });
+
+  const currentStep = (page: Page) => page.getByTestId("current-step").textContent();
+
+  it("runs the Storyteller from the keyboard while an observer follows and annotates", async () => {
+    const wizard = await (await newContext(browser, app.url)).newPage();
+    const observer = await (await newContext(browser, app.url)).newPage();
+    await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
+    await signInAs(observer, "observer@demo.hristudio", DEMO_PASSWORD);
+    await wizard.goto(trialPath);
+    await observer.goto(trialPath);
+    await wizard.getByText("live", { exact: true }).waitFor();
+    await observer.getByText("live", { exact: true }).waitFor();
+    await wizard.getByText("Olu Observer (observer)").waitFor();
+
+    const press = async (key: string, then: () => Promise<unknown>) => {
+      await wizard.keyboard.press(key);
+      await then();
+    };
+    const stepIs = async (page: Page, name: string) => expect.poll(() => currentStep(page)).toBe(name);
+    const allDone = () => expect.poll(async () => (await wizard.locator('[data-testid^="action-"]').allTextContents()).every((t) => /^(done|skipped)/.test(t)), { timeout: 10_000 }).toBe(true);
+
+    await press("n", () => stepIs(observer, "Introduction"));
+    await press("n", allDone);
+    await screenshot(wizard, "wizard-view");
+    await press("n", () => stepIs(observer, "Story"));
+    await press("n", allDone);
+    await press("n", () => stepIs(observer, "Recall question"));
+    // The pause holds the protocol: N during it is refused, and the question waits.
+    await press("n", () => expect.poll(async () => (await wizard.locator('[data-testid^="action-"]').first().textContent()) ?? "").toMatch(/^(sent|running)/));
+    await wizard.keyboard.press("n");
+    await wizard.getByRole("alert").filter({ hasText: "Wait: the 2 s pause is still running." }).waitFor();
+    await expect.poll(async () => (await wizard.locator('[data-testid^="action-"]').first().textContent()) ?? "", { timeout: 5000 }).toMatch(/^done/);
+    await press("n", () => wizard.getByText("What did the participant answer?").waitFor());
+
+    await observer.getByLabel("Label").fill("Participant hesitated");
+    await observer.getByRole("button", { name: "Mark moment" }).click();
+    await wizard.getByRole("list", { name: "Marked moments" }).getByText("Participant hesitated").waitFor();
+    await screenshot(observer, "observer-view");
+
+    await press("1", () => stepIs(observer, "Response — correct"));
+    await press("n", () => wizard.getByRole("button", { name: /End$/ }).waitFor());
+    await press("n", () => expect.poll(() => observer.getByTestId("trial-status").textContent()).toBe("completed"));
+    await wizard.context().close();
+    await observer.context().close();
+  }, 60_000);
+
+  it("shows an observer no wizard controls, and the wizard's keys do nothing for them", async () => {
+    const observer = await (await newContext(browser, app.url)).newPage();
+    await signInAs(observer, "observer@demo.hristudio", DEMO_PASSWORD);
+    await observer.goto(trialPath);
+    await observer.getByText("live", { exact: true }).waitFor();
+    expect(await observer.getByRole("button", { name: /Emergency stop/ }).count()).toBe(0);
+    await observer.keyboard.press("n");
+    await observer.keyboard.press("Escape");
+    expect(await observer.getByTestId("trial-status").textContent()).toBe("completed");
+    expect(await observer.getByText("emergency stop").count()).toBe(0);
+    await observer.context().close();
+  });
+});
