@@ -5,7 +5,7 @@ import { readFile } from "node:fs/promises";
 import { loadPlugin, formatPluginError } from "../../core/plugins";
 import { simulatedRobot, startSimulator, type Simulator } from "./index";
 
-export async function startDefaultSimulator(env: NodeJS.ProcessEnv = process.env): Promise<Simulator> {
+export async function startDefaultSimulator(env: Record<string, string | undefined> = process.env): Promise<Simulator> {
   const file = env.SIM_PLUGIN ?? "plugins/nao6-ros2.json";
   const loaded = loadPlugin(file, await readFile(file, "utf8"));
   if (!loaded.ok) throw new Error(loaded.errors.map(formatPluginError).join("\n"));
