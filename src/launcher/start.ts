@@ -63,23 +63,29 @@ async function main() {
   const shared = { DATABASE_URL: databaseUrl, BETTER_AUTH_SECRET: secret, HRI_RUNTIME_PORT: String(runtimePort) };
   const remember = () => rememberChildren(dataDir, children.map((c) => c.pid!).filter(Boolean));
 
-  // The trial runtime is restarted if it dies: trials rebuild from their events.
-  const startRuntime = () => {
-    const runtime = spawn(process.execPath, ["run", join(root, "src", "runtime", "main.ts")], {
-      cwd: root,
-      stdio: ["ignore", "inherit", "inherit"],
-      env: { ...process.env, ...shared },
-    });
-    children.push(runtime);
+  // Background processes are restarted if they die: trials rebuild from their events.
+  const supervise = (name: string, script: string, env: Record<string, string>) => {
+    const child = spawn(process.execPath, ["run", join(root, script)], { cwd: root, stdio: ["ignore", "inherit", "inherit"], env: { ...process.env, ...env } });
+    children.push(child);
     remember();
-    runtime.on("exit", (code, signal) => {
-      children.splice(children.indexOf(runtime), 1);
+    child.on("exit", (code, signal) => {
+      children.splice(children.indexOf(child), 1);
       if (stopping) return;
-      log(`The trial runtime stopped (${signal ?? `exit code ${code}`}); restarting it.`);
-      setTimeout(startRuntime, 500);
+      log(`The ${name} stopped (${signal ?? `exit code ${code}`}); restarting it.`);
+      setTimeout(() => supervise(name, script, env), 500);
     });
   };
-  startRuntime();
+
+  let rosbridgeUrl = config.HRI_ROSBRIDGE_URL;
+  if (!rosbridgeUrl) {
+    const simulatorPort = await firstFreePort(config.HRI_SIMULATOR_PORT);
+    rosbridgeUrl = `ws://127.0.0.1:${simulatorPort}`;
+    supervise("simulated robot", "src/robots/simulator/main.ts", { SIM_PORT: String(simulatorPort), SIM_HOST: "127.0.0.1" });
+    await listening(simulatorPort);
+    log(`The simulated NAO6 robot speaks rosbridge at ${rosbridgeUrl}.`);
+  }
+  supervise("trial runtime", "src/runtime/main.ts", { ...shared, HRI_ROSBRIDGE_URL: rosbridgeUrl });
+  await listening(runtimePort);
 
   const web = spawn("node", [nextBin(root), dev ? "dev" : "start", "-H", config.HOST, "-p", String(port)], {
     cwd: root,
@@ -95,6 +101,21 @@ async function main() {
     }
   });
   log(`HRIStudio is running at ${baseURL}  (press Ctrl+C to stop)`);
+}
+
+/** Resolves once something accepts connections on the port (a child has started). */
+async function listening(port: number): Promise<void> {
+  const { connect } = await import("node:net");
+  for (let attempt = 0; attempt < 300; attempt++) {
+    const open = await new Promise<boolean>((ok) => {
+      const socket = connect(port, "127.0.0.1");
+      socket.once("connect", () => socket.end(() => ok(true)));
+      socket.once("error", () => ok(false));
+    });
+    if (open) return;
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  throw new Error(`Nothing started listening on port ${port} within 30 seconds.`);
 }
 
 async function firstFreePort(preferred: number): Promise<number> {

@@ -2,7 +2,10 @@
 // starts it beside the web app with the same database and secret.
 import { readConfig } from "@/server/config";
 import { createDatabase } from "@/server/db/client";
-import { timekeeperRobot } from "./robot";
+import { join } from "node:path";
+import { loadPluginFolder } from "@/robots/plugin-folder";
+import { transportFor } from "@/robots/transports";
+import { pluginRobot, unavailableRobot } from "./robot-link";
 import { startRuntimeServer } from "./server";
 import { trialHosts } from "./trial-hosts";
 
@@ -13,9 +16,19 @@ if (!config.DATABASE_URL || !config.BETTER_AUTH_SECRET) {
 }
 const { db, sql, close } = createDatabase(config.DATABASE_URL);
 const lockConnection = await sql.reserve();
-// Robot transports plug in here (see the robots issue); until then actions complete as sent.
-const hosts = trialHosts(db, lockConnection, () => timekeeperRobot());
-const server = startRuntimeServer({ db, hosts, secret: config.BETTER_AUTH_SECRET, hostname: config.HOST, port: config.HRI_RUNTIME_PORT });
+const folder = await loadPluginFolder(join(import.meta.dirname, "..", "..", "plugins"));
+for (const error of folder.errors) console.error(`[runtime] plugin not loaded: ${error.file} ${error.path}: ${error.reason}`);
+const robotFor = (robotPluginId: string) => {
+  const plugin = folder.plugins.find((p) => p.robotId === robotPluginId);
+  if (!plugin) return unavailableRobot(`no robot plugin "${robotPluginId}" is installed`);
+  const choice = transportFor(plugin, { rosbridgeUrl: config.HRI_ROSBRIDGE_URL, simulatorUrl: config.HRI_ROSBRIDGE_URL });
+  return choice.ok ? pluginRobot(plugin, choice.transport) : unavailableRobot(`${plugin.name}: ${choice.reason}`);
+};
+let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
+const hosts = trialHosts(db, lockConnection, robotFor, (...args) => announceRobot(...args));
+const runtime = startRuntimeServer({ db, hosts, secret: config.BETTER_AUTH_SECRET, hostname: config.HOST, port: config.HRI_RUNTIME_PORT });
+announceRobot = runtime.announceRobot;
+const server = runtime.server;
 console.log(`[runtime] listening on ws://${server.hostname}:${server.port}`);
 
 const stop = async () => {

@@ -21,30 +21,3 @@ export interface RobotLink {
   onConnection(listener: (connected: boolean, detail?: string) => void): void;
   close(): void;
 }
-
-/**
- * A robot that only keeps time: every action completes after its duration.
- * Used for rehearsals without a robot plugin transport, and in engine tests.
- */
-export function timekeeperRobot(durationMs: (r: RobotRequest) => number = () => 0): RobotLink {
-  const timers = new Set<ReturnType<typeof setTimeout>>();
-  return {
-    perform(request, report) {
-      report({ kind: "dispatched", actionId: request.actionId });
-      const timer = setTimeout(() => {
-        timers.delete(timer);
-        report({ kind: "completed", actionId: request.actionId });
-      }, durationMs(request));
-      timers.add(timer);
-    },
-    halt() {
-      for (const t of timers) clearTimeout(t);
-      timers.clear();
-    },
-    connected: () => true,
-    onConnection() {},
-    close() {
-      this.halt();
-    },
-  };
-}

@@ -43,9 +43,15 @@ export function startRuntimeServer({ db, hosts, secret, hostname, port }: Runtim
     const set = viewers.get(claims.trialId) ?? new Set();
     viewers.set(claims.trialId, set.add(ws));
     send(ws, { type: "welcome", version: SOCKET_PROTOCOL_VERSION, trialId: claims.trialId, role: claims.studyRole, events: missed, viewers: presence(claims.trialId) });
+    send(ws, { type: "robot", connected: host.robotStatus() });
   }
 
-  return Bun.serve<Connection>({
+  /** Tells everyone in a trial at once when its robot drops or comes back. */
+  const announceRobot = (trialId: string, connected: boolean, detail?: string) => {
+    for (const s of viewers.get(trialId) ?? []) send(s, { type: "robot", connected, ...(detail ? { detail } : {}) });
+  };
+
+  const server = Bun.serve<Connection>({
     hostname,
     port,
     fetch(req, server) {
@@ -84,4 +90,5 @@ export function startRuntimeServer({ db, hosts, secret, hostname, port }: Runtim
       },
     },
   });
+  return { server, announceRobot };
 }

@@ -3,7 +3,7 @@ import { freshDatabase } from "../../tests/support/db";
 import { experiments, studies, trials } from "@/server/db/schema";
 import { eventsSince } from "@/server/trials/event-store";
 import type { TrialProtocol } from "@/core/trial";
-import { timekeeperRobot } from "./robot";
+import type { RobotLink } from "./robot";
 import { TrialHost } from "./trial-host";
 
 const protocol: TrialProtocol = {
@@ -18,6 +18,20 @@ const protocol: TrialProtocol = {
     },
   ],
 };
+
+/** A robot that answers every action at once: the host's own logic under test, not a transport. */
+function timekeeperRobot(): RobotLink {
+  return {
+    perform(request, report) {
+      report({ kind: "dispatched", actionId: request.actionId });
+      setTimeout(() => report({ kind: "completed", actionId: request.actionId }), 0);
+    },
+    halt() {},
+    connected: () => true,
+    onConnection() {},
+    close() {},
+  };
+}
 
 describe("a live trial host", async () => {
   const { db, close } = await freshDatabase();

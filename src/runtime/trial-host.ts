@@ -37,6 +37,15 @@ export class TrialHost {
     return host;
   }
 
+  /** Whether the robot is reachable now, and a listener for every change. */
+  robotStatus() {
+    return this.robot.connected();
+  }
+
+  onRobotStatus(listener: (connected: boolean, detail?: string) => void) {
+    this.robot.onConnection(listener);
+  }
+
   get current(): TrialState {
     return this.state;
   }

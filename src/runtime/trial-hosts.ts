@@ -4,7 +4,7 @@ import { eq } from "drizzle-orm";
 import type postgres from "postgres";
 import type { TrialProtocol } from "@/core/trial";
 import type { Database } from "@/server/db/client";
-import { experimentVersions, trials } from "@/server/db/schema";
+import { experimentVersions, experiments, trials } from "@/server/db/schema";
 import type { RobotLink } from "./robot";
 import { TrialHost } from "./trial-host";
 
@@ -13,20 +13,28 @@ export interface TrialHosts {
   closeAll(): Promise<void>;
 }
 
-export function trialHosts(db: Database, lockConnection: postgres.ReservedSql, robotFor: (trialId: string) => RobotLink): TrialHosts {
+export function trialHosts(
+  db: Database,
+  lockConnection: postgres.ReservedSql,
+  robotFor: (robotPluginId: string) => RobotLink,
+  onRobotStatus: (trialId: string, connected: boolean, detail?: string) => void,
+): TrialHosts {
   const hosts = new Map<string, Promise<TrialHost>>();
 
   async function open(trialId: string) {
     const [owned] = await lockConnection`select pg_try_advisory_lock(hashtextextended(${trialId}, 0)) as ok`;
     if (!owned?.ok) throw new Error("Another runtime process is running this trial.");
     const [row] = await db
-      .select({ snapshot: experimentVersions.snapshot, rehearsal: trials.rehearsalSnapshot })
+      .select({ snapshot: experimentVersions.snapshot, rehearsal: trials.rehearsalSnapshot, robotPluginId: experiments.robotPluginId })
       .from(trials)
+      .innerJoin(experiments, eq(experiments.id, trials.experimentId))
       .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
       .where(eq(trials.id, trialId));
     const protocol = (row?.snapshot ?? row?.rehearsal) as TrialProtocol | null;
     if (!protocol) throw new Error("This trial has no protocol to run.");
-    return TrialHost.open(db, trialId, protocol, robotFor(trialId));
+    const host = await TrialHost.open(db, trialId, protocol, robotFor(row!.robotPluginId));
+    host.onRobotStatus((connected, detail) => onRobotStatus(trialId, connected, detail));
+    return host;
   }
 
   return {

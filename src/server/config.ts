@@ -14,6 +14,9 @@ const schema = z.object({
   HRI_RUNTIME_PORT: z.coerce.number().int().min(0).max(65535).default(3001),
   // Where browsers reach the trial runtime; defaults to HOST and HRI_RUNTIME_PORT.
   HRI_RUNTIME_URL: z.string().url().optional(),
+  // The robot's rosbridge WebSocket; unset, the launcher starts the simulated robot and uses it.
+  HRI_ROSBRIDGE_URL: z.string().url().optional(),
+  HRI_SIMULATOR_PORT: z.coerce.number().int().min(0).max(65535).default(9090),
   BETTER_AUTH_SECRET: z.string().min(32, "must be at least 32 characters").optional(),
   BETTER_AUTH_URL: z.string().url().optional(),
   HRI_ALLOW_SIGNUP: flag.default(false),

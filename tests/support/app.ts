@@ -34,6 +34,7 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
   const dataDir = options.dataDir ?? newDataDir();
   const port = await freePort();
   const runtimePort = await freePort();
+  const simulatorPort = await freePort();
   let output = "";
   const child = spawn(BUN, ["run", "src/launcher/start.ts"], {
     cwd: root,
@@ -45,6 +46,7 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
       HRI_DATA_DIR: dataDir,
       PORT: String(port),
       HRI_RUNTIME_PORT: String(runtimePort),
+      HRI_SIMULATOR_PORT: String(simulatorPort),
       HRI_DEMO_PASSWORD: DEMO_PASSWORD,
       HRI_SIGNIN_PER_MINUTE: "1000",
       ...options.env,

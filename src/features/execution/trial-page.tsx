@@ -42,6 +42,11 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
         </Badge>
         {live.state.emergencyStopped && <Badge tone="red">emergency stop</Badge>}
         <span className="ml-auto flex items-center gap-4">
+          {live.robot && (
+            <Badge tone={live.robot.connected ? "green" : "red"}>
+              <span data-testid="robot-status">{live.robot.connected ? "robot connected" : `robot disconnected${live.robot.detail ? ` (${live.robot.detail})` : ""}`}</span>
+            </Badge>
+          )}
           <Badge tone={live.connected ? "green" : "red"}>{live.connected ? "live" : "reconnecting"}</Badge>
           <TrialClock startedAt={started?.serverTime ?? null} stopped={ended} />
         </span>

@@ -20,6 +20,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const [viewers, setViewers] = useState<Viewer[]>([]);
   const [annotations, setAnnotations] = useState<Annotation[]>([]);
   const [connected, setConnected] = useState(false);
+  const [robot, setRobot] = useState<{ connected: boolean; detail?: string } | null>(null);
   const [notice, setNotice] = useState<string | null>(null);
   const socket = useRef<WebSocket | null>(null);
   const lastSeq = useRef(0);
@@ -56,6 +57,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
           receive(m.events as StoredEvent[]);
         } else if (m.type === "events") receive(m.events as StoredEvent[]);
         else if (m.type === "presence") setViewers(m.viewers);
+        else if (m.type === "robot") setRobot({ connected: m.connected, detail: m.detail });
         else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
         else if (m.type === "ack" || m.type === "rejected") {
           const settle = m.requestId ? pending.current.get(m.requestId) : undefined;
@@ -100,6 +102,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     viewers,
     annotations,
     connected,
+    robot,
     notice,
     command: (command: WizardCommand) => request({ type: "command", command }),
     annotate: (label: string, note = "") => request({ type: "annotate", label, note }),

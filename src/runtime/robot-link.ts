@@ -1,0 +1,51 @@
+// The runtime's robot for a trial: each action resolved through the plugin
+// (abstract or robot-specific), dispatched over the plugin's transport, and
+// its outcome reported back as the trial's action events. One path, no other.
+import { resolveAction, type Plugin } from "@/core/plugins";
+import type { Transport } from "@/robots/transports";
+import type { RobotLink, RobotReport, RobotRequest } from "./robot";
+
+export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
+  const connecting = transport.connect().catch(() => undefined);
+  const perform = async (request: RobotRequest, report: (r: RobotReport) => void) => {
+    const resolved = resolveAction(plugin, request.actionType, request.parameters);
+    if (resolved.status === "unsupported") return report({ kind: "failed", actionId: request.actionId, reason: `${plugin.name} cannot do this: ${resolved.reason}` });
+    if (resolved.status === "parameter_problems") {
+      return report({ kind: "failed", actionId: request.actionId, reason: resolved.problems.map((p) => `${p.parameter}: ${p.message}`).join("; ") });
+    }
+    if (resolved.status === "runtime") return report({ kind: "completed", actionId: request.actionId });
+    await connecting;
+    report({ kind: "dispatched", actionId: request.actionId, detail: { robotAction: resolved.action.id } });
+    const outcome = await transport.dispatch(resolved.action, resolved.parameters);
+    if (outcome.status === "completed") report({ kind: "completed", actionId: request.actionId, ...(outcome.detail ? { detail: outcome.detail } : {}) });
+    else if (outcome.status === "failed") report({ kind: "failed", actionId: request.actionId, reason: outcome.reason });
+    else report({ kind: "timed_out", actionId: request.actionId });
+  };
+  return {
+    perform: (request, report) => void perform(request, report),
+    halt() {
+      const stop = resolveAction(plugin, "stop", {});
+      if (stop.status === "supported") void transport.dispatch(stop.action, stop.parameters);
+    },
+    connected: () => transport.health().state === "connected",
+    onConnection(listener) {
+      transport.onHealth((h) => listener(h.state === "connected", h.state));
+    },
+    close() {
+      void transport.close();
+    },
+  };
+}
+
+/** A robot that cannot be reached: every action fails with the reason, at once. */
+export function unavailableRobot(reason: string): RobotLink {
+  return {
+    perform: (request, report) => report({ kind: "failed", actionId: request.actionId, reason }),
+    halt() {},
+    connected: () => false,
+    onConnection(listener) {
+      listener(false, reason);
+    },
+    close() {},
+  };
+}
