@@ -79,13 +79,15 @@ export class TrialHost {
       if (event.type !== "action.requested") continue;
       const report = (command: Command) => void this.command(command, null);
       if (event.actionType === "pause") {
-        report({ kind: "dispatched", actionId: event.actionId });
+        // The clock starts once "dispatched" is stored, so the logged hold is never shorter than designed.
         const seconds = Number(event.parameters.seconds ?? 0);
-        const timer = setTimeout(() => {
-          this.timers.delete(timer);
-          report({ kind: "completed", actionId: event.actionId, detail: { heldMs: seconds * 1000 } });
-        }, seconds * 1000);
-        this.timers.add(timer);
+        void this.command({ kind: "dispatched", actionId: event.actionId }, null).then(() => {
+          const timer = setTimeout(() => {
+            this.timers.delete(timer);
+            report({ kind: "completed", actionId: event.actionId, detail: { heldMs: seconds * 1000 } });
+          }, seconds * 1000);
+          this.timers.add(timer);
+        });
       } else if (!BLOCKS_WITHOUT_ROBOT.has(event.actionType)) {
         this.robot.perform({ actionId: event.actionId, actionType: event.actionType, parameters: event.parameters }, report);
       }

@@ -6,11 +6,13 @@ import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
+import { scoreRun } from "../support/storyteller-run-checklist";
 
 describe.sequential("a live trial in two browsers", () => {
   let app: RunningApp;
   let browser: Browser;
   let trialPath = "";
+  let wizardApi: ReturnType<typeof apiClient>;
 
   beforeAll(async () => {
     app = await startApp();
@@ -20,8 +22,8 @@ describe.sequential("a live trial in two browsers", () => {
     const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
     const version = await researcher.versions.publish.mutate({ experimentId: experiment!.id });
     const [participant] = await researcher.participants.list.query({ studyId: study!.id });
-    const wizard = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
-    trialPath = `/trials/${(await wizard.trials.create.mutate({ versionId: version.id, participantId: participant!.id })).id}`;
+    wizardApi = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
+    trialPath = `/trials/${(await wizardApi.trials.create.mutate({ versionId: version.id, participantId: participant!.id })).id}`;
   });
   afterAll(async () => {
     await browser?.close();
@@ -69,6 +71,12 @@ describe.sequential("a live trial in two browsers", () => {
     await press("1", () => stepIs(observer, "Response — correct"));
     await press("n", () => wizard.getByRole("button", { name: /End$/ }).waitFor());
     await press("n", () => expect.poll(() => observer.getByTestId("trial-status").textContent()).toBe("completed"));
+
+    // The log, checked against the protocol document's "run" checklist.
+    const trialId = trialPath.split("/").pop()!;
+    const trial = await wizardApi.trials.get.query({ trialId });
+    const events = await wizardApi.trials.events.query({ trialId });
+    expect(scoreRun(trial.protocol, events)).toEqual({ score: 100, failed: [] });
     await wizard.context().close();
     await observer.context().close();
   }, 60_000);

@@ -3,6 +3,7 @@ import { and, desc, eq, sql } from "drizzle-orm";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
 import { experimentVersions, experiments, participants, studyMembers, trials, user } from "../../db/schema";
+import { eventsSince } from "../../trials/event-store";
 import { signSocketToken } from "../../trials/socket-token";
 import { guarded, router } from "../trpc";
 import { id } from "../validation";
@@ -63,6 +64,11 @@ export const trialsRouter = router({
         .where(eq(trials.studyId, input.studyId))
         .orderBy(desc(trials.createdAt)),
     ),
+
+  /** The trial's event log in order: what reports, exports and replays fold. */
+  events: guarded("trial.read")
+    .input(z.object({ trialId: id, afterSeq: z.number().int().min(0).default(0) }))
+    .query(({ ctx, input }) => eventsSince(ctx.db, input.trialId, input.afterSeq)),
 
   /** A short-lived pass to the trial runtime's socket, carrying my role in the study. */
   socketToken: guarded("trial.read")
