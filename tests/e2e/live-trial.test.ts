@@ -3,7 +3,7 @@
 // moment the wizard sees.
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { childPid, DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
 import { scoreRun } from "../support/storyteller-run-checklist";
@@ -92,5 +92,24 @@ describe.sequential("a live trial in two browsers", () => {
     expect(await observer.getByTestId("trial-status").textContent()).toBe("completed");
     expect(await observer.getByText("emergency stop").count()).toBe(0);
     await observer.context().close();
+  });
+
+  it("tells the wizard at once when the robot bridge drops, and when it is back", async () => {
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await researcher.studies.mine.query();
+    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
+    const [version] = await researcher.versions.list.query({ experimentId: experiment!.id });
+    const trial = await wizardApi.trials.create.mutate({ versionId: version!.id });
+    const wizard = await (await newContext(browser, app.url)).newPage();
+    await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
+    await wizard.goto(`/trials/${trial.id}`);
+    await wizard.getByText("robot connected").waitFor();
+    const simulator = childPid(app, "simulator/main.ts");
+    process.kill(simulator, "SIGKILL");
+    // The issue's bound: the wizard sees the failure within 2 seconds.
+    await wizard.getByText(/robot disconnected/).waitFor({ timeout: 2000 });
+    await screenshot(wizard, "robot-disconnected");
+    await wizard.getByText("robot connected").waitFor({ timeout: 15_000 });
+    await wizard.context().close();
   });
 });

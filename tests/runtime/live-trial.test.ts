@@ -1,10 +1,8 @@
 // The trial runtime over real sockets: the wizard commands, observers watch
 // and annotate but cannot command, and kill -9 of the runtime loses and
 // duplicates nothing the wizard saw acknowledged.
-import { readFileSync } from "node:fs";
-import { join } from "node:path";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { childPid, DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { apiClient, signIn } from "../support/http";
 import { connectTrial, type TrialSocket } from "../support/socket";
 
@@ -75,7 +73,7 @@ describe.sequential("a live trial through the runtime", () => {
     await wizard.command("r2", { kind: "next" });
     const acked = seqsOf(wizard);
     const lastSeen = Math.max(...acked);
-    const runtimePid = childPids(app).find((pid) => cmdline(pid).includes("src/runtime/main.ts"))!;
+    const runtimePid = childPid(app, "runtime/main.ts");
     process.kill(runtimePid, "SIGKILL");
     // The launcher starts a new runtime; the wizard reconnects from what it saw.
     let resumed: TrialSocket | null = null;
@@ -96,15 +94,3 @@ describe.sequential("a live trial through the runtime", () => {
     resumed!.close();
   });
 });
-
-function childPids(app: RunningApp): number[] {
-  return JSON.parse(readFileSync(join(app.dataDir, "launcher-children.json"), "utf8"));
-}
-
-function cmdline(pid: number): string {
-  try {
-    return readFileSync(`/proc/${pid}/cmdline`, "utf8").replaceAll("\0", " ");
-  } catch {
-    return "";
-  }
-}

@@ -2,7 +2,7 @@
 // does, with its own data folder and port: embedded PostgreSQL, migrations,
 // demo seed and the built web app.
 import { spawn, type ChildProcess } from "node:child_process";
-import { mkdirSync, mkdtempSync } from "node:fs";
+import { mkdirSync, mkdtempSync, readFileSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { freePort } from "../../src/server/db/embedded";
 
@@ -98,4 +98,18 @@ async function waitForHttp(url: string) {
     await new Promise((r) => setTimeout(r, 100));
   }
   throw new Error(`${url} never answered`);
+}
+
+/** The pid of the launcher's child running `script` (e.g. "runtime/main.ts"), as the launcher recorded it. */
+export function childPid(app: RunningApp, script: string): number {
+  const pids: number[] = JSON.parse(readFileSync(join(app.dataDir, "launcher-children.json"), "utf8"));
+  const pid = pids.find((p) => {
+    try {
+      return readFileSync(`/proc/${p}/cmdline`, "utf8").includes(script);
+    } catch {
+      return false;
+    }
+  });
+  if (!pid) throw new Error(`The launcher has no child running ${script}.`);
+  return pid;
 }
