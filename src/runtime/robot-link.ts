@@ -31,6 +31,12 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
     onConnection(listener) {
       transport.onHealth((h) => listener(h.state === "connected", h.state));
     },
+    watchState(listener) {
+      const stops = (plugin.stateTopics ?? []).map((t) =>
+        transport.subscribe(t.topic, t.messageType, (message) => listener(t.topic, message), { throttleRate: t.throttleRate }),
+      );
+      return () => stops.forEach((stop) => stop());
+    },
     close() {
       void transport.close();
     },
@@ -46,6 +52,7 @@ export function unavailableRobot(reason: string): RobotLink {
     onConnection(listener) {
       listener(false, reason);
     },
+    watchState: () => () => {},
     close() {},
   };
 }

@@ -18,6 +18,8 @@ export interface RobotLink {
   /** Stop everything now (emergency stop). */
   halt(): void;
   connected(): boolean;
+  /** Robot state messages (the plugin's state topics) as they arrive; returns a function that stops them. */
+  watchState(listener: (topic: string, message: unknown) => void): () => void;
   onConnection(listener: (connected: boolean, detail?: string) => void): void;
   close(): void;
 }

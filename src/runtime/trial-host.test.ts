@@ -29,6 +29,7 @@ function timekeeperRobot(): RobotLink {
     halt() {},
     connected: () => true,
     onConnection() {},
+    watchState: () => () => {},
     close() {},
   };
 }

@@ -6,6 +6,12 @@ import type { Database } from "@/server/db/client";
 import { appendEvents, eventsSince, type StoredEvent } from "@/server/trials/event-store";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import type { RobotLink } from "./robot";
+import { sampleRecorder } from "./samples";
+
+function startedAt(events: StoredEvent[]): number | null {
+  const started = events.find((e) => e.type === "trial.started");
+  return started ? started.serverTime.getTime() : null;
+}
 
 export type CommandResult = { ok: true; events: StoredEvent[] } | { ok: false; reason: string };
 
@@ -16,6 +22,10 @@ export class TrialHost {
   private queue: Promise<unknown> = Promise.resolve();
   private readonly listeners = new Set<(events: StoredEvent[]) => void>();
   private readonly timers = new Set<ReturnType<typeof setTimeout>>();
+  private readonly samples;
+  private readonly stopWatching: () => void;
+  /** The trial's t0, once started: samples are timed from it. */
+  private t0: number | null;
 
   private constructor(
     private readonly db: Database,
@@ -25,6 +35,12 @@ export class TrialHost {
     history: StoredEvent[],
   ) {
     this.state = fold(protocol, history);
+    this.t0 = startedAt(history);
+    this.samples = sampleRecorder(db, trialId, (error) => console.error(`[runtime] trial ${trialId}: samples not stored: ${String(error)}`));
+    this.stopWatching = robot.watchState((topic, message) => {
+      const live = this.state.status === "in_progress" || this.state.status === "paused";
+      if (live && this.t0 !== null) this.samples.add(topic, Date.now() - this.t0, message);
+    });
   }
 
   /** Rebuilds the trial from its events; actions cut off by a restart are marked failed. */
@@ -67,6 +83,7 @@ export class TrialHost {
     if (!decision.ok) return decision;
     const stored = await appendEvents(this.db, this.trialId, decision.events, actorId);
     for (const event of stored) this.state = apply(this.state, event);
+    this.t0 ??= startedAt(stored);
     for (const listener of this.listeners) listener(stored);
     this.carryOut(decision.events);
     return { ok: true, events: stored };
@@ -96,7 +113,9 @@ export class TrialHost {
 
   async close() {
     for (const t of this.timers) clearTimeout(t);
+    this.stopWatching();
     await this.queue;
+    await this.samples.close();
     this.robot.close();
   }
 }

@@ -42,6 +42,16 @@ describe.sequential("a live trial through the runtime", () => {
     await observer.next((m) => m.type === "events" && seqsOf({ ...observer, messages: [m] }).includes(2));
     const stored = await wizardApi.trials.get.query({ trialId });
     expect(stored.status).toBe("in_progress");
+    // The simulated robot's joint states are logged, timed from t0, in batches.
+    let samples: Awaited<ReturnType<Api["trials"]["samples"]["query"]>> = [];
+    for (let i = 0; i < 50 && samples.length < 3; i++) {
+      await new Promise((r) => setTimeout(r, 100));
+      samples = await observerApi.trials.samples.query({ trialId, topic: "/joint_states" });
+    }
+    expect(samples.length).toBeGreaterThanOrEqual(3);
+    expect(samples[0]!.relMs).toBeGreaterThanOrEqual(0);
+    expect(samples[0]!.data).toMatchObject({ name: expect.any(Array), position: expect.any(Array) });
+    await expect(wizardApi.trials.samples.query({ trialId })).rejects.toMatchObject({ data: { code: "FORBIDDEN" } });
     wizard.close();
     observer.close();
   });

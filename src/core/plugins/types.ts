@@ -62,6 +62,8 @@ export interface Plugin {
   actions: PluginAction[];
   abstract?: Record<string, AbstractBinding | AbstractBinding[]>;
   unsupported?: Array<{ action: string; reason: string }>;
+  /** Robot state the runtime logs as trial samples during a trial. */
+  stateTopics?: Array<{ topic: string; messageType: string; throttleRate?: number }>;
   /** Every other field of the file, kept as written. */
   [extra: string]: unknown;
 }

@@ -1,8 +1,8 @@
 import { TRPCError } from "@trpc/server";
-import { and, desc, eq, sql } from "drizzle-orm";
+import { and, asc, desc, eq, sql } from "drizzle-orm";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
-import { experimentVersions, experiments, participants, studyMembers, trials, user } from "../../db/schema";
+import { experimentVersions, experiments, participants, studyMembers, trialSamples, trials, user } from "../../db/schema";
 import { eventsSince } from "../../trials/event-store";
 import { signSocketToken } from "../../trials/socket-token";
 import { guarded, router } from "../trpc";
@@ -69,6 +69,18 @@ export const trialsRouter = router({
   events: guarded("trial.read")
     .input(z.object({ trialId: id, afterSeq: z.number().int().min(0).default(0) }))
     .query(({ ctx, input }) => eventsSince(ctx.db, input.trialId, input.afterSeq)),
+
+  /** Robot state logged during the trial, in time order. */
+  samples: guarded("data.read")
+    .input(z.object({ trialId: id, topic: z.string().max(200).optional(), limit: z.number().int().min(1).max(500_000).default(200_000) }))
+    .query(({ ctx, input }) =>
+      ctx.db
+        .select({ topic: trialSamples.topic, relMs: trialSamples.relMs, data: trialSamples.data })
+        .from(trialSamples)
+        .where(and(eq(trialSamples.trialId, input.trialId), input.topic ? eq(trialSamples.topic, input.topic) : undefined))
+        .orderBy(asc(trialSamples.relMs))
+        .limit(input.limit),
+    ),
 
   /** A short-lived pass to the trial runtime's socket, carrying my role in the study. */
   socketToken: guarded("trial.read")
