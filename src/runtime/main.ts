@@ -6,6 +6,7 @@ import { join } from "node:path";
 import { loadPluginFolder } from "@/robots/plugin-folder";
 import { transportFor } from "@/robots/transports";
 import { pluginRobot, unavailableRobot } from "./robot-link";
+import { eventRelay } from "./relay";
 import { startRuntimeServer } from "./server";
 import { trialHosts } from "./trial-hosts";
 
@@ -26,7 +27,8 @@ const robotFor = (robotPluginId: string) => {
 };
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
 const hosts = trialHosts(db, lockConnection, robotFor, (...args) => announceRobot(...args));
-const runtime = startRuntimeServer({ db, hosts, secret: config.BETTER_AUTH_SECRET, hostname: config.HOST, port: config.HRI_RUNTIME_PORT });
+const relay = await eventRelay(db, sql);
+const runtime = startRuntimeServer({ db, hosts, relay, secret: config.BETTER_AUTH_SECRET, hostname: config.HOST, port: config.HRI_RUNTIME_PORT });
 announceRobot = runtime.announceRobot;
 const server = runtime.server;
 console.log(`[runtime] listening on ws://${server.hostname}:${server.port}`);
@@ -34,6 +36,7 @@ console.log(`[runtime] listening on ws://${server.hostname}:${server.port}`);
 const stop = async () => {
   server.stop(true);
   await hosts.closeAll();
+  await relay.close();
   lockConnection.release();
   await close();
   process.exit(0);

@@ -9,7 +9,8 @@ import type { RobotLink } from "./robot";
 import { TrialHost } from "./trial-host";
 
 export interface TrialHosts {
-  get(trialId: string): Promise<TrialHost>;
+  /** The trial's host in this process, or null while another process owns the trial. */
+  get(trialId: string): Promise<TrialHost | null>;
   closeAll(): Promise<void>;
 }
 
@@ -19,11 +20,11 @@ export function trialHosts(
   robotFor: (robotPluginId: string) => RobotLink,
   onRobotStatus: (trialId: string, connected: boolean, detail?: string) => void,
 ): TrialHosts {
-  const hosts = new Map<string, Promise<TrialHost>>();
+  const hosts = new Map<string, Promise<TrialHost | null>>();
 
   async function open(trialId: string) {
     const [owned] = await lockConnection`select pg_try_advisory_lock(hashtextextended(${trialId}, 0)) as ok`;
-    if (!owned?.ok) throw new Error("Another runtime process is running this trial.");
+    if (!owned?.ok) return null;
     const [row] = await db
       .select({ snapshot: experimentVersions.snapshot, rehearsal: trials.rehearsalSnapshot, robotPluginId: experiments.robotPluginId })
       .from(trials)
@@ -42,8 +43,9 @@ export function trialHosts(
       let host = hosts.get(trialId);
       if (!host) {
         host = open(trialId);
-        host.catch(() => hosts.delete(trialId));
         hosts.set(trialId, host);
+        // Not owned here (yet): ask again next time, the owner may have gone.
+        host.then((h) => h ?? hosts.delete(trialId), () => hosts.delete(trialId));
       }
       return host;
     },

@@ -1,0 +1,85 @@
+// Two runtime processes on one database: one owns a trial (advisory lock),
+// the other relays its events to its own clients through LISTEN/NOTIFY, and
+// takes the trial over when the owner dies.
+import { spawn, type ChildProcess } from "node:child_process";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { createAccount } from "../../src/server/auth/accounts";
+import { createDatabase } from "../../src/server/db/client";
+import { freePort } from "../../src/server/db/embedded";
+import { experimentVersions, experiments, studies, trials } from "../../src/server/db/schema";
+import { signSocketToken } from "../../src/server/trials/socket-token";
+import { BUN } from "../support/app";
+import { freshDatabaseUrl } from "../support/db";
+import { connectTrial } from "../support/socket";
+
+const SECRET = "scale-out-test-secret".padEnd(40, "x");
+const protocol = {
+  schemaVersion: 1,
+  experiment: { id: "e", name: "E", description: "", robotPluginId: "no-robot" },
+  steps: [{ id: "s1", name: "Only step", description: "", actions: [{ id: "a1", type: "wizard_instruction", name: "Smile", parameters: {}, parallelGroup: null }] }],
+};
+
+async function startRuntime(databaseUrl: string) {
+  const port = await freePort();
+  const child = spawn(BUN, ["run", "src/runtime/main.ts"], {
+    env: { ...process.env, DATABASE_URL: databaseUrl, BETTER_AUTH_SECRET: SECRET, HRI_RUNTIME_PORT: String(port), HOST: "127.0.0.1" },
+    stdio: ["ignore", "pipe", "pipe"],
+  });
+  await new Promise<void>((ok, fail) => {
+    child.stdout!.on("data", (d) => String(d).includes("listening") && ok());
+    child.once("exit", (code) => fail(new Error(`runtime exited with ${code}`)));
+  });
+  return { url: `ws://127.0.0.1:${port}`, child };
+}
+
+describe.sequential("several runtime processes", () => {
+  const children: ChildProcess[] = [];
+  let trialId = "";
+  let a: { url: string; child: ChildProcess };
+  let b: { url: string; child: ChildProcess };
+  const people: Record<string, string> = {};
+  const token = (studyRole: "wizard" | "observer") => signSocketToken({ userId: people[studyRole]!, name: studyRole, trialId, studyRole }, SECRET);
+
+  beforeAll(async () => {
+    const url = await freshDatabaseUrl();
+    const { db, close } = createDatabase(url);
+    for (const role of ["wizard", "observer"]) people[role] = (await createAccount(db, { name: role, email: `${role}@example.org`, password: "password-123", role: "researcher" })).id;
+    const [study] = await db.insert(studies).values({ title: "S" }).returning();
+    const [experiment] = await db.insert(experiments).values({ studyId: study!.id, name: "E", robotPluginId: "no-robot" }).returning();
+    const [version] = await db.insert(experimentVersions).values({ experimentId: experiment!.id, version: 1, snapshot: protocol, hash: "h", pluginId: "no-robot" }).returning();
+    trialId = (await db.insert(trials).values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id }).returning())[0]!.id;
+    await close();
+    a = await startRuntime(url);
+    b = await startRuntime(url);
+    children.push(a.child, b.child);
+  });
+  afterAll(() => children.forEach((c) => c.kill("SIGKILL")));
+
+  it("relays the owner's events to clients of another process, which refuses to command", async () => {
+    const wizard = await connectTrial(a.url, token("wizard"));
+    const observer = await connectTrial(b.url, token("observer"));
+    expect(await wizard.command("r1", { kind: "start" })).toMatchObject({ type: "ack", seqs: [1, 2] });
+    expect(await wizard.command("r2", { kind: "note", text: "Participant arrived late" })).toMatchObject({ seqs: [3] });
+    await observer.next((m) => m.type === "events" && (m.events as Array<{ seq: number }>).some((e) => e.seq === 3));
+    const seen = observer.messages.flatMap((m) => (m.type === "events" ? (m.events as Array<{ seq: number }>).map((e) => e.seq) : []));
+    expect(seen).toEqual([1, 2, 3]);
+    const elsewhere = await connectTrial(b.url, token("wizard"));
+    expect(await elsewhere.command("r3", { kind: "next" })).toMatchObject({ type: "rejected", reason: expect.stringMatching(/^Another runtime process is running this trial/) });
+    wizard.close();
+    observer.close();
+    elsewhere.close();
+  });
+
+  it("lets another process take the trial over when its owner dies", async () => {
+    a.child.kill("SIGKILL");
+    const wizard = await connectTrial(b.url, token("wizard"), 3);
+    let reply: Record<string, unknown> = {};
+    for (let i = 0; i < 50; i++) {
+      reply = await wizard.command(`t${i}`, { kind: "next" });
+      if (reply.type === "ack") break;
+      await new Promise((r) => setTimeout(r, 100));
+    }
+    expect(reply).toMatchObject({ type: "ack", seqs: [4, 5] });
+    wizard.close();
+  });
+});
