@@ -80,6 +80,7 @@ const MATRIX: Record<string, [Caller[], Input]> = {
   "participants.update": [EDITORS, (_f, b) => ({ participantId: b.participant.id, notes: "seen" })],
   "participants.delete": [EDITORS, async (f, b) => ({ participantId: (await f.api("owner").participants.create({ studyId: b.study.id, code: `D-${crypto.randomUUID().slice(0, 6)}` })).id })],
   "trials.create": [RUNNERS, (_f, b) => ({ versionId: b.version.id, participantId: b.participant.id })],
+  "trials.rehearse": [RUNNERS, (_f, b) => ({ experimentId: b.experiment.id })],
   "trials.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
   "trials.get": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
   "trials.socketToken": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],

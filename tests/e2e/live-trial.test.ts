@@ -94,6 +94,35 @@ describe.sequential("a live trial in two browsers", () => {
     await observer.context().close();
   });
 
+  it("rehearses the draft, and the wizard's page carries on after kill -9 of the runtime", async () => {
+    const wizard = await (await newContext(browser, app.url)).newPage();
+    await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
+    await wizard.getByRole("link", { name: /Storytelling and memory/ }).click();
+    await wizard.getByRole("tab", { name: "Experiments" }).click();
+    await wizard.getByRole("button", { name: "Rehearse Interactive Storyteller" }).click();
+    await wizard.waitForURL(/\/trials\//);
+    await wizard.getByText("rehearsal", { exact: true }).waitFor();
+    await wizard.getByText("robot connected").waitFor();
+    await wizard.keyboard.press("n");
+    await expect.poll(() => currentStep(wizard)).toBe("Introduction");
+    await wizard.keyboard.press("n");
+    await expect.poll(async () => (await wizard.locator('[data-testid^="action-"]').allTextContents()).every((t) => t.startsWith("done"))).toBe(true);
+
+    process.kill(childPid(app, "runtime/main.ts"), "SIGKILL");
+    await wizard.getByText("reconnecting", { exact: true }).waitFor();
+    await wizard.getByText("live", { exact: true }).waitFor({ timeout: 20_000 });
+    // Same point, same state: the next action is still "Go to Story".
+    await wizard.getByRole("button", { name: /Go to “Story”/ }).waitFor();
+    await wizard.keyboard.press("n");
+    await expect.poll(() => currentStep(wizard)).toBe("Story");
+
+    const trialId = wizard.url().split("/").pop()!;
+    const seqs = (await wizardApi.trials.events.query({ trialId })).map((e) => e.seq);
+    expect(seqs).toEqual(seqs.map((_, i) => i + 1));
+    expect((await wizardApi.trials.get.query({ trialId })).isRehearsal).toBe(true);
+    await wizard.context().close();
+  }, 60_000);
+
   it("tells the wizard at once when the robot bridge drops, and when it is back", async () => {
     const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
     const [study] = await researcher.studies.mine.query();

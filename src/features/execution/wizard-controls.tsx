@@ -31,6 +31,7 @@ export function nextLabel(protocol: TrialProtocol, state: TrialState): string {
 export function WizardControls({ protocol, state, send }: { protocol: TrialProtocol; state: TrialState; send: Send }) {
   const speech = useRef<HTMLInputElement>(null);
   const [text, setText] = useState("");
+  const [note, setNote] = useState("");
   const unit = nextUnit(protocol, state);
   const question = unit[0]?.type === "record_answer" ? unit[0] : null;
   const options = question ? answerOptions(question) : [];
@@ -66,6 +67,11 @@ export function WizardControls({ protocol, state, send }: { protocol: TrialProto
     if (!text.trim()) return;
     const done = await send({ kind: "unscripted", actionType: "say", parameters: { text } });
     if (done.ok) setText("");
+  };
+
+  const addNote = async () => {
+    if (!note.trim()) return;
+    if ((await send({ kind: "note", text: note })).ok) setNote("");
   };
 
   return (
@@ -110,6 +116,18 @@ export function WizardControls({ protocol, state, send }: { protocol: TrialProto
         <Input ref={speech} aria-label="Unscripted speech" placeholder="Say something off script (U)…" value={text} onChange={(e) => setText(e.target.value)} disabled={!running} />
         <Button type="submit" variant="secondary" disabled={!running}>
           Say
+        </Button>
+      </form>
+      <form
+        className="flex gap-2"
+        onSubmit={(e) => {
+          e.preventDefault();
+          void addNote();
+        }}
+      >
+        <Input aria-label="Wizard note" placeholder="Note for the log (not said by the robot)…" value={note} onChange={(e) => setNote(e.target.value)} disabled={ended} />
+        <Button type="submit" variant="ghost" disabled={ended}>
+          Add note
         </Button>
       </form>
     </div>

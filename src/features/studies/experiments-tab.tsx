@@ -1,5 +1,6 @@
 "use client";
 import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
+import { useRouter } from "next/navigation";
 import { useState, type FormEvent } from "react";
 import { studyRoleMay, type StudyRole } from "@/core/access/policy";
 import { useTRPC } from "@/lib/trpc";
@@ -17,11 +18,14 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
   const refresh = () => queryClient.invalidateQueries({ queryKey: trpc.experiments.list.queryKey({ studyId }) });
   const publish = useMutation(trpc.versions.publish.mutationOptions({ onSuccess: refresh }));
   const edit = studyRoleMay(role, "experiment.edit");
+  const router = useRouter();
+  const rehearse = useMutation(trpc.trials.rehearse.mutationOptions({ onSuccess: (trial) => router.push(`/trials/${trial.id}`) }));
+  const canRehearse = studyRoleMay(role, "trial.create");
   return (
     <div className="space-y-4">
       {edit && <NewExperimentDialog studyId={studyId} onCreated={refresh} />}
       {experiments.isPending && <Spinner />}
-      <Problem error={experiments.error ?? publish.error} />
+      <Problem error={experiments.error ?? publish.error ?? rehearse.error} />
       {experiments.data?.length === 0 && <EmptyState title="No experiments yet." />}
       {!!experiments.data?.length && (
         <Table>
@@ -31,7 +35,7 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
               <Th>Robot</Th>
               <Th>Steps</Th>
               <Th>Published</Th>
-              {edit && <Th className="text-right">Actions</Th>}
+              {(edit || canRehearse) && <Th className="text-right">Actions</Th>}
             </tr>
           </thead>
           <tbody>
@@ -46,11 +50,18 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
                 </Td>
                 <Td>{e.stepCount}</Td>
                 <Td>{e.latestVersion ? <Badge tone="green">version {e.latestVersion}</Badge> : <Badge>draft only</Badge>}</Td>
-                {edit && (
-                  <Td className="text-right">
-                    <Button variant="secondary" size="sm" aria-label={`Publish ${e.name}`} disabled={publish.isPending} onClick={() => publish.mutate({ experimentId: e.id })}>
-                      Publish
-                    </Button>
+                {(edit || canRehearse) && (
+                  <Td className="space-x-2 text-right">
+                    {canRehearse && (
+                      <Button variant="ghost" size="sm" aria-label={`Rehearse ${e.name}`} disabled={rehearse.isPending} onClick={() => rehearse.mutate({ experimentId: e.id })}>
+                        Rehearse
+                      </Button>
+                    )}
+                    {edit && (
+                      <Button variant="secondary" size="sm" aria-label={`Publish ${e.name}`} disabled={publish.isPending} onClick={() => publish.mutate({ experimentId: e.id })}>
+                        Publish
+                      </Button>
+                    )}
                   </Td>
                 )}
               </tr>

@@ -3,6 +3,8 @@ import { and, asc, desc, eq, sql } from "drizzle-orm";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
 import { experimentVersions, experiments, participants, studyMembers, trialSamples, trials, user } from "../../db/schema";
+import { loadDesign } from "../../experiments/design";
+import { snapshotOf } from "../../experiments/publish";
 import { eventsSince } from "../../trials/event-store";
 import { signSocketToken } from "../../trials/socket-token";
 import { guarded, router } from "../trpc";
@@ -47,6 +49,19 @@ export const trialsRouter = router({
       const [row] = await ctx.db
         .insert(trials)
         .values({ studyId, experimentId: version!.experimentId, versionId: input.versionId, participantId: input.participantId, wizardId, createdBy: ctx.user.id })
+        .returning();
+      return row!;
+    }),
+
+  /** A rehearsal runs the current draft (no published version needed), marked as rehearsal everywhere. */
+  rehearse: guarded("trial.create")
+    .input(z.object({ experimentId: id }))
+    .mutation(async ({ ctx, input }) => {
+      const design = await loadDesign(ctx.db, input.experimentId);
+      if (design.steps.length === 0) throw new TRPCError({ code: "BAD_REQUEST", message: "This experiment has no steps yet: add at least one before rehearsing." });
+      const [row] = await ctx.db
+        .insert(trials)
+        .values({ studyId: design.studyId, experimentId: design.id, isRehearsal: true, rehearsalSnapshot: snapshotOf(design), wizardId: ctx.user.id, createdBy: ctx.user.id })
         .returning();
       return row!;
     }),
