@@ -1,0 +1,34 @@
+// Shared pieces of the benchmarks: a throwaway embedded PostgreSQL, and
+// percentiles printed the same way everywhere.
+import { mkdtemp, rm } from "node:fs/promises";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { startEmbeddedPostgres } from "../src/server/db/embedded";
+import { migrateDatabase } from "../src/server/db/migrate";
+
+export async function scratchDatabase() {
+  const dir = await mkdtemp(join(tmpdir(), "hri-bench-"));
+  const server = await startEmbeddedPostgres({ dataDir: dir });
+  await migrateDatabase(server.url);
+  return {
+    url: server.url,
+    async stop() {
+      await server.stop();
+      await rm(dir, { recursive: true, force: true });
+    },
+  };
+}
+
+export function percentile(sorted: number[], p: number): number {
+  return sorted[Math.min(sorted.length - 1, Math.floor((p / 100) * sorted.length))]!;
+}
+
+/** One line per measurement: count, median, p99, max (milliseconds), and the target. */
+export function report(name: string, samples: number[], targetP99Ms?: number) {
+  const sorted = [...samples].sort((a, b) => a - b);
+  const p99 = percentile(sorted, 99);
+  const verdict = targetP99Ms === undefined ? "" : `  target p99 < ${targetP99Ms} ms: ${p99 < targetP99Ms ? "met" : "NOT met"} (ratio ${(p99 / targetP99Ms).toFixed(2)})`;
+  console.log(
+    `${name.padEnd(58)} n=${String(sorted.length).padStart(6)}  p50=${percentile(sorted, 50).toFixed(3)} ms  p99=${p99.toFixed(3)} ms  max=${sorted.at(-1)!.toFixed(3)} ms${verdict}`,
+  );
+}

@@ -1,0 +1,118 @@
+// bench/trial-latency: wizard message in → robot message received by the
+// simulated robot, and → every observer updated, for 1 trial and for 50
+// concurrent trials with 10 observers each. Everything real: PostgreSQL,
+// the runtime's socket server, the NAO6 plugin, roslib, the simulator.
+import { join } from "node:path";
+import { loadPluginFolder } from "../src/robots/plugin-folder";
+import { startDefaultSimulator } from "../src/robots/simulator/main";
+import { RosbridgeTransport } from "../src/robots/transports/rosbridge";
+import { eventRelay } from "../src/runtime/relay";
+import { pluginRobot } from "../src/runtime/robot-link";
+import { SOCKET_PROTOCOL_VERSION } from "../src/runtime/protocol";
+import { startRuntimeServer } from "../src/runtime/server";
+import { trialHosts } from "../src/runtime/trial-hosts";
+import { createAccount } from "../src/server/auth/accounts";
+import { createDatabase } from "../src/server/db/client";
+import { experimentVersions, experiments, studies, trials } from "../src/server/db/schema";
+import { signSocketToken } from "../src/server/trials/socket-token";
+import { report, scratchDatabase } from "./support";
+
+const SECRET = "bench-secret".padEnd(40, "x");
+const OBSERVERS = 10;
+
+const database = await scratchDatabase();
+const { db, sql, close } = createDatabase(database.url, { max: 20 });
+const sim = await startDefaultSimulator({ SIM_PORT: "0" });
+const heard = new Map<string, (at: number) => void>();
+const record = sim.received.push.bind(sim.received);
+// Every message the robot receives, timed as it arrives.
+sim.received.push = (...items) => {
+  const at = performance.now();
+  for (const item of items) {
+    const text = (item.message.msg as { data?: string } | undefined)?.data;
+    if (text) heard.get(text)?.(at);
+  }
+  return record(...items);
+};
+
+const plugin = (await loadPluginFolder(join(import.meta.dirname, "..", "plugins"))).plugins.find((p) => p.robotId === "nao6-ros2")!;
+const hosts = trialHosts(db, await sql.reserve(), () => pluginRobot(plugin, new RosbridgeTransport({ url: sim.url })), () => {});
+const relay = await eventRelay(db, sql);
+const { server } = startRuntimeServer({ db, hosts, relay, secret: SECRET, hostname: "127.0.0.1", port: 0 });
+const url = `ws://127.0.0.1:${server.port}`;
+
+const wizardUser = await createAccount(db, { name: "Wizard", email: "w@bench", password: "bench-password", role: "wizard" });
+const observerUser = await createAccount(db, { name: "Observer", email: "o@bench", password: "bench-password", role: "observer" });
+const [study] = await db.insert(studies).values({ title: "Bench" }).returning();
+const [experiment] = await db.insert(experiments).values({ studyId: study!.id, name: "Bench", robotPluginId: "nao6-ros2" }).returning();
+const snapshot = { schemaVersion: 1, experiment: { id: experiment!.id, name: "Bench", description: "", robotPluginId: "nao6-ros2" }, steps: [{ id: "s", name: "S", description: "", actions: [] }] };
+const [version] = await db.insert(experimentVersions).values({ experimentId: experiment!.id, version: 1, snapshot, hash: "bench", pluginId: "nao6-ros2" }).returning();
+
+async function socket(trialId: string, userId: string, studyRole: "wizard" | "observer", onEvents: (events: Array<{ type: string; parameters?: { text?: string } }>) => void) {
+  const ws = new WebSocket(url);
+  const pending = new Map<string, () => void>();
+  await new Promise((ok) => (ws.onopen = ok));
+  const welcomed = new Promise<void>((ok) => {
+    ws.onmessage = (m) => {
+      const message = JSON.parse(String(m.data));
+      if (message.type === "welcome") ok();
+      if (message.type === "events") onEvents(message.events);
+      if (message.type === "ack" || message.type === "rejected") pending.get(message.requestId)?.();
+    };
+  });
+  ws.send(JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: signSocketToken({ userId, name: studyRole, trialId, studyRole }, SECRET), lastSeq: 0 }));
+  await welcomed;
+  return {
+    command: (command: Record<string, unknown>) =>
+      new Promise<void>((ok) => {
+        const requestId = crypto.randomUUID();
+        pending.set(requestId, ok);
+        ws.send(JSON.stringify({ type: "command", requestId, command }));
+      }),
+    close: () => ws.close(),
+  };
+}
+
+/** One trial: a wizard and its observers; `commands` unscripted lines, one after another. */
+async function runTrial(commands: number, toRobot: number[], toObservers: number[]) {
+  const [trial] = await db.insert(trials).values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id }).returning();
+  const seen = new Map<string, { left: number; done: (at: number) => void }>();
+  const observe = (events: Array<{ type: string; parameters?: { text?: string } }>) => {
+    const at = performance.now();
+    for (const e of events) {
+      const waiting = e.type === "action.requested" && e.parameters?.text ? seen.get(e.parameters.text) : undefined;
+      if (waiting && --waiting.left === 0) waiting.done(at);
+    }
+  };
+  const observers = await Promise.all(Array.from({ length: OBSERVERS }, () => socket(trial!.id, observerUser.id, "observer", observe)));
+  const wizard = await socket(trial!.id, wizardUser.id, "wizard", () => {});
+  await wizard.command({ kind: "start" });
+  for (let i = 0; i < commands; i++) {
+    const text = `line ${trial!.id} ${i}`;
+    const sent = performance.now();
+    const robot = new Promise<void>((ok) => heard.set(text, (at) => (toRobot.push(at - sent), heard.delete(text), ok())));
+    const everyone = new Promise<void>((ok) => seen.set(text, { left: OBSERVERS, done: (at) => (toObservers.push(at - sent), seen.delete(text), ok()) }));
+    await wizard.command({ kind: "unscripted", actionType: "say", parameters: { text } });
+    await Promise.all([robot, everyone]);
+  }
+  [wizard, ...observers].forEach((s) => s.close());
+}
+
+const single = { robot: [] as number[], observers: [] as number[] };
+await runTrial(30, [], []); // warm-up
+await runTrial(1000, single.robot, single.observers);
+report("1 trial: wizard message → robot received", single.robot, 5);
+report("1 trial: wizard message → 10 observers updated", single.observers, 5);
+
+const many = { robot: [] as number[], observers: [] as number[] };
+await Promise.all(Array.from({ length: 50 }, () => runTrial(40, many.robot, many.observers)));
+report("50 trials × 10 observers: wizard message → robot received", many.robot, 25);
+report("50 trials × 10 observers: wizard message → all observers updated", many.observers, 25);
+
+server.stop(true);
+await hosts.closeAll();
+await relay.close();
+await sim.close();
+await close();
+await database.stop();
+process.exit(0);
