@@ -81,7 +81,8 @@ export class TrialHost {
   private async execute(command: Command, actorId: string | null): Promise<CommandResult> {
     const decision = decide(this.protocol, this.state, command);
     if (!decision.ok) return decision;
-    const stored = await appendEvents(this.db, this.trialId, decision.events, actorId);
+    const cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
+    const stored = await appendEvents(this.db, cursor, decision.events, actorId);
     for (const event of stored) this.state = apply(this.state, event);
     this.t0 ??= startedAt(stored);
     for (const listener of this.listeners) listener(stored);

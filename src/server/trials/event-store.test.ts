@@ -2,7 +2,7 @@ import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { freshDatabase } from "../../../tests/support/db";
 import { experiments, studies, trials } from "../db/schema";
-import { appendEvents, eventsSince, NOTIFY_CHANNEL } from "./event-store";
+import { appendEvents, eventsSince, NOTIFY_CHANNEL, type TrialCursor } from "./event-store";
 
 describe("the trial event store", async () => {
   const { db, sql, close } = await freshDatabase();
@@ -15,15 +15,21 @@ describe("the trial event store", async () => {
     return trial!.id;
   }
 
+  /** What the trial's owner keeps in memory, read back from the database for the test. */
+  async function cursor(trialId: string): Promise<TrialCursor> {
+    const [trial] = await db.select().from(trials).where(eq(trials.id, trialId));
+    return { id: trialId, lastSeq: (await eventsSince(db, trialId)).length, t0: trial!.t0 };
+  }
+
   it("numbers events per trial, times them from t0, and moves the trial's status", async () => {
     const trialId = await newTrial();
     let clock = Date.parse("2026-01-01T10:00:00Z");
     const now = () => new Date(clock);
-    await appendEvents(db, trialId, [{ type: "note.added", text: "before" }], null, now);
+    await appendEvents(db, await cursor(trialId), [{ type: "note.added", text: "before" }], null, now);
     clock += 1000;
-    await appendEvents(db, trialId, [{ type: "trial.started" }, { type: "step.entered", stepId: "s1", via: "start" }], null, now);
+    await appendEvents(db, await cursor(trialId), [{ type: "trial.started" }, { type: "step.entered", stepId: "s1", via: "start" }], null, now);
     clock += 2500;
-    const [skipped] = await appendEvents(db, trialId, [{ type: "action.skipped", stepId: "s1", actionId: "a1", deviation: "skipped" }], null, now);
+    const [skipped] = await appendEvents(db, await cursor(trialId), [{ type: "action.skipped", stepId: "s1", actionId: "a1", deviation: "skipped" }], null, now);
     expect(skipped).toMatchObject({ seq: 4, relMs: 2500, deviation: "skipped", actionId: "a1" });
     const all = await eventsSince(db, trialId);
     expect(all.map((e) => [e.seq, e.type, e.relMs])).toEqual([
@@ -33,22 +39,24 @@ describe("the trial event store", async () => {
       [4, "action.skipped", 2500],
     ]);
     expect((await eventsSince(db, trialId, 2)).map((e) => e.seq)).toEqual([3, 4]);
-    await appendEvents(db, trialId, [{ type: "trial.completed" }], null, now);
+    await appendEvents(db, await cursor(trialId), [{ type: "trial.completed" }], null, now);
     const [trial] = await db.select().from(trials).where(eq(trials.id, trialId));
     expect(trial).toMatchObject({ status: "completed", t0: new Date("2026-01-01T10:00:01Z"), endedAt: new Date("2026-01-01T10:00:03.500Z") });
   });
 
-  it("gives concurrent writers distinct, gapless sequence numbers", async () => {
+  it("never lets two writers both write seq N: a stale cursor's append fails whole", async () => {
     const trialId = await newTrial();
-    await Promise.all(Array.from({ length: 20 }, (_, i) => appendEvents(db, trialId, [{ type: "note.added", text: `n${i}` }], null)));
-    expect((await eventsSince(db, trialId)).map((e) => e.seq)).toEqual(Array.from({ length: 20 }, (_, i) => i + 1));
+    const stale = await cursor(trialId);
+    await appendEvents(db, stale, [{ type: "note.added", text: "first" }], null);
+    await expect(appendEvents(db, stale, [{ type: "note.added", text: "second" }, { type: "note.added", text: "third" }], null)).rejects.toThrow();
+    expect((await eventsSince(db, trialId)).map((e) => [e.seq, e.type === "note.added" && e.text])).toEqual([[1, "first"]]);
   });
 
   it("notifies listeners after the commit", async () => {
     const trialId = await newTrial();
     const heard: string[] = [];
     const listener = await sql.listen(NOTIFY_CHANNEL, (payload) => heard.push(payload));
-    await appendEvents(db, trialId, [{ type: "note.added", text: "x" }, { type: "note.added", text: "y" }], null);
+    await appendEvents(db, await cursor(trialId), [{ type: "note.added", text: "x" }, { type: "note.added", text: "y" }], null);
     for (let i = 0; i < 50 && heard.length === 0; i++) await new Promise((r) => setTimeout(r, 20));
     await listener.unlisten();
     expect(heard).toContain(`${trialId}:2`);

@@ -1,6 +1,6 @@
 // The trial's append-only log in PostgreSQL. An event exists once its
 // transaction commits; only then may anyone be told about it.
-import { and, asc, eq, gt, sql } from "drizzle-orm";
+import { and, asc, eq, gt } from "drizzle-orm";
 import type { EngineEvent, TrialEvent } from "@/core/trial";
 import type { Database } from "../db/client";
 import { trialEvents, trials } from "../db/schema";
@@ -32,52 +32,62 @@ const STATUS_AFTER: Partial<Record<EngineEvent["type"], (typeof trials.$inferSel
   "trial.aborted": "aborted",
 };
 
+/** Where a trial's log stands: its owner (one runtime process) keeps this in memory. */
+export interface TrialCursor {
+  id: string;
+  lastSeq: number;
+  t0: Date | null;
+}
+
 /**
- * Appends events with the next sequence numbers, in one transaction that
- * locks the trial row, so two writers can never both write seq N.
+ * Appends events after `cursor.lastSeq` and moves the trial's status, in ONE
+ * statement (one round trip, one commit): this sits on the wizard's
+ * trigger-to-robot path. (trial, seq) is the primary key, so a second writer
+ * holding a stale cursor can never write seq N again: its append fails whole.
  */
 export async function appendEvents(
   db: Database,
-  trialId: string,
+  cursor: TrialCursor,
   events: EngineEvent[],
   actorId: string | null,
   now: () => Date = () => new Date(),
 ): Promise<StoredEvent[]> {
   if (events.length === 0) return [];
-  return db.transaction(async (tx) => {
-    const [trial] = await tx.select().from(trials).where(eq(trials.id, trialId)).for("update");
-    if (!trial) throw new Error(`Trial ${trialId} does not exist.`);
-    const [{ last }] = (await tx
-      .select({ last: sql<number>`coalesce(max(${trialEvents.seq}), 0)::int` })
-      .from(trialEvents)
-      .where(eq(trialEvents.trialId, trialId))) as [{ last: number }];
-    const at = now();
-    let t0 = trial.t0;
-    let status = trial.status;
-    let endedAt = trial.endedAt;
-    const rows = events.map((event, i) => {
-      if (event.type === "trial.started") t0 = at;
-      status = STATUS_AFTER[event.type] ?? status;
-      if (status === "completed" || status === "aborted") endedAt ??= at;
-      return {
-        trialId,
-        seq: last + i + 1,
-        type: event.type,
-        serverTime: at,
-        relMs: t0 ? at.getTime() - t0.getTime() : null,
-        actorId,
-        stepId: "stepId" in event ? event.stepId : null,
-        actionId: "actionId" in event ? event.actionId : null,
-        payload: event,
-        deviation: Boolean(event.deviation),
-      };
-    });
-    const inserted = await tx.insert(trialEvents).values(rows).returning();
-    await tx.update(trials).set({ t0, status, endedAt }).where(eq(trials.id, trialId));
-    // Delivered at commit, to every runtime process listening.
-    await tx.execute(sql`select pg_notify(${NOTIFY_CHANNEL}, ${`${trialId}:${last + rows.length}`})`);
-    return inserted.map(toStored);
+  const at = now();
+  let t0 = cursor.t0;
+  let status: string | null = null;
+  const rows = events.map((event, i) => {
+    if (event.type === "trial.started") t0 ??= at;
+    status = STATUS_AFTER[event.type] ?? status;
+    return {
+      trial_id: cursor.id,
+      seq: cursor.lastSeq + i + 1,
+      type: event.type,
+      server_time: at,
+      rel_ms: t0 ? at.getTime() - t0.getTime() : null,
+      actor_id: actorId,
+      step_id: "stepId" in event ? event.stepId : null,
+      action_id: "actionId" in event ? event.actionId : null,
+      payload: event,
+      deviation: Boolean(event.deviation),
+    };
   });
+  const ended = status === "completed" || status === "aborted";
+  // Drizzle's client leaves serialising to Drizzle, so values go as text PostgreSQL casts by column.
+  const wire = rows.map((r) => ({ ...r, server_time: r.server_time.toISOString(), payload: JSON.stringify(r.payload) }));
+  const client = db.$client;
+  await client`
+    with appended as (
+      insert into trial_events ${client(wire, "trial_id", "seq", "type", "server_time", "rel_ms", "actor_id", "step_id", "action_id", "payload", "deviation")}
+    ), moved as (
+      update trials set
+        t0 = coalesce(t0, ${t0?.toISOString() ?? null}::timestamptz),
+        status = coalesce(${status}, status),
+        ended_at = case when ${ended} then coalesce(ended_at, ${at.toISOString()}::timestamptz) else ended_at end
+      where id = ${cursor.id}
+    )
+    select pg_notify(${NOTIFY_CHANNEL}, ${`${cursor.id}:${cursor.lastSeq + rows.length}`})`;
+  return rows.map((r) => ({ ...r.payload, seq: r.seq, relMs: r.rel_ms, trialId: r.trial_id, serverTime: r.server_time, actorId: r.actor_id }));
 }
 
 /** The events after `afterSeq`, in order: what a reconnecting client missed. */
