@@ -77,9 +77,10 @@ async function main() {
   };
 
   let rosbridgeUrl = config.HRI_ROSBRIDGE_URL;
+  let simulatorUrl: string | undefined;
   if (!rosbridgeUrl) {
     const simulatorPort = await firstFreePort(config.HRI_SIMULATOR_PORT);
-    rosbridgeUrl = `ws://127.0.0.1:${simulatorPort}`;
+    rosbridgeUrl = simulatorUrl = `ws://127.0.0.1:${simulatorPort}`;
     supervise("simulated robot", "src/robots/simulator/main.ts", { SIM_PORT: String(simulatorPort), SIM_HOST: "127.0.0.1" });
     await listening(simulatorPort);
     log(`The simulated NAO6 robot speaks rosbridge at ${rosbridgeUrl}.`);
@@ -90,7 +91,7 @@ async function main() {
   const web = spawn("node", [nextBin(root), dev ? "dev" : "start", "-H", config.HOST, "-p", String(port)], {
     cwd: root,
     stdio: ["ignore", "inherit", "inherit"],
-    env: { ...process.env, ...shared, BETTER_AUTH_URL: baseURL, NEXT_TELEMETRY_DISABLED: "1" },
+    env: { ...process.env, ...shared, BETTER_AUTH_URL: baseURL, NEXT_TELEMETRY_DISABLED: "1", ...(simulatorUrl ? { HRI_SIMULATOR_URL: simulatorUrl } : {}) },
   });
   children.push(web);
   remember();

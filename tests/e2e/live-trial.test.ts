@@ -6,6 +6,7 @@ import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { childPid, DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
+import { connectTrial } from "../support/socket";
 import { scoreRun } from "../support/storyteller-run-checklist";
 
 describe.sequential("a live trial in two browsers", () => {
@@ -48,7 +49,11 @@ describe.sequential("a live trial in two browsers", () => {
       await then();
     };
     const stepIs = async (page: Page, name: string) => expect.poll(() => currentStep(page)).toBe(name);
-    const allDone = () => expect.poll(async () => (await wizard.locator('[data-testid^="action-"]').allTextContents()).every((t) => /^(done|skipped)/.test(t)), { timeout: 10_000 }).toBe(true);
+    const allDone = () => expect.poll(async () => (await wizard.locator('[data-testid^="action-"]').allTextContents()).every((t) => /^(done|skipped)/.test(t)), { timeout: 10_000 }).toBe(true).catch(async (e: Error) => {
+        // Say what the log holds, so a failure here can be read without rerunning.
+        const log = await wizardApi.trials.events.query({ trialId: trialPath.split("/").pop()! });
+        throw new Error(`${e.message}\nTrial log: ${JSON.stringify(log.map((x) => [x.seq, x.type, "actionId" in x ? x.actionId : "", "reason" in x ? x.reason : ""]))}`);
+      });
 
     await press("n", () => stepIs(observer, "Introduction"));
     await press("n", allDone);
@@ -122,6 +127,28 @@ describe.sequential("a live trial in two browsers", () => {
     expect((await wizardApi.trials.get.query({ trialId })).isRehearsal).toBe(true);
     await wizard.context().close();
   }, 60_000);
+
+  it("shows on the robot page what the simulated robot is doing", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "observer@demo.hristudio", DEMO_PASSWORD);
+    await page.getByRole("link", { name: "Robot" }).click();
+    await page.getByText("connected", { exact: true }).waitFor();
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await researcher.studies.mine.query();
+    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
+    const [version] = await researcher.versions.list.query({ experimentId: experiment!.id });
+    const trial = await wizardApi.trials.create.mutate({ versionId: version!.id });
+    const { url, token } = await wizardApi.trials.socketToken.mutate({ trialId: trial.id });
+    const wizard = await connectTrial(url, token);
+    await wizard.command("s", { kind: "start" });
+    await wizard.command("u", { kind: "unscripted", actionType: "say", parameters: { text: 'She said "hi" {{name}} & left.' } });
+    await wizard.command("w", { kind: "unscripted", actionType: "wave", parameters: {} });
+    await page.getByRole("status", { name: "Robot speech" }).getByText('“She said "hi" {{name}} & left.”').waitFor();
+    await expect.poll(() => page.getByTestId("robot-gesture").textContent()).not.toBe("none");
+    await screenshot(page, "robot-view");
+    wizard.close();
+    await page.context().close();
+  });
 
   it("tells the wizard at once when the robot bridge drops, and when it is back", async () => {
     const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));

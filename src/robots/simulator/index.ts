@@ -1,9 +1,9 @@
 // The built-in simulated robot: a rosbridge v2 server so every path runs without hardware.
 import type { Plugin } from "../../core/plugins";
-import { battery, jointStates, pluginTopics, speech, testServices, type RobotNode } from "./nodes";
+import { battery, jointStates, pluginTopics, robotStateReport, speech, testServices, type RobotNode } from "./nodes";
 
 export { startSimulator, type Simulator, type SimulatorOptions, type Received } from "./server";
-export { battery, jointStates, pluginTopics, speech, testServices, type RobotNode, type RobotState } from "./nodes";
+export { battery, jointStates, pluginTopics, robotStateReport, ROBOT_STATE_TOPIC, speech, testServices, type RobotNode, type RobotState } from "./nodes";
 
 const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 
@@ -14,6 +14,7 @@ export function simulatedRobot(plugin: Plugin, { msPerChar = 60, jointStatesHz =
     speech({ msPerChar }),
     jointStates({ hz: jointStatesHz, names: NAO_JOINTS, position: (_, s) => [0, s.headPitch, 1.4, 1.4], velocity: [0, 0, 0, 0] }),
     battery({ hz: batteryHz }),
+    robotStateReport(),
     testServices(),
   ];
 }

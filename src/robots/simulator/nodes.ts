@@ -83,6 +83,29 @@ export function battery({ hz = 1 } = {}): RobotNode {
 }
 
 /** Declares every topic a plugin publishes to, and mirrors what arrives into the robot state. */
+/**
+ * What the robot is doing, as JSON on /hristudio/robot_state (our own topic,
+ * only on the simulator): the robot view page draws it and speaks its speech.
+ * Published on every change (checked at `hz`) and at least once a second, so
+ * a page that opens late still draws the robot at once.
+ */
+export const ROBOT_STATE_TOPIC = "/hristudio/robot_state";
+
+export function robotStateReport({ hz = 20 } = {}): RobotNode {
+  return (graph, state) => {
+    graph.declare(ROBOT_STATE_TOPIC, "std_msgs/msg/String", ROBOT);
+    let last = "";
+    let sentAt = 0;
+    const timer = setInterval(() => {
+      const now = JSON.stringify(state);
+      if (now === last && Date.now() - sentAt < 1000) return;
+      sentAt = Date.now();
+      graph.publish(ROBOT_STATE_TOPIC, { data: (last = now) });
+    }, 1000 / hz);
+    return () => clearInterval(timer);
+  };
+}
+
 export function pluginTopics(plugin: Plugin): RobotNode {
   return (graph, state) => {
     for (const action of plugin.actions) {

@@ -1,0 +1,115 @@
+"use client";
+// What the simulated robot is doing, drawn from its own state topic over
+// rosbridge (the same protocol as a real robot), with its speech spoken by
+// the browser's speech synthesis when asked.
+import { useEffect, useRef, useState } from "react";
+import * as ROSLIB from "roslib";
+import { Button } from "@/ui/button";
+import { Badge, Card } from "@/ui/surface";
+
+interface RobotState {
+  speaking: string | null;
+  lastSaid: string | null;
+  animation: string | null;
+  gesture: string | null;
+  posture: string;
+  velocity: { linear: number; angular: number };
+  headPitch: number;
+  battery: number;
+}
+
+const STATE_TOPIC = "/hristudio/robot_state";
+
+export function RobotView({ url }: { url: string }) {
+  const [state, setState] = useState<RobotState | null>(null);
+  const [connected, setConnected] = useState(false);
+  const [voice, setVoice] = useState(false);
+  const spoken = useRef<string | null>(null);
+
+  useEffect(() => {
+    let stopped = false;
+    let ros: ROSLIB.Ros | null = null;
+    const open = () => {
+      if (stopped) return;
+      ros = new ROSLIB.Ros({});
+      ros.on("connection", () => setConnected(true));
+      const lost = () => {
+        setConnected(false);
+        setTimeout(open, 1000);
+      };
+      ros.on("close", lost);
+      ros.on("error", () => undefined);
+      void ros.connect(url).catch(() => undefined);
+      const topic = new ROSLIB.Topic({ ros, name: STATE_TOPIC, messageType: "std_msgs/msg/String" });
+      topic.subscribe((message) => setState(JSON.parse((message as { data: string }).data) as RobotState));
+    };
+    open();
+    return () => {
+      stopped = true;
+      ros?.close();
+    };
+  }, [url]);
+
+  useEffect(() => {
+    const text = state?.speaking;
+    if (!voice || !text || spoken.current === text || typeof speechSynthesis === "undefined") return;
+    spoken.current = text;
+    speechSynthesis.speak(new SpeechSynthesisUtterance(text));
+  }, [state?.speaking, voice]);
+
+  return (
+    <div className="space-y-4">
+      <div className="flex items-center gap-3">
+        <h1 className="text-2xl font-semibold">Simulated robot</h1>
+        <Badge tone={connected ? "green" : "red"}>{connected ? "connected" : "not connected"}</Badge>
+        <Button variant="secondary" size="sm" className="ml-auto" aria-pressed={voice} onClick={() => setVoice(!voice)}>
+          {voice ? "Mute robot voice" : "Speak through this browser"}
+        </Button>
+      </div>
+      <Card className="flex flex-col items-center gap-6 p-10">
+        <div role="status" aria-label="Robot speech" className="min-h-16 max-w-xl rounded-2xl border border-slate-200 bg-white px-5 py-3 text-center text-lg shadow-sm">
+          {state?.speaking ? `“${state.speaking}”` : <span className="text-slate-400">{state?.lastSaid ? `Last said: “${state.lastSaid}”` : "…"}</span>}
+        </div>
+        <RobotFigure state={state} />
+        <dl className="grid grid-cols-2 gap-x-8 gap-y-1 text-sm sm:grid-cols-4">
+          <Fact label="Gesture" value={state?.gesture ?? state?.animation ?? "none"} />
+          <Fact label="Posture" value={state?.posture ?? "—"} />
+          <Fact label="Moving" value={state && (state.velocity.linear || state.velocity.angular) ? `${state.velocity.linear} m/s, ${state.velocity.angular} rad/s` : "no"} />
+          <Fact label="Battery" value={state ? `${Math.round(state.battery)} %` : "—"} />
+        </dl>
+      </Card>
+      <p className="text-sm text-slate-500">This page shows the built-in simulated robot that `npm start` runs when no real robot is configured.</p>
+    </div>
+  );
+}
+
+function Fact({ label, value }: { label: string; value: string }) {
+  return (
+    <div>
+      <dt className="text-slate-500">{label}</dt>
+      <dd className="font-medium" data-testid={`robot-${label.toLowerCase()}`}>
+        {value}
+      </dd>
+    </div>
+  );
+}
+
+/** A simple NAO-like figure: the head tilts with head pitch, the arm rises with a gesture. */
+function RobotFigure({ state }: { state: RobotState | null }) {
+  const tilt = ((state?.headPitch ?? 0) * 180) / Math.PI;
+  const waving = Boolean(state?.gesture ?? state?.animation);
+  return (
+    <svg viewBox="0 0 120 160" className="h-56" aria-hidden>
+      <g transform={`rotate(${tilt} 60 40)`}>
+        <rect x="35" y="10" width="50" height="40" rx="14" fill="#e2e8f0" stroke="#475569" />
+        <circle cx="50" cy="30" r="4" fill={state?.speaking ? "#2458b8" : "#475569"} />
+        <circle cx="70" cy="30" r="4" fill={state?.speaking ? "#2458b8" : "#475569"} />
+      </g>
+      <rect x="38" y="55" width="44" height="50" rx="8" fill="#f8fafc" stroke="#475569" />
+      <rect x="16" y={waving ? 30 : 58} width="12" height="40" rx="6" fill="#f8fafc" stroke="#475569" transform={waving ? "rotate(-30 22 50)" : undefined} />
+      <rect x="92" y="58" width="12" height="40" rx="6" fill="#f8fafc" stroke="#475569" />
+      <rect x="42" y="108" width="14" height={state?.posture === "sit" ? 24 : 44} rx="6" fill="#f8fafc" stroke="#475569" />
+      <rect x="64" y="108" width="14" height={state?.posture === "sit" ? 24 : 44} rx="6" fill="#f8fafc" stroke="#475569" />
+    </svg>
+  );
+}
