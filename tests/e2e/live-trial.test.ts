@@ -121,6 +121,15 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.keyboard.press("n");
     await expect.poll(() => currentStep(wizard)).toBe("Story");
 
+    // Any robot action off script, from a form, logged as a deviation.
+    await wizard.getByText("Unscripted robot action").click();
+    await wizard.getByLabel("Action").selectOption({ label: "Posture" });
+    await wizard.getByRole("button", { name: /Send “Posture”/ }).click();
+    await wizard.getByText("must have required property").or(wizard.getByText(/posture.*required|required.*posture/i)).first().waitFor();
+    await wizard.getByLabel("Action").selectOption({ label: "Nod" });
+    await wizard.getByRole("button", { name: /Send “Nod”/ }).click();
+    await wizard.getByRole("region", { name: "Off script" }).getByText(/^done/).waitFor();
+
     const trialId = wizard.url().split("/").pop()!;
     const seqs = (await wizardApi.trials.events.query({ trialId })).map((e) => e.seq);
     expect(seqs).toEqual(seqs.map((_, i) => i + 1));

@@ -67,3 +67,25 @@ export function StepActions({ protocol, state }: { protocol: TrialProtocol; stat
     </section>
   );
 }
+
+/** Actions the wizard sent off script, with their status: deviations, visible as they happen. */
+export function OffScript({ events, state }: { events: Array<{ type: string; actionId?: string; actionType?: string; scripted?: boolean; parameters?: Record<string, unknown> }>; state: TrialState }) {
+  const unscripted = events.filter((e) => e.type === "action.requested" && e.scripted === false);
+  if (!unscripted.length) return null;
+  return (
+    <section aria-label="Off script">
+      <h3 className="mb-2 text-sm font-semibold text-amber-800">Off script</h3>
+      <ul className="divide-y divide-slate-100 rounded-lg border border-amber-200 bg-amber-50/40">
+        {unscripted.map((e) => {
+          const s = state.actions[e.actionId!];
+          return (
+            <li key={e.actionId} className="flex items-center gap-3 px-4 py-2 text-sm">
+              {s && <Badge tone={STATUS[s.status].tone}>{STATUS[s.status].label}</Badge>}
+              <span>{describeAction({ type: e.actionType ?? "", parameters: e.parameters ?? {} })}</span>
+            </li>
+          );
+        })}
+      </ul>
+    </section>
+  );
+}

@@ -7,7 +7,7 @@ import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
 import { MarkMoment, Moments, Watching } from "./observer-panel";
-import { StepActions, StepList } from "./protocol-view";
+import { OffScript, StepActions, StepList } from "./protocol-view";
 import { TrialClock } from "./trial-clock";
 import { useTrialSocket } from "./use-trial-socket";
 import { SHORTCUTS, WizardControls } from "./wizard-controls";
@@ -58,6 +58,7 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
         </Card>
         <div className="space-y-6">
           <StepActions protocol={protocol} state={live.state} />
+          <OffScript events={live.events} state={live.state} />
           {wizard && <WizardControls protocol={protocol} state={live.state} send={live.command} />}
         </div>
         <div className="space-y-4">

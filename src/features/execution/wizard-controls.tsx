@@ -7,6 +7,7 @@ import type { WizardCommand } from "@/runtime/protocol";
 import { Button } from "@/ui/button";
 import { Input } from "@/ui/field";
 import { describeAction } from "./protocol-view";
+import { UnscriptedAction } from "./unscripted-action";
 
 type Send = (c: WizardCommand) => Promise<{ ok: boolean }>;
 
@@ -118,6 +119,7 @@ export function WizardControls({ protocol, state, send }: { protocol: TrialProto
           Say
         </Button>
       </form>
+      <UnscriptedAction send={send} disabled={!running} />
       <form
         className="flex gap-2"
         onSubmit={(e) => {
