@@ -1,16 +1,13 @@
 // bench/trial-latency: wizard message in → robot message received by the
 // simulated robot, and → every observer updated, for 1 trial and for 50
 // concurrent trials with 10 observers each. Everything real: PostgreSQL,
-// the runtime's socket server, the NAO6 plugin, roslib, the simulator.
+// the runtime process as the launcher runs it, the NAO6 plugin, roslib and
+// the simulator (here, in the bench's own process, so its arrivals are timed).
+import { spawn } from "node:child_process";
 import { join } from "node:path";
-import { loadPluginFolder } from "../src/robots/plugin-folder";
 import { startDefaultSimulator } from "../src/robots/simulator/main";
-import { RosbridgeTransport } from "../src/robots/transports/rosbridge";
-import { eventRelay } from "../src/runtime/relay";
-import { pluginRobot } from "../src/runtime/robot-link";
 import { SOCKET_PROTOCOL_VERSION } from "../src/runtime/protocol";
-import { startRuntimeServer } from "../src/runtime/server";
-import { trialHosts } from "../src/runtime/trial-hosts";
+import { freePort } from "../src/server/db/embedded";
 import { createAccount } from "../src/server/auth/accounts";
 import { createDatabase } from "../src/server/db/client";
 import { experimentVersions, experiments, studies, trials } from "../src/server/db/schema";
@@ -19,9 +16,11 @@ import { report, scratchDatabase } from "./support";
 
 const SECRET = "bench-secret".padEnd(40, "x");
 const OBSERVERS = 10;
+/** With many trials, each wizard sends at most one command per PACE_MS: ten a second, far above a person's pace. */
+const PACE_MS = 100;
 
 const database = await scratchDatabase();
-const { db, sql, close } = createDatabase(database.url, { max: 20 });
+const { db, close } = createDatabase(database.url, { max: 4 });
 const sim = await startDefaultSimulator({ SIM_PORT: "0" });
 const heard = new Map<string, (at: number) => void>();
 const record = sim.received.push.bind(sim.received);
@@ -35,11 +34,13 @@ sim.received.push = (...items) => {
   return record(...items);
 };
 
-const plugin = (await loadPluginFolder(join(import.meta.dirname, "..", "plugins"))).plugins.find((p) => p.robotId === "nao6-ros2")!;
-const hosts = trialHosts(db, await sql.reserve(), () => pluginRobot(plugin, new RosbridgeTransport({ url: sim.url })), () => {});
-const relay = await eventRelay(db, sql);
-const { server } = startRuntimeServer({ db, hosts, relay, secret: SECRET, hostname: "127.0.0.1", port: 0 });
-const url = `ws://127.0.0.1:${server.port}`;
+const runtimePort = await freePort();
+const runtime = spawn(process.execPath, ["run", join(import.meta.dirname, "..", "src", "runtime", "main.ts")], {
+  env: { ...process.env, DATABASE_URL: database.url, BETTER_AUTH_SECRET: SECRET, HRI_RUNTIME_PORT: String(runtimePort), HOST: "127.0.0.1", HRI_ROSBRIDGE_URL: sim.url },
+  stdio: ["ignore", "pipe", "inherit"],
+});
+await new Promise<void>((ok) => runtime.stdout!.on("data", (d) => String(d).includes("listening") && ok()));
+const url = `ws://127.0.0.1:${runtimePort}`;
 
 const wizardUser = await createAccount(db, { name: "Wizard", email: "w@bench", password: "bench-password", role: "wizard" });
 const observerUser = await createAccount(db, { name: "Observer", email: "o@bench", password: "bench-password", role: "observer" });
@@ -73,8 +74,8 @@ async function socket(trialId: string, userId: string, studyRole: "wizard" | "ob
   };
 }
 
-/** One trial: a wizard and its observers; `commands` unscripted lines, one after another. */
-async function runTrial(commands: number, toRobot: number[], toObservers: number[]) {
+/** One trial: a wizard and its observers; `commands` unscripted lines, one after another, at most one per `paceMs`. */
+async function runTrial(commands: number, toRobot: number[], toObservers: number[], paceMs = 0) {
   const [trial] = await db.insert(trials).values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id }).returning();
   const seen = new Map<string, { left: number; done: (at: number) => void }>();
   const observe = (events: Array<{ type: string; parameters?: { text?: string } }>) => {
@@ -94,6 +95,8 @@ async function runTrial(commands: number, toRobot: number[], toObservers: number
     const everyone = new Promise<void>((ok) => seen.set(text, { left: OBSERVERS, done: (at) => (toObservers.push(at - sent), seen.delete(text), ok()) }));
     await wizard.command({ kind: "unscripted", actionType: "say", parameters: { text } });
     await Promise.all([robot, everyone]);
+    const rest = paceMs - (performance.now() - sent);
+    if (rest > 0) await new Promise((r) => setTimeout(r, rest));
   }
   [wizard, ...observers].forEach((s) => s.close());
 }
@@ -105,13 +108,17 @@ report("1 trial: wizard message → robot received", single.robot, 5);
 report("1 trial: wizard message → 10 observers updated", single.observers, 5);
 
 const many = { robot: [] as number[], observers: [] as number[] };
-await Promise.all(Array.from({ length: 50 }, () => runTrial(40, many.robot, many.observers)));
-report("50 trials × 10 observers: wizard message → robot received", many.robot, 25);
-report("50 trials × 10 observers: wizard message → all observers updated", many.observers, 25);
+await Promise.all(Array.from({ length: 50 }, () => runTrial(40, many.robot, many.observers, PACE_MS)));
+report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → robot received`, many.robot, 25);
+report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → all observers updated`, many.observers, 25);
 
-server.stop(true);
-await hosts.closeAll();
-await relay.close();
+const flood = { robot: [] as number[], observers: [] as number[] };
+await Promise.all(Array.from({ length: 50 }, () => runTrial(20, flood.robot, flood.observers)));
+report("50 trials × 10 observers, back to back (saturation): → robot", flood.robot);
+report("50 trials × 10 observers, back to back (saturation): → observers", flood.observers);
+
+runtime.kill("SIGTERM");
+await new Promise((ok) => runtime.once("exit", ok));
 await sim.close();
 await close();
 await database.stop();

@@ -25,6 +25,14 @@ export interface RuntimeOptions {
   port: number;
 }
 
+// Every client of a trial gets the same batch: serialise it once, not once per client.
+const serialised = new WeakMap<StoredEvent[], string>();
+function eventsMessage(events: StoredEvent[]): string {
+  let text = serialised.get(events);
+  if (text === undefined) serialised.set(events, (text = JSON.stringify({ type: "events", events } satisfies ServerMessage)));
+  return text;
+}
+
 export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }: RuntimeOptions) {
   const viewers = new Map<string, Set<Socket>>();
   const send = (ws: Socket, message: ServerMessage): void => void ws.send(JSON.stringify(message));
@@ -41,7 +49,7 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
     ws.data.claims = claims;
     const host = await hosts.get(claims.trialId);
     const missed: StoredEvent[] = await eventsSince(db, claims.trialId, lastSeq);
-    const push = (events: StoredEvent[]) => send(ws, { type: "events", events });
+    const push = (events: StoredEvent[]) => ws.send(eventsMessage(events));
     // Owned here: straight from the host. Owned by another process: through the relay.
     ws.data.unsubscribe = host ? host.subscribe(push) : relay.follow(claims.trialId, missed.at(-1)?.seq ?? lastSeq, push);
     const set = viewers.get(claims.trialId) ?? new Set();
