@@ -55,12 +55,15 @@ describe.sequential("a live trial in two browsers", () => {
         throw new Error(`${e.message}\nTrial log: ${JSON.stringify(log.map((x) => [x.seq, x.type, "actionId" in x ? x.actionId : "", "reason" in x ? x.reason : ""]))}`);
       });
 
-    await press("n", () => stepIs(observer, "Introduction"));
+    await press("n", () => stepIs(wizard, "Introduction"));
+    await stepIs(observer, "Introduction");
     await press("n", allDone);
     await screenshot(wizard, "wizard-view");
-    await press("n", () => stepIs(observer, "Story"));
+    await press("n", () => stepIs(wizard, "Story"));
+    await stepIs(observer, "Story");
     await press("n", allDone);
-    await press("n", () => stepIs(observer, "Recall question"));
+    await press("n", () => stepIs(wizard, "Recall question"));
+    await stepIs(observer, "Recall question");
     // The pause holds the protocol: N during it is refused, and the question waits.
     await press("n", () => expect.poll(async () => (await wizard.locator('[data-testid^="action-"]').first().textContent()) ?? "").toMatch(/^(sent|running)/));
     await wizard.keyboard.press("n");
@@ -73,7 +76,8 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.getByRole("list", { name: "Marked moments" }).getByText("Participant hesitated").waitFor();
     await screenshot(observer, "observer-view");
 
-    await press("1", () => stepIs(observer, "Response — correct"));
+    await press("1", () => stepIs(wizard, "Response — correct"));
+    await stepIs(observer, "Response — correct");
     await press("n", () => wizard.getByRole("button", { name: /End$/ }).waitFor());
     await press("n", () => expect.poll(() => observer.getByTestId("trial-status").textContent()).toBe("completed"));
 
@@ -130,9 +134,20 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.getByRole("button", { name: /Send “Nod”/ }).click();
     await wizard.getByRole("region", { name: "Off script" }).getByText(/^done/).waitFor();
 
+    // Off the designed path, by hand: each is allowed and logged with its kind.
+    await wizard.getByRole("button", { name: "Jump to Recall question" }).click();
+    await expect.poll(() => currentStep(wizard)).toBe("Recall question");
+    await wizard.getByRole("button", { name: "Run Question now" }).click();
+    await wizard.getByTestId(/action-/).filter({ hasText: "Question" }).getByText("done").waitFor();
+    await wizard.getByRole("button", { name: "Abort trial…" }).click();
+    await wizard.getByRole("button", { name: "Confirm: abort this trial" }).click();
+    await expect.poll(() => wizard.getByTestId("trial-status").textContent()).toBe("aborted");
+
     const trialId = wizard.url().split("/").pop()!;
-    const seqs = (await wizardApi.trials.events.query({ trialId })).map((e) => e.seq);
+    const log = await wizardApi.trials.events.query({ trialId });
+    const seqs = log.map((e) => e.seq);
     expect(seqs).toEqual(seqs.map((_, i) => i + 1));
+    expect(log.filter((e) => e.deviation).map((e) => e.deviation)).toEqual(["unscripted", "manual_jump", "out_of_order"]);
     expect((await wizardApi.trials.get.query({ trialId })).isRehearsal).toBe(true);
     await wizard.context().close();
   }, 60_000);

@@ -20,7 +20,7 @@ export function describeAction(a: { type: string; name?: string; parameters: Rec
   return a.name || text || a.type.replaceAll("_", " ");
 }
 
-export function StepList({ protocol, state }: { protocol: TrialProtocol; state: TrialState }) {
+export function StepList({ protocol, state, onJump }: { protocol: TrialProtocol; state: TrialState; onJump?: (stepId: string) => void }) {
   return (
     <ol className="space-y-1" aria-label="Steps">
       {protocol.steps.map((step, i) => {
@@ -33,6 +33,11 @@ export function StepList({ protocol, state }: { protocol: TrialProtocol; state: 
             className={cn("rounded-md px-3 py-2 text-sm", current ? "bg-brand-600 font-semibold text-white" : done ? "text-slate-400" : "text-slate-700")}
           >
             {i + 1}. {step.name}
+            {onJump && !current && state.status === "in_progress" && (
+              <button type="button" className="ml-2 text-xs text-brand-600 underline-offset-2 hover:underline" aria-label={`Jump to ${step.name}`} onClick={() => onJump(step.id)}>
+                jump
+              </button>
+            )}
           </li>
         );
       })}
@@ -40,7 +45,7 @@ export function StepList({ protocol, state }: { protocol: TrialProtocol; state: 
   );
 }
 
-export function StepActions({ protocol, state }: { protocol: TrialProtocol; state: TrialState }) {
+export function StepActions({ protocol, state, onTrigger }: { protocol: TrialProtocol; state: TrialState; onTrigger?: (actionId: string) => void }) {
   const step = protocol.steps.find((s) => s.id === state.currentStepId);
   if (!step) return <p className="text-slate-500">The trial has not started.</p>;
   return (
@@ -60,6 +65,11 @@ export function StepActions({ protocol, state }: { protocol: TrialProtocol; stat
                 {a.parallelGroup && <span className="ml-2 text-xs text-slate-400">together</span>}
               </span>
               <span className="text-xs tabular-nums text-slate-500">{took}</span>
+              {onTrigger && s.status === "waiting" && state.status === "in_progress" && !["record_answer", "branch"].includes(a.type) && (
+                <button type="button" className="text-xs text-brand-600 hover:underline" aria-label={`Run ${describeAction(a)} now`} onClick={() => onTrigger(a.id)}>
+                  run now
+                </button>
+              )}
             </li>
           );
         })}

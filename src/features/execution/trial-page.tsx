@@ -54,10 +54,10 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
       {live.notice && <Problem error={{ message: live.notice }} />}
       <div className="grid gap-6 lg:grid-cols-[14rem_1fr_20rem]">
         <Card className="p-3">
-          <StepList protocol={protocol} state={live.state} />
+          <StepList protocol={protocol} state={live.state} onJump={wizard ? (stepId) => void live.command({ kind: "jump", stepId }) : undefined} />
         </Card>
         <div className="space-y-6">
-          <StepActions protocol={protocol} state={live.state} />
+          <StepActions protocol={protocol} state={live.state} onTrigger={wizard ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined} />
           <OffScript events={live.events} state={live.state} />
           {wizard && <WizardControls protocol={protocol} state={live.state} send={live.command} />}
         </div>

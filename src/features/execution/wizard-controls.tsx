@@ -33,6 +33,7 @@ export function WizardControls({ protocol, state, send }: { protocol: TrialProto
   const speech = useRef<HTMLInputElement>(null);
   const [text, setText] = useState("");
   const [note, setNote] = useState("");
+  const [confirmAbort, setConfirmAbort] = useState(false);
   const unit = nextUnit(protocol, state);
   const question = unit[0]?.type === "record_answer" ? unit[0] : null;
   const options = question ? answerOptions(question) : [];
@@ -106,6 +107,15 @@ export function WizardControls({ protocol, state, send }: { protocol: TrialProto
         <Button variant="danger" disabled={ended || state.status === "scheduled"} onClick={() => void send({ kind: "emergency_stop" })}>
           Emergency stop (Esc)
         </Button>
+        {confirmAbort ? (
+          <Button variant="danger" onClick={() => void send({ kind: "abort", reason: "Aborted by the wizard" }).then(() => setConfirmAbort(false))}>
+            Confirm: abort this trial
+          </Button>
+        ) : (
+          <Button variant="ghost" disabled={ended} onClick={() => setConfirmAbort(true)}>
+            Abort trial…
+          </Button>
+        )}
       </div>
       <form
         className="flex gap-2"
