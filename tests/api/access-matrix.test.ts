@@ -24,7 +24,7 @@ async function baseData(f: Fixture) {
   const step = await f.api("owner").experiments.createStep({ experimentId: experiment.id, name: "S1" });
   const action = await f.api("owner").experiments.createAction({ stepId: step.id, type: "say", parameters: { text: "hi" } });
   const version = await f.api("owner").versions.publish({ experimentId: experiment.id });
-  const participant = await f.api("owner").participants.create({ studyId: study.id, code: "P1" });
+  const participant = await f.api("owner").participants.create({ studyId: study.id, code: "P1", consentStatus: "given", consentDate: new Date() });
   const trial = await f.api("owner").trials.create({ versionId: version.id, participantId: participant.id });
   return { study, experiment, step, action, version, participant, trial };
 }

@@ -9,7 +9,7 @@ import { Field, Input, NativeSelect, Textarea } from "@/ui/field";
 import { fieldError, Problem } from "@/ui/problem";
 import { Card } from "@/ui/surface";
 
-type Study = { id: string; title: string; description: string; status: "draft" | "active" | "completed" | "archived"; myRole: StudyRole };
+type Study = { id: string; title: string; description: string; status: "draft" | "active" | "completed" | "archived"; settings: { requireConsent: boolean }; myRole: StudyRole };
 
 export function OverviewTab({ study }: { study: Study }) {
   const trpc = useTRPC();
@@ -18,6 +18,7 @@ export function OverviewTab({ study }: { study: Study }) {
   const [title, setTitle] = useState(study.title);
   const [description, setDescription] = useState(study.description);
   const [status, setStatus] = useState(study.status);
+  const [requireConsent, setRequireConsent] = useState(study.settings.requireConsent);
   const update = useMutation(
     trpc.studies.update.mutationOptions({
       onSuccess: () => queryClient.invalidateQueries({ queryKey: trpc.studies.get.queryKey({ studyId: study.id }) }),
@@ -33,7 +34,7 @@ export function OverviewTab({ study }: { study: Study }) {
   }
   const submit = (e: FormEvent) => {
     e.preventDefault();
-    update.mutate({ studyId: study.id, title, description, status });
+    update.mutate({ studyId: study.id, title, description, status, settings: { requireConsent } });
   };
   return (
     <Card className="max-w-2xl p-6">
@@ -53,6 +54,10 @@ export function OverviewTab({ study }: { study: Study }) {
             </NativeSelect>
           )}
         </Field>
+        <label className="flex items-center gap-2 text-sm">
+          <input type="checkbox" className="h-4 w-4" checked={requireConsent} onChange={(e) => setRequireConsent(e.target.checked)} />
+          Trials need a participant whose consent is recorded
+        </label>
         {update.error && !fieldError(update.error, "title") && <Problem error={update.error} />}
         <div className="flex items-center gap-3">
           <Button type="submit" disabled={update.isPending}>

@@ -1,6 +1,7 @@
 import { TRPCError } from "@trpc/server";
 import { asc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
+import { audit } from "../../audit";
 import { participants, trials } from "../../db/schema";
 import { guarded, router } from "../trpc";
 import { id, text } from "../validation";
@@ -53,13 +54,19 @@ export const participantsRouter = router({
     .input(z.object({ participantId: id, code: code.optional(), consentStatus: fields.consentStatus.optional(), consentDate: fields.consentDate.optional(), notes: fields.notes.optional() }))
     .mutation(async ({ ctx, input }) => {
       const { participantId, ...changes } = input;
-      const [row] = await ctx.db
-        .update(participants)
-        .set(changes)
-        .where(eq(participants.id, participantId))
-        .returning()
-        .catch((e: unknown) => duplicateCode(e, input.code ?? ""));
-      return row!;
+      return ctx.db.transaction(async (tx) => {
+        const [row] = await tx
+          .update(participants)
+          .set(changes)
+          .where(eq(participants.id, participantId))
+          .returning()
+          .catch((e: unknown) => duplicateCode(e, input.code ?? ""));
+        // Consent changes are part of the study's record: who changed it, and when.
+        if (changes.consentStatus) {
+          await audit(tx, { actorId: ctx.user.id, studyId: row!.studyId, action: `participant.consent.${changes.consentStatus}`, target: participantId, details: { code: row!.code } });
+        }
+        return row!;
+      });
     }),
 
   delete: guarded("participant.manage")

@@ -1,6 +1,7 @@
 import { TRPCError } from "@trpc/server";
 import { and, desc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
+import { readSettings, studySettingsSchema } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { experiments, participants, studies, studyMembers, trials } from "../../db/schema";
 import { guarded, router } from "../trpc";
@@ -33,7 +34,7 @@ export const studiesRouter = router({
     .query(async ({ ctx, input }) => {
       const [study] = await ctx.db.select().from(studies).where(eq(studies.id, input.studyId));
       if (!study) throw new TRPCError({ code: "NOT_FOUND", message: "Study not found." });
-      return { ...study, myRole: ctx.studyRole! };
+      return { ...study, settings: readSettings(study.settings), myRole: ctx.studyRole! };
     }),
 
   create: guarded("study.create")
@@ -57,10 +58,13 @@ export const studiesRouter = router({
         title: text("Title", 200).optional(),
         description: z.string().max(5000).optional(),
         status: z.enum(STATUS).optional(),
+        settings: studySettingsSchema.partial().optional(),
       }),
     )
     .mutation(async ({ ctx, input }) => {
-      const { studyId, ...changes } = input;
+      const { studyId, settings, ...rest } = input;
+      const [current] = await ctx.db.select({ settings: studies.settings }).from(studies).where(eq(studies.id, studyId));
+      const changes = settings ? { ...rest, settings: { ...readSettings(current!.settings), ...settings } } : rest;
       return ctx.db.transaction(async (tx) => {
         const [study] = await tx
           .update(studies)

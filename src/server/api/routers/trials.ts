@@ -2,7 +2,8 @@ import { TRPCError } from "@trpc/server";
 import { and, asc, desc, eq, sql } from "drizzle-orm";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
-import { experimentVersions, experiments, participants, studyMembers, trialSamples, trials, user } from "../../db/schema";
+import { readSettings } from "@/core/studies/settings";
+import { experimentVersions, experiments, participants, studies, studyMembers, trialSamples, trials, user } from "../../db/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "../../experiments/publish";
 import { eventsSince } from "../../trials/event-store";
@@ -40,6 +41,13 @@ export const trialsRouter = router({
       if (input.participantId) {
         const [p] = await ctx.db.select().from(participants).where(and(eq(participants.id, input.participantId), eq(participants.studyId, studyId)));
         if (!p) throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: participantId: not a participant of this study" });
+        const [study] = await ctx.db.select({ settings: studies.settings }).from(studies).where(eq(studies.id, studyId));
+        if (readSettings(study!.settings).requireConsent && p.consentStatus !== "given") {
+          throw new TRPCError({
+            code: "PRECONDITION_FAILED",
+            message: `${p.code} has no recorded consent (${p.consentStatus}). Record their consent first, or turn off the consent check in the study's overview.`,
+          });
+        }
       }
       const wizardId = input.wizardId ?? ctx.user.id;
       const [m] = await ctx.db.select().from(studyMembers).where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
