@@ -94,7 +94,6 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
     hostname,
     port,
     fetch(req, server) {
-      if (new URL(req.url).pathname === "/health") return new Response("ok");
       if (server.upgrade(req, { data: { claims: null } })) return undefined;
       return new Response("This is the HRIStudio trial runtime: connect with a WebSocket.", { status: 426 });
     },
