@@ -26,7 +26,8 @@ async function baseData(f: Fixture) {
   const version = await f.api("owner").versions.publish({ experimentId: experiment.id });
   const participant = await f.api("owner").participants.create({ studyId: study.id, code: "P1", consentStatus: "given", consentDate: new Date() });
   const trial = await f.api("owner").trials.create({ versionId: version.id, participantId: participant.id });
-  return { study, experiment, step, action, version, participant, trial };
+  const condition = await f.api("owner").conditions.create({ studyId: study.id, name: "With gestures", experimentId: experiment.id });
+  return { study, experiment, step, action, version, participant, trial, condition };
 }
 
 // Destructive procedures get fresh rows for every call.
@@ -79,6 +80,13 @@ const MATRIX: Record<string, [Caller[], Input]> = {
   "participants.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, code: `P-${crypto.randomUUID().slice(0, 6)}` })],
   "participants.update": [EDITORS, (_f, b) => ({ participantId: b.participant.id, notes: "seen" })],
   "participants.delete": [EDITORS, async (f, b) => ({ participantId: (await f.api("owner").participants.create({ studyId: b.study.id, code: `D-${crypto.randomUUID().slice(0, 6)}` })).id })],
+  "conditions.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "conditions.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, name: `C-${crypto.randomUUID().slice(0, 6)}`, experimentId: b.experiment.id })],
+  "conditions.delete": [EDITORS, async (f, b) => ({ conditionId: (await f.api("owner").conditions.create({ studyId: b.study.id, name: `D-${crypto.randomUUID().slice(0, 6)}`, experimentId: b.experiment.id })).id })],
+  "conditions.assign": [
+    EDITORS,
+    async (f, b) => ({ participantId: (await f.api("owner").participants.create({ studyId: b.study.id, code: `A-${crypto.randomUUID().slice(0, 6)}` })).id, conditionId: b.condition.id }),
+  ],
   "trials.create": [RUNNERS, (_f, b) => ({ versionId: b.version.id, participantId: b.participant.id })],
   "trials.rehearse": [RUNNERS, (_f, b) => ({ experimentId: b.experiment.id })],
   "trials.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],

@@ -6,6 +6,7 @@ import type { Database } from "../db/client";
 import {
   actions,
   annotations,
+  conditions,
   experimentVersions,
   experiments,
   participants,
@@ -66,6 +67,10 @@ const LOOKUPS: Array<[string, Lookup]> = [
   [
     "trialId",
     async (db, id) => (await db.select({ s: trials.studyId }).from(trials).where(eq(trials.id, id)))[0]?.s,
+  ],
+  [
+    "conditionId",
+    async (db, id) => (await db.select({ s: conditions.studyId }).from(conditions).where(eq(conditions.id, id)))[0]?.s,
   ],
   [
     "annotationId",

@@ -1,4 +1,5 @@
 import { accountRouter } from "./routers/account";
+import { conditionsRouter } from "./routers/conditions";
 import { adminRouter } from "./routers/admin";
 import { experimentsRouter } from "./routers/experiments";
 import { membersRouter } from "./routers/members";
@@ -15,6 +16,7 @@ export const appRouter = router({
   experiments: experimentsRouter,
   versions: versionsRouter,
   participants: participantsRouter,
+  conditions: conditionsRouter,
   trials: trialsRouter,
   admin: adminRouter,
 });

@@ -1,3 +1,4 @@
+import { randomBytes } from "node:crypto";
 import { TRPCError } from "@trpc/server";
 import { and, desc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
@@ -64,7 +65,10 @@ export const studiesRouter = router({
     .mutation(async ({ ctx, input }) => {
       const { studyId, settings, ...rest } = input;
       const [current] = await ctx.db.select({ settings: studies.settings }).from(studies).where(eq(studies.id, studyId));
-      const changes = settings ? { ...rest, settings: { ...readSettings(current!.settings), ...settings } } : rest;
+      const merged = settings ? { ...readSettings(current!.settings), ...settings } : null;
+      // The seed is the server's, made once per choice of strategy, so assignments can be audited and reproduced.
+      if (merged && settings?.assignment) merged.assignment = { ...settings.assignment, seed: settings.assignment.seed ?? randomBytes(12).toString("hex") };
+      const changes = merged ? { ...rest, settings: merged } : rest;
       return ctx.db.transaction(async (tx) => {
         const [study] = await tx
           .update(studies)

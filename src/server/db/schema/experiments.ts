@@ -1,7 +1,8 @@
 import { sql } from "drizzle-orm";
 import { index, integer, jsonb, pgTable, text, timestamp, uniqueIndex } from "drizzle-orm/pg-core";
 import { user } from "./auth";
-import { createdAt, id, studies } from "./studies";
+import { createdAt, id } from "./columns";
+import { studies } from "./studies";
 
 export const experiments = pgTable(
   "experiments",

@@ -1,6 +1,6 @@
 import { boolean, jsonb, pgTable, text, timestamp, uniqueIndex } from "drizzle-orm/pg-core";
 import { user } from "./auth";
-import { createdAt, id } from "./studies";
+import { createdAt, id } from "./columns";
 
 export const pluginRepositories = pgTable("plugin_repositories", {
   id: id(),

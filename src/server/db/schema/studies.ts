@@ -1,14 +1,9 @@
 import { sql } from "drizzle-orm";
 import { index, jsonb, pgTable, primaryKey, text, timestamp, uniqueIndex } from "drizzle-orm/pg-core";
 import { user } from "./auth";
-
-const id = () =>
-  text("id")
-    .primaryKey()
-    .$defaultFn(() => crypto.randomUUID());
-const createdAt = () => timestamp("created_at", { withTimezone: true }).notNull().defaultNow();
-
-export { id, createdAt };
+import { createdAt, id } from "./columns";
+// Only inside lazy references: the two schema files refer to each other.
+import { experiments } from "./experiments";
 
 export const studies = pgTable("studies", {
   id: id(),
@@ -39,6 +34,24 @@ export const studyMembers = pgTable(
   (t) => [primaryKey({ columns: [t.studyId, t.userId] }), index("study_members_user_idx").on(t.userId)],
 );
 
+// A study's conditions, each bound to an experiment (and so to a robot).
+export const conditions = pgTable(
+  "conditions",
+  {
+    id: id(),
+    studyId: text("study_id")
+      .notNull()
+      .references(() => studies.id, { onDelete: "cascade" }),
+    name: text("name").notNull(),
+    description: text("description").notNull().default(""),
+    experimentId: text("experiment_id")
+      .notNull()
+      .references(() => experiments.id, { onDelete: "restrict" }),
+    createdAt: createdAt(),
+  },
+  (t) => [uniqueIndex("conditions_study_name_idx").on(t.studyId, t.name)],
+);
+
 export const participants = pgTable(
   "participants",
   {
@@ -52,6 +65,10 @@ export const participants = pgTable(
       .default("pending"),
     consentDate: timestamp("consent_date", { withTimezone: true }),
     notes: text("notes").notNull().default(""),
+    // The server's assignment: which condition (or, within-subject, which order), made when and from what.
+    conditionId: text("condition_id").references(() => conditions.id, { onDelete: "set null" }),
+    conditionOrder: jsonb("condition_order"),
+    assignment: jsonb("assignment"),
     createdAt: createdAt(),
   },
   (t) => [uniqueIndex("participants_study_code_idx").on(t.studyId, t.code)],

@@ -14,7 +14,8 @@ import {
 } from "drizzle-orm/pg-core";
 import { user } from "./auth";
 import { experimentVersions, experiments } from "./experiments";
-import { createdAt, id, participants, studies } from "./studies";
+import { createdAt, id } from "./columns";
+import { participants, studies } from "./studies";
 
 export const trials = pgTable(
   "trials",
