@@ -27,7 +27,7 @@ describe("condition assignment", () => {
     const { study, gestures, voice, participant } = await studyWithConditions("balanced", 2);
     const seed = (await owner.studies.get({ studyId: study.id })).settings.assignment.seed!;
     expect(seed).toMatch(/^[0-9a-f]{24}$/);
-    const assigned = [];
+    const assigned: Array<Awaited<ReturnType<typeof owner.conditions.assign>>> = [];
     for (let i = 1; i <= 8; i++) assigned.push(await owner.conditions.assign({ participantId: (await participant(`P${i}`)).id }));
     const names = { [gestures.id]: gestures.name, [voice.id]: voice.name };
     const counts = (upTo: number) => assigned.slice(0, upTo).filter((p) => p.conditionId === gestures.id).length;
