@@ -101,6 +101,27 @@ describe.sequential("the platform foundation, in the browser", () => {
     await page.context().close();
   });
 
+  it("lets the owner declare conditions and assign participants by a balanced strategy", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await page.getByRole("link", { name: /Storytelling and memory/ }).click();
+    await page.getByRole("tab", { name: "Conditions" }).click();
+    await page.getByLabel("Assignment strategy").selectOption("balanced");
+    await page.getByRole("button", { name: "Use this strategy" }).click();
+    await page.getByText(/Seed for the audit/).waitFor();
+    for (const name of ["Gestures", "No gestures"]) {
+      await page.getByLabel("Condition name").fill(name);
+      await page.getByLabel("Runs experiment").selectOption({ index: 1 });
+      await page.getByRole("button", { name: "Add condition" }).click();
+      await page.getByRole("cell", { name, exact: true }).waitFor();
+    }
+    await screenshot(page, "conditions");
+    await page.getByRole("tab", { name: "Participants" }).click();
+    for (const code of ["P001", "P002"]) await page.getByRole("button", { name: `Assign ${code}` }).click();
+    await expect.poll(async () => (await page.getByRole("cell", { name: /^(Gestures|No gestures)$/ }).allTextContents()).sort()).toEqual(["Gestures", "No gestures"]);
+    await page.context().close();
+  });
+
   it("sends a visitor without a session to the sign-in page", async () => {
     const page = await (await newContext(browser, app.url)).newPage();
     await page.goto(studyUrl);

@@ -9,7 +9,7 @@ import { Field, Input, NativeSelect, Textarea } from "@/ui/field";
 import { fieldError, Problem } from "@/ui/problem";
 import { Card } from "@/ui/surface";
 
-type Study = { id: string; title: string; description: string; status: "draft" | "active" | "completed" | "archived"; settings: { requireConsent: boolean }; myRole: StudyRole };
+type Study = { id: string; title: string; description: string; status: "draft" | "active" | "completed" | "archived"; settings: { requireConsent: boolean; assignment: unknown }; myRole: StudyRole };
 
 export function OverviewTab({ study }: { study: Study }) {
   const trpc = useTRPC();

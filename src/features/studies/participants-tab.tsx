@@ -12,18 +12,21 @@ import { Table, Td, Th } from "@/ui/table";
 const CONSENT = ["pending", "given", "declined", "withdrawn"] as const;
 type Consent = (typeof CONSENT)[number];
 
-export function ParticipantsTab({ studyId, role }: { studyId: string; role: StudyRole }) {
+export function ParticipantsTab({ studyId, role, strategy }: { studyId: string; role: StudyRole; strategy: string }) {
   const trpc = useTRPC();
   const queryClient = useQueryClient();
   const participants = useQuery(trpc.participants.list.queryOptions({ studyId }));
   const refresh = () => queryClient.invalidateQueries({ queryKey: trpc.participants.list.queryKey({ studyId }) });
   const update = useMutation(trpc.participants.update.mutationOptions({ onSuccess: refresh }));
+  const conditions = useQuery(trpc.conditions.list.queryOptions({ studyId }));
+  const assign = useMutation(trpc.conditions.assign.mutationOptions({ onSuccess: refresh }));
+  const conditionName = (id: string | null) => conditions.data?.find((c) => c.id === id)?.name;
   const manage = studyRoleMay(role, "participant.manage");
   return (
     <div className="space-y-6">
       {manage && <AddParticipant studyId={studyId} onAdded={refresh} />}
       {participants.isPending && <Spinner />}
-      <Problem error={participants.error ?? update.error} />
+      <Problem error={participants.error ?? update.error ?? assign.error} />
       {participants.data?.length === 0 && <EmptyState title="No participants yet." />}
       {!!participants.data?.length && (
         <Table>
@@ -32,6 +35,7 @@ export function ParticipantsTab({ studyId, role }: { studyId: string; role: Stud
               <Th>Code</Th>
               <Th>Consent</Th>
               <Th>Consent date</Th>
+              <Th>Condition</Th>
               <Th>Trials</Th>
             </tr>
           </thead>
@@ -59,6 +63,26 @@ export function ParticipantsTab({ studyId, role }: { studyId: string; role: Stud
                   )}
                 </Td>
                 <Td>{p.consentDate ? new Date(p.consentDate).toLocaleDateString() : "—"}</Td>
+                <Td>
+                  {p.conditionId ? (
+                    conditionName(p.conditionId)
+                  ) : manage && conditions.data?.length && strategy === "fixed" ? (
+                    <NativeSelect aria-label={`Condition of ${p.code}`} className="w-48" value="" onChange={(e) => assign.mutate({ participantId: p.id, conditionId: e.target.value })}>
+                      <option value="">Choose…</option>
+                      {conditions.data.map((c) => (
+                        <option key={c.id} value={c.id}>
+                          {c.name}
+                        </option>
+                      ))}
+                    </NativeSelect>
+                  ) : manage && conditions.data?.length ? (
+                    <Button size="sm" variant="secondary" aria-label={`Assign ${p.code}`} onClick={() => assign.mutate({ participantId: p.id })}>
+                      Assign ({strategy})
+                    </Button>
+                  ) : (
+                    "—"
+                  )}
+                </Td>
                 <Td>{p.trialCount}</Td>
               </tr>
             ))}

@@ -6,6 +6,7 @@ import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, ROLE_TONE, Spinner, STATUS_TONE } from "@/ui/surface";
 import { Tabs } from "@/ui/tabs";
+import { ConditionsTab } from "./conditions-tab";
 import { ExperimentsTab } from "./experiments-tab";
 import { MembersTab } from "./members-tab";
 import { OverviewTab } from "./overview-tab";
@@ -42,7 +43,8 @@ export function StudyPage({ studyId }: { studyId: string }) {
           { id: "overview", label: "Overview", content: <OverviewTab study={s} /> },
           { id: "members", label: "Members", content: <MembersTab studyId={studyId} role={role} /> },
           { id: "experiments", label: "Experiments", content: <ExperimentsTab studyId={studyId} role={role} /> },
-          { id: "participants", label: "Participants", content: <ParticipantsTab studyId={studyId} role={role} /> },
+          { id: "conditions", label: "Conditions", content: <ConditionsTab studyId={studyId} role={role} assignment={s.settings.assignment} /> },
+          { id: "participants", label: "Participants", content: <ParticipantsTab studyId={studyId} role={role} strategy={s.settings.assignment.strategy} /> },
           { id: "trials", label: "Trials", content: <TrialsTab studyId={studyId} role={role} /> },
         ]}
       />

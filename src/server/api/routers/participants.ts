@@ -32,6 +32,7 @@ export const participantsRouter = router({
           consentStatus: participants.consentStatus,
           consentDate: participants.consentDate,
           notes: participants.notes,
+          conditionId: participants.conditionId,
           trialCount: sql<number>`(select count(*)::int from ${trials} where ${trials.participantId} = ${participants.id})`,
         })
         .from(participants)
