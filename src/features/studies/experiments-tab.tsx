@@ -6,7 +6,7 @@ import { studyRoleMay, type StudyRole } from "@/core/access/policy";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Dialog } from "@/ui/dialog";
-import { Field, Input, Textarea } from "@/ui/field";
+import { Field, Input, NativeSelect, Textarea } from "@/ui/field";
 import { fieldError, Problem } from "@/ui/problem";
 import { Badge, EmptyState, Spinner } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
@@ -79,6 +79,7 @@ function NewExperimentDialog({ studyId, onCreated }: { studyId: string; onCreate
   const [name, setName] = useState("");
   const [description, setDescription] = useState("");
   const [robot, setRobot] = useState("nao6-ros2");
+  const robots = useQuery(trpc.plugins.list.queryOptions());
   const create = useMutation(
     trpc.experiments.create.mutationOptions({
       onSuccess: () => {
@@ -99,8 +100,16 @@ function NewExperimentDialog({ studyId, onCreated }: { studyId: string; onCreate
           {(p) => <Input {...p} value={name} onChange={(e) => setName(e.target.value)} autoFocus />}
         </Field>
         <Field label="Description">{(p) => <Textarea {...p} value={description} onChange={(e) => setDescription(e.target.value)} />}</Field>
-        <Field label="Robot" required hint="The robot plugin this experiment targets, e.g. nao6-ros2.">
-          {(p) => <Input {...p} value={robot} onChange={(e) => setRobot(e.target.value)} />}
+        <Field label="Robot" required hint="Its actions appear in the designer; another robot can be chosen later.">
+          {(p) => (
+            <NativeSelect {...p} value={robot} onChange={(e) => setRobot(e.target.value)}>
+              {robots.data?.robots.map((r) => (
+                <option key={r.robotId} value={r.robotId}>
+                  {r.name} ({r.version})
+                </option>
+              ))}
+            </NativeSelect>
+          )}
         </Field>
         {create.error && !fieldError(create.error, "name") && <Problem error={create.error} />}
         <div className="flex justify-end">

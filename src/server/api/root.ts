@@ -4,6 +4,7 @@ import { adminRouter } from "./routers/admin";
 import { experimentsRouter } from "./routers/experiments";
 import { membersRouter } from "./routers/members";
 import { participantsRouter } from "./routers/participants";
+import { pluginsRouter } from "./routers/plugins";
 import { studiesRouter } from "./routers/studies";
 import { trialsRouter } from "./routers/trials";
 import { versionsRouter } from "./routers/versions";
@@ -17,6 +18,7 @@ export const appRouter = router({
   versions: versionsRouter,
   participants: participantsRouter,
   conditions: conditionsRouter,
+  plugins: pluginsRouter,
   trials: trialsRouter,
   admin: adminRouter,
 });

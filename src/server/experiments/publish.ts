@@ -5,6 +5,7 @@ import { hashCanonical } from "@/core/protocol/canonical";
 import { SNAPSHOT_SCHEMA_VERSION, type ProtocolSnapshot } from "@/core/protocol/snapshot";
 import type { Database } from "../db/client";
 import { experimentVersions, experiments } from "../db/schema";
+import { findPlugin } from "../plugins/catalog";
 import { loadDesign, type Design } from "./design";
 
 export function snapshotOf(design: Design): ProtocolSnapshot {
@@ -33,9 +34,11 @@ export async function publish(db: Database, experimentId: string, userId: string
       .select({ next: sql<number>`coalesce(max(${experimentVersions.version}), 0)::int + 1` })
       .from(experimentVersions)
       .where(eq(experimentVersions.experimentId, experimentId))) as [{ next: number }];
+    // The exact plugin version the design was published against, so a trial can be traced to it.
+    const plugin = await findPlugin(design.robotPluginId);
     const [version] = await tx
       .insert(experimentVersions)
-      .values({ experimentId, version: next, snapshot, hash: hashCanonical(snapshot), pluginId: design.robotPluginId, publishedBy: userId })
+      .values({ experimentId, version: next, snapshot, hash: hashCanonical(snapshot), pluginId: design.robotPluginId, pluginVersion: plugin?.version ?? null, publishedBy: userId })
       .returning();
     return version!;
   });

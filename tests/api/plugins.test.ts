@@ -1,0 +1,49 @@
+// The robots the server offers come through the public plugin loader; a
+// published version records the plugin version; portability is reported
+// before any trial, per robot, for the seeded Interactive Storyteller.
+import { afterAll, describe, expect, it } from "vitest";
+import { appRouter } from "../../src/server/api/root";
+import { createCallerFactory } from "../../src/server/api/trpc";
+import { seedDemo } from "../../src/server/seed/demo";
+import { freshDatabase } from "../support/db";
+import { buildFixture, TEST_SECRET } from "./fixture";
+
+const { db, close } = await freshDatabase();
+await seedDemo(db);
+const f = await buildFixture(db);
+afterAll(close);
+
+describe("robot plugins on the server", () => {
+  it("lists the first-party robots with their versions", async () => {
+    const { robots, problems } = await f.api("observer").plugins.list();
+    expect(robots.map((r) => r.robotId).sort()).toEqual(["nao6-ros2", "pepper-ros2", "simulated", "turtlebot3-burger"]);
+    expect(robots.find((r) => r.robotId === "nao6-ros2")!.version).toBe("3.0.0");
+    expect(problems).toEqual([]);
+  });
+
+  it("records the exact plugin version in a published version", async () => {
+    const study = await f.newStudy();
+    const e = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+    await f.api("owner").experiments.createStep({ experimentId: e.id, name: "S" });
+    expect(await f.api("owner").versions.publish({ experimentId: e.id })).toMatchObject({ pluginId: "nao6-ros2", pluginVersion: "3.0.0" });
+  });
+
+  it("reports the Storyteller's portability per robot before any trial", async () => {
+    // The demo study's owner, as the seed made them.
+    const researcher = (await db.query.user.findMany()).find((u) => u.email === "researcher@demo.hristudio")!;
+    const asOwner = createCallerFactory(appRouter)({
+      db,
+      user: { id: researcher.id, name: researcher.name, email: researcher.email, role: "researcher" },
+      secret: TEST_SECRET,
+      runtimeUrl: "ws://127.0.0.1:1",
+    });
+    const [study] = await asOwner.studies.mine();
+    const [storyteller] = await asOwner.experiments.list({ studyId: study!.id });
+    const unsupported = async (robotId: string) =>
+      (await asOwner.plugins.portability({ experimentId: storyteller!.id, robotId })).actions.filter((a) => a.status !== "supported").map((a) => a.type).sort();
+    expect(await unsupported("nao6-ros2")).toEqual([]);
+    expect(await unsupported("simulated")).toEqual([]);
+    expect(await unsupported("turtlebot3-burger")).toEqual(["head_shake", "look_down", "nod", "say", "say", "say", "say", "say", "wave"]);
+    await expect(asOwner.plugins.portability({ experimentId: storyteller!.id, robotId: "r2d2" })).rejects.toThrow('No robot plugin called "r2d2" is installed.');
+  });
+});
