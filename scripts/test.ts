@@ -1,5 +1,5 @@
-// `npm test`: the whole suite in one vitest run, against a real PostgreSQL
-// and Debian's Chromium. Installs Chromium first when it can (root + apt).
+// `npm test`: the whole suite in one vitest run, against a real PostgreSQL,
+// Debian's Chromium and a real sshd. Installs those first when it can (root + apt).
 import { spawnSync } from "node:child_process";
 import { existsSync, mkdirSync, readFileSync } from "node:fs";
 import { join, resolve } from "node:path";
@@ -9,24 +9,32 @@ import { findChromium } from "../tests/support/chromium";
 const root = resolve(import.meta.dirname, "..");
 const log = (line: string) => console.log(`[test] ${line}`);
 
-function ensureChromium() {
-  if (findChromium()) return;
+/** The Debian packages the tests drive for real: Chromium, and an sshd for the SSH transport. */
+const NEEDS = [
+  { package: "chromium", present: () => Boolean(findChromium()), hint: "or set HRI_CHROMIUM to a Chromium binary" },
+  { package: "openssh-server", present: () => existsSync("/usr/sbin/sshd"), hint: "for the SSH transport's tests" },
+];
+
+function ensurePackages() {
+  const missing = NEEDS.filter((n) => !n.present());
+  if (!missing.length) return;
   const canApt = process.getuid?.() === 0 && existsSync("/usr/bin/apt-get");
   if (!canApt) {
-    console.error("[test] Chromium is needed for the browser tests. Install Debian's `chromium` package (or set HRI_CHROMIUM to a Chromium binary) and run again.");
+    for (const m of missing) console.error(`[test] Please install Debian's ${m.package} package (${m.hint}) and run again.`);
     process.exit(1);
   }
-  log("Installing Debian's chromium for the browser tests…");
+  log(`Installing ${missing.map((m) => m.package).join(", ")} for the tests…`);
   const env = { ...process.env, DEBIAN_FRONTEND: "noninteractive" };
   spawnSync("apt-get", ["update", "-qq"], { stdio: "inherit", env });
-  const installed = spawnSync("apt-get", ["install", "-y", "-qq", "--no-install-recommends", "chromium", "fonts-dejavu-core"], { stdio: "inherit", env });
-  if (installed.status !== 0 || !findChromium()) {
-    console.error("[test] Could not install chromium with apt-get.");
+  const extra = missing.some((m) => m.package === "chromium") ? ["fonts-dejavu-core"] : [];
+  const installed = spawnSync("apt-get", ["install", "-y", "-qq", "--no-install-recommends", ...missing.map((m) => m.package), ...extra], { stdio: "inherit", env });
+  if (installed.status !== 0 || missing.some((m) => !m.present())) {
+    console.error("[test] Could not install the packages the tests need with apt-get.");
     process.exit(1);
   }
 }
 
-ensureChromium();
+ensurePackages();
 log("Type-checking…");
 const typecheck = spawnSync("node", [join(root, "node_modules", "typescript", "bin", "tsc"), "--noEmit", "-p", root], { cwd: root, stdio: "inherit" });
 if (typecheck.status !== 0) process.exit(typecheck.status ?? 1);

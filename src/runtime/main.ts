@@ -22,7 +22,10 @@ for (const error of folder.errors) console.error(`[runtime] plugin not loaded: $
 const robotFor = (robotPluginId: string) => {
   const plugin = folder.plugins.find((p) => p.robotId === robotPluginId);
   if (!plugin) return unavailableRobot(`no robot plugin "${robotPluginId}" is installed`);
-  const choice = transportFor(plugin, { rosbridgeUrl: config.HRI_ROSBRIDGE_URL, simulatorUrl: config.HRI_ROSBRIDGE_URL });
+  const ssh = config.HRI_ROBOT_SSH_HOST
+    ? { host: config.HRI_ROBOT_SSH_HOST, port: config.HRI_ROBOT_SSH_PORT, username: config.HRI_ROBOT_SSH_USER, password: config.HRI_ROBOT_SSH_PASSWORD, privateKeyFile: config.HRI_ROBOT_SSH_KEY_FILE }
+    : undefined;
+  const choice = transportFor(plugin, { rosbridgeUrl: config.HRI_ROSBRIDGE_URL, simulatorUrl: config.HRI_ROSBRIDGE_URL, ssh });
   return choice.ok ? pluginRobot(plugin, choice.transport) : unavailableRobot(`${plugin.name}: ${choice.reason}`);
 };
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};

@@ -16,6 +16,12 @@ const schema = z.object({
   HRI_RUNTIME_URL: z.string().url().optional(),
   // The robot's rosbridge WebSocket; unset, the launcher starts the simulated robot and uses it.
   HRI_ROSBRIDGE_URL: z.string().url().optional(),
+  // SSH to the robot for NAOqi (qicli) commands such as postures; unset, those actions fail with a clear reason.
+  HRI_ROBOT_SSH_HOST: z.string().optional(),
+  HRI_ROBOT_SSH_PORT: z.coerce.number().int().min(1).max(65535).default(22),
+  HRI_ROBOT_SSH_USER: z.string().default("nao"),
+  HRI_ROBOT_SSH_PASSWORD: z.string().optional(),
+  HRI_ROBOT_SSH_KEY_FILE: z.string().optional(),
   HRI_SIMULATOR_PORT: z.coerce.number().int().min(0).max(65535).default(9090),
   BETTER_AUTH_SECRET: z.string().min(32, "must be at least 32 characters").optional(),
   BETTER_AUTH_URL: z.string().url().optional(),

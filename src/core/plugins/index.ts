@@ -12,4 +12,5 @@ export { TRANSFORMS } from "./transforms";
 export { resolveAction, type Resolution } from "./resolve";
 export { portability, type PortableExperiment, type PortabilityReport, type ActionPortability } from "./portability";
 export { outgoingFor, type Outgoing } from "./payload";
+export { shellCommand, quoteWord, type ShellCommand } from "./shell";
 export { pluginChanges, effectiveTrust, type PluginChange } from "./changes";

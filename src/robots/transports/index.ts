@@ -2,6 +2,8 @@
 // "simulated" is rosbridge to the built-in simulated robot.
 import type { Plugin } from "../../core/plugins";
 import { RosbridgeTransport } from "./rosbridge";
+import { RoutedTransport } from "./routed";
+import { SshTransport, type SshOptions } from "./ssh";
 import type { Transport } from "./transport";
 
 export type { DispatchOutcome, Health, Transport } from "./transport";
@@ -11,6 +13,8 @@ export interface TransportConfig {
   rosbridgeUrl?: string;
   /** The simulated robot's rosbridge, started by the launcher. */
   simulatorUrl?: string;
+  /** SSH to the robot, for the plugin's NAOqi (qicli) commands. */
+  ssh?: SshOptions;
 }
 
 export type TransportChoice = { ok: true; transport: Transport } | { ok: false; reason: string };
@@ -23,7 +27,12 @@ export function transportFor(plugin: Plugin, config: TransportConfig): Transport
   }
   if (kind === "rosbridge") {
     if (!config.rosbridgeUrl) return { ok: false, reason: `no rosbridge address configured for ${plugin.robotId}` };
-    return { ok: true, transport: new RosbridgeTransport({ url: config.rosbridgeUrl }) };
+    const rosbridge = new RosbridgeTransport({ url: config.rosbridgeUrl });
+    return { ok: true, transport: new RoutedTransport(rosbridge, config.ssh ? new SshTransport(config.ssh) : null) };
+  }
+  if (kind === "ssh") {
+    if (!config.ssh) return { ok: false, reason: `no SSH address configured for ${plugin.robotId} (HRI_ROBOT_SSH_HOST)` };
+    return { ok: true, transport: new SshTransport(config.ssh) };
   }
   return { ok: false, reason: `the ${kind} transport is not available yet` };
 }
