@@ -58,6 +58,11 @@ function checkAction(action: PluginAction, at: string, add: Add) {
       }
     }
   }
+  if (action.http) {
+    for (const p of placeholders({ url: action.http.url, body: action.http.body ?? {} }, `${at}/http`)) {
+      if (!Object.hasOwn(schema.properties, p.name)) add(p.path, "unknown_placeholder", `{{${p.name}}} names no parameter of action "${action.id}"`);
+    }
+  }
 }
 
 function checkAbstract(plugin: Plugin, add: Add) {

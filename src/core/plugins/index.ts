@@ -13,4 +13,5 @@ export { resolveAction, type Resolution } from "./resolve";
 export { portability, type PortableExperiment, type PortabilityReport, type ActionPortability } from "./portability";
 export { outgoingFor, type Outgoing } from "./payload";
 export { shellCommand, quoteWord, type ShellCommand } from "./shell";
+export { httpRequest, type HttpRequest } from "./http";
 export { pluginChanges, effectiveTrust, type PluginChange } from "./changes";

@@ -37,6 +37,15 @@ export interface PluginAction {
   retryable?: boolean;
   parameterSchema: ParameterSchema;
   ros2?: Ros2Dispatch;
+  /** Our extension: a request to the robot's REST API. */
+  http?: HttpDispatch;
+}
+
+export interface HttpDispatch {
+  method: "GET" | "POST" | "PUT" | "PATCH" | "DELETE";
+  /** Absolute, or relative to the transport's base URL. */
+  url: string;
+  body?: JsonObject;
 }
 
 /** Our extension: which plugin action performs an abstract action, and with what parameters. */

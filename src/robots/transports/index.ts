@@ -1,6 +1,7 @@
 // Transports are chosen here and nowhere else, from the plugin's `transport`.
 // "simulated" is rosbridge to the built-in simulated robot.
 import type { Plugin } from "../../core/plugins";
+import { HttpTransport } from "./http";
 import { RosbridgeTransport } from "./rosbridge";
 import { RoutedTransport } from "./routed";
 import { SshTransport, type SshOptions } from "./ssh";
@@ -13,6 +14,8 @@ export interface TransportConfig {
   rosbridgeUrl?: string;
   /** The simulated robot's rosbridge, started by the launcher. */
   simulatorUrl?: string;
+  /** The robot's REST API, for plugins whose transport is "http" (default: the plugin's httpBaseUrl). */
+  httpBaseUrl?: string;
   /** SSH to the robot, for the plugin's NAOqi (qicli) commands. */
   ssh?: SshOptions;
 }
@@ -34,5 +37,7 @@ export function transportFor(plugin: Plugin, config: TransportConfig): Transport
     if (!config.ssh) return { ok: false, reason: `no SSH address configured for ${plugin.robotId} (HRI_ROBOT_SSH_HOST)` };
     return { ok: true, transport: new SshTransport(config.ssh) };
   }
-  return { ok: false, reason: `the ${kind} transport is not available yet` };
+  const base = config.httpBaseUrl ?? (typeof plugin.httpBaseUrl === "string" ? plugin.httpBaseUrl : undefined);
+  if (!base) return { ok: false, reason: `no REST address configured for ${plugin.robotId}` };
+  return { ok: true, transport: new HttpTransport({ baseUrl: base }) };
 }

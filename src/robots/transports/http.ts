@@ -1,0 +1,88 @@
+// The HTTP transport for robots with a REST API: each action one request
+// built from its templates; 2xx is completed, anything else failed with the
+// robot's answer, no answer within the plugin's timeout timed out. The API's
+// base URL is probed as a heartbeat, so a robot gone away is reported at once.
+import { httpRequest, validateParameters, withDefaults, type PluginAction } from "../../core/plugins";
+import { DEFAULT_TIMEOUT_MS, type DispatchOutcome, type Health, type Transport } from "./transport";
+
+export interface HttpOptions {
+  baseUrl: string;
+  heartbeatEveryMs?: number;
+}
+
+export class HttpTransport implements Transport {
+  private status: Health = { state: "disconnected", since: Date.now(), attempts: 0, lastHeartbeatMs: null };
+  private readonly listeners = new Set<(health: Health) => void>();
+  private heartbeat: NodeJS.Timeout | null = null;
+
+  constructor(private readonly options: HttpOptions) {}
+
+  async connect() {
+    if (!(await this.probe())) throw new Error(`cannot reach the robot's API at ${this.options.baseUrl}`);
+    this.heartbeat ??= setInterval(() => void this.probe(), this.options.heartbeatEveryMs ?? 2000);
+  }
+
+  async dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome> {
+    const started = Date.now();
+    const problems = validateParameters(action.parameterSchema, parameters);
+    if (problems.length) return { status: "failed", reason: problems.map((p) => p.message).join("; ") };
+    if (!action.http) return { status: "failed", reason: `action "${action.id}" has no HTTP request` };
+    const request = httpRequest(action.http, this.options.baseUrl, withDefaults(action.parameterSchema, parameters));
+    if (!request.ok) return { status: "failed", reason: request.reason };
+    try {
+      const response = await fetch(request.url, {
+        method: request.method,
+        headers: request.body ? { "content-type": "application/json" } : undefined,
+        body: request.body,
+        signal: AbortSignal.timeout(action.timeout ?? DEFAULT_TIMEOUT_MS),
+      });
+      const text = (await response.text()).slice(0, 500);
+      if (response.ok) return { status: "completed", detail: { httpStatus: response.status } };
+      return { status: "failed", reason: `the robot answered HTTP ${response.status}${text ? `: ${text}` : ""}` };
+    } catch (error) {
+      if ((error as Error).name === "TimeoutError") return { status: "timed_out", afterMs: Date.now() - started };
+      this.setState("disconnected");
+      return { status: "failed", reason: `the robot's API did not answer: ${(error as Error).message}` };
+    }
+  }
+
+  /** REST robots have no topics to follow. */
+  subscribe() {
+    return () => {};
+  }
+
+  health(): Health {
+    return { ...this.status };
+  }
+
+  onHealth(listener: (health: Health) => void) {
+    this.listeners.add(listener);
+    return () => void this.listeners.delete(listener);
+  }
+
+  async close() {
+    if (this.heartbeat) clearInterval(this.heartbeat);
+    this.setState("closed");
+  }
+
+  private async probe(): Promise<boolean> {
+    const started = Date.now();
+    try {
+      await fetch(this.options.baseUrl, { method: "GET", signal: AbortSignal.timeout(1500) });
+      this.status.lastHeartbeatMs = Date.now() - started;
+      this.status.attempts = 0;
+      this.setState("connected");
+      return true;
+    } catch {
+      this.status.attempts++;
+      if (this.status.state !== "closed") this.setState("disconnected");
+      return false;
+    }
+  }
+
+  private setState(state: Health["state"]) {
+    if (this.status.state === state || this.status.state === "closed") return;
+    this.status = { ...this.status, state, since: Date.now() };
+    this.listeners.forEach((listener) => listener(this.health()));
+  }
+}
