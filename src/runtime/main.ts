@@ -25,7 +25,7 @@ const robotFor = (robotPluginId: string) => {
   const ssh = config.HRI_ROBOT_SSH_HOST
     ? { host: config.HRI_ROBOT_SSH_HOST, port: config.HRI_ROBOT_SSH_PORT, username: config.HRI_ROBOT_SSH_USER, password: config.HRI_ROBOT_SSH_PASSWORD, privateKeyFile: config.HRI_ROBOT_SSH_KEY_FILE }
     : undefined;
-  const choice = transportFor(plugin, { rosbridgeUrl: config.HRI_ROSBRIDGE_URL, simulatorUrl: config.HRI_ROSBRIDGE_URL, ssh });
+  const choice = transportFor(plugin, { rosbridgeUrl: config.HRI_ROSBRIDGE_URL, simulatorUrl: config.HRI_ROSBRIDGE_URL, ssh, httpBaseUrl: config.HRI_ROBOT_HTTP_URL });
   return choice.ok ? pluginRobot(plugin, choice.transport) : unavailableRobot(`${plugin.name}: ${choice.reason}`);
 };
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};

@@ -22,6 +22,8 @@ const schema = z.object({
   HRI_ROBOT_SSH_USER: z.string().default("nao"),
   HRI_ROBOT_SSH_PASSWORD: z.string().optional(),
   HRI_ROBOT_SSH_KEY_FILE: z.string().optional(),
+  // The REST API of a robot whose plugin uses the HTTP transport (default: the plugin's httpBaseUrl).
+  HRI_ROBOT_HTTP_URL: z.string().url().optional(),
   HRI_SIMULATOR_PORT: z.coerce.number().int().min(0).max(65535).default(9090),
   BETTER_AUTH_SECRET: z.string().min(32, "must be at least 32 characters").optional(),
   BETTER_AUTH_URL: z.string().url().optional(),
