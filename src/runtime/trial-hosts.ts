@@ -17,7 +17,7 @@ export interface TrialHosts {
 export function trialHosts(
   db: Database,
   lockConnection: postgres.ReservedSql,
-  robotFor: (robotPluginId: string) => RobotLink,
+  robotFor: (robotPluginId: string) => RobotLink | Promise<RobotLink>,
   onRobotStatus: (trialId: string, connected: boolean, detail?: string) => void,
 ): TrialHosts {
   const hosts = new Map<string, Promise<TrialHost | null>>();
@@ -33,7 +33,7 @@ export function trialHosts(
       .where(eq(trials.id, trialId));
     const protocol = (row?.snapshot ?? row?.rehearsal) as TrialProtocol | null;
     if (!protocol) throw new Error("This trial has no protocol to run.");
-    const host = await TrialHost.open(db, trialId, protocol, robotFor(row!.robotPluginId));
+    const host = await TrialHost.open(db, trialId, protocol, await robotFor(row!.robotPluginId));
     host.onRobotStatus((connected, detail) => onRobotStatus(trialId, connected, detail));
     return host;
   }

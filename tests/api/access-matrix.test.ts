@@ -82,6 +82,10 @@ const MATRIX: Record<string, [Caller[], Input]> = {
   "participants.delete": [EDITORS, async (f, b) => ({ participantId: (await f.api("owner").participants.create({ studyId: b.study.id, code: `D-${crypto.randomUUID().slice(0, 6)}` })).id })],
   "plugins.list": [SIGNED_IN, () => undefined],
   "plugins.portability": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "plugins.repositories.list": [ADMIN, () => undefined],
+  "plugins.repositories.add": [ADMIN, () => ({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` })],
+  "plugins.repositories.remove": [ADMIN, async () => ({ repositoryId: (await f.api("admin").plugins.repositories.add({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` })).id })],
+  "plugins.repositories.sync": [ADMIN, async () => ({ repositoryId: (await f.api("admin").plugins.repositories.add({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` })).id })],
   "conditions.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
   "conditions.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, name: `C-${crypto.randomUUID().slice(0, 6)}`, experimentId: b.experiment.id })],
   "conditions.delete": [EDITORS, async (f, b) => ({ conditionId: (await f.api("owner").conditions.create({ studyId: b.study.id, name: `D-${crypto.randomUUID().slice(0, 6)}`, experimentId: b.experiment.id })).id })],
@@ -128,7 +132,8 @@ describe("access matrix", () => {
       (e: unknown) => (e instanceof TRPCError ? e.code : `unexpected: ${String(e)}`),
     );
     if (allowed) return expect(outcome).toBe("ok");
-    const studyScoped = MATRIX[path]![0] !== SIGNED_IN && !path.startsWith("admin.") && path !== "studies.create";
+    // System operations (no study) refuse plainly; study operations hide the study from non-members.
+    const studyScoped = ![SIGNED_IN, ADMIN, CREATORS].includes(MATRIX[path]![0]);
     const denied = caller === "anonymous" ? "UNAUTHORIZED" : studyScoped && !MEMBERS.includes(caller) ? "NOT_FOUND" : "FORBIDDEN";
     expect(outcome).toBe(denied);
   });

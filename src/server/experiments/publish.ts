@@ -35,7 +35,7 @@ export async function publish(db: Database, experimentId: string, userId: string
       .from(experimentVersions)
       .where(eq(experimentVersions.experimentId, experimentId))) as [{ next: number }];
     // The exact plugin version the design was published against, so a trial can be traced to it.
-    const plugin = await findPlugin(design.robotPluginId);
+    const plugin = await findPlugin(db, design.robotPluginId);
     const [version] = await tx
       .insert(experimentVersions)
       .values({ experimentId, version: next, snapshot, hash: hashCanonical(snapshot), pluginId: design.robotPluginId, pluginVersion: plugin?.version ?? null, publishedBy: userId })

@@ -1,18 +1,34 @@
 import { TRPCError } from "@trpc/server";
+import { asc, eq } from "drizzle-orm";
 import { z } from "zod";
 import { portability } from "@/core/plugins";
+import { audit } from "../../audit";
+import { pluginRepositories } from "../../db/schema";
 import { loadDesign } from "../../experiments/design";
 import { findPlugin, pluginCatalog } from "../../plugins/catalog";
+import { syncRepository } from "../../plugins/repositories";
 import { guarded, router } from "../trpc";
 import { id } from "../validation";
 
+const repositoryUrl = z
+  .url({ protocol: /^https?$/, error: "must be an http:// or https:// address" })
+  .max(2000, "must be at most 2000 characters");
+
 export const pluginsRouter = router({
   /** The robots an experiment can target, and the plugin files that could not be loaded, with why. */
-  list: guarded("plugin.read").query(async () => {
-    const { plugins, errors } = await pluginCatalog();
+  list: guarded("plugin.read").query(async ({ ctx }) => {
+    const { plugins, problems } = await pluginCatalog(ctx.db);
     return {
-      robots: plugins.map((p) => ({ robotId: p.robotId, name: p.name, version: p.version, trustLevel: p.trustLevel ?? "community", transport: p.transport ?? "rosbridge", capabilities: p.capabilities ?? [] })),
-      problems: errors.map((e) => `${e.file} ${e.path}: ${e.reason}`),
+      robots: plugins.map(({ plugin: p, trust, source }) => ({
+        robotId: p.robotId,
+        name: p.name,
+        version: p.version,
+        trustLevel: trust,
+        source,
+        transport: p.transport ?? "rosbridge",
+        capabilities: p.capabilities ?? [],
+      })),
+      problems,
     };
   }),
 
@@ -22,8 +38,38 @@ export const pluginsRouter = router({
     .query(async ({ ctx, input }) => {
       const design = await loadDesign(ctx.db, input.experimentId);
       const robotId = input.robotId ?? design.robotPluginId;
-      const plugin = await findPlugin(robotId);
+      const plugin = await findPlugin(ctx.db, robotId);
       if (!plugin) throw new TRPCError({ code: "NOT_FOUND", message: `No robot plugin called "${robotId}" is installed.` });
       return portability(design, plugin);
     }),
+
+  repositories: router({
+    list: guarded("admin.plugins").query(({ ctx }) => ctx.db.select().from(pluginRepositories).orderBy(asc(pluginRepositories.name))),
+
+    add: guarded("admin.plugins")
+      .input(z.object({ url: repositoryUrl }))
+      .mutation(async ({ ctx, input }) => {
+        const [row] = await ctx.db
+          .insert(pluginRepositories)
+          .values({ url: input.url, name: input.url, createdBy: ctx.user.id })
+          .onConflictDoNothing()
+          .returning();
+        if (!row) throw new TRPCError({ code: "CONFLICT", message: "That repository is already added." });
+        await audit(ctx.db, { actorId: ctx.user.id, action: "plugins.repository.add", target: row.id, details: { url: input.url } });
+        return row;
+      }),
+
+    remove: guarded("admin.plugins")
+      .input(z.object({ repositoryId: id }))
+      .mutation(async ({ ctx, input }) => {
+        // Installed versions stay: published experiments point at them.
+        await ctx.db.update(pluginRepositories).set({ enabled: false }).where(eq(pluginRepositories.id, input.repositoryId));
+        await audit(ctx.db, { actorId: ctx.user.id, action: "plugins.repository.remove", target: input.repositoryId });
+        return { removed: input.repositoryId };
+      }),
+
+    sync: guarded("admin.plugins")
+      .input(z.object({ repositoryId: id }))
+      .mutation(({ ctx, input }) => syncRepository(ctx.db, input.repositoryId, ctx.user.id)),
+  }),
 });
