@@ -1,5 +1,9 @@
 // A researcher sets up a study in a real Chromium; the server keeps an
 // observer from editing it and a non-member from even seeing it.
+import { existsSync, readFileSync } from "node:fs";
+import { createServer } from "node:http";
+import type { AddressInfo } from "node:net";
+import { join, normalize } from "node:path";
 import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
@@ -32,6 +36,26 @@ describe.sequential("the platform foundation, in the browser", () => {
       }
       await context.close();
     }
+  });
+
+  it("lets an administrator add and sync a plugin repository, and shows what changed", async () => {
+    const fixture = join(import.meta.dirname, "..", "..", "..", "shared", "fixtures", "hristudio-plugins");
+    const repo = createServer((req, res) => {
+      const file = join(fixture, normalize(req.url!).replace(/^(\.\.[/\\])+/, ""));
+      existsSync(file) ? res.end(readFileSync(file)) : res.writeHead(404).end();
+    });
+    await new Promise<void>((ok) => repo.listen(0, "127.0.0.1", ok));
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "admin@demo.hristudio", DEMO_PASSWORD);
+    await page.goto("/admin/plugins");
+    await page.getByLabel("Repository address").fill(`http://127.0.0.1:${(repo.address() as AddressInfo).port}/`);
+    await page.getByRole("button", { name: "Add repository" }).click();
+    await page.getByRole("button", { name: /^Sync / }).click();
+    await page.getByText("nao6-ros2: added (version 3.0.0)").waitFor();
+    await page.getByText("HRIStudio Official Robot Plugins").waitFor();
+    await screenshot(page, "admin-plugins");
+    await page.context().close();
+    repo.close();
   });
 
   it("refuses a wrong password in plain language", async () => {
