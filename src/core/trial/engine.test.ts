@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { apply, decide, fold, type Command, type EngineEvent, type TrialEvent, type TrialProtocol } from "./index";
+import { apply, fold, simulate, type Command, type EngineEvent, type TrialProtocol } from "./index";
 
 // A small Storyteller: speech and wave together, a pause, a question, a branch.
 const protocol: TrialProtocol = {
@@ -28,19 +28,9 @@ const protocol: TrialProtocol = {
   ],
 };
 
-/** Runs commands in order; returns the events of the last one, or its rejection. */
+/** Runs commands in order; returns the events of the last one (or its rejection), the log and the state. */
 function run(commands: Command[]) {
-  const log: TrialEvent[] = [];
-  let last: EngineEvent[] | string = [];
-  for (const command of commands) {
-    const decision = decide(protocol, fold(protocol, log), command);
-    if (!decision.ok) {
-      last = decision.reason;
-      continue;
-    }
-    last = decision.events;
-    for (const e of decision.events) log.push({ ...e, seq: log.length + 1, relMs: log.length * 10 });
-  }
+  const { log, last } = simulate(protocol, commands);
   return { last, log, state: fold(protocol, log) };
 }
 

@@ -1,4 +1,5 @@
 export { decide } from "./decide";
 export { apply, fold, initialState } from "./fold";
 export { answerOptions, nextUnit } from "./protocol";
+export { simulate, type Simulation } from "./simulate";
 export * from "./types";
