@@ -98,6 +98,7 @@ const MATRIX: Record<string, [Caller[], Input]> = {
   "trials.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
   "trials.get": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
   "trials.socketToken": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
+  "trials.annotations": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
   "trials.events": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
   "trials.samples": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
   "admin.users.list": [ADMIN, () => undefined],

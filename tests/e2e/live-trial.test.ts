@@ -86,6 +86,13 @@ describe.sequential("a live trial in two browsers", () => {
     const trial = await wizardApi.trials.get.query({ trialId });
     const events = await wizardApi.trials.events.query({ trialId });
     expect(scoreRun(trial.protocol, events)).toEqual({ score: 100, failed: [] });
+
+    // Afterwards: planned against executed, the timeline with the marked moment, the joint angles.
+    await observer.getByRole("link", { name: /Open the analysis/ }).click();
+    await expect.poll(() => observer.getByTestId("figure-Execution fidelity").textContent()).toBe("100 %");
+    await observer.getByRole("region", { name: "Timeline" }).getByText("Participant hesitated").waitFor();
+    await observer.getByRole("img", { name: /Joint angles of/ }).waitFor();
+    await screenshot(observer, "analysis");
     await wizard.context().close();
     await observer.context().close();
   }, 60_000);

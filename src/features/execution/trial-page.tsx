@@ -52,6 +52,11 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
         </span>
       </div>
       {live.notice && <Problem error={{ message: live.notice }} />}
+      {ended && (
+        <Link href={`/trials/${trial.id}/analysis`} className="inline-block font-medium text-brand-600 hover:underline">
+          Open the analysis of this trial →
+        </Link>
+      )}
       <div className="grid gap-6 lg:grid-cols-[14rem_1fr_20rem]">
         <Card className="p-3">
           <StepList protocol={protocol} state={live.state} onJump={wizard ? (stepId) => void live.command({ kind: "jump", stepId }) : undefined} />

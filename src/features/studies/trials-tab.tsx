@@ -49,6 +49,11 @@ export function TrialsTab({ studyId, role }: { studyId: string; role: StudyRole 
                   <Link className="font-medium text-brand-600 hover:underline" href={`/trials/${t.id}`} aria-label={`${studyRoleMay(role, "trial.run") ? "Run" : "Watch"} trial of ${t.participantCode ?? "no participant"}`}>
                     {studyRoleMay(role, "trial.run") ? "Run" : "Watch"}
                   </Link>
+                  {(t.status === "completed" || t.status === "aborted") && (
+                    <Link className="ml-3 font-medium text-brand-600 hover:underline" href={`/trials/${t.id}/analysis`} aria-label={`Analysis of the trial of ${t.participantCode ?? "no participant"}`}>
+                      Analysis
+                    </Link>
+                  )}
                 </Td>
               </tr>
             ))}

@@ -3,7 +3,7 @@ import { and, asc, desc, eq, sql } from "drizzle-orm";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
 import { readSettings } from "@/core/studies/settings";
-import { experimentVersions, experiments, participants, studies, studyMembers, trialSamples, trials, user } from "../../db/schema";
+import { annotations, experimentVersions, experiments, participants, studies, studyMembers, trialSamples, trials, user } from "../../db/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "../../experiments/publish";
 import { eventsSince } from "../../trials/event-store";
@@ -92,6 +92,18 @@ export const trialsRouter = router({
   events: guarded("trial.read")
     .input(z.object({ trialId: id, afterSeq: z.number().int().min(0).default(0) }))
     .query(({ ctx, input }) => eventsSince(ctx.db, input.trialId, input.afterSeq)),
+
+  /** Moments observers and wizards marked, on the trial's clock. */
+  annotations: guarded("trial.read")
+    .input(z.object({ trialId: id }))
+    .query(({ ctx, input }) =>
+      ctx.db
+        .select({ id: annotations.id, relMs: annotations.relMs, label: annotations.label, note: annotations.note, authorName: user.name })
+        .from(annotations)
+        .leftJoin(user, eq(user.id, annotations.authorId))
+        .where(eq(annotations.trialId, input.trialId))
+        .orderBy(asc(annotations.relMs)),
+    ),
 
   /** Robot state logged during the trial, in time order. */
   samples: guarded("data.read")

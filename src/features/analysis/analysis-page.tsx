@@ -1,0 +1,115 @@
+"use client";
+// A trial after the fact: planned against executed, the event timeline with
+// deviations and marked moments, and the robot's logged joint angles.
+import { useQuery } from "@tanstack/react-query";
+import Link from "next/link";
+import { useMemo } from "react";
+import { fidelityReport } from "@/core/analysis/fidelity";
+import type { TrialEvent, TrialProtocol } from "@/core/trial";
+import { useTRPC } from "@/lib/trpc";
+import { Problem } from "@/ui/problem";
+import { Badge, Card, Spinner, type Tone } from "@/ui/surface";
+import { Table, Td, Th } from "@/ui/table";
+import { JointAngles } from "./joint-angles";
+
+const OUTCOME_TONE: Record<string, Tone> = { executed: "green", skipped: "amber", failed: "red", timed_out: "red", not_reached: "slate", running: "blue" };
+const seconds = (ms: number | null) => (ms === null ? "—" : `${(ms / 1000).toFixed(1)} s`);
+
+export function AnalysisPage({ trialId }: { trialId: string }) {
+  const trpc = useTRPC();
+  const trial = useQuery(trpc.trials.get.queryOptions({ trialId }));
+  const events = useQuery(trpc.trials.events.queryOptions({ trialId }));
+  const moments = useQuery(trpc.trials.annotations.queryOptions({ trialId }));
+  const samples = useQuery({ ...trpc.trials.samples.queryOptions({ trialId, topic: "/joint_states" }), enabled: trial.data?.myRole !== "wizard" });
+  const report = useMemo(
+    () => (trial.data && events.data ? fidelityReport(trial.data.protocol as TrialProtocol, events.data as unknown as TrialEvent[]) : null),
+    [trial.data, events.data],
+  );
+  if (trial.isPending || events.isPending) return <Spinner label="Loading the trial…" />;
+  if (trial.error || events.error) return <Problem error={trial.error ?? events.error} />;
+  const t = trial.data;
+  const r = report!;
+  return (
+    <div className="space-y-6">
+      <div className="flex flex-wrap items-center gap-3">
+        <Link href={`/studies/${t.studyId}`} className="text-sm text-slate-500 hover:text-slate-800">
+          ← Study
+        </Link>
+        <h1 className="text-xl font-semibold">
+          Analysis · {t.experimentName} · {t.participantCode ?? "no participant"}
+        </h1>
+        {t.isRehearsal && <Badge tone="amber">rehearsal</Badge>}
+      </div>
+      <div className="grid gap-4 sm:grid-cols-4">
+        <Figure label="Execution fidelity" value={`${r.executionFidelity} %`} />
+        <Figure label="Executed / planned" value={`${r.totals.executed} / ${r.totals.planned}`} />
+        <Figure label="Deviations" value={String(Object.values(r.deviations).reduce((a, b) => a + b, 0))} />
+        <Figure label="Branches by answer / by hand" value={`${r.branches.byLogic} / ${r.branches.byHand}`} />
+      </div>
+      <section aria-label="Planned versus executed">
+        <h2 className="mb-2 text-lg font-semibold">Planned versus executed</h2>
+        <Table>
+          <thead>
+            <tr>
+              <Th>Step</Th>
+              <Th>Action</Th>
+              <Th>Outcome</Th>
+              <Th>At</Th>
+              <Th>Took</Th>
+              <Th>To robot</Th>
+            </tr>
+          </thead>
+          <tbody>
+            {r.actions.map((a) => (
+              <tr key={a.actionId}>
+                <Td>{r.steps.find((s) => s.stepId === a.stepId)?.name}</Td>
+                <Td>{a.name}</Td>
+                <Td>
+                  <Badge tone={OUTCOME_TONE[a.outcome]}>{a.outcome.replace("_", " ")}</Badge> {a.outOfOrder && <Badge tone="amber">out of order</Badge>}
+                </Td>
+                <Td>{seconds(a.requestedMs)}</Td>
+                <Td>{seconds(a.durationMs)}</Td>
+                <Td>{a.dispatchLatencyMs === null ? "—" : `${a.dispatchLatencyMs.toFixed(0)} ms`}</Td>
+              </tr>
+            ))}
+          </tbody>
+        </Table>
+      </section>
+      <section aria-label="Timeline">
+        <h2 className="mb-2 text-lg font-semibold">Timeline</h2>
+        <Card className="divide-y divide-slate-100 text-sm">
+          {[...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })), ...(moments.data ?? []).map((m) => ({ at: m.relMs, kind: "moment" as const, m }))]
+            .sort((a, b) => a.at - b.at)
+            .map((item, i) => (
+              <div key={i} className="flex gap-3 px-4 py-1.5">
+                <span className="w-16 shrink-0 font-mono text-xs text-slate-500">{seconds(item.at)}</span>
+                {item.kind === "moment" ? (
+                  <span>
+                    <Badge tone="violet">marked</Badge> <strong>{item.m.label}</strong> {item.m.note} <span className="text-xs text-slate-400">by {item.m.authorName}</span>
+                  </span>
+                ) : (
+                  <span>
+                    {item.e.type}
+                    {"actionId" in item.e && item.e.actionId ? <span className="text-slate-500"> · {item.e.actionId.slice(0, 8)}</span> : null}
+                    {item.e.deviation && <Badge tone="amber">{item.e.deviation.replace("_", " ")}</Badge>}
+                  </span>
+                )}
+              </div>
+            ))}
+        </Card>
+      </section>
+      {samples.data && samples.data.length > 0 && <JointAngles samples={samples.data as Array<{ relMs: number; data: unknown }>} />}
+    </div>
+  );
+}
+
+function Figure({ label, value }: { label: string; value: string }) {
+  return (
+    <Card className="p-4">
+      <div className="text-xs text-slate-500">{label}</div>
+      <div className="mt-1 text-2xl font-semibold" data-testid={`figure-${label}`}>
+        {value}
+      </div>
+    </Card>
+  );
+}

@@ -1,0 +1,35 @@
+"use client";
+// The robot's joint angles over the trial, one line per joint.
+import { Card } from "@/ui/surface";
+
+const COLOURS = ["#2458b8", "#d97706", "#059669", "#b91c1c", "#7c3aed"];
+
+export function JointAngles({ samples }: { samples: Array<{ relMs: number; data: unknown }> }) {
+  const rows = samples.map((s) => ({ t: s.relMs, ...(s.data as { name: string[]; position: number[] }) }));
+  const names = rows[0]?.name ?? [];
+  const tMax = Math.max(1, ...rows.map((r) => r.t));
+  const values = rows.flatMap((r) => r.position);
+  const lo = Math.min(...values, -0.1);
+  const hi = Math.max(...values, 0.1);
+  const x = (t: number) => (t / tMax) * 1000;
+  const y = (v: number) => 180 - ((v - lo) / (hi - lo)) * 170;
+  return (
+    <section aria-label="Joint angles">
+      <h2 className="mb-2 text-lg font-semibold">Robot joint angles</h2>
+      <Card className="p-4">
+        <svg viewBox="0 0 1000 190" className="h-48 w-full" role="img" aria-label={`Joint angles of ${names.join(", ")} over ${(tMax / 1000).toFixed(0)} s`}>
+          {names.map((name, j) => (
+            <polyline key={name} fill="none" stroke={COLOURS[j % COLOURS.length]} strokeWidth="2" points={rows.map((r) => `${x(r.t).toFixed(1)},${y(r.position[j] ?? 0).toFixed(1)}`).join(" ")} />
+          ))}
+        </svg>
+        <div className="mt-2 flex flex-wrap gap-4 text-xs">
+          {names.map((name, j) => (
+            <span key={name} style={{ color: COLOURS[j % COLOURS.length] }}>
+              ● {name}
+            </span>
+          ))}
+        </div>
+      </Card>
+    </section>
+  );
+}
