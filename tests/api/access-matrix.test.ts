@@ -100,6 +100,7 @@ const MATRIX: Record<string, [Caller[], Input]> = {
   "trials.socketToken": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
   "trials.annotations": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
   "trials.events": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
+  "trials.export": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id, format: "json" })],
   "trials.samples": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
   "admin.users.list": [ADMIN, () => undefined],
   "admin.users.create": [ADMIN, () => ({ name: "New person", email: `new-${crypto.randomUUID().slice(0, 8)}@example.org`, password: "password-123", role: "observer" })],

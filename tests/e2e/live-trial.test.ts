@@ -93,6 +93,12 @@ describe.sequential("a live trial in two browsers", () => {
     await observer.getByRole("region", { name: "Timeline" }).getByText("Participant hesitated").waitFor();
     await observer.getByRole("img", { name: /Joint angles of/ }).waitFor();
     await screenshot(observer, "analysis");
+    const csv = await observer.evaluate(async (id) => (await fetch(`/api/trials/${id}/export?format=csv`)).text(), trialId);
+    expect(csv.trim().split("\r\n")).toHaveLength(events.length + 1);
+    const record = await observer.evaluate(async (id) => (await fetch(`/api/trials/${id}/export?format=json`)).json(), trialId);
+    expect(record).toMatchObject({ schemaVersion: 1, protocol: { experiment: { name: "Interactive Storyteller" } }, annotations: [{ label: "Participant hesitated" }] });
+    // Wizards run trials; reading the data is for researchers and observers.
+    expect(await wizard.evaluate(async (id) => (await fetch(`/api/trials/${id}/export?format=csv`)).status, trialId)).toBe(403);
     await wizard.context().close();
     await observer.context().close();
   }, 60_000);

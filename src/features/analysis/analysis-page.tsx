@@ -39,6 +39,14 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           Analysis · {t.experimentName} · {t.participantCode ?? "no participant"}
         </h1>
         {t.isRehearsal && <Badge tone="amber">rehearsal</Badge>}
+        <span className="ml-auto flex gap-3 text-sm">
+          <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=csv`}>
+            Download events (CSV)
+          </a>
+          <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=json`}>
+            Download trial record (JSON)
+          </a>
+        </span>
       </div>
       <div className="grid gap-4 sm:grid-cols-4">
         <Figure label="Execution fidelity" value={`${r.executionFidelity} %`} />

@@ -6,6 +6,7 @@ import { readSettings } from "@/core/studies/settings";
 import { annotations, experimentVersions, experiments, participants, studies, studyMembers, trialSamples, trials, user } from "../../db/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "../../experiments/publish";
+import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
 import { eventsSince } from "../../trials/event-store";
 import { signSocketToken } from "../../trials/socket-token";
 import { guarded, router } from "../trpc";
@@ -104,6 +105,31 @@ export const trialsRouter = router({
         .where(eq(annotations.trialId, input.trialId))
         .orderBy(asc(annotations.relMs)),
     ),
+
+  /** The trial as a file: its events as tidy CSV, or the full record (protocol embedded) as JSON. */
+  export: guarded("data.read")
+    .input(z.object({ trialId: id, format: z.enum(["csv", "json"], { error: "must be csv or json" }) }))
+    .query(async ({ ctx, input }) => {
+      const [trial] = await ctx.db.select().from(trials).where(eq(trials.id, input.trialId));
+      const events = await eventsSince(ctx.db, input.trialId);
+      const name = `trial-${input.trialId}`;
+      if (input.format === "csv") return { filename: `${name}-events.csv`, contentType: "text/csv; charset=utf-8", body: eventsCsv(input.trialId, events) };
+      const [version] = trial!.versionId ? await ctx.db.select().from(experimentVersions).where(eq(experimentVersions.id, trial!.versionId)) : [];
+      const marked = await ctx.db
+        .select({ relMs: annotations.relMs, label: annotations.label, note: annotations.note, authorName: user.name })
+        .from(annotations)
+        .leftJoin(user, eq(user.id, annotations.authorId))
+        .where(eq(annotations.trialId, input.trialId))
+        .orderBy(asc(annotations.relMs));
+      const protocol = (version?.snapshot ?? trial!.rehearsalSnapshot) as ProtocolSnapshot;
+      const record = trialRecordJson({
+        trial: { ...trial, rehearsalSnapshot: undefined, version: version ? { id: version.id, number: version.version, hash: version.hash, pluginId: version.pluginId, pluginVersion: version.pluginVersion } : null },
+        protocol,
+        events,
+        annotations: marked,
+      });
+      return { filename: `${name}.json`, contentType: "application/json", body: record };
+    }),
 
   /** Robot state logged during the trial, in time order. */
   samples: guarded("data.read")

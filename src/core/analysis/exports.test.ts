@@ -1,0 +1,60 @@
+import { describe, expect, it } from "vitest";
+import { eventsCsv, type ExportEvent } from "./exports";
+
+/** An independent RFC 4180 reader, to check the writer against. */
+function parseCsv(text: string): string[][] {
+  const rows: string[][] = [];
+  let row: string[] = [];
+  let field = "";
+  let quoted = false;
+  for (let i = 0; i < text.length; i++) {
+    const c = text[i]!;
+    if (quoted && c === '"' && text[i + 1] === '"') {
+      field += '"';
+      i++;
+    } else if (quoted && c === '"') {
+      quoted = false;
+    } else if (quoted) {
+      field += c;
+    } else if (c === '"') {
+      quoted = true;
+    } else if (c === ",") {
+      row.push(field);
+      field = "";
+    } else if (c === "\r" && text[i + 1] === "\n") {
+      row.push(field);
+      rows.push(row);
+      row = [];
+      field = "";
+      i++;
+    } else {
+      field += c;
+    }
+  }
+  return rows;
+}
+
+const events: ExportEvent[] = [
+  { seq: 1, type: "trial.started", relMs: 0, serverTime: "2026-01-01T10:00:00.000Z", actorId: "u1" },
+  {
+    seq: 2,
+    type: "action.requested",
+    relMs: 12.5,
+    serverTime: "2026-01-01T10:00:00.012Z",
+    actorId: "u1",
+    stepId: "s1",
+    actionId: "a1",
+    actionType: "say",
+    parameters: { text: 'She said "hi", then\r\nleft; {{x}} 🪨' },
+    deviation: "unscripted",
+  },
+];
+
+describe("the events CSV", () => {
+  it("parses back to the same events, quotes, commas, newlines and all", () => {
+    const [header, ...rows] = parseCsv(eventsCsv("t1", events));
+    expect(header).toEqual(["trial_id", "seq", "type", "step_id", "action_id", "action_type", "deviation", "rel_ms", "server_time", "actor_id", "payload"]);
+    expect(rows.map((r) => JSON.parse(r[10]!))).toEqual(events);
+    expect(rows[1]!.slice(0, 10)).toEqual(["t1", "2", "action.requested", "s1", "a1", "say", "unscripted", "12.5", "2026-01-01T10:00:00.012Z", "u1"]);
+  });
+});

@@ -1,0 +1,59 @@
+// Exports of a trial: tidy CSV of its events (one row per event) and the full
+// record as JSON. Pure string builders; the server only streams them.
+import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
+
+export const TRIAL_RECORD_SCHEMA_VERSION = 1;
+
+export interface ExportEvent {
+  seq: number;
+  type: string;
+  relMs: number | null;
+  serverTime: string | Date;
+  actorId: string | null;
+  stepId?: string | null;
+  actionId?: string;
+  actionType?: string;
+  deviation?: string;
+  [more: string]: unknown;
+}
+
+export const EVENT_COLUMNS = ["trial_id", "seq", "type", "step_id", "action_id", "action_type", "deviation", "rel_ms", "server_time", "actor_id", "payload"] as const;
+
+/** RFC 4180: quote a field when it holds a quote, comma, CR or LF; double inner quotes. */
+export function csvField(value: unknown): string {
+  const text = value === null || value === undefined ? "" : typeof value === "string" ? value : String(value);
+  return /[",\r\n]/.test(text) ? `"${text.replaceAll('"', '""')}"` : text;
+}
+
+export function eventsCsv(trialId: string, events: ExportEvent[]): string {
+  const rows = events.map((e) =>
+    [
+      trialId,
+      e.seq,
+      e.type,
+      e.stepId ?? "",
+      e.actionId ?? "",
+      e.actionType ?? "",
+      e.deviation ?? "",
+      e.relMs ?? "",
+      e.serverTime instanceof Date ? e.serverTime.toISOString() : e.serverTime,
+      e.actorId ?? "",
+      JSON.stringify(e),
+    ]
+      .map(csvField)
+      .join(","),
+  );
+  return [EVENT_COLUMNS.join(","), ...rows].join("\r\n") + "\r\n";
+}
+
+export interface TrialRecord {
+  schemaVersion: number;
+  trial: Record<string, unknown>;
+  protocol: ProtocolSnapshot;
+  events: ExportEvent[];
+  annotations: Array<{ relMs: number; label: string; note: string; authorName: string | null }>;
+}
+
+export function trialRecordJson(record: Omit<TrialRecord, "schemaVersion">): string {
+  return JSON.stringify({ schemaVersion: TRIAL_RECORD_SCHEMA_VERSION, ...record }, null, 2);
+}
