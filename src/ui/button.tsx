@@ -1,6 +1,7 @@
+"use client";
 import { Slot } from "@radix-ui/react-slot";
 import { cva, type VariantProps } from "class-variance-authority";
-import type { ButtonHTMLAttributes } from "react";
+import { useEffect, useState, type ButtonHTMLAttributes } from "react";
 import { cn } from "./cn";
 
 const button = cva(
@@ -23,7 +24,12 @@ export interface ButtonProps extends ButtonHTMLAttributes<HTMLButtonElement>, Va
   asChild?: boolean;
 }
 
-export function Button({ className, variant, size, asChild, type = "button", ...props }: ButtonProps) {
+export function Button({ className, variant, size, asChild, type = "button", disabled, ...props }: ButtonProps) {
   const Component = asChild ? Slot : "button";
-  return <Component type={asChild ? undefined : type} className={cn(button({ variant, size }), className)} {...props} />;
+  // A form sent before the page is interactive would go as a plain browser
+  // submit (a password in the address bar): submit buttons wait for React.
+  const [interactive, setInteractive] = useState(false);
+  useEffect(() => setInteractive(true), []);
+  const waiting = type === "submit" && !interactive;
+  return <Component type={asChild ? undefined : type} disabled={disabled || waiting} className={cn(button({ variant, size }), className)} {...props} />;
 }
