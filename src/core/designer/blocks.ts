@@ -1,0 +1,113 @@
+// The designer's library: the engine's control blocks, the abstract actions
+// every robot may map, and the chosen robot's own actions. Each block carries
+// the JSON Schema its properties form is generated from.
+import { ABSTRACT_ACTIONS, parseActionType, robotActionType, withDefaults, type ParameterSchema, type Plugin } from "../plugins";
+
+export type BlockCategory = "speech" | "movement" | "timing" | "wizard" | "logic" | "robot";
+
+export interface Block {
+  type: string;
+  name: string;
+  category: BlockCategory;
+  description: string;
+  parameterSchema: ParameterSchema;
+}
+
+const none: ParameterSchema = { type: "object", properties: {}, additionalProperties: false };
+
+/** Blocks the trial engine carries out itself; every robot has them. */
+export const CONTROL_BLOCKS: Block[] = [
+  {
+    type: "wizard_instruction",
+    name: "Wizard instruction",
+    category: "wizard",
+    description: "A note shown only to the wizard, e.g. “Hand the participant the card.”",
+    parameterSchema: {
+      type: "object",
+      properties: { text: { type: "string", title: "Instruction", minLength: 1, maxLength: 2000 } },
+      required: ["text"],
+      additionalProperties: false,
+    },
+  },
+  {
+    type: "record_answer",
+    name: "Record answer",
+    category: "logic",
+    description: "The wizard picks the participant's answer from named options.",
+    parameterSchema: {
+      type: "object",
+      properties: {
+        prompt: { type: "string", title: "Question for the wizard", maxLength: 500 },
+        options: {
+          type: "array",
+          title: "Answers",
+          minItems: 2,
+          maxItems: 12,
+          items: {
+            type: "object",
+            properties: { id: { type: "string", minLength: 1, maxLength: 100 }, label: { type: "string", title: "Answer", minLength: 1, maxLength: 200 } },
+            required: ["id", "label"],
+            additionalProperties: false,
+          },
+        },
+      },
+      required: ["options"],
+      additionalProperties: false,
+    },
+  },
+  {
+    type: "branch",
+    name: "Branch",
+    category: "logic",
+    description: "Right after “Record answer”: for each answer, the step the trial goes to.",
+    parameterSchema: {
+      type: "object",
+      properties: { targets: { type: "object", title: "Go to", additionalProperties: { type: "string" } } },
+      required: ["targets"],
+      additionalProperties: false,
+    },
+  },
+  { type: "end_trial", name: "End trial", category: "logic", description: "Ends the trial here.", parameterSchema: none },
+];
+
+const CATEGORY: Record<string, BlockCategory> = { say: "speech", pause: "timing" };
+
+/** The abstract actions, named the way the library shows them. */
+export const ABSTRACT_BLOCKS: Block[] = ABSTRACT_ACTIONS.map((a) => ({
+  type: a.id,
+  name: a.name,
+  category: CATEGORY[a.id] ?? "movement",
+  description: a.runtime ? "Carried out by the platform on any robot." : "Runs on any robot whose plugin maps it.",
+  parameterSchema: a.parameterSchema,
+}));
+
+function robotBlocks(plugin: Plugin): Block[] {
+  return plugin.actions.map((a) => ({
+    type: robotActionType(plugin.robotId, a.id),
+    name: a.name,
+    category: "robot",
+    description: a.description ?? `${plugin.name}: ${a.category}`,
+    parameterSchema: a.parameterSchema,
+  }));
+}
+
+/** Everything the library offers for an experiment on this robot. */
+export function library(plugin: Plugin | null): Block[] {
+  return [...CONTROL_BLOCKS, ...ABSTRACT_BLOCKS, ...(plugin ? robotBlocks(plugin) : [])];
+}
+
+/** The block behind an action's type, if the library knows it. */
+export function blockFor(type: string, plugin: Plugin | null): Block | undefined {
+  const parsed = parseActionType(type);
+  if (parsed.kind === "robot") return plugin && parsed.robotId === plugin.robotId ? robotBlocks(plugin).find((b) => b.type === type) : undefined;
+  return CONTROL_BLOCKS.find((b) => b.type === type) ?? ABSTRACT_BLOCKS.find((b) => b.type === type);
+}
+
+/** What a freshly dropped block starts with: its schema's defaults. */
+export function initialParameters(block: Block, newId: () => string): Record<string, unknown> {
+  if (block.type === "record_answer") {
+    return { prompt: "", options: [{ id: newId(), label: "Yes" }, { id: newId(), label: "No" }] };
+  }
+  if (block.type === "branch") return { targets: {} };
+  return withDefaults(block.parameterSchema, {});
+}

@@ -1,0 +1,119 @@
+import { describe, expect, it } from "vitest";
+import { commands, DesignerError, execute, redo, startHistory, undo, type Command } from "./model";
+import type { DesignDraft } from "./types";
+
+function ids() {
+  let n = 0;
+  return () => `id-${++n}`;
+}
+
+const say = (text: string) => ({ type: "say", name: "Say", parameters: { text } });
+
+function draft(): DesignDraft {
+  return {
+    name: "Storyteller",
+    description: "",
+    robotPluginId: "nao6-ros2",
+    steps: [
+      {
+        id: "intro",
+        name: "Introduction",
+        description: "",
+        actions: [
+          { id: "hello", type: "say", name: "Hello", parameters: { text: "Hello" }, parallelGroup: "g" },
+          { id: "wave", type: "wave", name: "Wave", parameters: {}, parallelGroup: "g" },
+          { id: "bow", type: "nao6-ros2.bow", name: "Bow", parameters: {}, parallelGroup: null },
+        ],
+      },
+      { id: "story", name: "Story", description: "", actions: [{ id: "tale", ...say("Once"), parallelGroup: null }] },
+      { id: "end", name: "End", description: "", actions: [] },
+    ],
+  };
+}
+
+const shape = (d: DesignDraft) => d.steps.map((s) => `${s.id}: ${s.actions.map((a) => a.id + (a.parallelGroup ? `[${a.parallelGroup}]` : "")).join(" ")}`);
+
+describe("designer commands", () => {
+  const cases: Array<[string, Command, string[] | ((d: DesignDraft) => unknown), unknown?]> = [
+    ["add step at the end", commands.addStep("Recall"), shape, ["intro: hello[g] wave[g] bow", "story: tale", "end: ", "id-1: "]],
+    ["add step at a position", commands.addStep("Recall", 1), (d) => d.steps.map((s) => s.name), ["Introduction", "Recall", "Story", "End"]],
+    ["edit step", commands.updateStep("story", { name: "The story", description: "Kai on Mars" }), (d) => [d.steps[1]!.name, d.steps[1]!.description], ["The story", "Kai on Mars"]],
+    ["delete step", commands.removeStep("story"), (d) => d.steps.map((s) => s.id), ["intro", "end"]],
+    ["move step up", commands.moveStep("end", 0), (d) => d.steps.map((s) => s.id), ["end", "intro", "story"]],
+    ["move step past the end stays last", commands.moveStep("intro", 99), (d) => d.steps.map((s) => s.id), ["story", "end", "intro"]],
+    ["add action into a step", commands.addAction("end", 0, { type: "end_trial", name: "End", parameters: {} }), shape, ["intro: hello[g] wave[g] bow", "story: tale", "end: id-1"]],
+    ["add action between two", commands.addAction("intro", 2, say("Hi")), shape, ["intro: hello[g] wave[g] id-1 bow", "story: tale", "end: "]],
+    ["delete action", commands.removeAction("bow"), shape, ["intro: hello[g] wave[g]", "story: tale", "end: "]],
+    ["move action within its step leaves its group", commands.moveAction("hello", "intro", 2), shape, ["intro: wave bow hello", "story: tale", "end: "]],
+    ["move action to another step", commands.moveAction("bow", "story", 0), shape, ["intro: hello[g] wave[g]", "story: bow tale", "end: "]],
+    ["move action into an empty step", commands.moveAction("tale", "end", 5), shape, ["intro: hello[g] wave[g] bow", "story: ", "end: tale"]],
+    ["rename action", commands.renameAction("bow", "Deep bow"), (d) => d.steps[0]!.actions[2]!.name, "Deep bow"],
+    ["set parameter", commands.setParameter("hello", "text", 'She said "hi" {{x}} $(rm -rf /)'), (d) => d.steps[0]!.actions[0]!.parameters, { text: 'She said "hi" {{x}} $(rm -rf /)' }],
+    ["clear parameter", commands.setParameter("hello", "text", undefined), (d) => d.steps[0]!.actions[0]!.parameters, {}],
+    ["run together with the action above joins its group", commands.setRunTogether("bow", true), shape, ["intro: hello[g] wave[g] bow[g]", "story: tale", "end: "]],
+    ["run on its own", commands.setRunTogether("wave", false), shape, ["intro: hello wave bow", "story: tale", "end: "]],
+    ["change robot", commands.setRobot("pepper"), (d) => d.robotPluginId, "pepper"],
+    ["rename experiment", commands.setDetails({ name: "Storyteller v2" }), (d) => d.name, "Storyteller v2"],
+  ];
+
+  it.each(cases)("%s, and undo restores the draft exactly", (_label, command, read, expected) => {
+    const before = startHistory(draft());
+    const after = execute(before, command, ids());
+    expect(typeof read === "function" ? read(after.present) : null).toEqual(expected);
+    expect(undo(after).present).toEqual(draft());
+    expect(redo(undo(after)).present).toEqual(after.present);
+  });
+
+  it("a new group starts when two lone actions run together, and leaving the middle splits the rest off", () => {
+    let h = startHistory(draft());
+    h = execute(h, commands.addAction("story", 1, { type: "look_down", name: "Look", parameters: {} }, "look"), ids());
+    h = execute(h, commands.setRunTogether("look", true), ids());
+    expect(shape(h.present)[1]).toBe("story: tale[id-1] look[id-1]");
+    h = execute(h, commands.addAction("intro", 2, say("and"), "and"), ids());
+    h = execute(h, commands.setRunTogether("and", true), ids());
+    h = execute(h, commands.setRunTogether("bow", true), ids());
+    expect(shape(h.present)[0]).toBe("intro: hello[g] wave[g] and[g] bow[g]");
+    h = execute(h, commands.setRunTogether("wave", false), () => "g2");
+    expect(shape(h.present)[0]).toBe("intro: hello wave and[g2] bow[g2]");
+  });
+
+  it("creates a step for an answer from the branch itself and points the answer at it", () => {
+    let h = startHistory(draft());
+    h = execute(h, commands.addAction("story", 1, { type: "branch", name: "Branch", parameters: { targets: {} } }, "branch"), ids());
+    h = execute(h, commands.addStepForAnswer("branch", "correct", "Response — correct"), () => "new-step");
+    expect(h.present.steps.at(-1)).toMatchObject({ id: "new-step", name: "Response — correct" });
+    expect(h.present.steps[1]!.actions[1]!.parameters).toEqual({ targets: { correct: "new-step" } });
+    h = execute(h, commands.setBranchTarget("branch", "correct", null), ids());
+    expect(h.present.steps[1]!.actions[1]!.parameters).toEqual({ targets: {} });
+    h = undo(undo(h));
+    expect(h.present.steps.map((s) => s.id)).toEqual(["intro", "story", "end"]);
+  });
+
+  it("refuses commands about blocks that are gone, in words, and leaves the draft untouched", () => {
+    const h = startHistory(draft());
+    const refusals: Command[] = [
+      commands.moveAction("nope", "intro", 0),
+      commands.moveAction("bow", "nope", 0),
+      commands.removeStep("nope"),
+      commands.setParameter("nope", "text", "x"),
+      commands.setBranchTarget("bow", "a", "nope"),
+      commands.setRunTogether("hello", true),
+    ];
+    for (const c of refusals) expect(() => execute(h, c, ids())).toThrow(DesignerError);
+    expect(h.present).toEqual(draft());
+  });
+
+  it("a command that changes nothing adds nothing to undo; a new command clears redo", () => {
+    let h = startHistory(draft());
+    h = execute(h, commands.moveStep("intro", 0), ids());
+    expect(h.past).toHaveLength(0);
+    h = execute(h, commands.removeStep("end"), ids());
+    h = undo(h);
+    expect(h.future.map((f) => f.label)).toEqual(["delete step"]);
+    h = execute(h, commands.renameAction("bow", "Bow"), ids());
+    expect(h.future).toHaveLength(0);
+    expect(h.past.map((p) => p.label)).toEqual(["rename action"]);
+    expect(undo(startHistory(draft())).present).toEqual(draft());
+    expect(redo(startHistory(draft())).present).toEqual(draft());
+  });
+});

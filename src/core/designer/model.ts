@@ -1,0 +1,249 @@
+// The designer as a headless model: named commands over a draft, with undo
+// and redo. The page only renders a draft and sends commands, so every edit a
+// researcher can make is tested here without a browser.
+import type { DesignAction, DesignDraft, DesignStep, NewId } from "./types";
+
+export class DesignerError extends Error {}
+
+export interface Command {
+  /** What the undo button says: "Undo move action". */
+  label: string;
+  apply(draft: DesignDraft, newId: NewId): DesignDraft;
+}
+
+export interface History {
+  present: DesignDraft;
+  past: Array<{ label: string; draft: DesignDraft }>;
+  future: Array<{ label: string; draft: DesignDraft }>;
+}
+
+const HISTORY_LIMIT = 200;
+
+export function startHistory(draft: DesignDraft): History {
+  return { present: draft, past: [], future: [] };
+}
+
+export function execute(history: History, command: Command, newId: NewId): History {
+  const next = command.apply(history.present, newId);
+  if (next === history.present) return history;
+  return { present: next, past: [...history.past, { label: command.label, draft: history.present }].slice(-HISTORY_LIMIT), future: [] };
+}
+
+export function undo(history: History): History {
+  const last = history.past.at(-1);
+  if (!last) return history;
+  return { present: last.draft, past: history.past.slice(0, -1), future: [{ label: last.label, draft: history.present }, ...history.future] };
+}
+
+export function redo(history: History): History {
+  const [first, ...rest] = history.future;
+  if (!first) return history;
+  return { present: first.draft, past: [...history.past, { label: first.label, draft: history.present }], future: rest };
+}
+
+// ---- reading a draft ----
+
+export function locateStep(draft: DesignDraft, stepId: string) {
+  const index = draft.steps.findIndex((s) => s.id === stepId);
+  if (index < 0) throw new DesignerError("That step is no longer in the experiment.");
+  return { step: draft.steps[index]!, index };
+}
+
+export function locateAction(draft: DesignDraft, actionId: string) {
+  for (const [stepIndex, step] of draft.steps.entries()) {
+    const index = step.actions.findIndex((a) => a.id === actionId);
+    if (index >= 0) return { step, stepIndex, action: step.actions[index]!, index };
+  }
+  throw new DesignerError("That action is no longer in the experiment.");
+}
+
+// ---- writing a draft (always a new object, never in place) ----
+
+function replaceStep(draft: DesignDraft, stepId: string, change: (s: DesignStep) => DesignStep): DesignDraft {
+  return { ...draft, steps: draft.steps.map((s) => (s.id === stepId ? withoutLoneGroups(change(s)) : s)) };
+}
+
+/** A group of one is no group: an action left alone by an edit runs on its own again. */
+function withoutLoneGroups(step: DesignStep): DesignStep {
+  const count = new Map<string, number>();
+  for (const a of step.actions) if (a.parallelGroup) count.set(a.parallelGroup, (count.get(a.parallelGroup) ?? 0) + 1);
+  if (![...count.values()].includes(1)) return step;
+  return { ...step, actions: step.actions.map((a) => (a.parallelGroup && count.get(a.parallelGroup) === 1 ? { ...a, parallelGroup: null } : a)) };
+}
+
+function replaceAction(draft: DesignDraft, actionId: string, change: (a: DesignAction) => DesignAction): DesignDraft {
+  const { step } = locateAction(draft, actionId);
+  return replaceStep(draft, step.id, (s) => ({ ...s, actions: s.actions.map((a) => (a.id === actionId ? change(a) : a)) }));
+}
+
+function clampIndex(index: number, length: number) {
+  return Math.max(0, Math.min(Math.trunc(index), length));
+}
+
+function move<T>(list: T[], from: number, to: number): T[] {
+  const out = [...list];
+  const [item] = out.splice(from, 1);
+  out.splice(clampIndex(to, out.length), 0, item!);
+  return out;
+}
+
+/** Leaving a group's neighbours behind would split it: an action that moves goes alone. */
+function leaveGroup(action: DesignAction): DesignAction {
+  return action.parallelGroup ? { ...action, parallelGroup: null } : action;
+}
+
+// ---- the commands ----
+
+export interface NewAction {
+  type: string;
+  name: string;
+  parameters: Record<string, unknown>;
+}
+
+export const commands = {
+  setDetails: (changes: Partial<Pick<DesignDraft, "name" | "description">>): Command => ({
+    label: "rename experiment",
+    apply: (d) => ({ ...d, ...changes }),
+  }),
+
+  setRobot: (robotPluginId: string): Command => ({
+    label: "change robot",
+    apply: (d) => (d.robotPluginId === robotPluginId ? d : { ...d, robotPluginId }),
+  }),
+
+  addStep: (name: string, index?: number, id?: string): Command => ({
+    label: "add step",
+    apply: (d, newId) => {
+      const steps = [...d.steps];
+      steps.splice(clampIndex(index ?? steps.length, steps.length), 0, { id: id ?? newId(), name, description: "", actions: [] });
+      return { ...d, steps };
+    },
+  }),
+
+  updateStep: (stepId: string, changes: Partial<Pick<DesignStep, "name" | "description">>): Command => ({
+    label: "edit step",
+    apply: (d) => (locateStep(d, stepId), replaceStep(d, stepId, (s) => ({ ...s, ...changes }))),
+  }),
+
+  removeStep: (stepId: string): Command => ({
+    label: "delete step",
+    apply: (d) => (locateStep(d, stepId), { ...d, steps: d.steps.filter((s) => s.id !== stepId) }),
+  }),
+
+  moveStep: (stepId: string, toIndex: number): Command => ({
+    label: "move step",
+    apply: (d) => {
+      const { index } = locateStep(d, stepId);
+      const to = clampIndex(toIndex, d.steps.length - 1);
+      return index === to ? d : { ...d, steps: move(d.steps, index, to) };
+    },
+  }),
+
+  addAction: (stepId: string, index: number, action: NewAction, id?: string): Command => ({
+    label: `add ${action.name}`,
+    apply: (d, newId) => {
+      locateStep(d, stepId);
+      return replaceStep(d, stepId, (s) => {
+        const actions = [...s.actions];
+        actions.splice(clampIndex(index, actions.length), 0, { id: id ?? newId(), ...action, parallelGroup: null });
+        return { ...s, actions };
+      });
+    },
+  }),
+
+  removeAction: (actionId: string): Command => ({
+    label: "delete action",
+    apply: (d) => {
+      const { step } = locateAction(d, actionId);
+      return replaceStep(d, step.id, (s) => ({ ...s, actions: s.actions.filter((a) => a.id !== actionId) }));
+    },
+  }),
+
+  /** Within its step or into another; `toIndex` counts the target step's actions without the moved one. */
+  moveAction: (actionId: string, toStepId: string, toIndex: number): Command => ({
+    label: "move action",
+    apply: (d) => {
+      const from = locateAction(d, actionId);
+      const target = locateStep(d, toStepId);
+      if (from.step.id === toStepId) {
+        const to = clampIndex(toIndex, from.step.actions.length - 1);
+        if (to === from.index) return d;
+        const actions = from.step.actions.map((a) => (a.id === actionId ? leaveGroup(a) : a));
+        return replaceStep(d, toStepId, (s) => ({ ...s, actions: move(actions, from.index, to) }));
+      }
+      const without = replaceStep(d, from.step.id, (s) => ({ ...s, actions: s.actions.filter((a) => a.id !== actionId) }));
+      return replaceStep(without, target.step.id, (s) => {
+        const actions = [...s.actions];
+        actions.splice(clampIndex(toIndex, actions.length), 0, leaveGroup(from.action));
+        return { ...s, actions };
+      });
+    },
+  }),
+
+  renameAction: (actionId: string, name: string): Command => ({
+    label: "rename action",
+    apply: (d) => replaceAction(d, actionId, (a) => ({ ...a, name })),
+  }),
+
+  /** `undefined` removes the parameter, so the block's default applies. */
+  setParameter: (actionId: string, parameter: string, value: unknown): Command => ({
+    label: `set ${parameter}`,
+    apply: (d) =>
+      replaceAction(d, actionId, (a) => {
+        const parameters = { ...a.parameters };
+        if (value === undefined) delete parameters[parameter];
+        else parameters[parameter] = value;
+        return { ...a, parameters };
+      }),
+  }),
+
+  /** Starts this action together with the one above it (joining that one's group), or on its own. */
+  setRunTogether: (actionId: string, together: boolean): Command => ({
+    label: together ? "run together" : "run on its own",
+    apply: (d, newId) => {
+      const { step, index, action } = locateAction(d, actionId);
+      if (!together) {
+        if (!action.parallelGroup) return d;
+        // Actions below it stay grouped among themselves, under a new name.
+        const below = step.actions.slice(index + 1);
+        const rest = below.findIndex((a) => a.parallelGroup !== action.parallelGroup);
+        const tail = rest < 0 ? below.length : rest;
+        const renamed = tail >= 2 ? newId() : null;
+        return replaceStep(d, step.id, (s) => ({
+          ...s,
+          actions: s.actions.map((a, i) => (i === index ? { ...a, parallelGroup: null } : i > index && i <= index + tail ? { ...a, parallelGroup: renamed } : a)),
+        }));
+      }
+      const above = step.actions[index - 1];
+      if (!above) throw new DesignerError("The first action of a step has nothing above it to run together with.");
+      const group = above.parallelGroup ?? newId();
+      return replaceStep(d, step.id, (s) => ({
+        ...s,
+        actions: s.actions.map((a, i) => (i === index - 1 || i === index || (a.parallelGroup && a.parallelGroup === action.parallelGroup) ? { ...a, parallelGroup: group } : a)),
+      }));
+    },
+  }),
+
+  setBranchTarget: (branchId: string, optionId: string, stepId: string | null): Command => ({
+    label: "set branch target",
+    apply: (d) => {
+      if (stepId) locateStep(d, stepId);
+      return replaceAction(d, branchId, (a) => {
+        const targets = { ...((a.parameters.targets as Record<string, string> | undefined) ?? {}) };
+        if (stepId) targets[optionId] = stepId;
+        else delete targets[optionId];
+        return { ...a, parameters: { ...a.parameters, targets } };
+      });
+    },
+  }),
+
+  /** "Create a new step for this answer", from the branch block itself: a new step at the end, targeted. */
+  addStepForAnswer: (branchId: string, optionId: string, name: string, id?: string): Command => ({
+    label: "add step for answer",
+    apply: (d, newId) => {
+      const stepId = id ?? newId();
+      const withStep = commands.addStep(name, undefined, stepId).apply(d, newId);
+      return commands.setBranchTarget(branchId, optionId, stepId).apply(withStep, newId);
+    },
+  }),
+};
