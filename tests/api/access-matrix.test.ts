@@ -33,6 +33,12 @@ async function baseData(f: Fixture) {
 // Destructive procedures get fresh rows for every call.
 const freshStep = async (f: Fixture, b: Base) => f.api("owner").experiments.createStep({ experimentId: b.experiment.id, name: "tmp" });
 const freshAction = async (f: Fixture, b: Base) => f.api("owner").experiments.createAction({ stepId: b.step.id, type: "wave" });
+/** Other rows add empty steps to the base experiment; publishing gets one of its own. */
+const publishable = async (f: Fixture, b: Base) => {
+  const e = await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotPluginId: "nao6-ros2" });
+  await f.api("owner").experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
+  return e;
+};
 const freshMember = async (f: Fixture, b: Base) => {
   const person = await newPerson(db, "member");
   await f.api("owner").members.add({ studyId: b.study.id, email: person.email, role: "observer" });
@@ -73,7 +79,10 @@ const MATRIX: Record<string, [Caller[], Input]> = {
   "experiments.updateAction": [EDITORS, (_f, b) => ({ actionId: b.action.id, name: "Greeting" })],
   "experiments.deleteAction": [EDITORS, async (f, b) => ({ actionId: (await freshAction(f, b)).id })],
   "experiments.moveAction": [EDITORS, (_f, b) => ({ actionId: b.action.id, toStepId: b.step.id, toPosition: 0 })],
-  "versions.publish": [EDITORS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "versions.publish": [EDITORS, async (f, b) => ({ experimentId: (await publishable(f, b)).id })],
+  "versions.diff": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id, from: 1, to: 1 })],
+  "experiments.exportFile": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "experiments.importFile": [EDITORS, async (f, b) => ({ studyId: b.study.id, text: (await f.api("owner").experiments.exportFile({ experimentId: b.experiment.id })).text })],
   "versions.list": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
   "versions.get": [MEMBERS, (_f, b) => ({ versionId: b.version.id })],
   "participants.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
@@ -81,6 +90,7 @@ const MATRIX: Record<string, [Caller[], Input]> = {
   "participants.update": [EDITORS, (_f, b) => ({ participantId: b.participant.id, notes: "seen" })],
   "participants.delete": [EDITORS, async (f, b) => ({ participantId: (await f.api("owner").participants.create({ studyId: b.study.id, code: `D-${crypto.randomUUID().slice(0, 6)}` })).id })],
   "plugins.list": [SIGNED_IN, () => undefined],
+  "plugins.get": [SIGNED_IN, () => ({ robotId: "nao6-ros2" })],
   "plugins.portability": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
   "plugins.repositories.list": [ADMIN, () => undefined],
   "plugins.repositories.add": [ADMIN, () => ({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` })],

@@ -132,3 +132,77 @@ describe("input errors a person can read", () => {
     expect(error.message).toMatch(/at least one owner/);
   });
 });
+
+describe("publishing, files and versions", () => {
+  const hostile = `She said "stop" {{text}} \\ $(rm -rf /) \`id\`; echo 'x' > /tmp/y\nnew line`;
+  const design = (extra: Array<{ type: string; parameters?: Record<string, unknown> }> = []) => [
+    { name: "Greeting", actions: [{ type: "say", parameters: { text: hostile } }, { type: "wave" }, ...extra] },
+  ];
+
+  it("refuses to publish a design with problems, says which, and publishes nothing", async () => {
+    const e = await newExperiment();
+    await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "Intro", actions: [{ type: "say", parameters: {} }] }, { name: "Empty", actions: [] }] });
+    const error = await failure(owner.versions.publish({ experimentId: e.id }));
+    expect(error.code).toBe("BAD_REQUEST");
+    expect(error.message).toMatch(/cannot be published until these 2 problems are fixed/);
+    expect(error.message).toMatch(/"Empty" has no actions/);
+    expect(await owner.versions.list({ experimentId: e.id })).toEqual([]);
+  });
+
+  it("exports a file that imports into another study as the same design, byte for byte, hostile text intact", async () => {
+    const e = await newExperiment();
+    await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: design() });
+    const exported = await owner.experiments.exportFile({ experimentId: e.id });
+    expect(exported.fileName).toBe("design.hristudio-experiment.json");
+    const other = await f.newStudy();
+    const imported = await owner.experiments.importFile({ studyId: other.id, text: exported.text });
+    expect(imported.studyId).toBe(other.id);
+    expect(imported.steps[0]!.actions[0]!.parameters).toEqual({ text: hostile });
+    expect((await owner.experiments.exportFile({ experimentId: imported.id })).text).toBe(exported.text);
+  });
+
+  it.each([
+    ["not JSON", "{ steps: [", /^This file cannot be imported\. \$: /],
+    ["a wrong format", JSON.stringify({ format: "something-else", formatVersion: 1, experiment: {}, steps: [] }), /\$\.format: /],
+    ["a branch to a step that is not in the file", null, /targets/],
+  ])("refuses an import of %s, saying where, and stores nothing", async (_name, text, message) => {
+    const study = await f.newStudy();
+    const file =
+      text ??
+      JSON.stringify({
+        format: "hristudio.experiment",
+        formatVersion: 1,
+        experiment: { name: "X", description: "", robot: "nao6-ros2" },
+        steps: [{ key: "step-1", name: "A", description: "", actions: [{ type: "branch", name: "", parameters: { targets: { yes: "@step-9" } } }] }],
+      });
+    const error = await failure(owner.experiments.importFile({ studyId: study.id, text: file }));
+    expect(error.code).toBe("BAD_REQUEST");
+    expect(error.message).toMatch(message);
+    expect(await owner.experiments.list({ studyId: study.id })).toEqual([]);
+  });
+
+  it("refuses an oversized file with its limit", async () => {
+    const study = await f.newStudy();
+    const error = await f.httpError("owner", "experiments.importFile", { studyId: study.id, text: "x".repeat(2_000_001) });
+    expect(error!.message).toBe("Please correct: text: the file must be smaller than 2 MB");
+  });
+
+  it("describes what changed between two published versions", async () => {
+    const e = await newExperiment();
+    const first = await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: design() });
+    await owner.versions.publish({ experimentId: e.id });
+    const [step] = first.steps;
+    await owner.experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: first.draftRevision,
+      steps: [{ id: step!.id, name: "Introduction", actions: [{ id: step!.actions[0]!.id, type: "say", parameters: { text: "Hello." } }] }],
+    });
+    await owner.versions.publish({ experimentId: e.id });
+    const lines = await owner.versions.diff({ experimentId: e.id, from: 1, to: 2 });
+    expect(lines.map((l) => l.kind)).toEqual(expect.arrayContaining(["changed", "removed"]));
+    expect(lines.map((l) => l.text).join("\n")).toMatch(/"Greeting" renamed to "Introduction"/);
+    expect(await owner.versions.diff({ experimentId: e.id, from: 2, to: 2 })).toEqual([]);
+    const missing = await failure(owner.versions.diff({ experimentId: e.id, from: 1, to: 7 }));
+    expect(missing.message).toBe("This experiment has no version 7.");
+  });
+});

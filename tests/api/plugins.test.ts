@@ -24,7 +24,8 @@ describe("robot plugins on the server", () => {
   it("records the exact plugin version in a published version", async () => {
     const study = await f.newStudy();
     const e = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-    await f.api("owner").experiments.createStep({ experimentId: e.id, name: "S" });
+    const step = await f.api("owner").experiments.createStep({ experimentId: e.id, name: "S" });
+    await f.api("owner").experiments.createAction({ stepId: step.id, type: "wave" });
     expect(await f.api("owner").versions.publish({ experimentId: e.id })).toMatchObject({ pluginId: "nao6-ros2", pluginVersion: "3.0.0" });
   });
 

@@ -14,7 +14,7 @@ interface Event {
   targetStepId?: string;
 }
 
-const TEXT = {
+export const STORYTELLER_TEXT = {
   intro: "Hello. I want to tell you about Kai, an astronaut who went on a mission to Mars.",
   story: "Kai had been on the Martian surface for six days. On the seventh morning, she walked to the edge of a crater and looked down. Among the grey dust she saw a small rock that was bright red. She picked it up and carried it back to the base.",
   question: "What color was the rock Kai found?",
@@ -41,27 +41,27 @@ export function scoreRun(protocol: ProtocolSnapshot, events: Event[]) {
   };
 
   const answer = events.find((e) => e.type === "answer.recorded");
-  const responseText = answer?.optionId === "correct" ? TEXT.correct : TEXT.incorrect;
+  const responseText = answer?.optionId === "correct" ? STORYTELLER_TEXT.correct : STORYTELLER_TEXT.incorrect;
   const branch = events.find((e) => e.type === "branch.resolved");
   const response = byText(responseText);
-  const wave = partnerOf(byText(TEXT.intro), ["wave"]);
-  const narrative = partnerOf(byText(TEXT.story), ["look_down", "pause"]);
+  const wave = partnerOf(byText(STORYTELLER_TEXT.intro), ["wave"]);
+  const narrative = partnerOf(byText(STORYTELLER_TEXT.story), ["look_down", "pause"]);
   const reaction = partnerOf(response, ["nod", "head_shake"]);
-  const pause = actions.find((a) => a.type === "pause" && a.stepId === byText(TEXT.question)?.stepId);
+  const pause = actions.find((a) => a.type === "pause" && a.stepId === byText(STORYTELLER_TEXT.question)?.stepId);
   const held = (first("action.completed", pause?.id)?.relMs ?? 0) - (first("action.dispatched", pause?.id)?.relMs ?? Infinity);
-  const asked = first("action.requested", byText(TEXT.question)?.id)?.relMs ?? -1;
+  const asked = first("action.requested", byText(STORYTELLER_TEXT.question)?.id)?.relMs ?? -1;
 
   const items: Array<[string, boolean]> = [
-    ["intro speech delivered as designed", delivered(TEXT.intro)],
-    ["story speech delivered as designed", delivered(TEXT.story)],
-    ["question delivered as designed", delivered(TEXT.question)],
+    ["intro speech delivered as designed", delivered(STORYTELLER_TEXT.intro)],
+    ["story speech delivered as designed", delivered(STORYTELLER_TEXT.story)],
+    ["question delivered as designed", delivered(STORYTELLER_TEXT.question)],
     ["the response matching the recorded answer", !!answer && branch?.targetStepId === response?.stepId && delivered(responseText)],
     ["wave as its own robot command", ranOnRobot(wave?.id)],
     ["narrative gesture as its own robot command", ranOnRobot(narrative?.id)],
     ["nod or head shake as its own robot command", ranOnRobot(reaction?.id) && (reaction?.type === "nod") === (answer?.optionId === "correct")],
     [
       "gestures started within 500 ms of their speech",
-      startedWithin(wave?.id, byText(TEXT.intro)?.id, 500) && startedWithin(narrative?.id, byText(TEXT.story)?.id, 500) && startedWithin(reaction?.id, response?.id, 500),
+      startedWithin(wave?.id, byText(STORYTELLER_TEXT.intro)?.id, 500) && startedWithin(narrative?.id, byText(STORYTELLER_TEXT.story)?.id, 500) && startedWithin(reaction?.id, response?.id, 500),
     ],
     ["the pause held for its designed length before the question", held >= Number(pause?.parameters.seconds ?? Infinity) * 1000 && asked >= (first("action.completed", pause?.id)?.relMs ?? Infinity)],
     [

@@ -103,6 +103,15 @@ describe("designer commands", () => {
     expect(h.present).toEqual(draft());
   });
 
+  it("typing into one field undoes as one step; another field starts a new one", () => {
+    let h = startHistory(draft());
+    for (const text of ["H", "He", "Hel"]) h = execute(h, commands.setParameter("hello", "text", text), ids());
+    h = execute(h, commands.renameAction("hello", "Greeting"), ids());
+    expect(h.past.map((p) => p.label)).toEqual(["set text", "rename action"]);
+    expect(undo(undo(h)).present).toEqual(draft());
+    expect(undo(h).present.steps[0]!.actions[0]!.parameters).toEqual({ text: "Hel" });
+  });
+
   it("a command that changes nothing adds nothing to undo; a new command clears redo", () => {
     let h = startHistory(draft());
     h = execute(h, commands.moveStep("intro", 0), ids());

@@ -8,12 +8,14 @@ export class DesignerError extends Error {}
 export interface Command {
   /** What the undo button says: "Undo move action". */
   label: string;
+  /** Typing is many commands; consecutive ones with the same key undo as one. */
+  mergeKey?: string;
   apply(draft: DesignDraft, newId: NewId): DesignDraft;
 }
 
 export interface History {
   present: DesignDraft;
-  past: Array<{ label: string; draft: DesignDraft }>;
+  past: Array<{ label: string; draft: DesignDraft; mergeKey?: string }>;
   future: Array<{ label: string; draft: DesignDraft }>;
 }
 
@@ -26,7 +28,10 @@ export function startHistory(draft: DesignDraft): History {
 export function execute(history: History, command: Command, newId: NewId): History {
   const next = command.apply(history.present, newId);
   if (next === history.present) return history;
-  return { present: next, past: [...history.past, { label: command.label, draft: history.present }].slice(-HISTORY_LIMIT), future: [] };
+  const last = history.past.at(-1);
+  if (command.mergeKey && last?.mergeKey === command.mergeKey && history.future.length === 0) return { ...history, present: next };
+  const entry = { label: command.label, draft: history.present, mergeKey: command.mergeKey };
+  return { present: next, past: [...history.past, entry].slice(-HISTORY_LIMIT), future: [] };
 }
 
 export function undo(history: History): History {
@@ -39,6 +44,21 @@ export function redo(history: History): History {
   const [first, ...rest] = history.future;
   if (!first) return history;
   return { present: first.draft, past: [...history.past, { label: first.label, draft: history.present }], future: rest };
+}
+
+/** The draft inside a stored design (which also carries positions, times, revision...). */
+export function draftFrom(design: DesignDraft): DesignDraft {
+  return {
+    name: design.name,
+    description: design.description,
+    robotPluginId: design.robotPluginId,
+    steps: design.steps.map((s) => ({
+      id: s.id,
+      name: s.name,
+      description: s.description,
+      actions: s.actions.map((a) => ({ id: a.id, type: a.type, name: a.name, parameters: a.parameters, parallelGroup: a.parallelGroup })),
+    })),
+  };
 }
 
 // ---- reading a draft ----
@@ -103,6 +123,7 @@ export interface NewAction {
 export const commands = {
   setDetails: (changes: Partial<Pick<DesignDraft, "name" | "description">>): Command => ({
     label: "rename experiment",
+    mergeKey: `details:${Object.keys(changes).join()}`,
     apply: (d) => ({ ...d, ...changes }),
   }),
 
@@ -122,6 +143,7 @@ export const commands = {
 
   updateStep: (stepId: string, changes: Partial<Pick<DesignStep, "name" | "description">>): Command => ({
     label: "edit step",
+    mergeKey: `step:${stepId}:${Object.keys(changes).join()}`,
     apply: (d) => (locateStep(d, stepId), replaceStep(d, stepId, (s) => ({ ...s, ...changes }))),
   }),
 
@@ -182,12 +204,14 @@ export const commands = {
 
   renameAction: (actionId: string, name: string): Command => ({
     label: "rename action",
+    mergeKey: `name:${actionId}`,
     apply: (d) => replaceAction(d, actionId, (a) => ({ ...a, name })),
   }),
 
   /** `undefined` removes the parameter, so the block's default applies. */
   setParameter: (actionId: string, parameter: string, value: unknown): Command => ({
     label: `set ${parameter}`,
+    mergeKey: `parameter:${actionId}:${parameter}`,
     apply: (d) =>
       replaceAction(d, actionId, (a) => {
         const parameters = { ...a.parameters };

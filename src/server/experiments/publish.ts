@@ -1,6 +1,8 @@
 // Publishing freezes the draft into an immutable, numbered, hashed version.
 import { TRPCError } from "@trpc/server";
 import { eq, sql } from "drizzle-orm";
+import { draftFrom } from "@/core/designer/model";
+import { validateDesign } from "@/core/designer/validate";
 import { hashCanonical } from "@/core/protocol/canonical";
 import { SNAPSHOT_SCHEMA_VERSION, type ProtocolSnapshot } from "@/core/protocol/snapshot";
 import type { Database } from "../db/client";
@@ -29,13 +31,18 @@ export async function publish(db: Database, experimentId: string, userId: string
     if (design.steps.length === 0) {
       throw new TRPCError({ code: "BAD_REQUEST", message: "This experiment has no steps yet: add at least one step before publishing." });
     }
+    // The exact plugin version the design was published against, so a trial can be traced to it.
+    const plugin = await findPlugin(db, design.robotPluginId);
+    const problems = validateDesign(draftFrom(design), plugin ?? null).filter((i) => i.severity === "error");
+    if (problems.length) {
+      const listed = problems.slice(0, 5).map((p) => p.message).join(" ");
+      throw new TRPCError({ code: "BAD_REQUEST", message: `This experiment cannot be published until ${problems.length === 1 ? "this problem is" : `these ${problems.length} problems are`} fixed: ${listed}` });
+    }
     const snapshot = snapshotOf(design);
     const [{ next }] = (await tx
       .select({ next: sql<number>`coalesce(max(${experimentVersions.version}), 0)::int + 1` })
       .from(experimentVersions)
       .where(eq(experimentVersions.experimentId, experimentId))) as [{ next: number }];
-    // The exact plugin version the design was published against, so a trial can be traced to it.
-    const plugin = await findPlugin(db, design.robotPluginId);
     const [version] = await tx
       .insert(experimentVersions)
       .values({ experimentId, version: next, snapshot, hash: hashCanonical(snapshot), pluginId: design.robotPluginId, pluginVersion: plugin?.version ?? null, publishedBy: userId })

@@ -20,10 +20,17 @@ export const stepFields = z.object({
   description: z.string().max(5000, "must be at most 5000 characters").default(""),
 });
 
+export const experimentDetails = z.object({
+  name: text("Name", 200),
+  description: z.string().max(5000, "must be at most 5000 characters"),
+  robotPluginId: text("Robot", 200),
+});
+
 /** A whole design, as the designer saves it: ids present are kept, absent ones are new. */
 export const designInput = z.object({
   experimentId: id,
   baseRevision: z.number().int().min(0),
+  details: experimentDetails.partial().optional(),
   steps: z
     .array(stepFields.extend({ id: id.optional(), actions: z.array(actionFields.extend({ id: id.optional() })).max(500) }))
     .max(500),

@@ -2,12 +2,12 @@ import { TRPCError } from "@trpc/server";
 import { asc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
 import { actions, experimentVersions, experiments, steps } from "../../db/schema";
+import { exportFile, importFile } from "../../experiments/exchange";
 import { bumpRevision, loadDesign, renumberActions, renumberSteps, saveDesign } from "../../experiments/design";
 import { guarded, router } from "../trpc";
-import { id, text } from "../validation";
-import { actionFields, designInput, stepFields } from "./design-input";
+import { id } from "../validation";
+import { actionFields, designInput, experimentDetails, stepFields } from "./design-input";
 
-const robotPluginId = text("Robot", 200);
 
 /** Positions 0..n-1 in the given order; the order must name every row exactly once. */
 function assertSameSet(given: string[], existing: string[], what: string) {
@@ -40,14 +40,14 @@ export const experimentsRouter = router({
     .query(({ ctx, input }) => loadDesign(ctx.db, input.experimentId)),
 
   create: guarded("experiment.edit")
-    .input(z.object({ studyId: id, name: text("Name", 200), description: z.string().max(5000).default(""), robotPluginId }))
+    .input(experimentDetails.extend({ studyId: id, description: experimentDetails.shape.description.default("") }))
     .mutation(async ({ ctx, input }) => {
       const [row] = await ctx.db.insert(experiments).values({ ...input, updatedBy: ctx.user.id }).returning();
       return row!;
     }),
 
   update: guarded("experiment.edit")
-    .input(z.object({ experimentId: id, name: text("Name", 200).optional(), description: z.string().max(5000).optional(), robotPluginId: robotPluginId.optional() }))
+    .input(experimentDetails.partial().extend({ experimentId: id }))
     .mutation(({ ctx, input }) =>
       ctx.db.transaction(async (tx) => {
         const { experimentId, ...changes } = input;
@@ -63,6 +63,15 @@ export const experimentsRouter = router({
       await ctx.db.delete(experiments).where(eq(experiments.id, input.experimentId));
       return { deleted: input.experimentId };
     }),
+
+  /** The experiment as a file another lab can import. */
+  exportFile: guarded("experiment.read")
+    .input(z.object({ experimentId: id }))
+    .query(({ ctx, input }) => exportFile(ctx.db, input.experimentId)),
+
+  importFile: guarded("experiment.edit")
+    .input(z.object({ studyId: id, text: z.string().max(2_000_000, "the file must be smaller than 2 MB") }))
+    .mutation(({ ctx, input }) => importFile(ctx.db, input.studyId, input.text, ctx.user.id)),
 
   /** The whole design in one transaction; refused if someone saved since `baseRevision`. */
   saveDesign: guarded("experiment.edit")

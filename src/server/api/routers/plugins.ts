@@ -32,6 +32,15 @@ export const pluginsRouter = router({
     };
   }),
 
+  /** One robot's whole plugin: the designer's library lists its actions with their forms. */
+  get: guarded("plugin.read")
+    .input(z.object({ robotId: z.string().max(200) }))
+    .query(async ({ ctx, input }) => {
+      const plugin = await findPlugin(ctx.db, input.robotId);
+      if (!plugin) throw new TRPCError({ code: "NOT_FOUND", message: `No robot plugin called "${input.robotId}" is installed.` });
+      return plugin;
+    }),
+
   /** Which actions of an experiment's draft a robot can run: before the trial, not during it. */
   portability: guarded("experiment.read")
     .input(z.object({ experimentId: id, robotId: z.string().max(200).optional() }))

@@ -1,4 +1,7 @@
+import { TRPCError } from "@trpc/server";
 import { desc, eq } from "drizzle-orm";
+import { diffProtocols } from "@/core/designer/diff";
+import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
 import { experimentVersions, user } from "../../db/schema";
 import { publish } from "../../experiments/publish";
@@ -34,5 +37,21 @@ export const versionsRouter = router({
     .query(async ({ ctx, input }) => {
       const [row] = await ctx.db.select().from(experimentVersions).where(eq(experimentVersions.id, input.versionId));
       return row!;
+    }),
+
+  /** What changed from one version to another, in sentences. */
+  diff: guarded("experiment.read")
+    .input(z.object({ experimentId: id, from: z.number().int().min(1), to: z.number().int().min(1) }))
+    .query(async ({ ctx, input }) => {
+      const rows = await ctx.db
+        .select({ version: experimentVersions.version, snapshot: experimentVersions.snapshot, experimentId: experimentVersions.experimentId })
+        .from(experimentVersions)
+        .where(eq(experimentVersions.experimentId, input.experimentId));
+      const pick = (n: number) => {
+        const row = rows.find((r) => r.version === n);
+        if (!row) throw new TRPCError({ code: "NOT_FOUND", message: `This experiment has no version ${n}.` });
+        return row.snapshot as ProtocolSnapshot;
+      };
+      return diffProtocols(pick(input.from), pick(input.to));
     }),
 });

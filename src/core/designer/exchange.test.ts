@@ -1,0 +1,272 @@
+import { describe, expect, it } from "vitest";
+import { STORYTELLER, STORYTELLER_STEPS } from "../../server/seed/storyteller";
+import { exportExperiment, importExperiment } from "./exchange";
+import type { DesignDraft } from "./types";
+
+function ids(prefix = "new") {
+  let n = 0;
+  return () => `${prefix}-${++n}`;
+}
+
+const storyteller: DesignDraft = {
+  ...STORYTELLER,
+  steps: STORYTELLER_STEPS.map((step) => ({
+    id: `db-${step.key}`,
+    name: step.name,
+    description: step.description,
+    actions: step.actions.map((a, i) => ({
+      id: `db-${step.key}-${i}`,
+      type: a.type,
+      name: a.name,
+      parallelGroup: a.parallelGroup ? `db-group-${a.parallelGroup}` : null,
+      parameters: a.type === "branch" ? { targets: Object.fromEntries(Object.entries(a.parameters.targets as object).map(([k, v]) => [k, `db-${String(v).slice(1)}`])) } : a.parameters,
+    })),
+  })),
+};
+
+// Everything a naive writer or reader could trip on.
+const awkward: DesignDraft = {
+  name: 'Quotes " and \\ backslashes {braces}',
+  description: "Line one\nLine two\ttabbed\r\n— ünïcødé 🤖 עברית \u0000 end",
+  robotPluginId: "nao6-ros2",
+  steps: [
+    {
+      id: "a",
+      name: "{{not a template}}",
+      description: "$(rm -rf /); `echo hi` && 'single'",
+      actions: [
+        { id: "a1", type: "say", name: "", parameters: { text: '{"json": "inside"} \\n not a newline' }, parallelGroup: "x" },
+        { id: "a2", type: "wave", name: "Wave", parameters: {}, parallelGroup: "x" },
+        { id: "a3", type: "nao6-ros2.custom", name: "Odd keys", parameters: { b: 1, "10": "ten", "2": "two", a: { z: [3, { y: 1, x: null }], "": true }, __proto__x: 0 }, parallelGroup: null },
+        { id: "a4", type: "record_answer", name: "Answer", parameters: { options: [{ id: "7", label: "Seven" }, { id: "constructor", label: "Built" }] }, parallelGroup: null },
+        { id: "a5", type: "branch", name: "Go", parameters: { targets: { "7": "c", constructor: "a" } }, parallelGroup: null },
+      ],
+    },
+    { id: "b", name: "Empty step", description: "", actions: [] },
+    {
+      id: "c",
+      name: "Groups out of order",
+      description: "",
+      actions: [
+        { id: "c1", type: "say", name: "Later group first", parameters: { text: "🙂" }, parallelGroup: "y" },
+        { id: "c2", type: "nod", name: "", parameters: {}, parallelGroup: "x" },
+        { id: "c3", type: "end_trial", name: "End", parameters: {}, parallelGroup: null },
+      ],
+    },
+  ],
+};
+
+/** A draft with its ids replaced by their order of appearance, to compare structure across an import. */
+function normalized(draft: DesignDraft) {
+  const names = new Map<string, string>();
+  const name = (id: string) => names.get(id) ?? names.set(id, `#${names.size + 1}`).get(id)!;
+  draft.steps.forEach((s) => name(s.id));
+  return JSON.parse(
+    JSON.stringify({
+      ...draft,
+      steps: draft.steps.map((s) => ({
+        ...s,
+        id: name(s.id),
+        actions: s.actions.map((a) => ({
+          ...a,
+          id: name(a.id),
+          parallelGroup: a.parallelGroup && name(a.parallelGroup),
+          parameters: a.type === "branch" ? { targets: Object.fromEntries(Object.entries(a.parameters.targets as object).map(([k, v]) => [k, name(v)])) } : a.parameters,
+        })),
+      })),
+    }),
+  );
+}
+
+function imported(text: string, newId = ids()): DesignDraft {
+  const result = importExperiment(text, newId);
+  if (!result.ok) throw new Error(JSON.stringify(result.problems));
+  return result.draft;
+}
+
+describe("exporting and importing an experiment", () => {
+  it.each([
+    ["the Interactive Storyteller", storyteller],
+    ["awkward text, odd keys, an empty step and groups", awkward],
+  ])("%s survives a round trip byte for byte", (_, draft) => {
+    const text = exportExperiment(draft);
+    const again = imported(text);
+    expect(exportExperiment(again)).toBe(text);
+    expect(normalized(again)).toEqual(normalized(draft));
+  });
+
+  it("writes a stable, readable file with no database ids in it", () => {
+    const draft: DesignDraft = {
+      name: "Tiny",
+      description: "",
+      robotPluginId: "nao6-ros2",
+      steps: [
+        {
+          id: "uuid-ask",
+          name: "Ask",
+          description: "",
+          actions: [
+            { id: "uuid-q", type: "record_answer", name: "Ready?", parameters: { prompt: "Ready?", options: [{ label: "Yes", id: "y" }] }, parallelGroup: null },
+            { id: "uuid-b", type: "branch", name: "Go", parameters: { targets: { y: "uuid-bye", n: "uuid-deleted" } }, parallelGroup: null },
+          ],
+        },
+        { id: "uuid-bye", name: "Bye", description: "", actions: [{ id: "uuid-w", type: "wave", name: "Wave", parameters: {}, parallelGroup: "uuid-g" }] },
+      ],
+    };
+    expect(exportExperiment(draft)).toBe(
+      [
+        "{",
+        '  "format": "hristudio.experiment",',
+        '  "formatVersion": 1,',
+        '  "experiment": {',
+        '    "name": "Tiny",',
+        '    "description": "",',
+        '    "robot": "nao6-ros2"',
+        "  },",
+        '  "steps": [',
+        "    {",
+        '      "key": "step-1",',
+        '      "name": "Ask",',
+        '      "description": "",',
+        '      "actions": [',
+        "        {",
+        '          "type": "record_answer",',
+        '          "name": "Ready?",',
+        '          "parameters": {',
+        '            "options": [',
+        "              {",
+        '                "id": "y",',
+        '                "label": "Yes"',
+        "              }",
+        "            ],",
+        '            "prompt": "Ready?"',
+        "          }",
+        "        },",
+        "        {",
+        '          "type": "branch",',
+        '          "name": "Go",',
+        '          "parameters": {',
+        '            "targets": {',
+        '              "y": "@step-2"',
+        "            }",
+        "          }",
+        "        }",
+        "      ]",
+        "    },",
+        "    {",
+        '      "key": "step-2",',
+        '      "name": "Bye",',
+        '      "description": "",',
+        '      "actions": [',
+        "        {",
+        '          "type": "wave",',
+        '          "name": "Wave",',
+        '          "parameters": {},',
+        '          "runTogether": "group-1"',
+        "        }",
+        "      ]",
+        "    }",
+        "  ]",
+        "}",
+        "",
+      ].join("\n"),
+    );
+  });
+
+  it("sorts parameters the same way whatever order they were written in, numbers-as-keys too", () => {
+    const text = exportExperiment(awkward);
+    expect(text.indexOf('"10": "ten"')).toBeLessThan(text.indexOf('"2": "two"'));
+    expect(text.indexOf('"2": "two"')).toBeLessThan(text.indexOf('"__proto__x"'));
+    expect(text).not.toMatch(/: "(?:[abc]\d?|x|y)"/); // no step, action or group id leaked
+  });
+
+  it("gives the imported experiment fresh ids, branch targets and groups included", () => {
+    const draft = imported(exportExperiment(awkward));
+    const [a, b, c] = draft.steps;
+    expect([a!.id, b!.id, c!.id]).toEqual(["new-1", "new-2", "new-3"]);
+    expect(a!.actions.map((x) => x.id)).toEqual(["new-4", "new-6", "new-7", "new-8", "new-9"]);
+    expect(a!.actions[0]!.parallelGroup).toBe("new-5");
+    expect(c!.actions.map((x) => x.parallelGroup)).toEqual(["new-11", "new-5", null]);
+    expect(a!.actions[4]!.parameters).toEqual({ targets: { "7": "new-3", constructor: "new-1" } });
+  });
+
+  it("keeps a parameter named __proto__ as a plain value", () => {
+    const text = exportExperiment(awkward).replace('"__proto__x"', '"__proto__"');
+    const draft = imported(text);
+    const params = draft.steps[0]!.actions[2]!.parameters;
+    expect(Object.hasOwn(params, "__proto__")).toBe(true);
+    expect(Object.getPrototypeOf(params)).toBe(Object.prototype);
+    expect(exportExperiment(draft)).toBe(text);
+  });
+});
+
+describe("importing a bad file", () => {
+  const valid = () => JSON.parse(exportExperiment(storyteller)) as Record<string, any>;
+  const edit = (change: (file: Record<string, any>) => void) => {
+    const file = valid();
+    change(file);
+    return JSON.stringify(file);
+  };
+  // Built as text: JSON.stringify itself gives up on nesting this deep.
+  const deep = (change: (file: Record<string, any>) => void) => edit(change).replace('"DEEP"', `${"[".repeat(5000)}${"]".repeat(5000)}`);
+  const rows: Array<[string, string, Array<[string, string]>]> = [
+    ["empty", "", [["$", "is not valid JSON: the file ends where a value was expected (line 1, column 1)"]]],
+    ["not JSON", '{\n  "format": "hristudio.experiment",\n  oops\n}', [["$", "(line 3, column 3)"]]],
+    ["null", "null", [["$", "must be an object"]]],
+    ["a list at the top", "[]", [["$", "must be an object"]]],
+    ["a plugin file", '{"robotId": "nao6-ros2", "actions": []}', [["$.format", "this is not an HRIStudio experiment file"]]],
+    ["a newer format", edit((f) => (f.formatVersion = 2)), [["$.formatVersion", "is 2: the file comes from a newer HRIStudio"]]],
+    ["a version as text", edit((f) => (f.formatVersion = "1")), [["$.formatVersion", "must be 1"]]],
+    ["no steps", edit((f) => delete f.steps), [["$.steps", "must be a list"]]],
+    ["no experiment", edit((f) => delete f.experiment), [["$.experiment", "must be an object"]]],
+    ["a blank robot", edit((f) => (f.experiment.robot = " ")), [["$.experiment.robot", "must be a non-empty string"]]],
+    ["a field the format does not have", edit((f) => (f.steps[1].colour = "red")), [["$.steps[1].colour", "is not part of an experiment file"]]],
+    ["a step that is not an object", edit((f) => (f.steps[0] = "intro")), [["$.steps[0]", "must be an object"]]],
+    ["a step without a name", edit((f) => delete f.steps[2].name), [["$.steps[2].name", "must be a non-empty string"]]],
+    ["two steps with one key", edit((f) => (f.steps[3].key = "step-1")), [["$.steps[3].key", '"step-1" is already the key of step 1'], ["$.steps[2].actions[3].parameters.targets.correct", '"@step-4" names no step']]],
+    ["actions that are not a list", edit((f) => (f.steps[0].actions = {})), [["$.steps[0].actions", "must be a list"]]],
+    ["an action type that is a number", edit((f) => (f.steps[2].actions[0].type = 7)), [["$.steps[2].actions[0].type", "must be a non-empty string"]]],
+    ["parameters that are null", edit((f) => (f.steps[0].actions[0].parameters = null)), [["$.steps[0].actions[0].parameters", "must be an object"]]],
+    ["parameters that are a list", edit((f) => (f.steps[0].actions[0].parameters = [])), [["$.steps[0].actions[0].parameters", "must be an object"]]],
+    ["an empty group name", edit((f) => (f.steps[0].actions[0].runTogether = "")), [["$.steps[0].actions[0].runTogether", "must be a non-empty string, or left out"]]],
+    ["a branch to a missing step", edit((f) => (f.steps[2].actions[3].parameters.targets.correct = "@step-9")), [["$.steps[2].actions[3].parameters.targets.correct", '"@step-9" names no step of this file']]],
+    ["a branch to a database id", edit((f) => (f.steps[2].actions[3].parameters.targets.correct = "4f1c")), [["$.steps[2].actions[3].parameters.targets.correct", 'must name a step by "@" and its key']]],
+    ["a target under an odd option id", edit((f) => (f.steps[2].actions[3].parameters.targets = { "my answer": 3 })), [['$.steps[2].actions[3].parameters.targets["my answer"]', 'must name a step by "@"']]],
+    ["too many steps", edit((f) => (f.steps = Array.from({ length: 501 }, (_, i) => ({ key: `step-${i + 1}`, name: "S", actions: [] })))), [["$.steps", "has 501 steps; an experiment can have at most 500"]]],
+    ["too many actions", edit((f) => (f.steps[1].actions = Array(501).fill({ type: "nod" }))), [["$.steps[1].actions", "has 501 actions; a step can have at most 500"]]],
+    ["a name too long", edit((f) => (f.experiment.name = "n".repeat(201))), [["$.experiment.name", "must be at most 200 characters (it has 201)"]]],
+    ["a text too long", edit((f) => (f.steps[0].actions[0].parameters.text = "t".repeat(5001))), [["$.steps[0].actions[0].parameters.text", "must be at most 5000 characters"]]],
+    ["parameters nested absurdly deep", deep((f) => (f.steps[0].actions[1].parameters = "DEEP")), [["$.steps[0].actions[1].parameters", "must be an object"]]],
+    ["a parameter nested absurdly deep", deep((f) => (f.steps[0].actions[1].parameters = { deep: "DEEP" })), [[`$.steps[0].actions[1].parameters.deep${"[0]".repeat(32)}`, "is nested more than 32 levels deep"]]],
+    ["a whole file nested absurdly deep", `${"[".repeat(1_000_000)}${"]".repeat(1_000_000)}`, [["$", "must be an object"]]],
+    ["a file over 2 MB", JSON.stringify({ format: "hristudio.experiment", padding: "é".repeat(1_100_000) }), [["$", "larger than 2 MB"]]],
+  ];
+
+  it.each(rows)("%s", (_, text, expected) => {
+    const result = importExperiment(text, ids());
+    expect(result.ok).toBe(false);
+    const problems = result.ok ? [] : result.problems;
+    expect(problems.map((p) => p.path)).toEqual(expected.map(([path]) => path));
+    problems.forEach((p, i) => expect(p.message).toContain(expected[i]![1]));
+  });
+
+  it("never throws, whatever part of a good file is cut off or replaced", () => {
+    const text = exportExperiment(awkward);
+    for (let end = 0; end < text.length; end += 7) expect(importExperiment(text.slice(0, end), ids()).ok).toBe(false);
+    const paths: Array<Array<string | number>> = [];
+    const visit = (value: unknown, path: Array<string | number>) => {
+      paths.push(path);
+      if (value && typeof value === "object") for (const [k, v] of Object.entries(value)) visit(v, [...path, Array.isArray(value) ? Number(k) : k]);
+    };
+    visit(JSON.parse(text), []);
+    for (const path of paths.slice(1)) {
+      for (const replacement of [null, 0, -1.5, true, "", "@step-1", [], {}, [null], { type: 1 }]) {
+        const file = JSON.parse(text);
+        const parent = path.slice(0, -1).reduce((o, k) => o[k], file);
+        parent[path.at(-1)!] = replacement;
+        const result = importExperiment(JSON.stringify(file), ids());
+        if (result.ok) expect(() => exportExperiment(result.draft)).not.toThrow();
+      }
+    }
+  });
+});

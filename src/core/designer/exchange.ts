@@ -1,0 +1,258 @@
+// The experiment file: how a protocol leaves one HRIStudio and enters another
+// (a lab sharing its study with another lab). Format version 1:
+//
+//   {
+//     "format": "hristudio.experiment",
+//     "formatVersion": 1,
+//     "experiment": { "name": "…", "description": "…", "robot": "nao6-ros2" },
+//     "steps": [
+//       {
+//         "key": "step-1",
+//         "name": "…",
+//         "description": "…",
+//         "actions": [
+//           { "type": "say", "name": "…", "parameters": { "text": "…" }, "runTogether": "group-1" }
+//         ]
+//       }
+//     ]
+//   }
+//
+// Database ids never leave: steps are keyed by position ("step-1"…), a branch
+// names its targets by key ("@step-3"), and run-together groups are renamed
+// "group-1", "group-2"… in order of first appearance ("runTogether" is left out
+// for an action that runs alone). The writer is deterministic (fixed key order,
+// parameters sorted, 2-space indent, final newline) so an exported file diffs
+// cleanly and exporting an imported export gives the same bytes.
+//
+// Import checks the file's shape, not its actions: the imported draft goes
+// through validateDesign like any other, against whatever robot is at hand.
+import { parseJsonText } from "../plugins/json-text";
+import type { DesignDraft, NewId } from "./types";
+
+const FORMAT = "hristudio.experiment";
+const FORMAT_VERSION = 1;
+const MAX_BYTES = 2 * 1024 * 1024;
+const MAX_STEPS = 500;
+const MAX_ACTIONS = 500;
+const MAX_NAME = 200;
+const MAX_TEXT = 5000;
+const MAX_DEPTH = 32;
+
+interface FileAction {
+  type: string;
+  name?: string;
+  parameters?: Record<string, unknown>;
+  runTogether?: string;
+}
+
+interface FileStep {
+  key: string;
+  name: string;
+  description?: string;
+  actions: FileAction[];
+}
+
+interface ExperimentFile {
+  format: typeof FORMAT;
+  formatVersion: typeof FORMAT_VERSION;
+  experiment: { name: string; description?: string; robot: string };
+  steps: FileStep[];
+}
+
+export interface ImportProblem {
+  /** Where in the file, as a JSON path: $.steps[2].actions[0].type */
+  path: string;
+  message: string;
+}
+
+export type ImportResult = { ok: true; draft: DesignDraft } | { ok: false; problems: ImportProblem[] };
+
+export function exportExperiment(draft: DesignDraft): string {
+  const keys = new Map(draft.steps.map((step, i) => [step.id, `@step-${i + 1}`]));
+  const groups = new Map<string, string>();
+  const group = (id: string) => groups.get(id) ?? groups.set(id, `group-${groups.size + 1}`).get(id)!;
+  const file: ExperimentFile = {
+    format: FORMAT,
+    formatVersion: FORMAT_VERSION,
+    experiment: { name: draft.name, description: draft.description, robot: draft.robotPluginId },
+    steps: draft.steps.map((step, i) => ({
+      key: `step-${i + 1}`,
+      name: step.name,
+      description: step.description,
+      actions: step.actions.map((action) => ({
+        type: action.type,
+        name: action.name,
+        // A target that is no step of the draft is already an error in the designer; an id would mean nothing elsewhere.
+        parameters: action.type === "branch" ? swapTargets(action.parameters, (id) => keys.get(id)) : action.parameters,
+        runTogether: action.parallelGroup ? group(action.parallelGroup) : undefined,
+      })),
+    })),
+  };
+  return `${write(file, "", false)}\n`;
+}
+
+/** Never throws: a file that cannot be imported comes back as its problems, each with its place in the file. */
+export function importExperiment(text: string, newId: NewId): ImportResult {
+  if (text.length > MAX_BYTES || new TextEncoder().encode(text).length > MAX_BYTES) {
+    return { ok: false, problems: [{ path: "$", message: "the file is larger than 2 MB; an experiment file is far smaller, so this is probably not one" }] };
+  }
+  const parsed = parseJsonText(text);
+  if (!parsed.ok) {
+    return { ok: false, problems: [{ path: "$", message: `is not valid JSON: ${parsed.reason} (line ${parsed.line}, column ${parsed.column})` }] };
+  }
+  const problems = check(parsed.value);
+  if (problems.length) return { ok: false, problems };
+  return { ok: true, draft: build(parsed.value as ExperimentFile, newId) };
+}
+
+function build(file: ExperimentFile, newId: NewId): DesignDraft {
+  const ids = new Map(file.steps.map((step) => [`@${step.key}`, newId()]));
+  const groups = new Map<string, string>();
+  const group = (name: string) => groups.get(name) ?? groups.set(name, newId()).get(name)!;
+  return {
+    name: file.experiment.name,
+    description: file.experiment.description ?? "",
+    robotPluginId: file.experiment.robot,
+    steps: file.steps.map((step) => ({
+      id: ids.get(`@${step.key}`)!,
+      name: step.name,
+      description: step.description ?? "",
+      actions: step.actions.map((action) => ({
+        id: newId(),
+        type: action.type,
+        name: action.name ?? "",
+        parameters: action.type === "branch" ? swapTargets(action.parameters ?? {}, (key) => ids.get(key)) : (action.parameters ?? {}),
+        parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
+      })),
+    })),
+  };
+}
+
+/** A branch's targets renamed one by one; a target with no new name is dropped. */
+function swapTargets(parameters: Record<string, unknown>, rename: (target: string) => string | undefined): Record<string, unknown> {
+  if (!isObject(parameters.targets)) return parameters;
+  const targets = Object.entries(parameters.targets).flatMap(([option, target]) => {
+    const renamed = typeof target === "string" ? rename(target) : undefined;
+    return renamed === undefined ? [] : [[option, renamed] as const];
+  });
+  // fromEntries and spread define properties, so a key like "__proto__" stays data.
+  return { ...parameters, targets: Object.fromEntries(targets) };
+}
+
+// By hand because JSON.stringify puts integer-like keys ("2", "10") first
+// whatever the insertion order, and parameters must come out sorted.
+function write(value: unknown, indent: string, sorted: boolean): string {
+  const inner = `${indent}  `;
+  if (Array.isArray(value)) {
+    if (value.length === 0) return "[]";
+    return `[\n${value.map((v) => inner + write(v, inner, sorted)).join(",\n")}\n${indent}]`;
+  }
+  if (isObject(value)) {
+    const keys = Object.keys(value).filter((k) => value[k] !== undefined);
+    if (sorted) keys.sort();
+    if (keys.length === 0) return "{}";
+    const lines = keys.map((k) => `${inner}${JSON.stringify(k)}: ${write(value[k], inner, sorted || k === "parameters")}`);
+    return `{\n${lines.join(",\n")}\n${indent}}`;
+  }
+  return JSON.stringify(value) ?? "null";
+}
+
+const ENVELOPE = ["format", "formatVersion", "experiment", "steps"];
+const EXPERIMENT = ["name", "description", "robot"];
+const STEP = ["key", "name", "description", "actions"];
+const ACTION = ["type", "name", "parameters", "runTogether"];
+
+function check(file: unknown): ImportProblem[] {
+  const problems: ImportProblem[] = [];
+  const flag = (path: string, message: string): false => {
+    problems.push({ path, message });
+    return false;
+  };
+  const object = (value: unknown, path: string, fields: string[]): value is Record<string, unknown> => {
+    if (!isObject(value)) return flag(path, "must be an object ({ … })");
+    for (const key of Object.keys(value)) if (!fields.includes(key)) flag(member(path, key), "is not part of an experiment file");
+    return true;
+  };
+  const list = (value: unknown, path: string, max: number, what: string, within: string): value is unknown[] => {
+    if (!Array.isArray(value)) return flag(path, "must be a list ([ … ])");
+    if (value.length > max) return flag(path, `has ${value.length} ${what}; ${within} can have at most ${max}`);
+    return true;
+  };
+  const text = (owner: Record<string, unknown>, key: string, path: string, max: number, need: "required" | "optional") => {
+    const value = owner[key];
+    if (value === undefined && need === "optional") return;
+    if (typeof value !== "string" || (need === "required" && !value.trim())) {
+      flag(member(path, key), need === "required" ? "must be a non-empty string" : "must be a string");
+      return;
+    }
+    if (value.length > max) flag(member(path, key), `must be at most ${max} characters (it has ${value.length})`);
+  };
+  const values = (value: unknown, path: string, depth: number): void => {
+    if (depth > MAX_DEPTH) {
+      flag(path, `is nested more than ${MAX_DEPTH} levels deep`);
+      return;
+    }
+    if (typeof value === "string" && value.length > MAX_TEXT) flag(path, `must be at most ${MAX_TEXT} characters (it has ${value.length})`);
+    if (Array.isArray(value)) value.forEach((v, i) => values(v, `${path}[${i}]`, depth + 1));
+    else if (isObject(value)) for (const [k, v] of Object.entries(value)) values(v, member(path, k), depth + 1);
+  };
+
+  if (!isObject(file)) return [{ path: "$", message: "must be an object ({ … }): an experiment file holds one experiment" }];
+  if (file.format !== FORMAT) return [{ path: "$.format", message: `must be "${FORMAT}": this is not an HRIStudio experiment file` }];
+  if (file.formatVersion !== FORMAT_VERSION) {
+    const newer = typeof file.formatVersion === "number" && file.formatVersion > FORMAT_VERSION;
+    const message = newer ? `is ${file.formatVersion}: the file comes from a newer HRIStudio, and this one reads version ${FORMAT_VERSION}` : `must be ${FORMAT_VERSION}`;
+    return [{ path: "$.formatVersion", message }];
+  }
+  object(file, "$", ENVELOPE);
+  if (object(file.experiment, "$.experiment", EXPERIMENT)) {
+    text(file.experiment, "name", "$.experiment", MAX_NAME, "required");
+    text(file.experiment, "description", "$.experiment", MAX_TEXT, "optional");
+    text(file.experiment, "robot", "$.experiment", MAX_NAME, "required");
+  }
+  if (!list(file.steps, "$.steps", MAX_STEPS, "steps", "an experiment")) return problems;
+  const keys = new Map<string, number>();
+  file.steps.forEach((step, s) => {
+    const path = `$.steps[${s}]`;
+    if (!object(step, path, STEP)) return;
+    text(step, "key", path, MAX_NAME, "required");
+    if (typeof step.key === "string" && step.key.trim()) {
+      if (keys.has(step.key)) flag(`${path}.key`, `"${step.key}" is already the key of step ${keys.get(step.key)}; each step needs its own`);
+      else keys.set(step.key, s + 1);
+    }
+    text(step, "name", path, MAX_NAME, "required");
+    text(step, "description", path, MAX_TEXT, "optional");
+  });
+  file.steps.forEach((step, s) => {
+    if (!isObject(step) || !list(step.actions, `$.steps[${s}].actions`, MAX_ACTIONS, "actions", "a step")) return;
+    step.actions.forEach((action, a) => {
+      const path = `$.steps[${s}].actions[${a}]`;
+      if (!object(action, path, ACTION)) return;
+      text(action, "type", path, MAX_NAME, "required");
+      text(action, "name", path, MAX_NAME, "optional");
+      text(action, "runTogether", path, MAX_NAME, "optional");
+      if (action.runTogether === "") flag(`${path}.runTogether`, "must be a non-empty string, or left out for an action that runs alone");
+      if (action.parameters === undefined) return;
+      if (!isObject(action.parameters)) flag(`${path}.parameters`, "must be an object ({ … })");
+      else {
+        values(action.parameters, `${path}.parameters`, 0);
+        if (action.type === "branch" && isObject(action.parameters.targets)) {
+          for (const [option, target] of Object.entries(action.parameters.targets)) {
+            const at = member(`${path}.parameters.targets`, option);
+            if (typeof target !== "string" || !target.startsWith("@")) flag(at, 'must name a step by "@" and its key, such as "@step-2"');
+            else if (!keys.has(target.slice(1))) flag(at, `"${target}" names no step of this file`);
+          }
+        }
+      }
+    });
+  });
+  return problems;
+}
+
+function isObject(value: unknown): value is Record<string, unknown> {
+  return typeof value === "object" && value !== null && !Array.isArray(value);
+}
+
+function member(path: string, key: string): string {
+  return /^[A-Za-z_$][\w$]*$/.test(key) ? `${path}.${key}` : `${path}[${JSON.stringify(key)}]`;
+}

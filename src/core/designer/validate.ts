@@ -1,0 +1,201 @@
+// Checking a draft before it is piloted or published: every problem a
+// researcher can fix in the designer, placed on its step and action and said
+// without the engine's vocabulary. The flow checks walk the draft the way the
+// trial engine does (../trial/decide.ts).
+import { parseActionType, portability, validateParameters, type Plugin } from "../plugins";
+import { blockFor, type Block } from "./blocks";
+import type { DesignAction, DesignDraft, DesignStep } from "./types";
+
+export interface DesignIssue {
+  severity: "error" | "warning";
+  code: string;
+  message: string;
+  stepId?: string;
+  actionId?: string;
+  parameter?: string;
+}
+
+export function hasErrors(issues: DesignIssue[]): boolean {
+  return issues.some((i) => i.severity === "error");
+}
+
+interface Placed {
+  issue: DesignIssue;
+  step: number;
+  /** -1 for the step itself, so its own issues come before its actions'. */
+  action: number;
+}
+
+interface Option {
+  id: string;
+  label: string;
+}
+
+/** Where each answer of a branch leads: a step index, or why it leads nowhere. */
+type Route = { option: Option; to: number } | { option: Option; to: null; why: "unset" | "gone" };
+
+export function validateDesign(draft: DesignDraft, plugin: Plugin | null): DesignIssue[] {
+  if (draft.steps.length === 0) {
+    return [{ severity: "error", code: "no_steps", message: "The experiment has no steps yet. Add a step to say what happens first." }];
+  }
+  const placed: Placed[] = [];
+  const indexById = new Map(draft.steps.map((s, i) => [s.id, i]));
+  const reported = new Set<string>();
+  draft.steps.forEach((step, s) => {
+    const add = (action: number, issue: Omit<DesignIssue, "stepId">) => placed.push({ step: s, action, issue: { ...issue, stepId: step.id } });
+    const where = stepLabel(step, s);
+    if (step.actions.length === 0) {
+      add(-1, { severity: "error", code: "empty_step", message: `${upper(where)} has no actions yet. Add what the robot or the wizard should do, or remove the step.` });
+    }
+    const end = step.actions.findIndex((a) => a.type === "end_trial");
+    step.actions.forEach((action, a) => {
+      const block = blockFor(action.type, plugin);
+      const name = actionLabel(action, block);
+      const at = (issue: Omit<DesignIssue, "stepId" | "actionId">) => add(a, { ...issue, actionId: action.id });
+      if (!block) at({ severity: "error", code: "unknown_block", message: unknownMessage(action, name, plugin) });
+      for (const problem of block ? validateParameters(block.parameterSchema, action.parameters) : []) {
+        reported.add(`${action.id}\n${problem.parameter}\n${problem.message}`);
+        at({ severity: "error", code: "parameter", parameter: problem.parameter, message: `${name}: ${titled(problem.message, problem.parameter, block)}.` });
+      }
+      if (end >= 0 && a > end) {
+        at({ severity: "warning", code: "after_end", message: `${name} comes after "End trial" in ${where}, so it never runs.` });
+      }
+      if (action.parallelGroup && ![step.actions[a - 1], step.actions[a + 1]].some((n) => n?.parallelGroup === action.parallelGroup)) {
+        at({ severity: "warning", code: "run_together_alone", message: `${name} is set to run together with other actions, but no action next to it is in its group, so it runs on its own.` });
+      }
+      if (action.type === "record_answer") {
+        const seen = new Set<string>();
+        for (const option of optionsOf(action)) {
+          const label = option.label.trim().toLowerCase();
+          if (seen.has(label)) {
+            at({ severity: "warning", code: "duplicate_option", parameter: "options", message: `${name} offers the answer "${option.label}" twice; the wizard cannot tell them apart.` });
+          }
+          seen.add(label);
+        }
+      }
+      if (action.type !== "branch") return;
+      const routes = routesOf(step, a, indexById);
+      if (!routes) {
+        at({ severity: "error", code: "branch_without_answer", message: `${name} must come right after a "Record answer" block in the same step: it chooses the next step from that answer.` });
+      }
+      for (const route of routes ?? []) {
+        if (route.to !== null) continue;
+        const message =
+          route.why === "unset"
+            ? `${name}: choose the step the answer "${route.option.label}" leads to.`
+            : `${name}: the answer "${route.option.label}" leads to a step that is no longer in the experiment. Choose another step.`;
+        at({ severity: "error", code: "branch_target_missing", parameter: "targets", message });
+      }
+    });
+  });
+  placed.push(...flowIssues(draft, indexById));
+  if (plugin) placed.push(...robotIssues(draft, plugin, reported));
+  return placed.sort((x, y) => x.step - y.step || x.action - y.action).map((p) => p.issue);
+}
+
+/** The answers of a branch's question with their targets, or null when no question comes right before it. */
+function routesOf(step: DesignStep, branchIndex: number, indexById: Map<string, number>): Route[] | null {
+  const question = step.actions[branchIndex - 1];
+  if (question?.type !== "record_answer") return null;
+  const targets = step.actions[branchIndex]!.parameters.targets;
+  const table = targets && typeof targets === "object" ? (targets as Record<string, unknown>) : {};
+  return optionsOf(question).map((option): Route => {
+    const target = Object.hasOwn(table, option.id) ? table[option.id] : undefined;
+    if (typeof target !== "string" || target === "") return { option, to: null, why: "unset" };
+    const to = indexById.get(target);
+    return to === undefined ? { option, to: null, why: "gone" } : { option, to };
+  });
+}
+
+function optionsOf(action: DesignAction): Option[] {
+  const options = action.parameters.options;
+  if (!Array.isArray(options)) return [];
+  return options.flatMap((o: unknown) => {
+    const { id, label } = (o && typeof o === "object" ? o : {}) as Record<string, unknown>;
+    return typeof id === "string" ? [{ id, label: typeof label === "string" ? label : id }] : [];
+  });
+}
+
+// A branch already reported as broken is read as going to the targets it has
+// and also falling through, so one mistake does not surface again as
+// unreachable steps or an endless trial.
+function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[] {
+  const count = draft.steps.length;
+  const flow = draft.steps.map((step, s) => {
+    const exits: number[] = [];
+    for (const [a, action] of step.actions.entries()) {
+      if (action.type === "end_trial") return { exits, ends: true };
+      const routes = action.type === "branch" ? routesOf(step, a, indexById) : null;
+      for (const route of routes ?? []) if (route.to !== null) exits.push(route.to);
+      if (routes?.length && routes.every((r) => r.to !== null)) return { exits, ends: false };
+    }
+    return s + 1 < count ? { exits: [...exits, s + 1], ends: false } : { exits, ends: true };
+  });
+  const reached = new Set([0]);
+  for (const s of reached) for (const next of flow[s]!.exits) reached.add(next);
+  const canEnd = flow.map((f) => f.ends);
+  for (let changed = true; changed; ) {
+    changed = false;
+    flow.forEach((f, s) => {
+      if (canEnd[s] || !f.exits.some((e) => canEnd[e])) return;
+      canEnd[s] = true;
+      changed = true;
+    });
+  }
+  const issues: Placed[] = [];
+  draft.steps.forEach((step, s) => {
+    if (reached.has(s)) return;
+    const message = `${upper(stepLabel(step, s))} can never be reached: the steps before it end the trial or branch elsewhere, and no branch leads to it.`;
+    issues.push({ step: s, action: -1, issue: { severity: "error", code: "unreachable_step", message, stepId: step.id } });
+  });
+  const stuck = draft.steps.findIndex((_, s) => reached.has(s) && !canEnd[s]);
+  if (stuck >= 0) {
+    const step = draft.steps[stuck]!;
+    const message = `The trial can never end from ${stepLabel(step, stuck)}: every way on loops back without reaching an "End trial" block or the last step.`;
+    issues.push({ step: stuck, action: -1, issue: { severity: "error", code: "no_end", message, stepId: step.id } });
+  }
+  return issues;
+}
+
+function robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>): Placed[] {
+  const position = new Map(draft.steps.flatMap((step, s) => step.actions.map((action, a) => [action.id, { step, s, action, a }] as const)));
+  return portability(draft, plugin).actions.flatMap((result): Placed[] => {
+    const { step, s, action, a } = position.get(result.actionId)!;
+    const block = blockFor(action.type, plugin);
+    if (!block) return []; // already an unknown block
+    const place = (issue: Omit<DesignIssue, "stepId" | "actionId">): Placed => ({ step: s, action: a, issue: { ...issue, stepId: step.id, actionId: action.id } });
+    const name = actionLabel(action, block);
+    if (result.status === "unsupported") {
+      return [place({ severity: "warning", code: "unsupported_on_robot", message: `${name} cannot run on ${plugin.name}: ${result.reason}` })];
+    }
+    return result.problems
+      .filter((p) => !reported.has(`${action.id}\n${p.parameter}\n${p.message}`))
+      .map((p) => place({ severity: "error", code: "parameter", parameter: p.parameter, message: `${name} on ${plugin.name}: ${titled(p.message, p.parameter, block)}.` }));
+  });
+}
+
+function unknownMessage(action: DesignAction, name: string, plugin: Plugin | null): string {
+  const parsed = parseActionType(action.type);
+  if (parsed.kind !== "robot") return `${name} is a kind of action the designer does not know ("${action.type}"). Replace it with a block from the library.`;
+  if (!plugin) return `${name} needs the plugin of the robot "${parsed.robotId}", which is not loaded.`;
+  if (plugin.robotId !== parsed.robotId) return `${name} is an action of the robot "${parsed.robotId}", not of ${plugin.name}.`;
+  return `${plugin.name} has no action "${parsed.actionId}", which ${name} needs. The plugin may have changed: replace it with a block from the library.`;
+}
+
+// Validation names a parameter by its key; the properties form shows its title.
+function titled(message: string, parameter: string, block: Block | undefined): string {
+  const title = block?.parameterSchema.properties[parameter]?.title;
+  return typeof title === "string" ? message.replace(`"${parameter}"`, `"${title}"`) : message;
+}
+
+function actionLabel(action: DesignAction, block: Block | undefined): string {
+  return `"${action.name.trim() || block?.name || action.type}"`;
+}
+
+function stepLabel(step: DesignStep, index: number): string {
+  return step.name.trim() ? `step "${step.name.trim()}"` : `step ${index + 1}`;
+}
+
+function upper(text: string): string {
+  return text.charAt(0).toUpperCase() + text.slice(1);
+}
