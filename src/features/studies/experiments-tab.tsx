@@ -1,5 +1,6 @@
 "use client";
 import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
+import Link from "next/link";
 import { useRouter } from "next/navigation";
 import { useState, type FormEvent } from "react";
 import { studyRoleMay, type StudyRole } from "@/core/access/policy";
@@ -23,7 +24,12 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
   const canRehearse = studyRoleMay(role, "trial.create");
   return (
     <div className="space-y-4">
-      {edit && <NewExperimentDialog studyId={studyId} onCreated={refresh} />}
+      {edit && (
+        <div className="flex gap-2">
+          <NewExperimentDialog studyId={studyId} onCreated={(id) => router.push(`/experiments/${id}`)} />
+          <ImportExperimentDialog studyId={studyId} onImported={(id) => router.push(`/experiments/${id}`)} />
+        </div>
+      )}
       {experiments.isPending && <Spinner />}
       <Problem error={experiments.error ?? publish.error ?? rehearse.error} />
       {experiments.data?.length === 0 && <EmptyState title="No experiments yet." />}
@@ -35,14 +41,16 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
               <Th>Robot</Th>
               <Th>Steps</Th>
               <Th>Published</Th>
-              {(edit || canRehearse) && <Th className="text-right">Actions</Th>}
+              <Th className="text-right">Actions</Th>
             </tr>
           </thead>
           <tbody>
             {experiments.data?.map((e) => (
               <tr key={e.id}>
                 <Td>
-                  <div className="font-medium">{e.name}</div>
+                  <Link href={`/experiments/${e.id}`} className="font-medium text-brand-700 hover:underline">
+                    {e.name}
+                  </Link>
                   <div className="text-xs text-slate-500">{e.description}</div>
                 </Td>
                 <Td>
@@ -50,20 +58,23 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
                 </Td>
                 <Td>{e.stepCount}</Td>
                 <Td>{e.latestVersion ? <Badge tone="green">version {e.latestVersion}</Badge> : <Badge>draft only</Badge>}</Td>
-                {(edit || canRehearse) && (
-                  <Td className="space-x-2 text-right">
-                    {canRehearse && (
-                      <Button variant="ghost" size="sm" aria-label={`Rehearse ${e.name}`} disabled={rehearse.isPending} onClick={() => rehearse.mutate({ experimentId: e.id })}>
-                        Rehearse
-                      </Button>
-                    )}
-                    {edit && (
-                      <Button variant="secondary" size="sm" aria-label={`Publish ${e.name}`} disabled={publish.isPending} onClick={() => publish.mutate({ experimentId: e.id })}>
-                        Publish
-                      </Button>
-                    )}
-                  </Td>
-                )}
+                <Td className="space-x-2 text-right">
+                  <Button variant="ghost" size="sm" asChild>
+                    <Link href={`/experiments/${e.id}`} aria-label={`${edit ? "Design" : "Open"} ${e.name}`}>
+                      {edit ? "Design" : "Open"}
+                    </Link>
+                  </Button>
+                  {canRehearse && (
+                    <Button variant="ghost" size="sm" aria-label={`Rehearse ${e.name}`} disabled={rehearse.isPending} onClick={() => rehearse.mutate({ experimentId: e.id })}>
+                      Rehearse
+                    </Button>
+                  )}
+                  {edit && (
+                    <Button variant="secondary" size="sm" aria-label={`Publish ${e.name}`} disabled={publish.isPending} onClick={() => publish.mutate({ experimentId: e.id })}>
+                      Publish
+                    </Button>
+                  )}
+                </Td>
               </tr>
             ))}
           </tbody>
@@ -73,7 +84,7 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
   );
 }
 
-function NewExperimentDialog({ studyId, onCreated }: { studyId: string; onCreated: () => void }) {
+function NewExperimentDialog({ studyId, onCreated }: { studyId: string; onCreated: (experimentId: string) => void }) {
   const trpc = useTRPC();
   const [open, setOpen] = useState(false);
   const [name, setName] = useState("");
@@ -82,10 +93,10 @@ function NewExperimentDialog({ studyId, onCreated }: { studyId: string; onCreate
   const robots = useQuery(trpc.plugins.list.queryOptions());
   const create = useMutation(
     trpc.experiments.create.mutationOptions({
-      onSuccess: () => {
+      onSuccess: (row) => {
         setOpen(false);
         setName("");
-        onCreated();
+        onCreated(row.id);
       },
     }),
   );
@@ -118,6 +129,31 @@ function NewExperimentDialog({ studyId, onCreated }: { studyId: string; onCreate
           </Button>
         </div>
       </form>
+    </Dialog>
+  );
+}
+
+/** An experiment file exported from this or another lab's HRIStudio. */
+function ImportExperimentDialog({ studyId, onImported }: { studyId: string; onImported: (experimentId: string) => void }) {
+  const trpc = useTRPC();
+  const [open, setOpen] = useState(false);
+  const [fileProblem, setFileProblem] = useState<string | null>(null);
+  const importFile = useMutation(trpc.experiments.importFile.mutationOptions({ onSuccess: (design) => onImported(design.id) }));
+  const choose = async (file: File | undefined) => {
+    setFileProblem(null);
+    if (!file) return;
+    if (file.size > 2_000_000) return setFileProblem(`“${file.name}” is ${(file.size / 1e6).toFixed(1)} MB; an experiment file must be smaller than 2 MB.`);
+    importFile.mutate({ studyId, text: await file.text() });
+  };
+  return (
+    <Dialog title="Import an experiment" description="From a file exported by HRIStudio (.hristudio-experiment.json)." open={open} onOpenChange={setOpen} trigger={<Button variant="secondary">Import file</Button>}>
+      <div className="space-y-3">
+        <Field label="Experiment file">
+          {(p) => <input {...p} type="file" accept=".json,application/json" className="text-sm" onChange={(e) => void choose(e.target.files?.[0])} />}
+        </Field>
+        {importFile.isPending && <Spinner label="Importing…" />}
+        <Problem error={fileProblem ? { message: fileProblem } : importFile.error} />
+      </div>
     </Dialog>
   );
 }

@@ -1,0 +1,205 @@
+"use client";
+// The properties of what is selected, always beside the timeline. Every form
+// comes from the block's JSON Schema; answers and branch targets have their
+// own editors, so nobody types JSON or an id.
+import { ArrowDown, ArrowUp, Plus, Trash2, X } from "lucide-react";
+import type { Block } from "@/core/designer/blocks";
+import { commands, locateAction, locateStep, type Command } from "@/core/designer/model";
+import type { DesignIssue } from "@/core/designer/validate";
+import type { DesignAction, DesignDraft } from "@/core/designer/types";
+import type { ParameterSchema } from "@/core/plugins";
+import { newId } from "@/lib/new-id";
+import { Button } from "@/ui/button";
+import { Field, Input, NativeSelect, Textarea } from "@/ui/field";
+import { SchemaForm } from "@/ui/schema-form";
+import type { Selection } from "./protocol-timeline";
+
+interface Props {
+  draft: DesignDraft;
+  selection: Selection;
+  issues: DesignIssue[];
+  blockFor: (type: string) => Block | undefined;
+  run: (c: Command) => void;
+  onMove: (delta: -1 | 1) => void;
+  onDelete: () => void;
+}
+
+export function PropertiesPanel(props: Props) {
+  const { draft, selection } = props;
+  const found = selection && findSelected(draft, selection);
+  return (
+    <section aria-label="Properties" className="rounded-lg border border-slate-200 bg-white p-4 shadow-sm">
+      {!found ? (
+        <p className="text-sm text-slate-500">Select a step or an action to see and edit its properties.</p>
+      ) : found.kind === "step" ? (
+        <StepProperties {...props} stepId={found.id} />
+      ) : (
+        <ActionProperties {...props} action={found.action} />
+      )}
+    </section>
+  );
+}
+
+function findSelected(draft: DesignDraft, selection: NonNullable<Selection>) {
+  try {
+    if (selection.kind === "step") return { kind: "step" as const, id: locateStep(draft, selection.id).step.id };
+    return { kind: "action" as const, action: locateAction(draft, selection.id).action };
+  } catch {
+    return null;
+  }
+}
+
+function Toolbar({ what, onMove, onDelete }: { what: string; onMove: Props["onMove"]; onDelete: Props["onDelete"] }) {
+  return (
+    <div className="flex gap-1 border-t border-slate-100 pt-3">
+      <Button variant="ghost" size="sm" onClick={() => onMove(-1)} title="Alt+↑" aria-label={`Move ${what} up`}>
+        <ArrowUp className="h-4 w-4" aria-hidden /> Up
+      </Button>
+      <Button variant="ghost" size="sm" onClick={() => onMove(1)} title="Alt+↓" aria-label={`Move ${what} down`}>
+        <ArrowDown className="h-4 w-4" aria-hidden /> Down
+      </Button>
+      <Button variant="ghost" size="sm" className="ml-auto text-red-700" onClick={onDelete} title="Delete" aria-label={`Delete ${what}`}>
+        <Trash2 className="h-4 w-4" aria-hidden /> Delete
+      </Button>
+    </div>
+  );
+}
+
+function StepProperties({ draft, stepId, issues, run, onMove, onDelete }: Props & { stepId: string }) {
+  const { step, index } = locateStep(draft, stepId);
+  const own = issues.filter((i) => i.stepId === stepId && !i.actionId);
+  return (
+    <div className="space-y-3">
+      <h2 className="font-semibold">Step {index + 1}</h2>
+      <Field label="Step name" required error={step.name.trim() ? undefined : "A step needs a name."}>
+        {(p) => <Input {...p} value={step.name} onChange={(e) => run(commands.updateStep(stepId, { name: e.target.value }))} />}
+      </Field>
+      <Field label="Description" hint="For the researchers and the wizard; the participant never sees it.">
+        {(p) => <Textarea {...p} value={step.description} onChange={(e) => run(commands.updateStep(stepId, { description: e.target.value }))} />}
+      </Field>
+      <IssueList issues={own} />
+      <Toolbar what="step" onMove={onMove} onDelete={onDelete} />
+    </div>
+  );
+}
+
+function ActionProperties({ draft, action, issues, blockFor, run, onMove, onDelete }: Props & { action: DesignAction }) {
+  const block = blockFor(action.type);
+  const { step, index } = locateAction(draft, action.id);
+  const own = issues.filter((i) => i.actionId === action.id);
+  const problems = own.filter((i) => i.parameter).map((i) => ({ parameter: i.parameter!, message: i.message }));
+  const setParameters = (values: Record<string, unknown>) => {
+    for (const [k, v] of Object.entries(values)) if (v !== action.parameters[k]) run(commands.setParameter(action.id, k, v));
+  };
+  return (
+    <div className="space-y-3">
+      <div>
+        <h2 className="font-semibold">{block?.name ?? action.type}</h2>
+        <p className="text-xs text-slate-500">{block?.description ?? "This block is not known for the chosen robot."}</p>
+      </div>
+      <Field label="Label" hint="A short name shown in the timeline and to the wizard.">
+        {(p) => <Input {...p} value={action.name} onChange={(e) => run(commands.renameAction(action.id, e.target.value))} />}
+      </Field>
+      {action.type === "record_answer" ? (
+        <AnswerEditor action={action} run={run} problems={problems} />
+      ) : action.type === "branch" ? (
+        <BranchEditor draft={draft} action={action} answer={step.actions[index - 1]} run={run} />
+      ) : block ? (
+        <SchemaForm schema={block.parameterSchema} value={action.parameters} onChange={setParameters} problems={problems} />
+      ) : null}
+      <label className="flex items-center gap-2 text-sm">
+        <input
+          type="checkbox"
+          className="h-4 w-4"
+          disabled={index === 0}
+          checked={Boolean(action.parallelGroup && step.actions[index - 1]?.parallelGroup === action.parallelGroup)}
+          onChange={(e) => run(commands.setRunTogether(action.id, e.target.checked))}
+        />
+        Starts together with the action above
+      </label>
+      <IssueList issues={own.filter((i) => !i.parameter)} />
+      <Toolbar what="action" onMove={onMove} onDelete={onDelete} />
+    </div>
+  );
+}
+
+type Option = { id: string; label: string };
+
+function AnswerEditor({ action, run, problems }: { action: DesignAction; run: Props["run"]; problems: Array<{ parameter: string; message: string }> }) {
+  const options = (Array.isArray(action.parameters.options) ? action.parameters.options : []) as Option[];
+  const setOptions = (next: Option[]) => run(commands.setParameter(action.id, "options", next));
+  const schema: ParameterSchema = { type: "object", properties: { prompt: { type: "string", title: "Question for the wizard" } } };
+  return (
+    <div className="space-y-3">
+      <SchemaForm schema={schema} value={action.parameters} onChange={(v) => run(commands.setParameter(action.id, "prompt", v.prompt))} problems={problems} />
+      <fieldset className="space-y-2">
+        <legend className="text-sm font-medium text-slate-700">Answers the wizard can record</legend>
+        {options.map((o, i) => (
+          <div key={o.id} className="flex gap-1">
+            <Input
+              aria-label={`Answer ${i + 1}`}
+              value={o.label}
+              onChange={(e) => setOptions(options.map((x) => (x.id === o.id ? { ...x, label: e.target.value } : x)))}
+            />
+            <Button variant="ghost" size="sm" aria-label={`Remove answer ${i + 1}`} onClick={() => setOptions(options.filter((x) => x.id !== o.id))}>
+              <X className="h-4 w-4" aria-hidden />
+            </Button>
+          </div>
+        ))}
+        {problems.filter((p) => p.parameter === "options").map((p) => (
+          <p key={p.message} className="text-sm text-red-600">{p.message}</p>
+        ))}
+        <Button variant="secondary" size="sm" onClick={() => setOptions([...options, { id: newId(), label: `Answer ${options.length + 1}` }])}>
+          <Plus className="h-4 w-4" aria-hidden /> Add an answer
+        </Button>
+      </fieldset>
+    </div>
+  );
+}
+
+function BranchEditor({ draft, action, answer, run }: { draft: DesignDraft; action: DesignAction; answer: DesignAction | undefined; run: Props["run"] }) {
+  if (answer?.type !== "record_answer") {
+    return <p className="text-sm text-amber-800">Place this branch right after a “Record answer” block: it goes where the recorded answer says.</p>;
+  }
+  const options = (Array.isArray(answer.parameters.options) ? answer.parameters.options : []) as Option[];
+  const targets = (action.parameters.targets ?? {}) as Record<string, string>;
+  return (
+    <fieldset className="space-y-3">
+      <legend className="text-sm font-medium text-slate-700">For each answer, go to</legend>
+      {options.map((o) => (
+        <div key={o.id} className="space-y-1">
+          <Field label={`If “${o.label}”`} required error={targets[o.id] ? undefined : "Choose a step for this answer."}>
+            {(p) => (
+              <NativeSelect {...p} value={targets[o.id] ?? ""} onChange={(e) => run(commands.setBranchTarget(action.id, o.id, e.target.value || null))}>
+                <option value="">Choose a step…</option>
+                {draft.steps.map((s, i) => (
+                  <option key={s.id} value={s.id}>
+                    Step {i + 1}: {s.name}
+                  </option>
+                ))}
+              </NativeSelect>
+            )}
+          </Field>
+          {!targets[o.id] && (
+            <Button variant="ghost" size="sm" onClick={() => run(commands.addStepForAnswer(action.id, o.id, `Response — ${o.label}`))}>
+              <Plus className="h-4 w-4" aria-hidden /> Create a new step for “{o.label}”
+            </Button>
+          )}
+        </div>
+      ))}
+    </fieldset>
+  );
+}
+
+export function IssueList({ issues }: { issues: DesignIssue[] }) {
+  if (!issues.length) return null;
+  return (
+    <ul className="space-y-1 text-sm">
+      {issues.map((i, n) => (
+        <li key={n} className={i.severity === "error" ? "text-red-700" : "text-amber-800"}>
+          {i.message}
+        </li>
+      ))}
+    </ul>
+  );
+}
