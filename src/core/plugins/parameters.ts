@@ -75,7 +75,9 @@ function describe(error: ErrorObject, name: string): string {
 export function withDefaults(schema: ParameterSchema, parameters: Record<string, unknown>): Record<string, unknown> {
   const out: Record<string, unknown> = { ...parameters };
   for (const [name, property] of Object.entries(schema.properties)) {
-    if (out[name] === undefined && property.default !== undefined) out[name] = structuredClone(property.default);
+    const fallback = property.default;
+    // Only objects need a copy; the designer validates every action on each edit.
+    if (out[name] === undefined && fallback !== undefined) out[name] = typeof fallback === "object" && fallback !== null ? structuredClone(fallback) : fallback;
   }
   return out;
 }

@@ -32,6 +32,10 @@ const collision: CollisionDetection = (args) => {
   return within.length ? within : rectIntersection(args);
 };
 
+// A click is not a drag: the pointer must travel a little first. A constant,
+// because new options would make dnd-kit re-render every block on each edit.
+const POINTER = { activationConstraint: { distance: 5 } };
+
 export function DesignerPage({ experimentId }: { experimentId: string }) {
   const trpc = useTRPC();
   const designer = useDesigner(experimentId);
@@ -134,7 +138,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
 
   useDesignerKeys({ undo: designer.undo, redo: designer.redo, move: moveSelected, remove: deleteSelected, enabled: canEdit });
 
-  const sensors = useSensors(useSensor(PointerSensor, { activationConstraint: { distance: 5 } }));
+  const sensors = useSensors(useSensor(PointerSensor, POINTER));
   const [dragging, setDragging] = useState<string | null>(null);
   const onDragStart = (e: DragStartEvent) => setDragging(dragLabel(String(e.active.id), draft, blockName));
   const onDragEnd = (e: DragEndEvent) => {
