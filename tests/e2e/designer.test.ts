@@ -175,6 +175,30 @@ describe.sequential("the experiment designer, in the browser", () => {
     await page.context().close();
   });
 
+  it("shows what another robot cannot do when the robot is switched, and lets an observer read but not edit", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await page.goto(designerUrl);
+    const checks = page.getByRole("region", { name: "Checks" });
+    await expect.poll(() => checks.textContent()).toContain("can run on NAO6");
+    await page.getByLabel("Robot", { exact: true }).selectOption({ label: "TurtleBot3 Burger" });
+    await expect.poll(() => checks.textContent()).toMatch(/\d+ of \d+ actions cannot run on TurtleBot3 Burger/);
+    await expect.poll(() => checks.textContent()).toMatch(/"Say" cannot run on TurtleBot3 Burger/i);
+    await screenshot(page, "designer-portability");
+    await page.getByRole("button", { name: "Undo" }).click();
+    await expect.poll(() => checks.textContent()).toContain("can run on NAO6");
+    await page.context().close();
+
+    const observer = await (await newContext(browser, app.url)).newPage();
+    await signInAs(observer, "observer@demo.hristudio", DEMO_PASSWORD);
+    await observer.goto(designerUrl);
+    await observer.getByText("You can read this experiment").waitFor();
+    await observer.getByRole("button", { name: /^Step 1:/ }).click();
+    await expect.poll(() => observer.getByRole("region", { name: "Properties" }).getByLabel("Step name").isDisabled()).toBe(true);
+    expect(await observer.getByRole("button", { name: "Publish" }).count()).toBe(0);
+    await observer.context().close();
+  });
+
   it("tells a researcher when someone else saved the same draft, and overwrites nothing silently", async () => {
     const pages = await Promise.all(
       ["researcher@demo.hristudio", "researcher@demo.hristudio"].map(async (email) => {

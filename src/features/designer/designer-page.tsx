@@ -39,7 +39,7 @@ const POINTER = { activationConstraint: { distance: 5 } };
 export function DesignerPage({ experimentId }: { experimentId: string }) {
   const trpc = useTRPC();
   const designer = useDesigner(experimentId);
-  const { draft, run } = designer;
+  const { draft } = designer;
   const study = useQuery({ ...trpc.studies.get.queryOptions({ studyId: designer.loaded.data?.studyId ?? "" }), enabled: Boolean(designer.loaded.data) });
   const robots = useQuery(trpc.plugins.list.queryOptions());
   const pluginQuery = useQuery({ ...trpc.plugins.get.queryOptions({ robotId: draft?.robotPluginId ?? "" }), enabled: Boolean(draft?.robotPluginId) });
@@ -69,6 +69,8 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const role = study.data?.myRole;
   const canEdit = role ? studyRoleMay(role, "experiment.edit") : false;
   const canPublish = role ? studyRoleMay(role, "version.publish") : false;
+  // Wizards and observers read the design; the server refuses their edits anyway.
+  const run = useMemo(() => (canEdit ? designer.run : () => {}), [canEdit, designer.run]);
 
   // Read by stable callbacks, so the library does not re-render on every edit.
   const latest = useRef({ draft, selection });
@@ -218,7 +220,9 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
             )}
           </main>
           <div className="min-h-0 space-y-3 overflow-y-auto">
-            <PropertiesPanel draft={draft} selection={selection} issues={issues} blockFor={blockFor} run={run} onMove={moveSelected} onDelete={deleteSelected} />
+            <fieldset disabled={!canEdit} className="min-w-0">
+              <PropertiesPanel draft={draft} selection={selection} issues={issues} blockFor={blockFor} run={run} onMove={moveSelected} onDelete={deleteSelected} />
+            </fieldset>
             <IssuesPanel draft={draft} issues={issues} robotName={robotName} onSelect={setSelection} />
             <VersionsPanel
               experimentId={experimentId}
