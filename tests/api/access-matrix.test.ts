@@ -33,6 +33,14 @@ async function baseData(f: Fixture) {
 // Destructive procedures get fresh rows for every call.
 const freshStep = async (f: Fixture, b: Base) => f.api("owner").experiments.createStep({ experimentId: b.experiment.id, name: "tmp" });
 const freshAction = async (f: Fixture, b: Base) => f.api("owner").experiments.createAction({ stepId: b.step.id, type: "wave" });
+/** A consenting participant, assigned, with a session planned for the study's wizard. */
+const freshSession = async (f: Fixture, b: Base) => {
+  const owner = f.api("owner");
+  const p = await owner.participants.create({ studyId: b.study.id, code: `S${crypto.randomUUID().slice(0, 8)}`, consentStatus: "given", consentDate: new Date() });
+  await owner.conditions.assign({ participantId: p.id, conditionId: b.condition.id });
+  return owner.sessions.schedule({ participantId: p.id, plannedAt: new Date(), wizardId: f.people.wizard.id });
+};
+
 /** Other rows add empty steps to the base experiment; publishing gets one of its own. */
 const publishable = async (f: Fixture, b: Base) => {
   const e = await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotPluginId: "nao6-ros2" });
@@ -103,13 +111,25 @@ const MATRIX: Record<string, [Caller[], Input]> = {
     EDITORS,
     async (f, b) => ({ participantId: (await f.api("owner").participants.create({ studyId: b.study.id, code: `A-${crypto.randomUUID().slice(0, 6)}` })).id, conditionId: b.condition.id }),
   ],
+  "sessions.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "sessions.schedule": [
+    EDITORS,
+    async (f, b) => {
+      const p = await f.api("owner").participants.create({ studyId: b.study.id, code: `Q${crypto.randomUUID().slice(0, 8)}` });
+      await f.api("owner").conditions.assign({ participantId: p.id, conditionId: b.condition.id });
+      return { participantId: p.id, plannedAt: new Date(), wizardId: f.people.wizard.id };
+    },
+  ],
+  "sessions.remove": [EDITORS, async (f, b) => ({ sessionId: (await freshSession(f, b)).id })],
+  "sessions.mine": [SIGNED_IN, () => undefined],
+  "sessions.start": [RUNNERS, async (f, b) => ({ sessionId: (await freshSession(f, b)).id })],
   "trials.create": [RUNNERS, (_f, b) => ({ versionId: b.version.id, participantId: b.participant.id })],
   "trials.rehearse": [RUNNERS, (_f, b) => ({ experimentId: b.experiment.id })],
   "trials.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
   "trials.get": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
   "trials.socketToken": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
   "trials.annotations": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
-  "trials.events": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
+  "trials.events": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
   "trials.export": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id, format: "json" })],
   "trials.samples": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
   "admin.users.list": [ADMIN, () => undefined],

@@ -91,7 +91,10 @@ describe.sequential("the experiment designer, in the browser", () => {
     await r.click(page.getByRole("button", { name: "New experiment" }));
     await r.fill(page.getByLabel("Name"), "Storyteller, built by hand");
     await r.click(page.getByRole("button", { name: "Create experiment" }));
-    await page.waitForURL(/\/experiments\//);
+    // Creating the experiment opens its designer; if not, say what the page showed instead.
+    await page.waitForURL(/\/experiments\//, { timeout: 45_000 }).catch(async (error: Error) => {
+      throw new Error(`${error.message}\nstill at ${page.url()}; the page says: ${(await page.getByRole("alert").allTextContents()).join(" | ")}`);
+    });
     designerUrl = page.url();
     await page.getByRole("region", { name: "Block library" }).waitFor();
     await screenshot(page, "designer-empty");

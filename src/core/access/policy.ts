@@ -47,6 +47,8 @@ export interface Subject {
   systemRole: SystemRole;
   /** The caller's role in the study the operation concerns; null if not a member. */
   studyRole: StudyRole | null;
+  /** What the study's blinds hide from this caller (none when absent). */
+  blinding?: { conditionsHidden: boolean; resultsHidden: boolean };
 }
 
 export function isStudyOperation(op: Operation): op is StudyOperation {
@@ -63,6 +65,13 @@ export function decide(subject: Subject, op: Operation): Decision {
   // Study data belongs to its members only, administrators included.
   if (subject.studyRole === null) {
     return { allow: false, hidden: true, reason: "Study not found." };
+  }
+  // Experiments, versions and conditions name the condition; a blinded wizard runs sessions without them.
+  if (op === "experiment.read" && subject.blinding?.conditionsHidden) {
+    return { allow: false, hidden: false, reason: "This study hides its conditions from wizards (blinding): run your sessions from “My sessions”." };
+  }
+  if (op === "data.read" && subject.blinding?.resultsHidden) {
+    return { allow: false, hidden: false, reason: "This study hides results until it is marked completed (blinding)." };
   }
   return studyRoleMay(subject.studyRole, op)
     ? { allow: true }

@@ -12,10 +12,33 @@ export const assignmentSettingsSchema = z.object({
   seed: z.string().min(1).max(200).optional(),
 });
 
+export const blindingSchema = z.object({
+  /** Wizards never see which condition (or experiment) a session runs. */
+  conditionsFromWizards: z.boolean().default(false),
+  /** Researchers and observers see no results until the study is marked completed. */
+  resultsUntilComplete: z.boolean().default(false),
+});
+
+export const DEMOGRAPHIC_TYPES = ["text", "number", "choice"] as const;
+
+/** A demographic question the study asks of each participant; answers are optional. */
+export const demographicFieldSchema = z.object({
+  key: z.string().regex(/^[a-z][a-z0-9_]{0,39}$/, "must be lower-case letters, digits and _ (starting with a letter)"),
+  label: z.string().trim().min(1, "must not be empty").max(100, "must be at most 100 characters"),
+  type: z.enum(DEMOGRAPHIC_TYPES, { error: `must be one of ${DEMOGRAPHIC_TYPES.join(", ")}` }),
+  options: z.array(z.string().trim().min(1).max(100)).max(30).default([]),
+});
+
+export type DemographicField = z.infer<typeof demographicFieldSchema>;
+
 export const studySettingsSchema = z.object({
   /** Trials need a participant whose consent is recorded as given. */
   requireConsent: z.boolean().default(true),
   assignment: assignmentSettingsSchema.default({ strategy: "fixed", perCondition: 1 }),
+  blinding: blindingSchema.default({ conditionsFromWizards: false, resultsUntilComplete: false }),
+  demographics: z.array(demographicFieldSchema).max(30, "at most 30 fields").default([]),
+  /** The consent document participants agree to now; each consent records the version it was. */
+  consentDocumentVersion: z.string().trim().min(1).max(50).default("1"),
 });
 
 export type StudySettings = z.infer<typeof studySettingsSchema>;

@@ -2,6 +2,8 @@
 import { TRPCError } from "@trpc/server";
 import { and, eq } from "drizzle-orm";
 import { isStudyOperation, type Operation, type StudyRole } from "@/core/access/policy";
+import { blindingFor, NOT_BLINDED, type Blinding } from "@/core/studies/blinding";
+import { readSettings } from "@/core/studies/settings";
 import type { Database } from "../db/client";
 import {
   actions,
@@ -10,7 +12,9 @@ import {
   experimentVersions,
   experiments,
   participants,
+  sessions,
   steps,
+  studies,
   studyMembers,
   trials,
 } from "../db/schema";
@@ -73,6 +77,10 @@ const LOOKUPS: Array<[string, Lookup]> = [
     async (db, id) => (await db.select({ s: conditions.studyId }).from(conditions).where(eq(conditions.id, id)))[0]?.s,
   ],
   [
+    "sessionId",
+    async (db, id) => (await db.select({ s: sessions.studyId }).from(sessions).where(eq(sessions.id, id)))[0]?.s,
+  ],
+  [
     "annotationId",
     async (db, id) =>
       (
@@ -104,10 +112,13 @@ export async function studyIdForInput(db: Database, input: unknown, op: Operatio
   throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: `Operation ${op} needs one of ${STUDY_KEYS.join(", ")}.` });
 }
 
-export async function studyRoleOf(db: Database, studyId: string, userId: string): Promise<StudyRole | null> {
-  const rows = await db
-    .select({ role: studyMembers.role })
-    .from(studyMembers)
-    .where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, userId)));
-  return rows[0]?.role ?? null;
+/** The caller's role in a study, and what that study's blinds hide from them. */
+export async function studyAccessOf(db: Database, studyId: string, userId: string): Promise<{ role: StudyRole | null; blinding: Blinding }> {
+  const [row] = await db
+    .select({ role: studyMembers.role, settings: studies.settings, status: studies.status })
+    .from(studies)
+    .leftJoin(studyMembers, and(eq(studyMembers.studyId, studies.id), eq(studyMembers.userId, userId)))
+    .where(eq(studies.id, studyId));
+  const role = row?.role ?? null;
+  return { role, blinding: row ? blindingFor(role, readSettings(row.settings), row.status) : NOT_BLINDED };
 }

@@ -5,6 +5,7 @@ import { experimentsRouter } from "./routers/experiments";
 import { membersRouter } from "./routers/members";
 import { participantsRouter } from "./routers/participants";
 import { pluginsRouter } from "./routers/plugins";
+import { sessionsRouter } from "./routers/sessions";
 import { studiesRouter } from "./routers/studies";
 import { trialsRouter } from "./routers/trials";
 import { versionsRouter } from "./routers/versions";
@@ -18,6 +19,7 @@ export const appRouter = router({
   versions: versionsRouter,
   participants: participantsRouter,
   conditions: conditionsRouter,
+  sessions: sessionsRouter,
   plugins: pluginsRouter,
   trials: trialsRouter,
   admin: adminRouter,

@@ -2,7 +2,8 @@ import { initTRPC, TRPCError } from "@trpc/server";
 import { ZodError } from "zod";
 import { decide, type Operation, type StudyRole, type SystemRole } from "@/core/access/policy";
 import type { Database } from "../db/client";
-import { studyIdForInput, studyRoleOf } from "../access/membership";
+import { studyAccessOf, studyIdForInput } from "../access/membership";
+import { NOT_BLINDED, type Blinding } from "@/core/studies/blinding";
 import { describeIssues, fieldIssues, type FieldIssue } from "./errors";
 
 export interface SessionUser {
@@ -50,6 +51,8 @@ export interface AuthorizedContext extends Context {
   user: SessionUser;
   studyId: string | null;
   studyRole: StudyRole | null;
+  /** What the study's blinds hide from the caller: procedures strip it from what they return. */
+  blinding: Blinding;
 }
 
 /**
@@ -65,12 +68,12 @@ export const procedure = t.procedure.use(async ({ ctx, meta, next, getRawInput }
   }
   if (!ctx.user) throw new TRPCError({ code: "UNAUTHORIZED", message: "Please sign in." });
   const studyId = await studyIdForInput(ctx.db, await getRawInput(), meta.op);
-  const studyRole = studyId ? await studyRoleOf(ctx.db, studyId, ctx.user.id) : null;
-  const decision = decide({ systemRole: ctx.user.role, studyRole }, meta.op);
+  const { role: studyRole, blinding } = studyId ? await studyAccessOf(ctx.db, studyId, ctx.user.id) : { role: null, blinding: NOT_BLINDED };
+  const decision = decide({ systemRole: ctx.user.role, studyRole, blinding }, meta.op);
   if (!decision.allow) {
     throw new TRPCError({ code: decision.hidden ? "NOT_FOUND" : "FORBIDDEN", message: decision.reason });
   }
-  return next({ ctx: { ...ctx, user: ctx.user, studyId, studyRole } });
+  return next({ ctx: { ...ctx, user: ctx.user, studyId, studyRole, blinding } });
 });
 
 /** A procedure guarded by `op`. */

@@ -2,7 +2,10 @@ import { TRPCError } from "@trpc/server";
 import { asc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
 import { audit } from "../../audit";
-import { participants, trials } from "../../db/schema";
+import { demographicProblems, type Answers } from "@/core/studies/demographics";
+import { readSettings } from "@/core/studies/settings";
+import type { Database } from "../../db/client";
+import { participants, studies, trials } from "../../db/schema";
 import { guarded, router } from "../trpc";
 import { id, text } from "../validation";
 
@@ -10,8 +13,22 @@ const CONSENT = ["pending", "given", "declined", "withdrawn"] as const;
 const fields = {
   consentStatus: z.enum(CONSENT, { error: `must be one of ${CONSENT.join(", ")}` }),
   consentDate: z.coerce.date({ error: "must be a date" }).nullable(),
+  consentVersion: z.string().trim().min(1).max(50).nullable(),
   notes: z.string().max(5000, "must be at most 5000 characters"),
+  demographics: z.record(z.string().max(40), z.union([z.string().max(1000), z.number()]), { error: "must be answers by field" }),
 };
+
+/** Demographic answers must fit the study's fields; consent given records the consent document's version. */
+async function checked<T extends { demographics?: Answers; consentStatus?: string; consentVersion?: string | null }>(db: Database, studyId: string, changes: T): Promise<T> {
+  const [study] = await db.select({ settings: studies.settings }).from(studies).where(eq(studies.id, studyId));
+  const settings = readSettings(study!.settings);
+  if (changes.demographics) {
+    const problems = demographicProblems(settings.demographics, changes.demographics);
+    if (problems.length) throw new TRPCError({ code: "BAD_REQUEST", message: `Please correct: demographics: ${problems.join("; ")}` });
+  }
+  if (changes.consentStatus === "given" && !changes.consentVersion) return { ...changes, consentVersion: settings.consentDocumentVersion };
+  return changes;
+}
 const code = text("Participant code", 50).regex(/^[\w.-]+$/, "Participant code may use letters, digits, '.', '_' and '-' only (no names)");
 
 function duplicateCode(error: unknown, value: string): never {
@@ -31,8 +48,11 @@ export const participantsRouter = router({
           code: participants.code,
           consentStatus: participants.consentStatus,
           consentDate: participants.consentDate,
+          consentVersion: participants.consentVersion,
           notes: participants.notes,
-          conditionId: participants.conditionId,
+          demographics: participants.demographics,
+          // A blinded wizard sees who comes, never in which condition.
+          conditionId: ctx.blinding.conditionsHidden ? sql<string | null>`null` : participants.conditionId,
           trialCount: sql<number>`(select count(*)::int from ${trials} where ${trials.participantId} = ${participants.id})`,
         })
         .from(participants)
@@ -41,20 +61,41 @@ export const participantsRouter = router({
     ),
 
   create: guarded("participant.manage")
-    .input(z.object({ studyId: id, code, consentStatus: fields.consentStatus.default("pending"), consentDate: fields.consentDate.default(null), notes: fields.notes.default("") }))
+    .input(
+      z.object({
+        studyId: id,
+        code,
+        consentStatus: fields.consentStatus.default("pending"),
+        consentDate: fields.consentDate.default(null),
+        consentVersion: fields.consentVersion.default(null),
+        notes: fields.notes.default(""),
+        demographics: fields.demographics.default({}),
+      }),
+    )
     .mutation(async ({ ctx, input }) => {
       const [row] = await ctx.db
         .insert(participants)
-        .values(input)
+        .values(await checked(ctx.db, input.studyId, input))
         .returning()
         .catch((e: unknown) => duplicateCode(e, input.code));
       return row!;
     }),
 
   update: guarded("participant.manage")
-    .input(z.object({ participantId: id, code: code.optional(), consentStatus: fields.consentStatus.optional(), consentDate: fields.consentDate.optional(), notes: fields.notes.optional() }))
+    .input(
+      z.object({
+        participantId: id,
+        code: code.optional(),
+        consentStatus: fields.consentStatus.optional(),
+        consentDate: fields.consentDate.optional(),
+        consentVersion: fields.consentVersion.optional(),
+        notes: fields.notes.optional(),
+        demographics: fields.demographics.optional(),
+      }),
+    )
     .mutation(async ({ ctx, input }) => {
-      const { participantId, ...changes } = input;
+      const { participantId, ...given } = input;
+      const changes = await checked(ctx.db, ctx.studyId!, given);
       return ctx.db.transaction(async (tx) => {
         const [row] = await tx
           .update(participants)
@@ -64,7 +105,13 @@ export const participantsRouter = router({
           .catch((e: unknown) => duplicateCode(e, input.code ?? ""));
         // Consent changes are part of the study's record: who changed it, and when.
         if (changes.consentStatus) {
-          await audit(tx, { actorId: ctx.user.id, studyId: row!.studyId, action: `participant.consent.${changes.consentStatus}`, target: participantId, details: { code: row!.code } });
+          await audit(tx, {
+            actorId: ctx.user.id,
+            studyId: row!.studyId,
+            action: `participant.consent.${changes.consentStatus}`,
+            target: participantId,
+            details: { code: row!.code, consentVersion: row!.consentVersion },
+          });
         }
         return row!;
       });

@@ -2,13 +2,24 @@ import { randomBytes } from "node:crypto";
 import { TRPCError } from "@trpc/server";
 import { and, desc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
-import { readSettings, studySettingsSchema } from "@/core/studies/settings";
+import { readSettings, studySettingsSchema, type StudySettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { experiments, participants, studies, studyMembers, trials } from "../../db/schema";
 import { guarded, router } from "../trpc";
 import { id, text } from "../validation";
 
 const STATUS = ["draft", "active", "completed", "archived"] as const;
+
+/** Which blinds this change lifts: turned off, or (results) ended by completing the study. */
+function liftedBlinds(before: StudySettings, after: StudySettings, statusBefore: string, statusAfter: string) {
+  const ended = (s: string) => s === "completed" || s === "archived";
+  const lifted: string[] = [];
+  if (before.blinding.conditionsFromWizards && !after.blinding.conditionsFromWizards) lifted.push("conditions");
+  const resultsBefore = before.blinding.resultsUntilComplete && !ended(statusBefore);
+  const resultsAfter = after.blinding.resultsUntilComplete && !ended(statusAfter);
+  if (resultsBefore && !resultsAfter) lifted.push("results");
+  return lifted;
+}
 
 export const studiesRouter = router({
   /** The studies I am a member of, with my role: nobody sees any other. */
@@ -64,8 +75,9 @@ export const studiesRouter = router({
     )
     .mutation(async ({ ctx, input }) => {
       const { studyId, settings, ...rest } = input;
-      const [current] = await ctx.db.select({ settings: studies.settings }).from(studies).where(eq(studies.id, studyId));
-      const merged = settings ? { ...readSettings(current!.settings), ...settings } : null;
+      const [current] = await ctx.db.select({ settings: studies.settings, status: studies.status }).from(studies).where(eq(studies.id, studyId));
+      const before = readSettings(current!.settings);
+      const merged = settings ? { ...before, ...settings } : null;
       // The seed is the server's, made once per choice of strategy, so assignments can be audited and reproduced.
       if (merged && settings?.assignment) merged.assignment = { ...settings.assignment, seed: settings.assignment.seed ?? randomBytes(12).toString("hex") };
       const changes = merged ? { ...rest, settings: merged } : rest;
@@ -76,6 +88,9 @@ export const studiesRouter = router({
           .where(eq(studies.id, studyId))
           .returning();
         await audit(tx, { actorId: ctx.user.id, studyId, action: "study.update", target: studyId, details: changes });
+        for (const lifted of liftedBlinds(before, merged ?? before, current!.status, study!.status)) {
+          await audit(tx, { actorId: ctx.user.id, studyId, action: `study.blind.lifted.${lifted}`, target: studyId });
+        }
         return study!;
       });
     }),

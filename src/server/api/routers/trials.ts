@@ -2,12 +2,14 @@ import { TRPCError } from "@trpc/server";
 import { and, asc, desc, eq, sql } from "drizzle-orm";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
-import { readSettings } from "@/core/studies/settings";
-import { annotations, experimentVersions, experiments, participants, studies, studyMembers, trialSamples, trials, user } from "../../db/schema";
+import { blindTrial } from "@/core/studies/blinding";
+import type { Database } from "../../db/client";
+import { annotations, experimentVersions, experiments, participants, studyMembers, trialSamples, trials, user } from "../../db/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "../../experiments/publish";
 import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
 import { eventsSince } from "../../trials/event-store";
+import { assertMayTakePart } from "../../studies/consent-gate";
 import { signSocketToken } from "../../trials/socket-token";
 import { guarded, router } from "../trpc";
 import { id } from "../validation";
@@ -27,7 +29,20 @@ const columns = {
   participantCode: participants.code,
   wizardId: trials.wizardId,
   wizardName: user.name,
+  participantWithdrawn: sql<boolean>`coalesce(${participants.consentStatus} = 'withdrawn', false)`,
 };
+
+/** A withdrawn participant's data leaves analysis and exports; the withdrawal itself stays in the audit log. */
+async function assertNotWithdrawn(db: Database, trialId: string) {
+  const [row] = await db
+    .select({ code: participants.code, status: participants.consentStatus })
+    .from(trials)
+    .innerJoin(participants, eq(participants.id, trials.participantId))
+    .where(eq(trials.id, trialId));
+  if (row?.status === "withdrawn") {
+    throw new TRPCError({ code: "PRECONDITION_FAILED", message: `${row.code} withdrew from the study: their data is excluded from analysis and exports.` });
+  }
+}
 
 export const trialsRouter = router({
   create: guarded("trial.create")
@@ -39,17 +54,7 @@ export const trialsRouter = router({
         .innerJoin(experiments, eq(experiments.id, experimentVersions.experimentId))
         .where(eq(experimentVersions.id, input.versionId));
       const studyId = version!.studyId;
-      if (input.participantId) {
-        const [p] = await ctx.db.select().from(participants).where(and(eq(participants.id, input.participantId), eq(participants.studyId, studyId)));
-        if (!p) throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: participantId: not a participant of this study" });
-        const [study] = await ctx.db.select({ settings: studies.settings }).from(studies).where(eq(studies.id, studyId));
-        if (readSettings(study!.settings).requireConsent && p.consentStatus !== "given") {
-          throw new TRPCError({
-            code: "PRECONDITION_FAILED",
-            message: `${p.code} has no recorded consent (${p.consentStatus}). Record their consent first, or turn off the consent check in the study's overview.`,
-          });
-        }
-      }
+      if (input.participantId) await assertMayTakePart(ctx.db, input.participantId, studyId);
       const wizardId = input.wizardId ?? ctx.user.id;
       const [m] = await ctx.db.select().from(studyMembers).where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
       if (!m || m.role === "observer") {
@@ -59,7 +64,7 @@ export const trialsRouter = router({
         .insert(trials)
         .values({ studyId, experimentId: version!.experimentId, versionId: input.versionId, participantId: input.participantId, wizardId, createdBy: ctx.user.id })
         .returning();
-      return row!;
+      return ctx.blinding.conditionsHidden ? blindTrial(row!) : row!;
     }),
 
   /** A rehearsal runs the current draft (no published version needed), marked as rehearsal everywhere. */
@@ -77,8 +82,8 @@ export const trialsRouter = router({
 
   list: guarded("trial.read")
     .input(z.object({ studyId: id }))
-    .query(({ ctx, input }) =>
-      ctx.db
+    .query(async ({ ctx, input }) => {
+      const rows = await ctx.db
         .select(columns)
         .from(trials)
         .innerJoin(experiments, eq(experiments.id, trials.experimentId))
@@ -86,13 +91,17 @@ export const trialsRouter = router({
         .leftJoin(participants, eq(participants.id, trials.participantId))
         .leftJoin(user, eq(user.id, trials.wizardId))
         .where(eq(trials.studyId, input.studyId))
-        .orderBy(desc(trials.createdAt)),
-    ),
+        .orderBy(desc(trials.createdAt));
+      return ctx.blinding.conditionsHidden ? rows.map(blindTrial) : rows;
+    }),
 
   /** The trial's event log in order: what reports, exports and replays fold. */
-  events: guarded("trial.read")
+  events: guarded("data.read")
     .input(z.object({ trialId: id, afterSeq: z.number().int().min(0).default(0) }))
-    .query(({ ctx, input }) => eventsSince(ctx.db, input.trialId, input.afterSeq)),
+    .query(async ({ ctx, input }) => {
+      await assertNotWithdrawn(ctx.db, input.trialId);
+      return eventsSince(ctx.db, input.trialId, input.afterSeq);
+    }),
 
   /** Moments observers and wizards marked, on the trial's clock. */
   annotations: guarded("trial.read")
@@ -110,6 +119,7 @@ export const trialsRouter = router({
   export: guarded("data.read")
     .input(z.object({ trialId: id, format: z.enum(["csv", "json"], { error: "must be csv or json" }) }))
     .query(async ({ ctx, input }) => {
+      await assertNotWithdrawn(ctx.db, input.trialId);
       const [trial] = await ctx.db.select().from(trials).where(eq(trials.id, input.trialId));
       const events = await eventsSince(ctx.db, input.trialId);
       const name = `trial-${input.trialId}`;
@@ -134,14 +144,15 @@ export const trialsRouter = router({
   /** Robot state logged during the trial, in time order. */
   samples: guarded("data.read")
     .input(z.object({ trialId: id, topic: z.string().max(200).optional(), limit: z.number().int().min(1).max(500_000).default(200_000) }))
-    .query(({ ctx, input }) =>
-      ctx.db
+    .query(async ({ ctx, input }) => {
+      await assertNotWithdrawn(ctx.db, input.trialId);
+      return ctx.db
         .select({ topic: trialSamples.topic, relMs: trialSamples.relMs, data: trialSamples.data })
         .from(trialSamples)
         .where(and(eq(trialSamples.trialId, input.trialId), input.topic ? eq(trialSamples.topic, input.topic) : undefined))
         .orderBy(asc(trialSamples.relMs))
-        .limit(input.limit),
-    ),
+        .limit(input.limit);
+    }),
 
   /** A short-lived pass to the trial runtime's socket, carrying my role in the study. */
   socketToken: guarded("trial.read")
@@ -162,6 +173,7 @@ export const trialsRouter = router({
         .leftJoin(participants, eq(participants.id, trials.participantId))
         .leftJoin(user, eq(user.id, trials.wizardId))
         .where(eq(trials.id, input.trialId));
-      return { ...row!, myRole: ctx.studyRole! };
+      const trial = { ...row!, myRole: ctx.studyRole! };
+      return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
     }),
 });

@@ -3,3 +3,4 @@ export * from "./experiments";
 export * from "./plugins";
 export * from "./studies";
 export * from "./trials";
+export * from "./sessions";

@@ -64,7 +64,11 @@ export const participants = pgTable(
       .notNull()
       .default("pending"),
     consentDate: timestamp("consent_date", { withTimezone: true }),
+    // Which version of the study's consent document the participant agreed to.
+    consentVersion: text("consent_version"),
     notes: text("notes").notNull().default(""),
+    // Answers to the demographic fields the study defines (its settings), by field key.
+    demographics: jsonb("demographics").notNull().default(sql`'{}'::jsonb`),
     // The server's assignment: which condition (or, within-subject, which order), made when and from what.
     conditionId: text("condition_id").references(() => conditions.id, { onDelete: "set null" }),
     conditionOrder: jsonb("condition_order"),
