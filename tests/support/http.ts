@@ -12,8 +12,14 @@ export async function signIn(baseUrl: string, email: string, password: string): 
   return res.headers.getSetCookie().map((c) => c.split(";")[0]).join("; ");
 }
 
-export function apiClient(baseUrl: string, cookie?: string) {
+/** With `heard`, every response body the server sends this caller is kept there. */
+export function apiClient(baseUrl: string, cookie?: string, heard?: string[]) {
+  const fetchAndKeep = async (url: Parameters<typeof fetch>[0], init?: Parameters<typeof fetch>[1]) => {
+    const res = await fetch(url, init);
+    heard?.push(await res.clone().text());
+    return res;
+  };
   return createTRPCClient<AppRouter>({
-    links: [httpLink({ url: `${baseUrl}/api/trpc`, headers: () => (cookie ? { cookie } : {}) })],
+    links: [httpLink({ url: `${baseUrl}/api/trpc`, headers: () => (cookie ? { cookie } : {}), fetch: fetchAndKeep })],
   });
 }

@@ -1,0 +1,79 @@
+// A double-blind session, end to end through the real app and runtime: the
+// blinded wizard runs a whole Storyteller trial from "My sessions", and no
+// tRPC response and no socket message they receive names or identifies the
+// condition or its experiment.
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { apiClient, signIn } from "../support/http";
+import { connectTrial } from "../support/socket";
+
+describe.sequential("a blinded wizard", () => {
+  let app: RunningApp;
+  beforeAll(async () => {
+    app = await startApp();
+  });
+  afterAll(async () => app?.stop());
+
+  it("runs a whole trial and never receives the condition's name or ids", async () => {
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await researcher.studies.mine.query();
+    const studyId = study!.id;
+    const [storyteller] = await researcher.experiments.list.query({ studyId });
+    // Two conditions on two experiments, with names a leak would show.
+    const file = await researcher.experiments.exportFile.query({ experimentId: storyteller!.id });
+    const voiceOnly = await researcher.experiments.importFile.mutate({ studyId, text: file.text.replace('"name": "Interactive Storyteller"', '"name": "Voice-only telling QX7"') });
+    await researcher.experiments.update.mutate({ experimentId: storyteller!.id, name: "Gestured telling ZK4" });
+    for (const e of [storyteller!.id, voiceOnly.id]) await researcher.versions.publish.mutate({ experimentId: e });
+    const gestures = await researcher.conditions.create.mutate({ studyId, name: "Gestures-condition-RB2", description: "NAO waves and nods", experimentId: storyteller!.id });
+    const voice = await researcher.conditions.create.mutate({ studyId, name: "Voice-condition-MW9", description: "speech only", experimentId: voiceOnly.id });
+    await researcher.studies.update.mutate({ studyId, settings: { assignment: { strategy: "balanced", perCondition: 1 }, blinding: { conditionsFromWizards: true, resultsUntilComplete: false } } });
+    const participant = await researcher.participants.create.mutate({ studyId, code: "B001", consentStatus: "given", consentDate: new Date() });
+    const assigned = await researcher.conditions.assign.mutate({ participantId: participant.id });
+    const condition = [gestures, voice].find((c) => c.id === assigned.conditionId)!;
+    const wizardAccount = (await researcher.members.list.query({ studyId })).find((m) => m.role === "wizard")!;
+    await researcher.sessions.schedule.mutate({ participantId: participant.id, plannedAt: new Date(), wizardId: wizardAccount.userId });
+
+    const heard: string[] = [];
+    const wizard = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD), heard);
+    await wizard.account.me.query();
+    await wizard.studies.mine.query();
+    await wizard.studies.get.query({ studyId });
+    await wizard.participants.list.query({ studyId });
+    await wizard.sessions.list.query({ studyId });
+    const [session] = await wizard.sessions.mine.query();
+    expect(session).toMatchObject({ participantCode: "B001", conditionName: null });
+    await expect(wizard.experiments.list.query({ studyId })).rejects.toMatchObject({ data: { code: "FORBIDDEN" } });
+    await expect(wizard.conditions.list.query({ studyId })).rejects.toMatchObject({ data: { code: "FORBIDDEN" } });
+    const { trialId } = await wizard.sessions.start.mutate({ sessionId: session!.id });
+    const trial = await wizard.trials.get.query({ trialId });
+    await wizard.trials.list.query({ studyId });
+
+    // The whole protocol, as the wizard's N key and answer buttons would run it.
+    const { url, token } = await wizard.trials.socketToken.mutate({ trialId });
+    const socket = await connectTrial(url, token);
+    const question = trial.protocol.steps.flatMap((s) => s.actions).find((a) => a.type === "record_answer")!;
+    const options = question.parameters.options as Array<{ id: string }>;
+    await socket.command("start", { kind: "start" });
+    let completed = false;
+    for (let i = 0; i < 200 && !completed; i++) {
+      const reply = await socket.command(`c${i}`, { kind: "next" });
+      const reason = String(reply.reason ?? "");
+      if (reason.startsWith("Record the participant's answer")) await socket.command(`a${i}`, { kind: "answer", actionId: question.id, optionId: options[0]!.id });
+      else if (reply.type === "rejected") await new Promise((r) => setTimeout(r, 150));
+      completed = socket.messages.some((m) => ((m.events as Array<{ type: string }> | undefined) ?? []).some((e) => e.type === "trial.completed"));
+    }
+    if (!completed) throw new Error(`The trial did not complete: ${JSON.stringify(socket.messages.slice(-12))}`);
+    await wizard.trials.get.query({ trialId });
+    socket.close();
+
+    const everything = [...heard, ...socket.messages.map((m) => JSON.stringify(m))].join("\n");
+    const secrets = [condition.id, condition.name, condition.description, gestures.name, voice.name, storyteller!.id, voiceOnly.id, "Gestured telling ZK4", "Voice-only telling QX7"];
+    expect(heard.length).toBeGreaterThan(10);
+    expect(secrets.filter((s) => everything.includes(s))).toEqual([]);
+
+    // The researcher still sees it all, and lifting the blind is on the record.
+    expect((await researcher.sessions.list.query({ studyId }))[0]).toMatchObject({ conditionName: condition.name, trialId });
+    await researcher.studies.update.mutate({ studyId, settings: { blinding: { conditionsFromWizards: false, resultsUntilComplete: false } } });
+    expect((await wizard.trials.get.query({ trialId })).experimentName).toBe(condition === gestures ? "Gestured telling ZK4" : "Voice-only telling QX7");
+  }, 120_000);
+});
