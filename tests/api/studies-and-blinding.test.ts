@@ -51,6 +51,19 @@ describe("results hidden until the study is complete", () => {
   });
 });
 
+describe("study settings", () => {
+  it("changes only the settings given: choosing a strategy keeps the blinds and the consent check", async () => {
+    const study = await f.newStudy();
+    await owner.studies.update({ studyId: study.id, settings: { requireConsent: false, blinding: { conditionsFromWizards: true, resultsUntilComplete: true } } });
+    await owner.studies.update({ studyId: study.id, settings: { assignment: { strategy: "balanced", perCondition: 2 } } });
+    expect((await owner.studies.get({ studyId: study.id })).settings).toMatchObject({
+      requireConsent: false,
+      blinding: { conditionsFromWizards: true, resultsUntilComplete: true },
+      assignment: { strategy: "balanced", perCondition: 2, seed: expect.any(String) },
+    });
+  });
+});
+
 describe("withdrawal", () => {
   it("takes the participant's data out of analysis and exports, keeps it stored, logs it, and allows no new trial", async () => {
     const { study, version, participant, trial } = await runningStudy();

@@ -31,15 +31,26 @@ export const demographicFieldSchema = z.object({
 
 export type DemographicField = z.infer<typeof demographicFieldSchema>;
 
-export const studySettingsSchema = z.object({
+const settingFields = {
   /** Trials need a participant whose consent is recorded as given. */
-  requireConsent: z.boolean().default(true),
-  assignment: assignmentSettingsSchema.default({ strategy: "fixed", perCondition: 1 }),
-  blinding: blindingSchema.default({ conditionsFromWizards: false, resultsUntilComplete: false }),
-  demographics: z.array(demographicFieldSchema).max(30, "at most 30 fields").default([]),
+  requireConsent: z.boolean(),
+  assignment: assignmentSettingsSchema,
+  blinding: blindingSchema,
+  demographics: z.array(demographicFieldSchema).max(30, "at most 30 fields"),
   /** The consent document participants agree to now; each consent records the version it was. */
-  consentDocumentVersion: z.string().trim().min(1).max(50).default("1"),
+  consentDocumentVersion: z.string().trim().min(1, "must not be empty").max(50, "must be at most 50 characters"),
+};
+
+export const studySettingsSchema = z.object({
+  requireConsent: settingFields.requireConsent.default(true),
+  assignment: settingFields.assignment.default({ strategy: "fixed", perCondition: 1 }),
+  blinding: settingFields.blinding.default({ conditionsFromWizards: false, resultsUntilComplete: false }),
+  demographics: settingFields.demographics.default([]),
+  consentDocumentVersion: settingFields.consentDocumentVersion.default("1"),
 });
+
+/** A change to some settings: the keys given and nothing else (no defaults filled in for the rest). */
+export const studySettingsChangeSchema = z.object(settingFields).partial();
 
 export type StudySettings = z.infer<typeof studySettingsSchema>;
 

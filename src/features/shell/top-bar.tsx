@@ -18,6 +18,9 @@ export function TopBar({ user }: { user: SessionUser }) {
           <Link href="/studies" className="text-slate-700 hover:text-slate-950">
             Studies
           </Link>
+          <Link href="/sessions" className="text-slate-700 hover:text-slate-950">
+            My sessions
+          </Link>
           <Link href="/robot" className="text-slate-700 hover:text-slate-950">
             Robot
           </Link>

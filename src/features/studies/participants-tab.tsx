@@ -2,6 +2,7 @@
 import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
 import { useState, type FormEvent } from "react";
 import { studyRoleMay, type StudyRole } from "@/core/access/policy";
+import type { DemographicField, StudySettings } from "@/core/studies/settings";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Field, Input, NativeSelect } from "@/ui/field";
@@ -12,19 +13,20 @@ import { Table, Td, Th } from "@/ui/table";
 const CONSENT = ["pending", "given", "declined", "withdrawn"] as const;
 type Consent = (typeof CONSENT)[number];
 
-export function ParticipantsTab({ studyId, role, strategy }: { studyId: string; role: StudyRole; strategy: string }) {
+export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId: string; role: StudyRole; settings: StudySettings; blinded: boolean }) {
+  const strategy = settings.assignment.strategy;
   const trpc = useTRPC();
   const queryClient = useQueryClient();
   const participants = useQuery(trpc.participants.list.queryOptions({ studyId }));
   const refresh = () => queryClient.invalidateQueries({ queryKey: trpc.participants.list.queryKey({ studyId }) });
   const update = useMutation(trpc.participants.update.mutationOptions({ onSuccess: refresh }));
-  const conditions = useQuery(trpc.conditions.list.queryOptions({ studyId }));
+  const conditions = useQuery({ ...trpc.conditions.list.queryOptions({ studyId }), enabled: !blinded });
   const assign = useMutation(trpc.conditions.assign.mutationOptions({ onSuccess: refresh }));
   const conditionName = (id: string | null) => conditions.data?.find((c) => c.id === id)?.name;
   const manage = studyRoleMay(role, "participant.manage");
   return (
     <div className="space-y-6">
-      {manage && <AddParticipant studyId={studyId} onAdded={refresh} />}
+      {manage && <AddParticipant studyId={studyId} fields={settings.demographics} onAdded={refresh} />}
       {participants.isPending && <Spinner />}
       <Problem error={participants.error ?? update.error ?? assign.error} />
       {participants.data?.length === 0 && <EmptyState title="No participants yet." />}
@@ -35,6 +37,8 @@ export function ParticipantsTab({ studyId, role, strategy }: { studyId: string; 
               <Th>Code</Th>
               <Th>Consent</Th>
               <Th>Consent date</Th>
+              <Th>Document</Th>
+              {settings.demographics.length > 0 && <Th>Demographics</Th>}
               <Th>Condition</Th>
               <Th>Trials</Th>
             </tr>
@@ -62,9 +66,23 @@ export function ParticipantsTab({ studyId, role, strategy }: { studyId: string; 
                     <Badge tone={STATUS_TONE[p.consentStatus]}>{p.consentStatus}</Badge>
                   )}
                 </Td>
-                <Td>{p.consentDate ? new Date(p.consentDate).toLocaleDateString() : "—"}</Td>
                 <Td>
-                  {p.conditionId ? (
+                  {p.consentDate ? new Date(p.consentDate).toLocaleDateString() : "—"}
+                  {p.consentStatus === "withdrawn" && <div className="text-xs text-red-700">data excluded from analysis and exports</div>}
+                </Td>
+                <Td className="text-xs">{p.consentVersion ?? "—"}</Td>
+                {settings.demographics.length > 0 && (
+                  <Td className="text-xs text-slate-600">
+                    {settings.demographics
+                      .filter((f) => (p.demographics as Record<string, unknown>)[f.key] !== undefined)
+                      .map((f) => `${f.label}: ${String((p.demographics as Record<string, unknown>)[f.key])}`)
+                      .join(" · ") || "—"}
+                  </Td>
+                )}
+                <Td>
+                  {blinded ? (
+                    <span className="text-slate-400">hidden</span>
+                  ) : p.conditionId ? (
                     conditionName(p.conditionId)
                   ) : manage && conditions.data?.length && strategy === "fixed" ? (
                     <NativeSelect aria-label={`Condition of ${p.code}`} className="w-48" value="" onChange={(e) => assign.mutate({ participantId: p.id, conditionId: e.target.value })}>
@@ -93,21 +111,27 @@ export function ParticipantsTab({ studyId, role, strategy }: { studyId: string; 
   );
 }
 
-function AddParticipant({ studyId, onAdded }: { studyId: string; onAdded: () => void }) {
+function AddParticipant({ studyId, fields, onAdded }: { studyId: string; fields: DemographicField[]; onAdded: () => void }) {
   const trpc = useTRPC();
   const [code, setCode] = useState("");
+  const [answers, setAnswers] = useState<Record<string, string>>({});
   const [consent, setConsent] = useState<Consent>("pending");
   const create = useMutation(
     trpc.participants.create.mutationOptions({
       onSuccess: () => {
         setCode("");
+        setAnswers({});
         onAdded();
       },
     }),
   );
   const submit = (e: FormEvent) => {
     e.preventDefault();
-    create.mutate({ studyId, code, consentStatus: consent, consentDate: consent === "given" ? new Date() : null });
+    // Unanswered questions stay out: every answer is optional.
+    const demographics = Object.fromEntries(
+      fields.filter((f) => answers[f.key]?.trim()).map((f) => [f.key, f.type === "number" ? Number(answers[f.key]) : answers[f.key]!.trim()]),
+    );
+    create.mutate({ studyId, code, consentStatus: consent, consentDate: consent === "given" ? new Date() : null, demographics });
   };
   return (
     <Card className="p-5">
@@ -129,6 +153,24 @@ function AddParticipant({ studyId, onAdded }: { studyId: string; onAdded: () => 
             )}
           </Field>
         </div>
+        {fields.map((f) => (
+          <div key={f.key} className="w-40">
+            <Field label={f.label} hint="optional">
+              {(p) =>
+                f.type === "choice" ? (
+                  <NativeSelect {...p} value={answers[f.key] ?? ""} onChange={(e) => setAnswers({ ...answers, [f.key]: e.target.value })}>
+                    <option value="">—</option>
+                    {f.options.map((o) => (
+                      <option key={o}>{o}</option>
+                    ))}
+                  </NativeSelect>
+                ) : (
+                  <Input {...p} type={f.type === "number" ? "number" : "text"} value={answers[f.key] ?? ""} onChange={(e) => setAnswers({ ...answers, [f.key]: e.target.value })} />
+                )
+              }
+            </Field>
+          </div>
+        ))}
         <Button type="submit" disabled={create.isPending} className="mb-5">
           Add participant
         </Button>

@@ -11,6 +11,7 @@ import { ExperimentsTab } from "./experiments-tab";
 import { MembersTab } from "./members-tab";
 import { OverviewTab } from "./overview-tab";
 import { ParticipantsTab } from "./participants-tab";
+import { SessionsTab } from "./sessions-tab";
 import { TrialsTab } from "./trials-tab";
 
 export function StudyPage({ studyId }: { studyId: string }) {
@@ -22,6 +23,8 @@ export function StudyPage({ studyId }: { studyId: string }) {
   if (study.error) return <Problem error={study.error} />;
   const s = study.data;
   const role = s.myRole;
+  // A blinded wizard gets no tab that would name a condition; the server refuses them anyway.
+  const blinded = role === "wizard" && s.settings.blinding.conditionsFromWizards;
   return (
     <div>
       <div className="mb-6">
@@ -42,10 +45,15 @@ export function StudyPage({ studyId }: { studyId: string }) {
         tabs={[
           { id: "overview", label: "Overview", content: <OverviewTab study={s} /> },
           { id: "members", label: "Members", content: <MembersTab studyId={studyId} role={role} /> },
-          { id: "experiments", label: "Experiments", content: <ExperimentsTab studyId={studyId} role={role} /> },
-          { id: "conditions", label: "Conditions", content: <ConditionsTab studyId={studyId} role={role} assignment={s.settings.assignment} /> },
-          { id: "participants", label: "Participants", content: <ParticipantsTab studyId={studyId} role={role} strategy={s.settings.assignment.strategy} /> },
-          { id: "trials", label: "Trials", content: <TrialsTab studyId={studyId} role={role} /> },
+          ...(blinded
+            ? []
+            : [
+                { id: "experiments", label: "Experiments", content: <ExperimentsTab studyId={studyId} role={role} /> },
+                { id: "conditions", label: "Conditions", content: <ConditionsTab studyId={studyId} role={role} assignment={s.settings.assignment} /> },
+              ]),
+          { id: "participants", label: "Participants", content: <ParticipantsTab studyId={studyId} role={role} settings={s.settings} blinded={blinded} /> },
+          { id: "sessions", label: "Sessions", content: <SessionsTab studyId={studyId} role={role} /> },
+          { id: "trials", label: "Trials", content: <TrialsTab studyId={studyId} role={role} blinded={blinded} /> },
         ]}
       />
     </div>

@@ -10,14 +10,15 @@ import { Problem } from "@/ui/problem";
 import { Badge, Card, EmptyState, Spinner, STATUS_TONE } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
 
-export function TrialsTab({ studyId, role }: { studyId: string; role: StudyRole }) {
+export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: StudyRole; blinded: boolean }) {
   const trpc = useTRPC();
   const queryClient = useQueryClient();
   const trials = useQuery(trpc.trials.list.queryOptions({ studyId }));
   const refresh = () => queryClient.invalidateQueries({ queryKey: trpc.trials.list.queryKey({ studyId }) });
   return (
     <div className="space-y-6">
-      {studyRoleMay(role, "trial.create") && <NewTrial studyId={studyId} onCreated={refresh} />}
+      {/* A blinded wizard starts trials from their sessions: choosing an experiment would reveal the condition. */}
+      {studyRoleMay(role, "trial.create") && !blinded && <NewTrial studyId={studyId} onCreated={refresh} />}
       {trials.isPending && <Spinner />}
       <Problem error={trials.error} />
       {trials.data?.length === 0 && <EmptyState title="No trials yet." />}
@@ -38,7 +39,8 @@ export function TrialsTab({ studyId, role }: { studyId: string; role: StudyRole 
               <tr key={t.id}>
                 <Td className="font-mono">{t.participantCode ?? "—"}</Td>
                 <Td>
-                  {t.experimentName} {t.isRehearsal ? <Badge tone="amber">rehearsal</Badge> : <span className="text-xs text-slate-500">v{t.version}</span>}
+                  {t.experimentName} {t.isRehearsal ? <Badge tone="amber">rehearsal</Badge> : t.version !== null && <span className="text-xs text-slate-500">v{t.version}</span>}
+                  {t.participantWithdrawn && <div className="text-xs text-red-700">withdrawn: excluded from analysis</div>}
                 </Td>
                 <Td>{t.wizardName ?? "—"}</Td>
                 <Td>
@@ -49,7 +51,7 @@ export function TrialsTab({ studyId, role }: { studyId: string; role: StudyRole 
                   <Link className="font-medium text-brand-600 hover:underline" href={`/trials/${t.id}`} aria-label={`${studyRoleMay(role, "trial.run") ? "Run" : "Watch"} trial of ${t.participantCode ?? "no participant"}`}>
                     {studyRoleMay(role, "trial.run") ? "Run" : "Watch"}
                   </Link>
-                  {(t.status === "completed" || t.status === "aborted") && (
+                  {(t.status === "completed" || t.status === "aborted") && !t.participantWithdrawn && studyRoleMay(role, "data.read") && (
                     <Link className="ml-3 font-medium text-brand-600 hover:underline" href={`/trials/${t.id}/analysis`} aria-label={`Analysis of the trial of ${t.participantCode ?? "no participant"}`}>
                       Analysis
                     </Link>

@@ -2,7 +2,7 @@ import { randomBytes } from "node:crypto";
 import { TRPCError } from "@trpc/server";
 import { and, desc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
-import { readSettings, studySettingsSchema, type StudySettings } from "@/core/studies/settings";
+import { readSettings, studySettingsChangeSchema, type StudySettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { experiments, participants, studies, studyMembers, trials } from "../../db/schema";
 import { guarded, router } from "../trpc";
@@ -70,7 +70,7 @@ export const studiesRouter = router({
         title: text("Title", 200).optional(),
         description: z.string().max(5000).optional(),
         status: z.enum(STATUS).optional(),
-        settings: studySettingsSchema.partial().optional(),
+        settings: studySettingsChangeSchema.optional(),
       }),
     )
     .mutation(async ({ ctx, input }) => {

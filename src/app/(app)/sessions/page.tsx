@@ -1,0 +1,5 @@
+import { MySessionsPage } from "@/features/sessions/my-sessions-page";
+
+export default function Page() {
+  return <MySessionsPage />;
+}

@@ -1,0 +1,110 @@
+// Running a whole study in Chromium: a researcher sets up two conditions with
+// balanced assignment, registers four consenting participants and plans their
+// sessions; a blinded wizard runs all four from "My sessions" and never sees
+// which condition a session was.
+import type { Browser, Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
+import { apiClient, signIn } from "../support/http";
+
+const CONDITIONS = ["Told with gestures", "Told by voice only"];
+const CODES = ["S101", "S102", "S103", "S104"];
+
+/** Runs the open trial to its end the way a wizard does: N for the next action, 1 for the first answer. */
+async function runToTheEnd(wizard: Page) {
+  const status = wizard.getByTestId("trial-status");
+  for (let i = 0; i < 120 && (await status.textContent()) !== "completed"; i++) {
+    if (await wizard.getByText("What did the participant answer?").isVisible()) await wizard.keyboard.press("1");
+    else await wizard.keyboard.press("n");
+    await wizard.waitForTimeout(250);
+  }
+  expect(await status.textContent()).toBe("completed");
+}
+
+describe.sequential("a study with conditions, sessions and a blinded wizard", () => {
+  let app: RunningApp;
+  let browser: Browser;
+
+  beforeAll(async () => {
+    app = await startApp();
+    browser = await launchBrowser();
+    // Two published experiments to bind the conditions to: the demo Storyteller and a copy of it.
+    const api = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await api.studies.mine.query();
+    const [storyteller] = await api.experiments.list.query({ studyId: study!.id });
+    const file = await api.experiments.exportFile.query({ experimentId: storyteller!.id });
+    const copy = await api.experiments.importFile.mutate({ studyId: study!.id, text: file.text.replace('"name": "Interactive Storyteller"', '"name": "Storyteller, voice only"') });
+    for (const id of [storyteller!.id, copy.id]) await api.versions.publish.mutate({ experimentId: id });
+  });
+  afterAll(async () => {
+    await browser?.close();
+    await app?.stop();
+  });
+
+  it("lets a researcher set it up, and a blinded wizard run every session from My sessions", async () => {
+    const researcher = await (await newContext(browser, app.url)).newPage();
+    await signInAs(researcher, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await researcher.getByRole("link", { name: /Storytelling and memory/ }).click();
+
+    await researcher.getByLabel("Hide each session's condition from wizards").check();
+    await researcher.getByRole("button", { name: "Save changes" }).click();
+    await researcher.getByText("Saved.").waitFor();
+    await screenshot(researcher, "study-blinding");
+
+    await researcher.getByRole("tab", { name: "Conditions" }).click();
+    await researcher.getByLabel("Assignment strategy").selectOption("balanced");
+    await researcher.getByRole("button", { name: "Use this strategy" }).click();
+    await researcher.getByText(/Seed for the audit/).waitFor();
+    for (const [i, name] of CONDITIONS.entries()) {
+      await researcher.getByLabel("Condition name").fill(name);
+      await researcher.getByLabel("Runs experiment").selectOption({ label: i === 0 ? "Interactive Storyteller (nao6-ros2)" : "Storyteller, voice only (nao6-ros2)" });
+      await researcher.getByRole("button", { name: "Add condition" }).click();
+      await researcher.getByRole("cell", { name, exact: true }).waitFor();
+    }
+
+    await researcher.getByRole("tab", { name: "Participants" }).click();
+    for (const code of CODES) {
+      await researcher.getByLabel("Participant code").fill(code);
+      await researcher.getByLabel("Consent", { exact: true }).selectOption("given");
+      await researcher.getByRole("button", { name: "Add participant" }).click();
+      await researcher.getByRole("button", { name: `Assign ${code}` }).click();
+    }
+    // Balanced: two participants in each condition.
+    await expect
+      .poll(async () => (await researcher.getByRole("cell", { name: new RegExp(`^(${CONDITIONS.join("|")})$`) }).allTextContents()).sort())
+      .toEqual([CONDITIONS[1], CONDITIONS[1], CONDITIONS[0], CONDITIONS[0]]);
+
+    await researcher.getByRole("tab", { name: "Sessions" }).click();
+    for (const code of CODES) {
+      await researcher.getByRole("combobox", { name: /^Participant/ }).selectOption({ label: code });
+      await researcher.getByRole("button", { name: "Plan session" }).click();
+      await researcher.getByRole("cell", { name: code, exact: true }).waitFor();
+    }
+    await screenshot(researcher, "study-sessions");
+    await researcher.context().close();
+
+    const wizard = await (await newContext(browser, app.url)).newPage();
+    await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
+    await wizard.getByRole("link", { name: "My sessions" }).click();
+    const list = wizard.getByRole("list", { name: "My sessions" });
+    await expect.poll(() => list.getByRole("listitem").count()).toBe(4);
+    await screenshot(wizard, "my-sessions");
+    const seen: string[] = [];
+    for (const code of CODES) {
+      seen.push((await wizard.content()) ?? "");
+      await wizard.getByRole("button", { name: `Start the session of ${code}` }).click();
+      await wizard.waitForURL(/\/trials\//);
+      await wizard.getByText("live", { exact: true }).waitFor();
+      seen.push(await wizard.content());
+      await runToTheEnd(wizard);
+      seen.push(await wizard.content());
+      await wizard.getByRole("link", { name: "My sessions" }).click();
+      await expect.poll(() => list.getByRole("button", { name: `Start the session of ${code}` }).count()).toBe(0);
+    }
+    await wizard.getByText("No sessions are planned for you.").waitFor();
+    const everything = seen.join("\n");
+    expect([...CONDITIONS, "Interactive Storyteller", "voice only"].filter((name) => everything.includes(name))).toEqual([]);
+    await wizard.context().close();
+  }, 300_000);
+});
