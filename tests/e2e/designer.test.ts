@@ -156,7 +156,7 @@ describe.sequential("the experiment designer, in the browser", () => {
     expect(failed).toEqual([]);
     expect(score).toBe(100);
     await context.close();
-  });
+  }, 180_000);
 
   it("moves and undoes with the keyboard alone", async () => {
     const page = await (await newContext(browser, app.url)).newPage();
@@ -176,7 +176,7 @@ describe.sequential("the experiment designer, in the browser", () => {
     await page.keyboard.press("Control+z");
     await expect.poll(() => intro.count()).toBe(2);
     await page.context().close();
-  });
+  }, 60_000);
 
   it("shows what another robot cannot do when the robot is switched, and lets an observer read but not edit", async () => {
     const page = await (await newContext(browser, app.url)).newPage();
@@ -200,7 +200,7 @@ describe.sequential("the experiment designer, in the browser", () => {
     await expect.poll(() => observer.getByRole("region", { name: "Properties" }).getByLabel("Step name").isDisabled()).toBe(true);
     expect(await observer.getByRole("button", { name: "Publish" }).count()).toBe(0);
     await observer.context().close();
-  });
+  }, 60_000);
 
   it("tells a researcher when someone else saved the same draft, and overwrites nothing silently", async () => {
     const pages = await Promise.all(
@@ -226,5 +226,5 @@ describe.sequential("the experiment designer, in the browser", () => {
     await second.getByRole("button", { name: /Load their version/ }).click();
     await expect.poll(() => second.getByRole("button", { name: /^Step 1:/ }).textContent()).toContain("Introduction (first)");
     await Promise.all(pages.map((p) => p.context().close()));
-  });
+  }, 60_000);
 });

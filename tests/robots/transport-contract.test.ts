@@ -25,7 +25,9 @@ interface Rig {
   slow: PluginAction;
   /** Texts the robot received through `say`, exactly. */
   heard(): string[];
+  /** The robot gone from the network, and back. */
   drop(): void;
+  restore(): Promise<void>;
   close(): Promise<void>;
 }
 
@@ -39,7 +41,11 @@ async function rosbridgeRig(): Promise<Rig> {
     fails: call("broken", "/broken"),
     slow: call("slow", "/slow_op", 300),
     heard: () => sim.received.filter((r) => r.message.op === "publish" && r.message.topic === "/speech").map((r) => (r.message.msg as { data: string }).data),
-    drop: () => sim.faults.dropConnections(),
+    drop: () => {
+      sim.faults.refuseConnections(true);
+      sim.faults.dropConnections();
+    },
+    restore: async () => sim.faults.refuseConnections(false),
     close: () => sim.close(),
   };
 }
@@ -61,6 +67,7 @@ async function sshRig(): Promise<Rig> {
     slow: command("slow", "qicli call slow", none, 300),
     heard: () => sshd.calls().filter((c) => c[1] === "ALTextToSpeech.say").map((c) => c[2]!),
     drop: () => sshd.stop(),
+    restore: () => sshd.restart(),
     close: async () => sshd.stop(),
   };
 }
@@ -78,7 +85,8 @@ async function httpRig(): Promise<Rig> {
     });
   });
   await new Promise<void>((ok) => server.listen(0, "127.0.0.1", ok));
-  const base = `http://127.0.0.1:${(server.address() as AddressInfo).port}/`;
+  const port = (server.address() as AddressInfo).port;
+  const base = `http://127.0.0.1:${port}/`;
   const request = (id: string, url: string, body?: Record<string, string>, schema = none, timeout?: number): PluginAction => ({ id, name: id, category: "test", parameterSchema: schema, timeout, http: { method: "POST", url, body } });
   return {
     transport: new HttpTransport({ baseUrl: base, heartbeatEveryMs: 200 }),
@@ -90,6 +98,7 @@ async function httpRig(): Promise<Rig> {
       server.close();
       server.closeAllConnections();
     },
+    restore: () => new Promise<void>((ok) => server.listen(port, "127.0.0.1", ok)),
     close: async () => void server.close(),
   };
 }
@@ -134,5 +143,22 @@ describe.each([
     rig.transport.onHealth((h) => states.push(h.state));
     rig.drop();
     await expect.poll(() => states.includes("disconnected"), { timeout: 5000 }).toBe(true);
+  });
+
+  it("fails an action at once while the robot is away, but holds a retryable one until the robot is back", async () => {
+    expect((await rig.transport.dispatch({ ...rig.say, retryable: false, timeout: 5000 }, { text: "not now" })).status).toBe("failed");
+    const held = rig.transport.dispatch({ ...rig.say, retryable: true, timeout: 8000 }, { text: "when you are back" });
+    await new Promise((r) => setTimeout(r, 400));
+    await rig.restore();
+    expect(await held).toMatchObject({ status: "completed" });
+    await expect.poll(() => rig.heard()).toContain("when you are back");
+    expect(rig.heard()).not.toContain("not now");
+  });
+
+  it("times out a retryable action when the robot stays away", async () => {
+    rig.drop();
+    await expect.poll(() => rig.transport.health().state, { timeout: 5000 }).not.toBe("connected");
+    expect(await rig.transport.dispatch({ ...rig.say, retryable: true, timeout: 600 }, { text: "never" })).toMatchObject({ status: "timed_out" });
+    await rig.restore();
   });
 });

@@ -15,6 +15,7 @@ export interface TestSshd {
   /** Every qicli call, one JSON argv per line. */
   calls(): string[][];
   stop(): void;
+  restart(): Promise<void>;
 }
 
 export async function startSshd(): Promise<TestSshd> {
@@ -52,14 +53,7 @@ export async function startSshd(): Promise<TestSshd> {
     ].join("\n"),
   );
   spawnSync("mkdir", ["-p", "/run/sshd"]);
-  const child: ChildProcess = spawn(SSHD, ["-D", "-e", "-f", join(dir, "sshd_config")], { stdio: ["ignore", "ignore", "pipe"] });
-  let log = "";
-  child.stderr!.on("data", (d) => (log += d));
-  await new Promise<void>((ok, fail) => {
-    const timer = setTimeout(() => fail(new Error(`sshd did not start: ${log}`)), 10_000);
-    child.stderr!.on("data", () => log.includes("Server listening") && (clearTimeout(timer), ok()));
-    child.once("exit", (code) => fail(new Error(`sshd exited with ${code}: ${log}`)));
-  });
+  let child = await listen(join(dir, "sshd_config"));
   return {
     port,
     username: userInfo().username,
@@ -67,7 +61,21 @@ export async function startSshd(): Promise<TestSshd> {
     calls: () => (existsSync(calls) ? readFileSync(calls, "utf8").trim().split("\n").filter(Boolean).map((l) => JSON.parse(l) as string[]) : []),
     // The listener and every per-connection sshd below it: a robot gone from the network.
     stop: () => killTree(child.pid!),
+    // The robot back on the network, at the same address.
+    restart: async () => void (child = await listen(join(dir, "sshd_config"))),
   };
+}
+
+async function listen(config: string): Promise<ChildProcess> {
+  const child = spawn(SSHD, ["-D", "-e", "-f", config], { stdio: ["ignore", "ignore", "pipe"] });
+  let log = "";
+  child.stderr!.on("data", (d) => (log += d));
+  await new Promise<void>((ok, fail) => {
+    const timer = setTimeout(() => fail(new Error(`sshd did not start: ${log}`)), 10_000);
+    child.stderr!.on("data", () => log.includes("Server listening") && (clearTimeout(timer), ok()));
+    child.once("exit", (code) => fail(new Error(`sshd exited with ${code}: ${log}`)));
+  });
+  return child;
 }
 
 function killTree(pid: number) {

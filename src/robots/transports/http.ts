@@ -3,7 +3,7 @@
 // robot's answer, no answer within the plugin's timeout timed out. The API's
 // base URL is probed as a heartbeat, so a robot gone away is reported at once.
 import { httpRequest, validateParameters, withDefaults, type PluginAction } from "../../core/plugins";
-import { DEFAULT_TIMEOUT_MS, type DispatchOutcome, type Health, type Transport } from "./transport";
+import { DEFAULT_TIMEOUT_MS, untilDeadline, type DispatchOutcome, type Health, type Transport } from "./transport";
 
 export interface HttpOptions {
   baseUrl: string;
@@ -29,13 +29,26 @@ export class HttpTransport implements Transport {
     if (!action.http) return { status: "failed", reason: `action "${action.id}" has no HTTP request` };
     const request = httpRequest(action.http, this.options.baseUrl, withDefaults(action.parameterSchema, parameters));
     if (!request.ok) return { status: "failed", reason: request.reason };
-    try {
-      const response = await fetch(request.url, {
+    const deadline = started + (action.timeout ?? DEFAULT_TIMEOUT_MS);
+    const send = () =>
+      fetch(request.url, {
         method: request.method,
         headers: request.body ? { "content-type": "application/json" } : undefined,
         body: request.body,
-        signal: AbortSignal.timeout(action.timeout ?? DEFAULT_TIMEOUT_MS),
+        signal: AbortSignal.timeout(Math.max(1, deadline - Date.now())),
       });
+    // A retryable action is sent again while the robot's API cannot be reached, until its timeout.
+    const sendUntilReached = () =>
+      untilDeadline(deadline, () =>
+        send().catch((error: Error) => {
+          if (error.name === "TimeoutError") throw error;
+          this.setState("disconnected");
+          return null;
+        }),
+      );
+    try {
+      const response = action.retryable ? await sendUntilReached() : await send();
+      if (!response) return { status: "timed_out", afterMs: Date.now() - started };
       const text = (await response.text()).slice(0, 500);
       if (response.ok) return { status: "completed", detail: { httpStatus: response.status } };
       return { status: "failed", reason: `the robot answered HTTP ${response.status}${text ? `: ${text}` : ""}` };

@@ -4,7 +4,7 @@
 import { readFileSync } from "node:fs";
 import { Client } from "ssh2";
 import { outgoingFor, shellCommand, validateParameters, withDefaults, type PluginAction } from "../../core/plugins";
-import { DEFAULT_TIMEOUT_MS, type DispatchOutcome, type Health, type Transport } from "./transport";
+import { DEFAULT_TIMEOUT_MS, untilDeadline, type DispatchOutcome, type Health, type Transport } from "./transport";
 
 export interface SshOptions {
   host: string;
@@ -48,9 +48,11 @@ export class SshTransport implements Transport {
     if (outgoing.kind !== "ssh") return { status: "failed", reason: `action "${action.id}" is not an SSH command` };
     const built = shellCommand(outgoing.command, withDefaults(action.parameterSchema, parameters));
     if (!built.ok) return { status: "failed", reason: built.reason };
-    const client = await this.connection();
-    if (!client) return { status: "failed", reason: "robot not reachable over SSH" };
-    return this.run(client, built.command, action.timeout ?? DEFAULT_TIMEOUT_MS, started);
+    const timeoutMs = action.timeout ?? DEFAULT_TIMEOUT_MS;
+    // A retryable action waits for the robot to come back within its timeout; any other fails at once.
+    const client = action.retryable ? await untilDeadline(started + timeoutMs, () => this.connection()) : await this.connection();
+    if (!client) return action.retryable ? { status: "timed_out", afterMs: Date.now() - started } : { status: "failed", reason: "robot not reachable over SSH" };
+    return this.run(client, built.command, Math.max(1, started + timeoutMs - Date.now()), started);
   }
 
   /** SSH carries commands, not robot state: state comes over rosbridge. */
