@@ -47,6 +47,16 @@ const publishable = async (f: Fixture, b: Base) => {
   await f.api("owner").experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
   return e;
 };
+/** A published SUS in the base study, and a fresh one-time link to it for the base participant. */
+const freshLink = async (f: Fixture, b: Base) => {
+  const owner = f.api("owner");
+  const q = await owner.questionnaires.create({ studyId: b.study.id, instrument: "sus" });
+  await owner.questionnaires.publish({ questionnaireId: q.id });
+  return owner.questionnaires.createLink({ questionnaireId: q.id, participantId: b.participant.id, trialId: b.trial.id });
+};
+const EVERYONE: Caller[] = [...SIGNED_IN, "anonymous"];
+const sus = Object.fromEntries([4, 2, 3, 4, 3, 1, 3, 3, 3, 2].map((v, i) => [`sus${i + 1}`, v]));
+
 const freshMember = async (f: Fixture, b: Base) => {
   const person = await newPerson(db, "member");
   await f.api("owner").members.add({ studyId: b.study.id, email: person.email, role: "observer" });
@@ -123,6 +133,25 @@ const MATRIX: Record<string, [Caller[], Input]> = {
   "sessions.remove": [EDITORS, async (f, b) => ({ sessionId: (await freshSession(f, b)).id })],
   "sessions.mine": [SIGNED_IN, () => undefined],
   "sessions.start": [RUNNERS, async (f, b) => ({ sessionId: (await freshSession(f, b)).id })],
+  "questionnaires.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "questionnaires.get": [MEMBERS, async (f, b) => ({ questionnaireId: (await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" })).id })],
+  "questionnaires.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, name: "Recall" })],
+  "questionnaires.save": [EDITORS, async (f, b) => ({ questionnaireId: (await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" })).id, timing: "after" })],
+  "questionnaires.publish": [EDITORS, async (f, b) => ({ questionnaireId: (await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" })).id })],
+  "questionnaires.createLink": [
+    RUNNERS,
+    async (f, b) => {
+      const q = await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" });
+      await f.api("owner").questionnaires.publish({ questionnaireId: q.id });
+      return { questionnaireId: q.id, participantId: b.participant.id };
+    },
+  ],
+  "questionnaires.responses": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
+  "questionnaires.exportCsv": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
+  // The one-time link is the participant's credential: no account needed, none checked.
+  "form.open": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token })],
+  "form.save": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token, answers: { sus1: 3 } })],
+  "form.submit": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token, answers: sus })],
   "trials.create": [RUNNERS, (_f, b) => ({ versionId: b.version.id, participantId: b.participant.id })],
   "trials.rehearse": [RUNNERS, (_f, b) => ({ experimentId: b.experiment.id })],
   "trials.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],

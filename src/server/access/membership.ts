@@ -12,6 +12,7 @@ import {
   experimentVersions,
   experiments,
   participants,
+  questionnaires,
   sessions,
   steps,
   studies,
@@ -24,6 +25,11 @@ type Lookup = (db: Database, id: string) => Promise<string | undefined>;
 // Each id an input may carry, and how to find its study. The first key present wins.
 const LOOKUPS: Array<[string, Lookup]> = [
   ["studyId", async (_db, id) => id],
+  // Before participantId and trialId: a link is checked against the questionnaire's own study.
+  [
+    "questionnaireId",
+    async (db, id) => (await db.select({ s: questionnaires.studyId }).from(questionnaires).where(eq(questionnaires.id, id)))[0]?.s,
+  ],
   [
     "experimentId",
     async (db, id) =>

@@ -4,7 +4,9 @@ import { adminRouter } from "./routers/admin";
 import { experimentsRouter } from "./routers/experiments";
 import { membersRouter } from "./routers/members";
 import { participantsRouter } from "./routers/participants";
+import { formRouter } from "./routers/form";
 import { pluginsRouter } from "./routers/plugins";
+import { questionnairesRouter } from "./routers/questionnaires";
 import { sessionsRouter } from "./routers/sessions";
 import { studiesRouter } from "./routers/studies";
 import { trialsRouter } from "./routers/trials";
@@ -20,6 +22,8 @@ export const appRouter = router({
   participants: participantsRouter,
   conditions: conditionsRouter,
   sessions: sessionsRouter,
+  questionnaires: questionnairesRouter,
+  form: formRouter,
   plugins: pluginsRouter,
   trials: trialsRouter,
   admin: adminRouter,

@@ -4,3 +4,4 @@ export * from "./plugins";
 export * from "./studies";
 export * from "./trials";
 export * from "./sessions";
+export * from "./questionnaires";
