@@ -64,6 +64,20 @@ describe("study settings", () => {
   });
 });
 
+describe("lists", () => {
+  it("count what they say: steps and versions of experiments, participants per condition, trials per participant", async () => {
+    const { study, experiment, condition, participant } = await runningStudy();
+    await owner.conditions.assign({ participantId: participant.id, conditionId: condition.id });
+    const q = await owner.questionnaires.create({ studyId: study.id, instrument: "sus" });
+    await owner.questionnaires.publish({ questionnaireId: q.id });
+    expect(await owner.experiments.list({ studyId: study.id })).toMatchObject([{ id: experiment.id, stepCount: 1, latestVersion: 1 }]);
+    expect(await owner.conditions.list({ studyId: study.id })).toMatchObject([{ participantCount: 1 }]);
+    expect(await owner.participants.list({ studyId: study.id })).toMatchObject([{ trialCount: 1 }]);
+    expect(await owner.questionnaires.list({ studyId: study.id })).toMatchObject([{ latestVersion: 1 }]);
+    expect((await owner.studies.mine()).find((s) => s.id === study.id)).toMatchObject({ experimentCount: 1, trialCount: 1, participantCount: 1 });
+  });
+});
+
 describe("withdrawal", () => {
   it("takes the participant's data out of analysis and exports, keeps it stored, logs it, and allows no new trial", async () => {
     const { study, version, participant, trial } = await runningStudy();

@@ -5,7 +5,7 @@
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { apiClient, signIn } from "../support/http";
-import { connectTrial } from "../support/socket";
+import { runWholeTrial } from "../support/run-trial";
 
 describe.sequential("a blinded wizard", () => {
   let app: RunningApp;
@@ -45,28 +45,14 @@ describe.sequential("a blinded wizard", () => {
     await expect(wizard.experiments.list.query({ studyId })).rejects.toMatchObject({ data: { code: "FORBIDDEN" } });
     await expect(wizard.conditions.list.query({ studyId })).rejects.toMatchObject({ data: { code: "FORBIDDEN" } });
     const { trialId } = await wizard.sessions.start.mutate({ sessionId: session!.id });
-    const trial = await wizard.trials.get.query({ trialId });
+    await wizard.trials.get.query({ trialId });
     await wizard.trials.list.query({ studyId });
 
     // The whole protocol, as the wizard's N key and answer buttons would run it.
-    const { url, token } = await wizard.trials.socketToken.mutate({ trialId });
-    const socket = await connectTrial(url, token);
-    const question = trial.protocol.steps.flatMap((s) => s.actions).find((a) => a.type === "record_answer")!;
-    const options = question.parameters.options as Array<{ id: string }>;
-    await socket.command("start", { kind: "start" });
-    let completed = false;
-    for (let i = 0; i < 200 && !completed; i++) {
-      const reply = await socket.command(`c${i}`, { kind: "next" });
-      const reason = String(reply.reason ?? "");
-      if (reason.startsWith("Record the participant's answer")) await socket.command(`a${i}`, { kind: "answer", actionId: question.id, optionId: options[0]!.id });
-      else if (reply.type === "rejected") await new Promise((r) => setTimeout(r, 150));
-      completed = socket.messages.some((m) => ((m.events as Array<{ type: string }> | undefined) ?? []).some((e) => e.type === "trial.completed"));
-    }
-    if (!completed) throw new Error(`The trial did not complete: ${JSON.stringify(socket.messages.slice(-12))}`);
+    const socketMessages = await runWholeTrial(wizard, trialId);
     await wizard.trials.get.query({ trialId });
-    socket.close();
 
-    const everything = [...heard, ...socket.messages.map((m) => JSON.stringify(m))].join("\n");
+    const everything = [...heard, ...socketMessages.map((m) => JSON.stringify(m))].join("\n");
     const secrets = [condition.id, condition.name, condition.description, gestures.name, voice.name, storyteller!.id, voiceOnly.id, "Gestured telling ZK4", "Voice-only telling QX7"];
     expect(heard.length).toBeGreaterThan(10);
     expect(secrets.filter((s) => everything.includes(s))).toEqual([]);

@@ -52,6 +52,8 @@ export interface TrialRecord {
   protocol: ProtocolSnapshot;
   events: ExportEvent[];
   annotations: Array<{ relMs: number; label: string; note: string; authorName: string | null }>;
+  /** Submitted questionnaires of the trial, each with the version shown, the answers and the score. */
+  questionnaires: unknown[];
 }
 
 export function trialRecordJson(record: Omit<TrialRecord, "schemaVersion">): string {

@@ -7,6 +7,7 @@ import { useMemo } from "react";
 import { fidelityReport } from "@/core/analysis/fidelity";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
+import { QuestionnaireAnswers } from "./questionnaire-answers";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, type Tone } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
@@ -54,6 +55,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         <Figure label="Deviations" value={String(Object.values(r.deviations).reduce((a, b) => a + b, 0))} />
         <Figure label="Branches by answer / by hand" value={`${r.branches.byLogic} / ${r.branches.byHand}`} />
       </div>
+      <QuestionnaireAnswers trialId={trialId} studyId={t.studyId} />
       <section aria-label="Planned versus executed">
         <h2 className="mb-2 text-lg font-semibold">Planned versus executed</h2>
         <Table>

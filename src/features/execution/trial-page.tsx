@@ -8,6 +8,7 @@ import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
 import { MarkMoment, Moments, Watching } from "./observer-panel";
 import { OffScript, StepActions, StepList } from "./protocol-view";
+import { TrialQuestionnaires } from "@/features/questionnaires/trial-questionnaires";
 import { TrialClock } from "./trial-clock";
 import { useTrialSocket } from "./use-trial-socket";
 import { SHORTCUTS, WizardControls } from "./wizard-controls";
@@ -20,7 +21,7 @@ export function TrialPage({ trialId }: { trialId: string }) {
   return <LiveTrial trial={trial.data} protocol={trial.data.protocol as TrialProtocol} />;
 }
 
-type Trial = { id: string; studyId: string; experimentName: string; participantCode: string | null; isRehearsal: boolean; version: number | null; myRole: "owner" | "researcher" | "wizard" | "observer" };
+type Trial = { id: string; studyId: string; experimentName: string; participantId: string | null; participantCode: string | null; isRehearsal: boolean; version: number | null; myRole: "owner" | "researcher" | "wizard" | "observer" };
 
 function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol }) {
   const live = useTrialSocket(trial.id, protocol);
@@ -68,6 +69,7 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
         </div>
         <div className="space-y-4">
           <Watching viewers={live.viewers} />
+          {wizard && trial.participantId && !trial.isRehearsal && <TrialQuestionnaires studyId={trial.studyId} trialId={trial.id} participantId={trial.participantId} />}
           {!wizard && <MarkMoment annotate={live.annotate} />}
           <Moments annotations={live.annotations} />
           {wizard && (

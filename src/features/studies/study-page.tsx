@@ -11,6 +11,7 @@ import { ExperimentsTab } from "./experiments-tab";
 import { MembersTab } from "./members-tab";
 import { OverviewTab } from "./overview-tab";
 import { ParticipantsTab } from "./participants-tab";
+import { QuestionnairesTab } from "./questionnaires-tab";
 import { SessionsTab } from "./sessions-tab";
 import { TrialsTab } from "./trials-tab";
 
@@ -53,6 +54,7 @@ export function StudyPage({ studyId }: { studyId: string }) {
               ]),
           { id: "participants", label: "Participants", content: <ParticipantsTab studyId={studyId} role={role} settings={s.settings} blinded={blinded} /> },
           { id: "sessions", label: "Sessions", content: <SessionsTab studyId={studyId} role={role} /> },
+          { id: "questionnaires", label: "Questionnaires", content: <QuestionnairesTab studyId={studyId} role={role} /> },
           { id: "trials", label: "Trials", content: <TrialsTab studyId={studyId} role={role} blinded={blinded} /> },
         ]}
       />

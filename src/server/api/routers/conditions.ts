@@ -5,6 +5,7 @@ import { assign, type Strategy } from "@/core/studies/assignment";
 import { readSettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { conditions, experiments, participants, studies } from "../../db/schema";
+import { qualified } from "../../db/qualified";
 import { guarded, router } from "../trpc";
 import { id, text } from "../validation";
 
@@ -20,7 +21,7 @@ export const conditionsRouter = router({
           experimentId: conditions.experimentId,
           experimentName: experiments.name,
           robotPluginId: experiments.robotPluginId,
-          participantCount: sql<number>`(select count(*)::int from ${participants} where ${participants.conditionId} = ${conditions.id})`,
+          participantCount: sql<number>`(select count(*)::int from ${participants} where ${participants.conditionId} = ${qualified(conditions.id)})`,
         })
         .from(conditions)
         .innerJoin(experiments, eq(experiments.id, conditions.experimentId))

@@ -4,6 +4,7 @@ import { z } from "zod";
 import { actions, experimentVersions, experiments, steps } from "../../db/schema";
 import { exportFile, importFile } from "../../experiments/exchange";
 import { bumpRevision, loadDesign, renumberActions, renumberSteps, saveDesign } from "../../experiments/design";
+import { qualified } from "../../db/qualified";
 import { guarded, router } from "../trpc";
 import { id } from "../validation";
 import { actionFields, designInput, experimentDetails, stepFields } from "./design-input";
@@ -27,8 +28,8 @@ export const experimentsRouter = router({
           description: experiments.description,
           robotPluginId: experiments.robotPluginId,
           updatedAt: experiments.updatedAt,
-          stepCount: sql<number>`(select count(*)::int from ${steps} where ${steps.experimentId} = ${experiments.id})`,
-          latestVersion: sql<number | null>`(select max(${experimentVersions.version}) from ${experimentVersions} where ${experimentVersions.experimentId} = ${experiments.id})`,
+          stepCount: sql<number>`(select count(*)::int from ${steps} where ${steps.experimentId} = ${qualified(experiments.id)})`,
+          latestVersion: sql<number | null>`(select max(${experimentVersions.version}) from ${experimentVersions} where ${experimentVersions.experimentId} = ${qualified(experiments.id)})`,
         })
         .from(experiments)
         .where(eq(experiments.studyId, input.studyId))

@@ -6,6 +6,7 @@ import { demographicProblems, type Answers } from "@/core/studies/demographics";
 import { readSettings } from "@/core/studies/settings";
 import type { Database } from "../../db/client";
 import { participants, studies, trials } from "../../db/schema";
+import { qualified } from "../../db/qualified";
 import { guarded, router } from "../trpc";
 import { id, text } from "../validation";
 
@@ -53,7 +54,7 @@ export const participantsRouter = router({
           demographics: participants.demographics,
           // A blinded wizard sees who comes, never in which condition.
           conditionId: ctx.blinding.conditionsHidden ? sql<string | null>`null` : participants.conditionId,
-          trialCount: sql<number>`(select count(*)::int from ${trials} where ${trials.participantId} = ${participants.id})`,
+          trialCount: sql<number>`(select count(*)::int from ${trials} where ${trials.participantId} = ${qualified(participants.id)})`,
         })
         .from(participants)
         .where(eq(participants.studyId, input.studyId))

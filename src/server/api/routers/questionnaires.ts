@@ -2,16 +2,17 @@
 // sessions before or after the trial, filled in through one-time links, and
 // exported with every answer and score.
 import { TRPCError } from "@trpc/server";
-import { and, asc, desc, eq, ne, sql } from "drizzle-orm";
+import { asc, desc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
 import { hashCanonical } from "@/core/protocol/canonical";
 import { blankQuestionnaire } from "@/core/questionnaires/builder";
 import { definitionSchema, INSTRUMENTS, items, type Definition } from "@/core/questionnaires/definition";
 import { instrumentDefinition } from "@/core/questionnaires/instruments";
 import { answersCsv } from "@/core/questionnaires/export";
-import type { Database } from "../../db/client";
-import { participants, questionnaireLinks, questionnaireResponses, questionnaireVersions, questionnaires, trials } from "../../db/schema";
+import { participants, questionnaireLinks, questionnaireVersions, questionnaires, trials } from "../../db/schema";
 import { hashToken, newToken } from "../../questionnaires/links";
+import { submitted } from "../../questionnaires/responses";
+import { qualified } from "../../db/qualified";
 import { guarded, router } from "../trpc";
 import { id, text } from "../validation";
 
@@ -20,28 +21,6 @@ function checkedDefinition(definition: unknown): Definition {
   if (parsed.success) return parsed.data;
   const issue = parsed.error.issues[0]!;
   throw new TRPCError({ code: "BAD_REQUEST", message: `Please correct: definition.${issue.path.join(".")}: ${issue.message}` });
-}
-
-/** Submitted answers with everything needed to read them: the version shown, the participant, the trial. */
-async function submitted(db: Database, where: ReturnType<typeof eq>) {
-  return db
-    .select({
-      questionnaire: questionnaires.name,
-      version: questionnaireVersions.version,
-      definition: questionnaireVersions.definition,
-      participantCode: participants.code,
-      trialId: questionnaireLinks.trialId,
-      answers: questionnaireResponses.answers,
-      score: questionnaireResponses.score,
-      submittedAt: questionnaireResponses.submittedAt,
-    })
-    .from(questionnaireResponses)
-    .innerJoin(questionnaireLinks, eq(questionnaireLinks.id, questionnaireResponses.linkId))
-    .innerJoin(questionnaireVersions, eq(questionnaireVersions.id, questionnaireLinks.versionId))
-    .innerJoin(questionnaires, eq(questionnaires.id, questionnaireVersions.questionnaireId))
-    .innerJoin(participants, eq(participants.id, questionnaireLinks.participantId))
-    .where(and(where, eq(questionnaireResponses.status, "submitted"), ne(participants.consentStatus, "withdrawn")))
-    .orderBy(asc(participants.code), asc(questionnaires.name));
 }
 
 export const questionnairesRouter = router({
@@ -54,7 +33,7 @@ export const questionnairesRouter = router({
           name: questionnaires.name,
           timing: questionnaires.timing,
           instrument: sql<string | null>`${questionnaires.draft}->>'instrument'`,
-          latestVersion: sql<number | null>`(select max(${questionnaireVersions.version}) from ${questionnaireVersions} where ${questionnaireVersions.questionnaireId} = ${questionnaires.id})`,
+          latestVersion: sql<number | null>`(select max(${questionnaireVersions.version}) from ${questionnaireVersions} where ${questionnaireVersions.questionnaireId} = ${qualified(questionnaires.id)})`,
         })
         .from(questionnaires)
         .where(eq(questionnaires.studyId, input.studyId))

@@ -5,6 +5,7 @@ import { z } from "zod";
 import { readSettings, studySettingsChangeSchema, type StudySettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { experiments, participants, studies, studyMembers, trials } from "../../db/schema";
+import { qualified } from "../../db/qualified";
 import { guarded, router } from "../trpc";
 import { id, text } from "../validation";
 
@@ -32,9 +33,9 @@ export const studiesRouter = router({
         status: studies.status,
         role: studyMembers.role,
         updatedAt: studies.updatedAt,
-        experimentCount: sql<number>`(select count(*)::int from ${experiments} where ${experiments.studyId} = ${studies.id})`,
-        trialCount: sql<number>`(select count(*)::int from ${trials} where ${trials.studyId} = ${studies.id})`,
-        participantCount: sql<number>`(select count(*)::int from ${participants} where ${participants.studyId} = ${studies.id})`,
+        experimentCount: sql<number>`(select count(*)::int from ${experiments} where ${experiments.studyId} = ${qualified(studies.id)})`,
+        trialCount: sql<number>`(select count(*)::int from ${trials} where ${trials.studyId} = ${qualified(studies.id)})`,
+        participantCount: sql<number>`(select count(*)::int from ${participants} where ${participants.studyId} = ${qualified(studies.id)})`,
       })
       .from(studies)
       .innerJoin(studyMembers, and(eq(studyMembers.studyId, studies.id), eq(studyMembers.userId, ctx.user.id)))

@@ -4,11 +4,12 @@ import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
 import { blindTrial } from "@/core/studies/blinding";
 import type { Database } from "../../db/client";
-import { annotations, experimentVersions, experiments, participants, studyMembers, trialSamples, trials, user } from "../../db/schema";
+import { annotations, experimentVersions, questionnaireLinks, experiments, participants, studyMembers, trialSamples, trials, user } from "../../db/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "../../experiments/publish";
 import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
 import { eventsSince } from "../../trials/event-store";
+import { submitted } from "../../questionnaires/responses";
 import { assertMayTakePart } from "../../studies/consent-gate";
 import { signSocketToken } from "../../trials/socket-token";
 import { guarded, router } from "../trpc";
@@ -137,6 +138,7 @@ export const trialsRouter = router({
         protocol,
         events,
         annotations: marked,
+        questionnaires: await submitted(ctx.db, eq(questionnaireLinks.trialId, input.trialId)),
       });
       return { filename: `${name}.json`, contentType: "application/json", body: record };
     }),

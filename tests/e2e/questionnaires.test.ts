@@ -1,0 +1,78 @@
+// A researcher attaches the SUS after the Storyteller; after a trial, the
+// wizard opens the one-time link and the participant fills it in on a second
+// device (a reload on the way loses nothing); the score appears on the
+// analysis page and in the CSV export.
+import type { Browser } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
+import { apiClient, signIn } from "../support/http";
+import { runWholeTrial } from "../support/run-trial";
+
+const ANSWERS = [4, 2, 3, 4, 3, 1, 3, 3, 3, 2];
+
+describe.sequential("questionnaires in the browser", () => {
+  let app: RunningApp;
+  let browser: Browser;
+  beforeAll(async () => {
+    app = await startApp();
+    browser = await launchBrowser();
+  });
+  afterAll(async () => {
+    await browser?.close();
+    await app?.stop();
+  });
+
+  it("attaches the SUS, has the participant fill it in after a trial, and shows the score", async () => {
+    const researcher = await (await newContext(browser, app.url)).newPage();
+    await signInAs(researcher, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await researcher.getByRole("link", { name: /Storytelling and memory/ }).click();
+    await researcher.getByRole("tab", { name: "Questionnaires" }).click();
+    await researcher.getByRole("button", { name: "Add the System Usability Scale" }).click();
+    await researcher.getByLabel("When System Usability Scale (SUS) is filled in").selectOption("after");
+    await researcher.getByRole("button", { name: "Publish System Usability Scale (SUS)" }).click();
+    await researcher.getByText("version 1", { exact: true }).waitFor();
+    await screenshot(researcher, "questionnaires");
+
+    // A Storyteller trial with P001, run to its end.
+    const api = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await api.studies.mine.query();
+    const [experiment] = await api.experiments.list.query({ studyId: study!.id });
+    const version = await api.versions.publish.mutate({ experimentId: experiment!.id });
+    const p001 = (await api.participants.list.query({ studyId: study!.id })).find((p) => p.code === "P001")!;
+    const wizardApi = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
+    const trial = await wizardApi.trials.create.mutate({ versionId: version.id, participantId: p001.id });
+    await runWholeTrial(wizardApi, trial.id);
+
+    const wizard = await (await newContext(browser, app.url)).newPage();
+    await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
+    await wizard.goto(`/trials/${trial.id}`);
+    await wizard.getByRole("button", { name: "Open System Usability Scale (SUS) for the participant" }).click();
+    const link = (await wizard.getByTestId("questionnaire-link-System Usability Scale (SUS)").getAttribute("href"))!;
+    expect(link).toMatch(/\/q\/[\w-]{20,}$/);
+
+    // The participant's device: no account.
+    const tablet = await (await browser.newContext({ viewport: { width: 1024, height: 1366 } })).newPage();
+    await tablet.goto(link);
+    const items = tablet.locator("fieldset");
+    await expect.poll(() => items.count()).toBe(10);
+    for (const [i, value] of ANSWERS.slice(0, 5).entries()) await items.nth(i).getByRole("radio", { name: new RegExp(`: ${value}$`) }).check();
+    await tablet.getByText("Your answers so far are saved.").waitFor();
+    await tablet.reload();
+    await expect.poll(() => items.nth(4).getByRole("radio", { name: /: 3$/ }).isChecked()).toBe(true);
+    for (const [i, value] of ANSWERS.entries()) if (i >= 5) await items.nth(i).getByRole("radio", { name: new RegExp(`: ${value}$`) }).check();
+    await screenshot(tablet, "questionnaire-participant");
+    await tablet.getByRole("button", { name: "Submit answers" }).click();
+    await tablet.getByRole("heading", { name: "Thank you!" }).waitFor();
+    await tablet.goto(link);
+    await tablet.getByText(/already been submitted with this link/).waitFor();
+
+    await researcher.goto(`/trials/${trial.id}/analysis`);
+    await expect.poll(() => researcher.getByTestId("questionnaire-score").textContent()).toBe("Score 60");
+    await screenshot(researcher, "questionnaire-analysis");
+    const csv = await (await researcher.request.get(`/api/studies/${study!.id}/questionnaires`)).text();
+    expect(csv.split("\r\n")).toContain(`P001,${trial.id},System Usability Scale (SUS),1,score,score,60`);
+    const record = JSON.parse((await api.trials.export.query({ trialId: trial.id, format: "json" })).body);
+    expect(record.questionnaires).toMatchObject([{ questionnaire: "System Usability Scale (SUS)", score: { score: 60 } }]);
+  }, 180_000);
+});

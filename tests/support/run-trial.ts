@@ -1,0 +1,25 @@
+// Runs a whole trial over the runtime socket as a wizard would: start, then
+// "next" until the end, choosing the first answer when asked. For tests that
+// need a finished trial rather than to test running one.
+import { expect } from "vitest";
+import type { apiClient } from "./http";
+import { connectTrial } from "./socket";
+
+export async function runWholeTrial(wizard: ReturnType<typeof apiClient>, trialId: string) {
+  const trial = await wizard.trials.get.query({ trialId });
+  const { url, token } = await wizard.trials.socketToken.mutate({ trialId });
+  const socket = await connectTrial(url, token);
+  const question = trial.protocol.steps.flatMap((s) => s.actions).find((a) => a.type === "record_answer")!;
+  const options = question.parameters.options as Array<{ id: string }>;
+  await socket.command("start", { kind: "start" });
+  let completed = false;
+  for (let i = 0; i < 200 && !completed; i++) {
+    const reply = await socket.command(`c${i}`, { kind: "next" });
+    if (String(reply.reason ?? "").startsWith("Record the participant's answer")) await socket.command(`a${i}`, { kind: "answer", actionId: question.id, optionId: options[0]!.id });
+    else if (reply.type === "rejected") await new Promise((r) => setTimeout(r, 150));
+    completed = socket.messages.some((m) => ((m.events as Array<{ type: string }> | undefined) ?? []).some((e) => e.type === "trial.completed"));
+  }
+  socket.close();
+  expect(completed, `the trial did not complete: ${JSON.stringify(socket.messages.slice(-6))}`).toBe(true);
+  return socket.messages;
+}
