@@ -70,9 +70,58 @@ describe.sequential("questionnaires in the browser", () => {
     await researcher.goto(`/trials/${trial.id}/analysis`);
     await expect.poll(() => researcher.getByTestId("questionnaire-score").textContent()).toBe("Score 60");
     await screenshot(researcher, "questionnaire-analysis");
+    await researcher.goto(`/studies/${study!.id}`);
+    await researcher.getByRole("tab", { name: "Trials" }).click();
+    await researcher.getByRole("cell", { name: "System Usability Scale (SUS): 60" }).waitFor();
     const csv = await (await researcher.request.get(`/api/studies/${study!.id}/questionnaires`)).text();
     expect(csv.split("\r\n")).toContain(`P001,${trial.id},System Usability Scale (SUS),1,score,score,60`);
     const record = JSON.parse((await api.trials.export.query({ trialId: trial.id, format: "json" })).body);
     expect(record.questionnaires).toMatchObject([{ questionnaire: "System Usability Scale (SUS)", score: { score: 60 } }]);
+  }, 180_000);
+
+  it("builds a consent form, sends its link ahead, and the participant's agreement is their consent record", async () => {
+    const researcher = await (await newContext(browser, app.url)).newPage();
+    await signInAs(researcher, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await researcher.getByRole("link", { name: /Storytelling and memory/ }).click();
+    await researcher.getByRole("tab", { name: "Questionnaires" }).click();
+    await researcher.getByRole("button", { name: "Build a questionnaire" }).click();
+    await researcher.waitForURL(/\/questionnaires\//);
+    await researcher.getByLabel("Name in the study").fill("Consent form");
+    await researcher.getByLabel("Title the participant sees").fill("Taking part in the storytelling study");
+    await researcher.getByLabel("Kind of question").selectOption("consent");
+    await researcher.getByRole("button", { name: "Add question" }).click();
+    await researcher.getByLabel("Text of question 1").fill("A robot will tell you a short story and ask you about it. We keep your answers under a code, never your name. You may stop at any time.");
+    await researcher.getByLabel("Kind of question").selectOption("number");
+    await researcher.getByRole("button", { name: "Add question" }).click();
+    await researcher.getByLabel("Text of question 2").fill("Your age (optional)");
+    await screenshot(researcher, "questionnaire-builder");
+    await researcher.getByRole("button", { name: "Publish" }).click();
+    await researcher.getByText(/Published version 1/).waitFor();
+
+    await researcher.getByRole("link", { name: "← Study" }).click();
+    await researcher.getByRole("tab", { name: "Participants" }).click();
+    await researcher.getByLabel("Participant code").fill("C900");
+    await researcher.getByRole("button", { name: "Add participant" }).click();
+    await researcher.getByRole("button", { name: "Questionnaire link for C900" }).click();
+    await researcher.getByLabel("Questionnaire", { exact: true }).selectOption({ label: "Consent form" });
+    await researcher.getByRole("button", { name: "Make the link" }).click();
+    const link = (await researcher.getByTestId("sent-link").textContent())!.trim();
+    await researcher.keyboard.press("Escape");
+
+    const phone = await (await browser.newContext({ viewport: { width: 390, height: 844 } })).newPage();
+    await phone.goto(link);
+    await phone.getByText("A robot will tell you a short story").waitFor();
+    await phone.getByRole("button", { name: "Submit answers" }).click();
+    await phone.getByText(/please agree to take part/).waitFor();
+    await phone.getByLabel("I agree to take part").check();
+    await phone.getByLabel("Your age (optional)").fill("34");
+    await screenshot(phone, "questionnaire-consent");
+    await phone.getByRole("button", { name: "Submit answers" }).click();
+    await phone.getByRole("heading", { name: "Thank you!" }).waitFor();
+
+    await researcher.reload();
+    await researcher.getByRole("tab", { name: "Participants" }).click();
+    await expect.poll(() => researcher.getByLabel("Consent of C900").inputValue()).toBe("given");
+    await researcher.getByRole("cell", { name: "Consent form v1" }).waitFor();
   }, 180_000);
 });

@@ -3,6 +3,7 @@ import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
 import { useState, type FormEvent } from "react";
 import { studyRoleMay, type StudyRole } from "@/core/access/policy";
 import type { DemographicField, StudySettings } from "@/core/studies/settings";
+import { SendLinkDialog } from "@/features/questionnaires/send-link-dialog";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Field, Input, NativeSelect } from "@/ui/field";
@@ -41,6 +42,7 @@ export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId:
               {settings.demographics.length > 0 && <Th>Demographics</Th>}
               <Th>Condition</Th>
               <Th>Trials</Th>
+              {manage && <Th className="text-right">Questionnaire</Th>}
             </tr>
           </thead>
           <tbody>
@@ -102,6 +104,11 @@ export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId:
                   )}
                 </Td>
                 <Td>{p.trialCount}</Td>
+                {manage && (
+                  <Td className="text-right">
+                    <SendLinkDialog studyId={studyId} participantId={p.id} code={p.code} />
+                  </Td>
+                )}
               </tr>
             ))}
           </tbody>

@@ -29,6 +29,7 @@ export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: S
               <Th>Participant</Th>
               <Th>Experiment</Th>
               <Th>Wizard</Th>
+              <Th>Scores</Th>
               <Th>Status</Th>
               <Th>Created</Th>
               <Th className="text-right">Open</Th>
@@ -43,6 +44,7 @@ export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: S
                   {t.participantWithdrawn && <div className="text-xs text-red-700">withdrawn: excluded from analysis</div>}
                 </Td>
                 <Td>{t.wizardName ?? "—"}</Td>
+                <Td className="text-xs">{t.scores.map((s) => `${s.name}: ${Number.isInteger(s.score) ? s.score : s.score.toFixed(2)}`).join(" · ") || "—"}</Td>
                 <Td>
                   <Badge tone={STATUS_TONE[t.status]}>{t.status.replace("_", " ")}</Badge>
                 </Td>

@@ -2,6 +2,7 @@ import { TRPCError } from "@trpc/server";
 import { and, asc, desc, eq, sql } from "drizzle-orm";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
+import { studyRoleMay } from "@/core/access/policy";
 import { blindTrial } from "@/core/studies/blinding";
 import type { Database } from "../../db/client";
 import { annotations, experimentVersions, questionnaireLinks, experiments, participants, studyMembers, trialSamples, trials, user } from "../../db/schema";
@@ -12,6 +13,7 @@ import { eventsSince } from "../../trials/event-store";
 import { submitted } from "../../questionnaires/responses";
 import { assertMayTakePart } from "../../studies/consent-gate";
 import { signSocketToken } from "../../trials/socket-token";
+import { qualified } from "../../db/qualified";
 import { guarded, router } from "../trpc";
 import { id } from "../validation";
 
@@ -32,6 +34,15 @@ const columns = {
   wizardName: user.name,
   participantWithdrawn: sql<boolean>`coalesce(${participants.consentStatus} = 'withdrawn', false)`,
 };
+
+/** Each submitted questionnaire's score, for the study's table of trials. */
+const questionnaireScores = sql<Array<{ name: string; score: number }> | null>`(
+  select json_agg(json_build_object('name', q.name, 'score', (r.score->>'score')::float) order by q.name)
+  from questionnaire_responses r
+  join questionnaire_links l on l.id = r.link_id
+  join questionnaire_versions v on v.id = l.version_id
+  join questionnaires q on q.id = v.questionnaire_id
+  where l.trial_id = ${qualified(trials.id)} and r.status = 'submitted' and r.score is not null)`;
 
 /** A withdrawn participant's data leaves analysis and exports; the withdrawal itself stays in the audit log. */
 async function assertNotWithdrawn(db: Database, trialId: string) {
@@ -85,7 +96,7 @@ export const trialsRouter = router({
     .input(z.object({ studyId: id }))
     .query(async ({ ctx, input }) => {
       const rows = await ctx.db
-        .select(columns)
+        .select({ ...columns, scores: questionnaireScores })
         .from(trials)
         .innerJoin(experiments, eq(experiments.id, trials.experimentId))
         .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
@@ -93,7 +104,10 @@ export const trialsRouter = router({
         .leftJoin(user, eq(user.id, trials.wizardId))
         .where(eq(trials.studyId, input.studyId))
         .orderBy(desc(trials.createdAt));
-      return ctx.blinding.conditionsHidden ? rows.map(blindTrial) : rows;
+      // Scores are results: only for those who may read the data, and not under a results blind.
+      const showScores = studyRoleMay(ctx.studyRole!, "data.read") && !ctx.blinding.resultsHidden;
+      const shown = rows.map((r) => ({ ...r, scores: showScores ? (r.scores ?? []) : [] }));
+      return ctx.blinding.conditionsHidden ? shown.map(blindTrial) : shown;
     }),
 
   /** The trial's event log in order: what reports, exports and replays fold. */
