@@ -2,6 +2,7 @@
 // withdrawal taking a participant's data out of analysis and exports,
 // demographics and the consent document's version, and sessions.
 import { eq } from "drizzle-orm";
+import { strFromU8, unzipSync } from "fflate";
 import { afterAll, describe, expect, it } from "vitest";
 import { auditLog } from "../../src/server/db/schema";
 import { freshDatabase } from "../support/db";
@@ -90,6 +91,26 @@ describe("withdrawal", () => {
     expect(await actions(study.id)).toContain("participant.consent.withdrawn");
     await owner.studies.update({ studyId: study.id, settings: { requireConsent: false } });
     await expect(owner.trials.create({ versionId: version.id, participantId: participant.id })).rejects.toMatchObject({ code: "PRECONDITION_FAILED", message: expect.stringMatching(/has withdrawn/) });
+  });
+});
+
+describe("the study archive", () => {
+  it("holds the design, every trial's record and events, and the answers, without withdrawn participants", async () => {
+    const { study, version, trial } = await runningStudy();
+    const other = await owner.participants.create({ studyId: study.id, code: "P002", consentStatus: "given", consentDate: new Date() });
+    const withdrawnTrial = await owner.trials.create({ versionId: version.id, participantId: other.id });
+    await owner.participants.update({ participantId: other.id, consentStatus: "withdrawn" });
+    const archive = await owner.studies.exportArchive({ studyId: study.id });
+    expect(archive).toMatchObject({ filename: "fixture-study.zip", contentType: "application/zip" });
+    const files = unzipSync(archive.body);
+    expect(Object.keys(files).sort()).toEqual(["README.txt", "questionnaire-answers.csv", "study.json", `trials/${trial.id}-events.csv`, `trials/${trial.id}.json`]);
+    const content = JSON.parse(strFromU8(files["study.json"]!));
+    expect(content).toMatchObject({ participants: [{ code: "P001" }], withdrawnParticipants: 1, experiments: [{ name: "Story", versions: [{ version: 1 }] }] });
+    expect(JSON.stringify(content)).not.toContain("P002");
+    expect(Object.keys(files).join()).not.toContain(withdrawnTrial.id);
+    expect(JSON.parse(strFromU8(files[`trials/${trial.id}.json`]!))).toMatchObject({ protocol: { steps: [{ name: "Hello" }] }, questionnaires: [] });
+    await owner.studies.update({ studyId: study.id, settings: { blinding: { conditionsFromWizards: false, resultsUntilComplete: true } } });
+    await expect(f.api("researcher").studies.exportArchive({ studyId: study.id })).rejects.toMatchObject({ code: "FORBIDDEN" });
   });
 });
 

@@ -19,6 +19,11 @@ export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: S
     <div className="space-y-6">
       {/* A blinded wizard starts trials from their sessions: choosing an experiment would reveal the condition. */}
       {studyRoleMay(role, "trial.create") && !blinded && <NewTrial studyId={studyId} onCreated={refresh} />}
+      {studyRoleMay(role, "data.read") && (
+        <a className="inline-block text-sm font-medium text-brand-600 hover:underline" href={`/api/studies/${studyId}/export`}>
+          Download the whole study (zip: design, every trial's record and events, questionnaire answers)
+        </a>
+      )}
       {trials.isPending && <Spinner />}
       <Problem error={trials.error} />
       {trials.data?.length === 0 && <EmptyState title="No trials yet." />}

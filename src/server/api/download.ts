@@ -7,7 +7,7 @@ import { appRouter } from "./root";
 
 type Caller = ReturnType<typeof appRouter.createCaller>;
 
-export async function download(req: Request, file: (caller: Caller) => Promise<{ body: string; contentType: string; filename: string }>): Promise<Response> {
+export async function download(req: Request, file: (caller: Caller) => Promise<{ body: string | Uint8Array<ArrayBuffer>; contentType: string; filename: string }>): Promise<Response> {
   try {
     const { body, contentType, filename } = await file(appRouter.createCaller(await contextFromHeaders(req.headers)));
     return new Response(body, { headers: { "content-type": contentType, "content-disposition": `attachment; filename="${filename}"` } });

@@ -4,6 +4,7 @@ import { and, desc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
 import { readSettings, studySettingsChangeSchema, type StudySettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
+import { studyArchive } from "../../studies/archive";
 import { experiments, participants, studies, studyMembers, trials } from "../../db/schema";
 import { qualified } from "../../db/qualified";
 import { guarded, router } from "../trpc";
@@ -95,6 +96,11 @@ export const studiesRouter = router({
         return study!;
       });
     }),
+
+  /** Everything of the study as one zip, for the lab's archive or a paper's data. */
+  exportArchive: guarded("data.read")
+    .input(z.object({ studyId: id }))
+    .query(({ ctx, input }) => studyArchive(ctx.db, input.studyId)),
 
   delete: guarded("study.delete")
     .input(z.object({ studyId: id, confirmTitle: z.string() }))

@@ -5,12 +5,11 @@ import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
 import { blindTrial } from "@/core/studies/blinding";
 import type { Database } from "../../db/client";
-import { annotations, experimentVersions, questionnaireLinks, experiments, participants, studyMembers, trialSamples, trials, user } from "../../db/schema";
+import { annotations, experimentVersions, experiments, participants, studyMembers, trialSamples, trials, user } from "../../db/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "../../experiments/publish";
-import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
 import { eventsSince } from "../../trials/event-store";
-import { submitted } from "../../questionnaires/responses";
+import { trialFile } from "../../trials/files";
 import { assertMayTakePart } from "../../studies/consent-gate";
 import { signSocketToken } from "../../trials/socket-token";
 import { qualified } from "../../db/qualified";
@@ -135,26 +134,7 @@ export const trialsRouter = router({
     .input(z.object({ trialId: id, format: z.enum(["csv", "json"], { error: "must be csv or json" }) }))
     .query(async ({ ctx, input }) => {
       await assertNotWithdrawn(ctx.db, input.trialId);
-      const [trial] = await ctx.db.select().from(trials).where(eq(trials.id, input.trialId));
-      const events = await eventsSince(ctx.db, input.trialId);
-      const name = `trial-${input.trialId}`;
-      if (input.format === "csv") return { filename: `${name}-events.csv`, contentType: "text/csv; charset=utf-8", body: eventsCsv(input.trialId, events) };
-      const [version] = trial!.versionId ? await ctx.db.select().from(experimentVersions).where(eq(experimentVersions.id, trial!.versionId)) : [];
-      const marked = await ctx.db
-        .select({ relMs: annotations.relMs, label: annotations.label, note: annotations.note, authorName: user.name })
-        .from(annotations)
-        .leftJoin(user, eq(user.id, annotations.authorId))
-        .where(eq(annotations.trialId, input.trialId))
-        .orderBy(asc(annotations.relMs));
-      const protocol = (version?.snapshot ?? trial!.rehearsalSnapshot) as ProtocolSnapshot;
-      const record = trialRecordJson({
-        trial: { ...trial, rehearsalSnapshot: undefined, version: version ? { id: version.id, number: version.version, hash: version.hash, pluginId: version.pluginId, pluginVersion: version.pluginVersion } : null },
-        protocol,
-        events,
-        annotations: marked,
-        questionnaires: await submitted(ctx.db, eq(questionnaireLinks.trialId, input.trialId)),
-      });
-      return { filename: `${name}.json`, contentType: "application/json", body: record };
+      return trialFile(ctx.db, input.trialId, input.format);
     }),
 
   /** Robot state logged during the trial, in time order. */

@@ -1,0 +1,32 @@
+// A trial as files: its events as tidy CSV, or its full record as JSON (the
+// protocol version embedded, events, marked moments, questionnaires). The
+// trial's download and the study's archive both take them from here.
+import { asc, eq } from "drizzle-orm";
+import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
+import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
+import type { Database } from "../db/client";
+import { annotations, experimentVersions, questionnaireLinks, trials, user } from "../db/schema";
+import { submitted } from "../questionnaires/responses";
+import { eventsSince } from "./event-store";
+
+export async function trialFile(db: Database, trialId: string, format: "csv" | "json") {
+  const [trial] = await db.select().from(trials).where(eq(trials.id, trialId));
+  const events = await eventsSince(db, trialId);
+  const name = `trial-${trialId}`;
+  if (format === "csv") return { filename: `${name}-events.csv`, contentType: "text/csv; charset=utf-8", body: eventsCsv(trialId, events) };
+  const [version] = trial!.versionId ? await db.select().from(experimentVersions).where(eq(experimentVersions.id, trial!.versionId)) : [];
+  const marked = await db
+    .select({ relMs: annotations.relMs, label: annotations.label, note: annotations.note, authorName: user.name })
+    .from(annotations)
+    .leftJoin(user, eq(user.id, annotations.authorId))
+    .where(eq(annotations.trialId, trialId))
+    .orderBy(asc(annotations.relMs));
+  const record = trialRecordJson({
+    trial: { ...trial, rehearsalSnapshot: undefined, version: version ? { id: version.id, number: version.version, hash: version.hash, pluginId: version.pluginId, pluginVersion: version.pluginVersion } : null },
+    protocol: (version?.snapshot ?? trial!.rehearsalSnapshot) as ProtocolSnapshot,
+    events,
+    annotations: marked,
+    questionnaires: await submitted(db, eq(questionnaireLinks.trialId, trialId)),
+  });
+  return { filename: `${name}.json`, contentType: "application/json", body: record };
+}
