@@ -69,6 +69,7 @@ const MATRIX: Record<string, [Caller[], Input]> = {
   "studies.get": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
   "studies.create": [CREATORS, () => ({ title: "New" })],
   "studies.update": [OWNER, (_f, b) => ({ studyId: b.study.id, description: "changed" })],
+  "studies.figures": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
   "studies.exportArchive": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
   "studies.delete": [OWNER, async (f) => ({ studyId: (await f.newStudy("Doomed")).id, confirmTitle: "Doomed" })],
   "members.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],

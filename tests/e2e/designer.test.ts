@@ -164,6 +164,8 @@ describe.sequential("the experiment designer, in the browser", () => {
     await page.goto(designerUrl);
     const intro = page.locator('[data-step="Introduction"] [data-action]');
     await expect.poll(() => intro.count()).toBe(2);
+    // The keys work once the page knows the researcher may edit: the library shows it.
+    await page.getByRole("region", { name: "Block library" }).waitFor();
     await page.locator('[data-step="Introduction"] [data-action]').nth(1).focus();
     await page.keyboard.press("Enter");
     await page.keyboard.press("Alt+ArrowUp");

@@ -107,5 +107,18 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
     const everything = seen.join("\n");
     expect([...CONDITIONS, "Interactive Storyteller", "voice only"].filter((name) => everything.includes(name))).toEqual([]);
     await wizard.context().close();
+
+    // The study level: four finished trials, their fidelity, each step's timing.
+    const results = await (await newContext(browser, app.url)).newPage();
+    await signInAs(results, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await results.getByRole("link", { name: /Storytelling and memory/ }).click();
+    await results.getByRole("tab", { name: "Results" }).click();
+    await results.getByText("4 completed / 4").waitFor();
+    const trialsTable = results.getByRole("region", { name: "Trials" });
+    for (const code of CODES) await trialsTable.getByRole("link", { name: code }).waitFor();
+    await expect.poll(async () => (await trialsTable.getByRole("cell", { name: new RegExp(`^(${CONDITIONS.join("|")})$`) }).allTextContents()).length).toBe(4);
+    await results.getByRole("img", { name: /Median time in each step/ }).getByText("Introduction").waitFor();
+    await screenshot(results, "study-results");
+    await results.context().close();
   }, 300_000);
 });

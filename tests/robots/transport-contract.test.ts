@@ -147,7 +147,7 @@ describe.each([
 
   it("fails an action at once while the robot is away, but holds a retryable one until the robot is back", async () => {
     expect((await rig.transport.dispatch({ ...rig.say, retryable: false, timeout: 5000 }, { text: "not now" })).status).toBe("failed");
-    const held = rig.transport.dispatch({ ...rig.say, retryable: true, timeout: 8000 }, { text: "when you are back" });
+    const held = rig.transport.dispatch({ ...rig.say, retryable: true, timeout: 20_000 }, { text: "when you are back" });
     await new Promise((r) => setTimeout(r, 400));
     await rig.restore();
     expect(await held).toMatchObject({ status: "completed" });

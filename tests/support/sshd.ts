@@ -49,7 +49,8 @@ export async function startSshd(): Promise<TestSshd> {
       "PermitRootLogin prohibit-password",
       "UsePAM no",
       "StrictModes no",
-      `SetEnv PATH=${bin}:/usr/bin:/bin`,
+      // A robot's shell, not this machine's: no login scripts (a ~/.bashrc here runs pyenv, which can hang on a stale lock).
+      `SetEnv PATH=${bin}:/usr/bin:/bin HOME=${dir}`,
     ].join("\n"),
   );
   spawnSync("mkdir", ["-p", "/run/sshd"]);

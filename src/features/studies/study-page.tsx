@@ -2,6 +2,7 @@
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
 import { useState } from "react";
+import { studyRoleMay } from "@/core/access/policy";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, ROLE_TONE, Spinner, STATUS_TONE } from "@/ui/surface";
@@ -12,6 +13,7 @@ import { MembersTab } from "./members-tab";
 import { OverviewTab } from "./overview-tab";
 import { ParticipantsTab } from "./participants-tab";
 import { QuestionnairesTab } from "./questionnaires-tab";
+import { ResultsTab } from "./results-tab";
 import { SessionsTab } from "./sessions-tab";
 import { TrialsTab } from "./trials-tab";
 
@@ -55,6 +57,7 @@ export function StudyPage({ studyId }: { studyId: string }) {
           { id: "participants", label: "Participants", content: <ParticipantsTab studyId={studyId} role={role} settings={s.settings} blinded={blinded} /> },
           { id: "sessions", label: "Sessions", content: <SessionsTab studyId={studyId} role={role} /> },
           { id: "questionnaires", label: "Questionnaires", content: <QuestionnairesTab studyId={studyId} role={role} /> },
+          ...(studyRoleMay(role, "data.read") ? [{ id: "results", label: "Results", content: <ResultsTab studyId={studyId} /> }] : []),
           { id: "trials", label: "Trials", content: <TrialsTab studyId={studyId} role={role} blinded={blinded} /> },
         ]}
       />

@@ -52,7 +52,8 @@ export class SshTransport implements Transport {
     // A retryable action waits for the robot to come back within its timeout; any other fails at once.
     const client = action.retryable ? await untilDeadline(started + timeoutMs, () => this.connection()) : await this.connection();
     if (!client) return action.retryable ? { status: "timed_out", afterMs: Date.now() - started } : { status: "failed", reason: "robot not reachable over SSH" };
-    return this.run(client, built.command, Math.max(1, started + timeoutMs - Date.now()), started);
+    // The timeout is the command's: a slow first handshake does not eat into it.
+    return this.run(client, built.command, timeoutMs, Date.now());
   }
 
   /** SSH carries commands, not robot state: state comes over rosbridge. */

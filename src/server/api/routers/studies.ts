@@ -5,6 +5,7 @@ import { z } from "zod";
 import { readSettings, studySettingsChangeSchema, type StudySettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { studyArchive } from "../../studies/archive";
+import { studyFigures } from "../../studies/summary";
 import { experiments, participants, studies, studyMembers, trials } from "../../db/schema";
 import { qualified } from "../../db/qualified";
 import { guarded, router } from "../trpc";
@@ -96,6 +97,11 @@ export const studiesRouter = router({
         return study!;
       });
     }),
+
+  /** Fidelity across the study's finished trials: the table, each step's timing, the consistency. */
+  figures: guarded("data.read")
+    .input(z.object({ studyId: id }))
+    .query(({ ctx, input }) => studyFigures(ctx.db, input.studyId)),
 
   /** Everything of the study as one zip, for the lab's archive or a paper's data. */
   exportArchive: guarded("data.read")
