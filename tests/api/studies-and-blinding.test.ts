@@ -103,7 +103,7 @@ describe("the study archive", () => {
     const archive = await owner.studies.exportArchive({ studyId: study.id });
     expect(archive).toMatchObject({ filename: "fixture-study.zip", contentType: "application/zip" });
     const files = unzipSync(archive.body);
-    expect(Object.keys(files).sort()).toEqual(["README.txt", "questionnaire-answers.csv", "study.json", `trials/${trial.id}-events.csv`, `trials/${trial.id}.json`]);
+    expect(Object.keys(files).sort()).toEqual(["README.txt", "questionnaire-answers.csv", "study.json", `trials/${trial.id}-events.csv`, `trials/${trial.id}.eaf`, `trials/${trial.id}.json`]);
     const content = JSON.parse(strFromU8(files["study.json"]!));
     expect(content).toMatchObject({ participants: [{ code: "P001" }], withdrawnParticipants: 1, experiments: [{ name: "Story", versions: [{ version: 1 }] }] });
     expect(JSON.stringify(content)).not.toContain("P002");

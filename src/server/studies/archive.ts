@@ -17,6 +17,7 @@ study.json                  the study, its settings (assignment seed included), 
 trials/<id>.json            each trial's full record: protocol version, events, marked
                             moments, questionnaires
 trials/<id>-events.csv      each trial's events, one row per event (RFC 4180)
+trials/<id>.eaf             each trial as an ELAN document: steps, actions, deviations, marked moments
 questionnaire-answers.csv   every submitted answer: one row per participant x item, then scores
 
 Rehearsals are not included. Participants who withdrew are left out, as are their trials
@@ -68,7 +69,7 @@ export async function studyArchive(db: Database, studyId: string) {
     "questionnaire-answers.csv": strToU8(answersCsv(await submitted(db, eq(questionnaireLinks.studyId, studyId)))),
   };
   for (const { id } of trialRows) {
-    for (const format of ["json", "csv"] as const) {
+    for (const format of ["json", "csv", "eaf"] as const) {
       const file = await trialFile(db, id, format);
       files[`trials/${file.filename.replace(/^trial-/, "")}`] = strToU8(file.body);
     }

@@ -1,15 +1,18 @@
-// A trial as files: its events as tidy CSV, or its full record as JSON (the
-// protocol version embedded, events, marked moments, questionnaires). The
+// A trial as files: its events as tidy CSV, its full record as JSON (the
+// protocol version embedded, events, marked moments, questionnaires), or an
+// ELAN document for video coding. The
 // trial's download and the study's archive both take them from here.
 import { asc, eq } from "drizzle-orm";
+import { elanDocument } from "@/core/analysis/elan";
 import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
+import type { TrialEvent } from "@/core/trial";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import type { Database } from "../db/client";
 import { annotations, experimentVersions, questionnaireLinks, trials, user } from "../db/schema";
 import { submitted } from "../questionnaires/responses";
 import { eventsSince } from "./event-store";
 
-export async function trialFile(db: Database, trialId: string, format: "csv" | "json") {
+export async function trialFile(db: Database, trialId: string, format: "csv" | "json" | "eaf") {
   const [trial] = await db.select().from(trials).where(eq(trials.id, trialId));
   const events = await eventsSince(db, trialId);
   const name = `trial-${trialId}`;
@@ -21,9 +24,14 @@ export async function trialFile(db: Database, trialId: string, format: "csv" | "
     .leftJoin(user, eq(user.id, annotations.authorId))
     .where(eq(annotations.trialId, trialId))
     .orderBy(asc(annotations.relMs));
+  const protocol = (version?.snapshot ?? trial!.rehearsalSnapshot) as ProtocolSnapshot;
+  if (format === "eaf") {
+    const body = elanDocument({ protocol, events: events as unknown as TrialEvent[], annotations: marked, date: (trial!.t0 ?? trial!.createdAt).toISOString() });
+    return { filename: `${name}.eaf`, contentType: "application/xml; charset=utf-8", body };
+  }
   const record = trialRecordJson({
     trial: { ...trial, rehearsalSnapshot: undefined, version: version ? { id: version.id, number: version.version, hash: version.hash, pluginId: version.pluginId, pluginVersion: version.pluginVersion } : null },
-    protocol: (version?.snapshot ?? trial!.rehearsalSnapshot) as ProtocolSnapshot,
+    protocol,
     events,
     annotations: marked,
     questionnaires: await submitted(db, eq(questionnaireLinks.trialId, trialId)),

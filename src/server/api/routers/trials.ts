@@ -131,7 +131,7 @@ export const trialsRouter = router({
 
   /** The trial as a file: its events as tidy CSV, or the full record (protocol embedded) as JSON. */
   export: guarded("data.read")
-    .input(z.object({ trialId: id, format: z.enum(["csv", "json"], { error: "must be csv or json" }) }))
+    .input(z.object({ trialId: id, format: z.enum(["csv", "json", "eaf"], { error: "must be csv, json or eaf" }) }))
     .query(async ({ ctx, input }) => {
       await assertNotWithdrawn(ctx.db, input.trialId);
       return trialFile(ctx.db, input.trialId, input.format);

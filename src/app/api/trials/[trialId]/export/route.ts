@@ -2,6 +2,7 @@ import { download } from "@/server/api/download";
 
 export async function GET(req: Request, { params }: { params: Promise<{ trialId: string }> }) {
   const { trialId } = await params;
-  const format = new URL(req.url).searchParams.get("format") === "csv" ? "csv" : "json";
+  const asked = new URL(req.url).searchParams.get("format");
+  const format = asked === "csv" || asked === "eaf" ? asked : "json";
   return download(req, (api) => api.trials.export({ trialId, format }));
 }

@@ -1,0 +1,72 @@
+// A trial as an ELAN annotation document (EAF 3.0), so video coders can open
+// the trial's steps, actions, deviations and marked moments beside the video
+// in the tool they already use. Times are milliseconds from the trial's t0.
+import type { TrialEvent, TrialProtocol } from "../trial";
+import { fidelityReport } from "./fidelity";
+
+export interface ElanInput {
+  protocol: TrialProtocol;
+  events: TrialEvent[];
+  annotations: Array<{ relMs: number; label: string; note: string }>;
+  /** The recording the times are relative to, when there is one. */
+  media?: { url: string; mimeType: string; offsetMs: number };
+  /** When the trial ran (ISO 8601): the document's date. */
+  date: string;
+}
+
+type Span = { start: number; end: number; value: string };
+
+const MOMENT_MS = 1000;
+
+const escapeXml = (text: string) => text.replace(/[<>&'"]/g, (c) => ({ "<": "&lt;", ">": "&gt;", "&": "&amp;", "'": "&apos;", '"': "&quot;" })[c]!);
+
+/** ELAN wants every annotation to last: an instant becomes a millisecond. */
+const span = (start: number, end: number | null, value: string): Span => ({ start, end: Math.max(start + 1, end ?? start + 1), value });
+
+function tiers(input: ElanInput): Record<string, Span[]> {
+  const report = fidelityReport(input.protocol, input.events);
+  const lastMs = Math.max(0, ...input.events.map((e) => e.relMs ?? 0));
+  const steps = report.steps.filter((s) => s.enteredMs !== null).map((s) => span(s.enteredMs!, s.leftMs ?? lastMs, s.name));
+  const actions = report.actions
+    .filter((a) => a.requestedMs !== null)
+    .map((a) => {
+      const text = input.protocol.steps.flatMap((s) => s.actions).find((x) => x.id === a.actionId)?.parameters.text;
+      return span(a.requestedMs!, a.requestedMs! + (a.durationMs ?? 0), typeof text === "string" ? `${a.name}: ${text}` : a.name);
+    });
+  const unscripted = report.unscripted.filter((u) => u.requestedMs !== null).map((u) => span(u.requestedMs!, null, `unscripted ${u.type}`));
+  const deviations = input.events.filter((e) => e.deviation && e.relMs !== null).map((e) => span(e.relMs!, null, `${e.deviation!.replace("_", " ")}: ${e.type}`));
+  const moments = input.annotations.map((m) => span(m.relMs, m.relMs + MOMENT_MS, m.note ? `${m.label}: ${m.note}` : m.label));
+  return { Step: steps, Action: [...actions, ...unscripted].sort((a, b) => a.start - b.start), Deviation: deviations, "Marked moment": moments };
+}
+
+export function elanDocument(input: ElanInput): string {
+  const byTier = tiers(input);
+  const shift = input.media?.offsetMs ?? 0;
+  const slots: number[] = [];
+  const slot = (ms: number) => {
+    slots.push(ms + shift);
+    return `ts${slots.length}`;
+  };
+  let nextId = 0;
+  const tierXml = Object.entries(byTier).map(([name, spans]) => {
+    const body = spans
+      .map((s) => {
+        const [a, b] = [slot(s.start), slot(s.end)];
+        return `      <ANNOTATION><ALIGNABLE_ANNOTATION ANNOTATION_ID="a${++nextId}" TIME_SLOT_REF1="${a}" TIME_SLOT_REF2="${b}"><ANNOTATION_VALUE>${escapeXml(s.value)}</ANNOTATION_VALUE></ALIGNABLE_ANNOTATION></ANNOTATION>`;
+      })
+      .join("\n");
+    return `  <TIER TIER_ID="${escapeXml(name)}" LINGUISTIC_TYPE_REF="default-lt">\n${body}\n  </TIER>`;
+  });
+  const media = input.media ? `\n    <MEDIA_DESCRIPTOR MEDIA_URL="${escapeXml(input.media.url)}" MIME_TYPE="${escapeXml(input.media.mimeType)}"/>` : "";
+  return `<?xml version="1.0" encoding="UTF-8"?>
+<ANNOTATION_DOCUMENT AUTHOR="HRIStudio" DATE="${escapeXml(input.date)}" FORMAT="3.0" VERSION="3.0" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" xsi:noNamespaceSchemaLocation="http://www.mpi.nl/tools/elan/EAFv3.0.xsd">
+  <HEADER MEDIA_FILE="" TIME_UNITS="milliseconds">${media}
+  </HEADER>
+  <TIME_ORDER>
+${slots.map((ms, i) => `    <TIME_SLOT TIME_SLOT_ID="ts${i + 1}" TIME_VALUE="${Math.round(ms)}"/>`).join("\n")}
+  </TIME_ORDER>
+${tierXml.join("\n")}
+  <LINGUISTIC_TYPE LINGUISTIC_TYPE_ID="default-lt" TIME_ALIGNABLE="true" GRAPHIC_REFERENCES="false"/>
+</ANNOTATION_DOCUMENT>
+`;
+}

@@ -1,0 +1,70 @@
+// The ELAN export read back by pympi, the reference Python library for ELAN
+// files: what a video coder's tools will see. pympi is installed from PyPI
+// into .tmp/python (pinned), never into the machine's Python.
+import { spawnSync } from "node:child_process";
+import { mkdirSync, writeFileSync } from "node:fs";
+import { join, resolve } from "node:path";
+import { beforeAll, describe, expect, it } from "vitest";
+import { elanDocument } from "../../src/core/analysis/elan";
+import { simulate, type Command, type TrialProtocol } from "../../src/core/trial";
+import { STORYTELLER_STEPS } from "../../src/server/seed/storyteller";
+
+const root = resolve(import.meta.dirname, "..", "..");
+const target = join(root, ".tmp", "python");
+const python = (args: string[]) => spawnSync("python3", args, { encoding: "utf8", env: { ...process.env, PYTHONPATH: target }, timeout: 120_000 });
+
+const protocol: TrialProtocol = {
+  steps: STORYTELLER_STEPS.map((s) => ({
+    id: s.key,
+    name: s.name,
+    actions: s.actions.map((a, i) => {
+      const targets = a.parameters.targets as Record<string, string> | undefined;
+      return { id: `${s.key}-${i}`, type: a.type, name: a.name, parallelGroup: a.parallelGroup ?? null, parameters: targets ? { targets: Object.fromEntries(Object.entries(targets).map(([k, v]) => [k, v.slice(1)])) } : a.parameters };
+    }),
+  })),
+};
+const done = (...ids: string[]): Command[] => ids.flatMap((actionId) => [{ kind: "dispatched", actionId }, { kind: "completed", actionId }] as Command[]);
+const run: Command[] = [
+  { kind: "start" },
+  { kind: "next" },
+  ...done("introduction-0", "introduction-1"),
+  { kind: "next" },
+  // The narrative gesture skipped by the wizard: a deviation.
+  { kind: "skip", actionId: "story-1" },
+  { kind: "next" },
+  ...done("story-0"),
+  { kind: "next" },
+  { kind: "next" },
+  ...done("recall-0"),
+  { kind: "next" },
+  ...done("recall-1"),
+  { kind: "answer", actionId: "recall-2", optionId: "correct" },
+  { kind: "next" },
+  ...done("response-correct-0", "response-correct-1"),
+  { kind: "next" },
+];
+
+describe("the ELAN export", () => {
+  beforeAll(() => {
+    if (python(["-c", "import pympi"]).status === 0) return;
+    mkdirSync(target, { recursive: true });
+    const install = python(["-m", "pip", "install", "--quiet", "--disable-pip-version-check", "--target", target, "pympi-ling==1.71"]);
+    if (install.status !== 0) throw new Error(`Could not install pympi-ling from PyPI: ${install.stderr}`);
+  }, 180_000);
+
+  it("opens in pympi with the trial's steps, actions, deviations and marked moments on their times", () => {
+    const log = simulate(protocol, run, (i) => i * 250).log;
+    const eaf = elanDocument({ protocol, events: log, annotations: [{ relMs: 1200, label: `She said "wow" <laughs> & smiles`, note: "" }], date: "2026-11-23T10:00:00Z" });
+    const file = join(root, ".tmp", "storyteller.eaf");
+    writeFileSync(file, eaf);
+    const read = python(["-c", "import json,sys,pympi\neaf=pympi.Elan.Eaf(sys.argv[1])\nprint(json.dumps({t: sorted(eaf.get_annotation_data_for_tier(t)) for t in eaf.get_tier_names()}))", file]);
+    expect(read.stderr).toBe("");
+    const tiers = JSON.parse(read.stdout) as Record<string, Array<[number, number, string]>>;
+    expect(Object.keys(tiers).sort()).toEqual(["Action", "Deviation", "Marked moment", "Step"]);
+    expect(tiers.Step!.map((s) => s[2])).toEqual(["Introduction", "Story", "Recall question", "Response — correct"]);
+    expect(tiers.Step!.every(([start, end]) => end > start)).toBe(true);
+    expect(tiers.Action!.map((a) => a[2])).toContain("Question: What color was the rock Kai found?");
+    expect(tiers.Deviation).toEqual([[expect.any(Number), expect.any(Number), "skipped: action.skipped"]]);
+    expect(tiers["Marked moment"]).toEqual([[1200, 2200, `She said "wow" <laughs> & smiles`]]);
+  });
+});
