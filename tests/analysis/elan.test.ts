@@ -1,17 +1,15 @@
 // The ELAN export read back by pympi, the reference Python library for ELAN
 // files: what a video coder's tools will see. pympi is installed from PyPI
 // into .tmp/python (pinned), never into the machine's Python.
-import { spawnSync } from "node:child_process";
-import { mkdirSync, writeFileSync } from "node:fs";
+import { writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { beforeAll, describe, expect, it } from "vitest";
 import { elanDocument } from "../../src/core/analysis/elan";
 import { simulate, type Command, type TrialProtocol } from "../../src/core/trial";
 import { STORYTELLER_STEPS } from "../../src/server/seed/storyteller";
+import { ensurePython, python } from "../support/python";
 
 const root = resolve(import.meta.dirname, "..", "..");
-const target = join(root, ".tmp", "python");
-const python = (args: string[]) => spawnSync("python3", args, { encoding: "utf8", env: { ...process.env, PYTHONPATH: target }, timeout: 120_000 });
 
 const protocol: TrialProtocol = {
   steps: STORYTELLER_STEPS.map((s) => ({
@@ -45,12 +43,7 @@ const run: Command[] = [
 ];
 
 describe("the ELAN export", () => {
-  beforeAll(() => {
-    if (python(["-c", "import pympi"]).status === 0) return;
-    mkdirSync(target, { recursive: true });
-    const install = python(["-m", "pip", "install", "--quiet", "--disable-pip-version-check", "--target", target, "pympi-ling==1.71"]);
-    if (install.status !== 0) throw new Error(`Could not install pympi-ling from PyPI: ${install.stderr}`);
-  }, 180_000);
+  beforeAll(() => ensurePython("pympi", "pympi-ling==1.71"), 300_000);
 
   it("opens in pympi with the trial's steps, actions, deviations and marked moments on their times", () => {
     const log = simulate(protocol, run, (i) => i * 250).log;

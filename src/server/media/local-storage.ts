@@ -1,0 +1,50 @@
+// Media in a folder on the server (under HRI_DATA_DIR by default). A write
+// goes to a temporary file, is flushed to disk, then renamed into place: a
+// crash leaves the old bytes or the new ones, never half of either.
+import { mkdir, open, readdir, readFile, rename, rm } from "node:fs/promises";
+import { dirname, join } from "node:path";
+import { checkKey, type MediaStorage } from "./storage";
+
+export class LocalStorage implements MediaStorage {
+  constructor(private readonly root: string) {}
+
+  async put(key: string, data: Uint8Array) {
+    const file = join(this.root, checkKey(key));
+    await mkdir(dirname(file), { recursive: true });
+    const temporary = `${file}.${process.pid}.${Date.now()}.part`;
+    const handle = await open(temporary, "w");
+    try {
+      await handle.writeFile(data);
+      await handle.sync();
+    } finally {
+      await handle.close();
+    }
+    await rename(temporary, file);
+  }
+
+  async get(key: string) {
+    try {
+      return await readFile(join(this.root, checkKey(key)));
+    } catch (error) {
+      if ((error as NodeJS.ErrnoException).code === "ENOENT") return null;
+      throw error;
+    }
+  }
+
+  async list(prefix: string) {
+    const base = prefix.replace(/\/$/, "");
+    if (base) checkKey(base);
+    const entries = await readdir(join(this.root, base), { recursive: true, withFileTypes: true }).catch((error: NodeJS.ErrnoException) => {
+      if (error.code === "ENOENT") return [];
+      throw error;
+    });
+    return entries
+      .filter((e) => e.isFile() && !e.name.endsWith(".part"))
+      .map((e) => join(e.parentPath, e.name).slice(this.root.length + 1))
+      .sort();
+  }
+
+  async remove(key: string) {
+    await rm(join(this.root, checkKey(key)), { force: true });
+  }
+}

@@ -1,0 +1,23 @@
+// Where recordings live: a local folder by default, MinIO or any S3-compatible
+// server when configured. One interface, one contract test suite for both.
+// Keys are relative paths of safe characters; nothing can climb out.
+
+export interface MediaStorage {
+  /** Stores bytes under a key, replacing what was there; durable when it resolves. */
+  put(key: string, data: Uint8Array, contentType: string): Promise<void>;
+  /** The bytes under a key, or null when there are none. */
+  get(key: string): Promise<Buffer | null>;
+  /** Keys under a prefix, in order. */
+  list(prefix: string): Promise<string[]>;
+  remove(key: string): Promise<void>;
+}
+
+const SAFE_KEY = /^[A-Za-z0-9][A-Za-z0-9._-]*(\/[A-Za-z0-9][A-Za-z0-9._-]*)*$/;
+
+/** Refuses a key that could escape the storage root or name something odd, saying which. */
+export function checkKey(key: string): string {
+  if (key.length > 500 || !SAFE_KEY.test(key) || key.split("/").some((part) => part === "." || part === "..")) {
+    throw new Error(`"${key.slice(0, 80)}" is not a valid media key (letters, digits, ".", "_", "-" in parts separated by "/")`);
+  }
+  return key;
+}
