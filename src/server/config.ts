@@ -24,6 +24,14 @@ const schema = z.object({
   HRI_ROBOT_SSH_KEY_FILE: z.string().optional(),
   // The REST API of a robot whose plugin uses the HTTP transport (default: the plugin's httpBaseUrl).
   HRI_ROBOT_HTTP_URL: z.string().url().optional(),
+  // Recordings: a folder (default <HRI_DATA_DIR>/media), or MinIO/S3 when HRI_MEDIA_S3_URL is set.
+  HRI_MEDIA_DIR: z.string().optional(),
+  HRI_MEDIA_S3_URL: z.string().url().optional(),
+  HRI_MEDIA_S3_BUCKET: z.string().default("hristudio-media"),
+  HRI_MEDIA_S3_ACCESS_KEY: z.string().optional(),
+  HRI_MEDIA_S3_SECRET_KEY: z.string().optional(),
+  // The largest recording accepted, in MB.
+  HRI_MEDIA_MAX_MB: z.coerce.number().int().min(1).default(4096),
   HRI_SIMULATOR_PORT: z.coerce.number().int().min(0).max(65535).default(9090),
   BETTER_AUTH_SECRET: z.string().min(32, "must be at least 32 characters").optional(),
   BETTER_AUTH_URL: z.string().url().optional(),

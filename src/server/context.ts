@@ -2,6 +2,7 @@
 import { readConfig } from "./config";
 import { createAuth, type Auth } from "./auth/auth";
 import { createDatabase, type Database } from "./db/client";
+import { mediaStorage } from "./media";
 import type { Context, SessionUser } from "./api/trpc";
 import { SYSTEM_ROLES, type SystemRole } from "@/core/access/policy";
 
@@ -10,6 +11,7 @@ interface Server {
   auth: Auth;
   secret: string;
   runtimeUrl: string;
+  media: Context["media"];
 }
 
 const globalForServer = globalThis as unknown as { hriServer?: Server };
@@ -28,7 +30,8 @@ export function server(): Server {
     signInPerMinute: config.HRI_SIGNIN_PER_MINUTE,
   });
   const runtimeUrl = config.HRI_RUNTIME_URL ?? `ws://${config.HOST === "0.0.0.0" ? "localhost" : config.HOST}:${config.HRI_RUNTIME_PORT}`;
-  globalForServer.hriServer = { db, auth, secret: config.BETTER_AUTH_SECRET, runtimeUrl };
+  const media = { storage: mediaStorage(config), maxBytes: config.HRI_MEDIA_MAX_MB * 1024 * 1024 };
+  globalForServer.hriServer = { db, auth, secret: config.BETTER_AUTH_SECRET, runtimeUrl, media };
   return globalForServer.hriServer;
 }
 
@@ -39,7 +42,7 @@ export function toSessionUser(u: { id: string; name: string; email: string; role
 }
 
 export async function contextFromHeaders(headers: Headers): Promise<Context> {
-  const { db, auth, secret, runtimeUrl } = server();
+  const { db, auth, secret, runtimeUrl, media } = server();
   const session = await auth.api.getSession({ headers });
-  return { db, user: session ? toSessionUser(session.user) : null, secret, runtimeUrl };
+  return { db, user: session ? toSessionUser(session.user) : null, secret, runtimeUrl, media };
 }

@@ -54,6 +54,13 @@ const freshLink = async (f: Fixture, b: Base) => {
   await owner.questionnaires.publish({ questionnaireId: q.id });
   return owner.questionnaires.createLink({ questionnaireId: q.id, participantId: b.participant.id, trialId: b.trial.id });
 };
+/** A recording of the base trial with one part stored, and (when asked) finished. */
+const freshRecording = async (f: Fixture, b: Base, finished = false) => {
+  const { recordingId } = await f.api("owner").recordings.start({ trialId: b.trial.id, kind: "video", mimeType: "video/mp4" });
+  await f.media.storage.put(`recordings/${recordingId}/chunk-000000`, new Uint8Array([1, 2, 3]), "video/mp4");
+  if (finished) await f.api("owner").recordings.finish({ recordingId, durationMs: 1000 });
+  return { recordingId };
+};
 const EVERYONE: Caller[] = [...SIGNED_IN, "anonymous"];
 const sus = Object.fromEntries([4, 2, 3, 4, 3, 1, 3, 3, 3, 2].map((v, i) => [`sus${i + 1}`, v]));
 
@@ -154,6 +161,12 @@ const MATRIX: Record<string, [Caller[], Input]> = {
   "form.open": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token })],
   "form.save": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token, answers: { sus1: 3 } })],
   "form.submit": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token, answers: sus })],
+  "recordings.start": [RUNNERS, (_f, b) => ({ trialId: b.trial.id, kind: "video", mimeType: "video/webm;codecs=vp8,opus" })],
+  "recordings.setOffset": [RUNNERS, async (f, b) => ({ ...(await freshRecording(f, b)), offsetMs: 120 })],
+  "recordings.chunkTarget": [RUNNERS, async (f, b) => freshRecording(f, b)],
+  "recordings.finish": [RUNNERS, async (f, b) => ({ ...(await freshRecording(f, b)), durationMs: 1000 })],
+  "recordings.list": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
+  "recordings.file": [["owner", "researcher", "observer"], async (f, b) => freshRecording(f, b, true)],
   "trials.create": [RUNNERS, (_f, b) => ({ versionId: b.version.id, participantId: b.participant.id })],
   "trials.rehearse": [RUNNERS, (_f, b) => ({ experimentId: b.experiment.id })],
   "trials.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],

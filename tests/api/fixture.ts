@@ -1,7 +1,11 @@
 // A study with one member per study role, plus people outside it, for API tests.
+import { mkdtempSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { LocalStorage } from "../../src/server/media/local-storage";
 import { fetchRequestHandler } from "@trpc/server/adapters/fetch";
 import type { SystemRole } from "../../src/core/access/policy";
-import { createCallerFactory, type SessionUser } from "../../src/server/api/trpc";
+import { createCallerFactory, type Context, type SessionUser } from "../../src/server/api/trpc";
 import { appRouter } from "../../src/server/api/root";
 import { createAccount } from "../../src/server/auth/accounts";
 import type { Database } from "../../src/server/db/client";
@@ -28,12 +32,18 @@ export async function newPerson(db: Database, label: string, role: SystemRole = 
   return { id: created.id, name: created.name, email: created.email, role };
 }
 
+/** Recordings in a throwaway folder, with a small limit so the limit can be tested. */
+export function testMedia(maxBytes = 8 * 1024 * 1024): Context["media"] {
+  return { storage: new LocalStorage(mkdtempSync(join(tmpdir(), "hri-test-media-"))), maxBytes };
+}
+
 export async function buildFixture(db: Database) {
   const people = {} as Record<Exclude<Caller, "anonymous">, SessionUser>;
   for (const caller of Object.keys(SYSTEM_ROLE) as Array<keyof typeof SYSTEM_ROLE>) {
     people[caller] = await newPerson(db, caller, SYSTEM_ROLE[caller]);
   }
-  const context = (caller: Caller) => ({ db, user: caller === "anonymous" ? null : people[caller], secret: TEST_SECRET, runtimeUrl: "ws://127.0.0.1:1" });
+  const media = testMedia();
+  const context = (caller: Caller) => ({ db, user: caller === "anonymous" ? null : people[caller], secret: TEST_SECRET, runtimeUrl: "ws://127.0.0.1:1", media });
   const api = (caller: Caller) => callerFactory(context(caller));
   /** A study whose members are the four study-role callers. */
   async function newStudy(title = "Fixture study") {
@@ -54,7 +64,7 @@ export async function buildFixture(db: Database) {
     const body = (await res.json()) as { error?: { message: string; data: { code: string; issues: Array<{ field: string; message: string }> | null } } };
     return body.error ?? null;
   }
-  return { people, api, newStudy, httpError };
+  return { people, api, newStudy, httpError, media };
 }
 
 export type Fixture = Awaited<ReturnType<typeof buildFixture>>;

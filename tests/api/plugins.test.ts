@@ -6,7 +6,7 @@ import { appRouter } from "../../src/server/api/root";
 import { createCallerFactory } from "../../src/server/api/trpc";
 import { seedDemo } from "../../src/server/seed/demo";
 import { freshDatabase } from "../support/db";
-import { buildFixture, TEST_SECRET } from "./fixture";
+import { buildFixture, TEST_SECRET, testMedia } from "./fixture";
 
 const { db, close } = await freshDatabase();
 await seedDemo(db);
@@ -37,6 +37,7 @@ describe("robot plugins on the server", () => {
       user: { id: researcher.id, name: researcher.name, email: researcher.email, role: "researcher" },
       secret: TEST_SECRET,
       runtimeUrl: "ws://127.0.0.1:1",
+      media: testMedia(),
     });
     const [study] = await asOwner.studies.mine();
     const [storyteller] = await asOwner.experiments.list({ studyId: study!.id });

@@ -6,13 +6,13 @@ import { afterAll, describe, expect, it } from "vitest";
 import { questionnaireLinks } from "../../src/server/db/schema";
 import { appRouter } from "../../src/server/api/root";
 import { freshDatabase } from "../support/db";
-import { buildFixture, TEST_SECRET } from "./fixture";
+import { buildFixture, TEST_SECRET, testMedia } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
 const owner = f.api("owner");
 // The participant: no account at all.
-const participant = appRouter.createCaller({ db, user: null, secret: TEST_SECRET, runtimeUrl: "ws://127.0.0.1:1" }).form;
+const participant = appRouter.createCaller({ db, user: null, secret: TEST_SECRET, runtimeUrl: "ws://127.0.0.1:1", media: testMedia() }).form;
 afterAll(close);
 
 const SUS = Object.fromEntries([4, 2, 3, 4, 3, 1, 3, 3, 3, 2].map((v, i) => [`sus${i + 1}`, v]));

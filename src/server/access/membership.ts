@@ -11,6 +11,7 @@ import {
   conditions,
   experimentVersions,
   experiments,
+  mediaRecordings,
   participants,
   questionnaires,
   sessions,
@@ -81,6 +82,11 @@ const LOOKUPS: Array<[string, Lookup]> = [
   [
     "conditionId",
     async (db, id) => (await db.select({ s: conditions.studyId }).from(conditions).where(eq(conditions.id, id)))[0]?.s,
+  ],
+  [
+    "recordingId",
+    async (db, id) =>
+      (await db.select({ s: trials.studyId }).from(mediaRecordings).innerJoin(trials, eq(trials.id, mediaRecordings.trialId)).where(eq(mediaRecordings.id, id)))[0]?.s,
   ],
   [
     "sessionId",

@@ -1,18 +1,27 @@
-// File downloads go through the same procedures, and so the same policy and
-// blinds, as the API: a refusal becomes the HTTP status with its message.
+// Routes outside tRPC (file downloads, binary uploads) go through the same
+// procedures, and so the same policy and blinds, as the API: a refusal
+// becomes the HTTP status with its message.
 import { TRPCError } from "@trpc/server";
 import { getHTTPStatusCodeFromError } from "@trpc/server/http";
 import { contextFromHeaders } from "../context";
+import type { Context } from "./trpc";
 import { appRouter } from "./root";
 
 type Caller = ReturnType<typeof appRouter.createCaller>;
 
-export async function download(req: Request, file: (caller: Caller) => Promise<{ body: string | Uint8Array<ArrayBuffer>; contentType: string; filename: string }>): Promise<Response> {
+export async function apiRoute(req: Request, handle: (api: Caller, context: Context) => Promise<Response>): Promise<Response> {
   try {
-    const { body, contentType, filename } = await file(appRouter.createCaller(await contextFromHeaders(req.headers)));
-    return new Response(body, { headers: { "content-type": contentType, "content-disposition": `attachment; filename="${filename}"` } });
+    const context = await contextFromHeaders(req.headers);
+    return await handle(appRouter.createCaller(context), context);
   } catch (error) {
     if (error instanceof TRPCError) return new Response(error.message, { status: getHTTPStatusCodeFromError(error) });
     throw error;
   }
+}
+
+export function download(req: Request, file: (api: Caller) => Promise<{ body: string | Uint8Array<ArrayBuffer>; contentType: string; filename: string }>): Promise<Response> {
+  return apiRoute(req, async (api) => {
+    const { body, contentType, filename } = await file(api);
+    return new Response(body, { headers: { "content-type": contentType, "content-disposition": `attachment; filename="${filename}"` } });
+  });
 }

@@ -7,6 +7,7 @@ import { participantsRouter } from "./routers/participants";
 import { formRouter } from "./routers/form";
 import { pluginsRouter } from "./routers/plugins";
 import { questionnairesRouter } from "./routers/questionnaires";
+import { recordingsRouter } from "./routers/recordings";
 import { sessionsRouter } from "./routers/sessions";
 import { studiesRouter } from "./routers/studies";
 import { trialsRouter } from "./routers/trials";
@@ -24,6 +25,7 @@ export const appRouter = router({
   sessions: sessionsRouter,
   questionnaires: questionnairesRouter,
   form: formRouter,
+  recordings: recordingsRouter,
   plugins: pluginsRouter,
   trials: trialsRouter,
   admin: adminRouter,

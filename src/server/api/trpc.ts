@@ -3,6 +3,7 @@ import { ZodError } from "zod";
 import { decide, type Operation, type StudyRole, type SystemRole } from "@/core/access/policy";
 import type { Database } from "../db/client";
 import { studyAccessOf, studyIdForInput } from "../access/membership";
+import type { MediaStorage } from "../media/storage";
 import { NOT_BLINDED, type Blinding } from "@/core/studies/blinding";
 import { describeIssues, fieldIssues, type FieldIssue } from "./errors";
 
@@ -20,6 +21,8 @@ export interface Context {
   secret: string;
   /** Where browsers reach the trial runtime. */
   runtimeUrl: string;
+  /** Where recordings are kept, and the largest one accepted. */
+  media: { storage: MediaStorage; maxBytes: number };
 }
 
 export interface Meta {
