@@ -54,6 +54,8 @@ export interface TrialRecord {
   annotations: Array<{ relMs: number; label: string; note: string; authorName: string | null }>;
   /** Submitted questionnaires of the trial, each with the version shown, the answers and the score. */
   questionnaires: unknown[];
+  /** Recordings of the trial: where to fetch them, and their offset from t0 (ms). */
+  recordings: unknown[];
 }
 
 export function trialRecordJson(record: Omit<TrialRecord, "schemaVersion">): string {

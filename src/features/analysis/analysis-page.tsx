@@ -3,11 +3,12 @@
 // deviations and marked moments, and the robot's logged joint angles.
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
-import { useMemo } from "react";
+import { useMemo, useRef, useState } from "react";
 import { fidelityReport } from "@/core/analysis/fidelity";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { QuestionnaireAnswers } from "./questionnaire-answers";
+import { RecordingPlayer, useTrialRecording, videoSeconds } from "./recording-player";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, type Tone } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
@@ -21,6 +22,9 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   const trial = useQuery(trpc.trials.get.queryOptions({ trialId }));
   const events = useQuery(trpc.trials.events.queryOptions({ trialId }));
   const moments = useQuery(trpc.trials.annotations.queryOptions({ trialId }));
+  const recording = useTrialRecording(trialId, trial.data?.myRole !== "wizard");
+  const video = useRef<HTMLVideoElement>(null);
+  const [playheadMs, setPlayheadMs] = useState<number | null>(null);
   const samples = useQuery({ ...trpc.trials.samples.queryOptions({ trialId, topic: "/joint_states" }), enabled: trial.data?.myRole !== "wizard" });
   const report = useMemo(
     () => (trial.data && events.data ? fidelityReport(trial.data.protocol as TrialProtocol, events.data as unknown as TrialEvent[]) : null),
@@ -30,6 +34,9 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   if (trial.error || events.error) return <Problem error={trial.error ?? events.error} />;
   const t = trial.data;
   const r = report!;
+  const timeline = [...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })), ...(moments.data ?? []).map((m) => ({ at: m.relMs, kind: "moment" as const, m }))].sort((a, b) => a.at - b.at);
+  // The row the playhead is in: the last one at or before it.
+  const current = playheadMs === null ? -1 : timeline.findLastIndex((item) => item.at <= playheadMs);
   return (
     <div className="space-y-6">
       <div className="flex flex-wrap items-center gap-3">
@@ -58,6 +65,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         <Figure label="Deviations" value={String(Object.values(r.deviations).reduce((a, b) => a + b, 0))} />
         <Figure label="Branches by answer / by hand" value={`${r.branches.byLogic} / ${r.branches.byHand}`} />
       </div>
+      {recording && <RecordingPlayer recording={recording} video={video} onTime={setPlayheadMs} />}
       <QuestionnaireAnswers trialId={trialId} studyId={t.studyId} />
       <section aria-label="Planned versus executed">
         <h2 className="mb-2 text-lg font-semibold">Planned versus executed</h2>
@@ -91,10 +99,15 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
       <section aria-label="Timeline">
         <h2 className="mb-2 text-lg font-semibold">Timeline</h2>
         <Card className="divide-y divide-slate-100 text-sm">
-          {[...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })), ...(moments.data ?? []).map((m) => ({ at: m.relMs, kind: "moment" as const, m }))]
-            .sort((a, b) => a.at - b.at)
-            .map((item, i) => (
-              <div key={i} className="flex gap-3 px-4 py-1.5">
+          {timeline.map((item, i) => (
+              <button
+                key={i}
+                type="button"
+                disabled={!recording}
+                aria-current={current === i ? "time" : undefined}
+                onClick={() => recording && video.current && (video.current.currentTime = videoSeconds(recording, item.at))}
+                className={`flex w-full gap-3 px-4 py-1.5 text-left enabled:hover:bg-slate-50 ${current === i ? "bg-brand-50" : ""}`}
+              >
                 <span className="w-16 shrink-0 font-mono text-xs text-slate-500">{seconds(item.at)}</span>
                 {item.kind === "moment" ? (
                   <span>
@@ -107,7 +120,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
                     {item.e.deviation && <Badge tone="amber">{item.e.deviation.replace("_", " ")}</Badge>}
                   </span>
                 )}
-              </div>
+              </button>
             ))}
         </Card>
       </section>

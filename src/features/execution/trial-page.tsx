@@ -9,6 +9,7 @@ import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
 import { MarkMoment, Moments, Watching } from "./observer-panel";
 import { OffScript, StepActions, StepList } from "./protocol-view";
 import { TrialQuestionnaires } from "@/features/questionnaires/trial-questionnaires";
+import { RecordingPanel } from "@/features/recording/recording-panel";
 import { TrialClock } from "./trial-clock";
 import { useTrialSocket } from "./use-trial-socket";
 import { SHORTCUTS, WizardControls } from "./wizard-controls";
@@ -69,6 +70,7 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
         </div>
         <div className="space-y-4">
           <Watching viewers={live.viewers} />
+          {wizard && <RecordingPanel trialId={trial.id} startedAt={started?.serverTime ?? null} ended={ended} />}
           {wizard && trial.participantId && !trial.isRehearsal && <TrialQuestionnaires studyId={trial.studyId} trialId={trial.id} participantId={trial.participantId} />}
           {!wizard && <MarkMoment annotate={live.annotate} />}
           <Moments annotations={live.annotations} />

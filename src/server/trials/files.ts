@@ -8,7 +8,7 @@ import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
 import type { TrialEvent } from "@/core/trial";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import type { Database } from "../db/client";
-import { annotations, experimentVersions, questionnaireLinks, trials, user } from "../db/schema";
+import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "../db/schema";
 import { submitted } from "../questionnaires/responses";
 import { eventsSince } from "./event-store";
 
@@ -35,6 +35,16 @@ export async function trialFile(db: Database, trialId: string, format: "csv" | "
     events,
     annotations: marked,
     questionnaires: await submitted(db, eq(questionnaireLinks.trialId, trialId)),
+    recordings: (await db.select().from(mediaRecordings).where(eq(mediaRecordings.trialId, trialId)).orderBy(asc(mediaRecordings.createdAt))).map((m) => ({
+      id: m.id,
+      kind: m.kind,
+      mimeType: m.mimeType,
+      status: m.status,
+      sizeBytes: m.sizeBytes,
+      offsetMs: m.offsetMs,
+      durationMs: m.durationMs,
+      url: `/api/recordings/${m.id}/media`,
+    })),
   });
   return { filename: `${name}.json`, contentType: "application/json", body: record };
 }

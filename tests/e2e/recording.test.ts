@@ -1,0 +1,103 @@
+// Recording in a real Chromium (its fake camera and microphone feed
+// MediaRecorder): parts reach the server while the trial runs, the trial's
+// end saves the recording, it plays with a real duration on the analysis page
+// where the timeline seeks it; a crashed tab keeps every part already sent.
+import type { Browser } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
+import { apiClient, signIn } from "../support/http";
+import { runWholeTrial } from "../support/run-trial";
+
+describe.sequential("recording a trial", () => {
+  let app: RunningApp;
+  let browser: Browser;
+  let researcher: ReturnType<typeof apiClient>;
+  let wizardApi: ReturnType<typeof apiClient>;
+  let versionId = "";
+  let participantId = "";
+
+  beforeAll(async () => {
+    app = await startApp();
+    browser = await launchBrowser();
+    researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    wizardApi = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await researcher.studies.mine.query();
+    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
+    versionId = (await researcher.versions.publish.mutate({ experimentId: experiment!.id })).id;
+    participantId = (await researcher.participants.list.query({ studyId: study!.id }))[0]!.id;
+  });
+  afterAll(async () => {
+    await browser?.close();
+    await app?.stop();
+  });
+
+  const wizardPage = async (trialId: string) => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "wizard@demo.hristudio", DEMO_PASSWORD);
+    await page.goto(`/trials/${trialId}`);
+    await page.getByText("live", { exact: true }).waitFor();
+    return page;
+  };
+  const partsSaved = async (page: Awaited<ReturnType<typeof wizardPage>>, atLeast: number) =>
+    expect.poll(async () => Number(/^(\d+) part/.exec((await page.getByTestId("recording-parts").textContent()) ?? "")?.[1] ?? 0), { timeout: 30_000 }).toBeGreaterThanOrEqual(atLeast);
+
+  it("records while the trial runs, saves at its end, and plays in step with the timeline", async () => {
+    const trial = await wizardApi.trials.create.mutate({ versionId, participantId });
+    const wizard = await wizardPage(trial.id);
+    await wizard.getByRole("button", { name: "Start recording" }).click();
+    await wizard.getByTestId("recording-indicator").waitFor();
+    await partsSaved(wizard, 1);
+    await screenshot(wizard, "wizard-recording");
+    await runWholeTrial(wizardApi, trial.id);
+    await wizard.getByText("The recording is saved with this trial.").waitFor({ timeout: 30_000 });
+    const [recording] = await researcher.recordings.list.query({ trialId: trial.id });
+    expect(recording).toMatchObject({ status: "complete", kind: "video", mimeType: expect.stringMatching(/^video\/webm/) });
+    expect(recording!.offsetMs).toEqual(expect.any(Number));
+    expect(recording!.durationMs).toBeGreaterThan(2000);
+
+    const analysis = await (await newContext(browser, app.url)).newPage();
+    await signInAs(analysis, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await analysis.goto(`/trials/${trial.id}/analysis`);
+    const video = analysis.getByTestId("trial-video");
+    // Chrome's own recordings declare no duration; the server wrote it in, so the player knows it and can seek.
+    await expect.poll(() => video.evaluate((v: HTMLVideoElement) => v.duration), { timeout: 15_000 }).toBeCloseTo(recording!.durationMs! / 1000, 0);
+    const row = analysis.getByRole("button", { name: /trial\.completed/ });
+    await row.click();
+    await expect.poll(() => video.evaluate((v: HTMLVideoElement) => v.currentTime)).toBeGreaterThan(0.5);
+    await expect.poll(() => row.getAttribute("aria-current")).toBe("time");
+    await analysis.evaluate(() => window.scrollTo(0, 0));
+    await screenshot(analysis, "analysis-video");
+    await Promise.all([wizard.context().close(), analysis.context().close()]);
+  }, 180_000);
+
+  it("keeps every part already sent when the wizard's tab crashes, and the recording can still be finished", async () => {
+    const trial = await wizardApi.trials.create.mutate({ versionId, participantId });
+    const wizard = await wizardPage(trial.id);
+    await wizard.getByRole("button", { name: "Start recording" }).click();
+    await partsSaved(wizard, 2);
+    await wizard.context().close(); // the tab is gone, mid-recording
+    const [recording] = await researcher.recordings.list.query({ trialId: trial.id });
+    expect(recording!.status).toBe("recording");
+    await wizardApi.recordings.finish.mutate({ recordingId: recording!.id, durationMs: 6000 });
+    const [saved] = await researcher.recordings.list.query({ trialId: trial.id });
+    expect(saved).toMatchObject({ status: "complete" });
+    expect(saved!.sizeBytes).toBeGreaterThan(10_000);
+  }, 120_000);
+
+  it("refuses parts of the wrong type or over the size limit, saying why", async () => {
+    const trial = await wizardApi.trials.create.mutate({ versionId, participantId });
+    const { recordingId } = await wizardApi.recordings.start.mutate({ trialId: trial.id, kind: "video", mimeType: "video/webm" });
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "wizard@demo.hristudio", DEMO_PASSWORD);
+    const wrongType = await page.request.put(`/api/recordings/${recordingId}/chunks/0`, { headers: { "content-type": "text/x-shellscript" }, data: "echo hi" });
+    expect([wrongType.status(), await wrongType.text()]).toEqual([415, 'This recording is video/webm; a part sent as "text/x-shellscript" is refused.']);
+    const tooBig = await page.request.put(`/api/recordings/${recordingId}/chunks/0`, { headers: { "content-type": "video/webm" }, data: Buffer.alloc(17 * 1024 * 1024) });
+    expect([tooBig.status(), await tooBig.text()]).toEqual([413, "A part of a recording may be at most 16 MB; this one is 17.0 MB."]);
+    const observer = await (await newContext(browser, app.url)).newPage();
+    await signInAs(observer, "observer@demo.hristudio", DEMO_PASSWORD);
+    const notTheirs = await observer.request.put(`/api/recordings/${recordingId}/chunks/0`, { headers: { "content-type": "video/webm" }, data: Buffer.alloc(10) });
+    expect(notTheirs.status()).toBe(403);
+    await Promise.all([page.context().close(), observer.context().close()]);
+  }, 60_000);
+});
