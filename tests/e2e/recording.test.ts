@@ -1,6 +1,6 @@
 // Recording in a real Chromium (its fake camera and microphone feed
-// MediaRecorder): parts reach the server while the trial runs, the trial's
-// end saves the recording, it plays with a real duration on the analysis page
+// MediaRecorder): parts reach the server while the trial runs (and wait, then
+// go, while the upload is cut off), the trial's end saves the recording, it plays with a real duration on the analysis page
 // where the timeline seeks it; a crashed tab keeps every part already sent.
 import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -49,6 +49,13 @@ describe.sequential("recording a trial", () => {
     await wizard.getByTestId("recording-indicator").waitFor();
     await partsSaved(wizard, 1);
     await screenshot(wizard, "wizard-recording");
+    // The upload is cut off for a while: parts wait in the browser, then go when it is back.
+    const chunks = "**/api/recordings/*/chunks/*";
+    await wizard.route(chunks, (route) => route.abort("internetdisconnected"));
+    await wizard.getByText(/waiting to be sent/).waitFor({ timeout: 15_000 });
+    await wizard.getByText(/the recording continues and its parts are sent when it is back/).waitFor();
+    await wizard.unroute(chunks);
+    await expect.poll(async () => (await wizard.getByTestId("recording-parts").textContent()) ?? "", { timeout: 30_000 }).not.toMatch(/waiting/);
     await runWholeTrial(wizardApi, trial.id);
     await wizard.getByText("The recording is saved with this trial.").waitFor({ timeout: 30_000 });
     const [recording] = await researcher.recordings.list.query({ trialId: trial.id });

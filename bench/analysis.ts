@@ -1,0 +1,86 @@
+// bench/analysis: the analysis of a 60-minute trial with 2,000 events and
+// 180,000 robot samples (joint states at 50 Hz). Measures the data (the
+// trial, its events and its samples, over HTTP as the page loads them) and,
+// in Chromium, the page until it is interactive (figures, table and chart
+// drawn). Targets: data under 500 ms, page under 2 s.
+import { launchBrowser, newContext, signInAs } from "../tests/support/browser";
+import { DEMO_PASSWORD, startApp } from "../tests/support/app";
+import { apiClient, signIn } from "../tests/support/http";
+import { createDatabase } from "../src/server/db/client";
+import { report, scratchDatabase } from "./support";
+
+const EVENTS = 2000;
+const SAMPLES = 180_000;
+const MINUTES = 60;
+const RUNS = 7;
+
+const database = await scratchDatabase();
+const app = await startApp({ env: { DATABASE_URL: database.url, HRI_SEED_DEMO: "true" } });
+const { db, close } = createDatabase(database.url, { max: 2 });
+try {
+  const api = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+  const [study] = await api.studies.mine.query();
+  const [experiment] = await api.experiments.list.query({ studyId: study!.id });
+  const version = await api.versions.publish.mutate({ experimentId: experiment!.id });
+  const [participant] = await api.participants.list.query({ studyId: study!.id });
+  const trial = await api.trials.create.mutate({ versionId: version.id, participantId: participant!.id });
+
+  // A long session: mostly unscripted robot actions, each requested, dispatched and completed.
+  const t0 = new Date(Date.now() - MINUTES * 60_000);
+  const span = MINUTES * 60_000;
+  const events = Array.from({ length: EVENTS }, (_, i) => {
+    const seq = i + 1;
+    const relMs = Math.round((i / EVENTS) * span);
+    const actionId = `a${Math.floor(i / 3)}`;
+    const body =
+      i === 0
+        ? { type: "trial.started" }
+        : i === EVENTS - 1
+          ? { type: "trial.completed" }
+          : [
+              { type: "action.requested", stepId: null, actionId, actionType: "say", parameters: { text: `Line ${i}` }, scripted: false, deviation: "unscripted" },
+              { type: "action.dispatched", actionId },
+              { type: "action.completed", actionId },
+            ][i % 3]!;
+    return { trial_id: trial.id, seq, type: body.type, server_time: new Date(t0.getTime() + relMs).toISOString(), rel_ms: relMs, actor_id: null, step_id: null, action_id: "actionId" in body ? body.actionId : null, payload: JSON.stringify(body), deviation: "deviation" in body };
+  });
+  const sql = db.$client;
+  await sql`insert into trial_events ${sql(events)}`;
+  const names = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
+  for (let start = 0; start < SAMPLES; start += 10_000) {
+    const rows = Array.from({ length: Math.min(10_000, SAMPLES - start) }, (_, k) => {
+      const relMs = Math.round(((start + k) / SAMPLES) * span);
+      return { trial_id: trial.id, topic: "/joint_states", rel_ms: relMs, data: JSON.stringify({ name: names, position: names.map((_, j) => Math.sin(relMs / 1000 + j)) }) };
+    });
+    await sql`insert into trial_samples ${sql(rows, "trial_id", "topic", "rel_ms", "data")}`;
+  }
+  await sql`update trials set status = 'completed', t0 = ${t0.toISOString()}::timestamptz, ended_at = now() where id = ${trial.id}`;
+
+  const data: number[] = [];
+  for (let i = 0; i < RUNS; i++) {
+    const started = performance.now();
+    await Promise.all([api.trials.get.query({ trialId: trial.id }), api.trials.events.query({ trialId: trial.id }), api.trials.samples.query({ trialId: trial.id, topic: "/joint_states" })]);
+    data.push(performance.now() - started);
+  }
+
+  const browser = await launchBrowser();
+  const page = await (await newContext(browser, app.url)).newPage();
+  await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
+  const interactive: number[] = [];
+  for (let i = 0; i < RUNS; i++) {
+    const started = performance.now();
+    await page.goto(`/trials/${trial.id}/analysis`);
+    await page.getByRole("heading", { name: "Robot joint angles" }).waitFor({ timeout: 60_000 });
+    await page.getByText("trial.completed").waitFor({ timeout: 60_000 });
+    interactive.push(performance.now() - started);
+  }
+  await browser.close();
+
+  console.log(`A ${MINUTES}-minute trial with ${EVENTS} events and ${SAMPLES} robot samples:`);
+  report("trial, events and samples loaded over HTTP", data, 500);
+  report("analysis page in Chromium until interactive", interactive, 2000);
+} finally {
+  await close();
+  await app.stop();
+  await database.stop();
+}
