@@ -25,7 +25,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   const recording = useTrialRecording(trialId, trial.data?.myRole !== "wizard");
   const video = useRef<HTMLVideoElement>(null);
   const [playheadMs, setPlayheadMs] = useState<number | null>(null);
-  const samples = useQuery({ ...trpc.trials.samples.queryOptions({ trialId, topic: "/joint_states" }), enabled: trial.data?.myRole !== "wizard" });
+  const samples = useQuery({ ...trpc.trials.samples.queryOptions({ trialId, topic: "/joint_states", maxPoints: 2000 }), enabled: trial.data?.myRole !== "wizard" });
   const report = useMemo(
     () => (trial.data && events.data ? fidelityReport(trial.data.protocol as TrialProtocol, events.data as unknown as TrialEvent[]) : null),
     [trial.data, events.data],

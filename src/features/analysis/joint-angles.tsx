@@ -7,10 +7,17 @@ const COLOURS = ["#2458b8", "#d97706", "#059669", "#b91c1c", "#7c3aed"];
 export function JointAngles({ samples }: { samples: Array<{ relMs: number; data: unknown }> }) {
   const rows = samples.map((s) => ({ t: s.relMs, ...(s.data as { name: string[]; position: number[] }) }));
   const names = rows[0]?.name ?? [];
-  const tMax = Math.max(1, ...rows.map((r) => r.t));
-  const values = rows.flatMap((r) => r.position);
-  const lo = Math.min(...values, -0.1);
-  const hi = Math.max(...values, 0.1);
+  // Loops, not spreads: a long trial has more samples than a function may take arguments.
+  let tMax = 1;
+  let lo = -0.1;
+  let hi = 0.1;
+  for (const r of rows) {
+    tMax = Math.max(tMax, r.t);
+    for (const v of r.position) {
+      lo = Math.min(lo, v);
+      hi = Math.max(hi, v);
+    }
+  }
   const x = (t: number) => (t / tMax) * 1000;
   const y = (v: number) => 180 - ((v - lo) / (hi - lo)) * 170;
   return (

@@ -139,13 +139,35 @@ export const trialsRouter = router({
 
   /** Robot state logged during the trial, in time order. */
   samples: guarded("data.read")
-    .input(z.object({ trialId: id, topic: z.string().max(200).optional(), limit: z.number().int().min(1).max(500_000).default(200_000) }))
+    .input(
+      z.object({
+        trialId: id,
+        topic: z.string().max(200).optional(),
+        limit: z.number().int().min(1).max(500_000).default(200_000),
+        // For a chart: at most this many samples, the first of each equal slice of time.
+        maxPoints: z.number().int().min(10).max(20_000).optional(),
+      }),
+    )
     .query(async ({ ctx, input }) => {
       await assertNotWithdrawn(ctx.db, input.trialId);
+      const where = and(eq(trialSamples.trialId, input.trialId), input.topic ? eq(trialSamples.topic, input.topic) : undefined);
+      if (input.maxPoints) {
+        // Thinned in the database: an hour at 50 Hz is 180,000 rows, a chart needs a few thousand.
+        const [{ last }] = (await ctx.db.select({ last: sql<number | null>`max(${trialSamples.relMs})` }).from(trialSamples).where(where)) as [{ last: number | null }];
+        // A number we computed, written into the SQL so DISTINCT ON and ORDER BY read the same expression.
+        const perMs = sql.raw(String(input.maxPoints / Math.max(1, Number(last ?? 0) + 1)));
+        const slice = sql<number>`floor(${trialSamples.relMs} * ${perMs})`;
+        const rows = await ctx.db
+          .selectDistinctOn([slice], { topic: trialSamples.topic, relMs: trialSamples.relMs, data: trialSamples.data })
+          .from(trialSamples)
+          .where(where)
+          .orderBy(slice, asc(trialSamples.relMs));
+        return rows;
+      }
       return ctx.db
         .select({ topic: trialSamples.topic, relMs: trialSamples.relMs, data: trialSamples.data })
         .from(trialSamples)
-        .where(and(eq(trialSamples.trialId, input.trialId), input.topic ? eq(trialSamples.topic, input.topic) : undefined))
+        .where(where)
         .orderBy(asc(trialSamples.relMs))
         .limit(input.limit);
     }),
