@@ -21,6 +21,7 @@ export const commandSchema = z.discriminatedUnion("kind", [
   z.object({ kind: z.literal("complete") }),
   z.object({ kind: z.literal("emergency_stop") }),
   z.object({ kind: z.literal("note"), text: z.string().min(1).max(5000) }),
+  z.object({ kind: z.literal("recording"), recordingId: id, offsetMs: z.number().finite().min(-86_400_000).max(86_400_000) }),
 ]);
 
 export type WizardCommand = z.infer<typeof commandSchema>;

@@ -62,6 +62,9 @@ describe.sequential("recording a trial", () => {
     expect(recording).toMatchObject({ status: "complete", kind: "video", mimeType: expect.stringMatching(/^video\/webm/) });
     expect(recording!.offsetMs).toEqual(expect.any(Number));
     expect(recording!.durationMs).toBeGreaterThan(2000);
+    // The measured offset is in the trial's own log, as an event.
+    const log = await researcher.trials.events.query({ trialId: trial.id });
+    expect(log.find((e) => e.type === "recording.started")).toMatchObject({ recordingId: recording!.id, offsetMs: recording!.offsetMs });
 
     const analysis = await (await newContext(browser, app.url)).newPage();
     await signInAs(analysis, "researcher@demo.hristudio", DEMO_PASSWORD);

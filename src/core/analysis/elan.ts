@@ -1,6 +1,7 @@
 // A trial as an ELAN annotation document (EAF 3.0), so video coders can open
 // the trial's steps, actions, deviations and marked moments beside the video
-// in the tool they already use. Times are milliseconds from the trial's t0.
+// in the tool they already use. Times are milliseconds from the trial's t0,
+// or, when the trial was recorded, from the start of the linked recording.
 import type { TrialEvent, TrialProtocol } from "../trial";
 import { fidelityReport } from "./fidelity";
 
@@ -8,8 +9,8 @@ export interface ElanInput {
   protocol: TrialProtocol;
   events: TrialEvent[];
   annotations: Array<{ relMs: number; label: string; note: string }>;
-  /** The recording the times are relative to, when there is one. */
-  media?: { url: string; mimeType: string; offsetMs: number };
+  /** The trial's recording: the document links it, and its times become the recording's. */
+  media?: { fileName: string; mimeType: string; offsetMs: number };
   /** When the trial ran (ISO 8601): the document's date. */
   date: string;
 }
@@ -41,10 +42,11 @@ function tiers(input: ElanInput): Record<string, Span[]> {
 
 export function elanDocument(input: ElanInput): string {
   const byTier = tiers(input);
-  const shift = input.media?.offsetMs ?? 0;
+  // With a recording, a time is where it falls in the recording: trial time minus the recording's offset from t0.
+  const shift = -(input.media?.offsetMs ?? 0);
   const slots: number[] = [];
   const slot = (ms: number) => {
-    slots.push(ms + shift);
+    slots.push(Math.max(0, ms + shift));
     return `ts${slots.length}`;
   };
   let nextId = 0;
@@ -57,7 +59,9 @@ export function elanDocument(input: ElanInput): string {
       .join("\n");
     return `  <TIER TIER_ID="${escapeXml(name)}" LINGUISTIC_TYPE_REF="default-lt">\n${body}\n  </TIER>`;
   });
-  const media = input.media ? `\n    <MEDIA_DESCRIPTOR MEDIA_URL="${escapeXml(input.media.url)}" MIME_TYPE="${escapeXml(input.media.mimeType)}"/>` : "";
+  const media = input.media
+    ? `\n    <MEDIA_DESCRIPTOR MEDIA_URL="file:///${escapeXml(input.media.fileName)}" RELATIVE_MEDIA_URL="./${escapeXml(input.media.fileName)}" MIME_TYPE="${escapeXml(input.media.mimeType.split(";")[0]!)}"/>`
+    : "";
   return `<?xml version="1.0" encoding="UTF-8"?>
 <ANNOTATION_DOCUMENT AUTHOR="HRIStudio" DATE="${escapeXml(input.date)}" FORMAT="3.0" VERSION="3.0" xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" xsi:noNamespaceSchemaLocation="http://www.mpi.nl/tools/elan/EAFv3.0.xsd">
   <HEADER MEDIA_FILE="" TIME_UNITS="milliseconds">${media}

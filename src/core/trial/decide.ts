@@ -19,6 +19,8 @@ export function decide(protocol: TrialProtocol, state: TrialState, command: Comm
     case "note":
       if (!command.text.trim()) return no("The note is empty.");
       return ok({ type: "note.added", text: command.text });
+    case "recording":
+      return ok({ type: "recording.started", recordingId: command.recordingId, offsetMs: command.offsetMs });
     case "abort":
       if (state.status === "completed" || state.status === "aborted") return no("This trial has already ended.");
       return ok({ type: "trial.aborted", reason: command.reason });

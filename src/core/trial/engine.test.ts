@@ -52,6 +52,8 @@ const brief = (events: EngineEvent[] | string) =>
 describe("the trial engine", () => {
   it.each<[string, Command[], unknown]>([
     ["start enters the first step", start, [["trial.started", null, null], ["step.entered", "intro", null]]],
+    ["a recording's start is logged before the trial starts", [{ kind: "recording", recordingId: "r1", offsetMs: -1500 }], [["recording.started", null, null]]],
+    ["and while it runs, changing nothing else", [...start, { kind: "recording", recordingId: "r1", offsetMs: 800 }], [["recording.started", null, null]]],
     ["next starts a parallel group together", [...start, { kind: "next" }], [["action.requested", "hello", null], ["action.requested", "wave", null]]],
     ["a wizard instruction finishes as it starts", [...introDone], [["action.requested", "note", null], ["action.completed", "note", null]]],
     ["next on a finished step enters the following one", [...introDone, { kind: "next" }], [["step.entered", "recall", null]]],

@@ -56,6 +56,7 @@ export function apply(state: TrialState, event: TrialEvent): TrialState {
     case "trial.completed":
       return { ...next, status: "completed" };
     case "note.added":
+    case "recording.started":
       return next;
   }
 }

@@ -40,7 +40,9 @@ export type EventBody =
   | { type: "trial.emergency_stop" }
   | { type: "trial.aborted"; reason: string }
   | { type: "trial.completed" }
-  | { type: "note.added"; text: string };
+  | { type: "note.added"; text: string }
+  /** A recording of the session began `offsetMs` after t0 (negative: before it), as its recorder measured. */
+  | { type: "recording.started"; recordingId: string; offsetMs: number };
 
 /** An event as the engine produces it; the runtime adds seq, times and actor. */
 export type EngineEvent = EventBody & { deviation?: DeviationKind };
@@ -62,6 +64,7 @@ export type Command =
   | { kind: "complete" }
   | { kind: "emergency_stop" }
   | { kind: "note"; text: string }
+  | { kind: "recording"; recordingId: string; offsetMs: number }
   // What the robot side (or the clock, for pauses) reports back.
   | { kind: "dispatched"; actionId: string; detail?: Record<string, unknown> }
   | { kind: "completed"; actionId: string; detail?: Record<string, unknown> }

@@ -36,7 +36,11 @@ export function RecordingPlayer({ recording, video, onTime }: { recording: Recor
         onSeeked={(e) => onTime(trialMs(recording, e.currentTarget.currentTime))}
       />
       <p className="px-4 py-2 text-xs text-slate-500">
-        Click any moment of the timeline below to see it. The recording started {Math.abs((recording.offsetMs ?? 0) / 1000).toFixed(1)} s {(recording.offsetMs ?? 0) <= 0 ? "before" : "after"} the trial.
+        Click any moment of the timeline below to see it. The recording started {Math.abs((recording.offsetMs ?? 0) / 1000).toFixed(1)} s {(recording.offsetMs ?? 0) <= 0 ? "before" : "after"} the trial.{" "}
+        <a className="font-medium text-brand-600 hover:underline" href={`/api/recordings/${recording.id}/media?download`}>
+          Download the recording
+        </a>{" "}
+        (save it beside the ELAN file to open both together).
       </p>
     </Card>
   );

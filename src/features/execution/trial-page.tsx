@@ -1,6 +1,7 @@
 "use client";
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
+import { useCallback } from "react";
 import { studyRoleMay } from "@/core/access/policy";
 import type { TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
@@ -29,6 +30,8 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
   const wizard = studyRoleMay(trial.myRole, "trial.run");
   const started = live.events.find((e) => e.type === "trial.started");
   const ended = live.state.status === "completed" || live.state.status === "aborted";
+  const { command } = live;
+  const logRecording = useCallback((recordingId: string, offsetMs: number) => void command({ kind: "recording", recordingId, offsetMs }), [command]);
   return (
     <div className="space-y-4">
       <div className="flex flex-wrap items-center gap-3">
@@ -70,7 +73,7 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
         </div>
         <div className="space-y-4">
           <Watching viewers={live.viewers} />
-          {wizard && <RecordingPanel trialId={trial.id} startedAt={started?.serverTime ?? null} ended={ended} />}
+          {wizard && <RecordingPanel trialId={trial.id} startedAt={started?.serverTime ?? null} ended={ended} logStart={logRecording} />}
           {wizard && trial.participantId && !trial.isRehearsal && <TrialQuestionnaires studyId={trial.studyId} trialId={trial.id} participantId={trial.participantId} />}
           {!wizard && <MarkMoment annotate={live.annotate} />}
           <Moments annotations={live.annotations} />

@@ -11,8 +11,8 @@ import { useRecorder } from "./use-recorder";
 
 const clock = (ms: number) => `${String(Math.floor(ms / 60000)).padStart(2, "0")}:${String(Math.floor(ms / 1000) % 60).padStart(2, "0")}`;
 
-export function RecordingPanel({ trialId, startedAt, ended }: { trialId: string; startedAt: string | null; ended: boolean }) {
-  const recorder = useRecorder(trialId, startedAt, ended);
+export function RecordingPanel({ trialId, startedAt, ended, logStart }: { trialId: string; startedAt: string | null; ended: boolean; logStart: (recordingId: string, offsetMs: number) => void }) {
+  const recorder = useRecorder(trialId, startedAt, ended, logStart);
   const [camera, setCamera] = useState("");
   const [microphone, setMicrophone] = useState("");
   const cameras = recorder.devices.filter((d) => d.kind === "videoinput");

@@ -16,7 +16,8 @@ function pickType(): string {
   return wanted.find((t) => typeof MediaRecorder !== "undefined" && MediaRecorder.isTypeSupported(t)) ?? "video/webm";
 }
 
-export function useRecorder(trialId: string, trialStartedAt: string | null, trialEnded: boolean) {
+/** `logStart` writes the recording's start into the trial's own log (the socket's "recording" command). */
+export function useRecorder(trialId: string, trialStartedAt: string | null, trialEnded: boolean, logStart: (recordingId: string, offsetMs: number) => void) {
   const client = useTRPCClient();
   const [state, setState] = useState<RecorderState>("idle");
   const [problem, setProblem] = useState<string | null>(null);
@@ -116,8 +117,10 @@ export function useRecorder(trialId: string, trialStartedAt: string | null, tria
     const r = recording.current;
     if (!r || r.offsetSent || !trialStartedAt || state !== "recording") return;
     r.offsetSent = true;
-    void client.recordings.setOffset.mutate({ recordingId: r.id, offsetMs: r.startedAt - new Date(trialStartedAt).getTime() });
-  }, [client, trialStartedAt, state]);
+    const offsetMs = r.startedAt - new Date(trialStartedAt).getTime();
+    void client.recordings.setOffset.mutate({ recordingId: r.id, offsetMs });
+    logStart(r.id, offsetMs);
+  }, [client, trialStartedAt, state, logStart]);
 
   // The trial's end finishes the recording.
   useEffect(() => {

@@ -10,7 +10,10 @@ export const CHUNK_LIMIT_BYTES = 16 * 1024 * 1024;
 export const RECORDING_TYPES = /^(video|audio)\/(webm|mp4|ogg)(;.*)?$/;
 
 export const chunkKey = (storageKey: string, index: number) => `${storageKey}/chunk-${String(index).padStart(6, "0")}`;
-export const fileKey = (storageKey: string, mimeType: string) => `${storageKey}.${/mp4/.test(mimeType) ? "mp4" : /ogg/.test(mimeType) ? "ogg" : "webm"}`;
+const extension = (mimeType: string) => (/mp4/.test(mimeType) ? "mp4" : /ogg/.test(mimeType) ? "ogg" : "webm");
+export const fileKey = (storageKey: string, mimeType: string) => `${storageKey}.${extension(mimeType)}`;
+/** The name a downloaded recording has, and the ELAN document links to. */
+export const recordingFileName = (recordingId: string, mimeType: string) => `recording-${recordingId}.${extension(mimeType)}`;
 
 /** Joins the chunks in order; refuses a gap (a chunk that never arrived) by naming it. */
 export async function joinChunks(storage: MediaStorage, storageKey: string, maxBytes: number): Promise<Uint8Array> {

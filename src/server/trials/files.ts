@@ -9,6 +9,7 @@ import type { TrialEvent } from "@/core/trial";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import type { Database } from "../db/client";
 import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "../db/schema";
+import { recordingFileName } from "../media/recordings";
 import { submitted } from "../questionnaires/responses";
 import { eventsSince } from "./event-store";
 
@@ -25,8 +26,11 @@ export async function trialFile(db: Database, trialId: string, format: "csv" | "
     .where(eq(annotations.trialId, trialId))
     .orderBy(asc(annotations.relMs));
   const protocol = (version?.snapshot ?? trial!.rehearsalSnapshot) as ProtocolSnapshot;
+  const recordings = await db.select().from(mediaRecordings).where(eq(mediaRecordings.trialId, trialId)).orderBy(asc(mediaRecordings.createdAt));
   if (format === "eaf") {
-    const body = elanDocument({ protocol, events: events as unknown as TrialEvent[], annotations: marked, date: (trial!.t0 ?? trial!.createdAt).toISOString() });
+    const video = recordings.find((r) => r.status === "complete" && r.kind === "video");
+    const media = video ? { fileName: recordingFileName(video.id, video.mimeType), mimeType: video.mimeType, offsetMs: video.offsetMs ?? 0 } : undefined;
+    const body = elanDocument({ protocol, events: events as unknown as TrialEvent[], annotations: marked, date: (trial!.t0 ?? trial!.createdAt).toISOString(), media });
     return { filename: `${name}.eaf`, contentType: "application/xml; charset=utf-8", body };
   }
   const record = trialRecordJson({
@@ -35,7 +39,7 @@ export async function trialFile(db: Database, trialId: string, format: "csv" | "
     events,
     annotations: marked,
     questionnaires: await submitted(db, eq(questionnaireLinks.trialId, trialId)),
-    recordings: (await db.select().from(mediaRecordings).where(eq(mediaRecordings.trialId, trialId)).orderBy(asc(mediaRecordings.createdAt))).map((m) => ({
+    recordings: recordings.map((m) => ({
       id: m.id,
       kind: m.kind,
       mimeType: m.mimeType,
