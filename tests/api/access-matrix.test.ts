@@ -15,7 +15,7 @@ const OWNER: Caller[] = ["owner"];
 const ADMIN: Caller[] = ["admin"];
 const CREATORS: Caller[] = ["owner", "researcher", "outsider", "admin"]; // system role researcher or administrator
 
-type Input = (f: Fixture, base: Base) => Promise<unknown> | unknown;
+type Input = (f: Fixture, base: Base, caller: Caller) => Promise<unknown> | unknown;
 type Base = Awaited<ReturnType<typeof baseData>>;
 
 async function baseData(f: Fixture) {
@@ -167,6 +167,12 @@ const MATRIX: Record<string, [Caller[], Input]> = {
   "recordings.finish": [RUNNERS, async (f, b) => ({ ...(await freshRecording(f, b)), durationMs: 1000 })],
   "recordings.list": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
   "recordings.file": [["owner", "researcher", "observer"], async (f, b) => freshRecording(f, b, true)],
+  "trials.annotate": [MEMBERS, (_f, b) => ({ trialId: b.trial.id, relMs: 1500, label: "Smiled" })],
+  // Each caller edits a moment they marked themselves; others' moments are the owner's and researchers' to edit (tested in analysis.test).
+  "trials.editAnnotation": [
+    MEMBERS,
+    async (f, b, caller) => ({ annotationId: (await f.api(caller as "owner").trials.annotate({ trialId: b.trial.id, relMs: 10, label: "Mine" }).catch(() => ({ id: b.trial.id }))).id, label: "Edited", note: "" }),
+  ],
   "trials.create": [RUNNERS, (_f, b) => ({ versionId: b.version.id, participantId: b.participant.id })],
   "trials.rehearse": [RUNNERS, (_f, b) => ({ experimentId: b.experiment.id })],
   "trials.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
@@ -202,7 +208,7 @@ describe("access matrix", () => {
   const cases = Object.entries(MATRIX).flatMap(([path, [allowed]]) => CALLERS.map((caller) => [path, caller, allowed.includes(caller)] as const));
 
   it.each(cases)("%s by %s → allowed: %s", async (path, caller, allowed) => {
-    const input = await MATRIX[path]![1](f, base);
+    const input = await MATRIX[path]![1](f, base, caller);
     const outcome = await call(caller, path, input).then(
       () => "ok",
       (e: unknown) => (e instanceof TRPCError ? e.code : `unexpected: ${String(e)}`),

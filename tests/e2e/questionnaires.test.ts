@@ -2,6 +2,8 @@
 // wizard opens the one-time link and the participant fills it in on a second
 // device (a reload on the way loses nothing); the score appears on the
 // analysis page and in the CSV export.
+import { readFileSync } from "node:fs";
+import { strFromU8, unzipSync } from "fflate";
 import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
@@ -73,6 +75,11 @@ describe.sequential("questionnaires in the browser", () => {
     await researcher.goto(`/studies/${study!.id}`);
     await researcher.getByRole("tab", { name: "Trials" }).click();
     await researcher.getByRole("cell", { name: "System Usability Scale (SUS): 60" }).waitFor();
+    const zipped = researcher.waitForEvent("download");
+    await researcher.getByRole("button", { name: /Download the whole study/ }).click();
+    const archive = unzipSync(readFileSync((await (await zipped).path())!));
+    expect(strFromU8(archive["questionnaire-answers.csv"]!)).toContain(`P001,${trial.id},System Usability Scale (SUS),1,score,score,60`);
+    expect(Object.keys(archive)).toContain(`trials/${trial.id}.eaf`);
     const csv = await (await researcher.request.get(`/api/studies/${study!.id}/questionnaires`)).text();
     expect(csv.split("\r\n")).toContain(`P001,${trial.id},System Usability Scale (SUS),1,score,score,60`);
     const record = JSON.parse((await api.trials.export.query({ trialId: trial.id, format: "json" })).body);

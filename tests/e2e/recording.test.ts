@@ -76,6 +76,20 @@ describe.sequential("recording a trial", () => {
     await row.click();
     await expect.poll(() => video.evaluate((v: HTMLVideoElement) => v.currentTime)).toBeGreaterThan(0.5);
     await expect.poll(() => row.getAttribute("aria-current")).toBe("time");
+    // The chart: an action bar seeks the video too, and the playhead follows.
+    await analysis.getByLabel("Timeline chart").scrollIntoViewIfNeeded();
+    await analysis.getByRole("button", { name: /^Action .* at / }).first().click({ force: true });
+    // The first action came right after t0: in the recording, that is its offset from t0 in.
+    await expect.poll(() => video.evaluate((v: HTMLVideoElement) => v.currentTime)).toBeCloseTo(-recording!.offsetMs! / 1000, 0);
+    await analysis.getByTestId("playhead").waitFor();
+    // A moment marked afterwards, at the playhead, then edited.
+    const marked = analysis.getByRole("region", { name: "Marked moments" });
+    await marked.getByLabel("What happened").fill("Participant leans in");
+    await marked.getByRole("button", { name: /^Mark at / }).click();
+    await marked.getByRole("button", { name: "Edit “Participant leans in”" }).click();
+    await marked.getByLabel("Edit the note").fill("towards the robot");
+    await marked.getByRole("button", { name: "Save" }).click();
+    await marked.getByText("towards the robot").waitFor();
     await analysis.evaluate(() => window.scrollTo(0, 0));
     await screenshot(analysis, "analysis-video");
     await Promise.all([wizard.context().close(), analysis.context().close()]);

@@ -8,6 +8,8 @@ import { fidelityReport } from "@/core/analysis/fidelity";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { QuestionnaireAnswers } from "./questionnaire-answers";
+import { MomentsEditor } from "./moments-editor";
+import { TimelineChart } from "./timeline-chart";
 import { RecordingPlayer, useTrialRecording, videoSeconds } from "./recording-player";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, type Tone } from "@/ui/surface";
@@ -98,6 +100,14 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
       </section>
       <section aria-label="Timeline">
         <h2 className="mb-2 text-lg font-semibold">Timeline</h2>
+        <TimelineChart
+          report={r}
+          deviations={events.data.filter((e) => e.deviation && e.relMs !== null).map((e) => ({ at: e.relMs!, kind: String(e.deviation) }))}
+          moments={(moments.data ?? []).map((m) => ({ at: m.relMs, label: m.label }))}
+          endMs={timeline.at(-1)?.at ?? 0}
+          playheadMs={playheadMs}
+          onSeek={recording ? (ms) => video.current && (video.current.currentTime = videoSeconds(recording, ms)) : null}
+        />
         <Card className="divide-y divide-slate-100 text-sm">
           {timeline.map((item, i) => (
               <button
@@ -124,6 +134,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
             ))}
         </Card>
       </section>
+      <MomentsEditor trialId={trialId} moments={moments.data ?? []} playheadMs={playheadMs} />
       {samples.data && samples.data.length > 0 && <JointAngles samples={samples.data as Array<{ relMs: number; data: unknown }>} />}
     </div>
   );

@@ -5,6 +5,7 @@ import { useState, type FormEvent } from "react";
 import { studyRoleMay, type StudyRole } from "@/core/access/policy";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
+import { DownloadLink } from "@/ui/download-link";
 import { Field, NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, EmptyState, Spinner, STATUS_TONE } from "@/ui/surface";
@@ -20,9 +21,7 @@ export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: S
       {/* A blinded wizard starts trials from their sessions: choosing an experiment would reveal the condition. */}
       {studyRoleMay(role, "trial.create") && !blinded && <NewTrial studyId={studyId} onCreated={refresh} />}
       {studyRoleMay(role, "data.read") && (
-        <a className="inline-block text-sm font-medium text-brand-600 hover:underline" href={`/api/studies/${studyId}/export`}>
-          Download the whole study (zip: design, every trial's record and events, questionnaire answers)
-        </a>
+        <DownloadLink href={`/api/studies/${studyId}/export`}>Download the whole study (zip: design, every trial's record, events and ELAN file, questionnaire answers)</DownloadLink>
       )}
       {trials.isPending && <Spinner />}
       <Problem error={trials.error} />

@@ -22,6 +22,8 @@ export async function apiRoute(req: Request, handle: (api: Caller, context: Cont
 export function download(req: Request, file: (api: Caller) => Promise<{ body: string | Uint8Array<ArrayBuffer>; contentType: string; filename: string }>): Promise<Response> {
   return apiRoute(req, async (api) => {
     const { body, contentType, filename } = await file(api);
-    return new Response(body, { headers: { "content-type": contentType, "content-disposition": `attachment; filename="${filename}"` } });
+    // The length lets the browser show the download's progress.
+    const length = typeof body === "string" ? Buffer.byteLength(body) : body.byteLength;
+    return new Response(body, { headers: { "content-type": contentType, "content-length": String(length), "content-disposition": `attachment; filename="${filename}"` } });
   });
 }

@@ -14,7 +14,7 @@ import { assertMayTakePart } from "../../studies/consent-gate";
 import { signSocketToken } from "../../trials/socket-token";
 import { qualified } from "../../db/qualified";
 import { guarded, router } from "../trpc";
-import { id } from "../validation";
+import { id, text } from "../validation";
 
 const columns = {
   id: trials.id,
@@ -122,12 +122,32 @@ export const trialsRouter = router({
     .input(z.object({ trialId: id }))
     .query(({ ctx, input }) =>
       ctx.db
-        .select({ id: annotations.id, relMs: annotations.relMs, label: annotations.label, note: annotations.note, authorName: user.name })
+        .select({ id: annotations.id, relMs: annotations.relMs, label: annotations.label, note: annotations.note, authorId: annotations.authorId, authorName: user.name })
         .from(annotations)
         .leftJoin(user, eq(user.id, annotations.authorId))
         .where(eq(annotations.trialId, input.trialId))
         .orderBy(asc(annotations.relMs)),
     ),
+
+  /** A moment marked afterwards, while watching the recording: at any time of the trial. */
+  annotate: guarded("annotation.create")
+    .input(z.object({ trialId: id, relMs: z.number().finite().min(0).max(86_400_000), label: text("Label", 200), note: z.string().max(5000).default("") }))
+    .mutation(async ({ ctx, input }) => {
+      const [row] = await ctx.db.insert(annotations).values({ ...input, authorId: ctx.user.id }).returning({ id: annotations.id });
+      return row!;
+    }),
+
+  /** Its author may edit a marked moment; so may the study's owner and researchers. */
+  editAnnotation: guarded("annotation.create")
+    .input(z.object({ annotationId: id, label: text("Label", 200), note: z.string().max(5000) }))
+    .mutation(async ({ ctx, input }) => {
+      const [row] = await ctx.db.select({ authorId: annotations.authorId }).from(annotations).where(eq(annotations.id, input.annotationId));
+      if (row!.authorId !== ctx.user.id && !studyRoleMay(ctx.studyRole!, "experiment.edit")) {
+        throw new TRPCError({ code: "FORBIDDEN", message: "Only the person who marked this moment, or the study's owner and researchers, may change it." });
+      }
+      await ctx.db.update(annotations).set({ label: input.label, note: input.note, updatedAt: new Date() }).where(eq(annotations.id, input.annotationId));
+      return { edited: input.annotationId };
+    }),
 
   /** The trial as a file: its events as tidy CSV, or the full record (protocol embedded) as JSON. */
   export: guarded("data.read")
