@@ -45,9 +45,9 @@ class Researcher {
     await this.page.mouse.move(s.x + s.width / 2 + 12, s.y + s.height / 2, { steps: 3 });
     await this.page.mouse.move(t.x + t.width / 2, t.y + t.height / 2, { steps: 12 });
     await this.page.mouse.up();
-    // The new block is selected: its properties open beside the timeline.
+    // A new block is selected: its properties open beside the timeline. ("Run together" adds none.)
     const name = (await source.locator("span").first().textContent())!;
-    await this.properties.getByRole("heading", { name, exact: true }).waitFor();
+    if (blockType !== "run_together") await this.properties.getByRole("heading", { name, exact: true }).waitFor();
     // dnd-kit swallows a click in the 50 ms after a drop (the click a drop can cause);
     // nobody clicks that fast, but a test would.
     await this.page.waitForTimeout(100);
@@ -111,7 +111,10 @@ describe.sequential("the experiment designer, in the browser", () => {
 
     await r.addStep("Story");
     await r.say("Story", TEXT.story);
-    await r.gestureWithSpeech("Story", "look_down");
+    // This time with the library's "Run together", dropped on the step: its last action joins the one above.
+    await r.drag("look_down", "Story");
+    await r.drag("run_together", "Story");
+    await expect.poll(() => r.properties.getByLabel("Starts together with the action above").isChecked()).toBe(true);
 
     await r.addStep("Recall question");
     await r.drag("pause", "Recall question");
@@ -181,6 +184,14 @@ describe.sequential("the experiment designer, in the browser", () => {
     await page.locator('[data-block="nod"]').focus();
     await page.keyboard.press("Enter");
     await expect.poll(() => intro.count()).toBe(3);
+    // "Run together" from the library makes the selected nod start with the action above it.
+    const together = page.getByRole("region", { name: "Properties" }).getByLabel("Starts together with the action above");
+    expect(await together.isChecked()).toBe(false);
+    await page.locator('[data-block="run_together"]').focus();
+    await page.keyboard.press("Enter");
+    await expect.poll(() => together.isChecked()).toBe(true);
+    await page.keyboard.press("Control+z");
+    await expect.poll(() => together.isChecked()).toBe(false);
     await page.keyboard.press("Control+z");
     await expect.poll(() => intro.count()).toBe(2);
     await page.context().close();

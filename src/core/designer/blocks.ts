@@ -91,9 +91,22 @@ function robotBlocks(plugin: Plugin): Block[] {
   }));
 }
 
+/**
+ * Not an action: a tool that makes an action start together with the one
+ * above it (dropped onto it, or with the action selected). The group is then
+ * a frame around the actions, each still editable on its own.
+ */
+export const RUN_TOGETHER: Block = {
+  type: "run_together",
+  name: "Run together",
+  category: "timing",
+  description: "Drop onto an action to start it together with the action above it (say, a gesture with its speech).",
+  parameterSchema: none,
+};
+
 /** Everything the library offers for an experiment on this robot. */
 export function library(plugin: Plugin | null): Block[] {
-  return [...CONTROL_BLOCKS, ...ABSTRACT_BLOCKS, ...(plugin ? robotBlocks(plugin) : [])];
+  return [...CONTROL_BLOCKS, RUN_TOGETHER, ...ABSTRACT_BLOCKS, ...(plugin ? robotBlocks(plugin) : [])];
 }
 
 /** The block behind an action's type, if the library knows it. */

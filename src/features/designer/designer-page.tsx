@@ -8,7 +8,7 @@ import { ArrowLeft, Plus, Redo2, Undo2 } from "lucide-react";
 import Link from "next/link";
 import { useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from "react";
 import { studyRoleMay } from "@/core/access/policy";
-import { blockFor as findBlock, initialParameters, library, type Block } from "@/core/designer/blocks";
+import { blockFor as findBlock, initialParameters, library, RUN_TOGETHER, type Block } from "@/core/designer/blocks";
 import { commands, locateAction, locateStep } from "@/core/designer/model";
 import type { DesignDraft } from "@/core/designer/types";
 import { hasErrors, validateDesign } from "@/core/designer/validate";
@@ -105,11 +105,17 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const { setNotice } = designer;
   const addFromLibrary = useCallback(
     (block: Block) => {
+      if (block.type === RUN_TOGETHER.type) {
+        const { selection } = latest.current;
+        if (selection?.kind === "action") run(commands.setRunTogether(selection.id, true));
+        else setNotice("Select the action that should start together with the one above it, then choose “Run together”.");
+        return;
+      }
       const at = insertionPoint();
       if (at) addBlock(block, at.stepId, at.index);
       else setNotice("Add a step first: blocks go into steps.");
     },
-    [insertionPoint, addBlock, setNotice],
+    [insertionPoint, addBlock, setNotice, run],
   );
 
   const addStep = () => {
@@ -149,7 +155,12 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
     const drop = dropTarget(draft, String(e.over.id));
     if (!drop) return;
     const [kind, id] = splitId(String(e.active.id));
-    if (kind === "lib") {
+    if (kind === "lib" && id === RUN_TOGETHER.type) {
+      // Onto an action: that one; onto a step's drop zone: its last action.
+      const { step } = locateStep(draft, drop.stepId);
+      const target = step.actions[Math.min(drop.index, step.actions.length - 1)];
+      if (target) run(commands.setRunTogether(target.id, true));
+    } else if (kind === "lib") {
       const block = findBlock(id, plugin);
       if (block) addBlock(block, drop.stepId, drop.index);
     } else if (kind === "act") {
@@ -260,7 +271,7 @@ function dropTarget(draft: DesignDraft, overId: string): { stepId: string; index
 
 function dragLabel(activeId: string, draft: DesignDraft | null, blockName: (t: string) => string) {
   const [kind, id] = splitId(activeId);
-  if (kind === "lib") return blockName(id);
+  if (kind === "lib") return id === RUN_TOGETHER.type ? RUN_TOGETHER.name : blockName(id);
   if (!draft) return null;
   try {
     if (kind === "step") return locateStep(draft, id).step.name;
