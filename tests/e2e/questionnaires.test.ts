@@ -107,8 +107,11 @@ describe.sequential("questionnaires in the browser", () => {
 
     await researcher.getByRole("link", { name: "← Study" }).click();
     await researcher.getByRole("tab", { name: "Participants" }).click();
+    // Typing before the page is interactive would be lost: its submit button says when it is.
+    await expect.poll(() => researcher.getByRole("button", { name: "Add participant" }).isEnabled(), { timeout: 30_000 }).toBe(true);
     await researcher.getByLabel("Participant code").fill("C900");
     await researcher.getByRole("button", { name: "Add participant" }).click();
+    await researcher.getByRole("cell", { name: "C900", exact: true }).waitFor({ timeout: 45_000 });
     await researcher.getByRole("button", { name: "Questionnaire link for C900" }).click();
     await researcher.getByLabel("Questionnaire", { exact: true }).selectOption({ label: "Consent form" });
     await researcher.getByRole("button", { name: "Make the link" }).click();
