@@ -6,21 +6,12 @@ import { join, resolve } from "node:path";
 import { beforeAll, describe, expect, it } from "vitest";
 import { elanDocument } from "../../src/core/analysis/elan";
 import { simulate, type Command, type TrialProtocol } from "../../src/core/trial";
-import { STORYTELLER_STEPS } from "../../src/server/seed/storyteller";
+import { storytellerDraft } from "../../src/server/seed/storyteller";
 import { ensurePython, python } from "../support/python";
 
 const root = resolve(import.meta.dirname, "..", "..");
 
-const protocol: TrialProtocol = {
-  steps: STORYTELLER_STEPS.map((s) => ({
-    id: s.key,
-    name: s.name,
-    actions: s.actions.map((a, i) => {
-      const targets = a.parameters.targets as Record<string, string> | undefined;
-      return { id: `${s.key}-${i}`, type: a.type, name: a.name, parallelGroup: a.parallelGroup ?? null, parameters: targets ? { targets: Object.fromEntries(Object.entries(targets).map(([k, v]) => [k, v.slice(1)])) } : a.parameters };
-    }),
-  })),
-};
+const protocol: TrialProtocol = storytellerDraft();
 const done = (...ids: string[]): Command[] => ids.flatMap((actionId) => [{ kind: "dispatched", actionId }, { kind: "completed", actionId }] as Command[]);
 const run: Command[] = [
   { kind: "start" },

@@ -3,34 +3,18 @@
 import { describe, expect, it } from "vitest";
 import { exportExperiment } from "../../src/core/designer/exchange";
 import type { DesignDraft } from "../../src/core/designer/types";
-import { STORYTELLER, STORYTELLER_STEPS } from "../../src/server/seed/storyteller";
+import { storytellerDraft } from "../../src/server/seed/storyteller";
 import { scoreDesign } from "../support/storyteller-design-checklist";
 
-function storyteller(): DesignDraft {
-  return {
-    ...STORYTELLER,
-    steps: STORYTELLER_STEPS.map((s) => ({
-      id: s.key,
-      name: s.name,
-      description: s.description,
-      actions: s.actions.map((a, i) => {
-        const targets = a.parameters.targets as Record<string, string> | undefined;
-        const parameters = targets ? { targets: Object.fromEntries(Object.entries(targets).map(([k, v]) => [k, v.slice(1)])) } : a.parameters;
-        return { id: `${s.key}-${i}`, type: a.type, name: a.name, parameters, parallelGroup: a.parallelGroup ?? null };
-      }),
-    })),
-  };
-}
-
 const without = (change: (d: DesignDraft) => void) => {
-  const d = structuredClone(storyteller());
+  const d = structuredClone(storytellerDraft());
   change(d);
   return scoreDesign(exportExperiment(d));
 };
 
 describe("the Storyteller design checklist", () => {
   it("gives the demo experiment 100", () => {
-    expect(scoreDesign(exportExperiment(storyteller()))).toEqual({ score: 100, failed: [] });
+    expect(scoreDesign(exportExperiment(storytellerDraft()))).toEqual({ score: 100, failed: [] });
   });
 
   it.each([

@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { STORYTELLER, STORYTELLER_STEPS } from "../../server/seed/storyteller";
+import { storytellerDraft } from "../../server/seed/storyteller";
 import { exportExperiment, importExperiment } from "./exchange";
 import type { DesignDraft } from "./types";
 
@@ -8,21 +8,7 @@ function ids(prefix = "new") {
   return () => `${prefix}-${++n}`;
 }
 
-const storyteller: DesignDraft = {
-  ...STORYTELLER,
-  steps: STORYTELLER_STEPS.map((step) => ({
-    id: `db-${step.key}`,
-    name: step.name,
-    description: step.description,
-    actions: step.actions.map((a, i) => ({
-      id: `db-${step.key}-${i}`,
-      type: a.type,
-      name: a.name,
-      parallelGroup: a.parallelGroup ? `db-group-${a.parallelGroup}` : null,
-      parameters: a.type === "branch" ? { targets: Object.fromEntries(Object.entries(a.parameters.targets as object).map(([k, v]) => [k, `db-${String(v).slice(1)}`])) } : a.parameters,
-    })),
-  })),
-};
+const storyteller = storytellerDraft((key) => `db-${key}`);
 
 // Everything a naive writer or reader could trip on.
 const awkward: DesignDraft = {

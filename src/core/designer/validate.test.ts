@@ -1,6 +1,6 @@
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
-import { STORYTELLER, STORYTELLER_STEPS } from "../../server/seed/storyteller";
+import { storytellerDraft } from "../../server/seed/storyteller";
 import { loadPlugin, type Plugin } from "../plugins";
 import type { DesignAction, DesignDraft } from "./types";
 import { hasErrors, validateDesign, type DesignIssue } from "./validate";
@@ -116,21 +116,7 @@ describe("validateDesign", () => {
 });
 
 describe("the Interactive Storyteller", () => {
-  const storyteller: DesignDraft = {
-    ...STORYTELLER,
-    steps: STORYTELLER_STEPS.map((step) => ({
-      id: step.key,
-      name: step.name,
-      description: step.description,
-      actions: step.actions.map((a, i) => ({
-        id: `${step.key}-${i}`,
-        type: a.type,
-        name: a.name,
-        parallelGroup: a.parallelGroup ?? null,
-        parameters: a.type === "branch" ? { targets: Object.fromEntries(Object.entries(a.parameters.targets as object).map(([k, v]) => [k, String(v).slice(1)])) } : a.parameters,
-      })),
-    })),
-  };
+  const storyteller = storytellerDraft();
   const plugin = (file: string) => {
     const loaded = loadPlugin(file, readFileSync(`plugins/${file}`, "utf8"));
     if (!loaded.ok) throw new Error(JSON.stringify(loaded.errors));

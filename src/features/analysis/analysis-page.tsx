@@ -14,10 +14,10 @@ import { RecordingPlayer, useTrialRecording, videoSeconds } from "./recording-pl
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, type Tone } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
+import { seconds } from "@/ui/format";
 import { JointAngles } from "./joint-angles";
 
 const OUTCOME_TONE: Record<string, Tone> = { executed: "green", skipped: "amber", failed: "red", timed_out: "red", not_reached: "slate", running: "blue" };
-const seconds = (ms: number | null) => (ms === null ? "—" : `${(ms / 1000).toFixed(1)} s`);
 
 export function AnalysisPage({ trialId }: { trialId: string }) {
   const trpc = useTRPC();

@@ -4,6 +4,7 @@
 // anything seeks the recording there; the playhead shows where it is.
 import type { FidelityReport } from "@/core/analysis/fidelity";
 import { cn } from "@/ui/cn";
+import { seconds } from "@/ui/format";
 import { Card } from "@/ui/surface";
 
 interface Props {
@@ -58,7 +59,7 @@ export function TimelineChart({ report, deviations, moments, endMs, playheadMs, 
               key={a.actionId}
               type="button"
               title={`${a.name}: ${a.outcome}`}
-              aria-label={`Action ${a.name} at ${(a.requestedMs! / 1000).toFixed(1)} s`}
+              aria-label={`Action ${a.name} at ${seconds(a.requestedMs)}`}
               className={cn(item, a.outcome === "executed" ? "bg-emerald-300" : a.outcome === "skipped" ? "bg-amber-300" : "bg-red-300")}
               style={{ left: left(a.requestedMs!), width: width(a.requestedMs!, a.requestedMs! + (a.durationMs ?? 0)) }}
               onClick={() => seek(a.requestedMs!)}

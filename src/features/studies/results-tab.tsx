@@ -9,8 +9,8 @@ import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Card, EmptyState, Spinner } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
+import { seconds } from "@/ui/format";
 
-const seconds = (ms: number | null | undefined) => (ms === null || ms === undefined ? "—" : `${(ms / 1000).toFixed(1)} s`);
 
 export function ResultsTab({ studyId }: { studyId: string }) {
   const trpc = useTRPC();

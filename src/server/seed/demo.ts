@@ -6,7 +6,7 @@ import type { SystemRole, StudyRole } from "@/core/access/policy";
 import { createAccount } from "../auth/accounts";
 import type { Database } from "../db/client";
 import { actions, experiments, participants, steps, studies, studyMembers, user } from "../db/schema";
-import { STORYTELLER, STORYTELLER_STEPS } from "./storyteller";
+import { STORYTELLER, storytellerDraft } from "./storyteller";
 
 export interface DemoAccount {
   email: string;
@@ -57,38 +57,12 @@ export async function seedDemo(db: Database, password?: string): Promise<DemoAcc
       .insert(experiments)
       .values({ ...STORYTELLER, studyId: study!.id, updatedBy: owner })
       .returning();
-    const stepIds = new Map(STORYTELLER_STEPS.map((s) => [s.key, crypto.randomUUID()]));
-    await tx.insert(steps).values(
-      STORYTELLER_STEPS.map((s, position) => ({
-        id: stepIds.get(s.key)!,
-        experimentId: experiment!.id,
-        position,
-        name: s.name,
-        description: s.description,
-      })),
-    );
-    await tx.insert(actions).values(
-      STORYTELLER_STEPS.flatMap((s) =>
-        s.actions.map((a, position) => ({
-          stepId: stepIds.get(s.key)!,
-          position,
-          type: a.type,
-          name: a.name,
-          parameters: resolveStepKeys(a.parameters, stepIds),
-          parallelGroup: a.parallelGroup ?? null,
-        })),
-      ),
-    );
+    const design = storytellerDraft(() => crypto.randomUUID());
+    await tx.insert(steps).values(design.steps.map((s, position) => ({ id: s.id, experimentId: experiment!.id, position, name: s.name, description: s.description })));
+    await tx.insert(actions).values(design.steps.flatMap((s) => s.actions.map((a, position) => ({ ...a, stepId: s.id, position }))));
     await tx.insert(participants).values(
       ["P001", "P002", "P003"].map((code) => ({ studyId: study!.id, code, consentStatus: "given" as const, consentDate: new Date() })),
     );
   });
   return accounts;
-}
-
-/** "@key" strings in branch targets become the id of the step with that key. */
-function resolveStepKeys(value: Record<string, unknown>, stepIds: Map<string, string>): Record<string, unknown> {
-  return JSON.parse(
-    JSON.stringify(value, (_k, v) => (typeof v === "string" && v.startsWith("@") && stepIds.has(v.slice(1)) ? stepIds.get(v.slice(1)) : v)),
-  );
 }

@@ -1,5 +1,6 @@
 // The Interactive Storyteller (../shared/protocols/interactive-storyteller.md),
 // the demo experiment. Speech is the protocol's exact text.
+import type { DesignDraft } from "@/core/designer/types";
 
 export interface SeedAction {
   type: string;
@@ -110,3 +111,23 @@ export const STORYTELLER_STEPS: SeedStep[] = [
     ],
   },
 ];
+
+/**
+ * The Storyteller as a design draft: step and action ids from `idFor` (given
+ * the step key, or "<key>-<n>" for an action), branch targets resolved from
+ * "@key" to the target step's id. The seed and the tests build it here.
+ */
+export function storytellerDraft(idFor: (key: string) => string = (key) => key): DesignDraft {
+  const stepIds = new Map(STORYTELLER_STEPS.map((s) => [s.key, idFor(s.key)]));
+  const resolve = (value: Record<string, unknown>) =>
+    JSON.parse(JSON.stringify(value, (_k, v) => (typeof v === "string" && v.startsWith("@") && stepIds.has(v.slice(1)) ? stepIds.get(v.slice(1)) : v))) as Record<string, unknown>;
+  return {
+    ...STORYTELLER,
+    steps: STORYTELLER_STEPS.map((s) => ({
+      id: stepIds.get(s.key)!,
+      name: s.name,
+      description: s.description,
+      actions: s.actions.map((a, i) => ({ id: idFor(`${s.key}-${i}`), type: a.type, name: a.name, parameters: resolve(a.parameters), parallelGroup: a.parallelGroup ?? null })),
+    })),
+  };
+}

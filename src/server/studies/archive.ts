@@ -7,7 +7,7 @@ import type { Database } from "../db/client";
 import { conditions, experimentVersions, experiments, participants, questionnaireLinks, sessions, studies, trials } from "../db/schema";
 import { answersCsv } from "@/core/questionnaires/export";
 import { submitted } from "../questionnaires/responses";
-import { trialFile } from "../trials/files";
+import { trialFiles } from "../trials/files";
 
 const README = `HRIStudio study archive
 
@@ -69,10 +69,7 @@ export async function studyArchive(db: Database, studyId: string) {
     "questionnaire-answers.csv": strToU8(answersCsv(await submitted(db, eq(questionnaireLinks.studyId, studyId)))),
   };
   for (const { id } of trialRows) {
-    for (const format of ["json", "csv", "eaf"] as const) {
-      const file = await trialFile(db, id, format);
-      files[`trials/${file.filename.replace(/^trial-/, "")}`] = strToU8(file.body);
-    }
+    for (const file of await trialFiles(db, id, ["json", "csv", "eaf"])) files[`trials/${file.filename.replace(/^trial-/, "")}`] = strToU8(file.body);
   }
   const slug = study!.title.toLowerCase().replace(/[^a-z0-9]+/g, "-").replace(/^-|-$/g, "") || "study";
   return { filename: `${slug}.zip`, contentType: "application/zip", body: zipSync(files, { level: 6 }) };

@@ -1,7 +1,7 @@
 // A trial as files: its events as tidy CSV, its full record as JSON (the
-// protocol version embedded, events, marked moments, questionnaires), or an
-// ELAN document for video coding. The
-// trial's download and the study's archive both take them from here.
+// protocol version embedded, events, marked moments, questionnaires,
+// recordings), or an ELAN document for video coding. The trial's download
+// and the study's archive both take them from here, reading the trial once.
 import { asc, eq } from "drizzle-orm";
 import { elanDocument } from "@/core/analysis/elan";
 import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
@@ -13,24 +13,34 @@ import { recordingFileName } from "../media/recordings";
 import { submitted } from "../questionnaires/responses";
 import { eventsSince } from "./event-store";
 
-export async function trialFile(db: Database, trialId: string, format: "csv" | "json" | "eaf") {
+export type TrialFormat = "csv" | "json" | "eaf";
+
+async function readTrial(db: Database, trialId: string) {
   const [trial] = await db.select().from(trials).where(eq(trials.id, trialId));
-  const events = await eventsSince(db, trialId);
-  const name = `trial-${trialId}`;
-  if (format === "csv") return { filename: `${name}-events.csv`, contentType: "text/csv; charset=utf-8", body: eventsCsv(trialId, events) };
   const [version] = trial!.versionId ? await db.select().from(experimentVersions).where(eq(experimentVersions.id, trial!.versionId)) : [];
-  const marked = await db
-    .select({ relMs: annotations.relMs, label: annotations.label, note: annotations.note, authorName: user.name })
-    .from(annotations)
-    .leftJoin(user, eq(user.id, annotations.authorId))
-    .where(eq(annotations.trialId, trialId))
-    .orderBy(asc(annotations.relMs));
-  const protocol = (version?.snapshot ?? trial!.rehearsalSnapshot) as ProtocolSnapshot;
-  const recordings = await db.select().from(mediaRecordings).where(eq(mediaRecordings.trialId, trialId)).orderBy(asc(mediaRecordings.createdAt));
+  return {
+    trial: trial!,
+    version,
+    events: await eventsSince(db, trialId),
+    marked: await db
+      .select({ relMs: annotations.relMs, label: annotations.label, note: annotations.note, authorName: user.name })
+      .from(annotations)
+      .leftJoin(user, eq(user.id, annotations.authorId))
+      .where(eq(annotations.trialId, trialId))
+      .orderBy(asc(annotations.relMs)),
+    recordings: await db.select().from(mediaRecordings).where(eq(mediaRecordings.trialId, trialId)).orderBy(asc(mediaRecordings.createdAt)),
+    questionnaires: await submitted(db, eq(questionnaireLinks.trialId, trialId)),
+  };
+}
+
+function fileOf({ trial, version, events, marked, recordings, questionnaires }: Awaited<ReturnType<typeof readTrial>>, format: TrialFormat) {
+  const name = `trial-${trial.id}`;
+  if (format === "csv") return { filename: `${name}-events.csv`, contentType: "text/csv; charset=utf-8", body: eventsCsv(trial.id, events) };
+  const protocol = (version?.snapshot ?? trial.rehearsalSnapshot) as ProtocolSnapshot;
   if (format === "eaf") {
     const video = recordings.find((r) => r.status === "complete" && r.kind === "video");
     const media = video ? { fileName: recordingFileName(video.id, video.mimeType), mimeType: video.mimeType, offsetMs: video.offsetMs ?? 0 } : undefined;
-    const body = elanDocument({ protocol, events: events as unknown as TrialEvent[], annotations: marked, date: (trial!.t0 ?? trial!.createdAt).toISOString(), media });
+    const body = elanDocument({ protocol, events: events as unknown as TrialEvent[], annotations: marked, date: (trial.t0 ?? trial.createdAt).toISOString(), media });
     return { filename: `${name}.eaf`, contentType: "application/xml; charset=utf-8", body };
   }
   const record = trialRecordJson({
@@ -38,7 +48,7 @@ export async function trialFile(db: Database, trialId: string, format: "csv" | "
     protocol,
     events,
     annotations: marked,
-    questionnaires: await submitted(db, eq(questionnaireLinks.trialId, trialId)),
+    questionnaires,
     recordings: recordings.map((m) => ({
       id: m.id,
       kind: m.kind,
@@ -51,4 +61,14 @@ export async function trialFile(db: Database, trialId: string, format: "csv" | "
     })),
   });
   return { filename: `${name}.json`, contentType: "application/json", body: record };
+}
+
+export async function trialFile(db: Database, trialId: string, format: TrialFormat) {
+  return fileOf(await readTrial(db, trialId), format);
+}
+
+/** Several formats of one trial from one reading of it (the study archive's case). */
+export async function trialFiles(db: Database, trialId: string, formats: TrialFormat[]) {
+  const data = await readTrial(db, trialId);
+  return formats.map((format) => fileOf(data, format));
 }
