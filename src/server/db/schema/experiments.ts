@@ -69,6 +69,8 @@ export const experimentVersions = pgTable(
     hash: text("hash").notNull(),
     pluginId: text("plugin_id").notNull(),
     pluginVersion: text("plugin_version"),
+    // The exact plugin document (plugin_documents.hash) this version was published against.
+    pluginHash: text("plugin_hash"),
     publishedBy: text("published_by").references(() => user.id, { onDelete: "set null" }),
     publishedAt: timestamp("published_at", { withTimezone: true }).notNull().defaultNow(),
   },

@@ -5,3 +5,4 @@ export * from "./studies";
 export * from "./trials";
 export * from "./sessions";
 export * from "./questionnaires";
+export * from "./security";

@@ -6,6 +6,7 @@ export const pluginRepositories = pgTable("plugin_repositories", {
   id: id(),
   url: text("url").notNull().unique(),
   name: text("name").notNull(),
+  // Chosen by the administrator who added the repository: the most its plugins are trusted.
   trust: text("trust", { enum: ["official", "verified", "community"] })
     .notNull()
     .default("community"),
@@ -16,7 +17,7 @@ export const pluginRepositories = pgTable("plugin_repositories", {
   createdAt: createdAt(),
 });
 
-// One row per plugin version; experiment versions point at (robotId, version).
+// One row per plugin version of a repository: its identity is repository, robotId, version and hash.
 export const installedPlugins = pgTable(
   "installed_plugins",
   {
@@ -31,5 +32,17 @@ export const installedPlugins = pgTable(
     hash: text("hash").notNull(),
     installedAt: createdAt(),
   },
-  (t) => [uniqueIndex("installed_plugins_robot_version_idx").on(t.robotId, t.version)],
+  (t) => [uniqueIndex("installed_plugins_repository_robot_version_idx").on(t.repositoryId, t.robotId, t.version)],
 );
+
+// Every plugin document a published version ran against, by its content hash:
+// the runtime loads exactly this document for the version's trials.
+export const pluginDocuments = pgTable("plugin_documents", {
+  hash: text("hash").primaryKey(),
+  robotId: text("robot_id").notNull(),
+  version: text("version").notNull(),
+  // "first-party", or the repository's id.
+  source: text("source").notNull(),
+  definition: jsonb("definition").notNull(),
+  createdAt: createdAt(),
+});
