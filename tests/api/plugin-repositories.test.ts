@@ -9,7 +9,7 @@ import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { freshDatabase } from "../support/db";
 import { buildFixture } from "./fixture";
 
-const FIXTURE = join(import.meta.dirname, "..", "..", "..", "shared", "fixtures", "hristudio-plugins");
+const FIXTURE = join(import.meta.dirname, "..", "fixtures", "hristudio-plugins");
 const nao = JSON.parse(readFileSync(join(FIXTURE, "plugins", "nao6-ros2.json"), "utf8"));
 const files: Record<string, string> = {
   "/repository.json": readFileSync(join(FIXTURE, "repository.json"), "utf8"),

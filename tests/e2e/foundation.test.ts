@@ -39,7 +39,7 @@ describe.sequential("the platform foundation, in the browser", () => {
   });
 
   it("lets an administrator add and sync a plugin repository, and shows what changed", async () => {
-    const fixture = join(import.meta.dirname, "..", "..", "..", "shared", "fixtures", "hristudio-plugins");
+    const fixture = join(import.meta.dirname, "..", "fixtures", "hristudio-plugins");
     const repo = createServer((req, res) => {
       const file = join(fixture, normalize(req.url!).replace(/^(\.\.[/\\])+/, ""));
       existsSync(file) ? res.end(readFileSync(file)) : res.writeHead(404).end();

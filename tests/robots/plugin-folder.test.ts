@@ -4,7 +4,7 @@ import { join } from "node:path";
 import { afterAll, describe, expect, it } from "vitest";
 import { loadPluginFolder } from "../../src/robots/plugin-folder";
 
-const fixture = "../shared/fixtures/hristudio-plugins/plugins/nao6-ros2.json";
+const fixture = "tests/fixtures/hristudio-plugins/plugins/nao6-ros2.json";
 
 describe("first-party plugins", () => {
   it("load through the public loader with no errors", async () => {

@@ -5,7 +5,7 @@ import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { loadPlugin, pluginChanges, type Plugin } from "../../src/core/plugins";
 import { fetchRepository } from "../../src/robots/repository-sync";
 
-const fixtures = "../shared/fixtures/hristudio-plugins";
+const fixtures = "tests/fixtures/hristudio-plugins";
 let server: Server;
 let base = "";
 const files: Record<string, string> = {};
@@ -17,6 +17,8 @@ beforeAll(async () => {
     "/official/repository.json": repository,
     "/official/plugins/index.json": await readFile(`${fixtures}/plugins/index.json`, "utf8"),
     "/official/plugins/nao6-ros2.json": nao,
+    "/official/plugins/turtlebot3-burger.json": await readFile(`${fixtures}/plugins/turtlebot3-burger.json`, "utf8"),
+    "/official/plugins/turtlebot3-waffle.json": await readFile(`${fixtures}/plugins/turtlebot3-waffle.json`, "utf8"),
     "/mixed/repository.json": repository.replace('"trust": "official"', '"trust": "community"'),
     "/mixed/plugins/index.json": '["nao6-ros2.json", "broken.json", "missing.json"]',
     "/mixed/plugins/nao6-ros2.json": nao,
@@ -35,7 +37,8 @@ afterAll(() => new Promise<void>((resolve) => server.close(() => resolve())));
 describe("fetchRepository", () => {
   it("fetches the official repository and its NAO6 plugin unmodified", async () => {
     const result = await fetchRepository(`${base}/official`);
-    expect(result.errors).toEqual([]);
+    // The TurtleBot3 files send ROS 2 action goals, which the format cannot express yet (issue 16): refused, and named.
+    expect([...new Set(result.errors.map((e) => e.file))]).toEqual(["turtlebot3-burger.json", "turtlebot3-waffle.json"]);
     expect(result.repository?.id).toBe("hristudio-official");
     expect(result.plugins.map((p) => [p.file, p.plugin.robotId, p.plugin.version, p.trust])).toEqual([["nao6-ros2.json", "nao6-ros2", "3.0.0", "verified"]]);
   });

@@ -11,12 +11,12 @@ import type { Health } from "../../src/robots/transports/transport";
 import { readTranscript } from "./support/replay";
 
 const fixture = (() => {
-  const loaded = loadPlugin("nao6-ros2.json", readFileSync("../shared/fixtures/hristudio-plugins/plugins/nao6-ros2.json", "utf8"));
+  const loaded = loadPlugin("nao6-ros2.json", readFileSync("tests/fixtures/hristudio-plugins/plugins/nao6-ros2.json", "utf8"));
   if (!loaded.ok) throw new Error("fixture");
   return loaded.value as Plugin;
 })();
 const hostile = (readTranscript("02-hostile-text-roundtrip.jsonl")[4]!.frame as { msg: { data: string } }).msg.data;
-const hostileSha = JSON.parse(readFileSync("../shared/fixtures/rosbridge-transcripts/02-hostile-text-roundtrip.check.json", "utf8")).sent.sha256_utf8;
+const hostileSha = JSON.parse(readFileSync("tests/fixtures/rosbridge-transcripts/02-hostile-text-roundtrip.check.json", "utf8")).sent.sha256_utf8;
 
 let sim: Simulator | null = null;
 let transport: RosbridgeTransport | null = null;

@@ -2,7 +2,7 @@ import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { loadPlugin, parsePluginIndex, parseRepository } from "./index";
 
-const fixtures = "../shared/fixtures/hristudio-plugins";
+const fixtures = "tests/fixtures/hristudio-plugins";
 const read = (path: string) => readFileSync(path, "utf8");
 
 describe("HRIStudio files load unmodified", () => {
@@ -15,7 +15,7 @@ describe("HRIStudio files load unmodified", () => {
     const repo = parseRepository("repository.json", read(`${fixtures}/repository.json`));
     expect(repo.ok && repo.value.id).toBe("hristudio-official");
     const index = parsePluginIndex("plugins/index.json", read(`${fixtures}/plugins/index.json`));
-    expect(index.ok && index.value).toEqual(["nao6-ros2.json"]);
+    expect(index.ok && index.value).toEqual(["turtlebot3-burger.json", "turtlebot3-waffle.json", "nao6-ros2.json"]);
   });
 });
 

@@ -3,7 +3,7 @@ import { describe, expect, it } from "vitest";
 import { fillTemplate, outgoingFor, placeholders, type JsonValue, type PluginAction } from "./index";
 
 const hostile = (
-  JSON.parse(readFileSync("../shared/fixtures/rosbridge-transcripts/02-hostile-text-roundtrip.jsonl", "utf8").split("\n")[4]!).frame.msg
+  JSON.parse(readFileSync("tests/fixtures/rosbridge-transcripts/02-hostile-text-roundtrip.jsonl", "utf8").split("\n")[4]!).frame.msg
     .data as string
 );
 

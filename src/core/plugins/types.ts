@@ -1,5 +1,5 @@
 // The shape of a loaded plugin file: the HRIStudio plugin format (as in
-// ../shared/fixtures/hristudio-plugins) plus our additive fields. The JSON
+// tests/fixtures/hristudio-plugins) plus our additive fields. The JSON
 // Schema in plugins/plugin.schema.json is the authority; these types mirror it.
 
 export type JsonValue = string | number | boolean | null | JsonValue[] | { [key: string]: JsonValue };

@@ -3,7 +3,7 @@
 import { readFileSync } from "node:fs";
 import { WebSocket } from "ws";
 
-export const TRANSCRIPTS = "../shared/fixtures/rosbridge-transcripts";
+export const TRANSCRIPTS = "tests/fixtures/rosbridge-transcripts";
 
 export interface Line {
   dir: "send" | "recv" | "event";
