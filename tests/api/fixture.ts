@@ -43,8 +43,11 @@ export async function buildFixture(db: Database) {
     people[caller] = await newPerson(db, caller, SYSTEM_ROLE[caller]);
   }
   const media = testMedia();
-  const context = (caller: Caller) => ({ db, user: caller === "anonymous" ? null : people[caller], secret: TEST_SECRET, runtimeUrl: "ws://127.0.0.1:1", media });
+  const contextOf = (user: SessionUser | null) => ({ db, user, secret: TEST_SECRET, runtimeUrl: "ws://127.0.0.1:1", media });
+  const context = (caller: Caller) => contextOf(caller === "anonymous" ? null : people[caller]);
   const api = (caller: Caller) => callerFactory(context(caller));
+  /** The API as anyone else, e.g. the owner of a second study. */
+  const apiAs = (user: SessionUser) => callerFactory(contextOf(user));
   /** A study whose members are the four study-role callers. */
   async function newStudy(title = "Fixture study") {
     const study = await api("owner").studies.create({ title });
@@ -64,7 +67,7 @@ export async function buildFixture(db: Database) {
     const body = (await res.json()) as { error?: { message: string; data: { code: string; issues: Array<{ field: string; message: string }> | null } } };
     return body.error ?? null;
   }
-  return { people, api, newStudy, httpError, media };
+  return { db, people, api, apiAs, newStudy, httpError, media };
 }
 
 export type Fixture = Awaited<ReturnType<typeof buildFixture>>;

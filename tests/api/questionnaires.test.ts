@@ -73,7 +73,7 @@ describe("one-time links", () => {
     const other = await studyWithSus();
     await expect(owner.questionnaires.createLink({ questionnaireId: q.id, participantId: other.p.id })).rejects.toMatchObject({
       code: "BAD_REQUEST",
-      message: "Please correct: participantId: this participant is not in the questionnaire's study",
+      message: "Please correct: participantId: not a participant of this study",
     });
   });
 

@@ -27,6 +27,8 @@ export const STUDY_OPERATIONS = {
   "version.publish": ["owner", "researcher"],
   "participant.read": ["owner", "researcher", "wizard", "observer"],
   "participant.manage": ["owner", "researcher"],
+  // Undoing a withdrawal is the owner's alone, and always on the record.
+  "participant.reinstate": ["owner"],
   "trial.read": ["owner", "researcher", "wizard", "observer"],
   "trial.create": ["owner", "researcher", "wizard"],
   "trial.run": ["owner", "researcher", "wizard"],

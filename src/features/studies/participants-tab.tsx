@@ -23,13 +23,18 @@ export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId:
   const update = useMutation(trpc.participants.update.mutationOptions({ onSuccess: refresh }));
   const conditions = useQuery({ ...trpc.conditions.list.queryOptions({ studyId }), enabled: !blinded });
   const assign = useMutation(trpc.conditions.assign.mutationOptions({ onSuccess: refresh }));
+  const reinstate = useMutation(trpc.participants.reinstate.mutationOptions({ onSuccess: refresh }));
+  const askToReinstate = (participantId: string, code: string) => {
+    const reason = window.prompt(`Why is ${code} reinstated? Their consent is recorded as given again, and your reason goes into the study's audit log.`);
+    if (reason?.trim()) reinstate.mutate({ participantId, reason: reason.trim() });
+  };
   const conditionName = (id: string | null) => conditions.data?.find((c) => c.id === id)?.name;
   const manage = studyRoleMay(role, "participant.manage");
   return (
     <div className="space-y-6">
       {manage && <AddParticipant studyId={studyId} fields={settings.demographics} onAdded={refresh} />}
       {participants.isPending && <Spinner />}
-      <Problem error={participants.error ?? update.error ?? assign.error} />
+      <Problem error={participants.error ?? update.error ?? assign.error ?? reinstate.error} />
       {participants.data?.length === 0 && <EmptyState title="No participants yet." />}
       {!!participants.data?.length && (
         <Table>
@@ -50,7 +55,7 @@ export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId:
               <tr key={p.id}>
                 <Td className="font-mono">{p.code}</Td>
                 <Td>
-                  {manage ? (
+                  {manage && p.consentStatus !== "withdrawn" ? (
                     <NativeSelect
                       aria-label={`Consent of ${p.code}`}
                       className="w-36"
@@ -66,6 +71,11 @@ export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId:
                     </NativeSelect>
                   ) : (
                     <Badge tone={STATUS_TONE[p.consentStatus]}>{p.consentStatus}</Badge>
+                  )}
+                  {p.consentStatus === "withdrawn" && studyRoleMay(role, "participant.reinstate") && (
+                    <Button variant="ghost" className="ml-2" onClick={() => askToReinstate(p.id, p.code)}>
+                      Reinstate…
+                    </Button>
                   )}
                 </Td>
                 <Td>

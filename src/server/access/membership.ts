@@ -1,131 +1,19 @@
-// Which study an input points at, and the caller's role in it.
+// The caller's place in a study, and the check that an input names rows of
+// one study only.
 import { TRPCError } from "@trpc/server";
 import { and, eq } from "drizzle-orm";
-import { isStudyOperation, type Operation, type StudyRole } from "@/core/access/policy";
+import { namedIn } from "@/core/access/input";
+import type { StudyRole } from "@/core/access/policy";
 import { blindingFor, NOT_BLINDED, type Blinding } from "@/core/studies/blinding";
 import { readSettings } from "@/core/studies/settings";
 import type { Database } from "../db/client";
-import {
-  actions,
-  annotations,
-  conditions,
-  experimentVersions,
-  experiments,
-  mediaRecordings,
-  participants,
-  questionnaires,
-  sessions,
-  steps,
-  studies,
-  studyMembers,
-  trials,
-} from "../db/schema";
+import { studies, studyMembers } from "../db/schema";
+import { loadResource, nameOf, REFERENCES, type ReferenceKey } from "./resources";
 
-type Lookup = (db: Database, id: string) => Promise<string | undefined>;
-
-// Each id an input may carry, and how to find its study. The first key present wins.
-const LOOKUPS: Array<[string, Lookup]> = [
-  ["studyId", async (_db, id) => id],
-  // Before participantId and trialId: a link is checked against the questionnaire's own study.
-  [
-    "questionnaireId",
-    async (db, id) => (await db.select({ s: questionnaires.studyId }).from(questionnaires).where(eq(questionnaires.id, id)))[0]?.s,
-  ],
-  [
-    "experimentId",
-    async (db, id) =>
-      (await db.select({ s: experiments.studyId }).from(experiments).where(eq(experiments.id, id)))[0]?.s,
-  ],
-  [
-    "versionId",
-    async (db, id) =>
-      (
-        await db
-          .select({ s: experiments.studyId })
-          .from(experimentVersions)
-          .innerJoin(experiments, eq(experiments.id, experimentVersions.experimentId))
-          .where(eq(experimentVersions.id, id))
-      )[0]?.s,
-  ],
-  [
-    "stepId",
-    async (db, id) =>
-      (
-        await db
-          .select({ s: experiments.studyId })
-          .from(steps)
-          .innerJoin(experiments, eq(experiments.id, steps.experimentId))
-          .where(eq(steps.id, id))
-      )[0]?.s,
-  ],
-  [
-    "actionId",
-    async (db, id) =>
-      (
-        await db
-          .select({ s: experiments.studyId })
-          .from(actions)
-          .innerJoin(steps, eq(steps.id, actions.stepId))
-          .innerJoin(experiments, eq(experiments.id, steps.experimentId))
-          .where(eq(actions.id, id))
-      )[0]?.s,
-  ],
-  [
-    "participantId",
-    async (db, id) =>
-      (await db.select({ s: participants.studyId }).from(participants).where(eq(participants.id, id)))[0]?.s,
-  ],
-  [
-    "trialId",
-    async (db, id) => (await db.select({ s: trials.studyId }).from(trials).where(eq(trials.id, id)))[0]?.s,
-  ],
-  [
-    "conditionId",
-    async (db, id) => (await db.select({ s: conditions.studyId }).from(conditions).where(eq(conditions.id, id)))[0]?.s,
-  ],
-  [
-    "recordingId",
-    async (db, id) =>
-      (await db.select({ s: trials.studyId }).from(mediaRecordings).innerJoin(trials, eq(trials.id, mediaRecordings.trialId)).where(eq(mediaRecordings.id, id)))[0]?.s,
-  ],
-  [
-    "sessionId",
-    async (db, id) => (await db.select({ s: sessions.studyId }).from(sessions).where(eq(sessions.id, id)))[0]?.s,
-  ],
-  [
-    "annotationId",
-    async (db, id) =>
-      (
-        await db
-          .select({ s: trials.studyId })
-          .from(annotations)
-          .innerJoin(trials, eq(trials.id, annotations.trialId))
-          .where(eq(annotations.id, id))
-      )[0]?.s,
-  ],
-];
-
-export const STUDY_KEYS = LOOKUPS.map(([key]) => key);
-
-export async function studyIdForInput(db: Database, input: unknown, op: Operation): Promise<string | null> {
-  if (!isStudyOperation(op)) return null;
-  const record = (input && typeof input === "object" ? input : {}) as Record<string, unknown>;
-  for (const [key, lookup] of LOOKUPS) {
-    const value = record[key];
-    if (value === undefined) continue;
-    if (typeof value !== "string" || value.length === 0 || value.length > 100) {
-      throw new TRPCError({ code: "BAD_REQUEST", message: `Please correct: ${key}: must be an id` });
-    }
-    const studyId = await lookup(db, value);
-    // An unknown id reads exactly like a study the caller may not see.
-    if (!studyId) throw new TRPCError({ code: "NOT_FOUND", message: "Study not found." });
-    return studyId;
-  }
-  throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: `Operation ${op} needs one of ${STUDY_KEYS.join(", ")}.` });
-}
+type Db = Pick<Database, "select">;
 
 /** The caller's role in a study, and what that study's blinds hide from them. */
-export async function studyAccessOf(db: Database, studyId: string, userId: string): Promise<{ role: StudyRole | null; blinding: Blinding }> {
+export async function studyAccessOf(db: Db, studyId: string, userId: string): Promise<{ role: StudyRole | null; blinding: Blinding }> {
   const [row] = await db
     .select({ role: studyMembers.role, settings: studies.settings, status: studies.status })
     .from(studies)
@@ -133,4 +21,37 @@ export async function studyAccessOf(db: Database, studyId: string, userId: strin
     .where(eq(studies.id, studyId));
   const role = row?.role ?? null;
   return { role, blinding: row ? blindingFor(role, readSettings(row.settings), row.status) : NOT_BLINDED };
+}
+
+const REFERENCE_KEYS = new Set(Object.keys(REFERENCES));
+const MAX_REFERENCES = 1000;
+
+const refuse = (path: string, what: string): never => {
+  throw new TRPCError({ code: "BAD_REQUEST", message: `Please correct: ${path}: ${what}` });
+};
+
+/**
+ * Refuses an input that names a row of any other study, wherever in the input
+ * it sits, under any key the schema may or may not use: an unknown id and
+ * another study's id read the same.
+ */
+export async function assertOneStudy(db: Db, studyId: string, input: unknown, known: { kind: string; id: string }): Promise<void> {
+  const named = namedIn(input, REFERENCE_KEYS).filter((n) => n.value !== null && n.value !== undefined);
+  const checked = new Set([`${known.kind}:${known.id}`]);
+  for (const { path, key, value } of named) {
+    const ids = Array.isArray(value) ? value : [value];
+    if (ids.length > MAX_REFERENCES) refuse(path, `may list at most ${MAX_REFERENCES} ids`);
+    for (const [i, id] of ids.entries()) {
+      const where = Array.isArray(value) ? `${path}.${i}` : path;
+      if (typeof id !== "string" || id.length === 0 || id.length > 100) refuse(where, "must be an id");
+      const kind = REFERENCES[key as ReferenceKey];
+      if (checked.has(`${kind}:${id}`)) continue;
+      if (kind === "member") {
+        if ((await studyAccessOf(db, studyId, id as string)).role === null) refuse(where, "not a member of this study");
+      } else if ((await loadResource(db, kind, id as string))?.studyId !== studyId) {
+        refuse(where, `not a ${nameOf(kind)} of this study`);
+      }
+      checked.add(`${kind}:${id}`);
+    }
+  }
 }

@@ -1,10 +1,13 @@
 import { initTRPC, TRPCError } from "@trpc/server";
-import { ZodError } from "zod";
-import { decide, type Operation, type StudyRole, type SystemRole } from "@/core/access/policy";
+import { ZodError, type z } from "zod";
+import { nulPath } from "@/core/access/input";
+import { decide, isStudyOperation, type Operation, type StudyOperation, type StudyRole, type SystemOperation, type SystemRole } from "@/core/access/policy";
+import type { Blinding } from "@/core/studies/blinding";
 import type { Database } from "../db/client";
-import { studyAccessOf, studyIdForInput } from "../access/membership";
+import { assertOneStudy, studyAccessOf } from "../access/membership";
+import { keyOf, loadResource, nameOf, type Resource, type ResourceRow } from "../access/resources";
 import type { MediaStorage } from "../media/storage";
-import { NOT_BLINDED, type Blinding } from "@/core/studies/blinding";
+import { logWithReference, unexpectedMessage } from "../errors/reference";
 import { describeIssues, fieldIssues, type FieldIssue } from "./errors";
 
 export interface SessionUser {
@@ -28,56 +31,90 @@ export interface Context {
 export interface Meta {
   /** Every procedure names the operation it performs; the policy decides. */
   op: Operation | "public";
+  /** A study operation names the kind of row it acts on; the study is that row's. */
+  resource?: Resource;
 }
 
 const t = initTRPC
   .context<Context>()
   .meta<Meta>()
   .create({
-    errorFormatter({ shape, error }) {
+    // Never a stack trace to a client, in any mode.
+    isDev: false,
+    errorFormatter({ shape, error, path }) {
       const issues: FieldIssue[] | null = error.cause instanceof ZodError ? fieldIssues(error.cause) : null;
-      return {
-        ...shape,
-        message: issues ? `Please correct: ${describeIssues(issues)}` : shape.message,
-        data: { ...shape.data, issues },
-      };
+      // An unexpected error may carry SQL and its parameters: the client gets a reference instead.
+      const message = issues
+        ? `Please correct: ${describeIssues(issues)}`
+        : error.code === "INTERNAL_SERVER_ERROR"
+          ? unexpectedMessage(logWithReference(error.cause ?? error, `procedure ${path ?? "(unknown)"}`))
+          : shape.message;
+      return { ...shape, message, data: { code: shape.data.code, httpStatus: shape.data.httpStatus, path: shape.data.path, issues } };
     },
   });
 
 export const router = t.router;
 export const createCallerFactory = t.createCallerFactory;
 
-/** Only for procedures that need no account (none hold study data). */
-export const publicProcedure = t.procedure.meta({ op: "public" });
+/** PostgreSQL cannot store a NUL character: refused here with where it was, before any handler. */
+const noNul = t.middleware(async ({ getRawInput, next }) => {
+  const at = nulPath(await getRawInput());
+  if (at) throw new TRPCError({ code: "BAD_REQUEST", message: `Please correct: ${at}: must not contain the NUL character (\\0)` });
+  return next();
+});
 
-export interface AuthorizedContext extends Context {
-  user: SessionUser;
-  studyId: string | null;
-  studyRole: StudyRole | null;
+/** Only for procedures that need no account (none hold study data). */
+export const publicProcedure = t.procedure.meta({ op: "public" }).use(noNul);
+
+/** Signed in, and every procedure declares what it does. */
+const signedIn = t.procedure.use(noNul).use(async ({ ctx, meta, next }) => {
+  if (!meta?.op) throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: "Procedure declares no operation." });
+  if (meta.op === "public") throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: "Public procedures use publicProcedure." });
+  if (isStudyOperation(meta.op) && !meta.resource) throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: `Operation ${meta.op} must name the row it acts on.` });
+  if (!ctx.user) throw new TRPCError({ code: "UNAUTHORIZED", message: "Please sign in." });
+  return next({ ctx: { ...ctx, user: ctx.user } });
+});
+
+/** A procedure that touches no study: who may call it depends on the account's system role. */
+export const guarded = (op: SystemOperation) =>
+  signedIn.meta({ op }).use(({ ctx, next }) => {
+    const decision = decide({ systemRole: ctx.user.role, studyRole: null }, op);
+    if (!decision.allow) throw new TRPCError({ code: "FORBIDDEN", message: decision.reason });
+    return next();
+  });
+
+export interface StudyContext<R extends Resource> {
+  studyId: string;
+  studyRole: StudyRole;
   /** What the study's blinds hide from the caller: procedures strip it from what they return. */
   blinding: Blinding;
+  /** The row the procedure acts on, as stored. */
+  row: ResourceRow<R>;
 }
 
 /**
- * Every non-public procedure passes here: signed in, then the policy, asked
- * with the caller's role in the study the input points at.
+ * A procedure that acts on one row of a study. After its input is validated,
+ * the row named by `<resource>Id` is loaded, the study is the row's own, the
+ * policy decides with the caller's role there, and any other id in the input
+ * (under any key, at any depth) must belong to the same study. The handler
+ * receives the loaded row as `ctx.row`: nothing is left for it to forget.
  */
-export const procedure = t.procedure.use(async ({ ctx, meta, next, getRawInput }) => {
-  if (!meta || !meta.op) {
-    throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: "Procedure declares no operation." });
-  }
-  if (meta.op === "public") {
-    throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: "Public procedures use publicProcedure." });
-  }
-  if (!ctx.user) throw new TRPCError({ code: "UNAUTHORIZED", message: "Please sign in." });
-  const studyId = await studyIdForInput(ctx.db, await getRawInput(), meta.op);
-  const { role: studyRole, blinding } = studyId ? await studyAccessOf(ctx.db, studyId, ctx.user.id) : { role: null, blinding: NOT_BLINDED };
-  const decision = decide({ systemRole: ctx.user.role, studyRole, blinding }, meta.op);
-  if (!decision.allow) {
-    throw new TRPCError({ code: decision.hidden ? "NOT_FOUND" : "FORBIDDEN", message: decision.reason });
-  }
-  return next({ ctx: { ...ctx, user: ctx.user, studyId, studyRole, blinding } });
-});
-
-/** A procedure guarded by `op`. */
-export const guarded = (op: Operation) => procedure.meta({ op });
+export function studyProcedure<R extends Resource, I extends z.ZodObject>(op: StudyOperation, resource: R, input: I) {
+  const key = keyOf(resource);
+  return signedIn
+    .meta({ op, resource })
+    .input(input)
+    .use(async ({ ctx, input: parsed, getRawInput, next }) => {
+      const id = (parsed as Record<string, unknown>)[key];
+      if (typeof id !== "string") throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: `A procedure on a ${resource} needs ${key} in its input.` });
+      const row = await loadResource(ctx.db, resource, id);
+      // An unknown id reads exactly like a row of a study the caller may not see.
+      const notFound = () => new TRPCError({ code: "NOT_FOUND", message: `No such ${nameOf(resource)}, or it belongs to a study you are not a member of.` });
+      if (!row) throw notFound();
+      const { role, blinding } = await studyAccessOf(ctx.db, row.studyId, ctx.user.id);
+      const decision = decide({ systemRole: ctx.user.role, studyRole: role, blinding }, op);
+      if (!decision.allow) throw decision.hidden ? notFound() : new TRPCError({ code: "FORBIDDEN", message: decision.reason });
+      await assertOneStudy(ctx.db, row.studyId, await getRawInput(), { kind: resource, id });
+      return next({ ctx: { studyId: row.studyId, studyRole: role!, blinding, row } satisfies StudyContext<R> });
+    });
+}

@@ -25,6 +25,7 @@ export async function openLink(db: Database, token: string) {
       name: questionnaires.name,
       studyTitle: studies.title,
       participantCode: participants.code,
+      consentStatus: participants.consentStatus,
       response: questionnaireResponses,
     })
     .from(questionnaireLinks)
@@ -35,6 +36,8 @@ export async function openLink(db: Database, token: string) {
     .leftJoin(questionnaireResponses, eq(questionnaireResponses.linkId, questionnaireLinks.id))
     .where(eq(questionnaireLinks.tokenHash, hashToken(token)));
   if (!row) throw new TRPCError({ code: "NOT_FOUND", message: "This questionnaire link is not valid. Please ask the researcher for a new one." });
+  // Withdrawing ends every link at once: nothing more is asked of them or stored.
+  if (row.consentStatus === "withdrawn") throw new TRPCError({ code: "FORBIDDEN", message: "This link no longer works: you have withdrawn from this study. Thank you for your time." });
   if (row.link.usedAt) throw new TRPCError({ code: "FORBIDDEN", message: "This questionnaire has already been submitted with this link. Thank you! A link can be used only once." });
   if (row.link.expiresAt.getTime() < Date.now()) {
     throw new TRPCError({ code: "FORBIDDEN", message: `This link expired at ${row.link.expiresAt.toISOString().slice(0, 16).replace("T", " ")} UTC. Please ask the researcher for a new one.` });

@@ -6,13 +6,12 @@ import { readSettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { conditions, experiments, participants, studies } from "../../db/schema";
 import { qualified } from "../../db/qualified";
-import { guarded, router } from "../trpc";
+import { router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 
 export const conditionsRouter = router({
-  list: guarded("experiment.read")
-    .input(z.object({ studyId: id }))
-    .query(({ ctx, input }) =>
+  list: studyProcedure("experiment.read", "study", z.object({ studyId: id }))
+    .query(({ ctx }) =>
       ctx.db
         .select({
           id: conditions.id,
@@ -25,18 +24,16 @@ export const conditionsRouter = router({
         })
         .from(conditions)
         .innerJoin(experiments, eq(experiments.id, conditions.experimentId))
-        .where(eq(conditions.studyId, input.studyId))
+        .where(eq(conditions.studyId, ctx.studyId))
         .orderBy(asc(conditions.name)),
     ),
 
-  create: guarded("experiment.edit")
-    .input(z.object({ studyId: id, name: text("Condition name", 200), description: z.string().max(2000).default(""), experimentId: id }))
+  // The experiment is checked to be this study's by the middleware, like every id of the input.
+  create: studyProcedure("experiment.edit", "study", z.object({ studyId: id, name: text("Condition name", 200), description: z.string().max(2000).default(""), experimentId: id }))
     .mutation(async ({ ctx, input }) => {
-      const [experiment] = await ctx.db.select().from(experiments).where(and(eq(experiments.id, input.experimentId), eq(experiments.studyId, input.studyId)));
-      if (!experiment) throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: experimentId: choose an experiment of this study" });
       const [row] = await ctx.db
         .insert(conditions)
-        .values(input)
+        .values({ ...input, studyId: ctx.studyId })
         .returning()
         .catch((e: { cause?: { code?: string } }) => {
           if (e.cause?.code === "23505") throw new TRPCError({ code: "CONFLICT", message: `This study already has a condition called ${input.name}.` });
@@ -45,21 +42,20 @@ export const conditionsRouter = router({
       return row!;
     }),
 
-  delete: guarded("experiment.edit")
-    .input(z.object({ conditionId: id }))
-    .mutation(async ({ ctx, input }) => {
-      const [used] = await ctx.db.select({ id: participants.id }).from(participants).where(eq(participants.conditionId, input.conditionId)).limit(1);
+  delete: studyProcedure("experiment.edit", "condition", z.object({ conditionId: id }))
+    .mutation(async ({ ctx }) => {
+      const [used] = await ctx.db.select({ id: participants.id }).from(participants).where(eq(participants.conditionId, ctx.row.id)).limit(1);
       if (used) throw new TRPCError({ code: "BAD_REQUEST", message: "Participants are assigned to this condition; it must stay for their records." });
-      await ctx.db.delete(conditions).where(eq(conditions.id, input.conditionId));
-      return { deleted: input.conditionId };
+      await ctx.db.delete(conditions).where(eq(conditions.id, ctx.row.id));
+      return { deleted: ctx.row.id };
     }),
 
   /** Assigns a participant by the study's strategy, on the server, recording seed and position. */
-  assign: guarded("participant.manage")
-    .input(z.object({ participantId: id, conditionId: id.optional() }))
+  assign: studyProcedure("participant.manage", "participant", z.object({ participantId: id, conditionId: id.optional() }))
     .mutation(({ ctx, input }) =>
       ctx.db.transaction(async (tx) => {
-        const [participant] = await tx.select().from(participants).where(eq(participants.id, input.participantId));
+        // Read again under the study's lock below: another assignment may have just happened.
+        const [participant] = await tx.select().from(participants).where(eq(participants.id, ctx.row.id));
         // Serialises assignments in a study, so two can never take the same position.
         const [study] = await tx.select().from(studies).where(eq(studies.id, participant!.studyId)).for("update");
         if (participant!.assignment) throw new TRPCError({ code: "CONFLICT", message: `${participant!.code} is already assigned; assignments are never redrawn.` });

@@ -2,7 +2,7 @@
 // link's token. Answers are kept as a draft on every change, so a reload or a
 // dropped connection loses nothing; submitting closes the link.
 import { TRPCError } from "@trpc/server";
-import { and, eq, isNull } from "drizzle-orm";
+import { and, eq, isNull, ne } from "drizzle-orm";
 import { z } from "zod";
 import { answerProblems, consentGiven, scoreAnswers, type Answers } from "@/core/questionnaires/answers";
 import { audit } from "../../audit";
@@ -55,10 +55,13 @@ export const formRouter = router({
       // A digital consent is the participant's consent record: who, when, which text.
       if (consent !== null) {
         const consentVersion = `${open.name} v${open.version}`;
-        await tx
+        // Never over a withdrawal, even one recorded while this form was open.
+        const [changed] = await tx
           .update(participants)
           .set(consent ? { consentStatus: "given", consentDate: new Date(), consentVersion } : { consentStatus: "declined", consentDate: new Date() })
-          .where(eq(participants.id, open.link.participantId));
+          .where(and(eq(participants.id, open.link.participantId), ne(participants.consentStatus, "withdrawn")))
+          .returning({ id: participants.id });
+        if (!changed) throw new TRPCError({ code: "FORBIDDEN", message: "This link no longer works: you have withdrawn from this study. Thank you for your time." });
         await audit(tx, { actorId: null, studyId: open.link.studyId, action: `participant.consent.${consent ? "given" : "declined"}`, target: open.link.participantId, details: { code: open.participantCode, consentVersion, by: "participant, digital form" } });
       }
       return { submitted: true, score: score?.score ?? null };

@@ -5,7 +5,7 @@ import { STUDY_ROLES } from "@/core/access/policy";
 import { audit } from "../../audit";
 import type { Database } from "../../db/client";
 import { studies, studyMembers, user } from "../../db/schema";
-import { guarded, router } from "../trpc";
+import { router, studyProcedure } from "../trpc";
 import { id } from "../validation";
 
 const role = z.enum(STUDY_ROLES, { error: `must be one of ${STUDY_ROLES.join(", ")}` });
@@ -35,19 +35,17 @@ async function memberRole(db: Pick<Database, "select">, studyId: string, userId:
 const LAST_OWNER = "A study needs at least one owner: make someone else owner first.";
 
 export const membersRouter = router({
-  list: guarded("member.read")
-    .input(z.object({ studyId: id }))
-    .query(({ ctx, input }) =>
+  list: studyProcedure("member.read", "study", z.object({ studyId: id }))
+    .query(({ ctx }) =>
       ctx.db
         .select({ userId: user.id, name: user.name, email: user.email, role: studyMembers.role, addedAt: studyMembers.addedAt })
         .from(studyMembers)
         .innerJoin(user, eq(user.id, studyMembers.userId))
-        .where(eq(studyMembers.studyId, input.studyId))
+        .where(eq(studyMembers.studyId, ctx.studyId))
         .orderBy(asc(user.name)),
     ),
 
-  add: guarded("member.manage")
-    .input(z.object({ studyId: id, email: z.email("must be an email address"), role }))
+  add: studyProcedure("member.manage", "study", z.object({ studyId: id, email: z.email("must be an email address"), role }))
     .mutation(async ({ ctx, input }) => {
       const [person] = await ctx.db.select().from(user).where(eq(user.email, input.email.toLowerCase()));
       if (!person) {
@@ -56,44 +54,42 @@ export const membersRouter = router({
       return ctx.db.transaction(async (tx) => {
         const added = await tx
           .insert(studyMembers)
-          .values({ studyId: input.studyId, userId: person.id, role: input.role })
+          .values({ studyId: ctx.studyId, userId: person.id, role: input.role })
           .onConflictDoNothing()
           .returning();
         if (added.length === 0) throw new TRPCError({ code: "CONFLICT", message: `${person.name} is already a member of this study.` });
-        await audit(tx, { actorId: ctx.user.id, studyId: input.studyId, action: "member.add", target: person.id, details: { role: input.role } });
+        await audit(tx, { actorId: ctx.user.id, studyId: ctx.studyId, action: "member.add", target: person.id, details: { role: input.role } });
         return { userId: person.id, name: person.name, email: person.email, role: input.role };
       });
     }),
 
-  changeRole: guarded("member.manage")
-    .input(z.object({ studyId: id, userId: id, role }))
+  changeRole: studyProcedure("member.manage", "study", z.object({ studyId: id, userId: id, role }))
     .mutation(({ ctx, input }) =>
       ctx.db.transaction(async (tx) => {
-        await lockStudy(tx, input.studyId);
-        const before = await memberRole(tx, input.studyId, input.userId);
-        if (before === "owner" && input.role !== "owner" && (await ownerCount(tx, input.studyId)) === 1) {
+        await lockStudy(tx, ctx.studyId);
+        const before = await memberRole(tx, ctx.studyId, input.userId);
+        if (before === "owner" && input.role !== "owner" && (await ownerCount(tx, ctx.studyId)) === 1) {
           throw new TRPCError({ code: "BAD_REQUEST", message: LAST_OWNER });
         }
         await tx
           .update(studyMembers)
           .set({ role: input.role })
-          .where(and(eq(studyMembers.studyId, input.studyId), eq(studyMembers.userId, input.userId)));
-        await audit(tx, { actorId: ctx.user.id, studyId: input.studyId, action: "member.role", target: input.userId, details: { from: before, to: input.role } });
+          .where(and(eq(studyMembers.studyId, ctx.studyId), eq(studyMembers.userId, input.userId)));
+        await audit(tx, { actorId: ctx.user.id, studyId: ctx.studyId, action: "member.role", target: input.userId, details: { from: before, to: input.role } });
         return { userId: input.userId, role: input.role };
       }),
     ),
 
-  remove: guarded("member.manage")
-    .input(z.object({ studyId: id, userId: id }))
+  remove: studyProcedure("member.manage", "study", z.object({ studyId: id, userId: id }))
     .mutation(({ ctx, input }) =>
       ctx.db.transaction(async (tx) => {
-        await lockStudy(tx, input.studyId);
-        const before = await memberRole(tx, input.studyId, input.userId);
-        if (before === "owner" && (await ownerCount(tx, input.studyId)) === 1) {
+        await lockStudy(tx, ctx.studyId);
+        const before = await memberRole(tx, ctx.studyId, input.userId);
+        if (before === "owner" && (await ownerCount(tx, ctx.studyId)) === 1) {
           throw new TRPCError({ code: "BAD_REQUEST", message: LAST_OWNER });
         }
-        await tx.delete(studyMembers).where(and(eq(studyMembers.studyId, input.studyId), eq(studyMembers.userId, input.userId)));
-        await audit(tx, { actorId: ctx.user.id, studyId: input.studyId, action: "member.remove", target: input.userId, details: { role: before } });
+        await tx.delete(studyMembers).where(and(eq(studyMembers.studyId, ctx.studyId), eq(studyMembers.userId, input.userId)));
+        await audit(tx, { actorId: ctx.user.id, studyId: ctx.studyId, action: "member.remove", target: input.userId, details: { role: before } });
         return { removed: input.userId };
       }),
     ),

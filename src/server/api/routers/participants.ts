@@ -7,7 +7,7 @@ import { readSettings } from "@/core/studies/settings";
 import type { Database } from "../../db/client";
 import { participants, studies, trials } from "../../db/schema";
 import { qualified } from "../../db/qualified";
-import { guarded, router } from "../trpc";
+import { router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 
 const CONSENT = ["pending", "given", "declined", "withdrawn"] as const;
@@ -40,9 +40,8 @@ function duplicateCode(error: unknown, value: string): never {
 }
 
 export const participantsRouter = router({
-  list: guarded("participant.read")
-    .input(z.object({ studyId: id }))
-    .query(({ ctx, input }) =>
+  list: studyProcedure("participant.read", "study", z.object({ studyId: id }))
+    .query(({ ctx }) =>
       ctx.db
         .select({
           id: participants.id,
@@ -57,13 +56,14 @@ export const participantsRouter = router({
           trialCount: sql<number>`(select count(*)::int from ${trials} where ${trials.participantId} = ${qualified(participants.id)})`,
         })
         .from(participants)
-        .where(eq(participants.studyId, input.studyId))
+        .where(eq(participants.studyId, ctx.studyId))
         .orderBy(asc(participants.code)),
     ),
 
-  create: guarded("participant.manage")
-    .input(
-      z.object({
+  create: studyProcedure(
+    "participant.manage",
+    "study",
+    z.object({
         studyId: id,
         code,
         consentStatus: fields.consentStatus.default("pending"),
@@ -71,20 +71,21 @@ export const participantsRouter = router({
         consentVersion: fields.consentVersion.default(null),
         notes: fields.notes.default(""),
         demographics: fields.demographics.default({}),
-      }),
-    )
+    }),
+  )
     .mutation(async ({ ctx, input }) => {
       const [row] = await ctx.db
         .insert(participants)
-        .values(await checked(ctx.db, input.studyId, input))
+        .values(await checked(ctx.db, ctx.studyId, { ...input, studyId: ctx.studyId }))
         .returning()
         .catch((e: unknown) => duplicateCode(e, input.code));
       return row!;
     }),
 
-  update: guarded("participant.manage")
-    .input(
-      z.object({
+  update: studyProcedure(
+    "participant.manage",
+    "participant",
+    z.object({
         participantId: id,
         code: code.optional(),
         consentStatus: fields.consentStatus.optional(),
@@ -92,11 +93,16 @@ export const participantsRouter = router({
         consentVersion: fields.consentVersion.optional(),
         notes: fields.notes.optional(),
         demographics: fields.demographics.optional(),
-      }),
-    )
+    }),
+  )
     .mutation(async ({ ctx, input }) => {
-      const { participantId, ...given } = input;
-      const changes = await checked(ctx.db, ctx.studyId!, given);
+      const { participantId: _, ...given } = input;
+      const participantId = ctx.row.id;
+      // A withdrawal stands: only the owner's explicit reinstatement (below) can undo it.
+      if (ctx.row.consentStatus === "withdrawn" && given.consentStatus && given.consentStatus !== "withdrawn") {
+        throw new TRPCError({ code: "FORBIDDEN", message: `${ctx.row.code} withdrew from the study. Only the study's owner can reinstate them, with a reason that is recorded.` });
+      }
+      const changes = await checked(ctx.db, ctx.studyId, given);
       return ctx.db.transaction(async (tx) => {
         const [row] = await tx
           .update(participants)
@@ -118,12 +124,28 @@ export const participantsRouter = router({
       });
     }),
 
-  delete: guarded("participant.manage")
-    .input(z.object({ participantId: id }))
-    .mutation(async ({ ctx, input }) => {
-      const used = await ctx.db.select({ id: trials.id }).from(trials).where(eq(trials.participantId, input.participantId)).limit(1);
+  /** The owner undoes a withdrawal (e.g. recorded by mistake): consent given again now, with the reason in the audit log. */
+  reinstate: studyProcedure("participant.reinstate", "participant", z.object({ participantId: id, reason: text("Reason", 1000) }))
+    .mutation(({ ctx, input }) =>
+      ctx.db.transaction(async (tx) => {
+        if (ctx.row.consentStatus !== "withdrawn") throw new TRPCError({ code: "PRECONDITION_FAILED", message: `${ctx.row.code} has not withdrawn: there is nothing to reinstate.` });
+        const [study] = await tx.select({ settings: studies.settings }).from(studies).where(eq(studies.id, ctx.studyId));
+        const consentVersion = readSettings(study!.settings).consentDocumentVersion;
+        const [row] = await tx
+          .update(participants)
+          .set({ consentStatus: "given", consentDate: new Date(), consentVersion })
+          .where(eq(participants.id, ctx.row.id))
+          .returning();
+        await audit(tx, { actorId: ctx.user.id, studyId: ctx.studyId, action: "participant.consent.reinstated", target: ctx.row.id, details: { code: ctx.row.code, reason: input.reason, consentVersion } });
+        return row!;
+      }),
+    ),
+
+  delete: studyProcedure("participant.manage", "participant", z.object({ participantId: id }))
+    .mutation(async ({ ctx }) => {
+      const used = await ctx.db.select({ id: trials.id }).from(trials).where(eq(trials.participantId, ctx.row.id)).limit(1);
       if (used.length) throw new TRPCError({ code: "BAD_REQUEST", message: "This participant has trials; their data must be kept. Mark them withdrawn instead." });
-      await ctx.db.delete(participants).where(eq(participants.id, input.participantId));
-      return { deleted: input.participantId };
+      await ctx.db.delete(participants).where(eq(participants.id, ctx.row.id));
+      return { deleted: ctx.row.id };
     }),
 });

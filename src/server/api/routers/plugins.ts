@@ -7,7 +7,7 @@ import { pluginRepositories } from "../../db/schema";
 import { loadDesign } from "../../experiments/design";
 import { findPlugin, pluginCatalog } from "../../plugins/catalog";
 import { syncRepository } from "../../plugins/repositories";
-import { guarded, router } from "../trpc";
+import { guarded, router, studyProcedure } from "../trpc";
 import { id } from "../validation";
 
 const repositoryUrl = z
@@ -42,10 +42,9 @@ export const pluginsRouter = router({
     }),
 
   /** Which actions of an experiment's draft a robot can run: before the trial, not during it. */
-  portability: guarded("experiment.read")
-    .input(z.object({ experimentId: id, robotId: z.string().max(200).optional() }))
+  portability: studyProcedure("experiment.read", "experiment", z.object({ experimentId: id, robotId: z.string().max(200).optional() }))
     .query(async ({ ctx, input }) => {
-      const design = await loadDesign(ctx.db, input.experimentId);
+      const design = await loadDesign(ctx.db, ctx.row.id);
       const robotId = input.robotId ?? design.robotPluginId;
       const plugin = await findPlugin(ctx.db, robotId);
       if (!plugin) throw new TRPCError({ code: "NOT_FOUND", message: `No robot plugin called "${robotId}" is installed.` });

@@ -9,7 +9,7 @@ import { readSettings } from "@/core/studies/settings";
 import type { Database } from "../../db/client";
 import { conditions, experimentVersions, participants, sessions, studies, studyMembers, trials, user } from "../../db/schema";
 import { assertMayTakePart } from "../../studies/consent-gate";
-import { guarded, router } from "../trpc";
+import { guarded, router, studyProcedure } from "../trpc";
 import { id } from "../validation";
 
 const plannedAt = z.coerce.date({ error: "must be a date and time" });
@@ -35,9 +35,8 @@ async function assertWizardOf(db: Database, studyId: string, wizardId: string) {
 }
 
 export const sessionsRouter = router({
-  list: guarded("participant.read")
-    .input(z.object({ studyId: id }))
-    .query(({ ctx, input }) =>
+  list: studyProcedure("participant.read", "study", z.object({ studyId: id }))
+    .query(({ ctx }) =>
       ctx.db
         .select(columns(ctx.blinding.conditionsHidden))
         .from(sessions)
@@ -45,7 +44,7 @@ export const sessionsRouter = router({
         .innerJoin(conditions, eq(conditions.id, sessions.conditionId))
         .leftJoin(user, eq(user.id, sessions.wizardId))
         .leftJoin(trials, eq(trials.id, sessions.trialId))
-        .where(eq(sessions.studyId, input.studyId))
+        .where(eq(sessions.studyId, ctx.studyId))
         .orderBy(asc(sessions.plannedAt)),
     ),
 
@@ -53,30 +52,27 @@ export const sessionsRouter = router({
    * Plans a session in the participant's assigned condition; within-subject,
    * the next condition of their order that has no session yet.
    */
-  schedule: guarded("participant.manage")
-    .input(z.object({ participantId: id, plannedAt, wizardId: id }))
+  schedule: studyProcedure("participant.manage", "participant", z.object({ participantId: id, plannedAt, wizardId: id }))
     .mutation(async ({ ctx, input }) => {
-      const [p] = await ctx.db.select().from(participants).where(eq(participants.id, input.participantId));
-      if (!p!.conditionId) throw new TRPCError({ code: "PRECONDITION_FAILED", message: `${p!.code} has no condition yet: assign them first.` });
-      await assertWizardOf(ctx.db, p!.studyId, input.wizardId);
-      const planned = (await ctx.db.select({ c: sessions.conditionId }).from(sessions).where(eq(sessions.participantId, p!.id))).map((r) => r.c);
-      const order = Array.isArray(p!.conditionOrder) ? (p!.conditionOrder as string[]) : [p!.conditionId];
+      const p = ctx.row;
+      if (!p.conditionId) throw new TRPCError({ code: "PRECONDITION_FAILED", message: `${p.code} has no condition yet: assign them first.` });
+      await assertWizardOf(ctx.db, p.studyId, input.wizardId);
+      const planned = (await ctx.db.select({ c: sessions.conditionId }).from(sessions).where(eq(sessions.participantId, p.id))).map((r) => r.c);
+      const order = Array.isArray(p.conditionOrder) ? (p.conditionOrder as string[]) : [p.conditionId];
       const conditionId = order.find((c) => !planned.includes(c));
-      if (!conditionId) throw new TRPCError({ code: "CONFLICT", message: `${p!.code} already has a session for every condition they are assigned.` });
+      if (!conditionId) throw new TRPCError({ code: "CONFLICT", message: `${p.code} already has a session for every condition they are assigned.` });
       const [row] = await ctx.db
         .insert(sessions)
-        .values({ studyId: p!.studyId, participantId: p!.id, conditionId, wizardId: input.wizardId, plannedAt: input.plannedAt, createdBy: ctx.user.id })
+        .values({ studyId: p.studyId, participantId: p.id, conditionId, wizardId: input.wizardId, plannedAt: input.plannedAt, createdBy: ctx.user.id })
         .returning({ id: sessions.id, plannedAt: sessions.plannedAt });
       return row!;
     }),
 
-  remove: guarded("participant.manage")
-    .input(z.object({ sessionId: id }))
-    .mutation(async ({ ctx, input }) => {
-      const [s] = await ctx.db.select().from(sessions).where(eq(sessions.id, input.sessionId));
-      if (s!.trialId) throw new TRPCError({ code: "BAD_REQUEST", message: "This session has started: its trial is part of the study's data and stays." });
-      await ctx.db.delete(sessions).where(eq(sessions.id, input.sessionId));
-      return { removed: input.sessionId };
+  remove: studyProcedure("participant.manage", "session", z.object({ sessionId: id }))
+    .mutation(async ({ ctx }) => {
+      if (ctx.row.trialId) throw new TRPCError({ code: "BAD_REQUEST", message: "This session has started: its trial is part of the study's data and stays." });
+      await ctx.db.delete(sessions).where(eq(sessions.id, ctx.row.id));
+      return { removed: ctx.row.id };
     }),
 
   /** The sessions I run that are not finished, soonest first, across my studies. */
@@ -99,16 +95,15 @@ export const sessionsRouter = router({
   }),
 
   /** Starts the session's trial on its condition's latest published version, or reopens the one it started. */
-  start: guarded("trial.run")
-    .input(z.object({ sessionId: id }))
-    .mutation(async ({ ctx, input }) => {
-      const [s] = await ctx.db.select().from(sessions).where(eq(sessions.id, input.sessionId));
-      if (s!.wizardId !== ctx.user.id && ctx.studyRole === "wizard") {
+  start: studyProcedure("trial.run", "session", z.object({ sessionId: id }))
+    .mutation(async ({ ctx }) => {
+      const s = ctx.row;
+      if (s.wizardId !== ctx.user.id && ctx.studyRole === "wizard") {
         throw new TRPCError({ code: "FORBIDDEN", message: "This session is planned for another wizard." });
       }
-      if (s!.trialId) return { trialId: s!.trialId };
-      await assertMayTakePart(ctx.db, s!.participantId, s!.studyId);
-      const [condition] = await ctx.db.select().from(conditions).where(eq(conditions.id, s!.conditionId));
+      if (s.trialId) return { trialId: s.trialId };
+      await assertMayTakePart(ctx.db, s.participantId, s.studyId);
+      const [condition] = await ctx.db.select().from(conditions).where(eq(conditions.id, s.conditionId));
       const [version] = await ctx.db
         .select()
         .from(experimentVersions)
@@ -119,18 +114,18 @@ export const sessionsRouter = router({
       return ctx.db.transaction(async (tx) => {
         const [trial] = await tx
           .insert(trials)
-          .values({ studyId: s!.studyId, experimentId: condition!.experimentId, versionId: version.id, participantId: s!.participantId, wizardId: ctx.user.id, createdBy: ctx.user.id })
+          .values({ studyId: s.studyId, experimentId: condition!.experimentId, versionId: version.id, participantId: s.participantId, wizardId: ctx.user.id, createdBy: ctx.user.id })
           .returning({ id: trials.id });
         // Only one start wins: a second click reopens the first's trial.
         const [claimed] = await tx
           .update(sessions)
           .set({ trialId: trial!.id })
-          .where(and(eq(sessions.id, s!.id), isNull(sessions.trialId)))
+          .where(and(eq(sessions.id, s.id), isNull(sessions.trialId)))
           .returning({ trialId: sessions.trialId });
         if (!claimed) tx.rollback();
         return { trialId: trial!.id };
       }).catch(async (error: unknown) => {
-        const [again] = await ctx.db.select({ trialId: sessions.trialId }).from(sessions).where(eq(sessions.id, s!.id));
+        const [again] = await ctx.db.select({ trialId: sessions.trialId }).from(sessions).where(eq(sessions.id, s.id));
         if (again?.trialId) return { trialId: again.trialId };
         throw error;
       });

@@ -2,13 +2,14 @@ import { randomBytes } from "node:crypto";
 import { TRPCError } from "@trpc/server";
 import { and, desc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
+import { studyRoleMay } from "@/core/access/policy";
 import { readSettings, studySettingsChangeSchema, type StudySettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { studyArchive } from "../../studies/archive";
 import { studyFigures } from "../../studies/summary";
 import { experiments, participants, studies, studyMembers, trials } from "../../db/schema";
 import { qualified } from "../../db/qualified";
-import { guarded, router } from "../trpc";
+import { guarded, router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 
 const STATUS = ["draft", "active", "completed", "archived"] as const;
@@ -44,12 +45,13 @@ export const studiesRouter = router({
       .orderBy(desc(studies.updatedAt));
   }),
 
-  get: guarded("study.read")
-    .input(z.object({ studyId: id }))
-    .query(async ({ ctx, input }) => {
-      const [study] = await ctx.db.select().from(studies).where(eq(studies.id, input.studyId));
-      if (!study) throw new TRPCError({ code: "NOT_FOUND", message: "Study not found." });
-      return { ...study, settings: readSettings(study.settings), myRole: ctx.studyRole! };
+  get: studyProcedure("study.read", "study", z.object({ studyId: id }))
+    .query(({ ctx }) => {
+      const { studyId: _, ...study } = ctx.row;
+      const settings = readSettings(study.settings);
+      // The seed lets anyone recompute who gets which condition next: only those who design the study see it.
+      const seeSeed = studyRoleMay(ctx.studyRole, "experiment.edit");
+      return { ...study, settings: seeSeed ? settings : { ...settings, assignment: { ...settings.assignment, seed: undefined } }, myRole: ctx.studyRole };
     }),
 
   create: guarded("study.create")
@@ -66,20 +68,22 @@ export const studiesRouter = router({
       });
     }),
 
-  update: guarded("study.update")
-    .input(
-      z.object({
+  update: studyProcedure(
+    "study.update",
+    "study",
+    z.object({
         studyId: id,
         title: text("Title", 200).optional(),
         description: z.string().max(5000).optional(),
         status: z.enum(STATUS).optional(),
-        settings: studySettingsChangeSchema.optional(),
-      }),
-    )
+      settings: studySettingsChangeSchema.optional(),
+    }),
+  )
     .mutation(async ({ ctx, input }) => {
-      const { studyId, settings, ...rest } = input;
-      const [current] = await ctx.db.select({ settings: studies.settings, status: studies.status }).from(studies).where(eq(studies.id, studyId));
-      const before = readSettings(current!.settings);
+      const { studyId: _, settings, ...rest } = input;
+      const studyId = ctx.row.id;
+      const current = ctx.row;
+      const before = readSettings(current.settings);
       const merged = settings ? { ...before, ...settings } : null;
       // The seed is the server's, made once per choice of strategy, so assignments can be audited and reproduced.
       if (merged && settings?.assignment) merged.assignment = { ...settings.assignment, seed: settings.assignment.seed ?? randomBytes(12).toString("hex") };
@@ -91,7 +95,7 @@ export const studiesRouter = router({
           .where(eq(studies.id, studyId))
           .returning();
         await audit(tx, { actorId: ctx.user.id, studyId, action: "study.update", target: studyId, details: changes });
-        for (const lifted of liftedBlinds(before, merged ?? before, current!.status, study!.status)) {
+        for (const lifted of liftedBlinds(before, merged ?? before, current.status, study!.status)) {
           await audit(tx, { actorId: ctx.user.id, studyId, action: `study.blind.lifted.${lifted}`, target: studyId });
         }
         return study!;
@@ -99,23 +103,19 @@ export const studiesRouter = router({
     }),
 
   /** Fidelity across the study's finished trials: the table, each step's timing, the consistency. */
-  figures: guarded("data.read")
-    .input(z.object({ studyId: id }))
-    .query(({ ctx, input }) => studyFigures(ctx.db, input.studyId)),
+  figures: studyProcedure("data.read", "study", z.object({ studyId: id }))
+    .query(({ ctx }) => studyFigures(ctx.db, ctx.studyId)),
 
   /** Everything of the study as one zip, for the lab's archive or a paper's data. */
-  exportArchive: guarded("data.read")
-    .input(z.object({ studyId: id }))
-    .query(({ ctx, input }) => studyArchive(ctx.db, input.studyId)),
+  exportArchive: studyProcedure("data.read", "study", z.object({ studyId: id }))
+    .query(({ ctx }) => studyArchive(ctx.db, ctx.studyId)),
 
-  delete: guarded("study.delete")
-    .input(z.object({ studyId: id, confirmTitle: z.string() }))
+  delete: studyProcedure("study.delete", "study", z.object({ studyId: id, confirmTitle: z.string().max(200) }))
     .mutation(async ({ ctx, input }) => {
-      const [study] = await ctx.db.select().from(studies).where(eq(studies.id, input.studyId));
-      if (study!.title !== input.confirmTitle) {
+      if (ctx.row.title !== input.confirmTitle) {
         throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: confirmTitle: type the study's exact title to delete it" });
       }
-      await ctx.db.delete(studies).where(eq(studies.id, input.studyId));
-      return { deleted: input.studyId };
+      await ctx.db.delete(studies).where(eq(studies.id, ctx.row.id));
+      return { deleted: ctx.row.id };
     }),
 });

@@ -13,7 +13,7 @@ import { trialFile } from "../../trials/files";
 import { assertMayTakePart } from "../../studies/consent-gate";
 import { signSocketToken } from "../../trials/socket-token";
 import { qualified } from "../../db/qualified";
-import { guarded, router } from "../trpc";
+import { router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 
 const columns = {
@@ -56,15 +56,9 @@ async function assertNotWithdrawn(db: Database, trialId: string) {
 }
 
 export const trialsRouter = router({
-  create: guarded("trial.create")
-    .input(z.object({ versionId: id, participantId: id.nullable().default(null), wizardId: id.nullable().default(null) }))
+  create: studyProcedure("trial.create", "version", z.object({ versionId: id, participantId: id.nullable().default(null), wizardId: id.nullable().default(null) }))
     .mutation(async ({ ctx, input }) => {
-      const [version] = await ctx.db
-        .select({ experimentId: experiments.id, studyId: experiments.studyId })
-        .from(experimentVersions)
-        .innerJoin(experiments, eq(experiments.id, experimentVersions.experimentId))
-        .where(eq(experimentVersions.id, input.versionId));
-      const studyId = version!.studyId;
+      const { studyId, row: version } = ctx;
       if (input.participantId) await assertMayTakePart(ctx.db, input.participantId, studyId);
       const wizardId = input.wizardId ?? ctx.user.id;
       const [m] = await ctx.db.select().from(studyMembers).where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
@@ -73,16 +67,15 @@ export const trialsRouter = router({
       }
       const [row] = await ctx.db
         .insert(trials)
-        .values({ studyId, experimentId: version!.experimentId, versionId: input.versionId, participantId: input.participantId, wizardId, createdBy: ctx.user.id })
+        .values({ studyId, experimentId: version.experimentId, versionId: version.id, participantId: input.participantId, wizardId, createdBy: ctx.user.id })
         .returning();
       return ctx.blinding.conditionsHidden ? blindTrial(row!) : row!;
     }),
 
   /** A rehearsal runs the current draft (no published version needed), marked as rehearsal everywhere. */
-  rehearse: guarded("trial.create")
-    .input(z.object({ experimentId: id }))
-    .mutation(async ({ ctx, input }) => {
-      const design = await loadDesign(ctx.db, input.experimentId);
+  rehearse: studyProcedure("trial.create", "experiment", z.object({ experimentId: id }))
+    .mutation(async ({ ctx }) => {
+      const design = await loadDesign(ctx.db, ctx.row.id);
       if (design.steps.length === 0) throw new TRPCError({ code: "BAD_REQUEST", message: "This experiment has no steps yet: add at least one before rehearsing." });
       const [row] = await ctx.db
         .insert(trials)
@@ -91,9 +84,8 @@ export const trialsRouter = router({
       return row!;
     }),
 
-  list: guarded("trial.read")
-    .input(z.object({ studyId: id }))
-    .query(async ({ ctx, input }) => {
+  list: studyProcedure("trial.read", "study", z.object({ studyId: id }))
+    .query(async ({ ctx }) => {
       const rows = await ctx.db
         .select({ ...columns, scores: questionnaireScores })
         .from(trials)
@@ -101,76 +93,71 @@ export const trialsRouter = router({
         .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
         .leftJoin(participants, eq(participants.id, trials.participantId))
         .leftJoin(user, eq(user.id, trials.wizardId))
-        .where(eq(trials.studyId, input.studyId))
+        .where(eq(trials.studyId, ctx.studyId))
         .orderBy(desc(trials.createdAt));
       // Scores are results: only for those who may read the data, and not under a results blind.
-      const showScores = studyRoleMay(ctx.studyRole!, "data.read") && !ctx.blinding.resultsHidden;
+      const showScores = studyRoleMay(ctx.studyRole, "data.read") && !ctx.blinding.resultsHidden;
       const shown = rows.map((r) => ({ ...r, scores: showScores ? (r.scores ?? []) : [] }));
       return ctx.blinding.conditionsHidden ? shown.map(blindTrial) : shown;
     }),
 
   /** The trial's event log in order: what reports, exports and replays fold. */
-  events: guarded("data.read")
-    .input(z.object({ trialId: id, afterSeq: z.number().int().min(0).default(0) }))
+  events: studyProcedure("data.read", "trial", z.object({ trialId: id, afterSeq: z.number().int().min(0).default(0) }))
     .query(async ({ ctx, input }) => {
-      await assertNotWithdrawn(ctx.db, input.trialId);
-      return eventsSince(ctx.db, input.trialId, input.afterSeq);
+      await assertNotWithdrawn(ctx.db, ctx.row.id);
+      return eventsSince(ctx.db, ctx.row.id, input.afterSeq);
     }),
 
   /** Moments observers and wizards marked, on the trial's clock. */
-  annotations: guarded("trial.read")
-    .input(z.object({ trialId: id }))
-    .query(({ ctx, input }) =>
+  annotations: studyProcedure("trial.read", "trial", z.object({ trialId: id }))
+    .query(({ ctx }) =>
       ctx.db
         .select({ id: annotations.id, relMs: annotations.relMs, label: annotations.label, note: annotations.note, authorId: annotations.authorId, authorName: user.name })
         .from(annotations)
         .leftJoin(user, eq(user.id, annotations.authorId))
-        .where(eq(annotations.trialId, input.trialId))
+        .where(eq(annotations.trialId, ctx.row.id))
         .orderBy(asc(annotations.relMs)),
     ),
 
   /** A moment marked afterwards, while watching the recording: at any time of the trial. */
-  annotate: guarded("annotation.create")
-    .input(z.object({ trialId: id, relMs: z.number().finite().min(0).max(86_400_000), label: text("Label", 200), note: z.string().max(5000).default("") }))
+  annotate: studyProcedure("annotation.create", "trial", z.object({ trialId: id, relMs: z.number().finite().min(0).max(86_400_000), label: text("Label", 200), note: z.string().max(5000).default("") }))
     .mutation(async ({ ctx, input }) => {
-      const [row] = await ctx.db.insert(annotations).values({ ...input, authorId: ctx.user.id }).returning({ id: annotations.id });
+      const [row] = await ctx.db.insert(annotations).values({ ...input, trialId: ctx.row.id, authorId: ctx.user.id }).returning({ id: annotations.id });
       return row!;
     }),
 
   /** Its author may edit a marked moment; so may the study's owner and researchers. */
-  editAnnotation: guarded("annotation.create")
-    .input(z.object({ annotationId: id, label: text("Label", 200), note: z.string().max(5000) }))
+  editAnnotation: studyProcedure("annotation.create", "annotation", z.object({ annotationId: id, label: text("Label", 200), note: z.string().max(5000) }))
     .mutation(async ({ ctx, input }) => {
-      const [row] = await ctx.db.select({ authorId: annotations.authorId }).from(annotations).where(eq(annotations.id, input.annotationId));
-      if (row!.authorId !== ctx.user.id && !studyRoleMay(ctx.studyRole!, "experiment.edit")) {
+      if (ctx.row.authorId !== ctx.user.id && !studyRoleMay(ctx.studyRole, "experiment.edit")) {
         throw new TRPCError({ code: "FORBIDDEN", message: "Only the person who marked this moment, or the study's owner and researchers, may change it." });
       }
-      await ctx.db.update(annotations).set({ label: input.label, note: input.note, updatedAt: new Date() }).where(eq(annotations.id, input.annotationId));
-      return { edited: input.annotationId };
+      await ctx.db.update(annotations).set({ label: input.label, note: input.note, updatedAt: new Date() }).where(eq(annotations.id, ctx.row.id));
+      return { edited: ctx.row.id };
     }),
 
   /** The trial as a file: its events as tidy CSV, or the full record (protocol embedded) as JSON. */
-  export: guarded("data.read")
-    .input(z.object({ trialId: id, format: z.enum(["csv", "json", "eaf"], { error: "must be csv, json or eaf" }) }))
+  export: studyProcedure("data.read", "trial", z.object({ trialId: id, format: z.enum(["csv", "json", "eaf"], { error: "must be csv, json or eaf" }) }))
     .query(async ({ ctx, input }) => {
-      await assertNotWithdrawn(ctx.db, input.trialId);
-      return trialFile(ctx.db, input.trialId, input.format);
+      await assertNotWithdrawn(ctx.db, ctx.row.id);
+      return trialFile(ctx.db, ctx.row.id, input.format);
     }),
 
   /** Robot state logged during the trial, in time order. */
-  samples: guarded("data.read")
-    .input(
-      z.object({
+  samples: studyProcedure(
+    "data.read",
+    "trial",
+    z.object({
         trialId: id,
         topic: z.string().max(200).optional(),
         limit: z.number().int().min(1).max(500_000).default(200_000),
         // For a chart: at most this many samples, the first of each equal slice of time.
         maxPoints: z.number().int().min(10).max(20_000).optional(),
-      }),
-    )
+    }),
+  )
     .query(async ({ ctx, input }) => {
-      await assertNotWithdrawn(ctx.db, input.trialId);
-      const where = and(eq(trialSamples.trialId, input.trialId), input.topic ? eq(trialSamples.topic, input.topic) : undefined);
+      await assertNotWithdrawn(ctx.db, ctx.row.id);
+      const where = and(eq(trialSamples.trialId, ctx.row.id), input.topic ? eq(trialSamples.topic, input.topic) : undefined);
       if (input.maxPoints) {
         // Thinned in the database: an hour at 50 Hz is 180,000 rows, a chart needs a few thousand.
         const [{ last }] = (await ctx.db.select({ last: sql<number | null>`max(${trialSamples.relMs})` }).from(trialSamples).where(where)) as [{ last: number | null }];
@@ -193,16 +180,14 @@ export const trialsRouter = router({
     }),
 
   /** A short-lived pass to the trial runtime's socket, carrying my role in the study. */
-  socketToken: guarded("trial.read")
-    .input(z.object({ trialId: id }))
-    .mutation(({ ctx, input }) => ({
+  socketToken: studyProcedure("trial.read", "trial", z.object({ trialId: id }))
+    .mutation(({ ctx }) => ({
       url: ctx.runtimeUrl,
-      token: signSocketToken({ userId: ctx.user.id, name: ctx.user.name, trialId: input.trialId, studyRole: ctx.studyRole! }, ctx.secret),
+      token: signSocketToken({ userId: ctx.user.id, name: ctx.user.name, trialId: ctx.row.id, studyRole: ctx.studyRole }, ctx.secret),
     })),
 
-  get: guarded("trial.read")
-    .input(z.object({ trialId: id }))
-    .query(async ({ ctx, input }) => {
+  get: studyProcedure("trial.read", "trial", z.object({ trialId: id }))
+    .query(async ({ ctx }) => {
       const [row] = await ctx.db
         .select({ ...columns, studyId: trials.studyId, protocol: sql<ProtocolSnapshot>`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})` })
         .from(trials)
@@ -210,8 +195,8 @@ export const trialsRouter = router({
         .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
         .leftJoin(participants, eq(participants.id, trials.participantId))
         .leftJoin(user, eq(user.id, trials.wizardId))
-        .where(eq(trials.id, input.trialId));
-      const trial = { ...row!, myRole: ctx.studyRole! };
+        .where(eq(trials.id, ctx.row.id));
+      const trial = { ...row!, myRole: ctx.studyRole };
       return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
     }),
 });

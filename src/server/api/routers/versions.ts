@@ -5,17 +5,15 @@ import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
 import { experimentVersions, user } from "../../db/schema";
 import { publish } from "../../experiments/publish";
-import { guarded, router } from "../trpc";
+import { router, studyProcedure } from "../trpc";
 import { id } from "../validation";
 
 export const versionsRouter = router({
-  publish: guarded("version.publish")
-    .input(z.object({ experimentId: id }))
-    .mutation(({ ctx, input }) => publish(ctx.db, input.experimentId, ctx.user.id)),
+  publish: studyProcedure("version.publish", "experiment", z.object({ experimentId: id }))
+    .mutation(({ ctx }) => publish(ctx.db, ctx.row.id, ctx.user.id)),
 
-  list: guarded("experiment.read")
-    .input(z.object({ experimentId: id }))
-    .query(({ ctx, input }) =>
+  list: studyProcedure("experiment.read", "experiment", z.object({ experimentId: id }))
+    .query(({ ctx }) =>
       ctx.db
         .select({
           id: experimentVersions.id,
@@ -28,25 +26,23 @@ export const versionsRouter = router({
         })
         .from(experimentVersions)
         .leftJoin(user, eq(user.id, experimentVersions.publishedBy))
-        .where(eq(experimentVersions.experimentId, input.experimentId))
+        .where(eq(experimentVersions.experimentId, ctx.row.id))
         .orderBy(desc(experimentVersions.version)),
     ),
 
-  get: guarded("experiment.read")
-    .input(z.object({ versionId: id }))
-    .query(async ({ ctx, input }) => {
-      const [row] = await ctx.db.select().from(experimentVersions).where(eq(experimentVersions.id, input.versionId));
-      return row!;
+  get: studyProcedure("experiment.read", "version", z.object({ versionId: id }))
+    .query(({ ctx }) => {
+      const { studyId: _, ...version } = ctx.row;
+      return version;
     }),
 
   /** What changed from one version to another, in sentences. */
-  diff: guarded("experiment.read")
-    .input(z.object({ experimentId: id, from: z.number().int().min(1), to: z.number().int().min(1) }))
+  diff: studyProcedure("experiment.read", "experiment", z.object({ experimentId: id, from: z.number().int().min(1), to: z.number().int().min(1) }))
     .query(async ({ ctx, input }) => {
       const rows = await ctx.db
         .select({ version: experimentVersions.version, snapshot: experimentVersions.snapshot, experimentId: experimentVersions.experimentId })
         .from(experimentVersions)
-        .where(eq(experimentVersions.experimentId, input.experimentId));
+        .where(eq(experimentVersions.experimentId, ctx.row.id));
       const pick = (n: number) => {
         const row = rows.find((r) => r.version === n);
         if (!row) throw new TRPCError({ code: "NOT_FOUND", message: `This experiment has no version ${n}.` });

@@ -1,0 +1,194 @@
+// Every procedure, who may call it, and an input of the fixture's study for
+// it: the access rules as a person states them. The access matrix checks each
+// role against it; the isolation test turns each input into another study's.
+import { newPerson, type Caller, type Fixture } from "./fixture";
+
+export const MEMBERS: Caller[] = ["owner", "researcher", "wizard", "observer"];
+export const SIGNED_IN: Caller[] = ["owner", "researcher", "wizard", "observer", "outsider", "admin"];
+const EDITORS: Caller[] = ["owner", "researcher"];
+const RUNNERS: Caller[] = ["owner", "researcher", "wizard"];
+const OWNER: Caller[] = ["owner"];
+export const ADMIN: Caller[] = ["admin"];
+export const CREATORS: Caller[] = ["owner", "researcher", "outsider", "admin"]; // system role researcher or administrator
+
+type Input = (f: Fixture, base: Base, caller: Caller) => Promise<unknown> | unknown;
+export type Base = Awaited<ReturnType<typeof baseData>>;
+
+export async function baseData(f: Fixture) {
+  const study = await f.newStudy();
+  const experiment = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+  const step = await f.api("owner").experiments.createStep({ experimentId: experiment.id, name: "S1" });
+  const action = await f.api("owner").experiments.createAction({ stepId: step.id, type: "say", parameters: { text: "hi" } });
+  const version = await f.api("owner").versions.publish({ experimentId: experiment.id });
+  const participant = await f.api("owner").participants.create({ studyId: study.id, code: "P1", consentStatus: "given", consentDate: new Date() });
+  const trial = await f.api("owner").trials.create({ versionId: version.id, participantId: participant.id });
+  const condition = await f.api("owner").conditions.create({ studyId: study.id, name: "With gestures", experimentId: experiment.id });
+  return { study, experiment, step, action, version, participant, trial, condition };
+}
+
+// Destructive procedures get fresh rows for every call.
+const freshStep = async (f: Fixture, b: Base) => f.api("owner").experiments.createStep({ experimentId: b.experiment.id, name: "tmp" });
+const freshAction = async (f: Fixture, b: Base) => f.api("owner").experiments.createAction({ stepId: b.step.id, type: "wave" });
+/** A consenting participant, assigned, with a session planned for the study's wizard. */
+const freshSession = async (f: Fixture, b: Base) => {
+  const owner = f.api("owner");
+  const p = await owner.participants.create({ studyId: b.study.id, code: `S${crypto.randomUUID().slice(0, 8)}`, consentStatus: "given", consentDate: new Date() });
+  await owner.conditions.assign({ participantId: p.id, conditionId: b.condition.id });
+  return owner.sessions.schedule({ participantId: p.id, plannedAt: new Date(), wizardId: f.people.wizard.id });
+};
+
+/** Other rows add empty steps to the base experiment; publishing gets one of its own. */
+const publishable = async (f: Fixture, b: Base) => {
+  const e = await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotPluginId: "nao6-ros2" });
+  await f.api("owner").experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
+  return e;
+};
+/** A published SUS in the base study, and a fresh one-time link to it for the base participant. */
+const freshLink = async (f: Fixture, b: Base) => {
+  const owner = f.api("owner");
+  const q = await owner.questionnaires.create({ studyId: b.study.id, instrument: "sus" });
+  await owner.questionnaires.publish({ questionnaireId: q.id });
+  return owner.questionnaires.createLink({ questionnaireId: q.id, participantId: b.participant.id, trialId: b.trial.id });
+};
+/** A recording of the base trial with one part stored, and (when asked) finished. */
+const freshRecording = async (f: Fixture, b: Base, finished = false) => {
+  const { recordingId } = await f.api("owner").recordings.start({ trialId: b.trial.id, kind: "video", mimeType: "video/mp4" });
+  await f.media.storage.put(`recordings/${recordingId}/chunk-000000`, new Uint8Array([1, 2, 3]), "video/mp4");
+  if (finished) await f.api("owner").recordings.finish({ recordingId, durationMs: 1000 });
+  return { recordingId };
+};
+const EVERYONE: Caller[] = [...SIGNED_IN, "anonymous"];
+const sus = Object.fromEntries([4, 2, 3, 4, 3, 1, 3, 3, 3, 2].map((v, i) => [`sus${i + 1}`, v]));
+
+const freshMember = async (f: Fixture, b: Base) => {
+  const person = await newPerson(f.db, "member");
+  await f.api("owner").members.add({ studyId: b.study.id, email: person.email, role: "observer" });
+  return person;
+};
+
+export const MATRIX: Record<string, [Caller[], Input]> = {
+  "account.me": [SIGNED_IN, () => undefined],
+  "studies.mine": [SIGNED_IN, () => undefined],
+  "studies.get": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "studies.create": [CREATORS, () => ({ title: "New" })],
+  "studies.update": [OWNER, (_f, b) => ({ studyId: b.study.id, description: "changed" })],
+  "studies.figures": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
+  "studies.exportArchive": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
+  "studies.delete": [OWNER, async (f) => ({ studyId: (await f.newStudy("Doomed")).id, confirmTitle: "Doomed" })],
+  "members.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "members.add": [OWNER, async (f, b) => ({ studyId: b.study.id, email: (await newPerson(f.db, "invitee")).email, role: "observer" })],
+  "members.changeRole": [OWNER, async (f, b) => ({ studyId: b.study.id, userId: (await freshMember(f, b)).id, role: "wizard" })],
+  "members.remove": [OWNER, async (f, b) => ({ studyId: b.study.id, userId: (await freshMember(f, b)).id })],
+  "experiments.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "experiments.get": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "experiments.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, name: "E2", robotPluginId: "nao6-ros2" })],
+  "experiments.update": [EDITORS, (_f, b) => ({ experimentId: b.experiment.id, description: "d" })],
+  "experiments.delete": [EDITORS, async (f, b) => ({ experimentId: (await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotPluginId: "x" })).id })],
+  "experiments.saveDesign": [
+    EDITORS,
+    async (f, b) => {
+      const e = await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotPluginId: "x" });
+      return { experimentId: e.id, baseRevision: 0, steps: [{ name: "Only", actions: [] }] };
+    },
+  ],
+  "experiments.createStep": [EDITORS, (_f, b) => ({ experimentId: b.experiment.id, name: "S" })],
+  "experiments.updateStep": [EDITORS, (_f, b) => ({ stepId: b.step.id, name: "Renamed" })],
+  "experiments.deleteStep": [EDITORS, async (f, b) => ({ stepId: (await freshStep(f, b)).id })],
+  "experiments.reorderSteps": [
+    EDITORS,
+    async (f, b) => ({ experimentId: b.experiment.id, stepIds: (await f.api("owner").experiments.get({ experimentId: b.experiment.id })).steps.map((s) => s.id).reverse() }),
+  ],
+  "experiments.createAction": [EDITORS, (_f, b) => ({ stepId: b.step.id, type: "nod" })],
+  "experiments.updateAction": [EDITORS, (_f, b) => ({ actionId: b.action.id, name: "Greeting" })],
+  "experiments.deleteAction": [EDITORS, async (f, b) => ({ actionId: (await freshAction(f, b)).id })],
+  "experiments.moveAction": [EDITORS, (_f, b) => ({ actionId: b.action.id, toStepId: b.step.id, toPosition: 0 })],
+  "versions.publish": [EDITORS, async (f, b) => ({ experimentId: (await publishable(f, b)).id })],
+  "versions.diff": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id, from: 1, to: 1 })],
+  "experiments.exportFile": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "experiments.importFile": [EDITORS, async (f, b) => ({ studyId: b.study.id, text: (await f.api("owner").experiments.exportFile({ experimentId: b.experiment.id })).text })],
+  "versions.list": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "versions.get": [MEMBERS, (_f, b) => ({ versionId: b.version.id })],
+  "participants.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "participants.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, code: `P-${crypto.randomUUID().slice(0, 6)}` })],
+  "participants.update": [EDITORS, (_f, b) => ({ participantId: b.participant.id, notes: "seen" })],
+  "participants.reinstate": [
+    OWNER,
+    async (f, b) => {
+      const p = await f.api("owner").participants.create({ studyId: b.study.id, code: `W-${crypto.randomUUID().slice(0, 6)}`, consentStatus: "withdrawn" });
+      return { participantId: p.id, reason: "recorded by mistake" };
+    },
+  ],
+  "participants.delete": [EDITORS, async (f, b) => ({ participantId: (await f.api("owner").participants.create({ studyId: b.study.id, code: `D-${crypto.randomUUID().slice(0, 6)}` })).id })],
+  "plugins.list": [SIGNED_IN, () => undefined],
+  "plugins.get": [SIGNED_IN, () => ({ robotId: "nao6-ros2" })],
+  "plugins.portability": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "plugins.repositories.list": [ADMIN, () => undefined],
+  "plugins.repositories.add": [ADMIN, () => ({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` })],
+  "plugins.repositories.remove": [ADMIN, async (f) => ({ repositoryId: (await f.api("admin").plugins.repositories.add({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` })).id })],
+  "plugins.repositories.sync": [ADMIN, async (f) => ({ repositoryId: (await f.api("admin").plugins.repositories.add({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` })).id })],
+  "conditions.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "conditions.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, name: `C-${crypto.randomUUID().slice(0, 6)}`, experimentId: b.experiment.id })],
+  "conditions.delete": [EDITORS, async (f, b) => ({ conditionId: (await f.api("owner").conditions.create({ studyId: b.study.id, name: `D-${crypto.randomUUID().slice(0, 6)}`, experimentId: b.experiment.id })).id })],
+  "conditions.assign": [
+    EDITORS,
+    async (f, b) => ({ participantId: (await f.api("owner").participants.create({ studyId: b.study.id, code: `A-${crypto.randomUUID().slice(0, 6)}` })).id, conditionId: b.condition.id }),
+  ],
+  "sessions.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "sessions.schedule": [
+    EDITORS,
+    async (f, b) => {
+      const p = await f.api("owner").participants.create({ studyId: b.study.id, code: `Q${crypto.randomUUID().slice(0, 8)}` });
+      await f.api("owner").conditions.assign({ participantId: p.id, conditionId: b.condition.id });
+      return { participantId: p.id, plannedAt: new Date(), wizardId: f.people.wizard.id };
+    },
+  ],
+  "sessions.remove": [EDITORS, async (f, b) => ({ sessionId: (await freshSession(f, b)).id })],
+  "sessions.mine": [SIGNED_IN, () => undefined],
+  "sessions.start": [RUNNERS, async (f, b) => ({ sessionId: (await freshSession(f, b)).id })],
+  "questionnaires.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "questionnaires.get": [MEMBERS, async (f, b) => ({ questionnaireId: (await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" })).id })],
+  "questionnaires.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, name: "Recall" })],
+  "questionnaires.save": [EDITORS, async (f, b) => ({ questionnaireId: (await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" })).id, timing: "after" })],
+  "questionnaires.publish": [EDITORS, async (f, b) => ({ questionnaireId: (await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" })).id })],
+  "questionnaires.createLink": [
+    RUNNERS,
+    async (f, b) => {
+      const q = await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" });
+      await f.api("owner").questionnaires.publish({ questionnaireId: q.id });
+      return { questionnaireId: q.id, participantId: b.participant.id };
+    },
+  ],
+  "questionnaires.responses": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
+  "questionnaires.exportCsv": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
+  // The one-time link is the participant's credential: no account needed, none checked.
+  "form.open": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token })],
+  "form.save": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token, answers: { sus1: 3 } })],
+  "form.submit": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token, answers: sus })],
+  "recordings.start": [RUNNERS, (_f, b) => ({ trialId: b.trial.id, kind: "video", mimeType: "video/webm;codecs=vp8,opus" })],
+  "recordings.setOffset": [RUNNERS, async (f, b) => ({ ...(await freshRecording(f, b)), offsetMs: 120 })],
+  "recordings.chunkTarget": [RUNNERS, async (f, b) => freshRecording(f, b)],
+  "recordings.finish": [RUNNERS, async (f, b) => ({ ...(await freshRecording(f, b)), durationMs: 1000 })],
+  "recordings.list": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
+  "recordings.file": [["owner", "researcher", "observer"], async (f, b) => freshRecording(f, b, true)],
+  "trials.annotate": [MEMBERS, (_f, b) => ({ trialId: b.trial.id, relMs: 1500, label: "Smiled" })],
+  // Each caller edits a moment they marked themselves; others' moments are the owner's and researchers' to edit (tested in analysis.test).
+  "trials.editAnnotation": [
+    MEMBERS,
+    async (f, b, caller) => ({ annotationId: (await f.api(caller as "owner").trials.annotate({ trialId: b.trial.id, relMs: 10, label: "Mine" }).catch(() => ({ id: b.trial.id }))).id, label: "Edited", note: "" }),
+  ],
+  "trials.create": [RUNNERS, (_f, b) => ({ versionId: b.version.id, participantId: b.participant.id })],
+  "trials.rehearse": [RUNNERS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "trials.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "trials.get": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
+  "trials.socketToken": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
+  "trials.annotations": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
+  "trials.events": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
+  "trials.export": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id, format: "json" })],
+  "trials.samples": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
+  "admin.users.list": [ADMIN, () => undefined],
+  "admin.users.create": [ADMIN, () => ({ name: "New person", email: `new-${crypto.randomUUID().slice(0, 8)}@example.org`, password: "password-123", role: "observer" })],
+  "admin.users.setRole": [ADMIN, async (f) => ({ userId: (await newPerson(f.db, "promoted")).id, role: "wizard" })],
+  "admin.users.setDisabled": [ADMIN, async (f) => ({ userId: (await newPerson(f.db, "disabled")).id, disabled: true })],
+  "admin.auditLog": [ADMIN, () => ({ limit: 10 })],
+};
+
