@@ -123,7 +123,7 @@ const before = await fingerprint(b.id);
 interface ProcedureDef {
   _def: { meta?: Meta; inputs: Array<{ shape?: Record<string, unknown> }> };
 }
-const procedures = Object.entries(appRouter._def.procedures as Record<string, ProcedureDef>);
+const procedures = Object.entries(appRouter._def.procedures as unknown as Record<string, ProcedureDef>);
 const opOf = (path: string) => procedures.find(([p]) => p === path)![1]._def.meta?.op as Operation | "public";
 const isStudyProcedure = (path: string) => {
   const op = opOf(path);
