@@ -4,9 +4,9 @@
 // repository, and reported as what changed. A repository never installs a
 // robot that another source provides.
 import { TRPCError } from "@trpc/server";
-import { and, desc, eq } from "drizzle-orm";
+import { and, desc, eq, sql } from "drizzle-orm";
 import { hashCanonical } from "@/core/protocol/canonical";
-import { effectiveTrust, formatPluginError, pluginChanges, shadowing, type Plugin } from "@/core/plugins";
+import { effectiveTrust, formatPluginError, pluginChanges, shadowing, type Plugin, type PluginChange } from "@/core/plugins";
 import { fetchRepository } from "@/robots/repository-sync";
 import { audit } from "../audit";
 import type { Database } from "../db/client";
@@ -18,18 +18,22 @@ export async function syncRepository(db: Database, repositoryId: string, actorId
   if (!repository) throw new TRPCError({ code: "NOT_FOUND", message: "No such plugin repository." });
   const fetched = await fetchRepository(repository.url, fetchFn);
   const errors = fetched.errors.map(formatPluginError);
-  const { plugins: owners } = await pluginCatalog(db);
-  const offered = fetched.plugins.filter(({ plugin }) => {
-    const refusal = shadowing(plugin.robotId, repositoryId, owners);
-    if (refusal) errors.push(refusal);
-    return !refusal;
-  });
-  const stored = await db.select().from(installedPlugins).where(eq(installedPlugins.repositoryId, repositoryId)).orderBy(desc(installedPlugins.installedAt));
-  const latest = new Map<string, Plugin>();
-  for (const row of stored) if (!latest.has(row.robotId)) latest.set(row.robotId, row.definition as Plugin);
-  const changes = pluginChanges([...latest.values()], offered.map((f) => f.plugin));
+  let changes: PluginChange[] = [];
 
   await db.transaction(async (tx) => {
+    // One sync at a time decides who provides a robot: two repositories offering
+    // the same new robotId at once cannot both take it.
+    await tx.execute(sql`select pg_advisory_xact_lock(hashtext('hristudio.plugin-sync'))`);
+    const { plugins: owners } = await pluginCatalog(tx);
+    const offered = fetched.plugins.filter(({ plugin }) => {
+      const refusal = shadowing(plugin.robotId, repositoryId, owners);
+      if (refusal) errors.push(refusal);
+      return !refusal;
+    });
+    const stored = await tx.select().from(installedPlugins).where(eq(installedPlugins.repositoryId, repositoryId)).orderBy(desc(installedPlugins.installedAt));
+    const latest = new Map<string, Plugin>();
+    for (const row of stored) if (!latest.has(row.robotId)) latest.set(row.robotId, row.definition as Plugin);
+    changes = pluginChanges([...latest.values()], offered.map((f) => f.plugin));
     for (const { plugin, trust } of offered) {
       const hash = hashCanonical(plugin);
       const [same] = await tx
