@@ -2,7 +2,8 @@
 // starts it beside the web app with the same database and secret.
 import { readConfig } from "@/server/config";
 import { createDatabase } from "@/server/db/client";
-import { findPlugin, pluginCatalog } from "@/server/plugins/catalog";
+import type { Plugin } from "@/core/plugins";
+import { pluginCatalog } from "@/server/plugins/catalog";
 import { transportFor } from "@/robots/transports";
 import { pluginRobot, unavailableRobot } from "./robot-link";
 import { eventRelay } from "./relay";
@@ -17,9 +18,9 @@ if (!config.DATABASE_URL || !config.BETTER_AUTH_SECRET) {
 const { db, sql, close } = createDatabase(config.DATABASE_URL);
 const lockConnection = await sql.reserve();
 for (const problem of (await pluginCatalog(db)).problems) console.error(`[runtime] plugin not loaded: ${problem}`);
-const robotFor = async (robotPluginId: string) => {
-  const plugin = await findPlugin(db, robotPluginId);
-  if (!plugin) return unavailableRobot(`no robot plugin "${robotPluginId}" is installed`);
+// The plugin document is the trial's own (pinned by its version), chosen in trialHosts.
+const robotFor = (plugin: Plugin | null, robotId: string) => {
+  if (!plugin) return unavailableRobot(`no robot plugin "${robotId}" is installed`);
   const ssh = config.HRI_ROBOT_SSH_HOST
     ? { host: config.HRI_ROBOT_SSH_HOST, port: config.HRI_ROBOT_SSH_PORT, username: config.HRI_ROBOT_SSH_USER, password: config.HRI_ROBOT_SSH_PASSWORD, privateKeyFile: config.HRI_ROBOT_SSH_KEY_FILE }
     : undefined;

@@ -2,9 +2,11 @@
 // at a time: the first to take its PostgreSQL advisory lock.
 import { eq } from "drizzle-orm";
 import type postgres from "postgres";
+import type { Plugin } from "@/core/plugins";
 import type { TrialProtocol } from "@/core/trial";
 import type { Database } from "@/server/db/client";
-import { experimentVersions, experiments, trials } from "@/server/db/schema";
+import { experimentVersions, trials } from "@/server/db/schema";
+import { trialPlugin } from "@/server/plugins/trial-plugin";
 import type { RobotLink } from "./robot";
 import { TrialHost } from "./trial-host";
 
@@ -17,7 +19,8 @@ export interface TrialHosts {
 export function trialHosts(
   db: Database,
   lockConnection: postgres.ReservedSql,
-  robotFor: (robotPluginId: string) => RobotLink | Promise<RobotLink>,
+  /** The robot for a trial's plugin document; `plugin` is null when none is installed for `robotId`. */
+  robotFor: (plugin: Plugin | null, robotId: string) => RobotLink | Promise<RobotLink>,
   onRobotStatus: (trialId: string, connected: boolean, detail?: string) => void,
 ): TrialHosts {
   const hosts = new Map<string, Promise<TrialHost | null>>();
@@ -26,14 +29,19 @@ export function trialHosts(
     const [owned] = await lockConnection`select pg_try_advisory_lock(hashtextextended(${trialId}, 0)) as ok`;
     if (!owned?.ok) return null;
     const [row] = await db
-      .select({ snapshot: experimentVersions.snapshot, rehearsal: trials.rehearsalSnapshot, robotPluginId: experiments.robotPluginId })
+      .select({ snapshot: experimentVersions.snapshot, rehearsal: trials.rehearsalSnapshot })
       .from(trials)
-      .innerJoin(experiments, eq(experiments.id, trials.experimentId))
       .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
       .where(eq(trials.id, trialId));
     const protocol = (row?.snapshot ?? row?.rehearsal) as TrialProtocol | null;
     if (!protocol) throw new Error("This trial has no protocol to run.");
-    const host = await TrialHost.open(db, trialId, protocol, await robotFor(row!.robotPluginId));
+    const chosen = await trialPlugin(db, trialId);
+    if (!chosen.ok) {
+      // Refused, not owned: another attempt (or process) may take it once the cause is fixed.
+      await lockConnection`select pg_advisory_unlock(hashtextextended(${trialId}, 0))`;
+      throw new Error(chosen.reason);
+    }
+    const host = await TrialHost.open(db, trialId, protocol, await robotFor(chosen.plugin, chosen.robotId));
     host.onRobotStatus((connected, detail) => onRobotStatus(trialId, connected, detail));
     return host;
   }

@@ -38,7 +38,7 @@ describe.sequential("the platform foundation, in the browser", () => {
     }
   });
 
-  it("lets an administrator add and sync a plugin repository, and shows what changed", async () => {
+  it("lets an administrator add a plugin repository with the trust they choose, sync it, and see what was refused", async () => {
     const fixture = join(import.meta.dirname, "..", "fixtures", "hristudio-plugins");
     const repo = createServer((req, res) => {
       const file = join(fixture, normalize(req.url!).replace(/^(\.\.[/\\])+/, ""));
@@ -49,10 +49,15 @@ describe.sequential("the platform foundation, in the browser", () => {
     await signInAs(page, "admin@demo.hristudio", DEMO_PASSWORD);
     await page.goto("/admin/plugins");
     await page.getByLabel("Repository address").fill(`http://127.0.0.1:${(repo.address() as AddressInfo).port}/`);
+    await page.getByLabel("Trust").click();
+    await page.getByRole("option", { name: /^Verified/ }).click();
     await page.getByRole("button", { name: "Add repository" }).click();
     await page.getByRole("button", { name: /^Sync / }).click();
-    await page.getByText("nao6-ros2: added (version 3.0.0)").waitFor();
+    // The fixture's NAO6 has the robotId of our own first-party plugin: refused, not shadowed.
+    await page.getByText("nao6-ros2 is already provided by the first-party plugins; this repository's copy was not installed.").waitFor();
     await page.getByText("HRIStudio Official Robot Plugins").waitFor();
+    // Its repository.json says official; the administrator's choice stands.
+    await page.getByRole("row", { name: /HRIStudio Official Robot Plugins/ }).getByText("verified").waitFor();
     await screenshot(page, "admin-plugins");
     await page.context().close();
     repo.close();

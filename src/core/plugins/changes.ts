@@ -1,7 +1,7 @@
 // What a repository sync changed, for the administrator to review: plugins
 // added, removed or updated (with their versions), and which actions changed.
 import { canonicalJson } from "../protocol/canonical";
-import type { Plugin, TrustLevel } from "./types";
+import type { Plugin } from "./types";
 
 export interface PluginChange {
   robotId: string;
@@ -32,12 +32,4 @@ function actionChanges(a: Plugin | undefined, b: Plugin | undefined) {
     removed: [...old.keys()].filter((id) => !now.has(id)),
     changed: [...now.keys()].filter((id) => old.has(id) && old.get(id) !== now.get(id)),
   };
-}
-
-const TRUST_ORDER: TrustLevel[] = ["community", "verified", "official"];
-
-/** A plugin is trusted no more than the repository it came from. */
-export function effectiveTrust(repositoryTrust: TrustLevel | undefined, pluginTrust: TrustLevel | undefined): TrustLevel {
-  const rank = (t: TrustLevel | undefined) => (t ? TRUST_ORDER.indexOf(t) : 0);
-  return TRUST_ORDER[Math.min(rank(repositoryTrust), rank(pluginTrust))]!;
 }

@@ -14,4 +14,5 @@ export { portability, type PortableExperiment, type PortabilityReport, type Acti
 export { outgoingFor, type Outgoing } from "./payload";
 export { shellCommand, quoteWord, type ShellCommand } from "./shell";
 export { httpRequest, type HttpRequest } from "./http";
-export { pluginChanges, effectiveTrust, type PluginChange } from "./changes";
+export { pluginChanges, type PluginChange } from "./changes";
+export { effectiveTrust, chooseProviders, shadowing, FIRST_PARTY, type ProvidedPlugin } from "./identity";

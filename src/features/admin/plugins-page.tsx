@@ -7,10 +7,19 @@ import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Field, Input } from "@/ui/field";
 import { fieldError, Problem } from "@/ui/problem";
+import { Select } from "@/ui/select";
 import { Badge, Card, EmptyState, Spinner } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
 
 const TRUST_TONE = { official: "green", verified: "blue", community: "amber" } as const;
+type Trust = keyof typeof TRUST_TONE;
+
+// What the administrator vouches for: no plugin of the repository is trusted more, whatever its files say.
+const TRUST_CHOICES: Array<{ value: Trust; label: string; hint: string }> = [
+  { value: "community", label: "Community", hint: "Anyone's plugins: check them before a study relies on them." },
+  { value: "verified", label: "Verified", hint: "A source your lab has checked and relies on." },
+  { value: "official", label: "Official", hint: "Maintained by the HRIStudio team or your own lab." },
+];
 
 export function PluginsPage() {
   const trpc = useTRPC();
@@ -18,12 +27,13 @@ export function PluginsPage() {
   const repositories = useQuery(trpc.plugins.repositories.list.queryOptions());
   const robots = useQuery(trpc.plugins.list.queryOptions());
   const [url, setUrl] = useState("");
+  const [trust, setTrust] = useState<Trust>("community");
   const refresh = () => Promise.all([queryClient.invalidateQueries({ queryKey: trpc.plugins.repositories.list.queryKey() }), queryClient.invalidateQueries({ queryKey: trpc.plugins.list.queryKey() })]);
-  const add = useMutation(trpc.plugins.repositories.add.mutationOptions({ onSuccess: () => (setUrl(""), refresh()) }));
+  const add = useMutation(trpc.plugins.repositories.add.mutationOptions({ onSuccess: () => (setUrl(""), setTrust("community"), refresh()) }));
   const sync = useMutation(trpc.plugins.repositories.sync.mutationOptions({ onSuccess: refresh }));
   const submit = (e: FormEvent) => {
     e.preventDefault();
-    add.mutate({ url });
+    add.mutate({ url, trust });
   };
   return (
     <div className="space-y-6">
@@ -34,6 +44,11 @@ export function PluginsPage() {
           <div className="min-w-96 flex-1">
             <Field label="Repository address" required error={fieldError(add.error, "url")} hint="The folder that holds repository.json, e.g. https://repo.example.org/">
               {(p) => <Input {...p} value={url} onChange={(e) => setUrl(e.target.value)} />}
+            </Field>
+          </div>
+          <div className="w-56">
+            <Field label="Trust" error={fieldError(add.error, "trust")} hint="The most its plugins are trusted.">
+              {(p) => <Select {...p} value={trust} onValueChange={setTrust} options={TRUST_CHOICES} />}
             </Field>
           </div>
           <Button type="submit" className="mb-5" disabled={add.isPending}>
@@ -125,7 +140,7 @@ export function PluginsPage() {
                 <Badge tone={TRUST_TONE[r.trustLevel as keyof typeof TRUST_TONE] ?? "slate"}>{r.trustLevel}</Badge>
               </Td>
               <Td>{r.transport}</Td>
-              <Td>{r.source}</Td>
+              <Td>{r.sourceName}</Td>
             </tr>
           ))}
         </tbody>

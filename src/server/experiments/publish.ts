@@ -6,8 +6,8 @@ import { validateDesign } from "@/core/designer/validate";
 import { hashCanonical } from "@/core/protocol/canonical";
 import { SNAPSHOT_SCHEMA_VERSION, type ProtocolSnapshot } from "@/core/protocol/snapshot";
 import type { Database } from "../db/client";
-import { experimentVersions, experiments } from "../db/schema";
-import { findPlugin } from "../plugins/catalog";
+import { experimentVersions, experiments, pluginDocuments } from "../db/schema";
+import { knownPlugin } from "../plugins/catalog";
 import { loadDesign, type Design } from "./design";
 
 export function snapshotOf(design: Design): ProtocolSnapshot {
@@ -31,12 +31,19 @@ export async function publish(db: Database, experimentId: string, userId: string
     if (design.steps.length === 0) {
       throw new TRPCError({ code: "BAD_REQUEST", message: "This experiment has no steps yet: add at least one step before publishing." });
     }
-    // The exact plugin version the design was published against, so a trial can be traced to it.
-    const plugin = await findPlugin(db, design.robotPluginId);
+    // The exact plugin document the design was published against: its trials run with it, whatever is installed later.
+    const known = await knownPlugin(tx, design.robotPluginId);
+    const plugin = known?.plugin;
     const problems = validateDesign(draftFrom(design), plugin ?? null).filter((i) => i.severity === "error");
     if (problems.length) {
       const listed = problems.slice(0, 5).map((p) => p.message).join(" ");
       throw new TRPCError({ code: "BAD_REQUEST", message: `This experiment cannot be published until ${problems.length === 1 ? "this problem is" : `these ${problems.length} problems are`} fixed: ${listed}` });
+    }
+    if (known) {
+      await tx
+        .insert(pluginDocuments)
+        .values({ hash: known.hash, robotId: known.robotId, version: known.plugin.version, source: known.source, definition: known.plugin })
+        .onConflictDoNothing();
     }
     const snapshot = snapshotOf(design);
     const [{ next }] = (await tx
@@ -45,7 +52,7 @@ export async function publish(db: Database, experimentId: string, userId: string
       .where(eq(experimentVersions.experimentId, experimentId))) as [{ next: number }];
     const [version] = await tx
       .insert(experimentVersions)
-      .values({ experimentId, version: next, snapshot, hash: hashCanonical(snapshot), pluginId: design.robotPluginId, pluginVersion: plugin?.version ?? null, publishedBy: userId })
+      .values({ experimentId, version: next, snapshot, hash: hashCanonical(snapshot), pluginId: design.robotPluginId, pluginVersion: plugin?.version ?? null, pluginHash: known?.hash ?? null, publishedBy: userId })
       .returning();
     return version!;
   });

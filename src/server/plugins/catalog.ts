@@ -1,14 +1,17 @@
 // The robot plugins this server knows: first-party files from plugins/
-// (through the public loader, like any other) and plugins synced from
-// repositories into the database. First-party wins on a shared robotId.
-import { desc, eq } from "drizzle-orm";
+// (through the public loader, like any other) and plugins synced from enabled
+// repositories into the database. Each robotId has one source: first-party
+// first, then the repository that installed it first (see chooseProviders).
+import { asc, eq, and, type SQL } from "drizzle-orm";
 import { join } from "node:path";
-import type { Plugin, TrustLevel } from "@/core/plugins";
+import { hashCanonical } from "@/core/protocol/canonical";
+import { chooseProviders, FIRST_PARTY, type Plugin, type TrustLevel } from "@/core/plugins";
 import { loadPluginFolder, type PluginFolder } from "@/robots/plugin-folder";
 import type { Database } from "../db/client";
-import { installedPlugins } from "../db/schema";
+import { installedPlugins, pluginRepositories } from "../db/schema";
 
 export const PLUGINS_DIR = join(process.cwd(), "plugins");
+const FIRST_PARTY_NAME = "the first-party plugins";
 
 let loading: Promise<PluginFolder> | null = null;
 
@@ -17,26 +20,53 @@ export function firstPartyPlugins(): Promise<PluginFolder> {
   return loading;
 }
 
+/** One plugin version with its identity: source, robotId, version and content hash. */
 export interface KnownPlugin {
   plugin: Plugin;
+  robotId: string;
   trust: TrustLevel;
-  source: "first-party" | "repository";
+  /** FIRST_PARTY or the repository's id. */
+  source: string;
+  sourceName: string;
+  /** SHA-256 of the plugin's canonical JSON. */
+  hash: string;
 }
 
-/** Every robot, its newest version only. */
-export async function pluginCatalog(db: Database): Promise<{ plugins: KnownPlugin[]; problems: string[] }> {
+type Reader = Pick<Database, "select">;
+
+async function known(db: Reader, where?: SQL): Promise<{ versions: KnownPlugin[]; folder: PluginFolder }> {
   const folder = await firstPartyPlugins();
-  const known = new Map<string, KnownPlugin>(folder.plugins.map((p) => [p.robotId, { plugin: p, trust: p.trustLevel ?? "official", source: "first-party" }]));
-  const synced = await db.select().from(installedPlugins).orderBy(desc(installedPlugins.installedAt));
-  for (const row of synced) {
-    if (!known.has(row.robotId)) known.set(row.robotId, { plugin: row.definition as Plugin, trust: row.trustLevel as TrustLevel, source: "repository" });
-  }
-  return { plugins: [...known.values()], problems: folder.errors.map((e) => `${e.file} ${e.path}: ${e.reason}`) };
+  const firstParty = folder.plugins.map((p): KnownPlugin => ({ plugin: p, robotId: p.robotId, trust: p.trustLevel ?? "official", source: FIRST_PARTY, sourceName: FIRST_PARTY_NAME, hash: hashCanonical(p) }));
+  // Oldest install first: the first repository to install a robot keeps it.
+  const rows = await db
+    .select({ row: installedPlugins, repositoryName: pluginRepositories.name })
+    .from(installedPlugins)
+    .innerJoin(pluginRepositories, eq(pluginRepositories.id, installedPlugins.repositoryId))
+    .where(and(eq(pluginRepositories.enabled, true), where))
+    .orderBy(asc(installedPlugins.installedAt));
+  const synced = rows.map(({ row, repositoryName }): KnownPlugin => ({
+    plugin: row.definition as Plugin,
+    robotId: row.robotId,
+    trust: row.trustLevel as TrustLevel,
+    source: row.repositoryId!,
+    sourceName: `the repository "${repositoryName}"`,
+    hash: row.hash,
+  }));
+  return { versions: [...firstParty, ...synced], folder };
 }
 
-export async function findPlugin(db: Database, robotId: string): Promise<Plugin | undefined> {
-  const first = (await firstPartyPlugins()).plugins.find((p) => p.robotId === robotId);
-  if (first) return first;
-  const [row] = await db.select().from(installedPlugins).where(eq(installedPlugins.robotId, robotId)).orderBy(desc(installedPlugins.installedAt)).limit(1);
-  return row?.definition as Plugin | undefined;
+/** Every robot, with the version it runs with, and the first-party files that could not be loaded. */
+export async function pluginCatalog(db: Reader): Promise<{ plugins: KnownPlugin[]; problems: string[] }> {
+  const { versions, folder } = await known(db);
+  return { plugins: chooseProviders(versions), problems: folder.errors.map((e) => `${e.file} ${e.path}: ${e.reason}`) };
+}
+
+/** The plugin a robotId runs with today, with its identity. */
+export async function knownPlugin(db: Reader, robotId: string): Promise<KnownPlugin | undefined> {
+  const { versions } = await known(db, eq(installedPlugins.robotId, robotId));
+  return chooseProviders(versions.filter((v) => v.robotId === robotId))[0];
+}
+
+export async function findPlugin(db: Reader, robotId: string): Promise<Plugin | undefined> {
+  return (await knownPlugin(db, robotId))?.plugin;
 }

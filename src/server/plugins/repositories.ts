@@ -1,39 +1,58 @@
 // Plugin repositories an administrator adds: synced over HTTP through the
-// public loader, stored per plugin version with the trust the repository
-// earns, and reported as what changed.
+// public loader, stored per plugin version (repository, robotId, version,
+// content hash) with no more trust than the administrator gave the
+// repository, and reported as what changed. A repository never installs a
+// robot that another source provides.
 import { TRPCError } from "@trpc/server";
-import { and, desc, eq } from "drizzle-orm";
+import { and, desc, eq, sql } from "drizzle-orm";
 import { hashCanonical } from "@/core/protocol/canonical";
-import { formatPluginError, pluginChanges, type Plugin } from "@/core/plugins";
+import { effectiveTrust, formatPluginError, pluginChanges, shadowing, type Plugin, type PluginChange } from "@/core/plugins";
 import { fetchRepository } from "@/robots/repository-sync";
 import { audit } from "../audit";
 import type { Database } from "../db/client";
 import { installedPlugins, pluginRepositories } from "../db/schema";
+import { pluginCatalog } from "./catalog";
 
 export async function syncRepository(db: Database, repositoryId: string, actorId: string, fetchFn: typeof fetch = fetch) {
   const [repository] = await db.select().from(pluginRepositories).where(eq(pluginRepositories.id, repositoryId));
   if (!repository) throw new TRPCError({ code: "NOT_FOUND", message: "No such plugin repository." });
   const fetched = await fetchRepository(repository.url, fetchFn);
   const errors = fetched.errors.map(formatPluginError);
-  const stored = await db.select().from(installedPlugins).where(eq(installedPlugins.repositoryId, repositoryId)).orderBy(desc(installedPlugins.installedAt));
-  const latest = new Map<string, Plugin>();
-  for (const row of stored) if (!latest.has(row.robotId)) latest.set(row.robotId, row.definition as Plugin);
-  const changes = pluginChanges([...latest.values()], fetched.plugins.map((f) => f.plugin));
+  let changes: PluginChange[] = [];
 
   await db.transaction(async (tx) => {
-    for (const { plugin, trust } of fetched.plugins) {
+    // One sync at a time decides who provides a robot: two repositories offering
+    // the same new robotId at once cannot both take it.
+    await tx.execute(sql`select pg_advisory_xact_lock(hashtext('hristudio.plugin-sync'))`);
+    const { plugins: owners } = await pluginCatalog(tx);
+    const offered = fetched.plugins.filter(({ plugin }) => {
+      const refusal = shadowing(plugin.robotId, repositoryId, owners);
+      if (refusal) errors.push(refusal);
+      return !refusal;
+    });
+    const stored = await tx.select().from(installedPlugins).where(eq(installedPlugins.repositoryId, repositoryId)).orderBy(desc(installedPlugins.installedAt));
+    const latest = new Map<string, Plugin>();
+    for (const row of stored) if (!latest.has(row.robotId)) latest.set(row.robotId, row.definition as Plugin);
+    changes = pluginChanges([...latest.values()], offered.map((f) => f.plugin));
+    for (const { plugin, trust } of offered) {
       const hash = hashCanonical(plugin);
-      const [same] = await tx.select().from(installedPlugins).where(and(eq(installedPlugins.robotId, plugin.robotId), eq(installedPlugins.version, plugin.version)));
+      const [same] = await tx
+        .select()
+        .from(installedPlugins)
+        .where(and(eq(installedPlugins.repositoryId, repositoryId), eq(installedPlugins.robotId, plugin.robotId), eq(installedPlugins.version, plugin.version)));
       if (same && same.hash !== hash) {
         // A published version is immutable: experiments point at it.
         errors.push(`${plugin.robotId} ${plugin.version}: its content changed without a new version number; the stored ${plugin.version} is kept.`);
         continue;
       }
-      if (!same) await tx.insert(installedPlugins).values({ repositoryId, robotId: plugin.robotId, version: plugin.version, name: plugin.name, trustLevel: trust, definition: plugin, hash });
+      // What the files claim (the lower of plugin and repository.json), capped by what the administrator chose.
+      const trustLevel = effectiveTrust(repository.trust, trust);
+      if (!same) await tx.insert(installedPlugins).values({ repositoryId, robotId: plugin.robotId, version: plugin.version, name: plugin.name, trustLevel, definition: plugin, hash });
     }
+    // The repository's trust stays what the administrator chose: repository.json cannot raise it.
     await tx
       .update(pluginRepositories)
-      .set({ name: fetched.repository?.name ?? repository.name, trust: fetched.repository?.trust ?? repository.trust, lastSyncedAt: new Date(), lastSyncError: errors.length ? errors.join("\n") : null })
+      .set({ name: fetched.repository?.name ?? repository.name, lastSyncedAt: new Date(), lastSyncError: errors.length ? errors.join("\n") : null })
       .where(eq(pluginRepositories.id, repositoryId));
     await audit(tx, { actorId, action: "plugins.sync", target: repositoryId, details: { changes: changes.filter((c) => c.change !== "unchanged"), errors } });
   });

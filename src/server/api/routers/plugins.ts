@@ -1,7 +1,7 @@
 import { TRPCError } from "@trpc/server";
 import { asc, eq } from "drizzle-orm";
 import { z } from "zod";
-import { portability } from "@/core/plugins";
+import { FIRST_PARTY, portability } from "@/core/plugins";
 import { audit } from "../../audit";
 import { pluginRepositories } from "../../db/schema";
 import { loadDesign } from "../../experiments/design";
@@ -9,6 +9,9 @@ import { findPlugin, pluginCatalog } from "../../plugins/catalog";
 import { syncRepository } from "../../plugins/repositories";
 import { guarded, router, studyProcedure } from "../trpc";
 import { id } from "../validation";
+
+// The administrator's choice when adding a repository: the most any of its plugins is trusted.
+const trust = z.enum(["official", "verified", "community"], { error: "must be official, verified or community" });
 
 const repositoryUrl = z
   .url({ protocol: /^https?$/, error: "must be an http:// or https:// address" })
@@ -19,12 +22,14 @@ export const pluginsRouter = router({
   list: guarded("plugin.read").query(async ({ ctx }) => {
     const { plugins, problems } = await pluginCatalog(ctx.db);
     return {
-      robots: plugins.map(({ plugin: p, trust, source }) => ({
+      robots: plugins.map(({ plugin: p, trust, source, sourceName, hash }) => ({
         robotId: p.robotId,
         name: p.name,
         version: p.version,
         trustLevel: trust,
-        source,
+        source: source === FIRST_PARTY ? ("first-party" as const) : ("repository" as const),
+        sourceName,
+        hash,
         transport: p.transport ?? "rosbridge",
         capabilities: p.capabilities ?? [],
       })),
@@ -55,15 +60,15 @@ export const pluginsRouter = router({
     list: guarded("admin.plugins").query(({ ctx }) => ctx.db.select().from(pluginRepositories).orderBy(asc(pluginRepositories.name))),
 
     add: guarded("admin.plugins")
-      .input(z.object({ url: repositoryUrl }))
+      .input(z.object({ url: repositoryUrl, trust: trust.default("community") }))
       .mutation(async ({ ctx, input }) => {
         const [row] = await ctx.db
           .insert(pluginRepositories)
-          .values({ url: input.url, name: input.url, createdBy: ctx.user.id })
+          .values({ url: input.url, name: input.url, trust: input.trust, createdBy: ctx.user.id })
           .onConflictDoNothing()
           .returning();
         if (!row) throw new TRPCError({ code: "CONFLICT", message: "That repository is already added." });
-        await audit(ctx.db, { actorId: ctx.user.id, action: "plugins.repository.add", target: row.id, details: { url: input.url } });
+        await audit(ctx.db, { actorId: ctx.user.id, action: "plugins.repository.add", target: row.id, details: { url: input.url, trust: input.trust } });
         return row;
       }),
 

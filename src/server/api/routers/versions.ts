@@ -21,6 +21,7 @@ export const versionsRouter = router({
           hash: experimentVersions.hash,
           pluginId: experimentVersions.pluginId,
           pluginVersion: experimentVersions.pluginVersion,
+          pluginHash: experimentVersions.pluginHash,
           publishedAt: experimentVersions.publishedAt,
           publishedBy: user.name,
         })
