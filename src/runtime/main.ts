@@ -5,6 +5,7 @@ import { createDatabase } from "@/server/db/client";
 import { findPlugin, pluginCatalog } from "@/server/plugins/catalog";
 import { transportFor } from "@/robots/transports";
 import { pluginRobot, unavailableRobot } from "./robot-link";
+import { watchAccess } from "./access";
 import { eventRelay } from "./relay";
 import { startRuntimeServer } from "./server";
 import { trialHosts } from "./trial-hosts";
@@ -31,6 +32,8 @@ const hosts = trialHosts(db, lockConnection, robotFor, (...args) => announceRobo
 const relay = await eventRelay(db, sql);
 const runtime = startRuntimeServer({ db, hosts, relay, secret: config.BETTER_AUTH_SECRET, hostname: config.HOST, port: config.HRI_RUNTIME_PORT });
 announceRobot = runtime.announceRobot;
+// Membership, role, blinding and assigned-wizard changes reach open sockets at once.
+const access = await watchAccess(sql, runtime.accessChanged, runtime.recheckAll);
 const server = runtime.server;
 console.log(`[runtime] listening on ws://${server.hostname}:${server.port}`);
 
@@ -38,6 +41,7 @@ const stop = async () => {
   server.stop(true);
   await hosts.closeAll();
   await relay.close();
+  await access.close();
   lockConnection.release();
   await close();
   process.exit(0);

@@ -6,7 +6,7 @@ import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/server/db/client";
 import { freePort } from "../../src/server/db/embedded";
-import { experimentVersions, experiments, studies, trials } from "../../src/server/db/schema";
+import { experimentVersions, experiments, studies, studyMembers, trials } from "../../src/server/db/schema";
 import { signSocketToken } from "../../src/server/trials/socket-token";
 import { BUN } from "../support/app";
 import { freshDatabaseUrl } from "../support/db";
@@ -38,13 +38,14 @@ describe.sequential("several runtime processes", () => {
   let a: { url: string; child: ChildProcess };
   let b: { url: string; child: ChildProcess };
   const people: Record<string, string> = {};
-  const token = (studyRole: "wizard" | "observer") => signSocketToken({ userId: people[studyRole]!, name: studyRole, trialId, studyRole }, SECRET);
+  const token = (studyRole: "wizard" | "observer") => signSocketToken({ userId: people[studyRole]!, trialId }, SECRET);
 
   beforeAll(async () => {
     const url = await freshDatabaseUrl();
     const { db, close } = createDatabase(url);
     for (const role of ["wizard", "observer"]) people[role] = (await createAccount(db, { name: role, email: `${role}@example.org`, password: "password-123", role: "researcher" })).id;
     const [study] = await db.insert(studies).values({ title: "S" }).returning();
+    await db.insert(studyMembers).values(["wizard", "observer"].map((role) => ({ studyId: study!.id, userId: people[role]!, role: role as "wizard" | "observer" })));
     const [experiment] = await db.insert(experiments).values({ studyId: study!.id, name: "E", robotPluginId: "no-robot" }).returning();
     const [version] = await db.insert(experimentVersions).values({ experimentId: experiment!.id, version: 1, snapshot: protocol, hash: "h", pluginId: "no-robot" }).returning();
     trialId = (await db.insert(trials).values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id }).returning())[0]!.id;

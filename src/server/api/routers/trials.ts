@@ -57,7 +57,8 @@ async function assertNotWithdrawn(db: Database, trialId: string) {
 
 export const trialsRouter = router({
   create: guarded("trial.create")
-    .input(z.object({ versionId: id, participantId: id.nullable().default(null), wizardId: id.nullable().default(null) }))
+    // wizardId: omitted → the creator runs it; null → unassigned, the first wizard to start it claims it.
+    .input(z.object({ versionId: id, participantId: id.nullable().default(null), wizardId: id.nullable().optional() }))
     .mutation(async ({ ctx, input }) => {
       const [version] = await ctx.db
         .select({ experimentId: experiments.id, studyId: experiments.studyId })
@@ -66,10 +67,12 @@ export const trialsRouter = router({
         .where(eq(experimentVersions.id, input.versionId));
       const studyId = version!.studyId;
       if (input.participantId) await assertMayTakePart(ctx.db, input.participantId, studyId);
-      const wizardId = input.wizardId ?? ctx.user.id;
-      const [m] = await ctx.db.select().from(studyMembers).where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
-      if (!m || m.role === "observer") {
-        throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: wizardId: the wizard must be an owner, researcher or wizard of this study" });
+      const wizardId = input.wizardId === undefined ? ctx.user.id : input.wizardId;
+      if (wizardId !== null) {
+        const [m] = await ctx.db.select().from(studyMembers).where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
+        if (!m || m.role === "observer") {
+          throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: wizardId: the wizard must be an owner, researcher or wizard of this study" });
+        }
       }
       const [row] = await ctx.db
         .insert(trials)
@@ -192,12 +195,12 @@ export const trialsRouter = router({
         .limit(input.limit);
     }),
 
-  /** A short-lived pass to the trial runtime's socket, carrying my role in the study. */
+  /** A short-lived, single-use pass to the trial runtime's socket: who and which trial, nothing more (the runtime looks up my role itself). */
   socketToken: guarded("trial.read")
     .input(z.object({ trialId: id }))
     .mutation(({ ctx, input }) => ({
       url: ctx.runtimeUrl,
-      token: signSocketToken({ userId: ctx.user.id, name: ctx.user.name, trialId: input.trialId, studyRole: ctx.studyRole! }, ctx.secret),
+      token: signSocketToken({ userId: ctx.user.id, trialId: input.trialId }, ctx.secret),
     })),
 
   get: guarded("trial.read")
