@@ -1,6 +1,6 @@
 // The database side of the socket's access checks: what the runtime reads at
 // hello and whenever PostgreSQL announces a change, never on each command.
-import { and, eq, isNull, or } from "drizzle-orm";
+import { and, eq, isNull, lt, or } from "drizzle-orm";
 import type postgres from "postgres";
 import type { AccessChange, TrialAccess } from "@/core/access/trial-socket";
 import type { Database } from "@/server/db/client";
@@ -36,6 +36,11 @@ export async function spendToken(db: Database, claims: SocketClaims): Promise<bo
     .onConflictDoNothing()
     .returning({ tokenId: socketTokenUses.tokenId });
   return rows.length === 1;
+}
+
+/** Forgets used tokens past their expiry: an expired token is refused anyway. */
+export async function purgeSpentTokens(db: Database): Promise<void> {
+  await db.delete(socketTokenUses).where(lt(socketTokenUses.expiresAt, new Date()));
 }
 
 /** Makes the wizard the trial's wizard unless someone else claimed it first. */

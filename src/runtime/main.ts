@@ -5,7 +5,7 @@ import { createDatabase } from "@/server/db/client";
 import { findPlugin, pluginCatalog } from "@/server/plugins/catalog";
 import { transportFor } from "@/robots/transports";
 import { pluginRobot, unavailableRobot } from "./robot-link";
-import { watchAccess } from "./access";
+import { purgeSpentTokens, watchAccess } from "./access";
 import { eventRelay } from "./relay";
 import { startRuntimeServer } from "./server";
 import { trialHosts } from "./trial-hosts";
@@ -34,10 +34,12 @@ const runtime = startRuntimeServer({ db, hosts, relay, secret: config.BETTER_AUT
 announceRobot = runtime.announceRobot;
 // Membership, role, blinding and assigned-wizard changes reach open sockets at once.
 const access = await watchAccess(sql, runtime.accessChanged, runtime.recheckAll);
+const purge = setInterval(() => void purgeSpentTokens(db).catch((e: unknown) => console.error(`[runtime] used tokens not purged: ${String(e)}`)), 3_600_000);
 const server = runtime.server;
 console.log(`[runtime] listening on ws://${server.hostname}:${server.port}`);
 
 const stop = async () => {
+  clearInterval(purge);
   server.stop(true);
   await hosts.closeAll();
   await relay.close();
