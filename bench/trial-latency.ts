@@ -10,7 +10,7 @@ import { SOCKET_PROTOCOL_VERSION } from "../src/runtime/protocol";
 import { freePort } from "../src/server/db/embedded";
 import { createAccount } from "../src/server/auth/accounts";
 import { createDatabase } from "../src/server/db/client";
-import { experimentVersions, experiments, studies, trials } from "../src/server/db/schema";
+import { experimentVersions, experiments, studies, studyMembers, trials } from "../src/server/db/schema";
 import { signSocketToken } from "../src/server/trials/socket-token";
 import { report, scratchDatabase } from "./support";
 
@@ -45,11 +45,16 @@ const url = `ws://127.0.0.1:${runtimePort}`;
 const wizardUser = await createAccount(db, { name: "Wizard", email: "w@bench", password: "bench-password", role: "wizard" });
 const observerUser = await createAccount(db, { name: "Observer", email: "o@bench", password: "bench-password", role: "observer" });
 const [study] = await db.insert(studies).values({ title: "Bench" }).returning();
+// The runtime looks each caller's role up in the study at hello.
+await db.insert(studyMembers).values([
+  { studyId: study!.id, userId: wizardUser.id, role: "wizard" },
+  { studyId: study!.id, userId: observerUser.id, role: "observer" },
+]);
 const [experiment] = await db.insert(experiments).values({ studyId: study!.id, name: "Bench", robotPluginId: "nao6-ros2" }).returning();
 const snapshot = { schemaVersion: 1, experiment: { id: experiment!.id, name: "Bench", description: "", robotPluginId: "nao6-ros2" }, steps: [{ id: "s", name: "S", description: "", actions: [] }] };
 const [version] = await db.insert(experimentVersions).values({ experimentId: experiment!.id, version: 1, snapshot, hash: "bench", pluginId: "nao6-ros2" }).returning();
 
-async function socket(trialId: string, userId: string, studyRole: "wizard" | "observer", onEvents: (events: Array<{ type: string; parameters?: { text?: string } }>) => void) {
+async function socket(trialId: string, userId: string, onEvents: (events: Array<{ type: string; parameters?: { text?: string } }>) => void) {
   const ws = new WebSocket(url);
   const pending = new Map<string, () => void>();
   await new Promise((ok) => (ws.onopen = ok));
@@ -61,7 +66,7 @@ async function socket(trialId: string, userId: string, studyRole: "wizard" | "ob
       if (message.type === "ack" || message.type === "rejected") pending.get(message.requestId)?.();
     };
   });
-  ws.send(JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: signSocketToken({ userId, name: studyRole, trialId, studyRole }, SECRET), lastSeq: 0 }));
+  ws.send(JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: signSocketToken({ userId, trialId }, SECRET), lastSeq: 0 }));
   await welcomed;
   return {
     command: (command: Record<string, unknown>) =>
@@ -85,8 +90,8 @@ async function runTrial(commands: number, toRobot: number[], toObservers: number
       if (waiting && --waiting.left === 0) waiting.done(at);
     }
   };
-  const observers = await Promise.all(Array.from({ length: OBSERVERS }, () => socket(trial!.id, observerUser.id, "observer", observe)));
-  const wizard = await socket(trial!.id, wizardUser.id, "wizard", () => {});
+  const observers = await Promise.all(Array.from({ length: OBSERVERS }, () => socket(trial!.id, observerUser.id, observe)));
+  const wizard = await socket(trial!.id, wizardUser.id, () => {});
   await wizard.command({ kind: "start" });
   for (let i = 0; i < commands; i++) {
     const text = `line ${trial!.id} ${i}`;

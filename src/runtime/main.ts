@@ -6,6 +6,7 @@ import type { Plugin } from "@/core/plugins";
 import { pluginCatalog } from "@/server/plugins/catalog";
 import { transportFor } from "@/robots/transports";
 import { pluginRobot, unavailableRobot } from "./robot-link";
+import { purgeSpentTokens, watchAccess } from "./access";
 import { eventRelay } from "./relay";
 import { startRuntimeServer } from "./server";
 import { trialHosts } from "./trial-hosts";
@@ -32,13 +33,18 @@ const hosts = trialHosts(db, lockConnection, robotFor, (...args) => announceRobo
 const relay = await eventRelay(db, sql);
 const runtime = startRuntimeServer({ db, hosts, relay, secret: config.BETTER_AUTH_SECRET, hostname: config.HOST, port: config.HRI_RUNTIME_PORT });
 announceRobot = runtime.announceRobot;
+// Membership, role, blinding and assigned-wizard changes reach open sockets at once.
+const access = await watchAccess(sql, runtime.accessChanged, runtime.recheckAll);
+const purge = setInterval(() => void purgeSpentTokens(db).catch((e: unknown) => console.error(`[runtime] used tokens not purged: ${String(e)}`)), 3_600_000);
 const server = runtime.server;
 console.log(`[runtime] listening on ws://${server.hostname}:${server.port}`);
 
 const stop = async () => {
+  clearInterval(purge);
   server.stop(true);
   await hosts.closeAll();
   await relay.close();
+  await access.close();
   lockConnection.release();
   await close();
   process.exit(0);

@@ -2,9 +2,12 @@
 // message is validated on arrival; anything else is refused with a reason.
 import { z } from "zod";
 
-export const SOCKET_PROTOCOL_VERSION = 1;
+// 2: tokens are single use and carry no role; one hello per connection; the
+// server sends "access" when the caller's role or rights change.
+export const SOCKET_PROTOCOL_VERSION = 2;
 
-const id = z.string().min(1).max(100);
+/** Every id a message carries is declared with this, so tests can find them all. */
+export const id = z.string().min(1).max(100);
 const params = z.record(z.string(), z.unknown());
 
 export const commandSchema = z.discriminatedUnion("kind", [
@@ -27,7 +30,7 @@ export const commandSchema = z.discriminatedUnion("kind", [
 export type WizardCommand = z.infer<typeof commandSchema>;
 
 export const clientMessageSchema = z.discriminatedUnion("type", [
-  // First message on a connection; `lastSeq` asks for exactly what was missed.
+  // First and only once on a connection (the token works once); `lastSeq` asks for exactly what was missed.
   z.object({ type: z.literal("hello"), version: z.literal(SOCKET_PROTOCOL_VERSION), token: z.string().min(1).max(4000), lastSeq: z.number().int().min(0) }),
   z.object({ type: z.literal("command"), requestId: id, command: commandSchema }),
   z.object({ type: z.literal("annotate"), requestId: id, label: z.string().min(1).max(200), note: z.string().max(5000).default("") }),
@@ -37,7 +40,11 @@ export const clientMessageSchema = z.discriminatedUnion("type", [
 export type ClientMessage = z.infer<typeof clientMessageSchema>;
 
 export type ServerMessage =
-  | { type: "welcome"; version: number; trialId: string; role: string; events: unknown[]; viewers: Viewer[] }
+  // `events` is empty unless the caller may read the log (see mayReadTrialLog);
+  // `mayRun`: whether this caller may command this trial now.
+  | { type: "welcome"; version: number; trialId: string; role: string; mayRun: boolean; events: unknown[]; viewers: Viewer[] }
+  // The caller's role or rights changed while connected (a removed member is disconnected instead).
+  | { type: "access"; role: string; mayRun: boolean }
   | { type: "events"; events: unknown[] }
   | { type: "ack"; requestId: string; seqs: number[] }
   | { type: "rejected"; requestId: string | null; reason: string }

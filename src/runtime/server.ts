@@ -1,16 +1,26 @@
 // The trial runtime's WebSocket server (Bun). Every message is parsed against
-// the protocol file and checked by the access policy before it does anything.
-import { studyRoleMay } from "@/core/access/policy";
+// the protocol file and decided against the socket's access, which the
+// runtime keeps fresh from the database: loaded at hello, reloaded whenever
+// PostgreSQL announces a change (see access.ts), never trusted from the client.
+import { annotateVerdict, commandVerdict, lostAccess, mayReadTrialLog, touches, type AccessChange, type TrialAccess } from "@/core/access/trial-socket";
 import type { Database } from "@/server/db/client";
 import { verifySocketToken, type SocketClaims } from "@/server/trials/socket-token";
-import { eventsSince, type StoredEvent } from "@/server/trials/event-store";
-import { parseClientMessage, SOCKET_PROTOCOL_VERSION, type ServerMessage, type Viewer } from "./protocol";
+import { eventsSince, STATUS_AFTER, type StoredEvent } from "@/server/trials/event-store";
+import { parseClientMessage, SOCKET_PROTOCOL_VERSION, type ClientMessage, type ServerMessage, type Viewer } from "./protocol";
+import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
 import { annotate } from "./annotations";
 import type { EventRelay } from "./relay";
 import type { TrialHosts } from "./trial-hosts";
 
 interface Connection {
+  /** Set at the first hello: a connection follows one trial, once. */
+  greeted: boolean;
+  closed: boolean;
   claims: SocketClaims | null;
+  /** The caller's access now; only set once hello has admitted them. */
+  access: TrialAccess | null;
+  /** Counts reloads, so an older reload finishing late never overwrites a newer one. */
+  reloads: number;
   unsubscribe?: () => void;
 }
 
@@ -25,6 +35,10 @@ export interface RuntimeOptions {
   port: number;
 }
 
+/** Close codes the browser acts on: 4401 fetch a fresh token and retry; 4403 stop and say why. */
+const EXPIRED = 4401;
+const SHUT_OUT = 4403;
+
 // Every client of a trial gets the same batch: serialise it once, not once per client.
 const serialised = new WeakMap<StoredEvent[], string>();
 function eventsMessage(events: StoredEvent[]): string {
@@ -33,68 +47,151 @@ function eventsMessage(events: StoredEvent[]): string {
   return text;
 }
 
+const mayRun = (access: TrialAccess) => commandVerdict(access, "next").allow;
+
 export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }: RuntimeOptions) {
+  /** Admitted sockets by trial: presence, annotations and access changes reach them. */
   const viewers = new Map<string, Set<Socket>>();
   const send = (ws: Socket, message: ServerMessage): void => void ws.send(JSON.stringify(message));
   const presence = (trialId: string) => {
     const sockets = [...(viewers.get(trialId) ?? [])];
-    const list: Viewer[] = sockets.map((s) => ({ userId: s.data.claims!.userId, name: s.data.claims!.name, role: s.data.claims!.studyRole }));
+    const list: Viewer[] = sockets.map((s) => ({ userId: s.data.access!.userId, name: s.data.access!.name, role: s.data.access!.studyRole ?? "" }));
     for (const s of sockets) send(s, { type: "presence", viewers: list });
     return list;
   };
 
+  /** Drops everything the socket held, at once, whoever closes it. */
+  function release(ws: Socket) {
+    if (ws.data.closed) return;
+    ws.data.closed = true;
+    ws.data.unsubscribe?.();
+    const trialId = ws.data.claims?.trialId;
+    if (trialId && viewers.get(trialId)?.delete(ws)) presence(trialId);
+  }
+  const shut = (ws: Socket, code: number, reason: string) => {
+    release(ws);
+    ws.close(code, reason);
+  };
+
   async function hello(ws: Socket, token: string, lastSeq: number): Promise<void> {
+    if (ws.data.greeted) {
+      return send(ws, { type: "rejected", requestId: null, reason: "This connection has already said hello: open a new connection to follow another trial." });
+    }
+    ws.data.greeted = true;
     const claims = verifySocketToken(token, secret);
-    if (!claims) return ws.close(4401, "Your link to this trial has expired. Reload the page.");
+    if (!claims) return shut(ws, EXPIRED, "Your link to this trial has expired. Reload the page.");
+    if (!(await spendToken(db, claims))) return shut(ws, EXPIRED, "This link to the trial was already used. Reload the page.");
+    const access = await loadTrialAccess(db, claims.trialId, claims.userId);
+    const lost = access ? lostAccess(access) : "This trial no longer exists.";
+    if (lost || !access) return shut(ws, SHUT_OUT, lost ?? "");
+    if (ws.data.closed) return;
     ws.data.claims = claims;
-    const host = await hosts.get(claims.trialId);
-    const missed: StoredEvent[] = await eventsSince(db, claims.trialId, lastSeq);
-    const push = (events: StoredEvent[]) => ws.send(eventsMessage(events));
+    ws.data.access = access;
+    const trialId = claims.trialId;
+    // Admitted: from here on, access changes reach this socket (and may close it).
+    viewers.set(trialId, (viewers.get(trialId) ?? new Set()).add(ws));
+    const host = await hosts.get(trialId);
+    const log = await eventsSince(db, trialId, lastSeq);
+    if (ws.data.closed) return;
+    const shown = mayReadTrialLog(ws.data.access) ? log : [];
+    const push = (events: StoredEvent[]) => {
+      const now = ws.data.access!;
+      if (mayReadTrialLog(now)) ws.send(eventsMessage(events));
+      // Follow the trial's status, so a log that becomes results stops flowing.
+      const status = events.reduce((s, e) => STATUS_AFTER[e.type] ?? s, now.trial.status);
+      if (status !== now.trial.status) ws.data.access = { ...now, trial: { ...now.trial, status } };
+    };
     // Owned here: straight from the host. Owned by another process: through the relay.
-    ws.data.unsubscribe = host ? host.subscribe(push) : relay.follow(claims.trialId, missed.at(-1)?.seq ?? lastSeq, push);
-    const set = viewers.get(claims.trialId) ?? new Set();
-    viewers.set(claims.trialId, set.add(ws));
-    send(ws, { type: "welcome", version: SOCKET_PROTOCOL_VERSION, trialId: claims.trialId, role: claims.studyRole, events: missed, viewers: presence(claims.trialId) });
+    ws.data.unsubscribe = host ? host.subscribe(push) : relay.follow(trialId, log.at(-1)?.seq ?? lastSeq, push);
+    const now = ws.data.access;
+    send(ws, { type: "welcome", version: SOCKET_PROTOCOL_VERSION, trialId, role: now.studyRole!, mayRun: mayRun(now), events: shown, viewers: presence(trialId) });
     if (host) send(ws, { type: "robot", connected: host.robotStatus() });
   }
+
+  /** Reloads one socket's access; closes it if its user may no longer be here. */
+  async function recheck(ws: Socket) {
+    const { claims } = ws.data;
+    if (!claims || ws.data.closed) return;
+    const reload = ++ws.data.reloads;
+    const access = await loadTrialAccess(db, claims.trialId, claims.userId);
+    if (reload !== ws.data.reloads || ws.data.closed) return;
+    const lost = access ? lostAccess(access) : "This trial no longer exists.";
+    if (lost || !access) return shut(ws, SHUT_OUT, lost ?? "");
+    const before = ws.data.access!;
+    ws.data.access = access;
+    if (before.studyRole !== access.studyRole || mayRun(before) !== mayRun(access)) {
+      send(ws, { type: "access", role: access.studyRole!, mayRun: mayRun(access) });
+    }
+    if (before.studyRole !== access.studyRole) presence(claims.trialId);
+  }
+
+  const admitted = () => [...viewers.values()].flatMap((set) => [...set]);
+  /** A change PostgreSQL announced: reload the access of the sockets it concerns, at once. */
+  const accessChanged = (change: AccessChange) => {
+    for (const ws of admitted()) {
+      const access = ws.data.access!;
+      if (touches(change, { userId: access.userId, studyId: access.studyId, trialId: ws.data.claims!.trialId })) void recheck(ws).catch(logError);
+    }
+  };
+  /** After the listening connection was down: anything may have changed. */
+  const recheckAll = () => {
+    for (const ws of admitted()) void recheck(ws).catch(logError);
+  };
 
   /** Tells everyone in a trial at once when its robot drops or comes back. */
   const announceRobot = (trialId: string, connected: boolean, detail?: string) => {
     for (const s of viewers.get(trialId) ?? []) send(s, { type: "robot", connected, ...(detail ? { detail } : {}) });
   };
 
+  async function act(ws: Socket, message: Extract<ClientMessage, { type: "command" | "annotate" }>): Promise<void> {
+    const { claims, access } = ws.data;
+    if (!claims || !access) return send(ws, { type: "rejected", requestId: message.requestId, reason: "Say hello with your trial link first." });
+    const reject = (reason: string) => send(ws, { type: "rejected", requestId: message.requestId, reason });
+    // Decided against the access as it is now: no database round trip here.
+    const verdict = message.type === "command" ? commandVerdict(access, message.command.kind) : annotateVerdict(access);
+    if (!verdict.allow) return reject(verdict.reason);
+    if (message.type === "annotate") {
+      const annotation = await annotate(db, { trialId: claims.trialId, userId: access.userId, name: access.name }, message.label, message.note);
+      for (const s of viewers.get(claims.trialId) ?? []) if (mayReadTrialLog(s.data.access!)) send(s, { type: "annotation", annotation });
+      return send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
+    }
+    const host = await hosts.get(claims.trialId);
+    if (!host) return reject("Another runtime process is running this trial; reload the page to reach it.");
+    const command = message.command.kind === "unscripted" ? { ...message.command, actionId: crypto.randomUUID() } : message.command;
+    // A recording is a row of its own: it must belong to this very trial.
+    if (command.kind === "recording" && !(await isRecordingOf(db, command.recordingId, claims.trialId))) {
+      return reject("That recording belongs to another trial: it was not logged here.");
+    }
+    if (verdict.claim && host.current.status === "scheduled") {
+      if (!(await claimTrial(db, claims.trialId, access.userId))) return reject("Another wizard has just claimed this trial: you may watch it but not run it.");
+      ws.data.access = { ...ws.data.access!, trial: { ...ws.data.access!.trial, wizardId: access.userId } };
+    }
+    const result = await host.command(command, access.userId);
+    if (result.ok) send(ws, { type: "ack", requestId: message.requestId, seqs: result.events.map((e) => e.seq) });
+    else reject(result.reason);
+  }
+
   async function onMessage(ws: Socket, text: string): Promise<void> {
+    if (ws.data.closed) return;
     const parsed = parseClientMessage(text);
     if (!parsed.ok) return send(ws, { type: "rejected", requestId: null, reason: parsed.reason });
     const message = parsed.message;
     if (message.type === "ping") return send(ws, { type: "pong" });
-    if (message.type === "hello") return hello(ws, message.token, message.lastSeq);
-    const claims = ws.data.claims;
-    if (!claims) return send(ws, { type: "rejected", requestId: message.requestId, reason: "Say hello with your trial link first." });
-    const op = message.type === "command" ? "trial.run" : "annotation.create";
-    if (!studyRoleMay(claims.studyRole, op)) {
-      return send(ws, { type: "rejected", requestId: message.requestId, reason: `As ${claims.studyRole} you may watch this trial but not run it.` });
+    if (message.type === "hello") {
+      // A hello that fails half way must not leave a connection that follows nothing.
+      return hello(ws, message.token, message.lastSeq).catch((error: unknown) => {
+        logError(error);
+        shut(ws, 1011, "The server could not open this trial. Reload the page.");
+      });
     }
-    if (message.type === "annotate") {
-      const annotation = await annotate(db, claims, message.label, message.note);
-      for (const s of viewers.get(claims.trialId) ?? []) send(s, { type: "annotation", annotation });
-      return send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
-    }
-    const host = await hosts.get(claims.trialId);
-    if (!host) {
-      return send(ws, { type: "rejected", requestId: message.requestId, reason: "Another runtime process is running this trial; reload the page to reach it." });
-    }
-    const command = message.command.kind === "unscripted" ? { ...message.command, actionId: crypto.randomUUID() } : message.command;
-    const result = await host.command(command, claims.userId);
-    if (result.ok) send(ws, { type: "ack", requestId: message.requestId, seqs: result.events.map((e) => e.seq) });
-    else send(ws, { type: "rejected", requestId: message.requestId, reason: result.reason });
+    return act(ws, message);
   }
 
   const server = Bun.serve<Connection>({
     hostname,
     port,
     fetch(req, server) {
-      if (server.upgrade(req, { data: { claims: null } })) return undefined;
+      if (server.upgrade(req, { data: { greeted: false, closed: false, claims: null, access: null, reloads: 0 } })) return undefined;
       return new Response("This is the HRIStudio trial runtime: connect with a WebSocket.", { status: 426 });
     },
     websocket: {
@@ -104,17 +201,19 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
           await onMessage(ws, text);
         } catch (error) {
           // One failed message must never take the trial down for everyone else.
-          console.error(`[runtime] ${error instanceof Error ? error.message : String(error)}`);
+          logError(error);
           const requestId = (JSON.parse(text) as { requestId?: string }).requestId ?? null;
           send(ws, { type: "rejected", requestId, reason: "The server could not store that; nothing was changed. Try again." });
         }
       },
       close(ws) {
-        ws.data.unsubscribe?.();
-        const trialId = ws.data.claims?.trialId;
-        if (trialId && viewers.get(trialId)?.delete(ws)) presence(trialId);
+        release(ws);
       },
     },
   });
-  return { server, announceRobot };
+  return { server, announceRobot, accessChanged, recheckAll };
+}
+
+function logError(error: unknown) {
+  console.error(`[runtime] ${error instanceof Error ? error.message : String(error)}`);
 }

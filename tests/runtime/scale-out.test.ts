@@ -1,15 +1,14 @@
 // Two runtime processes on one database: one owns a trial (advisory lock),
 // the other relays its events to its own clients through LISTEN/NOTIFY, and
 // takes the trial over when the owner dies.
-import { spawn, type ChildProcess } from "node:child_process";
+import type { ChildProcess } from "node:child_process";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/server/db/client";
-import { freePort } from "../../src/server/db/embedded";
-import { experimentVersions, experiments, studies, trials } from "../../src/server/db/schema";
+import { experimentVersions, experiments, studies, studyMembers, trials } from "../../src/server/db/schema";
 import { signSocketToken } from "../../src/server/trials/socket-token";
-import { BUN } from "../support/app";
 import { freshDatabaseUrl } from "../support/db";
+import { startRuntime } from "../support/runtime";
 import { connectTrial } from "../support/socket";
 
 const SECRET = "scale-out-test-secret".padEnd(40, "x");
@@ -19,38 +18,26 @@ const protocol = {
   steps: [{ id: "s1", name: "Only step", description: "", actions: [{ id: "a1", type: "wizard_instruction", name: "Smile", parameters: {}, parallelGroup: null }] }],
 };
 
-async function startRuntime(databaseUrl: string) {
-  const port = await freePort();
-  const child = spawn(BUN, ["run", "src/runtime/main.ts"], {
-    env: { ...process.env, DATABASE_URL: databaseUrl, BETTER_AUTH_SECRET: SECRET, HRI_RUNTIME_PORT: String(port), HOST: "127.0.0.1" },
-    stdio: ["ignore", "pipe", "pipe"],
-  });
-  await new Promise<void>((ok, fail) => {
-    child.stdout!.on("data", (d) => String(d).includes("listening") && ok());
-    child.once("exit", (code) => fail(new Error(`runtime exited with ${code}`)));
-  });
-  return { url: `ws://127.0.0.1:${port}`, child };
-}
-
 describe.sequential("several runtime processes", () => {
   const children: ChildProcess[] = [];
   let trialId = "";
   let a: { url: string; child: ChildProcess };
   let b: { url: string; child: ChildProcess };
   const people: Record<string, string> = {};
-  const token = (studyRole: "wizard" | "observer") => signSocketToken({ userId: people[studyRole]!, name: studyRole, trialId, studyRole }, SECRET);
+  const token = (studyRole: "wizard" | "observer") => signSocketToken({ userId: people[studyRole]!, trialId }, SECRET);
 
   beforeAll(async () => {
     const url = await freshDatabaseUrl();
     const { db, close } = createDatabase(url);
     for (const role of ["wizard", "observer"]) people[role] = (await createAccount(db, { name: role, email: `${role}@example.org`, password: "password-123", role: "researcher" })).id;
     const [study] = await db.insert(studies).values({ title: "S" }).returning();
+    await db.insert(studyMembers).values(["wizard", "observer"].map((role) => ({ studyId: study!.id, userId: people[role]!, role: role as "wizard" | "observer" })));
     const [experiment] = await db.insert(experiments).values({ studyId: study!.id, name: "E", robotPluginId: "no-robot" }).returning();
     const [version] = await db.insert(experimentVersions).values({ experimentId: experiment!.id, version: 1, snapshot: protocol, hash: "h", pluginId: "no-robot" }).returning();
     trialId = (await db.insert(trials).values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id }).returning())[0]!.id;
     await close();
-    a = await startRuntime(url);
-    b = await startRuntime(url);
+    a = await startRuntime(url, SECRET);
+    b = await startRuntime(url, SECRET);
     children.push(a.child, b.child);
   });
   afterAll(() => children.forEach((c) => c.kill("SIGKILL")));

@@ -27,7 +27,8 @@ type Trial = { id: string; studyId: string; experimentName: string; participantI
 
 function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol }) {
   const live = useTrialSocket(trial.id, protocol);
-  const wizard = studyRoleMay(trial.myRole, "trial.run");
+  // The runtime decides (a wizard runs only the trials assigned to them); until it has said, the study role guides.
+  const wizard = live.mayRun ?? studyRoleMay(trial.myRole, "trial.run");
   const started = live.events.find((e) => e.type === "trial.started");
   const ended = live.state.status === "completed" || live.state.status === "aborted";
   const { command } = live;

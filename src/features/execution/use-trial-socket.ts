@@ -1,7 +1,8 @@
 "use client";
-// The browser's side of the trial socket: connects with a fresh token,
-// resumes from the last event it saw after any drop, and folds the events
-// into the trial's state with the same engine the server uses.
+// The browser's side of the trial socket: connects with a fresh token (each
+// works once, so every reconnection asks for a new one), resumes from the last
+// event it saw after any drop, and folds the events into the trial's state
+// with the same engine the server uses.
 import { useMutation } from "@tanstack/react-query";
 import { useCallback, useEffect, useMemo, useRef, useState } from "react";
 import { fold, type TrialEvent, type TrialProtocol } from "@/core/trial";
@@ -22,6 +23,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const [connected, setConnected] = useState(false);
   const [robot, setRobot] = useState<{ connected: boolean; detail?: string } | null>(null);
   const [notice, setNotice] = useState<string | null>(null);
+  // Whether the server lets me command this trial (role, assigned wizard), as it last said.
+  const [mayRun, setMayRun] = useState<boolean | null>(null);
   const socket = useRef<WebSocket | null>(null);
   const lastSeq = useRef(0);
   const pending = useRef(new Map<string, (o: Outcome) => void>());
@@ -54,8 +57,10 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
           setConnected(true);
           setNotice(null);
           setViewers(m.viewers);
+          setMayRun(m.mayRun);
           receive(m.events as StoredEvent[]);
-        } else if (m.type === "events") receive(m.events as StoredEvent[]);
+        } else if (m.type === "access") setMayRun(m.mayRun);
+        else if (m.type === "events") receive(m.events as StoredEvent[]);
         else if (m.type === "presence") setViewers(m.viewers);
         else if (m.type === "robot") setRobot({ connected: m.connected, detail: m.detail });
         else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
@@ -66,11 +71,18 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
           settle?.(m.type === "ack" ? { ok: true } : { ok: false, reason: m.reason });
         }
       };
-      ws.onclose = () => {
+      ws.onclose = (event) => {
         setConnected(false);
         for (const settle of pending.current.values()) settle({ ok: false, reason: "The connection dropped before the server confirmed this." });
         pending.current.clear();
         if (stopped) return;
+        // Shut out (no longer a member, account disabled): say why and stay disconnected.
+        if (event.code === 4403) {
+          stopped = true;
+          setMayRun(false);
+          setNotice(event.reason || "You may no longer follow this trial.");
+          return;
+        }
         setNotice("Connection lost: reconnecting…");
         retry = Math.min(retry * 2, 5000);
         setTimeout(connect, retry);
@@ -104,6 +116,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     connected,
     robot,
     notice,
+    mayRun,
     command: (command: WizardCommand) => request({ type: "command", command }),
     annotate: (label: string, note = "") => request({ type: "annotate", label, note }),
   };

@@ -23,7 +23,8 @@ function toStored(row: Row): StoredEvent {
   };
 }
 
-const STATUS_AFTER: Partial<Record<EngineEvent["type"], (typeof trials.$inferSelect)["status"]>> = {
+/** The trial status each event moves the trial to (the rest leave it as it is). */
+export const STATUS_AFTER: Partial<Record<EngineEvent["type"], (typeof trials.$inferSelect)["status"]>> = {
   "trial.started": "in_progress",
   "trial.paused": "paused",
   "trial.emergency_stop": "paused",

@@ -56,14 +56,17 @@ async function assertNotWithdrawn(db: Database, trialId: string) {
 }
 
 export const trialsRouter = router({
-  create: studyProcedure("trial.create", "version", z.object({ versionId: id, participantId: id.nullable().default(null), wizardId: id.nullable().default(null) }))
+  // wizardId: omitted → the creator runs it; null → unassigned, the first wizard to start it claims it.
+  create: studyProcedure("trial.create", "version", z.object({ versionId: id, participantId: id.nullable().default(null), wizardId: id.nullable().optional() }))
     .mutation(async ({ ctx, input }) => {
       const { studyId, row: version } = ctx;
       if (input.participantId) await assertMayTakePart(ctx.db, input.participantId, studyId);
-      const wizardId = input.wizardId ?? ctx.user.id;
-      const [m] = await ctx.db.select().from(studyMembers).where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
-      if (!m || m.role === "observer") {
-        throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: wizardId: the wizard must be an owner, researcher or wizard of this study" });
+      const wizardId = input.wizardId === undefined ? ctx.user.id : input.wizardId;
+      if (wizardId !== null) {
+        const [m] = await ctx.db.select().from(studyMembers).where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
+        if (!m || m.role === "observer") {
+          throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: wizardId: the wizard must be an owner, researcher or wizard of this study" });
+        }
       }
       const [row] = await ctx.db
         .insert(trials)
@@ -179,11 +182,11 @@ export const trialsRouter = router({
         .limit(input.limit);
     }),
 
-  /** A short-lived pass to the trial runtime's socket, carrying my role in the study. */
+  /** A short-lived, single-use pass to the trial runtime's socket: who and which trial, nothing more (the runtime looks up my role itself). */
   socketToken: studyProcedure("trial.read", "trial", z.object({ trialId: id }))
     .mutation(({ ctx }) => ({
       url: ctx.runtimeUrl,
-      token: signSocketToken({ userId: ctx.user.id, name: ctx.user.name, trialId: ctx.row.id, studyRole: ctx.studyRole }, ctx.secret),
+      token: signSocketToken({ userId: ctx.user.id, trialId: ctx.row.id }, ctx.secret),
     })),
 
   get: studyProcedure("trial.read", "trial", z.object({ trialId: id }))

@@ -1,0 +1,80 @@
+// Who may do what on a trial's socket. Pure: the runtime keeps each open
+// socket's access fresh from the database (at hello, then on every change
+// PostgreSQL announces) and asks here on every message, so a decision never
+// waits on the database and never rests on what the client claims.
+import type { Blinding } from "../studies/blinding";
+import type { TrialState } from "../trial/types";
+import { decide, studyRoleMay, type StudyRole, type SystemRole } from "./policy";
+
+export interface TrialAccess {
+  userId: string;
+  name: string;
+  systemRole: SystemRole;
+  /** False once the account is disabled or deleted. */
+  active: boolean;
+  studyId: string;
+  /** The caller's role in the trial's study; null once they are no longer a member. */
+  studyRole: StudyRole | null;
+  blinding: Blinding;
+  trial: { wizardId: string | null; status: TrialState["status"] };
+}
+
+export type SocketVerdict = { allow: true; claim: boolean } | { allow: false; reason: string };
+
+const refuse = (reason: string): SocketVerdict => ({ allow: false, reason });
+
+/** Why this socket must close now, or null while its user may stay. */
+export function lostAccess(access: TrialAccess): string | null {
+  if (!access.active) return "Your account is no longer active.";
+  if (access.studyRole === null) return "You are no longer a member of this study.";
+  return null;
+}
+
+/** May the caller send this command (a kind from the socket protocol) to the trial? */
+export function commandVerdict(access: TrialAccess, kind: string): SocketVerdict {
+  const lost = lostAccess(access);
+  if (lost) return refuse(lost);
+  const role = access.studyRole!;
+  if (!studyRoleMay(role, "trial.run")) return refuse(`As ${role} you may watch this trial but not run it.`);
+  // Safety before procedure: whoever may run trials in this study may stop the
+  // robot of any of them, the trial's own wizard or not.
+  if (kind === "emergency_stop") return { allow: true, claim: false };
+  // Owners and researchers run any trial of their study; a wizard runs the
+  // trials assigned to them, or an unassigned one, which starting claims.
+  if (role !== "wizard" || access.trial.wizardId === access.userId) return { allow: true, claim: false };
+  if (access.trial.wizardId === null) return { allow: true, claim: kind === "start" };
+  return refuse("This trial is assigned to another wizard: you may watch it but not run it.");
+}
+
+/** May the caller mark a moment in this trial? */
+export function annotateVerdict(access: TrialAccess): SocketVerdict {
+  const lost = lostAccess(access);
+  if (lost) return refuse(lost);
+  return studyRoleMay(access.studyRole!, "annotation.create") ? { allow: true, claim: false } : refuse(`As ${access.studyRole} you may not mark moments in this trial.`);
+}
+
+/**
+ * May the caller receive the trial's event log? Whoever may read the study's
+ * data (blinds included); and any member while the trial is live, since
+ * watching it unfold is what the socket is for. A finished trial's log is results.
+ */
+export function mayReadTrialLog(access: TrialAccess): boolean {
+  if (lostAccess(access)) return false;
+  if (decide({ systemRole: access.systemRole, studyRole: access.studyRole, blinding: access.blinding }, "data.read").allow) return true;
+  return access.trial.status !== "completed" && access.trial.status !== "aborted";
+}
+
+/** A change PostgreSQL announced on 'hri_access': the keys name what changed. */
+export interface AccessChange {
+  studyId?: string;
+  userId?: string;
+  trialId?: string;
+}
+
+/** Does the change concern this socket (its study, its user or its trial)? */
+export function touches(change: AccessChange, socket: { userId: string; studyId: string; trialId: string }): boolean {
+  if (change.trialId !== undefined) return change.trialId === socket.trialId;
+  if (change.studyId !== undefined && change.studyId !== socket.studyId) return false;
+  if (change.userId !== undefined && change.userId !== socket.userId) return false;
+  return change.studyId !== undefined || change.userId !== undefined;
+}

@@ -1,0 +1,162 @@
+// The trial socket's trust boundary (issue 12), over real sockets against a
+// real runtime process and PostgreSQL: tokens work once, one hello per
+// connection, access changes reach open sockets at once, the welcome carries
+// only what the caller may read, and a wizard runs only their own trials.
+import { and, eq } from "drizzle-orm";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { studies, studyMembers, trials, user } from "../../src/server/db/schema";
+import { SOCKET_PROTOCOL_VERSION } from "../../src/runtime/protocol";
+import { socketFixture } from "../support/socket-fixture";
+import { connectTrial, type TrialSocket } from "../support/socket";
+
+type Fixture = Awaited<ReturnType<typeof socketFixture>>;
+const seqsIn = (socket: TrialSocket) => socket.messages.flatMap((m) => (m.type === "events" ? (m.events as Array<{ seq: number }>).map((e) => e.seq) : []));
+const welcomeOf = (socket: TrialSocket) => socket.messages.find((m) => m.type === "welcome")!;
+/** A bounded wait for something that must happen soon (never a timing assertion). */
+async function eventually(check: () => boolean, what: string, seconds = 3) {
+  for (let i = 0; i < seconds * 20 && !check(); i++) await new Promise((r) => setTimeout(r, 50));
+  expect(check(), what).toBe(true);
+}
+
+describe.sequential("the trial socket's access", () => {
+  let f: Fixture;
+  beforeAll(async () => {
+    f = await socketFixture();
+  });
+  afterAll(async () => f?.stop());
+
+  it("accepts each token once: the same token cannot say hello again", async () => {
+    const trialId = await f.a.trial(f.a.people.wizard!, "live");
+    const token = f.token(f.a.people.wizard!, trialId);
+    const first = await connectTrial(f.url, token);
+    expect(welcomeOf(first)).toMatchObject({ trialId, role: "wizard", mayRun: true });
+    first.close();
+    const again = await connectTrial(f.url, token);
+    expect(again.closed).toEqual({ code: 4401, reason: "This link to the trial was already used. Reload the page." });
+    expect(again.messages).toEqual([]);
+  });
+
+  it("refuses a second hello on a connection, which then receives every event once", async () => {
+    const trialId = await f.a.trial(f.a.people.wizard!, "scheduled");
+    const otherStudysTrial = await f.b.trial(f.b.people.wizard!, "live");
+    const observer = await f.open("observer", trialId);
+    for (let i = 0; i < 5; i++) {
+      observer.send({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: f.token(f.a.people.observer!, trialId), lastSeq: 0 });
+    }
+    // Not even a valid token for another study's trial changes what this connection follows.
+    observer.send({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: f.token(f.b.people.owner!, otherStudysTrial), lastSeq: 0 });
+    await eventually(() => observer.messages.filter((m) => m.type === "rejected").length === 6, "six hellos refused");
+    expect(observer.messages.filter((m) => m.type === "rejected").map((m) => m.reason)).toEqual(
+      Array(6).fill("This connection has already said hello: open a new connection to follow another trial."),
+    );
+    const wizard = await f.open("wizard", trialId);
+    expect(await wizard.command("s", { kind: "start" })).toMatchObject({ type: "ack", seqs: [1, 2] });
+    expect(await wizard.command("n", { kind: "note", text: "Participant sat down" })).toMatchObject({ type: "ack", seqs: [3] });
+    await observer.next((m) => m.type === "events" && seqsIn({ ...observer, messages: [m] }).includes(3));
+    await wizard.command("n2", { kind: "note", text: "One more, so any duplicate of 3 has arrived" });
+    await observer.next((m) => m.type === "events" && seqsIn({ ...observer, messages: [m] }).includes(4));
+    expect(seqsIn(observer)).toEqual([1, 2, 3, 4]);
+    expect(observer.messages.filter((m) => m.type === "welcome")).toHaveLength(1);
+    observer.close();
+    wizard.close();
+  });
+
+  it("cuts off a removed member at once, and refuses them a new connection", async () => {
+    const trialId = await f.a.trial(f.a.people.wizard!, "live");
+    const researcher = await f.open("researcher", trialId);
+    expect(welcomeOf(researcher)).toMatchObject({ role: "researcher", mayRun: true });
+    await f.db.delete(studyMembers).where(and(eq(studyMembers.studyId, f.a.studyId), eq(studyMembers.userId, f.a.people.researcher!)));
+    await eventually(() => researcher.closed !== null, "the removed member's socket is closed within a bounded wait");
+    expect(researcher.closed).toEqual({ code: 4403, reason: "You are no longer a member of this study." });
+    const back = await f.open("researcher", trialId);
+    expect(back.closed).toEqual({ code: 4403, reason: "You are no longer a member of this study." });
+    await f.db.insert(studyMembers).values({ studyId: f.a.studyId, userId: f.a.people.researcher!, role: "researcher" });
+  });
+
+  it("cuts off a disabled account at once", async () => {
+    const trialId = await f.a.trial(f.a.people.wizard!, "live");
+    const observer = await f.open("observer", trialId);
+    await f.db.update(user).set({ disabled: true }).where(eq(user.id, f.a.people.observer!));
+    await eventually(() => observer.closed !== null, "the disabled account's socket is closed");
+    expect(observer.closed).toEqual({ code: 4403, reason: "Your account is no longer active." });
+    await f.db.update(user).set({ disabled: false }).where(eq(user.id, f.a.people.observer!));
+  });
+
+  it("applies a role change to the next command on the open socket, and says so", async () => {
+    const trialId = await f.a.trial(f.a.people.wizard!, "live");
+    const researcher = await f.open("researcher", trialId);
+    expect(await researcher.command("r1", { kind: "note", text: "Still a researcher" })).toMatchObject({ type: "ack" });
+    await f.db.update(studyMembers).set({ role: "observer" }).where(and(eq(studyMembers.studyId, f.a.studyId), eq(studyMembers.userId, f.a.people.researcher!)));
+    expect(await researcher.next((m) => m.type === "access")).toEqual({ type: "access", role: "observer", mayRun: false });
+    expect(await researcher.command("r2", { kind: "next" })).toMatchObject({ type: "rejected", reason: "As observer you may watch this trial but not run it." });
+    expect(await researcher.command("r3", { kind: "emergency_stop" })).toMatchObject({ type: "rejected" });
+    await f.db.update(studyMembers).set({ role: "researcher" }).where(and(eq(studyMembers.studyId, f.a.studyId), eq(studyMembers.userId, f.a.people.researcher!)));
+    expect(await researcher.next((m) => m.type === "access" && m.role === "researcher")).toMatchObject({ mayRun: true });
+    researcher.close();
+  });
+
+  it("sends a results-blinded researcher no events of a finished trial, live or later", async () => {
+    const finished = await f.a.trial(f.a.people.wizard!, "completed");
+    const live = await f.a.trial(f.a.people.wizard!, "live");
+    const unblinded = await f.open("researcher", finished);
+    expect((welcomeOf(unblinded).events as unknown[]).length).toBe(3);
+    unblinded.close();
+    await f.db.update(studies).set({ settings: { blinding: { conditionsFromWizards: false, resultsUntilComplete: true } } }).where(eq(studies.id, f.a.studyId));
+    const blinded = await f.open("researcher", finished);
+    expect(welcomeOf(blinded)).toMatchObject({ role: "researcher", events: [] });
+    const observer = await f.open("observer", finished);
+    expect(welcomeOf(observer)).toMatchObject({ events: [] });
+    // A wizard never reads results; the owner always may.
+    expect(welcomeOf(await f.open("wizard", finished))).toMatchObject({ events: [] });
+    expect((welcomeOf(await f.open("owner", finished)).events as unknown[]).length).toBe(3);
+    // Watching a live trial unfold is what the socket is for, blind or not.
+    const watching = await f.open("researcher", live);
+    expect((welcomeOf(watching).events as unknown[]).length).toBe(2);
+    await f.db.update(studies).set({ settings: {} }).where(eq(studies.id, f.a.studyId));
+    for (const s of [blinded, observer, watching]) s.close();
+  });
+
+  it("lets a wizard watch, but not command, another wizard's trial (an emergency stop excepted)", async () => {
+    const trialId = await f.a.trial(f.a.people.wizard!, "live");
+    const other = await f.open("otherWizard", trialId);
+    expect(welcomeOf(other)).toMatchObject({ role: "wizard", mayRun: false });
+    expect((welcomeOf(other).events as unknown[]).length).toBe(2);
+    for (const command of [{ kind: "next" }, { kind: "jump", stepId: "A-step-2" }, { kind: "abort", reason: "mine now" }, { kind: "note", text: "x" }]) {
+      expect(await other.command(`o-${command.kind}`, command)).toMatchObject({ type: "rejected", reason: "This trial is assigned to another wizard: you may watch it but not run it." });
+    }
+    expect(await other.command("stop", { kind: "emergency_stop" })).toMatchObject({ type: "ack" });
+    other.close();
+  });
+
+  it("gives an unassigned trial to the first wizard who starts it", async () => {
+    const trialId = await f.a.trial(null, "scheduled");
+    const first = await f.open("otherWizard", trialId);
+    const second = await f.open("wizard", trialId);
+    expect(welcomeOf(second)).toMatchObject({ mayRun: true });
+    expect(await first.command("s", { kind: "start" })).toMatchObject({ type: "ack" });
+    const [row] = await f.db.select({ wizardId: trials.wizardId }).from(trials).where(eq(trials.id, trialId));
+    expect(row!.wizardId).toBe(f.a.people.otherWizard);
+    expect(await second.next((m) => m.type === "access")).toEqual({ type: "access", role: "wizard", mayRun: false });
+    expect(await second.command("n", { kind: "next" })).toMatchObject({ type: "rejected", reason: "This trial is assigned to another wizard: you may watch it but not run it." });
+    expect(await first.command("n", { kind: "next" })).toMatchObject({ type: "ack" });
+    first.close();
+    second.close();
+  });
+
+  it("logs a recording only on its own trial", async () => {
+    const trialId = await f.a.trial(f.a.people.wizard!, "live");
+    const mine = await f.recording(trialId);
+    const elsewhere = await f.recording(await f.a.trial(f.a.people.wizard!, "live"));
+    const wizard = await f.open("wizard", trialId);
+    expect(await wizard.command("other", { kind: "recording", recordingId: elsewhere, offsetMs: 0 })).toMatchObject({ type: "rejected", reason: "That recording belongs to another trial: it was not logged here." });
+    expect(await wizard.command("mine", { kind: "recording", recordingId: mine, offsetMs: 0 })).toMatchObject({ type: "ack" });
+    wizard.close();
+  });
+
+  it("refuses someone who is not a member of the trial's study at hello", async () => {
+    const trialId = await f.a.trial(f.a.people.wizard!, "live");
+    const outsider = await f.open("outsider", trialId);
+    expect(outsider.closed).toEqual({ code: 4403, reason: "You are no longer a member of this study." });
+    expect(outsider.messages).toEqual([]);
+  });
+});

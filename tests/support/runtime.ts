@@ -1,0 +1,17 @@
+// A trial runtime process (Bun) against a test database, as the launcher starts it.
+import { spawn, type ChildProcess } from "node:child_process";
+import { freePort } from "../../src/server/db/embedded";
+import { BUN } from "./app";
+
+export async function startRuntime(databaseUrl: string, secret: string): Promise<{ url: string; child: ChildProcess }> {
+  const port = await freePort();
+  const child = spawn(BUN, ["run", "src/runtime/main.ts"], {
+    env: { ...process.env, DATABASE_URL: databaseUrl, BETTER_AUTH_SECRET: secret, HRI_RUNTIME_PORT: String(port), HOST: "127.0.0.1" },
+    stdio: ["ignore", "pipe", "pipe"],
+  });
+  await new Promise<void>((ok, fail) => {
+    child.stdout!.on("data", (d) => String(d).includes("listening") && ok());
+    child.once("exit", (code) => fail(new Error(`runtime exited with ${code}`)));
+  });
+  return { url: `ws://127.0.0.1:${port}`, child };
+}
