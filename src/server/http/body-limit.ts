@@ -7,7 +7,7 @@
 const KB = 1024;
 const MB = 1024 * KB;
 
-const size = (bytes: number) => (bytes >= MB ? `${+(bytes / MB).toFixed(1)} MB` : `${+(bytes / KB).toFixed(1)} KB`);
+const size = (bytes: number) => (bytes >= MB ? `${+(bytes / MB).toFixed(1)} MB` : bytes >= KB ? `${+(bytes / KB).toFixed(1)} KB` : `${bytes} bytes`);
 
 /** 413 with a sentence naming the limit, e.g. "A part of a recording may be at most 16 MB; this one is 20 MB." */
 export function tooLarge(what: string, limit: number, declared?: number): Response {
@@ -54,7 +54,11 @@ export async function withinLimit(req: Request, limit: number, what: string): Pr
   if (req.method === "GET" || req.method === "HEAD") return req;
   const body = await readBody(req, limit, what);
   if (body instanceof Response) return body;
-  return new Request(req.url, { method: req.method, headers: req.headers, body, signal: req.signal });
+  // The copy has a known length: it is no longer sent in chunks.
+  const headers = new Headers(req.headers);
+  headers.delete("transfer-encoding");
+  headers.set("content-length", String(body.byteLength));
+  return new Request(req.url, { method: req.method, headers, body, signal: req.signal });
 }
 
 export const LIMITS = {
