@@ -3,6 +3,7 @@ import { readConfig } from "./config";
 import { createAuth, type Auth } from "./auth/auth";
 import { createDatabase, type Database } from "./db/client";
 import { mediaStorage } from "./media";
+import { browserRuntimeUrl } from "./runtime-url";
 import type { Context, SessionUser } from "./api/trpc";
 import { SYSTEM_ROLES, type SystemRole } from "@/core/access/policy";
 
@@ -29,7 +30,7 @@ export function server(): Server {
     allowSignUp: config.HRI_ALLOW_SIGNUP,
     signInPerMinute: config.HRI_SIGNIN_PER_MINUTE,
   });
-  const runtimeUrl = config.HRI_RUNTIME_URL ?? `ws://${config.HOST === "0.0.0.0" ? "localhost" : config.HOST}:${config.HRI_RUNTIME_PORT}`;
+  const runtimeUrl = browserRuntimeUrl(config);
   const media = { storage: mediaStorage(config), maxBytes: config.HRI_MEDIA_MAX_MB * 1024 * 1024 };
   globalForServer.hriServer = { db, auth, secret: config.BETTER_AUTH_SECRET, runtimeUrl, media };
   return globalForServer.hriServer;

@@ -169,7 +169,7 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "recordings.chunkTarget": [RUNNERS, async (f, b) => freshRecording(f, b)],
   "recordings.finish": [RUNNERS, async (f, b) => ({ ...(await freshRecording(f, b)), durationMs: 1000 })],
   "recordings.list": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
-  "recordings.file": [["owner", "researcher", "observer"], async (f, b) => freshRecording(f, b, true)],
+  "recordings.media": [["owner", "researcher", "observer"], async (f, b) => freshRecording(f, b, true)],
   "trials.annotate": [MEMBERS, (_f, b) => ({ trialId: b.trial.id, relMs: 1500, label: "Smiled" })],
   // Each caller edits a moment they marked themselves; others' moments are the owner's and researchers' to edit (tested in analysis.test).
   "trials.editAnnotation": [

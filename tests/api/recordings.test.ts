@@ -34,7 +34,8 @@ describe("recordings", () => {
     await f.media.storage.put(chunkKey(key, 0), new Uint8Array([9, 9]), "video/webm");
     await f.media.storage.put(chunkKey(key, 0), webm.subarray(0, 20), "video/webm");
     await owner.recordings.finish({ recordingId, durationMs: 4200 });
-    const { bytes } = await owner.recordings.file({ recordingId });
+    const { storageKey } = await owner.recordings.media({ recordingId });
+    const bytes = (await f.media.storage.get(storageKey))!;
     expect(webmDuration(bytes)).toBeCloseTo(4200, 3);
     expect(await f.media.storage.list(`${key}/`)).toEqual([]);
     expect(await owner.recordings.list({ trialId: t.id })).toMatchObject([{ id: recordingId, status: "complete", offsetMs: -140, durationMs: 4200, sizeBytes: bytes.length }]);

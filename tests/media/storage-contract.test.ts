@@ -43,6 +43,19 @@ describe.each([
     expect(await store.list("recordings/r1/")).toEqual(["recordings/r1/chunk-000001", "recordings/r1/chunk-000002"]);
   });
 
+  it("tells the size, and streams the whole or a range of bytes", async () => {
+    const bytes = (await store.get("recordings/r1/chunk-000001"))!;
+    expect(await store.size("recordings/r1/chunk-000001")).toBe(bytes.length);
+    const read = async (stream: ReadableStream<Uint8Array> | null) => Buffer.from(await new Response(stream).arrayBuffer());
+    expect(Buffer.compare(await read(await store.stream("recordings/r1/chunk-000001")), bytes)).toBe(0);
+    const middle = await read(await store.stream("recordings/r1/chunk-000001", { start: 1_000_000, end: 1_000_009 }));
+    expect([...middle]).toEqual([...bytes.subarray(1_000_000, 1_000_010)]);
+    const last = await read(await store.stream("recordings/r1/chunk-000001", { start: bytes.length - 1, end: bytes.length - 1 }));
+    expect([...last]).toEqual([bytes.at(-1)]);
+    expect(await store.size("recordings/none/chunk-000001")).toBeNull();
+    expect(await store.stream("recordings/none/chunk-000001")).toBeNull();
+  }, 60_000);
+
   it("answers null for what it does not hold, and removes", async () => {
     expect(await store.get("recordings/none/chunk-000001")).toBeNull();
     await store.remove("recordings/r1/chunk-000002");

@@ -1,38 +1,6 @@
 import { describe, expect, it } from "vitest";
+import { parseCsv } from "../../../tests/support/csv";
 import { eventsCsv, type ExportEvent } from "./exports";
-
-/** An independent RFC 4180 reader, to check the writer against. */
-function parseCsv(text: string): string[][] {
-  const rows: string[][] = [];
-  let row: string[] = [];
-  let field = "";
-  let quoted = false;
-  for (let i = 0; i < text.length; i++) {
-    const c = text[i]!;
-    if (quoted && c === '"' && text[i + 1] === '"') {
-      field += '"';
-      i++;
-    } else if (quoted && c === '"') {
-      quoted = false;
-    } else if (quoted) {
-      field += c;
-    } else if (c === '"') {
-      quoted = true;
-    } else if (c === ",") {
-      row.push(field);
-      field = "";
-    } else if (c === "\r" && text[i + 1] === "\n") {
-      row.push(field);
-      rows.push(row);
-      row = [];
-      field = "";
-      i++;
-    } else {
-      field += c;
-    }
-  }
-  return rows;
-}
 
 const events: ExportEvent[] = [
   { seq: 1, type: "trial.started", relMs: 0, serverTime: "2026-01-01T10:00:00.000Z", actorId: "u1" },

@@ -1,6 +1,7 @@
 // Exports of a trial: tidy CSV of its events (one row per event) and the full
 // record as JSON. Pure string builders; the server only streams them.
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
+import { csvDocument } from "@/core/csv/csv";
 
 export const TRIAL_RECORD_SCHEMA_VERSION = 1;
 
@@ -19,31 +20,21 @@ export interface ExportEvent {
 
 export const EVENT_COLUMNS = ["trial_id", "seq", "type", "step_id", "action_id", "action_type", "deviation", "rel_ms", "server_time", "actor_id", "payload"] as const;
 
-/** RFC 4180: quote a field when it holds a quote, comma, CR or LF; double inner quotes. */
-export function csvField(value: unknown): string {
-  const text = value === null || value === undefined ? "" : typeof value === "string" ? value : String(value);
-  return /[",\r\n]/.test(text) ? `"${text.replaceAll('"', '""')}"` : text;
-}
-
 export function eventsCsv(trialId: string, events: ExportEvent[]): string {
-  const rows = events.map((e) =>
-    [
-      trialId,
-      e.seq,
-      e.type,
-      e.stepId ?? "",
-      e.actionId ?? "",
-      e.actionType ?? "",
-      e.deviation ?? "",
-      e.relMs ?? "",
-      e.serverTime instanceof Date ? e.serverTime.toISOString() : e.serverTime,
-      e.actorId ?? "",
-      JSON.stringify(e),
-    ]
-      .map(csvField)
-      .join(","),
-  );
-  return [EVENT_COLUMNS.join(","), ...rows].join("\r\n") + "\r\n";
+  const rows = events.map((e) => [
+    trialId,
+    e.seq,
+    e.type,
+    e.stepId ?? "",
+    e.actionId ?? "",
+    e.actionType ?? "",
+    e.deviation ?? "",
+    e.relMs ?? "",
+    e.serverTime instanceof Date ? e.serverTime.toISOString() : e.serverTime,
+    e.actorId ?? "",
+    JSON.stringify(e),
+  ]);
+  return csvDocument(EVENT_COLUMNS, rows);
 }
 
 export interface TrialRecord {

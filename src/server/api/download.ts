@@ -1,9 +1,12 @@
 // Routes outside tRPC (file downloads, binary uploads) go through the same
 // procedures, and so the same policy and blinds, as the API: a refusal
-// becomes the HTTP status with its message.
+// becomes the HTTP status with its message. Anything unexpected (a bug, the
+// database, the media store) becomes a plain 500 with a reference in the log,
+// never the error's own text, which can hold SQL, parameters or paths.
 import { TRPCError } from "@trpc/server";
 import { getHTTPStatusCodeFromError } from "@trpc/server/http";
 import { contextFromHeaders } from "../context";
+import { unexpectedResponse } from "../errors/reference";
 import type { Context } from "./trpc";
 import { appRouter } from "./root";
 
@@ -14,8 +17,9 @@ export async function apiRoute(req: Request, handle: (api: Caller, context: Cont
     const context = await contextFromHeaders(req.headers);
     return await handle(appRouter.createCaller(context), context);
   } catch (error) {
-    if (error instanceof TRPCError) return new Response(error.message, { status: getHTTPStatusCodeFromError(error) });
-    throw error;
+    // A procedure's unexpected failure arrives wrapped as INTERNAL_SERVER_ERROR with the original message.
+    if (error instanceof TRPCError && error.code !== "INTERNAL_SERVER_ERROR") return new Response(error.message, { status: getHTTPStatusCodeFromError(error) });
+    return unexpectedResponse(error, req);
   }
 }
 

@@ -7,7 +7,7 @@ import type { Database } from "../db/client";
 import { assertOneStudy, studyAccessOf } from "../access/membership";
 import { keyOf, loadResource, nameOf, type Resource, type ResourceRow } from "../access/resources";
 import type { MediaStorage } from "../media/storage";
-import { logWithReference, unexpectedMessage } from "../errors/reference";
+import { logUnexpected, unexpectedMessage } from "../errors/reference";
 import { describeIssues, fieldIssues, type FieldIssue } from "./errors";
 
 export interface SessionUser {
@@ -47,7 +47,7 @@ const t = initTRPC
       const message = issues
         ? `Please correct: ${describeIssues(issues)}`
         : error.code === "INTERNAL_SERVER_ERROR"
-          ? unexpectedMessage(logWithReference(error.cause ?? error, `procedure ${path ?? "(unknown)"}`))
+          ? unexpectedMessage(logUnexpected(error.cause ?? error, `procedure ${path ?? "(unknown)"}`))
           : shape.message;
       return { ...shape, message, data: { code: shape.data.code, httpStatus: shape.data.httpStatus, path: shape.data.path, issues } };
     },

@@ -1,15 +1,22 @@
-// An unexpected error reaches the person as a plain sentence and a reference;
-// what went wrong (SQL, parameters, stack) stays in the server's log under it.
-import { randomBytes } from "node:crypto";
+// An unexpected error (a bug, a database or storage failure) reaches the
+// client as one plain sentence with a reference; the details (message, SQL
+// and its parameters, stack) go only to the server's log, under the same
+// reference, so an administrator can find them from what the user reports.
+import { inspect } from "node:util";
 
-/** Logs the error under a new reference and returns the reference. */
-export function logWithReference(error: unknown, where: string): string {
-  const reference = randomBytes(4).toString("hex").toUpperCase();
-  const detail = error instanceof Error ? (error.stack ?? error.message) : String(error);
-  console.error(`[hristudio] error ${reference} in ${where}: ${detail}`);
-  return reference;
+/** Logs the error with a new reference and returns the reference. */
+export function logUnexpected(error: unknown, where: string): string {
+  const ref = crypto.randomUUID().slice(0, 8);
+  console.error(`[hristudio] error ${ref}: ${where}: ${inspect(error, { depth: 4 })}`);
+  return ref;
 }
 
-export function unexpectedMessage(reference: string): string {
-  return `Something went wrong on the server, and this was not done. Please try again; if it happens again, tell your administrator the reference ${reference}.`;
+/** What the client is told instead of the error itself. */
+export const unexpectedMessage = (ref: string) =>
+  `Something went wrong on the server. If it happens again, tell your administrator the reference ${ref}.`;
+
+/** A route's answer to an unexpected error: logged, and 500 with the plain message. */
+export function unexpectedResponse(error: unknown, req: Request): Response {
+  const ref = logUnexpected(error, `${req.method} ${new URL(req.url).pathname}`);
+  return new Response(unexpectedMessage(ref), { status: 500, headers: { "content-type": "text/plain; charset=utf-8" } });
 }

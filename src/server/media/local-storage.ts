@@ -1,9 +1,12 @@
 // Media in a folder on the server (under HRI_DATA_DIR by default). A write
 // goes to a temporary file, is flushed to disk, then renamed into place: a
 // crash leaves the old bytes or the new ones, never half of either.
-import { mkdir, open, readdir, readFile, rename, rm } from "node:fs/promises";
+import { mkdir, open, readdir, readFile, rename, rm, stat } from "node:fs/promises";
 import { dirname, join } from "node:path";
-import { checkKey, type MediaStorage } from "./storage";
+import type { ByteRange } from "@/core/media/byte-range";
+import { checkKey, webStream, type MediaStorage } from "./storage";
+
+const missing = (error: unknown) => (error as NodeJS.ErrnoException).code === "ENOENT";
 
 export class LocalStorage implements MediaStorage {
   constructor(private readonly root: string) {}
@@ -26,9 +29,29 @@ export class LocalStorage implements MediaStorage {
     try {
       return await readFile(join(this.root, checkKey(key)));
     } catch (error) {
-      if ((error as NodeJS.ErrnoException).code === "ENOENT") return null;
+      if (missing(error)) return null;
       throw error;
     }
+  }
+
+  async size(key: string) {
+    try {
+      return (await stat(join(this.root, checkKey(key)))).size;
+    } catch (error) {
+      if (missing(error)) return null;
+      throw error;
+    }
+  }
+
+  async stream(key: string, range?: ByteRange) {
+    // Opened here, so a missing file is null now rather than an error mid-stream.
+    const handle = await open(join(this.root, checkKey(key)), "r").catch((error: unknown) => {
+      if (missing(error)) return null;
+      throw error;
+    });
+    if (!handle) return null;
+    const file = handle.createReadStream(range ? { start: range.start, end: range.end } : {});
+    return webStream(file);
   }
 
   async list(prefix: string) {

@@ -1,7 +1,10 @@
 // Media in MinIO or any S3-compatible server, through the `minio` client.
 // The bucket is made on first use.
 import { Client } from "minio";
-import { checkKey, type MediaStorage } from "./storage";
+import type { ByteRange } from "@/core/media/byte-range";
+import { checkKey, webStream, type MediaStorage } from "./storage";
+
+const missing = (error: unknown) => ["NoSuchKey", "NotFound"].includes((error as { code?: string }).code ?? "");
 
 export interface S3Options {
   /** e.g. http://127.0.0.1:9000 */
@@ -52,7 +55,30 @@ export class S3Storage implements MediaStorage {
       for await (const chunk of stream) chunks.push(chunk as Buffer);
       return Buffer.concat(chunks);
     } catch (error) {
-      if ((error as { code?: string }).code === "NoSuchKey") return null;
+      if (missing(error)) return null;
+      throw error;
+    }
+  }
+
+  async size(key: string) {
+    await this.bucket();
+    try {
+      return (await this.client.statObject(this.options.bucket, checkKey(key))).size;
+    } catch (error) {
+      if (missing(error)) return null;
+      throw error;
+    }
+  }
+
+  async stream(key: string, range?: ByteRange) {
+    await this.bucket();
+    try {
+      const body = range
+        ? await this.client.getPartialObject(this.options.bucket, checkKey(key), range.start, range.end - range.start + 1)
+        : await this.client.getObject(this.options.bucket, checkKey(key));
+      return webStream(body);
+    } catch (error) {
+      if (missing(error)) return null;
       throw error;
     }
   }

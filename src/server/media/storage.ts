@@ -1,12 +1,22 @@
 // Where recordings live: a local folder by default, MinIO or any S3-compatible
 // server when configured. One interface, one contract test suite for both.
 // Keys are relative paths of safe characters; nothing can climb out.
+import { Readable } from "node:stream";
+import type { ByteRange } from "@/core/media/byte-range";
 
 export interface MediaStorage {
   /** Stores bytes under a key, replacing what was there; durable when it resolves. */
   put(key: string, data: Uint8Array, contentType: string): Promise<void>;
   /** The bytes under a key, or null when there are none. */
   get(key: string): Promise<Buffer | null>;
+  /** The size in bytes of what is under a key, or null when there is nothing. */
+  size(key: string): Promise<number | null>;
+  /**
+   * The bytes under a key as a stream, read as the reader pulls (a whole
+   * recording is never held in memory): all of them, or the range's first to
+   * last byte. Null when there is nothing under the key.
+   */
+  stream(key: string, range?: ByteRange): Promise<ReadableStream<Uint8Array> | null>;
   /** Keys under a prefix, in order. */
   list(prefix: string): Promise<string[]>;
   remove(key: string): Promise<void>;
@@ -21,3 +31,6 @@ export function checkKey(key: string): string {
   }
   return key;
 }
+
+/** A Node stream as the web stream both stores hand out (Node's and the DOM's stream types differ only on paper). */
+export const webStream = (body: Readable) => Readable.toWeb(body) as unknown as ReadableStream<Uint8Array>;

@@ -61,13 +61,17 @@ export const recordingsRouter = router({
         .orderBy(asc(mediaRecordings.createdAt)),
     ),
 
-  /** The finished file's bytes, for the media route. */
-  file: studyProcedure("data.read", "recording", recordingId)
+  /**
+   * Where the finished file is, for the media route, which streams it from
+   * storage in ranges: a recording never passes through the API whole.
+   */
+  media: studyProcedure("data.read", "recording", recordingId)
     .query(async ({ ctx }) => {
       const r = ctx.row;
       if (r.status !== "complete") throw new TRPCError({ code: "PRECONDITION_FAILED", message: "This recording is not finished yet." });
-      const bytes = await ctx.media.storage.get(fileKey(r.storageKey, r.mimeType));
-      if (!bytes) throw new TRPCError({ code: "NOT_FOUND", message: "This recording's file is missing from media storage." });
-      return { bytes, mimeType: r.mimeType };
+      const storageKey = fileKey(r.storageKey, r.mimeType);
+      const sizeBytes = await ctx.media.storage.size(storageKey);
+      if (sizeBytes === null) throw new TRPCError({ code: "NOT_FOUND", message: "This recording's file is missing from media storage." });
+      return { storageKey, mimeType: r.mimeType, sizeBytes };
     }),
 });

@@ -1,5 +1,15 @@
 import { server } from "@/server/context";
+import { unexpectedResponse } from "@/server/errors/reference";
+import { LIMITS, withinLimit } from "@/server/http/body-limit";
 
-const handler = (req: Request) => server().auth.handler(req);
+async function handler(req: Request) {
+  try {
+    const limited = await withinLimit(req, LIMITS.auth, "A sign-in request");
+    if (limited instanceof Response) return limited;
+    return await server().auth.handler(limited);
+  } catch (error) {
+    return unexpectedResponse(error, req);
+  }
+}
 
 export { handler as GET, handler as POST };

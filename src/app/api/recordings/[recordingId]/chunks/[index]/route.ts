@@ -1,6 +1,7 @@
 // One part of a recording, stored as it arrives. Sending a part again
 // replaces it, so a recorder that lost its connection simply resends.
 import { apiRoute } from "@/server/api/download";
+import { readBody } from "@/server/http/body-limit";
 import { chunkKey, CHUNK_LIMIT_BYTES } from "@/server/media/recordings";
 
 const refuse = (status: number, message: string) => new Response(message, { status });
@@ -15,11 +16,8 @@ export async function PUT(req: Request, { params }: { params: Promise<{ recordin
     if (baseType(req.headers.get("content-type")) !== baseType(target.mimeType)) {
       return refuse(415, `This recording is ${baseType(target.mimeType)}; a part sent as "${baseType(req.headers.get("content-type")) || "no type"}" is refused.`);
     }
-    const declared = Number(req.headers.get("content-length") ?? 0);
-    const limitMb = CHUNK_LIMIT_BYTES / 1048576;
-    if (declared > CHUNK_LIMIT_BYTES) return refuse(413, `A part of a recording may be at most ${limitMb} MB; this one is ${(declared / 1048576).toFixed(1)} MB.`);
-    const body = new Uint8Array(await req.arrayBuffer());
-    if (body.length > CHUNK_LIMIT_BYTES) return refuse(413, `A part of a recording may be at most ${limitMb} MB; this one is ${(body.length / 1048576).toFixed(1)} MB.`);
+    const body = await readBody(req, CHUNK_LIMIT_BYTES, "A part of a recording");
+    if (body instanceof Response) return body;
     if (body.length === 0) return refuse(400, "This part of the recording is empty.");
     await context.media.storage.put(chunkKey(target.storageKey, n), body, target.mimeType);
     return Response.json({ stored: n, bytes: body.length });

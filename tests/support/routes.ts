@@ -1,0 +1,65 @@
+// Route handlers called in-process, as Next.js calls them. They take the
+// server's shared parts from the environment (server() in
+// src/server/context.ts), so this points the environment at a fresh database
+// and a throwaway media folder first; every test file runs in its own process.
+import { mkdtempSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { freshDatabase } from "./db";
+import { buildFixture, TEST_SECRET, type Caller } from "../api/fixture";
+
+export const ORIGIN = "http://localhost:3000";
+
+export async function routeServer() {
+  const database = await freshDatabase();
+  Object.assign(process.env, {
+    DATABASE_URL: database.url,
+    BETTER_AUTH_SECRET: TEST_SECRET,
+    BETTER_AUTH_URL: ORIGIN,
+    HRI_MEDIA_DIR: mkdtempSync(join(tmpdir(), "hri-route-media-")),
+    HRI_MEDIA_S3_URL: "",
+  });
+  const { server, contextFromHeaders } = await import("../../src/server/context");
+  const { appRouter } = await import("../../src/server/api/root");
+  const auth = await import("../../src/app/api/auth/[...all]/route");
+  const f = await buildFixture(database.db);
+
+  /** Signs a fixture person in through the auth route; the cookie header of their session. */
+  async function signIn(caller: Exclude<Caller, "anonymous">): Promise<Headers> {
+    const res = await auth.POST(
+      new Request(`${ORIGIN}/api/auth/sign-in/email`, {
+        method: "POST",
+        headers: { "content-type": "application/json", origin: ORIGIN },
+        body: JSON.stringify({ email: f.people[caller].email, password: "password-123" }),
+      }),
+    );
+    if (!res.ok) throw new Error(`Signing in as ${caller} failed: ${res.status} ${await res.text()}`);
+    const cookie = res.headers.getSetCookie().map((c) => c.split(";")[0]).join("; ");
+    return new Headers({ cookie, origin: ORIGIN });
+  }
+
+  /** The API as a signed-in person calls it from a route, with the server's own media store. */
+  async function apiAs(headers: Headers) {
+    return appRouter.createCaller(await contextFromHeaders(headers));
+  }
+
+  return { ...database, f, server: server(), signIn, apiAs };
+}
+
+/** A body that never ends, counting how many bytes the reader pulled. */
+export function endlessBody(piece = 64 * 1024) {
+  const counted = { pulled: 0, cancelled: false };
+  const body = new ReadableStream<Uint8Array>(
+    {
+      pull(controller) {
+        counted.pulled += piece;
+        controller.enqueue(new Uint8Array(piece).fill(120));
+      },
+      cancel() {
+        counted.cancelled = true;
+      },
+    },
+    { highWaterMark: 0 },
+  );
+  return { body, counted };
+}
