@@ -8,9 +8,10 @@ import { createDatabase } from "../server/db/client";
 import { freePort, startEmbeddedPostgres, type EmbeddedDatabase } from "../server/db/embedded";
 import { migrateDatabase } from "../server/db/migrate";
 import { seedDemo, type DemoAccount } from "../server/seed/demo";
-import { buildIfChanged, nextBin } from "./build";
+import { buildIfChanged } from "./build";
 import { rememberChildren, stopOrphanedChildren } from "./children";
 import { authSecret } from "./secret";
+import { bundleWebServer } from "./web-bundle";
 
 const root = resolve(import.meta.dirname, "..", "..");
 const dev = process.argv.includes("--dev") || process.env.npm_lifecycle_event === "dev";
@@ -88,10 +89,20 @@ async function main() {
   supervise("trial runtime", "src/runtime/main.ts", { ...shared, HRI_ROSBRIDGE_URL: rosbridgeUrl });
   await listening(runtimePort);
 
-  const web = spawn("node", [nextBin(root), dev ? "dev" : "start", "-H", config.HOST, "-p", String(port)], {
+  const webServer = await bundleWebServer(root);
+  const web = spawn("node", [webServer, ...(dev ? ["--dev"] : [])], {
     cwd: root,
     stdio: ["ignore", "inherit", "inherit"],
-    env: { ...process.env, ...shared, BETTER_AUTH_URL: baseURL, NEXT_TELEMETRY_DISABLED: "1", ...(simulatorUrl ? { HRI_SIMULATOR_URL: simulatorUrl } : {}) },
+    env: {
+      ...process.env,
+      ...shared,
+      HOST: config.HOST,
+      PORT: String(port),
+      NODE_ENV: dev ? "development" : "production",
+      BETTER_AUTH_URL: baseURL,
+      NEXT_TELEMETRY_DISABLED: "1",
+      ...(simulatorUrl ? { HRI_SIMULATOR_URL: simulatorUrl } : {}),
+    },
   });
   children.push(web);
   remember();

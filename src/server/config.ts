@@ -1,6 +1,7 @@
 // Every setting the server reads from its environment, in one place.
 // The README's configuration table lists the same variables.
 import { z } from "zod";
+import { parseTrustedProxies } from "../core/network/client-address";
 
 const flag = z
   .enum(["true", "false", "1", "0", "yes", "no"])
@@ -36,7 +37,23 @@ const schema = z.object({
   BETTER_AUTH_SECRET: z.string().min(32, "must be at least 32 characters").optional(),
   BETTER_AUTH_URL: z.string().url().optional(),
   HRI_ALLOW_SIGNUP: flag.default(false),
+  // Sign-in attempts per client address per minute.
   HRI_SIGNIN_PER_MINUTE: z.coerce.number().int().min(1).default(10),
+  // Failed sign-ins per account (from any addresses) before it is refused for the rest of the window.
+  HRI_SIGNIN_ACCOUNT_FAILURES: z.coerce.number().int().min(1).default(10),
+  HRI_SIGNIN_ACCOUNT_WINDOW_MINUTES: z.coerce.number().int().min(1).default(15),
+  // Reverse proxies whose X-Forwarded-For is believed (comma-separated IPs or CIDR ranges); none by default.
+  HRI_TRUSTED_PROXIES: z
+    .string()
+    .default("")
+    .transform((setting, ctx) => {
+      const parsed = parseTrustedProxies(setting);
+      if ("error" in parsed) {
+        ctx.addIssue({ code: "custom", message: parsed.error });
+        return z.NEVER;
+      }
+      return parsed.ranges;
+    }),
   HRI_SEED_DEMO: flag.optional(),
   // One password for every demo account (workshops, tests); random when unset.
   HRI_DEMO_PASSWORD: z.string().min(8, "must be at least 8 characters").optional(),

@@ -29,6 +29,7 @@ export function server(): Server {
     baseURL: config.BETTER_AUTH_URL ?? `http://${config.HOST}:${config.PORT ?? 3000}`,
     allowSignUp: config.HRI_ALLOW_SIGNUP,
     signInPerMinute: config.HRI_SIGNIN_PER_MINUTE,
+    accountLimit: { failures: config.HRI_SIGNIN_ACCOUNT_FAILURES, windowMinutes: config.HRI_SIGNIN_ACCOUNT_WINDOW_MINUTES },
   });
   const runtimeUrl = browserRuntimeUrl(config);
   const media = { storage: mediaStorage(config), maxBytes: config.HRI_MEDIA_MAX_MB * 1024 * 1024 };

@@ -1,8 +1,12 @@
 import { betterAuth } from "better-auth";
 import { drizzleAdapter } from "better-auth/adapters/drizzle";
+import { APIError, createAuthMiddleware, isAPIError } from "better-auth/api";
 import { nextCookies } from "better-auth/next-js";
+import { CLIENT_ADDRESS_HEADER } from "@/core/network/client-address";
+import { accountRefusal, type AccountLimit } from "@/core/access/sign-in-throttle";
 import type { Database } from "../db/client";
 import * as schema from "../db/schema";
+import { countAttempt, forgiveAttempt } from "./account-throttle";
 
 export interface AuthSettings {
   db: Database;
@@ -12,7 +16,11 @@ export interface AuthSettings {
   allowSignUp: boolean;
   /** Sign-in attempts allowed per address per minute. */
   signInPerMinute: number;
+  /** Failed sign-ins allowed per account inside a window, from any addresses. */
+  accountLimit: AccountLimit;
 }
+
+const SIGN_IN = "/sign-in/email";
 
 export function createAuth(settings: AuthSettings) {
   return betterAuth({
@@ -37,7 +45,29 @@ export function createAuth(settings: AuthSettings) {
       storage: "database",
       window: 60,
       max: 300,
-      customRules: { "/sign-in/email": { window: 60, max: settings.signInPerMinute } },
+      customRules: { [SIGN_IN]: { window: 60, max: settings.signInPerMinute } },
+    },
+    advanced: {
+      // The web server (src/launcher/web-server.ts) sets this header on every
+      // request from the socket and the trusted proxies, replacing any value a
+      // client sent; X-Forwarded-For as the client wrote it is never read here.
+      ipAddress: { ipAddressHeaders: [CLIENT_ADDRESS_HEADER] },
+    },
+    hooks: {
+      // Per account: counted before the password is checked, refused past the
+      // limit whatever the password; a success takes back only its own count.
+      before: createAuthMiddleware(async (ctx) => {
+        const email: unknown = ctx.path === SIGN_IN ? ctx.body?.email : undefined;
+        if (typeof email !== "string") return;
+        const count = await countAttempt(settings.db, email, settings.accountLimit, new Date());
+        const refusal = accountRefusal(count, new Date(), settings.accountLimit);
+        if (refusal) throw new APIError("TOO_MANY_REQUESTS", { message: refusal });
+      }),
+      after: createAuthMiddleware(async (ctx) => {
+        const email: unknown = ctx.path === SIGN_IN ? ctx.body?.email : undefined;
+        if (typeof email !== "string" || isAPIError(ctx.context.returned)) return;
+        await forgiveAttempt(settings.db, email, settings.accountLimit, new Date());
+      }),
     },
     databaseHooks: {
       session: {

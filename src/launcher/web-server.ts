@@ -1,0 +1,36 @@
+// The web app's HTTP server, in place of `next start` / `next dev`: Next.js's
+// own request handler behind a plain Node server, because only here is the
+// socket visible. Before Next.js sees a request, the client's address (the
+// socket, or what trusted proxies vouch for) goes into one header that only
+// this server sets; sign-in limits and session records read that header.
+// The launcher bundles this file for Node (see web-bundle.ts) and runs it as
+// `node web-server.mjs [--dev]`.
+import { createServer } from "node:http";
+import next from "next";
+import { CLIENT_ADDRESS_HEADER, clientAddress } from "../core/network/client-address";
+import { readConfig } from "../server/config";
+
+const dev = process.argv.includes("--dev");
+const dir = process.cwd();
+const config = readConfig();
+const port = config.PORT ?? 3000;
+
+const app = next({ dev, dir, hostname: config.HOST, port });
+const handle = app.getRequestHandler();
+
+await app.prepare();
+const server = createServer((req, res) => {
+  req.headers[CLIENT_ADDRESS_HEADER] = clientAddress({
+    socketAddress: req.socket.remoteAddress,
+    forwardedFor: req.headers["x-forwarded-for"],
+    trustedProxies: config.HRI_TRUSTED_PROXIES,
+  });
+  void handle(req, res);
+});
+server.listen(port, config.HOST);
+
+// Stopped by the launcher (or by a later launcher, for an orphan): exit at once,
+// as `next start` does; requests in flight are not waited for.
+const exit = () => process.exit(0);
+process.on("SIGTERM", exit);
+process.on("SIGINT", exit);
