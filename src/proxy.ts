@@ -9,7 +9,8 @@ import { readConfig } from "@/server/config";
 import { pageCsp } from "@/server/http/security-headers";
 import { browserRuntimeUrl } from "@/server/runtime-url";
 
-const csp = pageCsp(browserRuntimeUrl(readConfig()), process.env.NODE_ENV === "development");
+// The simulated robot's address is the launcher's to choose, so it is not a setting of its own.
+const csp = pageCsp(browserRuntimeUrl(readConfig()), process.env.HRI_SIMULATOR_URL);
 
 export function proxy() {
   const response = NextResponse.next();

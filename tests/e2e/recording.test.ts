@@ -117,7 +117,7 @@ describe.sequential("recording a trial", () => {
     const wrongType = await page.request.put(`/api/recordings/${recordingId}/chunks/0`, { headers: { "content-type": "text/x-shellscript" }, data: "echo hi" });
     expect([wrongType.status(), await wrongType.text()]).toEqual([415, 'This recording is video/webm; a part sent as "text/x-shellscript" is refused.']);
     const tooBig = await page.request.put(`/api/recordings/${recordingId}/chunks/0`, { headers: { "content-type": "video/webm" }, data: Buffer.alloc(17 * 1024 * 1024) });
-    expect([tooBig.status(), await tooBig.text()]).toEqual([413, "A part of a recording may be at most 16 MB; this one is 17.0 MB."]);
+    expect([tooBig.status(), await tooBig.text()]).toEqual([413, "A part of a recording may be at most 16 MB; this one is 17 MB."]);
     const observer = await (await newContext(browser, app.url)).newPage();
     await signInAs(observer, "observer@demo.hristudio", DEMO_PASSWORD);
     const notTheirs = await observer.request.put(`/api/recordings/${recordingId}/chunks/0`, { headers: { "content-type": "video/webm" }, data: Buffer.alloc(10) });

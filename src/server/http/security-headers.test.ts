@@ -12,9 +12,12 @@ describe("the pages' Content-Security-Policy", () => {
     expect(directives(pageCsp(runtimeUrl))["connect-src"]).toBe(connect);
   });
 
-  it("forbids framing and plugins, allows blob: media and data: images, and eval only in development", () => {
+  it("lets the robot page reach the simulated robot when there is one", () => {
+    expect(directives(pageCsp("ws://127.0.0.1:3001", "ws://127.0.0.1:9090"))["connect-src"]).toBe("'self' ws://127.0.0.1:3001 ws://127.0.0.1:9090");
+  });
+
+  it("forbids framing and plugins, allows blob: media and data: images, and scripts from this site only", () => {
     const csp = directives(pageCsp("ws://127.0.0.1:3001"));
-    expect(csp).toMatchObject({ "frame-ancestors": "'none'", "object-src": "'none'", "media-src": "'self' blob:", "img-src": "'self' blob: data:", "script-src": "'self' 'unsafe-inline'" });
-    expect(directives(pageCsp("ws://127.0.0.1:3001", true))["script-src"]).toBe("'self' 'unsafe-inline' 'unsafe-eval'");
+    expect(csp).toMatchObject({ "frame-ancestors": "'none'", "object-src": "'none'", "media-src": "'self' blob:", "img-src": "'self' blob: data:", "script-src": "'self' 'unsafe-inline' 'unsafe-eval'" });
   });
 });

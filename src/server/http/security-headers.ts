@@ -11,7 +11,7 @@ export const COMMON_HEADERS: Record<string, string> = {
   "Referrer-Policy": "same-origin",
   "X-Frame-Options": "DENY",
   // The wizard's browser records the session: camera and microphone for this site only.
-  "Permissions-Policy": "camera=(self), microphone=(self), geolocation=(), payment=(), usb=(), serial=(), bluetooth=()",
+  "Permissions-Policy": "camera=(self), microphone=(self), geolocation=(), payment=(), usb=(), serial=()",
 };
 
 /** For /api routes: JSON, files and media that nothing should run or frame. */
@@ -23,17 +23,22 @@ function origin(url: string): string {
   return `${u.protocol}//${u.host}`;
 }
 
-/** For pages; `runtimeUrl` is where browsers reach the trial runtime. */
-export function pageCsp(runtimeUrl: string, development = false): string {
+/**
+ * For pages; `runtimeUrl` is where browsers reach the trial runtime, and
+ * `simulatorUrl` (when `npm start` runs the simulated robot) the robot page's feed.
+ */
+export function pageCsp(runtimeUrl: string, simulatorUrl?: string): string {
   return [
     "default-src 'self'",
-    // Next.js writes inline scripts (no nonce: pages are static); React's development build needs eval.
-    `script-src 'self' 'unsafe-inline'${development ? " 'unsafe-eval'" : ""}`,
+    // Next.js writes inline scripts (no nonce: pages are static). Eval: Ajv compiles each robot
+    // plugin's parameter schemas into functions in the browser (the designer's forms, the wizard's
+    // unscripted actions), and React's development build needs it too.
+    "script-src 'self' 'unsafe-inline' 'unsafe-eval'",
     "style-src 'self' 'unsafe-inline'",
     "img-src 'self' blob: data:",
     "media-src 'self' blob:",
     "font-src 'self' data:",
-    `connect-src 'self' ${origin(runtimeUrl)}`,
+    `connect-src 'self' ${[runtimeUrl, simulatorUrl].filter((u): u is string => Boolean(u)).map(origin).join(" ")}`,
     "worker-src 'self' blob:",
     "object-src 'none'",
     "base-uri 'self'",
