@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { detailLines } from "./audit";
+import { actionWords, detailLines } from "./audit";
 
 describe("detailLines", () => {
   it.each([
@@ -17,5 +17,12 @@ describe("detailLines", () => {
     const lines = detailLines({ changes: Array.from({ length: 20 }, (_, i) => `robot-${i}`).map((robotId) => ({ robotId })) });
     expect(lines).toHaveLength(12);
     expect(lines.at(-1)).toEqual(["…", "9 more"]);
+  });
+});
+
+describe("actionWords", () => {
+  it("says what a known action did and leaves an unknown one as it is", () => {
+    expect(actionWords("member.role")).toBe("changed a member's role");
+    expect(actionWords("robot.teleport")).toBe("robot.teleport");
   });
 });

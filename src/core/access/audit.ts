@@ -12,6 +12,32 @@ export const AUDIT_AREAS = [
 export type AuditArea = (typeof AUDIT_AREAS)[number]["value"];
 export const AUDIT_AREA_VALUES = AUDIT_AREAS.map((a) => a.value) as [AuditArea, ...AuditArea[]];
 
+// What each action did, in the researcher's words; an action not listed here shows as it is.
+const ACTION_WORDS: Record<string, string> = {
+  "study.create": "created the study",
+  "study.update": "changed the study",
+  "study.blind.lifted.conditions": "showed wizards the conditions",
+  "study.blind.lifted.results": "opened the results",
+  "member.add": "added a member",
+  "member.role": "changed a member's role",
+  "member.remove": "removed a member",
+  "participant.assign": "assigned a condition",
+  "participant.consent.given": "recorded consent given",
+  "participant.consent.declined": "recorded consent declined",
+  "participant.consent.withdrawn": "recorded a withdrawal",
+  "participant.consent.pending": "set consent back to pending",
+  "participant.consent.reinstated": "reinstated a participant",
+  "user.create": "created an account",
+  "user.role": "changed an account's role",
+  "user.disable": "disabled an account",
+  "user.enable": "enabled an account",
+  "plugins.repository.add": "added a plugin repository",
+  "plugins.repository.remove": "removed a plugin repository",
+  "plugins.sync": "synced a plugin repository",
+};
+
+export const actionWords = (action: string) => ACTION_WORDS[action] ?? action;
+
 const MAX_LINES = 12;
 
 function scalar(value: unknown): string {
