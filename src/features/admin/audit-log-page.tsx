@@ -73,8 +73,8 @@ export function AuditLogPage() {
                   <div>{actionWords(e.action)}</div>
                   <div className="font-mono text-xs text-slate-500">{e.action}</div>
                 </Td>
-                <Td className={e.targetName ? undefined : "font-mono text-xs"}>{e.targetName ?? e.target}</Td>
-                <Td>
+                <Td className={e.targetName || e.target === e.studyId ? undefined : "font-mono text-xs [overflow-wrap:anywhere]"}>{e.targetName ?? (e.target === e.studyId ? "the study" : e.target)}</Td>
+                <Td className="max-w-sm">
                   <Details details={e.details} />
                 </Td>
               </tr>
@@ -98,8 +98,8 @@ function Details({ details }: { details: unknown }) {
     <dl className="grid grid-cols-[auto_1fr] gap-x-2 text-xs">
       {lines.map(([key, value], i) => (
         <div key={i} className="contents">
-          <dt className="text-slate-500">{key}</dt>
-          <dd className="break-words">{value}</dd>
+          <dt className="text-slate-500 [overflow-wrap:anywhere]">{key}</dt>
+          <dd className="[overflow-wrap:anywhere]">{value}</dd>
         </div>
       ))}
     </dl>

@@ -6,7 +6,7 @@ import { AUDIT_AREA_VALUES } from "@/core/access/audit";
 import { SYSTEM_ROLES } from "@/core/access/policy";
 import { audit } from "../../audit";
 import { createAccount } from "../../auth/accounts";
-import { auditLog, participants, session, studies, user } from "../../db/schema";
+import { auditLog, participants, pluginRepositories, session, studies, user } from "../../db/schema";
 import { guarded, router } from "../trpc";
 import { id, text } from "../validation";
 
@@ -81,8 +81,8 @@ export const adminRouter = router({
           at: auditLog.at,
           action: auditLog.action,
           target: auditLog.target,
-          // The target is an id; the account's name or the participant's code says who it was.
-          targetName: sql<string | null>`coalesce(${targetUser.name}, ${participants.code})`,
+          // The target is an id; the account's name, the participant's code or the repository's name says what it was.
+          targetName: sql<string | null>`coalesce(${targetUser.name}, ${participants.code}, ${pluginRepositories.name})`,
           details: auditLog.details,
           actor: user.name,
           studyId: auditLog.studyId,
@@ -93,6 +93,7 @@ export const adminRouter = router({
         .leftJoin(studies, eq(studies.id, auditLog.studyId))
         .leftJoin(targetUser, eq(targetUser.id, auditLog.target))
         .leftJoin(participants, eq(participants.id, auditLog.target))
+        .leftJoin(pluginRepositories, eq(pluginRepositories.id, auditLog.target))
         // Actions are "area.verb[.detail]", so an area is a prefix up to its dot.
         .where(input.area ? like(auditLog.action, `${input.area}.%`) : undefined)
         .orderBy(desc(auditLog.at))
