@@ -151,6 +151,36 @@ describe.sequential("the platform foundation, in the browser", () => {
     await page.context().close();
   });
 
+  it("shows an administrator who changed what in the audit log, one area at a time", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "admin@demo.hristudio", DEMO_PASSWORD);
+    await page.getByRole("link", { name: "Admin" }).click();
+    await page.getByLabel(/^Name\*?$/).fill("Tia Temp");
+    await page.getByLabel(/^Email\*?$/).fill("tia@example.org");
+    await page.getByLabel("Initial password").fill("password-123");
+    await page.getByLabel("System role", { exact: true }).selectOption("observer");
+    await page.getByRole("button", { name: "Create account" }).click();
+    await page.getByLabel("System role of Tia Temp").selectOption("wizard");
+    await expect.poll(() => page.getByLabel("System role of Tia Temp").inputValue()).toBe("wizard");
+
+    await page.getByRole("navigation", { name: "Administration" }).getByRole("link", { name: "Audit log" }).click();
+    await page.getByRole("heading", { name: "Audit log" }).waitFor();
+    const log = page.getByRole("table", { name: "Audit log" });
+    // Newest first: the role change, by the administrator, about Tia, with the new role.
+    const newest = log.getByRole("row").nth(1);
+    await newest.getByText("changed an account's role").waitFor();
+    for (const cell of ["Ada Admin", "Tia Temp"]) await newest.getByRole("cell", { name: cell, exact: true }).waitFor();
+    await newest.getByText("wizard", { exact: true }).waitFor();
+    // Earlier tests' study changes carry the study's title.
+    await log.getByRole("row").filter({ hasText: "added a member" }).filter({ hasText: "Gesture and recall" }).first().waitFor();
+    await screenshot(page, "admin-audit-log");
+
+    await page.getByLabel("Show", { exact: true }).selectOption({ label: "Accounts" });
+    await expect.poll(async () => (await log.getByRole("row").allTextContents()).slice(1).every((row) => /user\./.test(row))).toBe(true);
+    expect(await log.getByRole("row").filter({ hasText: "created an account" }).filter({ hasText: "Tia Temp" }).count()).toBe(1);
+    await page.context().close();
+  });
+
   it("sends a visitor without a session to the sign-in page", async () => {
     const page = await (await newContext(browser, app.url)).newPage();
     await page.goto(studyUrl);

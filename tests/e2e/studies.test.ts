@@ -121,4 +121,24 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
     await screenshot(results, "study-results");
     await results.context().close();
   }, 300_000);
+
+  it("lets a researcher give a new trial to a wizard of the study, or to whichever wizard starts it first", async () => {
+    const researcher = await (await newContext(browser, app.url)).newPage();
+    await signInAs(researcher, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await researcher.getByRole("link", { name: /Storytelling and memory/ }).click();
+    await researcher.getByRole("tab", { name: "Trials" }).click();
+    // Me by default: the wizard select starts there.
+    expect(await researcher.getByLabel("Wizard", { exact: true }).inputValue()).toBe("me");
+    for (const [code, wizard] of [["P001", "Wim Wizard (wizard)"], ["P002", "Any wizard (the first to start it)"]]) {
+      await researcher.getByRole("combobox", { name: /^Experiment/ }).selectOption({ label: "Interactive Storyteller" });
+      await researcher.getByText(/Runs published version/).waitFor();
+      await researcher.getByRole("combobox", { name: /^Participant/ }).selectOption({ label: code });
+      await researcher.getByLabel("Wizard", { exact: true }).selectOption({ label: wizard });
+      await researcher.getByRole("button", { name: "Create trial" }).click();
+      await researcher.getByRole("row").filter({ hasText: code }).waitFor();
+    }
+    await researcher.getByRole("row").filter({ hasText: "P001" }).getByRole("cell", { name: "Wim Wizard", exact: true }).waitFor();
+    await researcher.getByRole("row").filter({ hasText: "P002" }).getByRole("cell", { name: "any wizard", exact: true }).waitFor();
+    await researcher.context().close();
+  }, 120_000);
 });

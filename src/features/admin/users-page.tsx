@@ -1,6 +1,5 @@
 "use client";
 import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
-import Link from "next/link";
 import { useState, type FormEvent } from "react";
 import { SYSTEM_ROLES, type SystemRole } from "@/core/access/policy";
 import { useTRPC } from "@/lib/trpc";
@@ -19,12 +18,7 @@ export function UsersPage({ selfId }: { selfId: string }) {
   const setDisabled = useMutation(trpc.admin.users.setDisabled.mutationOptions({ onSuccess: refresh }));
   return (
     <div className="space-y-6">
-      <div className="flex items-center justify-between">
-        <h1 className="text-2xl font-semibold">Accounts</h1>
-        <Link href="/admin/plugins" className="text-sm font-medium text-brand-600 hover:underline">
-          Robot plugins →
-        </Link>
-      </div>
+      <h1 className="text-2xl font-semibold">Accounts</h1>
       <NewAccount onCreated={refresh} />
       {users.isPending && <Spinner />}
       <Problem error={users.error ?? setRole.error ?? setDisabled.error} />

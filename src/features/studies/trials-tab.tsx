@@ -10,6 +10,7 @@ import { Field, NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, EmptyState, Spinner, STATUS_TONE } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
+import { WizardChoice, wizardIdOf, type WizardChoiceValue } from "./wizard-choice";
 
 export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: StudyRole; blinded: boolean }) {
   const trpc = useTRPC();
@@ -47,7 +48,8 @@ export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: S
                   {t.experimentName} {t.isRehearsal ? <Badge tone="amber">rehearsal</Badge> : t.version !== null && <span className="text-xs text-slate-500">v{t.version}</span>}
                   {t.participantWithdrawn && <div className="text-xs text-red-700">withdrawn: excluded from analysis</div>}
                 </Td>
-                <Td>{t.wizardName ?? "—"}</Td>
+                {/* No wizard yet: the first of the study's wizards to start it runs it. */}
+                <Td>{t.wizardId === null ? <span className="text-slate-500">any wizard</span> : (t.wizardName ?? "—")}</Td>
                 <Td className="text-xs">{t.scores.map((s) => `${s.name}: ${Number.isInteger(s.score) ? s.score : s.score.toFixed(2)}`).join(" · ") || "—"}</Td>
                 <Td>
                   <Badge tone={STATUS_TONE[t.status]}>{t.status.replace("_", " ")}</Badge>
@@ -79,12 +81,13 @@ function NewTrial({ studyId, onCreated }: { studyId: string; onCreated: () => vo
   const participants = useQuery(trpc.participants.list.queryOptions({ studyId }));
   const [experimentId, setExperimentId] = useState("");
   const [participantId, setParticipantId] = useState("");
+  const [wizard, setWizard] = useState<WizardChoiceValue>("me");
   const versions = useQuery({ ...trpc.versions.list.queryOptions({ experimentId }), enabled: Boolean(experimentId) });
   const create = useMutation(trpc.trials.create.mutationOptions({ onSuccess: onCreated }));
   const latest = versions.data?.[0];
   const submit = (e: FormEvent) => {
     e.preventDefault();
-    if (latest) create.mutate({ versionId: latest.id, participantId: participantId || null });
+    if (latest) create.mutate({ versionId: latest.id, participantId: participantId || null, wizardId: wizardIdOf(wizard) });
   };
   return (
     <Card className="p-5">
@@ -117,6 +120,9 @@ function NewTrial({ studyId, onCreated }: { studyId: string; onCreated: () => vo
               </NativeSelect>
             )}
           </Field>
+        </div>
+        <div className="w-64">
+          <WizardChoice studyId={studyId} value={wizard} onChange={setWizard} />
         </div>
         <Button type="submit" disabled={!latest || !participantId || create.isPending} className="mb-5">
           Create trial

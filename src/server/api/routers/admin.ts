@@ -1,10 +1,12 @@
 import { TRPCError } from "@trpc/server";
-import { asc, desc, eq } from "drizzle-orm";
+import { asc, desc, eq, like, sql } from "drizzle-orm";
+import { alias } from "drizzle-orm/pg-core";
 import { z } from "zod";
+import { AUDIT_AREA_VALUES } from "@/core/access/audit";
 import { SYSTEM_ROLES } from "@/core/access/policy";
 import { audit } from "../../audit";
 import { createAccount } from "../../auth/accounts";
-import { auditLog, session, user } from "../../db/schema";
+import { auditLog, participants, pluginRepositories, session, studies, user } from "../../db/schema";
 import { guarded, router } from "../trpc";
 import { id, text } from "../validation";
 
@@ -13,6 +15,9 @@ const role = z.enum(SYSTEM_ROLES, { error: `must be one of ${SYSTEM_ROLES.join("
 function notSelf(actorId: string, userId: string, what: string) {
   if (actorId === userId) throw new TRPCError({ code: "BAD_REQUEST", message: `You cannot ${what} your own account; ask another administrator.` });
 }
+
+// The account an entry is about, beside the account that acted.
+const targetUser = alias(user, "target_user");
 
 export const adminRouter = router({
   users: router({
@@ -68,12 +73,29 @@ export const adminRouter = router({
   }),
 
   auditLog: guarded("admin.users")
-    .input(z.object({ limit: z.number().int().min(1).max(500).default(100) }))
+    .input(z.object({ limit: z.number().int().min(1).max(500).default(100), area: z.enum(AUDIT_AREA_VALUES).optional() }))
     .query(({ ctx, input }) =>
       ctx.db
-        .select({ id: auditLog.id, at: auditLog.at, action: auditLog.action, target: auditLog.target, details: auditLog.details, actor: user.name, studyId: auditLog.studyId })
+        .select({
+          id: auditLog.id,
+          at: auditLog.at,
+          action: auditLog.action,
+          target: auditLog.target,
+          // The target is an id; the account's name, the participant's code or the repository's name says what it was.
+          targetName: sql<string | null>`coalesce(${targetUser.name}, ${participants.code}, ${pluginRepositories.name})`,
+          details: auditLog.details,
+          actor: user.name,
+          studyId: auditLog.studyId,
+          studyTitle: studies.title,
+        })
         .from(auditLog)
         .leftJoin(user, eq(user.id, auditLog.actorId))
+        .leftJoin(studies, eq(studies.id, auditLog.studyId))
+        .leftJoin(targetUser, eq(targetUser.id, auditLog.target))
+        .leftJoin(participants, eq(participants.id, auditLog.target))
+        .leftJoin(pluginRepositories, eq(pluginRepositories.id, auditLog.target))
+        // Actions are "area.verb[.detail]", so an area is a prefix up to its dot.
+        .where(input.area ? like(auditLog.action, `${input.area}.%`) : undefined)
         .orderBy(desc(auditLog.at))
         .limit(input.limit),
     ),

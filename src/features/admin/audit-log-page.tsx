@@ -1,0 +1,107 @@
+"use client";
+// Administrators read who changed what: accounts, studies, members, consent
+// and plugins, newest first, one area at a time if they like.
+import { keepPreviousData, useQuery } from "@tanstack/react-query";
+import { useState } from "react";
+import { actionWords, AUDIT_AREAS, detailLines, type AuditArea } from "@/core/access/audit";
+import { useTRPC } from "@/lib/trpc";
+import { Button } from "@/ui/button";
+import { Field, NativeSelect } from "@/ui/field";
+import { Problem } from "@/ui/problem";
+import { EmptyState, Spinner } from "@/ui/surface";
+import { Table, Td, Th } from "@/ui/table";
+
+const PAGE = 100;
+const MOST = 500; // what admin.auditLog returns at most
+
+export function AuditLogPage() {
+  const trpc = useTRPC();
+  const [area, setArea] = useState<AuditArea | "">("");
+  const [limit, setLimit] = useState(PAGE);
+  // The rows already shown stay while more (or another area) load.
+  const entries = useQuery({ ...trpc.admin.auditLog.queryOptions({ limit, area: area || undefined }), placeholderData: keepPreviousData });
+  const more = entries.data?.length === limit && limit < MOST;
+  return (
+    <div className="space-y-6">
+      <h1 className="text-2xl font-semibold">Audit log</h1>
+      <div className="flex flex-wrap items-end gap-3">
+        <div className="w-64">
+          <Field label="Show" hint="Newest first.">
+            {(p) => (
+              <NativeSelect
+                {...p}
+                value={area}
+                onChange={(e) => {
+                  setArea(e.target.value as AuditArea | "");
+                  setLimit(PAGE);
+                }}
+              >
+                <option value="">Everything</option>
+                {AUDIT_AREAS.map((a) => (
+                  <option key={a.value} value={a.value}>
+                    {a.label}
+                  </option>
+                ))}
+              </NativeSelect>
+            )}
+          </Field>
+        </div>
+      </div>
+      {entries.isPending && <Spinner />}
+      <Problem error={entries.error} />
+      {entries.data?.length === 0 && <EmptyState title={area ? "Nothing recorded in this area yet." : "Nothing recorded yet."}>Changes to accounts, studies, members, consent and plugins appear here.</EmptyState>}
+      {!!entries.data?.length && (
+        <Table aria-label="Audit log">
+          <thead>
+            <tr>
+              <Th>Time</Th>
+              <Th>Who</Th>
+              <Th>Study</Th>
+              <Th>What</Th>
+              <Th>About</Th>
+              <Th>Details</Th>
+            </tr>
+          </thead>
+          <tbody>
+            {entries.data.map((e) => (
+              <tr key={e.id} className="align-top">
+                <Td className="whitespace-nowrap">{new Date(e.at).toLocaleString()}</Td>
+                {/* No account: the participant's own consent form, or an account since deleted. */}
+                <Td>{e.actor ?? <span className="text-slate-500">no account</span>}</Td>
+                <Td>{e.studyTitle ?? "—"}</Td>
+                <Td>
+                  <div>{actionWords(e.action)}</div>
+                  <div className="font-mono text-xs text-slate-500">{e.action}</div>
+                </Td>
+                <Td className={e.targetName || e.target === e.studyId ? undefined : "font-mono text-xs [overflow-wrap:anywhere]"}>{e.targetName ?? (e.target === e.studyId ? "the study" : e.target)}</Td>
+                <Td className="max-w-sm">
+                  <Details details={e.details} />
+                </Td>
+              </tr>
+            ))}
+          </tbody>
+        </Table>
+      )}
+      {more && (
+        <Button variant="secondary" disabled={entries.isFetching} onClick={() => setLimit(Math.min(limit + PAGE, MOST))}>
+          {entries.isFetching ? "Loading…" : "Show older entries"}
+        </Button>
+      )}
+    </div>
+  );
+}
+
+function Details({ details }: { details: unknown }) {
+  const lines = detailLines(details);
+  if (lines.length === 0) return <span className="text-slate-500">—</span>;
+  return (
+    <dl className="grid grid-cols-[auto_1fr] gap-x-2 text-xs">
+      {lines.map(([key, value], i) => (
+        <div key={i} className="contents">
+          <dt className="text-slate-500 [overflow-wrap:anywhere]">{key}</dt>
+          <dd className="[overflow-wrap:anywhere]">{value}</dd>
+        </div>
+      ))}
+    </dl>
+  );
+}

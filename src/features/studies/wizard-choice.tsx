@@ -1,0 +1,37 @@
+"use client";
+// Who runs a new trial: the researcher themself, any of the study's wizards
+// (the first to start it claims it), or one named member who may run trials.
+import { useQuery } from "@tanstack/react-query";
+import { studyRoleMay } from "@/core/access/policy";
+import { useTRPC } from "@/lib/trpc";
+import { Field, NativeSelect } from "@/ui/field";
+
+export type WizardChoiceValue = "me" | "any" | (string & {});
+
+/** trials.create's wizardId: omitted for me, null for anyone, else the member's id. */
+export const wizardIdOf = (choice: WizardChoiceValue) => (choice === "me" ? undefined : choice === "any" ? null : choice);
+
+export function WizardChoice({ studyId, value, onChange }: { studyId: string; value: WizardChoiceValue; onChange: (v: WizardChoiceValue) => void }) {
+  const trpc = useTRPC();
+  const me = useQuery(trpc.account.me.queryOptions());
+  const members = useQuery(trpc.members.list.queryOptions({ studyId }));
+  // Wizards first: they run most trials. "Me" is already the first choice.
+  const others = (members.data ?? [])
+    .filter((m) => studyRoleMay(m.role, "trial.run") && m.userId !== me.data?.id)
+    .sort((a, b) => Number(b.role === "wizard") - Number(a.role === "wizard"));
+  return (
+    <Field label="Wizard" hint={value === "any" ? "Any wizard of the study may start it." : undefined}>
+      {(p) => (
+        <NativeSelect {...p} value={value} onChange={(e) => onChange(e.target.value)}>
+          <option value="me">Me</option>
+          <option value="any">Any wizard (the first to start it)</option>
+          {others.map((m) => (
+            <option key={m.userId} value={m.userId}>
+              {m.name} ({m.role})
+            </option>
+          ))}
+        </NativeSelect>
+      )}
+    </Field>
+  );
+}
