@@ -8,6 +8,7 @@ import { verifySocketToken, type SocketClaims } from "@/server/trials/socket-tok
 import { eventsSince, STATUS_AFTER, type StoredEvent } from "@/server/trials/event-store";
 import { parseClientMessage, SOCKET_PROTOCOL_VERSION, type ClientMessage, type ServerMessage, type Viewer } from "./protocol";
 import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
+import { logUnexpected } from "@/server/errors/reference";
 import { annotate } from "./annotations";
 import type { EventRelay } from "./relay";
 import type { TrialHosts } from "./trial-hosts";
@@ -180,8 +181,8 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
     if (message.type === "hello") {
       // A hello that fails half way must not leave a connection that follows nothing.
       return hello(ws, message.token, message.lastSeq).catch((error: unknown) => {
-        logError(error);
-        shut(ws, 1011, "The server could not open this trial. Reload the page.");
+        const ref = logUnexpected(error, "trial socket hello");
+        shut(ws, 1011, `The server could not open this trial (reference ${ref}). Reload the page.`);
       });
     }
     return act(ws, message);
@@ -201,9 +202,9 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
           await onMessage(ws, text);
         } catch (error) {
           // One failed message must never take the trial down for everyone else.
-          logError(error);
+          const ref = logUnexpected(error, "trial socket message");
           const requestId = (JSON.parse(text) as { requestId?: string }).requestId ?? null;
-          send(ws, { type: "rejected", requestId, reason: "The server could not store that; nothing was changed. Try again." });
+          send(ws, { type: "rejected", requestId, reason: `The server could not store that; nothing was changed. Try again (reference ${ref}).` });
         }
       },
       close(ws) {
@@ -215,5 +216,5 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
 }
 
 function logError(error: unknown) {
-  console.error(`[runtime] ${error instanceof Error ? error.message : String(error)}`);
+  logUnexpected(error, "trial runtime");
 }
