@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// Entry point of `npm start` and `npm test`. It needs only Node and npm:
+// Entry point of `npm start`, `npm test` and the other commands below. It needs only Node and npm:
 // it installs the project's dependencies with bun (fetched from npm) when the
 // lockfile changed, then hands over to the bun script for the command.
 import { spawnSync } from "node:child_process";
@@ -11,7 +11,7 @@ import { fileURLToPath } from "node:url";
 const root = join(dirname(fileURLToPath(import.meta.url)), "..");
 const pkg = JSON.parse(readFileSync(join(root, "package.json"), "utf8"));
 const bunVersion = pkg.packageManager.replace(/^bun@/, "");
-const commands = { start: "src/launcher/start.ts", test: "scripts/test.ts", dev: "src/launcher/start.ts", bench: "bench/run.ts" };
+const commands = { start: "src/launcher/start.ts", test: "scripts/test.ts", dev: "src/launcher/start.ts", bench: "bench/run.ts", backup: "src/launcher/backup.ts", restore: "src/launcher/restore.ts" };
 
 const command = process.argv[2];
 if (!commands[command]) {
