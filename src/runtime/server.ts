@@ -3,12 +3,12 @@
 // runtime keeps fresh from the database: loaded at hello, reloaded whenever
 // PostgreSQL announces a change (see access.ts), never trusted from the client.
 import { annotateVerdict, commandVerdict, lostAccess, mayReadTrialLog, touches, type AccessChange, type TrialAccess } from "@/core/access/trial-socket";
-import type { Database } from "@/server/db/client";
-import { verifySocketToken, type SocketClaims } from "@/server/trials/socket-token";
-import { eventsSince, STATUS_AFTER, type StoredEvent } from "@/server/trials/event-store";
+import type { Database } from "@/data/client";
+import { verifySocketToken, type SocketClaims } from "@/data/socket-token";
+import { eventsSince, STATUS_AFTER, type StoredEvent } from "@/data/event-store";
 import { parseClientMessage, SOCKET_PROTOCOL_VERSION, type ClientMessage, type ServerMessage, type Viewer } from "./protocol";
 import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
-import { logUnexpected } from "@/server/errors/reference";
+import { logUnexpected } from "@/data/error-reference";
 import { annotate } from "./annotations";
 import type { EventRelay } from "./relay";
 import type { TrialHosts } from "./trial-hosts";

@@ -1,5 +1,5 @@
 import { server } from "@/server/context";
-import { unexpectedResponse } from "@/server/errors/reference";
+import { unexpectedResponse } from "@/data/error-reference";
 import { LIMITS, withinLimit } from "@/server/http/body-limit";
 
 async function handler(req: Request) {

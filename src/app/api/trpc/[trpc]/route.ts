@@ -1,7 +1,7 @@
 import { fetchRequestHandler } from "@trpc/server/adapters/fetch";
 import { appRouter } from "@/server/api/root";
 import { contextFromHeaders } from "@/server/context";
-import { unexpectedResponse } from "@/server/errors/reference";
+import { unexpectedResponse } from "@/data/error-reference";
 import { LIMITS, withinLimit } from "@/server/http/body-limit";
 
 // Someone not signed in can only use the public questionnaire form, so their

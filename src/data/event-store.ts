@@ -2,8 +2,8 @@
 // transaction commits; only then may anyone be told about it.
 import { and, asc, eq, gt } from "drizzle-orm";
 import type { EngineEvent, TrialEvent } from "@/core/trial";
-import type { Database } from "../db/client";
-import { trialEvents, trials } from "../db/schema";
+import type { Database } from "./client";
+import { trialEvents, trials } from "./schema";
 
 export const NOTIFY_CHANNEL = "hri_trial_events";
 
