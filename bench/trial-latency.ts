@@ -6,7 +6,7 @@
 import { spawn } from "node:child_process";
 import { join } from "node:path";
 import { startDefaultSimulator } from "../src/robots/simulator/main";
-import { SOCKET_PROTOCOL_VERSION } from "../src/runtime/protocol";
+import { SOCKET_PROTOCOL_VERSION } from "../src/core/socket/messages";
 import { freePort } from "../src/data/embedded";
 import { createAccount } from "../src/server/auth/accounts";
 import { createDatabase } from "../src/data/client";

@@ -6,7 +6,7 @@ import { annotateVerdict, commandVerdict, lostAccess, mayReadTrialLog, touches, 
 import type { Database } from "@/data/client";
 import { verifySocketToken, type SocketClaims } from "@/data/socket-token";
 import { eventsSince, STATUS_AFTER, type StoredEvent } from "@/data/event-store";
-import { parseClientMessage, SOCKET_PROTOCOL_VERSION, type ClientMessage, type ServerMessage, type Viewer } from "./protocol";
+import { parseClientMessage, SOCKET_PROTOCOL_VERSION, type ClientMessage, type ServerMessage, type Viewer } from "@/core/socket/messages";
 import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
 import { logUnexpected } from "@/data/error-reference";
 import { annotate } from "./annotations";

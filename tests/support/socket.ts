@@ -1,6 +1,6 @@
 // A trial-runtime client for tests: a real WebSocket speaking the socket protocol.
 import WebSocket from "ws";
-import { SOCKET_PROTOCOL_VERSION } from "../../src/runtime/protocol";
+import { SOCKET_PROTOCOL_VERSION } from "../../src/core/socket/messages";
 
 export interface TrialSocket {
   messages: Array<Record<string, unknown>>;

@@ -6,8 +6,8 @@
 import { useMutation } from "@tanstack/react-query";
 import { useCallback, useEffect, useMemo, useRef, useState } from "react";
 import { fold, type TrialEvent, type TrialProtocol } from "@/core/trial";
-import type { WizardCommand } from "@/runtime/protocol";
-import { SOCKET_PROTOCOL_VERSION, type ServerMessage, type Viewer } from "@/runtime/protocol";
+import type { WizardCommand } from "@/core/socket/messages";
+import { SOCKET_PROTOCOL_VERSION, type ServerMessage, type Viewer } from "@/core/socket/messages";
 import { useTRPC } from "@/lib/trpc";
 
 export type StoredEvent = TrialEvent & { serverTime: string; actorId: string | null };

@@ -5,9 +5,9 @@ import { draftFrom } from "@/core/designer/model";
 import { validateDesign } from "@/core/designer/validate";
 import { hashCanonical } from "@/core/protocol/canonical";
 import { SNAPSHOT_SCHEMA_VERSION, type ProtocolSnapshot } from "@/core/protocol/snapshot";
-import type { Database } from "../../data/client";
-import { experimentVersions, experiments, pluginDocuments } from "../../data/schema";
-import { knownPlugin } from "../../robots/catalog";
+import type { Database } from "@/data/client";
+import { experimentVersions, experiments, pluginDocuments } from "@/data/schema";
+import { knownPlugin } from "@/robots/catalog";
 import { loadDesign, type Design } from "./design";
 
 export function snapshotOf(design: Design): ProtocolSnapshot {

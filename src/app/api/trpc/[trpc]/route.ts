@@ -2,7 +2,8 @@ import { fetchRequestHandler } from "@trpc/server/adapters/fetch";
 import { appRouter } from "@/server/api/root";
 import { contextFromHeaders } from "@/server/context";
 import { unexpectedResponse } from "@/data/error-reference";
-import { LIMITS, withinLimit } from "@/server/http/body-limit";
+import { LIMITS } from "@/core/network/limits";
+import { withinLimit } from "@/server/http/body-limit";
 
 // Someone not signed in can only use the public questionnaire form, so their
 // bodies (and the form's, for anyone) are held to the form's small limit; a

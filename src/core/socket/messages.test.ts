@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { parseClientMessage, SOCKET_PROTOCOL_VERSION } from "./protocol";
+import { parseClientMessage, SOCKET_PROTOCOL_VERSION } from "./messages";
 
 describe("the socket protocol", () => {
   it.each<[string, string, string | null]>([
