@@ -3,7 +3,8 @@
 // what is new from the log. No other broker.
 import type postgres from "postgres";
 import type { Database } from "@/data/client";
-import { eventsSince, NOTIFY_CHANNEL, type StoredEvent } from "@/data/event-store";
+import type { StoredEvent } from "@/core/trial";
+import { eventsSince, NOTIFY_CHANNEL } from "@/data/event-store";
 
 interface Follower {
   lastSeq: number;

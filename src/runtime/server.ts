@@ -5,8 +5,9 @@
 import { annotateVerdict, commandVerdict, lostAccess, mayReadTrialLog, touches, type AccessChange, type TrialAccess } from "@/core/access/trial-socket";
 import type { Database } from "@/data/client";
 import { verifySocketToken, type SocketClaims } from "@/data/socket-token";
-import { eventsSince, STATUS_AFTER, type StoredEvent } from "@/data/event-store";
-import { parseClientMessage, SOCKET_PROTOCOL_VERSION, type ClientMessage, type ServerMessage, type Viewer } from "@/core/socket/messages";
+import type { StoredEvent } from "@/core/trial";
+import { eventsSince, STATUS_AFTER } from "@/data/event-store";
+import { parseClientMessage, SOCKET_PROTOCOL_VERSION, toWire, type ClientMessage, type ServerMessage, type Viewer } from "@/core/socket/messages";
 import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
 import { logUnexpected } from "@/data/error-reference";
 import { annotate } from "./annotations";
@@ -44,7 +45,7 @@ const SHUT_OUT = 4403;
 const serialised = new WeakMap<StoredEvent[], string>();
 function eventsMessage(events: StoredEvent[]): string {
   let text = serialised.get(events);
-  if (text === undefined) serialised.set(events, (text = JSON.stringify({ type: "events", events } satisfies ServerMessage)));
+  if (text === undefined) serialised.set(events, (text = JSON.stringify({ type: "events", events: events.map(toWire) } satisfies ServerMessage)));
   return text;
 }
 
@@ -105,7 +106,7 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
     // Owned here: straight from the host. Owned by another process: through the relay.
     ws.data.unsubscribe = host ? host.subscribe(push) : relay.follow(trialId, log.at(-1)?.seq ?? lastSeq, push);
     const now = ws.data.access;
-    send(ws, { type: "welcome", version: SOCKET_PROTOCOL_VERSION, trialId, role: now.studyRole!, mayRun: mayRun(now), events: shown, viewers: presence(trialId) });
+    send(ws, { type: "welcome", version: SOCKET_PROTOCOL_VERSION, trialId, role: now.studyRole!, mayRun: mayRun(now), events: shown.map(toWire), viewers: presence(trialId) });
     if (host) send(ws, { type: "robot", connected: host.robotStatus() });
   }
 
