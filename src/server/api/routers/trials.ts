@@ -7,7 +7,7 @@ import { blindTrial } from "@/core/studies/blinding";
 import type { Database } from "@/data/client";
 import { annotations, experimentVersions, experiments, participants, studyMembers, trialSamples, trials, user } from "@/data/schema";
 import { loadDesign } from "../../experiments/design";
-import { snapshotOf } from "../../experiments/publish";
+import { snapshotOf } from "@/core/protocol/snapshot";
 import { eventsSince } from "@/data/event-store";
 import { trialFile } from "../../trials/files";
 import { assertMayTakePart } from "../../studies/consent-gate";
