@@ -32,6 +32,7 @@ describe("architecture", () => {
     ["a feature importing the data layer", types("src/features/analysis/analysis-page.tsx", "src/data/event-store")],
     ["a feature importing the app", value("src/features/shell/top-bar.tsx", "src/app/layout")],
     ["shared UI importing a feature", value("src/ui/table.tsx", "src/features/shell/top-bar")],
+    ["the browser's clients importing shared UI", value("src/lib/trpc.tsx", "src/ui/button")],
     ["the browser's API client importing server values", value("src/lib/trpc.tsx", "src/server/http/body-limit")],
     ["the launcher importing the app", value("src/launcher/start.ts", "src/app/layout")],
     ["a file in no layer", value("src/tools/x.ts", "src/core/trial")],

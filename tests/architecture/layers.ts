@@ -16,7 +16,7 @@ export type Layer = keyof typeof LAYERS;
 export const LAYERS = {
   // Pure computation; the plugin schema is part of the core's declarations.
   core: { paths: ["src/core/", "plugins/plugin.schema.json"], imports: [] },
-  // The database, the event store and what both servers read through them.
+  // What both servers stand on: the database, the event store, study access, socket tokens, config, error references.
   data: { paths: ["src/data/"], imports: ["core"] },
   // Plugin loading and the catalog (which reads installed plugins), transports, the simulated robot.
   robots: { paths: ["src/robots/"], imports: ["core", "data"] },
@@ -26,8 +26,9 @@ export const LAYERS = {
   // The browser side. Routes and pages compose features and the server's handlers.
   app: { paths: ["src/app/", "src/proxy.ts"], imports: ["core", "data", "server", "features", "ui", "lib"] },
   features: { paths: ["src/features/"], imports: ["core", "ui", "lib"] },
-  lib: { paths: ["src/lib/"], imports: ["core", "ui"] },
+  // Shared components may use the browser's clients (the API, auth); the clients use no components.
   ui: { paths: ["src/ui/"], imports: ["core", "lib"] },
+  lib: { paths: ["src/lib/"], imports: ["core"] },
 } as const satisfies Record<string, { paths: readonly string[]; imports: readonly string[] }>;
 
 const BROWSER: readonly Layer[] = ["features", "lib", "ui"];
