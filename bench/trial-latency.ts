@@ -6,12 +6,12 @@
 import { spawn } from "node:child_process";
 import { join } from "node:path";
 import { startDefaultSimulator } from "../src/robots/simulator/main";
-import { SOCKET_PROTOCOL_VERSION } from "../src/runtime/protocol";
-import { freePort } from "../src/server/db/embedded";
+import { SOCKET_PROTOCOL_VERSION } from "../src/core/socket/messages";
+import { freePort } from "../src/data/embedded";
 import { createAccount } from "../src/server/auth/accounts";
-import { createDatabase } from "../src/server/db/client";
-import { experimentVersions, experiments, studies, studyMembers, trials } from "../src/server/db/schema";
-import { signSocketToken } from "../src/server/trials/socket-token";
+import { createDatabase } from "../src/data/client";
+import { experimentVersions, experiments, studies, studyMembers, trials } from "../src/data/schema";
+import { signSocketToken } from "../src/data/socket-token";
 import { report, scratchDatabase } from "./support";
 
 const SECRET = "bench-secret".padEnd(40, "x");

@@ -1,6 +1,6 @@
 import { eq } from "drizzle-orm";
-import type { Database } from "@/server/db/client";
-import { annotations, trials } from "@/server/db/schema";
+import type { Database } from "@/data/client";
+import { annotations, trials } from "@/data/schema";
 
 /** A marked moment, timed on the trial's clock (0 before the trial starts). */
 export async function annotate(db: Database, by: { trialId: string; userId: string; name: string }, label: string, note: string) {

@@ -1,9 +1,9 @@
 // The trial runtime process: `bun run src/runtime/main.ts`. The launcher
 // starts it beside the web app with the same database and secret.
-import { readConfig } from "@/server/config";
-import { createDatabase } from "@/server/db/client";
+import { readConfig } from "@/data/config";
+import { createDatabase } from "@/data/client";
 import type { Plugin } from "@/core/plugins";
-import { pluginCatalog } from "@/server/plugins/catalog";
+import { pluginCatalog } from "@/robots/catalog";
 import { transportFor } from "@/robots/transports";
 import { pluginRobot, unavailableRobot } from "./robot-link";
 import { purgeSpentTokens, watchAccess } from "./access";

@@ -3,12 +3,13 @@
 // runtime keeps fresh from the database: loaded at hello, reloaded whenever
 // PostgreSQL announces a change (see access.ts), never trusted from the client.
 import { annotateVerdict, commandVerdict, lostAccess, mayReadTrialLog, touches, type AccessChange, type TrialAccess } from "@/core/access/trial-socket";
-import type { Database } from "@/server/db/client";
-import { verifySocketToken, type SocketClaims } from "@/server/trials/socket-token";
-import { eventsSince, STATUS_AFTER, type StoredEvent } from "@/server/trials/event-store";
-import { parseClientMessage, SOCKET_PROTOCOL_VERSION, type ClientMessage, type ServerMessage, type Viewer } from "./protocol";
+import type { Database } from "@/data/client";
+import { verifySocketToken, type SocketClaims } from "@/data/socket-token";
+import type { StoredEvent } from "@/core/trial";
+import { eventsSince, STATUS_AFTER } from "@/data/event-store";
+import { parseClientMessage, SOCKET_PROTOCOL_VERSION, toWire, type ClientMessage, type ServerMessage, type Viewer } from "@/core/socket/messages";
 import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
-import { logUnexpected } from "@/server/errors/reference";
+import { logUnexpected } from "@/data/error-reference";
 import { annotate } from "./annotations";
 import type { EventRelay } from "./relay";
 import type { TrialHosts } from "./trial-hosts";
@@ -44,7 +45,7 @@ const SHUT_OUT = 4403;
 const serialised = new WeakMap<StoredEvent[], string>();
 function eventsMessage(events: StoredEvent[]): string {
   let text = serialised.get(events);
-  if (text === undefined) serialised.set(events, (text = JSON.stringify({ type: "events", events } satisfies ServerMessage)));
+  if (text === undefined) serialised.set(events, (text = JSON.stringify({ type: "events", events: events.map(toWire) } satisfies ServerMessage)));
   return text;
 }
 
@@ -105,7 +106,7 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
     // Owned here: straight from the host. Owned by another process: through the relay.
     ws.data.unsubscribe = host ? host.subscribe(push) : relay.follow(trialId, log.at(-1)?.seq ?? lastSeq, push);
     const now = ws.data.access;
-    send(ws, { type: "welcome", version: SOCKET_PROTOCOL_VERSION, trialId, role: now.studyRole!, mayRun: mayRun(now), events: shown, viewers: presence(trialId) });
+    send(ws, { type: "welcome", version: SOCKET_PROTOCOL_VERSION, trialId, role: now.studyRole!, mayRun: mayRun(now), events: shown.map(toWire), viewers: presence(trialId) });
     if (host) send(ws, { type: "robot", connected: host.robotStatus() });
   }
 

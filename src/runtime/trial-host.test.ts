@@ -1,7 +1,7 @@
 import { afterAll, describe, expect, it } from "vitest";
 import { freshDatabase } from "../../tests/support/db";
-import { experiments, studies, trials } from "@/server/db/schema";
-import { eventsSince } from "@/server/trials/event-store";
+import { experiments, studies, trials } from "@/data/schema";
+import { eventsSince } from "@/data/event-store";
 import type { TrialProtocol } from "@/core/trial";
 import type { RobotLink } from "./robot";
 import { TrialHost } from "./trial-host";

@@ -1,9 +1,9 @@
 // One live trial in the runtime: the only writer of its event log. Commands
 // run one at a time: decide (pure engine) → append (committed) → apply →
 // tell every client. Robot and clock reports come back as commands too.
-import { apply, decide, fold, type Command, type EngineEvent, type TrialProtocol, type TrialState } from "@/core/trial";
-import type { Database } from "@/server/db/client";
-import { appendEvents, eventsSince, type StoredEvent } from "@/server/trials/event-store";
+import { apply, decide, fold, type Command, type EngineEvent, type StoredEvent, type TrialProtocol, type TrialState } from "@/core/trial";
+import type { Database } from "@/data/client";
+import { appendEvents, eventsSince } from "@/data/event-store";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import type { RobotLink } from "./robot";
 import { sampleRecorder } from "./samples";

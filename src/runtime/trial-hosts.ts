@@ -4,9 +4,9 @@ import { eq } from "drizzle-orm";
 import type postgres from "postgres";
 import type { Plugin } from "@/core/plugins";
 import type { TrialProtocol } from "@/core/trial";
-import type { Database } from "@/server/db/client";
-import { experimentVersions, trials } from "@/server/db/schema";
-import { trialPlugin } from "@/server/plugins/trial-plugin";
+import type { Database } from "@/data/client";
+import { experimentVersions, trials } from "@/data/schema";
+import { trialPlugin } from "@/robots/trial-plugin";
 import type { RobotLink } from "./robot";
 import { TrialHost } from "./trial-host";
 

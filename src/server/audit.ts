@@ -1,5 +1,5 @@
-import type { Database } from "./db/client";
-import { auditLog } from "./db/schema";
+import type { Database } from "@/data/client";
+import { auditLog } from "@/data/schema";
 
 type Tx = Parameters<Parameters<Database["transaction"]>[0]>[0];
 

@@ -1,7 +1,7 @@
 // The server's shared parts for the Next.js process, built once from the environment.
-import { readConfig } from "./config";
+import { readConfig } from "@/data/config";
 import { createAuth, type Auth } from "./auth/auth";
-import { createDatabase, type Database } from "./db/client";
+import { createDatabase, type Database } from "@/data/client";
 import { mediaStorage } from "./media";
 import { browserRuntimeUrl } from "./runtime-url";
 import type { Context, SessionUser } from "./api/trpc";

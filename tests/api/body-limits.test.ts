@@ -4,7 +4,7 @@
 // nothing of it is stored. Each route holds its own limit.
 import { afterAll, describe, expect, it } from "vitest";
 import { CHUNK_LIMIT_BYTES } from "../../src/server/media/recordings";
-import { LIMITS } from "../../src/server/http/body-limit";
+import { LIMITS } from "../../src/core/network/limits";
 import { endlessBody, ORIGIN, routeServer } from "../support/routes";
 
 const s = await routeServer();

@@ -6,7 +6,7 @@
 import { strFromU8, unzipSync } from "fflate";
 import { afterAll, describe, expect, it } from "vitest";
 import { appRouter } from "../../src/server/api/root";
-import { appendEvents } from "../../src/server/trials/event-store";
+import { appendEvents } from "../../src/data/event-store";
 import { parseCsv } from "../support/csv";
 import { freshDatabase } from "../support/db";
 import { buildFixture, TEST_SECRET, testMedia } from "./fixture";

@@ -4,8 +4,8 @@
 // only what the caller may read, and a wizard runs only their own trials.
 import { and, eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { studies, studyMembers, trials, user } from "../../src/server/db/schema";
-import { SOCKET_PROTOCOL_VERSION } from "../../src/runtime/protocol";
+import { studies, studyMembers, trials, user } from "../../src/data/schema";
+import { SOCKET_PROTOCOL_VERSION } from "../../src/core/socket/messages";
 import { socketFixture } from "../support/socket-fixture";
 import { connectTrial, type TrialSocket } from "../support/socket";
 

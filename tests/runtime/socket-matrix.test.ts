@@ -6,8 +6,8 @@
 import { eq, inArray } from "drizzle-orm";
 import type { z } from "zod";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { clientMessageSchema, commandSchema, id } from "../../src/runtime/protocol";
-import { annotations, trialEvents, trials } from "../../src/server/db/schema";
+import { clientMessageSchema, commandSchema, id } from "../../src/core/socket/messages";
+import { annotations, trialEvents, trials } from "../../src/data/schema";
 import { socketFixture, STUDY_ROLES_HERE, type Person } from "../support/socket-fixture";
 
 type Fixture = Awaited<ReturnType<typeof socketFixture>>;

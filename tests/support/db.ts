@@ -1,7 +1,7 @@
 import { inject } from "vitest";
 import postgres from "postgres";
-import { createDatabase } from "../../src/server/db/client";
-import { withDatabase } from "../../src/server/db/url";
+import { createDatabase } from "../../src/data/client";
+import { withDatabase } from "../../src/data/url";
 
 const TEMPLATE_DB = "hristudio_template";
 

@@ -1,6 +1,7 @@
-// A trial-runtime client for tests: a real WebSocket speaking the socket protocol.
+// A trial-runtime client for tests: a real WebSocket speaking the socket
+// protocol, checking every message the runtime sends as the browser does.
 import WebSocket from "ws";
-import { SOCKET_PROTOCOL_VERSION } from "../../src/runtime/protocol";
+import { parseServerMessage, SOCKET_PROTOCOL_VERSION } from "../../src/core/socket/messages";
 
 export interface TrialSocket {
   messages: Array<Record<string, unknown>>;
@@ -18,7 +19,10 @@ export async function connectTrial(url: string, token: string, lastSeq = 0): Pro
   const messages: Array<Record<string, unknown>> = [];
   const waiters = new Set<() => void>();
   ws.on("message", (data) => {
-    messages.push(JSON.parse(String(data)));
+    const parsed = parseServerMessage(String(data));
+    // Thrown here, it fails the test that received it as an unhandled error.
+    if (!parsed.ok) throw new Error(`The runtime sent a message the browser would refuse: ${parsed.reason}\n${String(data)}`);
+    messages.push(parsed.message);
     for (const w of [...waiters]) w();
   });
   await new Promise<void>((ok, fail) => {

@@ -1,5 +1,5 @@
 import type { ReactNode } from "react";
-import { requireUser } from "@/features/auth/session";
+import { requireUser } from "@/app/require-user";
 import { TopBar } from "@/features/shell/top-bar";
 
 export const dynamic = "force-dynamic";

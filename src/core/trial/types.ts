@@ -50,6 +50,13 @@ export type EngineEvent = EventBody & { deviation?: DeviationKind };
 /** An event as stored: what the fold reads. */
 export type TrialEvent = EngineEvent & { seq: number; relMs: number | null };
 
+/**
+ * An event as the log keeps it, with its trial, server time and actor. The
+ * database gives the time as a Date; the socket carries it as an ISO string
+ * (`StoredEvent<string>`).
+ */
+export type StoredEvent<Time extends Date | string = Date> = TrialEvent & { trialId: string; serverTime: Time; actorId: string | null };
+
 export type Command =
   | { kind: "start" }
   | { kind: "next" }

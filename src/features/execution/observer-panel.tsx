@@ -1,7 +1,7 @@
 "use client";
 // Observers watch and mark moments; every mark reaches everyone at once.
 import { useState, type FormEvent } from "react";
-import type { Viewer } from "@/runtime/protocol";
+import type { Viewer } from "@/core/socket/messages";
 import { Button } from "@/ui/button";
 import { Field, Input } from "@/ui/field";
 import { Badge, Card, ROLE_TONE } from "@/ui/surface";

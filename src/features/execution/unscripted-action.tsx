@@ -3,7 +3,7 @@
 // and is recorded as an unscripted deviation.
 import { useState } from "react";
 import { ABSTRACT_ACTIONS, validateParameters, type ParameterProblem } from "@/core/plugins";
-import type { WizardCommand } from "@/runtime/protocol";
+import type { WizardCommand } from "@/core/socket/messages";
 import { Button } from "@/ui/button";
 import { Field, NativeSelect } from "@/ui/field";
 import { SchemaForm } from "@/ui/schema-form";

@@ -5,19 +5,17 @@
 // with the same engine the server uses.
 import { useMutation } from "@tanstack/react-query";
 import { useCallback, useEffect, useMemo, useRef, useState } from "react";
-import { fold, type TrialEvent, type TrialProtocol } from "@/core/trial";
-import type { WizardCommand } from "@/runtime/protocol";
-import { SOCKET_PROTOCOL_VERSION, type ServerMessage, type Viewer } from "@/runtime/protocol";
+import { fold, type TrialProtocol } from "@/core/trial";
+import { parseServerMessage, SOCKET_PROTOCOL_VERSION, type ClientMessage, type ServerMessage, type Viewer, type WireEvent, type WizardCommand } from "@/core/socket/messages";
 import { useTRPC } from "@/lib/trpc";
 
-export type StoredEvent = TrialEvent & { serverTime: string; actorId: string | null };
 export type Annotation = Extract<ServerMessage, { type: "annotation" }>["annotation"];
 type Outcome = { ok: true } | { ok: false; reason: string };
 
 export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const trpc = useTRPC();
   const tokenFor = useMutation(trpc.trials.socketToken.mutationOptions());
-  const [events, setEvents] = useState<StoredEvent[]>([]);
+  const [events, setEvents] = useState<WireEvent[]>([]);
   const [viewers, setViewers] = useState<Viewer[]>([]);
   const [annotations, setAnnotations] = useState<Annotation[]>([]);
   const [connected, setConnected] = useState(false);
@@ -29,7 +27,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const lastSeq = useRef(0);
   const pending = useRef(new Map<string, (o: Outcome) => void>());
 
-  const receive = useCallback((incoming: StoredEvent[]) => {
+  const receive = useCallback((incoming: WireEvent[]) => {
     const fresh = incoming.filter((e) => e.seq > lastSeq.current);
     if (!fresh.length) return;
     lastSeq.current = fresh.at(-1)!.seq;
@@ -49,18 +47,21 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
       }
       const ws = new WebSocket(ticket.url);
       socket.current = ws;
-      ws.onopen = () => ws.send(JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: ticket.token, lastSeq: lastSeq.current }));
+      ws.onopen = () => ws.send(JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: ticket.token, lastSeq: lastSeq.current } satisfies ClientMessage));
       ws.onmessage = (message) => {
-        const m = JSON.parse(String(message.data)) as ServerMessage;
+        const parsed = parseServerMessage(String(message.data));
+        // A server of another version (the page outlived an upgrade) or a broken message: say so rather than fold it.
+        if (!parsed.ok) return setNotice(`${parsed.reason} Reload the page.`);
+        const m = parsed.message;
         if (m.type === "welcome") {
           retry = 500;
           setConnected(true);
           setNotice(null);
           setViewers(m.viewers);
           setMayRun(m.mayRun);
-          receive(m.events as StoredEvent[]);
+          receive(m.events);
         } else if (m.type === "access") setMayRun(m.mayRun);
-        else if (m.type === "events") receive(m.events as StoredEvent[]);
+        else if (m.type === "events") receive(m.events);
         else if (m.type === "presence") setViewers(m.viewers);
         else if (m.type === "robot") setRobot({ connected: m.connected, detail: m.detail });
         else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
@@ -97,13 +98,13 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [trialId]);
 
-  const request = useCallback((message: Record<string, unknown>): Promise<Outcome> => {
+  const request = useCallback((message: (requestId: string) => ClientMessage): Promise<Outcome> => {
     const ws = socket.current;
     if (!ws || ws.readyState !== WebSocket.OPEN) return Promise.resolve({ ok: false, reason: "Not connected to the trial yet." });
     const requestId = crypto.randomUUID();
     return new Promise((settle) => {
       pending.current.set(requestId, settle);
-      ws.send(JSON.stringify({ ...message, requestId }));
+      ws.send(JSON.stringify(message(requestId)));
     });
   }, []);
 
@@ -117,7 +118,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     robot,
     notice,
     mayRun,
-    command: (command: WizardCommand) => request({ type: "command", command }),
-    annotate: (label: string, note = "") => request({ type: "annotate", label, note }),
+    command: (command: WizardCommand) => request((requestId) => ({ type: "command", requestId, command })),
+    annotate: (label: string, note = "") => request((requestId) => ({ type: "annotate", requestId, label, note })),
   };
 }

@@ -3,7 +3,7 @@
 // choices by number, and everything off script one key away.
 import { useEffect, useRef, useState } from "react";
 import { answerOptions, nextUnit, type TrialProtocol, type TrialState } from "@/core/trial";
-import type { WizardCommand } from "@/runtime/protocol";
+import type { WizardCommand } from "@/core/socket/messages";
 import { Button } from "@/ui/button";
 import { Input } from "@/ui/field";
 import { describeAction } from "./protocol-view";

@@ -4,21 +4,9 @@
 // the browser's speech synthesis when asked.
 import { useEffect, useRef, useState } from "react";
 import * as ROSLIB from "roslib";
+import { ROBOT_STATE_TOPIC, type RobotState } from "@/core/robots/robot-state";
 import { Button } from "@/ui/button";
 import { Badge, Card } from "@/ui/surface";
-
-interface RobotState {
-  speaking: string | null;
-  lastSaid: string | null;
-  animation: string | null;
-  gesture: string | null;
-  posture: string;
-  velocity: { linear: number; angular: number };
-  headPitch: number;
-  battery: number;
-}
-
-const STATE_TOPIC = "/hristudio/robot_state";
 
 export function RobotView({ url }: { url: string }) {
   const [state, setState] = useState<RobotState | null>(null);
@@ -40,7 +28,7 @@ export function RobotView({ url }: { url: string }) {
       ros.on("close", lost);
       ros.on("error", () => undefined);
       void ros.connect(url).catch(() => undefined);
-      const topic = new ROSLIB.Topic({ ros, name: STATE_TOPIC, messageType: "std_msgs/msg/String" });
+      const topic = new ROSLIB.Topic({ ros, name: ROBOT_STATE_TOPIC, messageType: "std_msgs/msg/String" });
       topic.subscribe((message) => setState(JSON.parse((message as { data: string }).data) as RobotState));
     };
     open();

@@ -3,7 +3,7 @@ import type { Plugin } from "../../core/plugins";
 import { battery, jointStates, pluginTopics, robotStateReport, speech, testServices, type RobotNode } from "./nodes";
 
 export { startSimulator, type Simulator, type SimulatorOptions, type Received } from "./server";
-export { battery, jointStates, pluginTopics, robotStateReport, ROBOT_STATE_TOPIC, speech, testServices, type RobotNode, type RobotState } from "./nodes";
+export { battery, jointStates, pluginTopics, robotStateReport, speech, testServices, type RobotNode } from "./nodes";
 
 const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 

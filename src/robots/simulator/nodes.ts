@@ -1,25 +1,10 @@
 // The robot side of the simulated ROS graph: small "nodes" that publish robot
 // state and answer what clients send. Each returns a function that stops it.
 import type { Plugin } from "../../core/plugins";
+import { ROBOT_STATE_TOPIC, type RobotState } from "../../core/robots/robot-state";
 import type { RosGraph } from "./graph";
 
 export type RobotNode = (graph: RosGraph, state: RobotState) => () => void;
-
-/** What the simulated robot is doing, for tests and the robot view page. */
-export interface RobotState {
-  speaking: string | null;
-  lastSaid: string | null;
-  animation: string | null;
-  gesture: string | null;
-  posture: string;
-  velocity: { linear: number; angular: number };
-  headPitch: number;
-  battery: number;
-}
-
-export function initialState(): RobotState {
-  return { speaking: null, lastSaid: null, animation: null, gesture: null, posture: "stand", velocity: { linear: 0, angular: 0 }, headPitch: 0, battery: 100 };
-}
 
 const ROBOT = "robot";
 
@@ -84,13 +69,10 @@ export function battery({ hz = 1 } = {}): RobotNode {
 
 /** Declares every topic a plugin publishes to, and mirrors what arrives into the robot state. */
 /**
- * What the robot is doing, as JSON on /hristudio/robot_state (our own topic,
- * only on the simulator): the robot view page draws it and speaks its speech.
- * Published on every change (checked at `hz`) and at least once a second, so
- * a page that opens late still draws the robot at once.
+ * What the robot is doing, as JSON on ROBOT_STATE_TOPIC: the robot view page
+ * draws it and speaks its speech. Published on every change (checked at `hz`)
+ * and at least once a second.
  */
-export const ROBOT_STATE_TOPIC = "/hristudio/robot_state";
-
 export function robotStateReport({ hz = 20 } = {}): RobotNode {
   return (graph, state) => {
     graph.declare(ROBOT_STATE_TOPIC, "std_msgs/msg/String", ROBOT);

@@ -5,7 +5,8 @@
 import { WebSocketServer, type WebSocket } from "ws";
 import { Connection } from "./connection";
 import { RosGraph } from "./graph";
-import { initialState, type RobotNode, type RobotState } from "./nodes";
+import { initialState, type RobotState } from "../../core/robots/robot-state";
+import type { RobotNode } from "./nodes";
 
 export interface SimulatorOptions {
   host?: string;

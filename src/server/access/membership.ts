@@ -1,27 +1,11 @@
-// The caller's place in a study, and the check that an input names rows of
-// one study only.
+// The check that an input names rows of one study only.
 import { TRPCError } from "@trpc/server";
-import { and, eq } from "drizzle-orm";
 import { namedIn } from "@/core/access/input";
-import type { StudyRole } from "@/core/access/policy";
-import { blindingFor, NOT_BLINDED, type Blinding } from "@/core/studies/blinding";
-import { readSettings } from "@/core/studies/settings";
-import type { Database } from "../db/client";
-import { studies, studyMembers } from "../db/schema";
+import type { Database } from "@/data/client";
+import { studyAccessOf } from "@/data/study-access";
 import { loadResource, nameOf, REFERENCES, type ReferenceKey } from "./resources";
 
 type Db = Pick<Database, "select">;
-
-/** The caller's role in a study, and what that study's blinds hide from them. */
-export async function studyAccessOf(db: Db, studyId: string, userId: string): Promise<{ role: StudyRole | null; blinding: Blinding }> {
-  const [row] = await db
-    .select({ role: studyMembers.role, settings: studies.settings, status: studies.status })
-    .from(studies)
-    .leftJoin(studyMembers, and(eq(studyMembers.studyId, studies.id), eq(studyMembers.userId, userId)))
-    .where(eq(studies.id, studyId));
-  const role = row?.role ?? null;
-  return { role, blinding: row ? blindingFor(role, readSettings(row.settings), row.status) : NOT_BLINDED };
-}
 
 const REFERENCE_KEYS = new Set(Object.keys(REFERENCES));
 const MAX_REFERENCES = 1000;

@@ -1,7 +1,7 @@
 // The rows a procedure can act on, each loaded with the study it belongs to.
 // The study is always read from the row, never taken from the caller's input.
 import { eq, getTableColumns } from "drizzle-orm";
-import type { Database } from "../db/client";
+import type { Database } from "@/data/client";
 import {
   actions,
   annotations,
@@ -15,7 +15,7 @@ import {
   steps,
   studies,
   trials,
-} from "../db/schema";
+} from "@/data/schema";
 
 type Db = Pick<Database, "select">;
 

@@ -3,11 +3,12 @@ import { ZodError, type z } from "zod";
 import { nulPath } from "@/core/access/input";
 import { decide, isStudyOperation, type Operation, type StudyOperation, type StudyRole, type SystemOperation, type SystemRole } from "@/core/access/policy";
 import type { Blinding } from "@/core/studies/blinding";
-import type { Database } from "../db/client";
-import { assertOneStudy, studyAccessOf } from "../access/membership";
+import type { Database } from "@/data/client";
+import { assertOneStudy } from "../access/membership";
+import { studyAccessOf } from "@/data/study-access";
 import { keyOf, loadResource, nameOf, type Resource, type ResourceRow } from "../access/resources";
 import type { MediaStorage } from "../media/storage";
-import { logUnexpected, unexpectedMessage } from "../errors/reference";
+import { logUnexpected, unexpectedMessage } from "@/data/error-reference";
 import { describeIssues, fieldIssues, type FieldIssue } from "./errors";
 
 export interface SessionUser {

@@ -4,24 +4,11 @@ import { eq, sql } from "drizzle-orm";
 import { draftFrom } from "@/core/designer/model";
 import { validateDesign } from "@/core/designer/validate";
 import { hashCanonical } from "@/core/protocol/canonical";
-import { SNAPSHOT_SCHEMA_VERSION, type ProtocolSnapshot } from "@/core/protocol/snapshot";
-import type { Database } from "../db/client";
-import { experimentVersions, experiments, pluginDocuments } from "../db/schema";
-import { knownPlugin } from "../plugins/catalog";
-import { loadDesign, type Design } from "./design";
-
-export function snapshotOf(design: Design): ProtocolSnapshot {
-  return {
-    schemaVersion: SNAPSHOT_SCHEMA_VERSION,
-    experiment: { id: design.id, name: design.name, description: design.description, robotPluginId: design.robotPluginId },
-    steps: design.steps.map((s) => ({
-      id: s.id,
-      name: s.name,
-      description: s.description,
-      actions: s.actions.map((a) => ({ id: a.id, type: a.type, name: a.name, parameters: a.parameters, parallelGroup: a.parallelGroup })),
-    })),
-  };
-}
+import { snapshotOf } from "@/core/protocol/snapshot";
+import type { Database } from "@/data/client";
+import { experimentVersions, experiments, pluginDocuments } from "@/data/schema";
+import { knownPlugin } from "@/robots/catalog";
+import { loadDesign } from "./design";
 
 export async function publish(db: Database, experimentId: string, userId: string) {
   return db.transaction(async (tx) => {

@@ -4,8 +4,7 @@
 // as soon as the count passes the limit, so the server never holds more than
 // the limit of it.
 
-const KB = 1024;
-const MB = 1024 * KB;
+import { KB, MB } from "@/core/network/limits";
 
 const size = (bytes: number) => (bytes >= MB ? `${+(bytes / MB).toFixed(1)} MB` : bytes >= KB ? `${+(bytes / KB).toFixed(1)} KB` : `${bytes} bytes`);
 
@@ -60,14 +59,3 @@ export async function withinLimit(req: Request, limit: number, what: string): Pr
   headers.set("content-length", String(body.byteLength));
   return new Request(req.url, { method: req.method, headers, body, signal: req.signal });
 }
-
-export const LIMITS = {
-  /** Anyone not signed in, and the public questionnaire form: answers to one questionnaire. */
-  publicApi: 512 * KB,
-  /** The signed-in API; its largest input is an experiment file of up to 2 million characters (up to 3 bytes each). */
-  api: 8 * MB,
-  /** Sign-in, sign-out and the like: a few short fields. */
-  auth: 64 * KB,
-  /** Calls in one tRPC batch; the browser's client batches at most this many. */
-  batchCalls: 50,
-} as const;

@@ -9,9 +9,9 @@ import { hashCanonical } from "@/core/protocol/canonical";
 import { effectiveTrust, formatPluginError, pluginChanges, shadowing, type Plugin, type PluginChange } from "@/core/plugins";
 import { fetchRepository } from "@/robots/repository-sync";
 import { audit } from "../audit";
-import type { Database } from "../db/client";
-import { installedPlugins, pluginRepositories } from "../db/schema";
-import { pluginCatalog } from "./catalog";
+import type { Database } from "@/data/client";
+import { installedPlugins, pluginRepositories } from "@/data/schema";
+import { pluginCatalog } from "@/robots/catalog";
 
 export async function syncRepository(db: Database, repositoryId: string, actorId: string, fetchFn: typeof fetch = fetch) {
   const [repository] = await db.select().from(pluginRepositories).where(eq(pluginRepositories.id, repositoryId));

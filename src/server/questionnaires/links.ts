@@ -6,8 +6,8 @@ import { TRPCError } from "@trpc/server";
 import { and, eq } from "drizzle-orm";
 import { presentedOrder, type Answers } from "@/core/questionnaires/answers";
 import type { Definition } from "@/core/questionnaires/definition";
-import type { Database } from "../db/client";
-import { participants, questionnaireLinks, questionnaireResponses, questionnaireVersions, questionnaires, studies } from "../db/schema";
+import type { Database } from "@/data/client";
+import { participants, questionnaireLinks, questionnaireResponses, questionnaireVersions, questionnaires, studies } from "@/data/schema";
 
 export const hashToken = (token: string) => createHash("sha256").update(token).digest("hex");
 

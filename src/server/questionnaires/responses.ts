@@ -1,8 +1,8 @@
 // Submitted answers with everything needed to read them: the version shown,
 // the participant, the trial. A withdrawn participant's answers are left out.
 import { and, asc, eq, ne } from "drizzle-orm";
-import type { Database } from "../db/client";
-import { participants, questionnaireLinks, questionnaireResponses, questionnaireVersions, questionnaires } from "../db/schema";
+import type { Database } from "@/data/client";
+import { participants, questionnaireLinks, questionnaireResponses, questionnaireVersions, questionnaires } from "@/data/schema";
 
 export async function submitted(db: Database, where: ReturnType<typeof eq>) {
   return db

@@ -3,8 +3,8 @@
 // with a paper. Withdrawn participants' data is left out.
 import { strToU8, zipSync } from "fflate";
 import { and, asc, eq, inArray, ne } from "drizzle-orm";
-import type { Database } from "../db/client";
-import { conditions, experimentVersions, experiments, participants, questionnaireLinks, sessions, studies, trials } from "../db/schema";
+import type { Database } from "@/data/client";
+import { conditions, experimentVersions, experiments, participants, questionnaireLinks, sessions, studies, trials } from "@/data/schema";
 import { answersCsv } from "@/core/questionnaires/export";
 import { submitted } from "../questionnaires/responses";
 import { trialFiles } from "../trials/files";

@@ -3,8 +3,8 @@
 import { TRPCError } from "@trpc/server";
 import { and, eq } from "drizzle-orm";
 import { readSettings } from "@/core/studies/settings";
-import type { Database } from "../db/client";
-import { participants, studies } from "../db/schema";
+import type { Database } from "@/data/client";
+import { participants, studies } from "@/data/schema";
 
 export async function assertMayTakePart(db: Database, participantId: string, studyId: string) {
   const [p] = await db.select().from(participants).where(and(eq(participants.id, participantId), eq(participants.studyId, studyId)));

@@ -1,6 +1,6 @@
 import type { ReactNode } from "react";
 import { AdminNav } from "@/features/admin/admin-nav";
-import { requireUser } from "@/features/auth/session";
+import { requireUser } from "@/app/require-user";
 
 export default async function AdminLayout({ children }: { children: ReactNode }) {
   const user = await requireUser();

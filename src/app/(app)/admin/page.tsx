@@ -1,5 +1,5 @@
 import { UsersPage } from "@/features/admin/users-page";
-import { requireUser } from "@/features/auth/session";
+import { requireUser } from "@/app/require-user";
 
 export default async function AdminPage() {
   const user = await requireUser();

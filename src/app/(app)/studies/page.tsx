@@ -1,4 +1,4 @@
-import { requireUser } from "@/features/auth/session";
+import { requireUser } from "@/app/require-user";
 import { StudyList } from "@/features/studies/study-list";
 
 export default async function StudiesPage() {

@@ -1,10 +1,10 @@
 import { TRPCError } from "@trpc/server";
 import { asc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
-import { actions, experimentVersions, experiments, steps } from "../../db/schema";
+import { actions, experimentVersions, experiments, steps } from "@/data/schema";
 import { exportFile, importFile } from "../../experiments/exchange";
 import { bumpRevision, loadDesign, renumberActions, renumberSteps, saveDesign } from "../../experiments/design";
-import { qualified } from "../../db/qualified";
+import { qualified } from "@/data/qualified";
 import { router, studyProcedure } from "../trpc";
 import { id } from "../validation";
 import { actionFields, designInput, experimentDetails, stepFields } from "./design-input";

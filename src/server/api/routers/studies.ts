@@ -7,8 +7,8 @@ import { readSettings, studySettingsChangeSchema, type StudySettings } from "@/c
 import { audit } from "../../audit";
 import { studyArchive } from "../../studies/archive";
 import { studyFigures } from "../../studies/summary";
-import { experiments, participants, studies, studyMembers, trials } from "../../db/schema";
-import { qualified } from "../../db/qualified";
+import { experiments, participants, studies, studyMembers, trials } from "@/data/schema";
+import { qualified } from "@/data/qualified";
 import { guarded, router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 

@@ -1,5 +1,5 @@
 import { AuditLogPage } from "@/features/admin/audit-log-page";
-import { requireUser } from "@/features/auth/session";
+import { requireUser } from "@/app/require-user";
 
 export default async function AdminAuditPage() {
   const user = await requireUser();

@@ -1,5 +1,5 @@
 import { PluginsPage } from "@/features/admin/plugins-page";
-import { requireUser } from "@/features/auth/session";
+import { requireUser } from "@/app/require-user";
 
 export default async function AdminPluginsPage() {
   const user = await requireUser();

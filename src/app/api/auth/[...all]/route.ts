@@ -1,6 +1,7 @@
 import { server } from "@/server/context";
-import { unexpectedResponse } from "@/server/errors/reference";
-import { LIMITS, withinLimit } from "@/server/http/body-limit";
+import { unexpectedResponse } from "@/data/error-reference";
+import { LIMITS } from "@/core/network/limits";
+import { withinLimit } from "@/server/http/body-limit";
 
 async function handler(req: Request) {
   try {

@@ -1,8 +1,9 @@
 import { fetchRequestHandler } from "@trpc/server/adapters/fetch";
 import { appRouter } from "@/server/api/root";
 import { contextFromHeaders } from "@/server/context";
-import { unexpectedResponse } from "@/server/errors/reference";
-import { LIMITS, withinLimit } from "@/server/http/body-limit";
+import { unexpectedResponse } from "@/data/error-reference";
+import { LIMITS } from "@/core/network/limits";
+import { withinLimit } from "@/server/http/body-limit";
 
 // Someone not signed in can only use the public questionnaire form, so their
 // bodies (and the form's, for anyone) are held to the form's small limit; a

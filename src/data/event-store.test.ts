@@ -1,7 +1,7 @@
 import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
-import { freshDatabase } from "../../../tests/support/db";
-import { experiments, studies, trials } from "../db/schema";
+import { freshDatabase } from "../../tests/support/db";
+import { experiments, studies, trials } from "./schema";
 import { appendEvents, eventsSince, NOTIFY_CHANNEL, type TrialCursor } from "./event-store";
 
 describe("the trial event store", async () => {

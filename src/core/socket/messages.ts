@@ -1,6 +1,8 @@
-// The trial socket protocol, both directions, in one versioned file. Every
-// message is validated on arrival; anything else is refused with a reason.
+// The trial socket's messages, both directions, in one versioned file that
+// the runtime and the browser both import. Every message is validated on
+// arrival, at either end; anything else is refused with a reason.
 import { z } from "zod";
+import type { StoredEvent } from "@/core/trial";
 
 // 2: tokens are single use and carry no role; one hello per connection; the
 // server sends "access" when the caller's role or rights change.
@@ -39,37 +41,53 @@ export const clientMessageSchema = z.discriminatedUnion("type", [
 
 export type ClientMessage = z.infer<typeof clientMessageSchema>;
 
-export type ServerMessage =
+/** A stored event as the socket carries it: its time as an ISO string. */
+export type WireEvent = StoredEvent<string>;
+
+export const toWire = (event: StoredEvent): WireEvent => ({ ...event, serverTime: event.serverTime.toISOString() });
+
+// The log's own fields are checked; the event inside is the server's engine's
+// own output, which the browser folds with the same engine.
+const logFields = z.object({ seq: z.number().int().min(1), type: z.string(), relMs: z.number().nullable(), trialId: id, serverTime: z.string(), actorId: z.string().nullable() });
+const wireEvent = z.custom<WireEvent>((e) => logFields.safeParse(e).success, "not a stored event");
+
+const viewer = z.object({ userId: z.string(), name: z.string(), role: z.string() });
+
+export const serverMessageSchema = z.discriminatedUnion("type", [
   // `events` is empty unless the caller may read the log (see mayReadTrialLog);
   // `mayRun`: whether this caller may command this trial now.
-  | { type: "welcome"; version: number; trialId: string; role: string; mayRun: boolean; events: unknown[]; viewers: Viewer[] }
+  z.object({ type: z.literal("welcome"), version: z.literal(SOCKET_PROTOCOL_VERSION), trialId: id, role: z.string(), mayRun: z.boolean(), events: z.array(wireEvent), viewers: z.array(viewer) }),
   // The caller's role or rights changed while connected (a removed member is disconnected instead).
-  | { type: "access"; role: string; mayRun: boolean }
-  | { type: "events"; events: unknown[] }
-  | { type: "ack"; requestId: string; seqs: number[] }
-  | { type: "rejected"; requestId: string | null; reason: string }
-  | { type: "presence"; viewers: Viewer[] }
-  | { type: "annotation"; annotation: { id: string; relMs: number; label: string; note: string; authorName: string } }
-  | { type: "robot"; connected: boolean; detail?: string }
-  | { type: "pong" };
+  z.object({ type: z.literal("access"), role: z.string(), mayRun: z.boolean() }),
+  z.object({ type: z.literal("events"), events: z.array(wireEvent) }),
+  z.object({ type: z.literal("ack"), requestId: z.string(), seqs: z.array(z.number().int()) }),
+  z.object({ type: z.literal("rejected"), requestId: z.string().nullable(), reason: z.string() }),
+  z.object({ type: z.literal("presence"), viewers: z.array(viewer) }),
+  z.object({ type: z.literal("annotation"), annotation: z.object({ id, relMs: z.number(), label: z.string(), note: z.string(), authorName: z.string() }) }),
+  z.object({ type: z.literal("robot"), connected: z.boolean(), detail: z.string().optional() }),
+  z.object({ type: z.literal("pong") }),
+]);
 
-export interface Viewer {
-  userId: string;
-  name: string;
-  role: string;
-}
+export type ServerMessage = z.infer<typeof serverMessageSchema>;
+export type Viewer = z.infer<typeof viewer>;
 
-export type Parsed = { ok: true; message: ClientMessage } | { ok: false; reason: string };
+export type Parsed<M> = { ok: true; message: M } | { ok: false; reason: string };
 
-export function parseClientMessage(raw: string): Parsed {
+function parseWith<M>(schema: z.ZodType<M>, raw: string): Parsed<M> {
   let data: unknown;
   try {
     data = JSON.parse(raw);
   } catch {
     return { ok: false, reason: "The message is not valid JSON." };
   }
-  const parsed = clientMessageSchema.safeParse(data);
+  const parsed = schema.safeParse(data);
   if (parsed.success) return { ok: true, message: parsed.data };
   const issue = parsed.error.issues[0]!;
   return { ok: false, reason: `The message is not understood: ${issue.path.join(".") || "(message)"}: ${issue.message}` };
 }
+
+/** The runtime's check of what a browser sends. */
+export const parseClientMessage = (raw: string): Parsed<ClientMessage> => parseWith(clientMessageSchema, raw);
+
+/** The browser's check of what the runtime sends. */
+export const parseServerMessage = (raw: string): Parsed<ServerMessage> => parseWith(serverMessageSchema, raw);

@@ -3,7 +3,7 @@ import { tmpdir } from "node:os";
 import { join } from "node:path";
 import postgres from "postgres";
 import { describe, expect, it } from "vitest";
-import { freshDatabaseUrl } from "../../../tests/support/db";
+import { freshDatabaseUrl } from "../../tests/support/db";
 import { migrateDatabase, MIGRATIONS_DIR } from "./migrate";
 
 interface Journal {

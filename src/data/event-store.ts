@@ -1,13 +1,11 @@
 // The trial's append-only log in PostgreSQL. An event exists once its
 // transaction commits; only then may anyone be told about it.
 import { and, asc, eq, gt } from "drizzle-orm";
-import type { EngineEvent, TrialEvent } from "@/core/trial";
-import type { Database } from "../db/client";
-import { trialEvents, trials } from "../db/schema";
+import type { EngineEvent, StoredEvent } from "@/core/trial";
+import type { Database } from "./client";
+import { trialEvents, trials } from "./schema";
 
 export const NOTIFY_CHANNEL = "hri_trial_events";
-
-export type StoredEvent = TrialEvent & { trialId: string; serverTime: Date; actorId: string | null };
 
 type Row = typeof trialEvents.$inferSelect;
 

@@ -1,0 +1,24 @@
+// What the simulated robot is doing: the simulator keeps it and publishes it
+// as JSON on its own topic; the robot view page reads it from there. Declared
+// once here, below both.
+
+/**
+ * The state's topic (ours, only on the simulator). Published on every change
+ * and at least once a second, so a page that opens late draws the robot at once.
+ */
+export const ROBOT_STATE_TOPIC = "/hristudio/robot_state";
+
+export interface RobotState {
+  speaking: string | null;
+  lastSaid: string | null;
+  animation: string | null;
+  gesture: string | null;
+  posture: string;
+  velocity: { linear: number; angular: number };
+  headPitch: number;
+  battery: number;
+}
+
+export function initialState(): RobotState {
+  return { speaking: null, lastSaid: null, animation: null, gesture: null, posture: "stand", velocity: { linear: 0, angular: 0 }, headPitch: 0, battery: 100 };
+}
