@@ -13,8 +13,7 @@ afterAll(close);
 async function setUp() {
   const study = await f.newStudy();
   const experiment = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  const step = await owner.experiments.createStep({ experimentId: experiment.id, name: "Only" });
-  await owner.experiments.createAction({ stepId: step.id, type: "wave" });
+  await owner.experiments.saveDesign({ experimentId: experiment.id, baseRevision: 0, steps: [{ name: "Only", actions: [{ type: "wave" }] }] });
   const version = await owner.versions.publish({ experimentId: experiment.id });
   const participant = await owner.participants.create({ studyId: study.id, code: "P9" });
   return { study, version, participant };

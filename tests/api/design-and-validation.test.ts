@@ -89,7 +89,8 @@ describe("saving a design", () => {
     expect(v1.hash).toMatch(/^[0-9a-f]{64}$/);
     const snapshot = v1.snapshot as { steps: Array<{ actions: Array<{ parameters: { text: string } }> }> };
     expect(snapshot.steps[0]!.actions[0]!.parameters.text).toBe('He said "{{hi}}" $(rm -rf /)');
-    await owner.experiments.updateStep({ stepId: (await owner.experiments.get({ experimentId: e.id })).steps[0]!.id, name: "Changed" });
+    const draft = await owner.experiments.get({ experimentId: e.id });
+    await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: draft.draftRevision, steps: draft.steps.map((s) => ({ ...s, name: "Changed" })) });
     const v3 = await owner.versions.publish({ experimentId: e.id });
     expect(v3.hash).not.toBe(v1.hash);
     expect(((await owner.versions.get({ versionId: v1.id })).snapshot as { steps: Array<{ name: string }> }).steps[0]!.name).toBe("One");

@@ -52,8 +52,7 @@ const topicOf = (plugin: Plugin | null) => (plugin?.actions.find((a) => a.id ===
 describe("a published version pins its plugin document", async () => {
   const study = await f.newStudy();
   const experiment = await owner.experiments.create({ studyId: study.id, name: "Greeting", robotPluginId: "lab-bot" });
-  const step = await owner.experiments.createStep({ experimentId: experiment.id, name: "Hello" });
-  await owner.experiments.createAction({ stepId: step.id, type: "lab-bot.say_text", parameters: { text: "Hello" } });
+  await owner.experiments.saveDesign({ experimentId: experiment.id, baseRevision: 0, steps: [{ name: "Hello", actions: [{ type: "lab-bot.say_text", parameters: { text: "Hello" } }] }] });
   let version: Awaited<ReturnType<typeof owner.versions.publish>>;
   let trialId = "";
 

@@ -2,6 +2,7 @@
 // published version records the plugin version; portability is reported
 // before any trial, per robot, for the seeded Interactive Storyteller.
 import { afterAll, describe, expect, it } from "vitest";
+import { portability } from "../../src/core/plugins";
 import { appRouter } from "../../src/server/api/root";
 import { createCallerFactory } from "../../src/server/api/trpc";
 import { seedDemo } from "../../src/server/seed/demo";
@@ -24,8 +25,7 @@ describe("robot plugins on the server", () => {
   it("records the exact plugin version in a published version", async () => {
     const study = await f.newStudy();
     const e = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-    const step = await f.api("owner").experiments.createStep({ experimentId: e.id, name: "S" });
-    await f.api("owner").experiments.createAction({ stepId: step.id, type: "wave" });
+    await f.api("owner").experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
     expect(await f.api("owner").versions.publish({ experimentId: e.id })).toMatchObject({ pluginId: "nao6-ros2", pluginVersion: "3.0.0" });
   });
 
@@ -41,11 +41,13 @@ describe("robot plugins on the server", () => {
     });
     const [study] = await asOwner.studies.mine();
     const [storyteller] = await asOwner.experiments.list({ studyId: study!.id });
+    // As the designer does: the draft and the robot's plugin from the server, the report from the core.
+    const draft = await asOwner.experiments.get({ experimentId: storyteller!.id });
     const unsupported = async (robotId: string) =>
-      (await asOwner.plugins.portability({ experimentId: storyteller!.id, robotId })).actions.filter((a) => a.status !== "supported").map((a) => a.type).sort();
+      portability(draft, await asOwner.plugins.get({ robotId })).actions.filter((a) => a.status !== "supported").map((a) => a.type).sort();
     expect(await unsupported("nao6-ros2")).toEqual([]);
     expect(await unsupported("simulated")).toEqual([]);
     expect(await unsupported("turtlebot3-burger")).toEqual(["head_shake", "look_down", "nod", "say", "say", "say", "say", "say", "wave"]);
-    await expect(asOwner.plugins.portability({ experimentId: storyteller!.id, robotId: "r2d2" })).rejects.toThrow('No robot plugin called "r2d2" is installed.');
+    await expect(asOwner.plugins.get({ robotId: "r2d2" })).rejects.toThrow('No robot plugin called "r2d2" is installed.');
   });
 });

@@ -89,8 +89,7 @@ describe("errors a client sees", () => {
     await db.execute("alter table annotations rename to annotations_away");
     try {
       const experiment = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-      const step = await owner.experiments.createStep({ experimentId: experiment.id, name: "S" });
-      await owner.experiments.createAction({ stepId: step.id, type: "wave" });
+      await owner.experiments.saveDesign({ experimentId: experiment.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
       const version = await owner.versions.publish({ experimentId: experiment.id });
       const p = await owner.participants.create({ studyId: study.id, code: "E1", consentStatus: "given", consentDate: new Date() });
       const trial = await owner.trials.create({ versionId: version.id, participantId: p.id });

@@ -22,7 +22,8 @@ describe.sequential("a blinded wizard", () => {
     // Two conditions on two experiments, with names a leak would show.
     const file = await researcher.experiments.exportFile.query({ experimentId: storyteller!.id });
     const voiceOnly = await researcher.experiments.importFile.mutate({ studyId, text: file.text.replace('"name": "Interactive Storyteller"', '"name": "Voice-only telling QX7"') });
-    await researcher.experiments.update.mutate({ experimentId: storyteller!.id, name: "Gestured telling ZK4" });
+    const draft = await researcher.experiments.get.query({ experimentId: storyteller!.id });
+    await researcher.experiments.saveDesign.mutate({ experimentId: draft.id, baseRevision: draft.draftRevision, details: { name: "Gestured telling ZK4" }, steps: draft.steps });
     for (const e of [storyteller!.id, voiceOnly.id]) await researcher.versions.publish.mutate({ experimentId: e });
     const gestures = await researcher.conditions.create.mutate({ studyId, name: "Gestures-condition-RB2", description: "NAO waves and nods", experimentId: storyteller!.id });
     const voice = await researcher.conditions.create.mutate({ studyId, name: "Voice-condition-MW9", description: "speech only", experimentId: voiceOnly.id });

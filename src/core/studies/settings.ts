@@ -4,19 +4,26 @@ import { z } from "zod";
 
 export const ASSIGNMENT_STRATEGIES = ["fixed", "random", "balanced", "counterbalanced"] as const;
 
-export const assignmentSettingsSchema = z.object({
+const assignmentFields = {
   strategy: z.enum(ASSIGNMENT_STRATEGIES, { error: `must be one of ${ASSIGNMENT_STRATEGIES.join(", ")}` }),
   /** Balanced only: how often each condition appears in one block. */
-  perCondition: z.number().int().min(1, "must be at least 1").max(20, "must be at most 20").default(1),
+  perCondition: z.number().int().min(1, "must be at least 1").max(20, "must be at most 20"),
   /** Made by the server when the strategy is chosen; with it, anyone can reproduce the assignments. */
   seed: z.string().min(1).max(200).optional(),
-});
+};
+
+export const assignmentSettingsSchema = z.object({ ...assignmentFields, perCondition: assignmentFields.perCondition.default(1) });
+
+const blindingFields = {
+  /** Wizards never see which condition (or experiment) a session runs. */
+  conditionsFromWizards: z.boolean(),
+  /** Researchers and observers see no results until the study is marked completed. */
+  resultsUntilComplete: z.boolean(),
+};
 
 export const blindingSchema = z.object({
-  /** Wizards never see which condition (or experiment) a session runs. */
-  conditionsFromWizards: z.boolean().default(false),
-  /** Researchers and observers see no results until the study is marked completed. */
-  resultsUntilComplete: z.boolean().default(false),
+  conditionsFromWizards: blindingFields.conditionsFromWizards.default(false),
+  resultsUntilComplete: blindingFields.resultsUntilComplete.default(false),
 });
 
 export const DEMOGRAPHIC_TYPES = ["text", "number", "choice"] as const;
@@ -49,8 +56,31 @@ export const studySettingsSchema = z.object({
   consentDocumentVersion: settingFields.consentDocumentVersion.default("1"),
 });
 
-/** A change to some settings: the keys given and nothing else (no defaults filled in for the rest). */
-export const studySettingsChangeSchema = z.object(settingFields).partial();
+/**
+ * A change to some settings: the keys given and nothing else, down to each
+ * blind and each assignment field. No defaults here: zod fills a default in
+ * for a key left out, and that would overwrite what the study has.
+ */
+export const studySettingsChangeSchema = z
+  .object({ ...settingFields, assignment: z.object(assignmentFields).partial(), blinding: z.object(blindingFields).partial() })
+  .partial();
+
+export type StudySettingsChange = z.infer<typeof studySettingsChangeSchema>;
+
+/**
+ * The settings after a change: what it names, and everything else as it was.
+ * A changed assignment gets a fresh seed unless the change gives one, so each
+ * choice of strategy has its own reproducible sequence.
+ */
+export function changedSettings(before: StudySettings, change: StudySettingsChange, newSeed: () => string): StudySettings {
+  const { assignment, blinding, ...rest } = change;
+  return {
+    ...before,
+    ...rest,
+    assignment: assignment ? { ...before.assignment, ...assignment, seed: assignment.seed ?? newSeed() } : before.assignment,
+    blinding: { ...before.blinding, ...blinding },
+  };
+}
 
 export type StudySettings = z.infer<typeof studySettingsSchema>;
 

@@ -7,9 +7,9 @@ import { actionWords, AUDIT_AREAS, detailLines, type AuditArea } from "@/core/ac
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Field, NativeSelect } from "@/ui/field";
-import { Problem } from "@/ui/problem";
-import { EmptyState, Spinner } from "@/ui/surface";
-import { Table, Td, Th } from "@/ui/table";
+import { EmptyState } from "@/ui/surface";
+import { ListView } from "@/ui/list-view";
+import { Td, Th } from "@/ui/table";
 
 const PAGE = 100;
 const MOST = 500; // what admin.auditLog returns at most
@@ -47,41 +47,37 @@ export function AuditLogPage() {
           </Field>
         </div>
       </div>
-      {entries.isPending && <Spinner />}
-      <Problem error={entries.error} />
-      {entries.data?.length === 0 && <EmptyState title={area ? "Nothing recorded in this area yet." : "Nothing recorded yet."}>Changes to accounts, studies, members, consent and plugins appear here.</EmptyState>}
-      {!!entries.data?.length && (
-        <Table aria-label="Audit log">
-          <thead>
-            <tr>
-              <Th>Time</Th>
-              <Th>Who</Th>
-              <Th>Study</Th>
-              <Th>What</Th>
-              <Th>About</Th>
-              <Th>Details</Th>
-            </tr>
-          </thead>
-          <tbody>
-            {entries.data.map((e) => (
-              <tr key={e.id} className="align-top">
-                <Td className="whitespace-nowrap">{new Date(e.at).toLocaleString()}</Td>
-                {/* No account: the participant's own consent form, or an account since deleted. */}
-                <Td>{e.actor ?? <span className="text-slate-500">no account</span>}</Td>
-                <Td>{e.studyTitle ?? "—"}</Td>
-                <Td>
-                  <div>{actionWords(e.action)}</div>
-                  <div className="font-mono text-xs text-slate-500">{e.action}</div>
-                </Td>
-                <Td className={e.targetName || e.target === e.studyId ? undefined : "font-mono text-xs [overflow-wrap:anywhere]"}>{e.targetName ?? (e.target === e.studyId ? "the study" : e.target)}</Td>
-                <Td className="max-w-sm">
-                  <Details details={e.details} />
-                </Td>
-              </tr>
-            ))}
-          </tbody>
-        </Table>
-      )}
+      <ListView
+        query={entries}
+        empty={<EmptyState title={area ? "Nothing recorded in this area yet." : "Nothing recorded yet."}>Changes to accounts, studies, members, consent and plugins appear here.</EmptyState>}
+        label="Audit log"
+        columns={
+          <>
+            <Th>Time</Th>
+            <Th>Who</Th>
+            <Th>Study</Th>
+            <Th>What</Th>
+            <Th>About</Th>
+            <Th>Details</Th>
+          </>
+        }
+        row={(e) => (
+          <tr key={e.id} className="align-top">
+            <Td className="whitespace-nowrap">{new Date(e.at).toLocaleString()}</Td>
+            {/* No account: the participant's own consent form, or an account since deleted. */}
+            <Td>{e.actor ?? <span className="text-slate-500">no account</span>}</Td>
+            <Td>{e.studyTitle ?? "—"}</Td>
+            <Td>
+              <div>{actionWords(e.action)}</div>
+              <div className="font-mono text-xs text-slate-500">{e.action}</div>
+            </Td>
+            <Td className={e.targetName || e.target === e.studyId ? undefined : "font-mono text-xs [overflow-wrap:anywhere]"}>{e.targetName ?? (e.target === e.studyId ? "the study" : e.target)}</Td>
+            <Td className="max-w-sm">
+              <Details details={e.details} />
+            </Td>
+          </tr>
+        )}
+      />
       {more && (
         <Button variant="secondary" disabled={entries.isFetching} onClick={() => setLimit(Math.min(limit + PAGE, MOST))}>
           {entries.isFetching ? "Loading…" : "Show older entries"}

@@ -6,8 +6,9 @@ import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Field, Input, NativeSelect } from "@/ui/field";
 import { fieldError, Problem } from "@/ui/problem";
-import { Badge, Card, Spinner } from "@/ui/surface";
-import { Table, Td, Th } from "@/ui/table";
+import { Badge, Card } from "@/ui/surface";
+import { ListView } from "@/ui/list-view";
+import { Td, Th } from "@/ui/table";
 
 export function UsersPage({ selfId }: { selfId: string }) {
   const trpc = useTRPC();
@@ -20,50 +21,46 @@ export function UsersPage({ selfId }: { selfId: string }) {
     <div className="space-y-6">
       <h1 className="text-2xl font-semibold">Accounts</h1>
       <NewAccount onCreated={refresh} />
-      {users.isPending && <Spinner />}
-      <Problem error={users.error ?? setRole.error ?? setDisabled.error} />
-      {users.data && (
-        <Table>
-          <thead>
-            <tr>
-              <Th>Name</Th>
-              <Th>Email</Th>
-              <Th>System role</Th>
-              <Th>State</Th>
-              <Th className="text-right">Actions</Th>
-            </tr>
-          </thead>
-          <tbody>
-            {users.data.map((u) => (
-              <tr key={u.id}>
-                <Td className="font-medium">{u.name}</Td>
-                <Td>{u.email}</Td>
-                <Td>
-                  <NativeSelect
-                    aria-label={`System role of ${u.name}`}
-                    className="w-44"
-                    value={u.role}
-                    disabled={u.id === selfId}
-                    onChange={(e) => setRole.mutate({ userId: u.id, role: e.target.value as SystemRole })}
-                  >
-                    {SYSTEM_ROLES.map((r) => (
-                      <option key={r}>{r}</option>
-                    ))}
-                  </NativeSelect>
-                </Td>
-                <Td>{u.disabled ? <Badge tone="red">disabled</Badge> : <Badge tone="green">active</Badge>}</Td>
-                <Td className="text-right">
-                  {u.id !== selfId && (
-                    <Button variant="ghost" size="sm" onClick={() => setDisabled.mutate({ userId: u.id, disabled: !u.disabled })}>
-                      {u.disabled ? `Enable ${u.name}` : `Disable ${u.name}`}
-                    </Button>
-                  )}
-                </Td>
-              </tr>
-            ))}
-          </tbody>
-        </Table>
-      )}
+      <ListView
+        query={users}
+        problem={setRole.error ?? setDisabled.error}
+        columns={
+          <>
+            <Th>Name</Th>
+            <Th>Email</Th>
+            <Th>System role</Th>
+            <Th>State</Th>
+            <Th className="text-right">Actions</Th>
+          </>
+        }
+        row={(u) => (
+          <tr key={u.id}>
+            <Td className="font-medium">{u.name}</Td>
+            <Td>{u.email}</Td>
+            <Td>
+              <NativeSelect
+                aria-label={`System role of ${u.name}`}
+                className="w-44"
+                value={u.role}
+                disabled={u.id === selfId}
+                onChange={(e) => setRole.mutate({ userId: u.id, role: e.target.value as SystemRole })}
+              >
+                {SYSTEM_ROLES.map((r) => (
+                  <option key={r}>{r}</option>
+                ))}
+              </NativeSelect>
+            </Td>
+            <Td>{u.disabled ? <Badge tone="red">disabled</Badge> : <Badge tone="green">active</Badge>}</Td>
+            <Td className="text-right">
+              {u.id !== selfId && (
+                <Button variant="ghost" size="sm" onClick={() => setDisabled.mutate({ userId: u.id, disabled: !u.disabled })}>
+                  {u.disabled ? `Enable ${u.name}` : `Disable ${u.name}`}
+                </Button>
+              )}
+            </Td>
+          </tr>
+        )}
+      />
     </div>
   );
 }

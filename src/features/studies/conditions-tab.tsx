@@ -7,8 +7,9 @@ import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Field, Input, NativeSelect } from "@/ui/field";
 import { fieldError, Problem } from "@/ui/problem";
-import { Card, EmptyState, Spinner } from "@/ui/surface";
-import { Table, Td, Th } from "@/ui/table";
+import { Card, EmptyState } from "@/ui/surface";
+import { ListView } from "@/ui/list-view";
+import { Td, Th } from "@/ui/table";
 
 const STRATEGY_HELP: Record<(typeof ASSIGNMENT_STRATEGIES)[number], string> = {
   fixed: "You choose each participant's condition.",
@@ -86,33 +87,29 @@ export function ConditionsTab({ studyId, role, assignment }: { studyId: string; 
           {create.error && !fieldError(create.error, "name") && <Problem error={create.error} />}
         </Card>
       )}
-      {list.isPending && <Spinner />}
-      <Problem error={list.error ?? update.error} />
-      {list.data?.length === 0 && <EmptyState title="No conditions yet.">A study with one condition needs none.</EmptyState>}
-      {!!list.data?.length && (
-        <Table>
-          <thead>
-            <tr>
-              <Th>Condition</Th>
-              <Th>Experiment</Th>
-              <Th>Robot</Th>
-              <Th>Participants</Th>
-            </tr>
-          </thead>
-          <tbody>
-            {list.data.map((c) => (
-              <tr key={c.id}>
-                <Td className="font-medium">{c.name}</Td>
-                <Td>{c.experimentName}</Td>
-                <Td>
-                  <code className="text-xs">{c.robotPluginId}</code>
-                </Td>
-                <Td>{c.participantCount}</Td>
-              </tr>
-            ))}
-          </tbody>
-        </Table>
-      )}
+      <ListView
+        query={list}
+        problem={update.error}
+        empty={<EmptyState title="No conditions yet.">A study with one condition needs none.</EmptyState>}
+        columns={
+          <>
+            <Th>Condition</Th>
+            <Th>Experiment</Th>
+            <Th>Robot</Th>
+            <Th>Participants</Th>
+          </>
+        }
+        row={(c) => (
+          <tr key={c.id}>
+            <Td className="font-medium">{c.name}</Td>
+            <Td>{c.experimentName}</Td>
+            <Td>
+              <code className="text-xs">{c.robotPluginId}</code>
+            </Td>
+            <Td>{c.participantCount}</Td>
+          </tr>
+        )}
+      />
     </div>
   );
 }

@@ -10,7 +10,8 @@ import { Dialog } from "@/ui/dialog";
 import { Field, Input, NativeSelect, Textarea } from "@/ui/field";
 import { fieldError, Problem } from "@/ui/problem";
 import { Badge, EmptyState, Spinner } from "@/ui/surface";
-import { Table, Td, Th } from "@/ui/table";
+import { ListView } from "@/ui/list-view";
+import { Td, Th } from "@/ui/table";
 
 export function ExperimentsTab({ studyId, role }: { studyId: string; role: StudyRole }) {
   const trpc = useTRPC();
@@ -30,56 +31,52 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
           <ImportExperimentDialog studyId={studyId} onImported={(id) => router.push(`/experiments/${id}`)} />
         </div>
       )}
-      {experiments.isPending && <Spinner />}
-      <Problem error={experiments.error ?? publish.error ?? rehearse.error} />
-      {experiments.data?.length === 0 && <EmptyState title="No experiments yet." />}
-      {!!experiments.data?.length && (
-        <Table>
-          <thead>
-            <tr>
-              <Th>Experiment</Th>
-              <Th>Robot</Th>
-              <Th>Steps</Th>
-              <Th>Published</Th>
-              <Th className="text-right">Actions</Th>
-            </tr>
-          </thead>
-          <tbody>
-            {experiments.data?.map((e) => (
-              <tr key={e.id}>
-                <Td>
-                  <Link href={`/experiments/${e.id}`} className="font-medium text-brand-700 hover:underline">
-                    {e.name}
-                  </Link>
-                  <div className="text-xs text-slate-500">{e.description}</div>
-                </Td>
-                <Td>
-                  <code className="text-xs">{e.robotPluginId}</code>
-                </Td>
-                <Td>{e.stepCount}</Td>
-                <Td>{e.latestVersion ? <Badge tone="green">version {e.latestVersion}</Badge> : <Badge>draft only</Badge>}</Td>
-                <Td className="space-x-2 text-right">
-                  <Button variant="ghost" size="sm" asChild>
-                    <Link href={`/experiments/${e.id}`} aria-label={`${edit ? "Design" : "Open"} ${e.name}`}>
-                      {edit ? "Design" : "Open"}
-                    </Link>
-                  </Button>
-                  {canRehearse && (
-                    <Button variant="ghost" size="sm" aria-label={`Rehearse ${e.name}`} disabled={rehearse.isPending} onClick={() => rehearse.mutate({ experimentId: e.id })}>
-                      Rehearse
-                    </Button>
-                  )}
-                  {edit && (
-                    <Button variant="secondary" size="sm" aria-label={`Publish ${e.name}`} disabled={publish.isPending} onClick={() => publish.mutate({ experimentId: e.id })}>
-                      Publish
-                    </Button>
-                  )}
-                </Td>
-              </tr>
-            ))}
-          </tbody>
-        </Table>
-      )}
+      <ListView
+        query={experiments}
+        problem={publish.error ?? rehearse.error}
+        empty={<EmptyState title="No experiments yet." />}
+        columns={
+          <>
+            <Th>Experiment</Th>
+            <Th>Robot</Th>
+            <Th>Steps</Th>
+            <Th>Published</Th>
+            <Th className="text-right">Actions</Th>
+          </>
+        }
+        row={(e) => (
+          <tr key={e.id}>
+            <Td>
+              <Link href={`/experiments/${e.id}`} className="font-medium text-brand-700 hover:underline">
+                {e.name}
+              </Link>
+              <div className="text-xs text-slate-500">{e.description}</div>
+            </Td>
+            <Td>
+              <code className="text-xs">{e.robotPluginId}</code>
+            </Td>
+            <Td>{e.stepCount}</Td>
+            <Td>{e.latestVersion ? <Badge tone="green">version {e.latestVersion}</Badge> : <Badge>draft only</Badge>}</Td>
+            <Td className="space-x-2 text-right">
+              <Button variant="ghost" size="sm" asChild>
+                <Link href={`/experiments/${e.id}`} aria-label={`${edit ? "Design" : "Open"} ${e.name}`}>
+                  {edit ? "Design" : "Open"}
+                </Link>
+              </Button>
+              {canRehearse && (
+                <Button variant="ghost" size="sm" aria-label={`Rehearse ${e.name}`} disabled={rehearse.isPending} onClick={() => rehearse.mutate({ experimentId: e.id })}>
+                  Rehearse
+                </Button>
+              )}
+              {edit && (
+                <Button variant="secondary" size="sm" aria-label={`Publish ${e.name}`} disabled={publish.isPending} onClick={() => publish.mutate({ experimentId: e.id })}>
+                  Publish
+                </Button>
+              )}
+            </Td>
+          </tr>
+        )}
+      />
     </div>
   );
 }

@@ -6,8 +6,9 @@ import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Field, Input, NativeSelect } from "@/ui/field";
 import { fieldError, Problem } from "@/ui/problem";
-import { Badge, Card, ROLE_TONE, Spinner } from "@/ui/surface";
-import { Table, Td, Th } from "@/ui/table";
+import { Badge, Card, ROLE_TONE } from "@/ui/surface";
+import { ListView } from "@/ui/list-view";
+import { Td, Th } from "@/ui/table";
 
 const ROLE_HELP: Record<StudyRole, string> = {
   owner: "manages members and everything else",
@@ -28,53 +29,49 @@ export function MembersTab({ studyId, role }: { studyId: string; role: StudyRole
   return (
     <div className="space-y-6">
       {manage && <InviteForm studyId={studyId} onAdded={refresh} />}
-      {members.isPending && <Spinner />}
-      <Problem error={members.error ?? changeRole.error ?? remove.error} />
-      {members.data && (
-        <Table>
-          <thead>
-            <tr>
-              <Th>Name</Th>
-              <Th>Email</Th>
-              <Th>Role</Th>
-              {manage && <Th className="text-right">Actions</Th>}
-            </tr>
-          </thead>
-          <tbody>
-            {members.data.map((m) => (
-              <tr key={m.userId}>
-                <Td className="font-medium">{m.name}</Td>
-                <Td>{m.email}</Td>
-                <Td>
-                  {manage ? (
-                    <NativeSelect
-                      aria-label={`Role of ${m.name}`}
-                      className="w-40"
-                      value={m.role}
-                      onChange={(e) => changeRole.mutate({ studyId, userId: m.userId, role: e.target.value as StudyRole })}
-                    >
-                      {STUDY_ROLES.map((r) => (
-                        <option key={r} value={r}>
-                          {r}
-                        </option>
-                      ))}
-                    </NativeSelect>
-                  ) : (
-                    <Badge tone={ROLE_TONE[m.role]}>{m.role}</Badge>
-                  )}
-                </Td>
-                {manage && (
-                  <Td className="text-right">
-                    <Button variant="ghost" size="sm" aria-label={`Remove ${m.name}`} onClick={() => remove.mutate({ studyId, userId: m.userId })}>
-                      Remove
-                    </Button>
-                  </Td>
-                )}
-              </tr>
-            ))}
-          </tbody>
-        </Table>
-      )}
+      <ListView
+        query={members}
+        problem={changeRole.error ?? remove.error}
+        columns={
+          <>
+            <Th>Name</Th>
+            <Th>Email</Th>
+            <Th>Role</Th>
+            {manage && <Th className="text-right">Actions</Th>}
+          </>
+        }
+        row={(m) => (
+          <tr key={m.userId}>
+            <Td className="font-medium">{m.name}</Td>
+            <Td>{m.email}</Td>
+            <Td>
+              {manage ? (
+                <NativeSelect
+                  aria-label={`Role of ${m.name}`}
+                  className="w-40"
+                  value={m.role}
+                  onChange={(e) => changeRole.mutate({ studyId, userId: m.userId, role: e.target.value as StudyRole })}
+                >
+                  {STUDY_ROLES.map((r) => (
+                    <option key={r} value={r}>
+                      {r}
+                    </option>
+                  ))}
+                </NativeSelect>
+              ) : (
+                <Badge tone={ROLE_TONE[m.role]}>{m.role}</Badge>
+              )}
+            </Td>
+            {manage && (
+              <Td className="text-right">
+                <Button variant="ghost" size="sm" aria-label={`Remove ${m.name}`} onClick={() => remove.mutate({ studyId, userId: m.userId })}>
+                  Remove
+                </Button>
+              </Td>
+            )}
+          </tr>
+        )}
+      />
     </div>
   );
 }

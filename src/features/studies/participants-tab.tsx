@@ -8,8 +8,9 @@ import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Field, Input, NativeSelect } from "@/ui/field";
 import { fieldError, Problem } from "@/ui/problem";
-import { Badge, Card, EmptyState, Spinner, STATUS_TONE } from "@/ui/surface";
-import { Table, Td, Th } from "@/ui/table";
+import { Badge, Card, EmptyState, STATUS_TONE } from "@/ui/surface";
+import { ListView } from "@/ui/list-view";
+import { Td, Th } from "@/ui/table";
 
 const CONSENT = ["pending", "given", "declined", "withdrawn"] as const;
 type Consent = (typeof CONSENT)[number];
@@ -33,97 +34,93 @@ export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId:
   return (
     <div className="space-y-6">
       {manage && <AddParticipant studyId={studyId} fields={settings.demographics} onAdded={refresh} />}
-      {participants.isPending && <Spinner />}
-      <Problem error={participants.error ?? update.error ?? assign.error ?? reinstate.error} />
-      {participants.data?.length === 0 && <EmptyState title="No participants yet." />}
-      {!!participants.data?.length && (
-        <Table>
-          <thead>
-            <tr>
-              <Th>Code</Th>
-              <Th>Consent</Th>
-              <Th>Consent date</Th>
-              <Th>Document</Th>
-              {settings.demographics.length > 0 && <Th>Demographics</Th>}
-              <Th>Condition</Th>
-              <Th>Trials</Th>
-              {manage && <Th className="text-right">Questionnaire</Th>}
-            </tr>
-          </thead>
-          <tbody>
-            {participants.data.map((p) => (
-              <tr key={p.id}>
-                <Td className="font-mono">{p.code}</Td>
-                <Td>
-                  {manage && p.consentStatus !== "withdrawn" ? (
-                    <NativeSelect
-                      aria-label={`Consent of ${p.code}`}
-                      className="w-36"
-                      value={p.consentStatus}
-                      onChange={(e) => {
-                        const consentStatus = e.target.value as Consent;
-                        update.mutate({ participantId: p.id, consentStatus, consentDate: consentStatus === "given" ? new Date() : p.consentDate });
-                      }}
-                    >
-                      {CONSENT.map((c) => (
-                        <option key={c}>{c}</option>
-                      ))}
-                    </NativeSelect>
-                  ) : (
-                    <Badge tone={STATUS_TONE[p.consentStatus]}>{p.consentStatus}</Badge>
-                  )}
-                  {p.consentStatus === "withdrawn" && studyRoleMay(role, "participant.reinstate") && (
-                    <Button variant="ghost" className="ml-2" onClick={() => askToReinstate(p.id, p.code)}>
-                      Reinstate…
-                    </Button>
-                  )}
-                </Td>
-                <Td>
-                  {p.consentDate ? new Date(p.consentDate).toLocaleDateString() : "—"}
-                  {p.consentStatus === "withdrawn" && <div className="text-xs text-red-700">data excluded from analysis and exports</div>}
-                </Td>
-                <Td className="text-xs">{p.consentVersion ?? "—"}</Td>
-                {settings.demographics.length > 0 && (
-                  <Td className="text-xs text-slate-600">
-                    {settings.demographics
-                      .filter((f) => (p.demographics as Record<string, unknown>)[f.key] !== undefined)
-                      .map((f) => `${f.label}: ${String((p.demographics as Record<string, unknown>)[f.key])}`)
-                      .join(" · ") || "—"}
-                  </Td>
-                )}
-                <Td>
-                  {blinded ? (
-                    <span className="text-slate-400">hidden</span>
-                  ) : p.conditionId ? (
-                    conditionName(p.conditionId)
-                  ) : manage && conditions.data?.length && strategy === "fixed" ? (
-                    <NativeSelect aria-label={`Condition of ${p.code}`} className="w-48" value="" onChange={(e) => assign.mutate({ participantId: p.id, conditionId: e.target.value })}>
-                      <option value="">Choose…</option>
-                      {conditions.data.map((c) => (
-                        <option key={c.id} value={c.id}>
-                          {c.name}
-                        </option>
-                      ))}
-                    </NativeSelect>
-                  ) : manage && conditions.data?.length ? (
-                    <Button size="sm" variant="secondary" aria-label={`Assign ${p.code}`} onClick={() => assign.mutate({ participantId: p.id })}>
-                      Assign ({strategy})
-                    </Button>
-                  ) : (
-                    "—"
-                  )}
-                </Td>
-                <Td>{p.trialCount}</Td>
-                {manage && (
-                  <Td className="text-right">
-                    <SendLinkDialog studyId={studyId} participantId={p.id} code={p.code} />
-                  </Td>
-                )}
-              </tr>
-            ))}
-          </tbody>
-        </Table>
-      )}
+      <ListView
+        query={participants}
+        problem={update.error ?? assign.error ?? reinstate.error}
+        empty={<EmptyState title="No participants yet." />}
+        columns={
+          <>
+            <Th>Code</Th>
+            <Th>Consent</Th>
+            <Th>Consent date</Th>
+            <Th>Document</Th>
+            {settings.demographics.length > 0 && <Th>Demographics</Th>}
+            <Th>Condition</Th>
+            <Th>Trials</Th>
+            {manage && <Th className="text-right">Questionnaire</Th>}
+          </>
+        }
+        row={(p) => (
+          <tr key={p.id}>
+            <Td className="font-mono">{p.code}</Td>
+            <Td>
+              {manage && p.consentStatus !== "withdrawn" ? (
+                <NativeSelect
+                  aria-label={`Consent of ${p.code}`}
+                  className="w-36"
+                  value={p.consentStatus}
+                  onChange={(e) => {
+                    const consentStatus = e.target.value as Consent;
+                    update.mutate({ participantId: p.id, consentStatus, consentDate: consentStatus === "given" ? new Date() : p.consentDate });
+                  }}
+                >
+                  {CONSENT.map((c) => (
+                    <option key={c}>{c}</option>
+                  ))}
+                </NativeSelect>
+              ) : (
+                <Badge tone={STATUS_TONE[p.consentStatus]}>{p.consentStatus}</Badge>
+              )}
+              {p.consentStatus === "withdrawn" && studyRoleMay(role, "participant.reinstate") && (
+                <Button variant="ghost" className="ml-2" onClick={() => askToReinstate(p.id, p.code)}>
+                  Reinstate…
+                </Button>
+              )}
+            </Td>
+            <Td>
+              {p.consentDate ? new Date(p.consentDate).toLocaleDateString() : "—"}
+              {p.consentStatus === "withdrawn" && <div className="text-xs text-red-700">data excluded from analysis and exports</div>}
+            </Td>
+            <Td className="text-xs">{p.consentVersion ?? "—"}</Td>
+            {settings.demographics.length > 0 && (
+              <Td className="text-xs text-slate-600">
+                {settings.demographics
+                  .filter((f) => (p.demographics as Record<string, unknown>)[f.key] !== undefined)
+                  .map((f) => `${f.label}: ${String((p.demographics as Record<string, unknown>)[f.key])}`)
+                  .join(" · ") || "—"}
+              </Td>
+            )}
+            <Td>
+              {blinded ? (
+                <span className="text-slate-400">hidden</span>
+              ) : p.conditionId ? (
+                conditionName(p.conditionId)
+              ) : manage && conditions.data?.length && strategy === "fixed" ? (
+                <NativeSelect aria-label={`Condition of ${p.code}`} className="w-48" value="" onChange={(e) => assign.mutate({ participantId: p.id, conditionId: e.target.value })}>
+                  <option value="">Choose…</option>
+                  {conditions.data.map((c) => (
+                    <option key={c.id} value={c.id}>
+                      {c.name}
+                    </option>
+                  ))}
+                </NativeSelect>
+              ) : manage && conditions.data?.length ? (
+                <Button size="sm" variant="secondary" aria-label={`Assign ${p.code}`} onClick={() => assign.mutate({ participantId: p.id })}>
+                  Assign ({strategy})
+                </Button>
+              ) : (
+                "—"
+              )}
+            </Td>
+            <Td>{p.trialCount}</Td>
+            {manage && (
+              <Td className="text-right">
+                <SendLinkDialog studyId={studyId} participantId={p.id} code={p.code} />
+              </Td>
+            )}
+          </tr>
+        )}
+      />
     </div>
   );
 }

@@ -8,9 +8,9 @@ import { studyRoleMay, type StudyRole } from "@/core/access/policy";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { NativeSelect } from "@/ui/field";
-import { Problem } from "@/ui/problem";
-import { Badge, EmptyState, Spinner } from "@/ui/surface";
-import { Table, Td, Th } from "@/ui/table";
+import { Badge, EmptyState } from "@/ui/surface";
+import { ListView } from "@/ui/list-view";
+import { Td, Th } from "@/ui/table";
 
 const TIMING = { before: "Before the trial", after: "After the trial", none: "Not attached (links by hand)" } as const;
 
@@ -37,55 +37,51 @@ export function QuestionnairesTab({ studyId, role }: { studyId: string; role: St
           </Button>
         </div>
       )}
-      {list.isPending && <Spinner />}
-      <Problem error={list.error ?? create.error ?? save.error ?? publish.error} />
-      {list.data?.length === 0 && <EmptyState title="No questionnaires yet.">Add a standard scale, or build your own with a consent form, Likert items and open questions.</EmptyState>}
-      {!!list.data?.length && (
-        <Table>
-          <thead>
-            <tr>
-              <Th>Questionnaire</Th>
-              <Th>When</Th>
-              <Th>Published</Th>
-              <Th className="text-right">Actions</Th>
-            </tr>
-          </thead>
-          <tbody>
-            {list.data.map((q) => (
-              <tr key={q.id}>
-                <Td>
-                  <div className="font-medium">{q.name}</div>
-                  {q.instrument && <div className="text-xs text-slate-500">standard instrument, scored as published</div>}
-                </Td>
-                <Td>
-                  {edit ? (
-                    <NativeSelect aria-label={`When ${q.name} is filled in`} className="w-64" value={q.timing} onChange={(e) => save.mutate({ questionnaireId: q.id, timing: e.target.value as keyof typeof TIMING })}>
-                      {Object.entries(TIMING).map(([value, label]) => (
-                        <option key={value} value={value}>
-                          {label}
-                        </option>
-                      ))}
-                    </NativeSelect>
-                  ) : (
-                    TIMING[q.timing]
-                  )}
-                </Td>
-                <Td>{q.latestVersion ? <Badge tone="green">version {q.latestVersion}</Badge> : <Badge>draft only</Badge>}</Td>
-                <Td className="space-x-2 text-right">
-                  <Button variant="ghost" size="sm" asChild>
-                    <Link href={`/questionnaires/${q.id}`}>{edit ? "Edit" : "Open"}</Link>
-                  </Button>
-                  {studyRoleMay(role, "version.publish") && (
-                    <Button variant="secondary" size="sm" aria-label={`Publish ${q.name}`} disabled={publish.isPending} onClick={() => publish.mutate({ questionnaireId: q.id })}>
-                      Publish
-                    </Button>
-                  )}
-                </Td>
-              </tr>
-            ))}
-          </tbody>
-        </Table>
-      )}
+      <ListView
+        query={list}
+        problem={create.error ?? save.error ?? publish.error}
+        empty={<EmptyState title="No questionnaires yet.">Add a standard scale, or build your own with a consent form, Likert items and open questions.</EmptyState>}
+        columns={
+          <>
+            <Th>Questionnaire</Th>
+            <Th>When</Th>
+            <Th>Published</Th>
+            <Th className="text-right">Actions</Th>
+          </>
+        }
+        row={(q) => (
+          <tr key={q.id}>
+            <Td>
+              <div className="font-medium">{q.name}</div>
+              {q.instrument && <div className="text-xs text-slate-500">standard instrument, scored as published</div>}
+            </Td>
+            <Td>
+              {edit ? (
+                <NativeSelect aria-label={`When ${q.name} is filled in`} className="w-64" value={q.timing} onChange={(e) => save.mutate({ questionnaireId: q.id, timing: e.target.value as keyof typeof TIMING })}>
+                  {Object.entries(TIMING).map(([value, label]) => (
+                    <option key={value} value={value}>
+                      {label}
+                    </option>
+                  ))}
+                </NativeSelect>
+              ) : (
+                TIMING[q.timing]
+              )}
+            </Td>
+            <Td>{q.latestVersion ? <Badge tone="green">version {q.latestVersion}</Badge> : <Badge>draft only</Badge>}</Td>
+            <Td className="space-x-2 text-right">
+              <Button variant="ghost" size="sm" asChild>
+                <Link href={`/questionnaires/${q.id}`}>{edit ? "Edit" : "Open"}</Link>
+              </Button>
+              {studyRoleMay(role, "version.publish") && (
+                <Button variant="secondary" size="sm" aria-label={`Publish ${q.name}`} disabled={publish.isPending} onClick={() => publish.mutate({ questionnaireId: q.id })}>
+                  Publish
+                </Button>
+              )}
+            </Td>
+          </tr>
+        )}
+      />
     </div>
   );
 }

@@ -8,8 +8,9 @@ import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Field, Input, NativeSelect } from "@/ui/field";
 import { fieldError, Problem } from "@/ui/problem";
-import { Badge, Card, EmptyState, Spinner, STATUS_TONE } from "@/ui/surface";
-import { Table, Td, Th } from "@/ui/table";
+import { Badge, Card, EmptyState, STATUS_TONE } from "@/ui/surface";
+import { ListView } from "@/ui/list-view";
+import { Td, Th } from "@/ui/table";
 
 export function SessionsTab({ studyId, role }: { studyId: string; role: StudyRole }) {
   const trpc = useTRPC();
@@ -23,46 +24,42 @@ export function SessionsTab({ studyId, role }: { studyId: string; role: StudyRol
   return (
     <div className="space-y-6">
       {manage && <ScheduleSession studyId={studyId} onPlanned={refresh} />}
-      {sessions.isPending && <Spinner />}
-      <Problem error={sessions.error ?? remove.error ?? start.error} />
-      {sessions.data?.length === 0 && <EmptyState title="No sessions planned yet.">Plan one for each participant once they are assigned to a condition.</EmptyState>}
-      {!!sessions.data?.length && (
-        <Table>
-          <thead>
-            <tr>
-              <Th>Planned</Th>
-              <Th>Participant</Th>
-              <Th>Condition</Th>
-              <Th>Wizard</Th>
-              <Th>Status</Th>
-              <Th className="text-right">Actions</Th>
-            </tr>
-          </thead>
-          <tbody>
-            {sessions.data.map((s) => (
-              <tr key={s.id}>
-                <Td>{new Date(s.plannedAt).toLocaleString()}</Td>
-                <Td className="font-mono">{s.participantCode}</Td>
-                <Td>{s.conditionName ?? <span className="text-slate-400">hidden</span>}</Td>
-                <Td>{s.wizardName ?? "—"}</Td>
-                <Td>{s.trialStatus ? <Badge tone={STATUS_TONE[s.trialStatus]}>{s.trialStatus.replace("_", " ")}</Badge> : <Badge>planned</Badge>}</Td>
-                <Td className="space-x-2 text-right">
-                  {run && s.trialStatus !== "completed" && s.trialStatus !== "aborted" && (
-                    <Button size="sm" aria-label={`Start the session of ${s.participantCode}`} disabled={start.isPending} onClick={() => start.mutate({ sessionId: s.id })}>
-                      {s.trialId ? "Continue" : "Start"}
-                    </Button>
-                  )}
-                  {manage && !s.trialId && (
-                    <Button size="sm" variant="ghost" aria-label={`Remove the session of ${s.participantCode}`} onClick={() => remove.mutate({ sessionId: s.id })}>
-                      Remove
-                    </Button>
-                  )}
-                </Td>
-              </tr>
-            ))}
-          </tbody>
-        </Table>
-      )}
+      <ListView
+        query={sessions}
+        problem={remove.error ?? start.error}
+        empty={<EmptyState title="No sessions planned yet.">Plan one for each participant once they are assigned to a condition.</EmptyState>}
+        columns={
+          <>
+            <Th>Planned</Th>
+            <Th>Participant</Th>
+            <Th>Condition</Th>
+            <Th>Wizard</Th>
+            <Th>Status</Th>
+            <Th className="text-right">Actions</Th>
+          </>
+        }
+        row={(s) => (
+          <tr key={s.id}>
+            <Td>{new Date(s.plannedAt).toLocaleString()}</Td>
+            <Td className="font-mono">{s.participantCode}</Td>
+            <Td>{s.conditionName ?? <span className="text-slate-400">hidden</span>}</Td>
+            <Td>{s.wizardName ?? "—"}</Td>
+            <Td>{s.trialStatus ? <Badge tone={STATUS_TONE[s.trialStatus]}>{s.trialStatus.replace("_", " ")}</Badge> : <Badge>planned</Badge>}</Td>
+            <Td className="space-x-2 text-right">
+              {run && s.trialStatus !== "completed" && s.trialStatus !== "aborted" && (
+                <Button size="sm" aria-label={`Start the session of ${s.participantCode}`} disabled={start.isPending} onClick={() => start.mutate({ sessionId: s.id })}>
+                  {s.trialId ? "Continue" : "Start"}
+                </Button>
+              )}
+              {manage && !s.trialId && (
+                <Button size="sm" variant="ghost" aria-label={`Remove the session of ${s.participantCode}`} onClick={() => remove.mutate({ sessionId: s.id })}>
+                  Remove
+                </Button>
+              )}
+            </Td>
+          </tr>
+        )}
+      />
     </div>
   );
 }

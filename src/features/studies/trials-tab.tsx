@@ -8,8 +8,9 @@ import { Button } from "@/ui/button";
 import { DownloadLink } from "@/ui/download-link";
 import { Field, NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
-import { Badge, Card, EmptyState, Spinner, STATUS_TONE } from "@/ui/surface";
-import { Table, Td, Th } from "@/ui/table";
+import { Badge, Card, EmptyState, STATUS_TONE } from "@/ui/surface";
+import { ListView } from "@/ui/list-view";
+import { Td, Th } from "@/ui/table";
 import { WizardChoice, wizardIdOf, type WizardChoiceValue } from "./wizard-choice";
 
 export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: StudyRole; blinded: boolean }) {
@@ -24,52 +25,47 @@ export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: S
       {studyRoleMay(role, "data.read") && (
         <DownloadLink href={`/api/studies/${studyId}/export`}>Download the whole study (zip: design, every trial's record, events and ELAN file, questionnaire answers)</DownloadLink>
       )}
-      {trials.isPending && <Spinner />}
-      <Problem error={trials.error} />
-      {trials.data?.length === 0 && <EmptyState title="No trials yet." />}
-      {!!trials.data?.length && (
-        <Table>
-          <thead>
-            <tr>
-              <Th>Participant</Th>
-              <Th>Experiment</Th>
-              <Th>Wizard</Th>
-              <Th>Scores</Th>
-              <Th>Status</Th>
-              <Th>Created</Th>
-              <Th className="text-right">Open</Th>
-            </tr>
-          </thead>
-          <tbody>
-            {trials.data.map((t) => (
-              <tr key={t.id}>
-                <Td className="font-mono">{t.participantCode ?? "—"}</Td>
-                <Td>
-                  {t.experimentName} {t.isRehearsal ? <Badge tone="amber">rehearsal</Badge> : t.version !== null && <span className="text-xs text-slate-500">v{t.version}</span>}
-                  {t.participantWithdrawn && <div className="text-xs text-red-700">withdrawn: excluded from analysis</div>}
-                </Td>
-                {/* No wizard yet: the first of the study's wizards to start it runs it. */}
-                <Td>{t.wizardId === null ? <span className="text-slate-500">any wizard</span> : (t.wizardName ?? "—")}</Td>
-                <Td className="text-xs">{t.scores.map((s) => `${s.name}: ${Number.isInteger(s.score) ? s.score : s.score.toFixed(2)}`).join(" · ") || "—"}</Td>
-                <Td>
-                  <Badge tone={STATUS_TONE[t.status]}>{t.status.replace("_", " ")}</Badge>
-                </Td>
-                <Td>{new Date(t.createdAt).toLocaleString()}</Td>
-                <Td className="text-right">
-                  <Link className="font-medium text-brand-600 hover:underline" href={`/trials/${t.id}`} aria-label={`${studyRoleMay(role, "trial.run") ? "Run" : "Watch"} trial of ${t.participantCode ?? "no participant"}`}>
-                    {studyRoleMay(role, "trial.run") ? "Run" : "Watch"}
-                  </Link>
-                  {(t.status === "completed" || t.status === "aborted") && !t.participantWithdrawn && studyRoleMay(role, "data.read") && (
-                    <Link className="ml-3 font-medium text-brand-600 hover:underline" href={`/trials/${t.id}/analysis`} aria-label={`Analysis of the trial of ${t.participantCode ?? "no participant"}`}>
-                      Analysis
-                    </Link>
-                  )}
-                </Td>
-              </tr>
-            ))}
-          </tbody>
-        </Table>
-      )}
+      <ListView
+        query={trials}
+        empty={<EmptyState title="No trials yet." />}
+        columns={
+          <>
+            <Th>Participant</Th>
+            <Th>Experiment</Th>
+            <Th>Wizard</Th>
+            <Th>Scores</Th>
+            <Th>Status</Th>
+            <Th>Created</Th>
+            <Th className="text-right">Open</Th>
+          </>
+        }
+        row={(t) => (
+          <tr key={t.id}>
+            <Td className="font-mono">{t.participantCode ?? "—"}</Td>
+            <Td>
+              {t.experimentName} {t.isRehearsal ? <Badge tone="amber">rehearsal</Badge> : t.version !== null && <span className="text-xs text-slate-500">v{t.version}</span>}
+              {t.participantWithdrawn && <div className="text-xs text-red-700">withdrawn: excluded from analysis</div>}
+            </Td>
+            {/* No wizard yet: the first of the study's wizards to start it runs it. */}
+            <Td>{t.wizardId === null ? <span className="text-slate-500">any wizard</span> : (t.wizardName ?? "—")}</Td>
+            <Td className="text-xs">{t.scores.map((s) => `${s.name}: ${Number.isInteger(s.score) ? s.score : s.score.toFixed(2)}`).join(" · ") || "—"}</Td>
+            <Td>
+              <Badge tone={STATUS_TONE[t.status]}>{t.status.replace("_", " ")}</Badge>
+            </Td>
+            <Td>{new Date(t.createdAt).toLocaleString()}</Td>
+            <Td className="text-right">
+              <Link className="font-medium text-brand-600 hover:underline" href={`/trials/${t.id}`} aria-label={`${studyRoleMay(role, "trial.run") ? "Run" : "Watch"} trial of ${t.participantCode ?? "no participant"}`}>
+                {studyRoleMay(role, "trial.run") ? "Run" : "Watch"}
+              </Link>
+              {(t.status === "completed" || t.status === "aborted") && !t.participantWithdrawn && studyRoleMay(role, "data.read") && (
+                <Link className="ml-3 font-medium text-brand-600 hover:underline" href={`/trials/${t.id}/analysis`} aria-label={`Analysis of the trial of ${t.participantCode ?? "no participant"}`}>
+                  Analysis
+                </Link>
+              )}
+            </Td>
+          </tr>
+        )}
+      />
     </div>
   );
 }

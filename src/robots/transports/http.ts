@@ -2,20 +2,21 @@
 // built from its templates; 2xx is completed, anything else failed with the
 // robot's answer, no answer within the plugin's timeout timed out. The API's
 // base URL is probed as a heartbeat, so a robot gone away is reported at once.
-import { httpRequest, validateParameters, withDefaults, type PluginAction } from "../../core/plugins";
-import { DEFAULT_TIMEOUT_MS, untilDeadline, type DispatchOutcome, type Health, type Transport } from "./transport";
+import { httpRequest, type PluginAction } from "../../core/plugins";
+import { checkedParameters, LinkedTransport, timeoutOf, untilDeadline } from "./link";
+import type { DispatchOutcome } from "./transport";
 
 export interface HttpOptions {
   baseUrl: string;
   heartbeatEveryMs?: number;
 }
 
-export class HttpTransport implements Transport {
-  private status: Health = { state: "disconnected", since: Date.now(), attempts: 0, lastHeartbeatMs: null };
-  private readonly listeners = new Set<(health: Health) => void>();
+export class HttpTransport extends LinkedTransport {
   private heartbeat: NodeJS.Timeout | null = null;
 
-  constructor(private readonly options: HttpOptions) {}
+  constructor(private readonly options: HttpOptions) {
+    super();
+  }
 
   async connect() {
     if (!(await this.probe())) throw new Error(`cannot reach the robot's API at ${this.options.baseUrl}`);
@@ -24,12 +25,12 @@ export class HttpTransport implements Transport {
 
   async dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome> {
     const started = Date.now();
-    const problems = validateParameters(action.parameterSchema, parameters);
-    if (problems.length) return { status: "failed", reason: problems.map((p) => p.message).join("; ") };
+    const checked = checkedParameters(action, parameters);
+    if (!checked.ok) return checked.outcome;
     if (!action.http) return { status: "failed", reason: `action "${action.id}" has no HTTP request` };
-    const request = httpRequest(action.http, this.options.baseUrl, withDefaults(action.parameterSchema, parameters));
+    const request = httpRequest(action.http, this.options.baseUrl, checked.parameters);
     if (!request.ok) return { status: "failed", reason: request.reason };
-    const deadline = started + (action.timeout ?? DEFAULT_TIMEOUT_MS);
+    const deadline = started + timeoutOf(action);
     const send = () =>
       fetch(request.url, {
         method: request.method,
@@ -59,20 +60,6 @@ export class HttpTransport implements Transport {
     }
   }
 
-  /** REST robots have no topics to follow. */
-  subscribe() {
-    return () => {};
-  }
-
-  health(): Health {
-    return { ...this.status };
-  }
-
-  onHealth(listener: (health: Health) => void) {
-    this.listeners.add(listener);
-    return () => void this.listeners.delete(listener);
-  }
-
   async close() {
     if (this.heartbeat) clearInterval(this.heartbeat);
     this.setState("closed");
@@ -88,14 +75,8 @@ export class HttpTransport implements Transport {
       return true;
     } catch {
       this.status.attempts++;
-      if (this.status.state !== "closed") this.setState("disconnected");
+      this.setState("disconnected");
       return false;
     }
-  }
-
-  private setState(state: Health["state"]) {
-    if (this.status.state === state || this.status.state === "closed") return;
-    this.status = { ...this.status, state, since: Date.now() };
-    this.listeners.forEach((listener) => listener(this.health()));
   }
 }

@@ -8,15 +8,16 @@
 // Server state belongs to one connection (transcript 09): after every
 // reconnect a fresh roslib.Ros is made and state subscriptions are re-sent.
 import * as ROSLIB from "roslib";
-import { outgoingFor, validateParameters, withDefaults, type PluginAction } from "../../core/plugins";
-import { DEFAULT_TIMEOUT_MS, type DispatchOutcome, type Health, type Transport } from "./transport";
+import { outgoingFor, type PluginAction } from "../../core/plugins";
+import { backoffDelay, checkedParameters, LinkedTransport, RECONNECT_BACKOFF, timeoutOf, unreached, type Backoff } from "./link";
+import type { DispatchOutcome } from "./transport";
 
 export interface RosbridgeOptions {
   url: string;
   heartbeatEveryMs?: number;
   heartbeatTimeoutMs?: number;
-  /** Reconnect delays grow from the first to the last: 250 ms doubling to 5 s by default. */
-  backoffMs?: { first: number; max: number };
+  /** Reconnect delays grow from the first to the last (default: RECONNECT_BACKOFF). */
+  backoffMs?: Backoff;
 }
 
 const HEARTBEAT_SERVICE = "/hristudio/heartbeat";
@@ -30,17 +31,17 @@ interface StateSubscription {
   current?: ROSLIB.Topic;
 }
 
-export class RosbridgeTransport implements Transport {
+export class RosbridgeTransport extends LinkedTransport {
   private ros: ROSLIB.Ros | null = null;
   private topics = new Map<string, ROSLIB.Topic>();
   private readonly subscriptions = new Set<StateSubscription>();
-  private readonly listeners = new Set<(health: Health) => void>();
-  private status: Health = { state: "disconnected", since: Date.now(), attempts: 0, lastHeartbeatMs: null };
   private timers = new Set<NodeJS.Timeout>();
   private heartbeat: NodeJS.Timeout | null = null;
   private waiting = new Set<() => void>();
 
-  constructor(private readonly options: RosbridgeOptions) {}
+  constructor(private readonly options: RosbridgeOptions) {
+    super();
+  }
 
   connect(): Promise<void> {
     if (this.status.state === "closed") return Promise.reject(new Error("transport closed"));
@@ -50,27 +51,16 @@ export class RosbridgeTransport implements Transport {
     });
   }
 
-  health(): Health {
-    return { ...this.status };
-  }
-
-  onHealth(listener: (health: Health) => void) {
-    this.listeners.add(listener);
-    return () => void this.listeners.delete(listener);
-  }
-
   async dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome> {
     const started = Date.now();
-    const timeoutMs = action.timeout ?? DEFAULT_TIMEOUT_MS;
-    const problems = validateParameters(action.parameterSchema, parameters);
-    if (problems.length) return { status: "failed", reason: problems.map((p) => p.message).join("; ") };
-    const outgoing = outgoingFor(action, withDefaults(action.parameterSchema, parameters));
+    const timeoutMs = timeoutOf(action);
+    const checked = checkedParameters(action, parameters);
+    if (!checked.ok) return checked.outcome;
+    const outgoing = outgoingFor(action, checked.parameters);
     if (outgoing.kind === "none") return { status: "failed", reason: outgoing.reason };
     if (outgoing.kind === "ssh") return { status: "failed", reason: `action "${action.id}" runs over SSH, not rosbridge` };
-    // A retryable action waits for the link to come back within its timeout;
-    // anything else fails at once rather than arriving late.
     const ros = this.status.state === "connected" ? this.ros : action.retryable ? await this.connectedWithin(started + timeoutMs) : null;
-    if (!ros) return action.retryable ? { status: "timed_out", afterMs: Date.now() - started } : { status: "failed", reason: "robot not connected" };
+    if (!ros) return unreached(action, started, "robot not connected");
     if (outgoing.kind === "publish") {
       this.topic(ros, outgoing.topic, outgoing.messageType).publish(outgoing.message);
       return { status: "completed", detail: { topic: outgoing.topic } };
@@ -78,7 +68,7 @@ export class RosbridgeTransport implements Transport {
     return this.call(ros, outgoing.service, outgoing.serviceType, outgoing.args, started + timeoutMs);
   }
 
-  subscribe(topic: string, messageType: string, onMessage: (message: unknown) => void, options: { throttleRate?: number } = {}) {
+  override subscribe(topic: string, messageType: string, onMessage: (message: unknown) => void, options: { throttleRate?: number } = {}) {
     const subscription: StateSubscription = { topic, messageType, onMessage, throttleRate: options.throttleRate ?? 0 };
     this.subscriptions.add(subscription);
     if (this.ros && this.status.state === "connected") this.listen(this.ros, subscription);
@@ -125,9 +115,7 @@ export class RosbridgeTransport implements Transport {
 
   private reconnectLater() {
     if (this.status.state === "closed") return;
-    const { first, max } = this.options.backoffMs ?? { first: 250, max: 5000 };
-    const delay = Math.min(max, first * 2 ** this.status.attempts);
-    this.status.attempts++;
+    const delay = backoffDelay(this.status.attempts++, this.options.backoffMs ?? RECONNECT_BACKOFF);
     const timer = setTimeout(() => {
       this.timers.delete(timer);
       if (this.status.state !== "closed") this.open();
@@ -194,11 +182,5 @@ export class RosbridgeTransport implements Transport {
       this.waiting.add(check);
       check();
     });
-  }
-
-  private setState(state: Health["state"]) {
-    if (this.status.state === state) return;
-    this.status = { ...this.status, state, since: Date.now() };
-    this.listeners.forEach((listener) => listener(this.health()));
   }
 }

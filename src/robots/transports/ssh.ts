@@ -3,8 +3,9 @@
 // command. Exit status 0 is completed; anything else failed with stderr.
 import { readFileSync } from "node:fs";
 import { Client } from "ssh2";
-import { outgoingFor, shellCommand, validateParameters, withDefaults, type PluginAction } from "../../core/plugins";
-import { DEFAULT_TIMEOUT_MS, untilDeadline, type DispatchOutcome, type Health, type Transport } from "./transport";
+import { outgoingFor, shellCommand, type PluginAction } from "../../core/plugins";
+import { backoffDelay, checkedParameters, LinkedTransport, RECONNECT_BACKOFF, timeoutOf, unreached, untilDeadline, type Backoff } from "./link";
+import type { DispatchOutcome } from "./transport";
 
 export interface SshOptions {
   host: string;
@@ -13,17 +14,17 @@ export interface SshOptions {
   password?: string;
   privateKeyFile?: string;
   /** Reconnect delays grow from the first to the last. */
-  backoffMs?: { first: number; max: number };
+  backoffMs?: Backoff;
 }
 
-export class SshTransport implements Transport {
+export class SshTransport extends LinkedTransport {
   private client: Client | null = null;
-  private status: Health = { state: "disconnected", since: Date.now(), attempts: 0, lastHeartbeatMs: null };
-  private readonly listeners = new Set<(health: Health) => void>();
   private ready: Promise<Client | null> | null = null;
   private retry: NodeJS.Timeout | null = null;
 
-  constructor(private readonly options: SshOptions) {}
+  constructor(private readonly options: SshOptions) {
+    super();
+  }
 
   connect(): Promise<void> {
     return this.connection().then((client) => {
@@ -31,34 +32,19 @@ export class SshTransport implements Transport {
     });
   }
 
-  health(): Health {
-    return { ...this.status };
-  }
-
-  onHealth(listener: (health: Health) => void) {
-    this.listeners.add(listener);
-    return () => void this.listeners.delete(listener);
-  }
-
   async dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome> {
     const started = Date.now();
-    const problems = validateParameters(action.parameterSchema, parameters);
-    if (problems.length) return { status: "failed", reason: problems.map((p) => p.message).join("; ") };
-    const outgoing = outgoingFor(action, parameters);
+    const checked = checkedParameters(action, parameters);
+    if (!checked.ok) return checked.outcome;
+    const outgoing = outgoingFor(action, checked.parameters);
     if (outgoing.kind !== "ssh") return { status: "failed", reason: `action "${action.id}" is not an SSH command` };
-    const built = shellCommand(outgoing.command, withDefaults(action.parameterSchema, parameters));
+    const built = shellCommand(outgoing.command, checked.parameters);
     if (!built.ok) return { status: "failed", reason: built.reason };
-    const timeoutMs = action.timeout ?? DEFAULT_TIMEOUT_MS;
-    // A retryable action waits for the robot to come back within its timeout; any other fails at once.
+    const timeoutMs = timeoutOf(action);
     const client = action.retryable ? await untilDeadline(started + timeoutMs, () => this.connection()) : await this.connection();
-    if (!client) return action.retryable ? { status: "timed_out", afterMs: Date.now() - started } : { status: "failed", reason: "robot not reachable over SSH" };
+    if (!client) return unreached(action, started, "robot not reachable over SSH");
     // The timeout is the command's: a slow first handshake does not eat into it.
     return this.run(client, built.command, timeoutMs, Date.now());
-  }
-
-  /** SSH carries commands, not robot state: state comes over rosbridge. */
-  subscribe() {
-    return () => {};
   }
 
   async close() {
@@ -123,17 +109,10 @@ export class SshTransport implements Transport {
 
   private reconnectLater() {
     if (this.retry) return;
-    const { first, max } = this.options.backoffMs ?? { first: 250, max: 5000 };
-    const delay = Math.min(max, first * 2 ** this.status.attempts++);
+    const delay = backoffDelay(this.status.attempts++, this.options.backoffMs ?? RECONNECT_BACKOFF);
     this.retry = setTimeout(() => {
       this.retry = null;
       void this.connection();
     }, delay);
-  }
-
-  private setState(state: Health["state"]) {
-    if (this.status.state === state) return;
-    this.status = { ...this.status, state, since: Date.now() };
-    this.listeners.forEach((listener) => listener(this.health()));
   }
 }

@@ -32,20 +32,3 @@ export interface Transport {
   onHealth(listener: (health: Health) => void): () => void;
   close(): Promise<void>;
 }
-
-export const DEFAULT_TIMEOUT_MS = 10_000;
-
-const pause = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
-
-/**
- * A retryable action's wait for its robot: tries `attempt` until it gives a
- * value or the action's deadline passes, backing off between tries.
- */
-export async function untilDeadline<T>(deadline: number, attempt: () => Promise<T | null>, backoffMs = { first: 100, max: 1000 }): Promise<T | null> {
-  for (let tries = 0; ; tries++) {
-    const value = await attempt();
-    const left = deadline - Date.now();
-    if (value !== null || left <= 0) return value;
-    await pause(Math.min(left, backoffMs.max, backoffMs.first * 2 ** tries));
-  }
-}

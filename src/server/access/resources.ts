@@ -3,7 +3,6 @@
 import { eq, getTableColumns } from "drizzle-orm";
 import type { Database } from "@/data/client";
 import {
-  actions,
   annotations,
   conditions,
   experimentVersions,
@@ -12,7 +11,6 @@ import {
   participants,
   questionnaires,
   sessions,
-  steps,
   studies,
   trials,
 } from "@/data/schema";
@@ -29,17 +27,6 @@ const LOADERS = {
         .from(experimentVersions)
         .innerJoin(experiments, eq(experiments.id, experimentVersions.experimentId))
         .where(eq(experimentVersions.id, id))
-    )[0],
-  step: async (db: Db, id: string) =>
-    (await db.select({ ...getTableColumns(steps), studyId: experiments.studyId }).from(steps).innerJoin(experiments, eq(experiments.id, steps.experimentId)).where(eq(steps.id, id)))[0],
-  action: async (db: Db, id: string) =>
-    (
-      await db
-        .select({ ...getTableColumns(actions), experimentId: steps.experimentId, studyId: experiments.studyId })
-        .from(actions)
-        .innerJoin(steps, eq(steps.id, actions.stepId))
-        .innerJoin(experiments, eq(experiments.id, steps.experimentId))
-        .where(eq(actions.id, id))
     )[0],
   participant: async (db: Db, id: string) => (await db.select().from(participants).where(eq(participants.id, id)))[0],
   trial: async (db: Db, id: string) => (await db.select().from(trials).where(eq(trials.id, id)))[0],
@@ -60,8 +47,6 @@ const NAMES: Record<Resource, string> = {
   study: "study",
   experiment: "experiment",
   version: "published version",
-  step: "step",
-  action: "action",
   participant: "participant",
   trial: "trial",
   condition: "condition",
@@ -81,10 +66,6 @@ export const REFERENCES = {
   studyId: "study",
   experimentId: "experiment",
   versionId: "version",
-  stepId: "step",
-  toStepId: "step",
-  stepIds: "step",
-  actionId: "action",
   participantId: "participant",
   trialId: "trial",
   conditionId: "condition",

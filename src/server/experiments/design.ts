@@ -80,14 +80,3 @@ function assertFreshId(given: string) {
     throw new TRPCError({ code: "BAD_REQUEST", message: `Please correct: id: "${given}" is not an id of this experiment` });
   }
 }
-
-/** Closes the gaps a deletion or a move leaves in positions. */
-export async function renumberSteps(tx: Tx, experimentId: string) {
-  const rows = await tx.select({ id: steps.id }).from(steps).where(eq(steps.experimentId, experimentId)).orderBy(asc(steps.position));
-  for (const [position, row] of rows.entries()) await tx.update(steps).set({ position }).where(eq(steps.id, row.id));
-}
-
-export async function renumberActions(tx: Tx, stepId: string) {
-  const rows = await tx.select({ id: actions.id }).from(actions).where(eq(actions.stepId, stepId)).orderBy(asc(actions.position));
-  for (const [position, row] of rows.entries()) await tx.update(actions).set({ position }).where(eq(actions.id, row.id));
-}

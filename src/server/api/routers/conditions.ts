@@ -42,14 +42,6 @@ export const conditionsRouter = router({
       return row!;
     }),
 
-  delete: studyProcedure("experiment.edit", "condition", z.object({ conditionId: id }))
-    .mutation(async ({ ctx }) => {
-      const [used] = await ctx.db.select({ id: participants.id }).from(participants).where(eq(participants.conditionId, ctx.row.id)).limit(1);
-      if (used) throw new TRPCError({ code: "BAD_REQUEST", message: "Participants are assigned to this condition; it must stay for their records." });
-      await ctx.db.delete(conditions).where(eq(conditions.id, ctx.row.id));
-      return { deleted: ctx.row.id };
-    }),
-
   /** Assigns a participant by the study's strategy, on the server, recording seed and position. */
   assign: studyProcedure("participant.manage", "participant", z.object({ participantId: id, conditionId: id.optional() }))
     .mutation(({ ctx, input }) =>

@@ -141,11 +141,4 @@ export const participantsRouter = router({
       }),
     ),
 
-  delete: studyProcedure("participant.manage", "participant", z.object({ participantId: id }))
-    .mutation(async ({ ctx }) => {
-      const used = await ctx.db.select({ id: trials.id }).from(trials).where(eq(trials.participantId, ctx.row.id)).limit(1);
-      if (used.length) throw new TRPCError({ code: "BAD_REQUEST", message: "This participant has trials; their data must be kept. Mark them withdrawn instead." });
-      await ctx.db.delete(participants).where(eq(participants.id, ctx.row.id));
-      return { deleted: ctx.row.id };
-    }),
 });

@@ -1,13 +1,12 @@
 import { TRPCError } from "@trpc/server";
 import { asc, eq } from "drizzle-orm";
 import { z } from "zod";
-import { FIRST_PARTY, portability } from "@/core/plugins";
+import { FIRST_PARTY } from "@/core/plugins";
 import { audit } from "../../audit";
 import { pluginRepositories } from "@/data/schema";
-import { loadDesign } from "../../experiments/design";
 import { findPlugin, pluginCatalog } from "@/robots/catalog";
 import { syncRepository } from "../../plugins/repositories";
-import { guarded, router, studyProcedure } from "../trpc";
+import { guarded, router } from "../trpc";
 import { id } from "../validation";
 
 // The administrator's choice when adding a repository: the most any of its plugins is trusted.
@@ -44,16 +43,6 @@ export const pluginsRouter = router({
       const plugin = await findPlugin(ctx.db, input.robotId);
       if (!plugin) throw new TRPCError({ code: "NOT_FOUND", message: `No robot plugin called "${input.robotId}" is installed.` });
       return plugin;
-    }),
-
-  /** Which actions of an experiment's draft a robot can run: before the trial, not during it. */
-  portability: studyProcedure("experiment.read", "experiment", z.object({ experimentId: id, robotId: z.string().max(200).optional() }))
-    .query(async ({ ctx, input }) => {
-      const design = await loadDesign(ctx.db, ctx.row.id);
-      const robotId = input.robotId ?? design.robotPluginId;
-      const plugin = await findPlugin(ctx.db, robotId);
-      if (!plugin) throw new TRPCError({ code: "NOT_FOUND", message: `No robot plugin called "${robotId}" is installed.` });
-      return portability(design, plugin);
     }),
 
   repositories: router({

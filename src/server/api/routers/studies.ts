@@ -3,7 +3,7 @@ import { TRPCError } from "@trpc/server";
 import { and, desc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
-import { readSettings, studySettingsChangeSchema, type StudySettings } from "@/core/studies/settings";
+import { changedSettings, readSettings, studySettingsChangeSchema, type StudySettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { studyArchive } from "../../studies/archive";
 import { studyFigures } from "../../studies/summary";
@@ -84,9 +84,8 @@ export const studiesRouter = router({
       const studyId = ctx.row.id;
       const current = ctx.row;
       const before = readSettings(current.settings);
-      const merged = settings ? { ...before, ...settings } : null;
       // The seed is the server's, made once per choice of strategy, so assignments can be audited and reproduced.
-      if (merged && settings?.assignment) merged.assignment = { ...settings.assignment, seed: settings.assignment.seed ?? randomBytes(12).toString("hex") };
+      const merged = settings ? changedSettings(before, settings, () => randomBytes(12).toString("hex")) : null;
       const changes = merged ? { ...rest, settings: merged } : rest;
       return ctx.db.transaction(async (tx) => {
         const [study] = await tx
