@@ -1,6 +1,7 @@
 // The shape of a loaded plugin file: the HRIStudio plugin format (as in
 // tests/fixtures/hristudio-plugins) plus our additive fields. The JSON
-// Schema in plugins/plugin.schema.json is the authority; these types mirror it.
+// Schema in plugins/plugin.schema.json is the authority; types.test.ts checks
+// these types against it, field by field.
 
 export type JsonValue = string | number | boolean | null | JsonValue[] | { [key: string]: JsonValue };
 export type JsonObject = { [key: string]: JsonValue };
