@@ -35,9 +35,9 @@ function plain1(error: ErrorObject): PlainError | null {
     case "if":
       return null; // its "then" error says what is wrong
     case "required":
-      return { path: `${path}/${escape(String(params.missingProperty))}`, reason: "is required but missing" };
+      return { path: `${path}/${escapePointer(String(params.missingProperty))}`, reason: "is required but missing" };
     case "additionalProperties":
-      return { path: `${path}/${escape(String(params.additionalProperty))}`, reason: "is not an allowed field here" };
+      return { path: `${path}/${escapePointer(String(params.additionalProperty))}`, reason: "is not an allowed field here" };
     case "type": {
       const types = String(params.type).split(",");
       return { path, reason: `must be ${types.map((t) => ARTICLE[t] ?? `a ${t}`).join(" or ")}` };
@@ -58,6 +58,6 @@ function plain1(error: ErrorObject): PlainError | null {
   }
 }
 
-function escape(segment: string) {
+function escapePointer(segment: string) {
   return segment.replace(/~/g, "~0").replace(/\//g, "~1");
 }

@@ -75,7 +75,7 @@ function findSyntaxError(text: string): { offset: number; reason: string } {
       depth--;
     }
   };
-  const container = (): void => {
+  const container = () => {
     const c = text[i];
     if (c === "{") return object();
     if (c === "[") return array();

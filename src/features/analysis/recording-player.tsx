@@ -25,6 +25,7 @@ export const videoSeconds = (recording: Recording, ms: number) => Math.max(0, (m
 export function RecordingPlayer({ recording, video, onTime }: { recording: Recording; video: RefObject<HTMLVideoElement | null>; onTime: (trialMs: number) => void }) {
   return (
     <Card className="overflow-hidden">
+      {/* biome-ignore lint/a11y/useMediaCaption: a trial's own recording; no captions exist for it */}
       <video
         ref={video}
         data-testid="trial-video"

@@ -33,6 +33,9 @@ export function TimelineChart({ report, deviations, moments, endMs, playheadMs, 
   const lane = (name: string, children: React.ReactNode) => (
     <div className="grid grid-cols-[6rem_1fr] items-center gap-2">
       <span className="text-xs text-slate-500">{name}</span>
+      {/* biome-ignore lint/a11y/useKeyWithClickEvents: a click anywhere on the lane seeks, for the mouse; every bar in it is a button for the keyboard */}
+      {/* biome-ignore lint/a11y/noStaticElementInteractions: the same click; the lane itself is no control */}
+      {/* biome-ignore lint/a11y/useAriaPropsSupportedByRole: the lane's name is read with the bars it holds */}
       <div className={cn("relative h-6 rounded bg-slate-50", onSeek && "cursor-pointer")} onClick={laneSeek} aria-label={`${name} over time`}>
         {children}
       </div>

@@ -182,6 +182,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
           <ArrowLeft className="h-5 w-5" aria-hidden />
         </Link>
         <Input aria-label="Experiment name" className="h-9 max-w-xs font-semibold" value={draft.name} disabled={!canEdit} onChange={(e) => run(commands.setDetails({ name: e.target.value }))} />
+        {/* biome-ignore lint/a11y/noLabelWithoutControl: the select inside is the control (a custom component the rule cannot see through) */}
         <label className="flex items-center gap-2 text-sm text-slate-600">
           Robot
           <NativeSelect aria-label="Robot" className="h-9 w-auto py-0" value={draft.robotPluginId} disabled={!canEdit} onChange={(e) => run(commands.setRobot(e.target.value))}>

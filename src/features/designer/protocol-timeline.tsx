@@ -178,6 +178,7 @@ const ActionCard = memo(function ActionCard({
           <Link2 className="h-3 w-3" aria-hidden /> Run together
         </div>
       )}
+      {/* biome-ignore lint/a11y/useSemanticElements: a sortable block (dnd-kit's attributes and listeners) that holds other controls; a <button> may not */}
       <div
         {...sortable.attributes}
         {...sortable.listeners}

@@ -51,13 +51,13 @@ export function Moments({ annotations }: { annotations: Annotation[] }) {
 
 export function Watching({ viewers }: { viewers: Viewer[] }) {
   return (
-    <div className="flex flex-wrap items-center gap-2 text-sm" aria-label="Who is watching">
+    <section className="flex flex-wrap items-center gap-2 text-sm" aria-label="Who is watching">
       <span className="text-slate-500">Connected:</span>
       {viewers.map((v) => (
         <Badge key={`${v.userId}-${v.role}`} tone={ROLE_TONE[v.role]}>
           {v.name} ({v.role})
         </Badge>
       ))}
-    </div>
+    </section>
   );
 }

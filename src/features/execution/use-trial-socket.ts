@@ -34,6 +34,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     setEvents((before) => [...before, ...fresh]);
   }, []);
 
+  // One connection per trial: `receive` is stable, and the token mutation's object changes on every render.
+  // biome-ignore lint/correctness/useExhaustiveDependencies: see above
   useEffect(() => {
     let stopped = false;
     let retry = 500;

@@ -27,6 +27,7 @@ export function ParticipantForm({ token }: { token: string }) {
   }, [form.data, answers]);
 
   // Every change is saved as a draft a moment later: a reload or a lost tab keeps it.
+  // biome-ignore lint/correctness/useExhaustiveDependencies: keyed on the answers alone (see below)
   useEffect(() => {
     if (!answers || !dirty.current || submit.isSuccess) return;
     const timer = setTimeout(() => save.mutate({ token, answers }), DRAFT_DELAY_MS);

@@ -60,7 +60,7 @@ export const conditionsRouter = router({
           .where(and(eq(participants.studyId, study!.id), isNotNull(participants.assignment)))) as [{ position: number }];
         const seed = settings.seed ?? "";
         const fixed = list.find((c) => c.id === input.conditionId)?.name;
-        let result;
+        let result: ReturnType<typeof assign>;
         try {
           result = assign(strategy, list.map((c) => c.name), seed, position, fixed);
         } catch (error) {
