@@ -39,11 +39,30 @@ try {
         : i === EVENTS - 1
           ? { type: "trial.completed" }
           : [
-              { type: "action.requested", stepId: null, actionId, actionType: "say", parameters: { text: `Line ${i}` }, scripted: false, deviation: "unscripted" },
+              {
+                type: "action.requested",
+                stepId: null,
+                actionId,
+                actionType: "say",
+                parameters: { text: `Line ${i}` },
+                scripted: false,
+                deviation: "unscripted",
+              },
               { type: "action.dispatched", actionId },
               { type: "action.completed", actionId },
             ][i % 3]!;
-    return { trial_id: trial.id, seq, type: body.type, server_time: new Date(t0.getTime() + relMs).toISOString(), rel_ms: relMs, actor_id: null, step_id: null, action_id: "actionId" in body ? body.actionId : null, payload: JSON.stringify(body), deviation: "deviation" in body };
+    return {
+      trial_id: trial.id,
+      seq,
+      type: body.type,
+      server_time: new Date(t0.getTime() + relMs).toISOString(),
+      rel_ms: relMs,
+      actor_id: null,
+      step_id: null,
+      action_id: "actionId" in body ? body.actionId : null,
+      payload: JSON.stringify(body),
+      deviation: "deviation" in body,
+    };
   });
   const sql = db.$client;
   await sql`insert into trial_events ${sql(events)}`;
@@ -51,7 +70,12 @@ try {
   for (let start = 0; start < SAMPLES; start += 10_000) {
     const rows = Array.from({ length: Math.min(10_000, SAMPLES - start) }, (_, k) => {
       const relMs = Math.round(((start + k) / SAMPLES) * span);
-      return { trial_id: trial.id, topic: "/joint_states", rel_ms: relMs, data: JSON.stringify({ name: names, position: names.map((_, j) => Math.sin(relMs / 1000 + j)) }) };
+      return {
+        trial_id: trial.id,
+        topic: "/joint_states",
+        rel_ms: relMs,
+        data: JSON.stringify({ name: names, position: names.map((_, j) => Math.sin(relMs / 1000 + j)) }),
+      };
     });
     await sql`insert into trial_samples ${sql(rows, "trial_id", "topic", "rel_ms", "data")}`;
   }
@@ -60,7 +84,11 @@ try {
   const data: number[] = [];
   for (let i = 0; i < RUNS; i++) {
     const started = performance.now();
-    await Promise.all([api.trials.get.query({ trialId: trial.id }), api.trials.events.query({ trialId: trial.id }), api.trials.samples.query({ trialId: trial.id, topic: "/joint_states", maxPoints: 2000 })]);
+    await Promise.all([
+      api.trials.get.query({ trialId: trial.id }),
+      api.trials.events.query({ trialId: trial.id }),
+      api.trials.samples.query({ trialId: trial.id, topic: "/joint_states", maxPoints: 2000 }),
+    ]);
     data.push(performance.now() - started);
   }
 

@@ -16,7 +16,11 @@ const app = await startApp();
 try {
   const api = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
   const [study] = await api.studies.mine.query();
-  const experiment = await api.experiments.create.mutate({ studyId: study!.id, name: "Large protocol", robotPluginId: "nao6-ros2" });
+  const experiment = await api.experiments.create.mutate({
+    studyId: study!.id,
+    name: "Large protocol",
+    robotPluginId: "nao6-ros2",
+  });
   await api.experiments.saveDesign.mutate({
     experimentId: experiment.id,
     baseRevision: 0,
@@ -24,7 +28,9 @@ try {
       name: `Step ${s + 1}`,
       description: "",
       actions: Array.from({ length: ACTIONS_PER_STEP }, (_, a) =>
-        a % 2 ? { type: "wave", name: "", parameters: {}, parallelGroup: null } : { type: "say", name: "", parameters: { text: `Line ${s + 1}.${a + 1}` }, parallelGroup: null },
+        a % 2
+          ? { type: "wave", name: "", parameters: {}, parallelGroup: null }
+          : { type: "say", name: "", parameters: { text: `Line ${s + 1}.${a + 1}` }, parallelGroup: null },
       ),
     })),
   });
@@ -38,7 +44,9 @@ try {
   for (let i = 0; i < RENDERS; i++) {
     const started = performance.now();
     await page.goto(`/experiments/${experiment.id}`);
-    await page.waitForFunction((n) => document.querySelectorAll("[data-action]").length === n, total, { timeout: 60_000 });
+    await page.waitForFunction((n) => document.querySelectorAll("[data-action]").length === n, total, {
+      timeout: 60_000,
+    });
     renders.push(performance.now() - started);
   }
 

@@ -5,7 +5,9 @@ import { readdirSync } from "node:fs";
 import { join } from "node:path";
 
 const here = import.meta.dirname;
-const all = readdirSync(here).filter((f) => f.endsWith(".ts") && !["run.ts", "support.ts"].includes(f)).map((f) => f.replace(/\.ts$/, ""));
+const all = readdirSync(here)
+  .filter((f) => f.endsWith(".ts") && !["run.ts", "support.ts"].includes(f))
+  .map((f) => f.replace(/\.ts$/, ""));
 const wanted = process.argv.slice(2);
 const unknown = wanted.filter((w) => !all.includes(w));
 if (unknown.length) {

@@ -27,7 +27,10 @@ export function percentile(sorted: number[], p: number): number {
 export function report(name: string, samples: number[], targetP99Ms?: number) {
   const sorted = [...samples].sort((a, b) => a - b);
   const p99 = percentile(sorted, 99);
-  const verdict = targetP99Ms === undefined ? "" : `  target p99 < ${targetP99Ms} ms: ${p99 < targetP99Ms ? "met" : "NOT met"} (ratio ${(p99 / targetP99Ms).toFixed(2)})`;
+  const verdict =
+    targetP99Ms === undefined
+      ? ""
+      : `  target p99 < ${targetP99Ms} ms: ${p99 < targetP99Ms ? "met" : "NOT met"} (ratio ${(p99 / targetP99Ms).toFixed(2)})`;
   console.log(
     `${name.padEnd(58)} n=${String(sorted.length).padStart(6)}  p50=${percentile(sorted, 50).toFixed(3)} ms  p99=${p99.toFixed(3)} ms  max=${sorted.at(-1)!.toFixed(3)} ms${verdict}`,
   );

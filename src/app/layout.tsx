@@ -3,7 +3,10 @@ import type { ReactNode } from "react";
 import { ApiProvider } from "@/lib/trpc";
 import "./globals.css";
 
-export const metadata: Metadata = { title: "HRIStudio", description: "Wizard-of-Oz studies for human-robot interaction" };
+export const metadata: Metadata = {
+  title: "HRIStudio",
+  description: "Wizard-of-Oz studies for human-robot interaction",
+};
 
 export default function RootLayout({ children }: { children: ReactNode }) {
   return (

@@ -18,5 +18,8 @@ export const unexpectedMessage = (ref: string) =>
 /** A route's answer to an unexpected error: logged, and 500 with the plain message. */
 export function unexpectedResponse(error: unknown, req: Request): Response {
   const ref = logUnexpected(error, `${req.method} ${new URL(req.url).pathname}`);
-  return new Response(unexpectedMessage(ref), { status: 500, headers: { "content-type": "text/plain; charset=utf-8" } });
+  return new Response(unexpectedMessage(ref), {
+    status: 500,
+    headers: { "content-type": "text/plain; charset=utf-8" },
+  });
 }

@@ -10,8 +10,14 @@ describe("the trial event store", async () => {
 
   async function newTrial() {
     const [study] = await db.insert(studies).values({ title: "S" }).returning();
-    const [experiment] = await db.insert(experiments).values({ studyId: study!.id, name: "E", robotPluginId: "sim" }).returning();
-    const [trial] = await db.insert(trials).values({ studyId: study!.id, experimentId: experiment!.id, isRehearsal: true }).returning();
+    const [experiment] = await db
+      .insert(experiments)
+      .values({ studyId: study!.id, name: "E", robotPluginId: "sim" })
+      .returning();
+    const [trial] = await db
+      .insert(trials)
+      .values({ studyId: study!.id, experimentId: experiment!.id, isRehearsal: true })
+      .returning();
     return trial!.id;
   }
 
@@ -27,9 +33,21 @@ describe("the trial event store", async () => {
     const now = () => new Date(clock);
     await appendEvents(db, await cursor(trialId), [{ type: "note.added", text: "before" }], null, now);
     clock += 1000;
-    await appendEvents(db, await cursor(trialId), [{ type: "trial.started" }, { type: "step.entered", stepId: "s1", via: "start" }], null, now);
+    await appendEvents(
+      db,
+      await cursor(trialId),
+      [{ type: "trial.started" }, { type: "step.entered", stepId: "s1", via: "start" }],
+      null,
+      now,
+    );
     clock += 2500;
-    const [skipped] = await appendEvents(db, await cursor(trialId), [{ type: "action.skipped", stepId: "s1", actionId: "a1", deviation: "skipped" }], null, now);
+    const [skipped] = await appendEvents(
+      db,
+      await cursor(trialId),
+      [{ type: "action.skipped", stepId: "s1", actionId: "a1", deviation: "skipped" }],
+      null,
+      now,
+    );
     expect(skipped).toMatchObject({ seq: 4, relMs: 2500, deviation: "skipped", actionId: "a1" });
     const all = await eventsSince(db, trialId);
     expect(all.map((e) => [e.seq, e.type, e.relMs])).toEqual([
@@ -41,22 +59,46 @@ describe("the trial event store", async () => {
     expect((await eventsSince(db, trialId, 2)).map((e) => e.seq)).toEqual([3, 4]);
     await appendEvents(db, await cursor(trialId), [{ type: "trial.completed" }], null, now);
     const [trial] = await db.select().from(trials).where(eq(trials.id, trialId));
-    expect(trial).toMatchObject({ status: "completed", t0: new Date("2026-01-01T10:00:01Z"), endedAt: new Date("2026-01-01T10:00:03.500Z") });
+    expect(trial).toMatchObject({
+      status: "completed",
+      t0: new Date("2026-01-01T10:00:01Z"),
+      endedAt: new Date("2026-01-01T10:00:03.500Z"),
+    });
   });
 
   it("never lets two writers both write seq N: a stale cursor's append fails whole", async () => {
     const trialId = await newTrial();
     const stale = await cursor(trialId);
     await appendEvents(db, stale, [{ type: "note.added", text: "first" }], null);
-    await expect(appendEvents(db, stale, [{ type: "note.added", text: "second" }, { type: "note.added", text: "third" }], null)).rejects.toThrow();
-    expect((await eventsSince(db, trialId)).map((e) => [e.seq, e.type === "note.added" && e.text])).toEqual([[1, "first"]]);
+    await expect(
+      appendEvents(
+        db,
+        stale,
+        [
+          { type: "note.added", text: "second" },
+          { type: "note.added", text: "third" },
+        ],
+        null,
+      ),
+    ).rejects.toThrow();
+    expect((await eventsSince(db, trialId)).map((e) => [e.seq, e.type === "note.added" && e.text])).toEqual([
+      [1, "first"],
+    ]);
   });
 
   it("notifies listeners after the commit", async () => {
     const trialId = await newTrial();
     const heard: string[] = [];
     const listener = await sql.listen(NOTIFY_CHANNEL, (payload) => heard.push(payload));
-    await appendEvents(db, await cursor(trialId), [{ type: "note.added", text: "x" }, { type: "note.added", text: "y" }], null);
+    await appendEvents(
+      db,
+      await cursor(trialId),
+      [
+        { type: "note.added", text: "x" },
+        { type: "note.added", text: "y" },
+      ],
+      null,
+    );
     for (let i = 0; i < 50 && heard.length === 0; i++) await new Promise((r) => setTimeout(r, 20));
     await listener.unlisten();
     expect(heard).toContain(`${trialId}:2`);

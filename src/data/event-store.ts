@@ -73,7 +73,11 @@ export async function appendEvents(
   });
   const ended = status === "completed" || status === "aborted";
   // Drizzle's client leaves serialising to Drizzle, so values go as text PostgreSQL casts by column.
-  const wire = rows.map((r) => ({ ...r, server_time: r.server_time.toISOString(), payload: JSON.stringify(r.payload) }));
+  const wire = rows.map((r) => ({
+    ...r,
+    server_time: r.server_time.toISOString(),
+    payload: JSON.stringify(r.payload),
+  }));
   const client = db.$client;
   await client`
     with appended as (
@@ -86,7 +90,14 @@ export async function appendEvents(
       where id = ${cursor.id}
     )
     select pg_notify(${NOTIFY_CHANNEL}, ${`${cursor.id}:${cursor.lastSeq + rows.length}`})`;
-  return rows.map((r) => ({ ...r.payload, seq: r.seq, relMs: r.rel_ms, trialId: r.trial_id, serverTime: r.server_time, actorId: r.actor_id }));
+  return rows.map((r) => ({
+    ...r.payload,
+    seq: r.seq,
+    relMs: r.rel_ms,
+    trialId: r.trial_id,
+    serverTime: r.server_time,
+    actorId: r.actor_id,
+  }));
 }
 
 /** The events after `afterSeq`, in order: what a reconnecting client missed. */

@@ -15,7 +15,10 @@ const journal: Journal = JSON.parse(readFileSync(join(MIGRATIONS_DIR, "meta", "_
 function migrationsUpTo(count: number): string {
   const dir = mkdtempSync(join(tmpdir(), "hri-migrations-"));
   cpSync(MIGRATIONS_DIR, dir, { recursive: true });
-  writeFileSync(join(dir, "meta", "_journal.json"), JSON.stringify({ ...journal, entries: journal.entries.slice(0, count) }));
+  writeFileSync(
+    join(dir, "meta", "_journal.json"),
+    JSON.stringify({ ...journal, entries: journal.entries.slice(0, count) }),
+  );
   return dir;
 }
 
@@ -35,7 +38,18 @@ describe("migrations", () => {
     const url = await freshDatabaseUrl(null);
     await migrateDatabase(url);
     const first = await tables(url);
-    expect(first).toEqual(expect.arrayContaining(["studies", "experiments", "steps", "actions", "trials", "trial_events", "user", "session"]));
+    expect(first).toEqual(
+      expect.arrayContaining([
+        "studies",
+        "experiments",
+        "steps",
+        "actions",
+        "trials",
+        "trial_events",
+        "user",
+        "session",
+      ]),
+    );
     await migrateDatabase(url);
     expect(await tables(url)).toEqual(first);
   });

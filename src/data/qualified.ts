@@ -3,4 +3,5 @@
 // subquery's own table: counts silently came out as zero.
 import { getTableName, sql, type Column } from "drizzle-orm";
 
-export const qualified = (column: Column) => sql`${sql.identifier(getTableName(column.table))}.${sql.identifier(column.name)}`;
+export const qualified = (column: Column) =>
+  sql`${sql.identifier(getTableName(column.table))}.${sql.identifier(column.name)}`;

@@ -18,7 +18,12 @@ describe("socket tokens", () => {
     ["a token moved to another user is refused", (t) => reclaim(t, { userId: "u2" }), 0, false],
     ["a token with a longer life is refused", (t) => reclaim(t, { exp: Date.now() + 9e9 }), 0, false],
     ["a token signed with another secret is refused", () => signSocketToken(who, "x".repeat(32)), 0, false],
-    ["a token signed with the auth secret itself is refused", (t) => `${t.split(".")[0]}.${createHmac("sha256", secret).update(t.split(".")[0]!).digest("base64url")}`, 0, false],
+    [
+      "a token signed with the auth secret itself is refused",
+      (t) => `${t.split(".")[0]}.${createHmac("sha256", secret).update(t.split(".")[0]!).digest("base64url")}`,
+      0,
+      false,
+    ],
     ["garbage is refused", () => "not-a-token", 0, false],
   ])("%s", (_name, tamper, later, accepted) => {
     const now = 1_000_000;

@@ -20,7 +20,12 @@ const keyOf = (secret: string) => createHmac("sha256", secret).update("hristudio
 const sign = (body: string, secret: string) => createHmac("sha256", keyOf(secret)).update(body).digest("base64url");
 
 export function signSocketToken(who: { userId: string; trialId: string }, secret: string, now = Date.now()): string {
-  const claims: SocketClaims = { tokenId: randomBytes(18).toString("base64url"), userId: who.userId, trialId: who.trialId, exp: now + TOKEN_LIFETIME_MS };
+  const claims: SocketClaims = {
+    tokenId: randomBytes(18).toString("base64url"),
+    userId: who.userId,
+    trialId: who.trialId,
+    exp: now + TOKEN_LIFETIME_MS,
+  };
   const body = Buffer.from(JSON.stringify(claims)).toString("base64url");
   return `${body}.${sign(body, secret)}`;
 }
@@ -33,7 +38,11 @@ export function verifySocketToken(token: string, secret: string, now = Date.now(
   if (expected.length !== given.length || !timingSafeEqual(expected, given)) return null;
   try {
     const c = JSON.parse(Buffer.from(body, "base64url").toString("utf8")) as Partial<SocketClaims>;
-    const complete = typeof c.tokenId === "string" && typeof c.userId === "string" && typeof c.trialId === "string" && typeof c.exp === "number";
+    const complete =
+      typeof c.tokenId === "string" &&
+      typeof c.userId === "string" &&
+      typeof c.trialId === "string" &&
+      typeof c.exp === "number";
     return complete && c.exp! > now ? (c as SocketClaims) : null;
   } catch {
     return null;

@@ -10,7 +10,11 @@ import { studies, studyMembers } from "./schema";
 type Db = Pick<Database, "select">;
 
 /** The caller's role in a study, and what that study's blinds hide from them. */
-export async function studyAccessOf(db: Db, studyId: string, userId: string): Promise<{ role: StudyRole | null; blinding: Blinding }> {
+export async function studyAccessOf(
+  db: Db,
+  studyId: string,
+  userId: string,
+): Promise<{ role: StudyRole | null; blinding: Blinding }> {
   const [row] = await db
     .select({ role: studyMembers.role, settings: studies.settings, status: studies.status })
     .from(studies)

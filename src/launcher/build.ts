@@ -4,7 +4,16 @@ import { createHash } from "node:crypto";
 import { existsSync, readdirSync, readFileSync, statSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 
-const INPUTS = ["src", "next.config.ts", "postcss.config.mjs", "tsconfig.json", "tsconfig.app.json", "package.json", "bun.lock", "plugins"];
+const INPUTS = [
+  "src",
+  "next.config.ts",
+  "postcss.config.mjs",
+  "tsconfig.json",
+  "tsconfig.app.json",
+  "package.json",
+  "bun.lock",
+  "plugins",
+];
 
 function fingerprint(root: string): string {
   const hash = createHash("sha256");
@@ -29,7 +38,11 @@ export function nextBin(root: string) {
 export function buildIfChanged(root: string, log: (line: string) => void): boolean {
   const stampFile = join(root, ".next", "hristudio-build");
   const wanted = fingerprint(root);
-  if (existsSync(join(root, ".next", "BUILD_ID")) && existsSync(stampFile) && readFileSync(stampFile, "utf8") === wanted) {
+  if (
+    existsSync(join(root, ".next", "BUILD_ID")) &&
+    existsSync(stampFile) &&
+    readFileSync(stampFile, "utf8") === wanted
+  ) {
     return true;
   }
   log("Building the web app (first start, or the code changed); this takes a minute…");

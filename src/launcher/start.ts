@@ -66,7 +66,11 @@ async function main() {
 
   // Background processes are restarted if they die: trials rebuild from their events.
   const supervise = (name: string, script: string, env: Record<string, string>) => {
-    const child = spawn(process.execPath, ["run", join(root, script)], { cwd: root, stdio: ["ignore", "inherit", "inherit"], env: { ...process.env, ...env } });
+    const child = spawn(process.execPath, ["run", join(root, script)], {
+      cwd: root,
+      stdio: ["ignore", "inherit", "inherit"],
+      env: { ...process.env, ...env },
+    });
     children.push(child);
     remember();
     child.on("exit", (code, signal) => {
@@ -82,7 +86,10 @@ async function main() {
   if (!rosbridgeUrl) {
     const simulatorPort = await firstFreePort(config.HRI_SIMULATOR_PORT);
     rosbridgeUrl = simulatorUrl = `ws://127.0.0.1:${simulatorPort}`;
-    supervise("simulated robot", "src/robots/simulator/main.ts", { SIM_PORT: String(simulatorPort), SIM_HOST: "127.0.0.1" });
+    supervise("simulated robot", "src/robots/simulator/main.ts", {
+      SIM_PORT: String(simulatorPort),
+      SIM_HOST: "127.0.0.1",
+    });
     await listening(simulatorPort);
     log(`The simulated NAO6 robot speaks rosbridge at ${rosbridgeUrl}.`);
   }
@@ -145,7 +152,8 @@ function printDemoAccounts(accounts: DemoAccount[], dataDir: string) {
     "",
     "  Demo accounts (for trying HRIStudio only: do not use them for real studies):",
     ...accounts.map(
-      (a) => `    ${a.email.padEnd(28)} ${a.password.padEnd(14)} ${a.systemRole}${a.studyRole ? `, ${a.studyRole} of the demo study` : ""}`,
+      (a) =>
+        `    ${a.email.padEnd(28)} ${a.password.padEnd(14)} ${a.systemRole}${a.studyRole ? `, ${a.studyRole} of the demo study` : ""}`,
     ),
     `  They are printed once; a copy is in ${join(dataDir, "demo-accounts.txt")}.`,
     "",

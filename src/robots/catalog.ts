@@ -36,7 +36,16 @@ type Reader = Pick<Database, "select">;
 
 async function known(db: Reader, where?: SQL): Promise<{ versions: KnownPlugin[]; folder: PluginFolder }> {
   const folder = await firstPartyPlugins();
-  const firstParty = folder.plugins.map((p): KnownPlugin => ({ plugin: p, robotId: p.robotId, trust: p.trustLevel ?? "official", source: FIRST_PARTY, sourceName: FIRST_PARTY_NAME, hash: hashCanonical(p) }));
+  const firstParty = folder.plugins.map(
+    (p): KnownPlugin => ({
+      plugin: p,
+      robotId: p.robotId,
+      trust: p.trustLevel ?? "official",
+      source: FIRST_PARTY,
+      sourceName: FIRST_PARTY_NAME,
+      hash: hashCanonical(p),
+    }),
+  );
   // Oldest install first: the first repository to install a robot keeps it.
   const rows = await db
     .select({ row: installedPlugins, repositoryName: pluginRepositories.name })
@@ -44,14 +53,16 @@ async function known(db: Reader, where?: SQL): Promise<{ versions: KnownPlugin[]
     .innerJoin(pluginRepositories, eq(pluginRepositories.id, installedPlugins.repositoryId))
     .where(and(eq(pluginRepositories.enabled, true), where))
     .orderBy(asc(installedPlugins.installedAt));
-  const synced = rows.map(({ row, repositoryName }): KnownPlugin => ({
-    plugin: row.definition as Plugin,
-    robotId: row.robotId,
-    trust: row.trustLevel as TrustLevel,
-    source: row.repositoryId!,
-    sourceName: `the repository "${repositoryName}"`,
-    hash: row.hash,
-  }));
+  const synced = rows.map(
+    ({ row, repositoryName }): KnownPlugin => ({
+      plugin: row.definition as Plugin,
+      robotId: row.robotId,
+      trust: row.trustLevel as TrustLevel,
+      source: row.repositoryId!,
+      sourceName: `the repository "${repositoryName}"`,
+      hash: row.hash,
+    }),
+  );
   return { versions: [...firstParty, ...synced], folder };
 }
 

@@ -39,7 +39,12 @@ export async function loadPluginFolder(folder: string): Promise<PluginFolder> {
     }
     const earlier = result.files[loaded.value.robotId];
     if (earlier) {
-      result.errors.push({ file: name, path: "/robotId", code: "duplicate_robot", reason: `robotId "${loaded.value.robotId}" is already declared by ${earlier}` });
+      result.errors.push({
+        file: name,
+        path: "/robotId",
+        code: "duplicate_robot",
+        reason: `robotId "${loaded.value.robotId}" is already declared by ${earlier}`,
+      });
       continue;
     }
     result.files[loaded.value.robotId] = name;

@@ -2,7 +2,16 @@
 // repository.json, plugins/index.json, then each plugin file. Every file goes
 // through the public loader; a bad plugin is reported and the rest are kept.
 // Storing the result and showing the changes is the server's job.
-import { effectiveTrust, loadPlugin, parsePluginIndex, parseRepository, type Plugin, type PluginError, type PluginRepository, type TrustLevel } from "../core/plugins";
+import {
+  effectiveTrust,
+  loadPlugin,
+  parsePluginIndex,
+  parseRepository,
+  type Plugin,
+  type PluginError,
+  type PluginRepository,
+  type TrustLevel,
+} from "../core/plugins";
 
 export interface FetchedPlugin {
   file: string;
@@ -19,7 +28,11 @@ export interface FetchedRepository {
 
 const MAX_BYTES = 1_000_000;
 
-export async function fetchRepository(baseUrl: string, fetchFn: typeof fetch = fetch, timeoutMs = 10_000): Promise<FetchedRepository> {
+export async function fetchRepository(
+  baseUrl: string,
+  fetchFn: typeof fetch = fetch,
+  timeoutMs = 10_000,
+): Promise<FetchedRepository> {
   const base = baseUrl.endsWith("/") ? baseUrl : `${baseUrl}/`;
   const result: FetchedRepository = { repository: null, plugins: [], errors: [] };
   const get = async (path: string): Promise<string | null> => {
@@ -30,7 +43,12 @@ export async function fetchRepository(baseUrl: string, fetchFn: typeof fetch = f
       if (text.length > MAX_BYTES) throw new Error(`larger than ${MAX_BYTES} bytes`);
       return text;
     } catch (error) {
-      result.errors.push({ file: path, path: "", code: "unreadable", reason: `cannot fetch ${new URL(path, base)}: ${(error as Error).message}` });
+      result.errors.push({
+        file: path,
+        path: "",
+        code: "unreadable",
+        reason: `cannot fetch ${new URL(path, base)}: ${(error as Error).message}`,
+      });
       return null;
     }
   };
@@ -48,7 +66,12 @@ export async function fetchRepository(baseUrl: string, fetchFn: typeof fetch = f
     if (text === null) continue;
     const loaded = loadPlugin(name, text);
     if (!loaded.ok) result.errors.push(...loaded.errors);
-    else result.plugins.push({ file: name, plugin: loaded.value, trust: effectiveTrust(repository.value.trust, loaded.value.trustLevel) });
+    else
+      result.plugins.push({
+        file: name,
+        plugin: loaded.value,
+        trust: effectiveTrust(repository.value.trust, loaded.value.trustLevel),
+      });
   }
   return result;
 }

@@ -16,7 +16,12 @@ export type TrialPlugin =
 
 export async function trialPlugin(db: Pick<Database, "select">, trialId: string): Promise<TrialPlugin> {
   const [row] = await db
-    .select({ draftRobotId: experiments.robotPluginId, versionRobotId: experimentVersions.pluginId, version: experimentVersions.version, pinnedHash: experimentVersions.pluginHash })
+    .select({
+      draftRobotId: experiments.robotPluginId,
+      versionRobotId: experimentVersions.pluginId,
+      version: experimentVersions.version,
+      pinnedHash: experimentVersions.pluginHash,
+    })
     .from(trials)
     .innerJoin(experiments, eq(experiments.id, trials.experimentId))
     .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
@@ -25,7 +30,10 @@ export async function trialPlugin(db: Pick<Database, "select">, trialId: string)
   // A published version names the robot it was published for; the draft may have moved on since.
   const robotId = row.versionRobotId ?? row.draftRobotId;
   if (!row.pinnedHash) return { ok: true, robotId, plugin: (await findPlugin(db, robotId)) ?? null, pinnedHash: null };
-  const [document] = await db.select({ definition: pluginDocuments.definition }).from(pluginDocuments).where(eq(pluginDocuments.hash, row.pinnedHash));
+  const [document] = await db
+    .select({ definition: pluginDocuments.definition })
+    .from(pluginDocuments)
+    .where(eq(pluginDocuments.hash, row.pinnedHash));
   if (!document) {
     return {
       ok: false,

@@ -10,7 +10,10 @@ import type { SocketClaims } from "@/data/socket-token";
 
 /** The caller's access to a trial now; null when the trial no longer exists. */
 export async function loadTrialAccess(db: Database, trialId: string, userId: string): Promise<TrialAccess | null> {
-  const [trial] = await db.select({ studyId: trials.studyId, wizardId: trials.wizardId, status: trials.status }).from(trials).where(eq(trials.id, trialId));
+  const [trial] = await db
+    .select({ studyId: trials.studyId, wizardId: trials.wizardId, status: trials.status })
+    .from(trials)
+    .where(eq(trials.id, trialId));
   if (!trial) return null;
   const [[person], study] = await Promise.all([
     db.select({ name: user.name, role: user.role, disabled: user.disabled }).from(user).where(eq(user.id, userId)),
@@ -32,7 +35,12 @@ export async function loadTrialAccess(db: Database, trialId: string, userId: str
 export async function spendToken(db: Database, claims: SocketClaims): Promise<boolean> {
   const rows = await db
     .insert(socketTokenUses)
-    .values({ tokenId: claims.tokenId, userId: claims.userId, trialId: claims.trialId, expiresAt: new Date(claims.exp) })
+    .values({
+      tokenId: claims.tokenId,
+      userId: claims.userId,
+      trialId: claims.trialId,
+      expiresAt: new Date(claims.exp),
+    })
     .onConflictDoNothing()
     .returning({ tokenId: socketTokenUses.tokenId });
   return rows.length === 1;
@@ -55,7 +63,10 @@ export async function claimTrial(db: Database, trialId: string, userId: string):
 
 /** A recording is logged only on its own trial. */
 export async function isRecordingOf(db: Database, recordingId: string, trialId: string): Promise<boolean> {
-  const rows = await db.select({ id: mediaRecordings.id }).from(mediaRecordings).where(and(eq(mediaRecordings.id, recordingId), eq(mediaRecordings.trialId, trialId)));
+  const rows = await db
+    .select({ id: mediaRecordings.id })
+    .from(mediaRecordings)
+    .where(and(eq(mediaRecordings.id, recordingId), eq(mediaRecordings.trialId, trialId)));
   return rows.length === 1;
 }
 

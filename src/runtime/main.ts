@@ -23,19 +23,41 @@ for (const problem of (await pluginCatalog(db)).problems) console.error(`[runtim
 const robotFor = (plugin: Plugin | null, robotId: string) => {
   if (!plugin) return unavailableRobot(`no robot plugin "${robotId}" is installed`);
   const ssh = config.HRI_ROBOT_SSH_HOST
-    ? { host: config.HRI_ROBOT_SSH_HOST, port: config.HRI_ROBOT_SSH_PORT, username: config.HRI_ROBOT_SSH_USER, password: config.HRI_ROBOT_SSH_PASSWORD, privateKeyFile: config.HRI_ROBOT_SSH_KEY_FILE }
+    ? {
+        host: config.HRI_ROBOT_SSH_HOST,
+        port: config.HRI_ROBOT_SSH_PORT,
+        username: config.HRI_ROBOT_SSH_USER,
+        password: config.HRI_ROBOT_SSH_PASSWORD,
+        privateKeyFile: config.HRI_ROBOT_SSH_KEY_FILE,
+      }
     : undefined;
-  const choice = transportFor(plugin, { rosbridgeUrl: config.HRI_ROSBRIDGE_URL, simulatorUrl: config.HRI_ROSBRIDGE_URL, ssh, httpBaseUrl: config.HRI_ROBOT_HTTP_URL });
+  const choice = transportFor(plugin, {
+    rosbridgeUrl: config.HRI_ROSBRIDGE_URL,
+    simulatorUrl: config.HRI_ROSBRIDGE_URL,
+    ssh,
+    httpBaseUrl: config.HRI_ROBOT_HTTP_URL,
+  });
   return choice.ok ? pluginRobot(plugin, choice.transport) : unavailableRobot(`${plugin.name}: ${choice.reason}`);
 };
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
 const hosts = trialHosts(db, lockConnection, robotFor, (...args) => announceRobot(...args));
 const relay = await eventRelay(db, sql);
-const runtime = startRuntimeServer({ db, hosts, relay, secret: config.BETTER_AUTH_SECRET, hostname: config.HOST, port: config.HRI_RUNTIME_PORT });
+const runtime = startRuntimeServer({
+  db,
+  hosts,
+  relay,
+  secret: config.BETTER_AUTH_SECRET,
+  hostname: config.HOST,
+  port: config.HRI_RUNTIME_PORT,
+});
 announceRobot = runtime.announceRobot;
 // Membership, role, blinding and assigned-wizard changes reach open sockets at once.
 const access = await watchAccess(sql, runtime.accessChanged, runtime.recheckAll);
-const purge = setInterval(() => void purgeSpentTokens(db).catch((e: unknown) => console.error(`[runtime] used tokens not purged: ${String(e)}`)), 3_600_000);
+const purge = setInterval(
+  () =>
+    void purgeSpentTokens(db).catch((e: unknown) => console.error(`[runtime] used tokens not purged: ${String(e)}`)),
+  3_600_000,
+);
 const server = runtime.server;
 console.log(`[runtime] listening on ws://${server.hostname}:${server.port}`);
 

@@ -9,16 +9,27 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
   const connecting = transport.connect().catch(() => undefined);
   const perform = async (request: RobotRequest, report: (r: RobotReport) => void) => {
     const resolved = resolveAction(plugin, request.actionType, request.parameters);
-    if (resolved.status === "unsupported") return report({ kind: "failed", actionId: request.actionId, reason: `${plugin.name} cannot do this: ${resolved.reason}` });
+    if (resolved.status === "unsupported")
+      return report({
+        kind: "failed",
+        actionId: request.actionId,
+        reason: `${plugin.name} cannot do this: ${resolved.reason}`,
+      });
     if (resolved.status === "parameter_problems") {
-      return report({ kind: "failed", actionId: request.actionId, reason: resolved.problems.map((p) => `${p.parameter}: ${p.message}`).join("; ") });
+      return report({
+        kind: "failed",
+        actionId: request.actionId,
+        reason: resolved.problems.map((p) => `${p.parameter}: ${p.message}`).join("; "),
+      });
     }
     if (resolved.status === "runtime") return report({ kind: "completed", actionId: request.actionId });
     await connecting;
     report({ kind: "dispatched", actionId: request.actionId, detail: { robotAction: resolved.action.id } });
     const outcome = await transport.dispatch(resolved.action, resolved.parameters);
-    if (outcome.status === "completed") report({ kind: "completed", actionId: request.actionId, ...(outcome.detail ? { detail: outcome.detail } : {}) });
-    else if (outcome.status === "failed") report({ kind: "failed", actionId: request.actionId, reason: outcome.reason });
+    if (outcome.status === "completed")
+      report({ kind: "completed", actionId: request.actionId, ...(outcome.detail ? { detail: outcome.detail } : {}) });
+    else if (outcome.status === "failed")
+      report({ kind: "failed", actionId: request.actionId, reason: outcome.reason });
     else report({ kind: "timed_out", actionId: request.actionId });
   };
   return {
@@ -33,7 +44,9 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
     },
     watchState(listener) {
       const stops = (plugin.stateTopics ?? []).map((t) =>
-        transport.subscribe(t.topic, t.messageType, (message) => listener(t.topic, message), { throttleRate: t.throttleRate }),
+        transport.subscribe(t.topic, t.messageType, (message) => listener(t.topic, message), {
+          throttleRate: t.throttleRate,
+        }),
       );
       return () => stops.forEach((stop) => stop());
     },

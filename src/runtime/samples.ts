@@ -14,7 +14,12 @@ export function sampleRecorder(db: Database, trialId: string, onError: (error: u
     if (!batch.length) return writing;
     const rows = batch;
     batch = [];
-    writing = writing.then(() => db.insert(trialSamples).values(rows).then(() => undefined, onError));
+    writing = writing.then(() =>
+      db
+        .insert(trialSamples)
+        .values(rows)
+        .then(() => undefined, onError),
+    );
     return writing;
   };
   const timer = setInterval(() => void flush(), FLUSH_EVERY_MS);

@@ -2,12 +2,27 @@
 // the protocol file and decided against the socket's access, which the
 // runtime keeps fresh from the database: loaded at hello, reloaded whenever
 // PostgreSQL announces a change (see access.ts), never trusted from the client.
-import { annotateVerdict, commandVerdict, lostAccess, mayReadTrialLog, touches, type AccessChange, type TrialAccess } from "@/core/access/trial-socket";
+import {
+  annotateVerdict,
+  commandVerdict,
+  lostAccess,
+  mayReadTrialLog,
+  touches,
+  type AccessChange,
+  type TrialAccess,
+} from "@/core/access/trial-socket";
 import type { Database } from "@/data/client";
 import { verifySocketToken, type SocketClaims } from "@/data/socket-token";
 import type { StoredEvent } from "@/core/trial";
 import { eventsSince, STATUS_AFTER } from "@/data/event-store";
-import { parseClientMessage, SOCKET_PROTOCOL_VERSION, toWire, type ClientMessage, type ServerMessage, type Viewer } from "@/core/socket/messages";
+import {
+  parseClientMessage,
+  SOCKET_PROTOCOL_VERSION,
+  toWire,
+  type ClientMessage,
+  type ServerMessage,
+  type Viewer,
+} from "@/core/socket/messages";
 import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
 import { logUnexpected } from "@/data/error-reference";
 import { annotate } from "./annotations";
@@ -45,7 +60,11 @@ const SHUT_OUT = 4403;
 const serialised = new WeakMap<StoredEvent[], string>();
 function eventsMessage(events: StoredEvent[]): string {
   let text = serialised.get(events);
-  if (text === undefined) serialised.set(events, (text = JSON.stringify({ type: "events", events: events.map(toWire) } satisfies ServerMessage)));
+  if (text === undefined)
+    serialised.set(
+      events,
+      (text = JSON.stringify({ type: "events", events: events.map(toWire) } satisfies ServerMessage)),
+    );
   return text;
 }
 
@@ -57,7 +76,11 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
   const send = (ws: Socket, message: ServerMessage): void => void ws.send(JSON.stringify(message));
   const presence = (trialId: string) => {
     const sockets = [...(viewers.get(trialId) ?? [])];
-    const list: Viewer[] = sockets.map((s) => ({ userId: s.data.access!.userId, name: s.data.access!.name, role: s.data.access!.studyRole ?? "" }));
+    const list: Viewer[] = sockets.map((s) => ({
+      userId: s.data.access!.userId,
+      name: s.data.access!.name,
+      role: s.data.access!.studyRole ?? "",
+    }));
     for (const s of sockets) send(s, { type: "presence", viewers: list });
     return list;
   };
@@ -77,12 +100,17 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
 
   async function hello(ws: Socket, token: string, lastSeq: number): Promise<void> {
     if (ws.data.greeted) {
-      return send(ws, { type: "rejected", requestId: null, reason: "This connection has already said hello: open a new connection to follow another trial." });
+      return send(ws, {
+        type: "rejected",
+        requestId: null,
+        reason: "This connection has already said hello: open a new connection to follow another trial.",
+      });
     }
     ws.data.greeted = true;
     const claims = verifySocketToken(token, secret);
     if (!claims) return shut(ws, EXPIRED, "Your link to this trial has expired. Reload the page.");
-    if (!(await spendToken(db, claims))) return shut(ws, EXPIRED, "This link to the trial was already used. Reload the page.");
+    if (!(await spendToken(db, claims)))
+      return shut(ws, EXPIRED, "This link to the trial was already used. Reload the page.");
     const access = await loadTrialAccess(db, claims.trialId, claims.userId);
     const lost = access ? lostAccess(access) : "This trial no longer exists.";
     if (lost || !access) return shut(ws, SHUT_OUT, lost ?? "");
@@ -106,7 +134,15 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
     // Owned here: straight from the host. Owned by another process: through the relay.
     ws.data.unsubscribe = host ? host.subscribe(push) : relay.follow(trialId, log.at(-1)?.seq ?? lastSeq, push);
     const now = ws.data.access;
-    send(ws, { type: "welcome", version: SOCKET_PROTOCOL_VERSION, trialId, role: now.studyRole!, mayRun: mayRun(now), events: shown.map(toWire), viewers: presence(trialId) });
+    send(ws, {
+      type: "welcome",
+      version: SOCKET_PROTOCOL_VERSION,
+      trialId,
+      role: now.studyRole!,
+      mayRun: mayRun(now),
+      events: shown.map(toWire),
+      viewers: presence(trialId),
+    });
     if (host) send(ws, { type: "robot", connected: host.robotStatus() });
   }
 
@@ -132,7 +168,8 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
   const accessChanged = (change: AccessChange) => {
     for (const ws of admitted()) {
       const access = ws.data.access!;
-      if (touches(change, { userId: access.userId, studyId: access.studyId, trialId: ws.data.claims!.trialId })) void recheck(ws).catch(logError);
+      if (touches(change, { userId: access.userId, studyId: access.studyId, trialId: ws.data.claims!.trialId }))
+        void recheck(ws).catch(logError);
     }
   };
   /** After the listening connection was down: anything may have changed. */
@@ -147,25 +184,38 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
 
   async function act(ws: Socket, message: Extract<ClientMessage, { type: "command" | "annotate" }>): Promise<void> {
     const { claims, access } = ws.data;
-    if (!claims || !access) return send(ws, { type: "rejected", requestId: message.requestId, reason: "Say hello with your trial link first." });
+    if (!claims || !access)
+      return send(ws, {
+        type: "rejected",
+        requestId: message.requestId,
+        reason: "Say hello with your trial link first.",
+      });
     const reject = (reason: string) => send(ws, { type: "rejected", requestId: message.requestId, reason });
     // Decided against the access as it is now: no database round trip here.
     const verdict = message.type === "command" ? commandVerdict(access, message.command.kind) : annotateVerdict(access);
     if (!verdict.allow) return reject(verdict.reason);
     if (message.type === "annotate") {
-      const annotation = await annotate(db, { trialId: claims.trialId, userId: access.userId, name: access.name }, message.label, message.note);
-      for (const s of viewers.get(claims.trialId) ?? []) if (mayReadTrialLog(s.data.access!)) send(s, { type: "annotation", annotation });
+      const annotation = await annotate(
+        db,
+        { trialId: claims.trialId, userId: access.userId, name: access.name },
+        message.label,
+        message.note,
+      );
+      for (const s of viewers.get(claims.trialId) ?? [])
+        if (mayReadTrialLog(s.data.access!)) send(s, { type: "annotation", annotation });
       return send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
     }
     const host = await hosts.get(claims.trialId);
     if (!host) return reject("Another runtime process is running this trial; reload the page to reach it.");
-    const command = message.command.kind === "unscripted" ? { ...message.command, actionId: crypto.randomUUID() } : message.command;
+    const command =
+      message.command.kind === "unscripted" ? { ...message.command, actionId: crypto.randomUUID() } : message.command;
     // A recording is a row of its own: it must belong to this very trial.
     if (command.kind === "recording" && !(await isRecordingOf(db, command.recordingId, claims.trialId))) {
       return reject("That recording belongs to another trial: it was not logged here.");
     }
     if (verdict.claim && host.current.status === "scheduled") {
-      if (!(await claimTrial(db, claims.trialId, access.userId))) return reject("Another wizard has just claimed this trial: you may watch it but not run it.");
+      if (!(await claimTrial(db, claims.trialId, access.userId)))
+        return reject("Another wizard has just claimed this trial: you may watch it but not run it.");
       ws.data.access = { ...ws.data.access!, trial: { ...ws.data.access!.trial, wizardId: access.userId } };
     }
     const result = await host.command(command, access.userId);
@@ -193,7 +243,8 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
     hostname,
     port,
     fetch(req, server) {
-      if (server.upgrade(req, { data: { greeted: false, closed: false, claims: null, access: null, reloads: 0 } })) return undefined;
+      if (server.upgrade(req, { data: { greeted: false, closed: false, claims: null, access: null, reloads: 0 } }))
+        return undefined;
       return new Response("This is the HRIStudio trial runtime: connect with a WebSocket.", { status: 426 });
     },
     websocket: {
@@ -205,7 +256,11 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
           // One failed message must never take the trial down for everyone else.
           const ref = logUnexpected(error, "trial socket message");
           const requestId = (JSON.parse(text) as { requestId?: string }).requestId ?? null;
-          send(ws, { type: "rejected", requestId, reason: `The server could not store that; nothing was changed. Try again (reference ${ref}).` });
+          send(ws, {
+            type: "rejected",
+            requestId,
+            reason: `The server could not store that; nothing was changed. Try again (reference ${ref}).`,
+          });
         }
       },
       close(ws) {

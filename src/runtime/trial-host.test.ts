@@ -40,8 +40,14 @@ describe("a live trial host", async () => {
 
   async function newTrialId() {
     const [study] = await db.insert(studies).values({ title: "S" }).returning();
-    const [experiment] = await db.insert(experiments).values({ studyId: study!.id, name: "E", robotPluginId: "sim" }).returning();
-    const [trial] = await db.insert(trials).values({ studyId: study!.id, experimentId: experiment!.id, isRehearsal: true }).returning();
+    const [experiment] = await db
+      .insert(experiments)
+      .values({ studyId: study!.id, name: "E", robotPluginId: "sim" })
+      .returning();
+    const [trial] = await db
+      .insert(trials)
+      .values({ studyId: study!.id, experimentId: experiment!.id, isRehearsal: true })
+      .returning();
     return trial!.id;
   }
 
@@ -99,7 +105,10 @@ describe("a live trial host", async () => {
     expect(second.current.actions.hi!.status).toBe("failed");
     expect(second.current.currentStepId).toBe("s1");
     const log = await eventsSince(db, trialId);
-    expect(log.at(-1)).toMatchObject({ type: "action.failed", reason: "The trial runtime restarted while this action was running." });
+    expect(log.at(-1)).toMatchObject({
+      type: "action.failed",
+      reason: "The trial runtime restarted while this action was running.",
+    });
     expect(log.map((e) => e.seq)).toEqual([1, 2, 3, 4, 5]);
     await second.close();
   });

@@ -1,7 +1,16 @@
 // One live trial in the runtime: the only writer of its event log. Commands
 // run one at a time: decide (pure engine) → append (committed) → apply →
 // tell every client. Robot and clock reports come back as commands too.
-import { apply, decide, fold, type Command, type EngineEvent, type StoredEvent, type TrialProtocol, type TrialState } from "@/core/trial";
+import {
+  apply,
+  decide,
+  fold,
+  type Command,
+  type EngineEvent,
+  type StoredEvent,
+  type TrialProtocol,
+  type TrialState,
+} from "@/core/trial";
 import type { Database } from "@/data/client";
 import { appendEvents, eventsSince } from "@/data/event-store";
 import { CONTROL_TYPES } from "@/core/trial/types";
@@ -36,7 +45,9 @@ export class TrialHost {
   ) {
     this.state = fold(protocol, history);
     this.t0 = startedAt(history);
-    this.samples = sampleRecorder(db, trialId, (error) => console.error(`[runtime] trial ${trialId}: samples not stored: ${String(error)}`));
+    this.samples = sampleRecorder(db, trialId, (error) =>
+      console.error(`[runtime] trial ${trialId}: samples not stored: ${String(error)}`),
+    );
     this.stopWatching = robot.watchState((topic, message) => {
       const live = this.state.status === "in_progress" || this.state.status === "paused";
       if (live && this.t0 !== null) this.samples.add(topic, Date.now() - this.t0, message);
@@ -46,9 +57,14 @@ export class TrialHost {
   /** Rebuilds the trial from its events; actions cut off by a restart are marked failed. */
   static async open(db: Database, trialId: string, protocol: TrialProtocol, robot: RobotLink) {
     const host = new TrialHost(db, trialId, protocol, robot, await eventsSince(db, trialId));
-    const interrupted = Object.entries(host.state.actions).filter(([, a]) => a.status === "requested" || a.status === "running");
+    const interrupted = Object.entries(host.state.actions).filter(
+      ([, a]) => a.status === "requested" || a.status === "running",
+    );
     for (const [actionId] of interrupted) {
-      await host.command({ kind: "failed", actionId, reason: "The trial runtime restarted while this action was running." }, null);
+      await host.command(
+        { kind: "failed", actionId, reason: "The trial runtime restarted while this action was running." },
+        null,
+      );
     }
     return host;
   }
@@ -107,7 +123,10 @@ export class TrialHost {
           this.timers.add(timer);
         });
       } else if (!BLOCKS_WITHOUT_ROBOT.has(event.actionType)) {
-        this.robot.perform({ actionId: event.actionId, actionType: event.actionType, parameters: event.parameters }, report);
+        this.robot.perform(
+          { actionId: event.actionId, actionType: event.actionType, parameters: event.parameters },
+          report,
+        );
       }
     }
   }

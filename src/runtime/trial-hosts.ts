@@ -53,7 +53,10 @@ export function trialHosts(
         host = open(trialId);
         hosts.set(trialId, host);
         // Not owned here (yet): ask again next time, the owner may have gone.
-        host.then((h) => h ?? hosts.delete(trialId), () => hosts.delete(trialId));
+        host.then(
+          (h) => h ?? hosts.delete(trialId),
+          () => hosts.delete(trialId),
+        );
       }
       return host;
     },

@@ -29,7 +29,10 @@ export function server(): Server {
     baseURL: config.BETTER_AUTH_URL ?? `http://${config.HOST}:${config.PORT ?? 3000}`,
     allowSignUp: config.HRI_ALLOW_SIGNUP,
     signInPerMinute: config.HRI_SIGNIN_PER_MINUTE,
-    accountLimit: { failures: config.HRI_SIGNIN_ACCOUNT_FAILURES, windowMinutes: config.HRI_SIGNIN_ACCOUNT_WINDOW_MINUTES },
+    accountLimit: {
+      failures: config.HRI_SIGNIN_ACCOUNT_FAILURES,
+      windowMinutes: config.HRI_SIGNIN_ACCOUNT_WINDOW_MINUTES,
+    },
   });
   const runtimeUrl = browserRuntimeUrl(config);
   const media = { storage: mediaStorage(config), maxBytes: config.HRI_MEDIA_MAX_MB * 1024 * 1024 };
@@ -37,7 +40,13 @@ export function server(): Server {
   return globalForServer.hriServer;
 }
 
-export function toSessionUser(u: { id: string; name: string; email: string; role?: unknown; disabled?: unknown }): SessionUser | null {
+export function toSessionUser(u: {
+  id: string;
+  name: string;
+  email: string;
+  role?: unknown;
+  disabled?: unknown;
+}): SessionUser | null {
   if (u.disabled === true) return null;
   const role = SYSTEM_ROLES.includes(u.role as SystemRole) ? (u.role as SystemRole) : "observer";
   return { id: u.id, name: u.name, email: u.email, role };

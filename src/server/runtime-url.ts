@@ -2,5 +2,7 @@ import type { Config } from "@/data/config";
 
 /** Where browsers reach the trial runtime: HRI_RUNTIME_URL, or this host at HRI_RUNTIME_PORT. */
 export function browserRuntimeUrl(config: Config): string {
-  return config.HRI_RUNTIME_URL ?? `ws://${config.HOST === "0.0.0.0" ? "localhost" : config.HOST}:${config.HRI_RUNTIME_PORT}`;
+  return (
+    config.HRI_RUNTIME_URL ?? `ws://${config.HOST === "0.0.0.0" ? "localhost" : config.HOST}:${config.HRI_RUNTIME_PORT}`
+  );
 }

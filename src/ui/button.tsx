@@ -31,5 +31,12 @@ export function Button({ className, variant, size, asChild, type = "button", dis
   const [interactive, setInteractive] = useState(false);
   useEffect(() => setInteractive(true), []);
   const waiting = type === "submit" && !interactive;
-  return <Component type={asChild ? undefined : type} disabled={disabled || waiting} className={cn(button({ variant, size }), className)} {...props} />;
+  return (
+    <Component
+      type={asChild ? undefined : type}
+      disabled={disabled || waiting}
+      className={cn(button({ variant, size }), className)}
+      {...props}
+    />
+  );
 }

@@ -26,7 +26,10 @@ export function Dialog({ title, description, trigger, open, onOpenChange, childr
             <RadixDialog.Description className="sr-only">{title}</RadixDialog.Description>
           )}
           <div className="mt-4">{children}</div>
-          <RadixDialog.Close className="absolute right-4 top-4 rounded p-1 text-slate-500 hover:bg-slate-100" aria-label="Close">
+          <RadixDialog.Close
+            className="absolute right-4 top-4 rounded p-1 text-slate-500 hover:bg-slate-100"
+            aria-label="Close"
+          >
             <X className="h-4 w-4" />
           </RadixDialog.Close>
         </RadixDialog.Content>

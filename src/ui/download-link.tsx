@@ -26,7 +26,9 @@ export function DownloadLink({ href, children }: { href: string; children: React
         setProgress(total ? received / total : null);
       }
       const name = /filename="([^"]+)"/.exec(response.headers.get("content-disposition") ?? "")?.[1] ?? "download";
-      const url = URL.createObjectURL(new Blob(parts, { type: response.headers.get("content-type") ?? "application/octet-stream" }));
+      const url = URL.createObjectURL(
+        new Blob(parts, { type: response.headers.get("content-type") ?? "application/octet-stream" }),
+      );
       Object.assign(document.createElement("a"), { href: url, download: name }).click();
       URL.revokeObjectURL(url);
     } catch (error) {
@@ -37,7 +39,12 @@ export function DownloadLink({ href, children }: { href: string; children: React
   };
   return (
     <div className="space-y-1">
-      <button type="button" onClick={() => void start()} disabled={progress !== null} className="inline-flex items-center gap-1.5 text-sm font-medium text-brand-600 hover:underline disabled:text-slate-500">
+      <button
+        type="button"
+        onClick={() => void start()}
+        disabled={progress !== null}
+        className="inline-flex items-center gap-1.5 text-sm font-medium text-brand-600 hover:underline disabled:text-slate-500"
+      >
         <Download className="h-4 w-4" aria-hidden />
         {children}
         {progress !== null && (

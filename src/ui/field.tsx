@@ -21,7 +21,12 @@ interface FieldProps {
   error?: string;
   hint?: string;
   required?: boolean;
-  children: (props: { id: string; "aria-invalid": boolean; "aria-describedby"?: string; required?: boolean }) => ReactNode;
+  children: (props: {
+    id: string;
+    "aria-invalid": boolean;
+    "aria-describedby"?: string;
+    required?: boolean;
+  }) => ReactNode;
 }
 
 /** A label, its control, and the control's error or hint, tied together for screen readers. */
@@ -32,13 +37,26 @@ export function Field({ label, error, hint, required, children }: FieldProps) {
     <div className="space-y-1">
       <label htmlFor={id} className="block text-sm font-medium text-slate-700">
         {label}
-        {required && <span className="ml-0.5 text-red-600" aria-hidden>*</span>}
+        {required && (
+          <span className="ml-0.5 text-red-600" aria-hidden>
+            *
+          </span>
+        )}
       </label>
-      {children({ id, "aria-invalid": Boolean(error), "aria-describedby": error || hint ? noteId : undefined, required })}
+      {children({
+        id,
+        "aria-invalid": Boolean(error),
+        "aria-describedby": error || hint ? noteId : undefined,
+        required,
+      })}
       {error ? (
-        <p id={noteId} className="text-sm text-red-600">{error}</p>
+        <p id={noteId} className="text-sm text-red-600">
+          {error}
+        </p>
       ) : hint ? (
-        <p id={noteId} className="text-xs text-slate-500">{hint}</p>
+        <p id={noteId} className="text-xs text-slate-500">
+          {hint}
+        </p>
       ) : null}
     </div>
   );

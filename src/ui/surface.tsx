@@ -17,10 +17,20 @@ const TONES = {
 export type Tone = keyof typeof TONES;
 
 export function Badge({ tone = "slate", children }: { tone?: Tone; children: ReactNode }) {
-  return <span className={cn("inline-flex items-center rounded-full px-2 py-0.5 text-xs font-medium", TONES[tone])}>{children}</span>;
+  return (
+    <span className={cn("inline-flex items-center rounded-full px-2 py-0.5 text-xs font-medium", TONES[tone])}>
+      {children}
+    </span>
+  );
 }
 
-export const ROLE_TONE: Record<string, Tone> = { owner: "violet", administrator: "violet", researcher: "blue", wizard: "amber", observer: "slate" };
+export const ROLE_TONE: Record<string, Tone> = {
+  owner: "violet",
+  administrator: "violet",
+  researcher: "blue",
+  wizard: "amber",
+  observer: "slate",
+};
 export const STATUS_TONE: Record<string, Tone> = {
   draft: "slate",
   active: "green",

@@ -2,7 +2,15 @@
 import * as RadixTabs from "@radix-ui/react-tabs";
 import type { ReactNode } from "react";
 
-export function Tabs({ tabs, value, onValueChange }: { tabs: Array<{ id: string; label: string; content: ReactNode }>; value: string; onValueChange: (v: string) => void }) {
+export function Tabs({
+  tabs,
+  value,
+  onValueChange,
+}: {
+  tabs: Array<{ id: string; label: string; content: ReactNode }>;
+  value: string;
+  onValueChange: (v: string) => void;
+}) {
   return (
     <RadixTabs.Root value={value} onValueChange={onValueChange}>
       <RadixTabs.List className="flex gap-1 border-b border-slate-200" aria-label="Study sections">

@@ -12,7 +12,14 @@ import { ensurePython, python } from "../support/python";
 const root = resolve(import.meta.dirname, "..", "..");
 
 const protocol: TrialProtocol = storytellerDraft();
-const done = (...ids: string[]): Command[] => ids.flatMap((actionId) => [{ kind: "dispatched", actionId }, { kind: "completed", actionId }] as Command[]);
+const done = (...ids: string[]): Command[] =>
+  ids.flatMap(
+    (actionId) =>
+      [
+        { kind: "dispatched", actionId },
+        { kind: "completed", actionId },
+      ] as Command[],
+  );
 const run: Command[] = [
   { kind: "start" },
   { kind: "next" },
@@ -38,10 +45,19 @@ describe("the ELAN export", () => {
 
   it("opens in pympi with the trial's steps, actions, deviations and marked moments on their times", () => {
     const log = simulate(protocol, run, (i) => i * 250).log;
-    const eaf = elanDocument({ protocol, events: log, annotations: [{ relMs: 1200, label: `She said "wow" <laughs> & smiles`, note: "" }], date: "2026-11-23T10:00:00Z" });
+    const eaf = elanDocument({
+      protocol,
+      events: log,
+      annotations: [{ relMs: 1200, label: `She said "wow" <laughs> & smiles`, note: "" }],
+      date: "2026-11-23T10:00:00Z",
+    });
     const file = join(root, ".tmp", "storyteller.eaf");
     writeFileSync(file, eaf);
-    const read = python(["-c", "import json,sys,pympi\neaf=pympi.Elan.Eaf(sys.argv[1])\nprint(json.dumps({t: sorted(eaf.get_annotation_data_for_tier(t)) for t in eaf.get_tier_names()}))", file]);
+    const read = python([
+      "-c",
+      "import json,sys,pympi\neaf=pympi.Elan.Eaf(sys.argv[1])\nprint(json.dumps({t: sorted(eaf.get_annotation_data_for_tier(t)) for t in eaf.get_tier_names()}))",
+      file,
+    ]);
     expect(read.stderr).toBe("");
     const tiers = JSON.parse(read.stdout) as Record<string, Array<[number, number, string]>>;
     expect(Object.keys(tiers).sort()).toEqual(["Action", "Deviation", "Marked moment", "Step"]);
@@ -55,13 +71,32 @@ describe("the ELAN export", () => {
   it("links the recording, with every time moved to where it falls in the recording", () => {
     const log = simulate(protocol, run, (i) => i * 250).log;
     const annotations = [{ relMs: 1200, label: "Look", note: "" }];
-    const eaf = elanDocument({ protocol, events: log, annotations, date: "2026-11-23T10:00:00Z", media: { fileName: "recording-r1.webm", mimeType: "video/webm;codecs=vp8", offsetMs: -1500 } });
+    const eaf = elanDocument({
+      protocol,
+      events: log,
+      annotations,
+      date: "2026-11-23T10:00:00Z",
+      media: { fileName: "recording-r1.webm", mimeType: "video/webm;codecs=vp8", offsetMs: -1500 },
+    });
     const file = join(root, ".tmp", "storyteller-recorded.eaf");
     writeFileSync(file, eaf);
-    const read = python(["-c", "import json,sys,pympi\neaf=pympi.Elan.Eaf(sys.argv[1])\nprint(json.dumps({'media': eaf.media_descriptors, 'moments': eaf.get_annotation_data_for_tier('Marked moment')}))", file]);
+    const read = python([
+      "-c",
+      "import json,sys,pympi\neaf=pympi.Elan.Eaf(sys.argv[1])\nprint(json.dumps({'media': eaf.media_descriptors, 'moments': eaf.get_annotation_data_for_tier('Marked moment')}))",
+      file,
+    ]);
     expect(read.stderr).toBe("");
-    const { media, moments } = JSON.parse(read.stdout) as { media: Array<Record<string, string>>; moments: Array<[number, number, string]> };
-    expect(media).toEqual([expect.objectContaining({ MEDIA_URL: "file:///recording-r1.webm", RELATIVE_MEDIA_URL: "./recording-r1.webm", MIME_TYPE: "video/webm" })]);
+    const { media, moments } = JSON.parse(read.stdout) as {
+      media: Array<Record<string, string>>;
+      moments: Array<[number, number, string]>;
+    };
+    expect(media).toEqual([
+      expect.objectContaining({
+        MEDIA_URL: "file:///recording-r1.webm",
+        RELATIVE_MEDIA_URL: "./recording-r1.webm",
+        MIME_TYPE: "video/webm",
+      }),
+    ]);
     // The recording began 1.5 s before t0: a moment 1.2 s into the trial is 2.7 s into the recording.
     expect(moments).toEqual([[2700, 3700, "Look"]]);
   });

@@ -24,7 +24,9 @@ describe("access matrix", () => {
     expect(Object.keys(appRouter._def.procedures).sort()).toEqual(Object.keys(MATRIX).sort());
   });
 
-  const cases = Object.entries(MATRIX).flatMap(([path, [allowed]]) => CALLERS.map((caller) => [path, caller, allowed.includes(caller)] as const));
+  const cases = Object.entries(MATRIX).flatMap(([path, [allowed]]) =>
+    CALLERS.map((caller) => [path, caller, allowed.includes(caller)] as const),
+  );
 
   it.each(cases)("%s by %s → allowed: %s", async (path, caller, allowed) => {
     const input = await MATRIX[path]![1](f, base, caller);
@@ -35,7 +37,8 @@ describe("access matrix", () => {
     if (allowed) return expect(outcome).toBe("ok");
     // System operations (no study) refuse plainly; study operations hide the study from non-members.
     const studyScoped = ![SIGNED_IN, ADMIN, CREATORS].includes(MATRIX[path]![0]);
-    const denied = caller === "anonymous" ? "UNAUTHORIZED" : studyScoped && !MEMBERS.includes(caller) ? "NOT_FOUND" : "FORBIDDEN";
+    const denied =
+      caller === "anonymous" ? "UNAUTHORIZED" : studyScoped && !MEMBERS.includes(caller) ? "NOT_FOUND" : "FORBIDDEN";
     expect(outcome).toBe(denied);
   });
 });

@@ -12,11 +12,23 @@ it("lets the author and the researchers edit a marked moment, and nobody else", 
   const owner = f.api("owner");
   const study = await f.newStudy();
   const e = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
+  await owner.experiments.saveDesign({
+    experimentId: e.id,
+    baseRevision: 0,
+    steps: [{ name: "S", actions: [{ type: "wave" }] }],
+  });
   const trial = await owner.trials.create({ versionId: (await owner.versions.publish({ experimentId: e.id })).id });
-  const { id } = await f.api("observer").trials.annotate({ trialId: trial.id, relMs: 61_500, label: "Looks away", note: "" });
-  await expect(f.api("wizard").trials.editAnnotation({ annotationId: id, label: "x", note: "" })).rejects.toMatchObject({ code: "FORBIDDEN", message: expect.stringMatching(/^Only the person who marked this moment/) });
+  const { id } = await f
+    .api("observer")
+    .trials.annotate({ trialId: trial.id, relMs: 61_500, label: "Looks away", note: "" });
+  await expect(f.api("wizard").trials.editAnnotation({ annotationId: id, label: "x", note: "" })).rejects.toMatchObject(
+    { code: "FORBIDDEN", message: expect.stringMatching(/^Only the person who marked this moment/) },
+  );
   await f.api("observer").trials.editAnnotation({ annotationId: id, label: "Looks away from the robot", note: "" });
-  await f.api("researcher").trials.editAnnotation({ annotationId: id, label: "Looks away from the robot", note: "during the story" });
-  expect(await owner.trials.annotations({ trialId: trial.id })).toMatchObject([{ id, relMs: 61_500, label: "Looks away from the robot", note: "during the story", authorName: expect.any(String) }]);
+  await f
+    .api("researcher")
+    .trials.editAnnotation({ annotationId: id, label: "Looks away from the robot", note: "during the story" });
+  expect(await owner.trials.annotations({ trialId: trial.id })).toMatchObject([
+    { id, relMs: 61_500, label: "Looks away from the robot", note: "during the story", authorName: expect.any(String) },
+  ]);
 });

@@ -19,12 +19,28 @@ it("names the study, the account and the participant an entry is about", async (
   await admin.admin.users.setRole({ userId: helper.id, role: "wizard" });
 
   const entries = await admin.admin.auditLog({ limit: 500 });
-  expect(entries.find((e) => e.action === "member.add" && e.target === helper.id)).toMatchObject({ studyTitle: "Handshake study", targetName: "helper", actor: "owner", details: { role: "observer" } });
-  expect(entries.find((e) => e.action === "participant.consent.given" && e.target === participant.id)).toMatchObject({ studyTitle: "Handshake study", targetName: "P-AUDIT" });
+  expect(entries.find((e) => e.action === "member.add" && e.target === helper.id)).toMatchObject({
+    studyTitle: "Handshake study",
+    targetName: "helper",
+    actor: "owner",
+    details: { role: "observer" },
+  });
+  expect(entries.find((e) => e.action === "participant.consent.given" && e.target === participant.id)).toMatchObject({
+    studyTitle: "Handshake study",
+    targetName: "P-AUDIT",
+  });
   // An account's role is no study's business: no study, and the account by name.
-  expect(entries.find((e) => e.action === "user.role" && e.target === helper.id)).toMatchObject({ studyId: null, studyTitle: null, targetName: "helper", actor: "admin" });
+  expect(entries.find((e) => e.action === "user.role" && e.target === helper.id)).toMatchObject({
+    studyId: null,
+    studyTitle: null,
+    targetName: "helper",
+    actor: "admin",
+  });
   const repository = await admin.plugins.repositories.add({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` });
-  expect((await admin.admin.auditLog({ area: "plugins" })).find((e) => e.target === repository.id)).toMatchObject({ action: "plugins.repository.add", targetName: repository.name });
+  expect((await admin.admin.auditLog({ area: "plugins" })).find((e) => e.target === repository.id)).toMatchObject({
+    action: "plugins.repository.add",
+    targetName: repository.name,
+  });
   // Newest first.
   expect(entries[0]).toMatchObject({ action: "user.role" });
   expect((await admin.admin.auditLog({}))[0]).toMatchObject({ action: "plugins.repository.add" });

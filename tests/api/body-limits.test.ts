@@ -19,15 +19,27 @@ async function recording() {
   const api = await s.apiAs(owner);
   const study = await s.f.newStudy();
   const e = await api.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await api.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
+  await api.experiments.saveDesign({
+    experimentId: e.id,
+    baseRevision: 0,
+    steps: [{ name: "S", actions: [{ type: "wave" }] }],
+  });
   const trial = await api.trials.create({ versionId: (await api.versions.publish({ experimentId: e.id })).id });
   return (await api.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/webm" })).recordingId;
 }
 
 const put = (recordingId: string, body: BodyInit, headers: Record<string, string> = {}) =>
-  chunks.PUT(new Request(`${ORIGIN}/api/recordings/${recordingId}/chunks/0`, { method: "PUT", headers: { cookie: owner.get("cookie")!, "content-type": "video/webm", ...headers }, body, duplex: "half" } as RequestInit), {
-    params: Promise.resolve({ recordingId, index: "0" }),
-  });
+  chunks.PUT(
+    new Request(`${ORIGIN}/api/recordings/${recordingId}/chunks/0`, {
+      method: "PUT",
+      headers: { cookie: owner.get("cookie")!, "content-type": "video/webm", ...headers },
+      body,
+      duplex: "half",
+    } as RequestInit),
+    {
+      params: Promise.resolve({ recordingId, index: "0" }),
+    },
+  );
 
 describe("a recording part", () => {
   it("is cut off while it streams in: 413 soon after the limit, the rest never pulled, nothing stored", async () => {
@@ -60,7 +72,14 @@ describe("a recording part", () => {
 });
 
 const trpcPost = (path: string, body: BodyInit, headers: Record<string, string> = {}) =>
-  trpc.POST(new Request(`${ORIGIN}/api/trpc/${path}`, { method: "POST", headers: { "content-type": "application/json", ...headers }, body, duplex: "half" } as RequestInit));
+  trpc.POST(
+    new Request(`${ORIGIN}/api/trpc/${path}`, {
+      method: "POST",
+      headers: { "content-type": "application/json", ...headers },
+      body,
+      duplex: "half",
+    } as RequestInit),
+  );
 
 describe("the API", () => {
   it("holds the public form to its small limit while reading, for someone not signed in", async () => {
@@ -83,7 +102,9 @@ describe("the API", () => {
     const study = await s.f.newStudy();
     const text = JSON.stringify({ padding: "x".repeat(1024 * 1024) });
     // Read and parsed: the answer is about the file, not its size.
-    const fits = await trpcPost("experiments.importFile", JSON.stringify({ studyId: study.id, text }), { cookie: owner.get("cookie")! });
+    const fits = await trpcPost("experiments.importFile", JSON.stringify({ studyId: study.id, text }), {
+      cookie: owner.get("cookie")!,
+    });
     expect(fits.status).toBe(400);
     expect((await fits.json()).error.message).not.toMatch(/at most/);
     const { body, counted } = endlessBody(PIECE);
@@ -95,18 +116,33 @@ describe("the API", () => {
 
   it("refuses a batch of more calls than the browser's client ever sends", async () => {
     const paths = Array.from({ length: LIMITS.batchCalls + 1 }, () => "studies.mine").join(",");
-    const res = await trpc.GET(new Request(`${ORIGIN}/api/trpc/${paths}?batch=1&input={}`, { headers: { cookie: owner.get("cookie")! } }));
+    const res = await trpc.GET(
+      new Request(`${ORIGIN}/api/trpc/${paths}?batch=1&input={}`, { headers: { cookie: owner.get("cookie")! } }),
+    );
     expect(res.status).toBe(400);
     expect(JSON.stringify(await res.json())).toContain("Batch call exceeds maximum size");
     const within = Array.from({ length: LIMITS.batchCalls }, () => "studies.mine").join(",");
-    expect((await trpc.GET(new Request(`${ORIGIN}/api/trpc/${within}?batch=1&input={}`, { headers: { cookie: owner.get("cookie")! } }))).status).toBe(200);
+    expect(
+      (
+        await trpc.GET(
+          new Request(`${ORIGIN}/api/trpc/${within}?batch=1&input={}`, { headers: { cookie: owner.get("cookie")! } }),
+        )
+      ).status,
+    ).toBe(200);
   });
 });
 
 describe("sign-in", () => {
   it("is cut off at its limit while reading", async () => {
     const { body, counted } = endlessBody(PIECE);
-    const res = await auth.POST(new Request(`${ORIGIN}/api/auth/sign-in/email`, { method: "POST", headers: { "content-type": "application/json", origin: ORIGIN }, body, duplex: "half" } as RequestInit));
+    const res = await auth.POST(
+      new Request(`${ORIGIN}/api/auth/sign-in/email`, {
+        method: "POST",
+        headers: { "content-type": "application/json", origin: ORIGIN },
+        body,
+        duplex: "half",
+      } as RequestInit),
+    );
     expect(res.status).toBe(413);
     expect(await res.text()).toBe("A sign-in request may be at most 64 KB; this one is larger.");
     expect(counted.pulled).toBeLessThanOrEqual(LIMITS.auth + 2 * PIECE);

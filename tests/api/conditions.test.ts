@@ -13,12 +13,29 @@ afterAll(close);
 
 async function studyWithConditions(strategy: "fixed" | "random" | "balanced" | "counterbalanced", perCondition = 1) {
   const study = await f.newStudy();
-  const nao = await owner.experiments.create({ studyId: study.id, name: "Storyteller on NAO", robotPluginId: "nao6-ros2" });
-  const bot = await owner.experiments.create({ studyId: study.id, name: "Storyteller on TurtleBot", robotPluginId: "turtlebot3-burger" });
-  const gestures = await owner.conditions.create({ studyId: study.id, name: "NAO with gestures", experimentId: nao.id });
-  const voice = await owner.conditions.create({ studyId: study.id, name: "TurtleBot voice only", experimentId: bot.id });
+  const nao = await owner.experiments.create({
+    studyId: study.id,
+    name: "Storyteller on NAO",
+    robotPluginId: "nao6-ros2",
+  });
+  const bot = await owner.experiments.create({
+    studyId: study.id,
+    name: "Storyteller on TurtleBot",
+    robotPluginId: "turtlebot3-burger",
+  });
+  const gestures = await owner.conditions.create({
+    studyId: study.id,
+    name: "NAO with gestures",
+    experimentId: nao.id,
+  });
+  const voice = await owner.conditions.create({
+    studyId: study.id,
+    name: "TurtleBot voice only",
+    experimentId: bot.id,
+  });
   await owner.studies.update({ studyId: study.id, settings: { assignment: { strategy, perCondition } } });
-  const participant = (code: string) => owner.participants.create({ studyId: study.id, code, consentStatus: "given", consentDate: new Date() });
+  const participant = (code: string) =>
+    owner.participants.create({ studyId: study.id, code, consentStatus: "given", consentDate: new Date() });
   return { study, gestures, voice, participant };
 }
 
@@ -28,7 +45,8 @@ describe("condition assignment", () => {
     const seed = (await owner.studies.get({ studyId: study.id })).settings.assignment.seed!;
     expect(seed).toMatch(/^[0-9a-f]{24}$/);
     const assigned: Array<Awaited<ReturnType<typeof owner.conditions.assign>>> = [];
-    for (let i = 1; i <= 8; i++) assigned.push(await owner.conditions.assign({ participantId: (await participant(`P${i}`)).id }));
+    for (let i = 1; i <= 8; i++)
+      assigned.push(await owner.conditions.assign({ participantId: (await participant(`P${i}`)).id }));
     const names = { [gestures.id]: gestures.name, [voice.id]: voice.name };
     const counts = (upTo: number) => assigned.slice(0, upTo).filter((p) => p.conditionId === gestures.id).length;
     expect(counts(8)).toBe(4);
@@ -36,25 +54,42 @@ describe("condition assignment", () => {
     // Anyone with the seed reproduces every assignment.
     for (const p of assigned) {
       const record = p.assignment as { seed: string; position: number };
-      expect(assign({ kind: "balanced", perCondition: 2 }, [gestures.name, voice.name], record.seed, record.position)).toEqual({ condition: names[p.conditionId!] });
+      expect(
+        assign({ kind: "balanced", perCondition: 2 }, [gestures.name, voice.name], record.seed, record.position),
+      ).toEqual({ condition: names[p.conditionId!] });
     }
     const listed = await owner.conditions.list({ studyId: study.id });
-    expect(listed.map((c) => [c.name, c.participantCount])).toEqual([["NAO with gestures", 4], ["TurtleBot voice only", 4]]);
+    expect(listed.map((c) => [c.name, c.participantCount])).toEqual([
+      ["NAO with gestures", 4],
+      ["TurtleBot voice only", 4],
+    ]);
   });
 
   it("gives each participant an order of all conditions when counterbalanced", async () => {
     const { gestures, voice, participant } = await studyWithConditions("counterbalanced");
     const first = await owner.conditions.assign({ participantId: (await participant("W1")).id });
     const second = await owner.conditions.assign({ participantId: (await participant("W2")).id });
-    expect([first.conditionOrder, second.conditionOrder]).toEqual([[gestures.id, voice.id], [voice.id, gestures.id]]);
+    expect([first.conditionOrder, second.conditionOrder]).toEqual([
+      [gestures.id, voice.id],
+      [voice.id, gestures.id],
+    ]);
   });
 
   it("needs the researcher's choice when fixed, and never redraws", async () => {
     const { gestures, participant } = await studyWithConditions("fixed");
     const p = await participant("F1");
-    await expect(owner.conditions.assign({ participantId: p.id })).rejects.toThrow("Choose one of the conditions: NAO with gestures, TurtleBot voice only.");
-    expect((await owner.conditions.assign({ participantId: p.id, conditionId: gestures.id })).conditionId).toBe(gestures.id);
-    const again = await owner.conditions.assign({ participantId: p.id, conditionId: gestures.id }).catch((e: TRPCError) => e);
-    expect(again).toMatchObject({ code: "CONFLICT", message: "F1 is already assigned; assignments are never redrawn." });
+    await expect(owner.conditions.assign({ participantId: p.id })).rejects.toThrow(
+      "Choose one of the conditions: NAO with gestures, TurtleBot voice only.",
+    );
+    expect((await owner.conditions.assign({ participantId: p.id, conditionId: gestures.id })).conditionId).toBe(
+      gestures.id,
+    );
+    const again = await owner.conditions
+      .assign({ participantId: p.id, conditionId: gestures.id })
+      .catch((e: TRPCError) => e);
+    expect(again).toMatchObject({
+      code: "CONFLICT",
+      message: "F1 is already assigned; assignments are never redrawn.",
+    });
   });
 });

@@ -14,13 +14,22 @@ import { buildFixture, TEST_SECRET, testMedia } from "./fixture";
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
 const owner = f.api("owner");
-const participant = appRouter.createCaller({ db, user: null, secret: TEST_SECRET, runtimeUrl: "ws://127.0.0.1:1", media: testMedia() }).form;
+const participant = appRouter.createCaller({
+  db,
+  user: null,
+  secret: TEST_SECRET,
+  runtimeUrl: "ws://127.0.0.1:1",
+  media: testMedia(),
+}).form;
 afterAll(close);
 
 const HYPERLINK = '=HYPERLINK("http://x","y")';
 
 /** No cell of the CSV could run as a formula. */
-const inert = (csv: string) => parseCsv(csv).flat().filter((cell) => /^[=+\-@\t\r]/.test(cell));
+const inert = (csv: string) =>
+  parseCsv(csv)
+    .flat()
+    .filter((cell) => /^[=+\-@\t\r]/.test(cell));
 
 async function studyWithAnswers() {
   const study = await f.newStudy();
@@ -31,9 +40,17 @@ async function studyWithAnswers() {
     { id: "scale", kind: "number", text: "-How far (-5 to 5)", required: false },
     { id: "typed", kind: "short_text", text: "What you typed", required: false },
   ];
-  await owner.questionnaires.save({ questionnaireId: q.id, definition: { ...draft, title: "@Mood", sections: [{ ...draft.sections[0]!, items }] } });
+  await owner.questionnaires.save({
+    questionnaireId: q.id,
+    definition: { ...draft, title: "@Mood", sections: [{ ...draft.sections[0]!, items }] },
+  });
   await owner.questionnaires.publish({ questionnaireId: q.id });
-  const p = await owner.participants.create({ studyId: study.id, code: "-P1", consentStatus: "given", consentDate: new Date() });
+  const p = await owner.participants.create({
+    studyId: study.id,
+    code: "-P1",
+    consentStatus: "given",
+    consentDate: new Date(),
+  });
   const { token } = await owner.questionnaires.createLink({ questionnaireId: q.id, participantId: p.id });
   await participant.submit({ token, answers: { link: HYPERLINK, scale: -3, typed: "-3" } });
   return { study, p };
@@ -56,14 +73,34 @@ describe("the trial events CSV", () => {
   it("keeps a note, a step's name and speech text from running, in the trial's download and the study archive", async () => {
     const { study, p } = await studyWithAnswers();
     const e = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-    await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "+Intro", actions: [{ type: "say", parameters: { text: "@everyone hello" } }] }] });
-    const trial = await owner.trials.create({ versionId: (await owner.versions.publish({ experimentId: e.id })).id, participantId: p.id });
-    await appendEvents(db, { id: trial.id, lastSeq: 0, t0: null }, [
-      { type: "trial.started" },
-      { type: "step.entered", stepId: "=cmd|' /C calc'!A0", via: "start" },
-      { type: "action.requested", stepId: null, actionId: "a1", actionType: "@say", parameters: { text: "+1 for robots" }, scripted: false, deviation: "unscripted" },
-      { type: "note.added", text: "=HYPERLINK(\"http://x\")" },
-    ], f.people.owner.id);
+    await owner.experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: 0,
+      steps: [{ name: "+Intro", actions: [{ type: "say", parameters: { text: "@everyone hello" } }] }],
+    });
+    const trial = await owner.trials.create({
+      versionId: (await owner.versions.publish({ experimentId: e.id })).id,
+      participantId: p.id,
+    });
+    await appendEvents(
+      db,
+      { id: trial.id, lastSeq: 0, t0: null },
+      [
+        { type: "trial.started" },
+        { type: "step.entered", stepId: "=cmd|' /C calc'!A0", via: "start" },
+        {
+          type: "action.requested",
+          stepId: null,
+          actionId: "a1",
+          actionType: "@say",
+          parameters: { text: "+1 for robots" },
+          scripted: false,
+          deviation: "unscripted",
+        },
+        { type: "note.added", text: '=HYPERLINK("http://x")' },
+      ],
+      f.people.owner.id,
+    );
     const csv = (await owner.trials.export({ trialId: trial.id, format: "csv" })).body as string;
     expect(inert(csv)).toEqual([]);
     const rows = parseCsv(csv);

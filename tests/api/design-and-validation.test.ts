@@ -54,7 +54,11 @@ describe("saving a design", () => {
 
   it("changes nothing when any part of the save is invalid", async () => {
     const e = await newExperiment();
-    const saved = await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "Kept", actions: [{ type: "say", parameters: { text: "x" } }] }] });
+    const saved = await owner.experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: 0,
+      steps: [{ name: "Kept", actions: [{ type: "say", parameters: { text: "x" } }] }],
+    });
     const error = await failure(
       owner.experiments.saveDesign({
         experimentId: e.id,
@@ -73,7 +77,11 @@ describe("saving a design", () => {
   it("refuses a save based on a revision someone else has already replaced", async () => {
     const e = await newExperiment();
     await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "Mine", actions: [] }] });
-    const error = await failure(f.api("researcher").experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "Theirs", actions: [] }] }));
+    const error = await failure(
+      f
+        .api("researcher")
+        .experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "Theirs", actions: [] }] }),
+    );
     expect(error.code).toBe("CONFLICT");
     expect(error.message).toMatch(/Someone else saved this experiment/);
     expect((await owner.experiments.get({ experimentId: e.id })).steps.map((s) => s.name)).toEqual(["Mine"]);
@@ -81,7 +89,11 @@ describe("saving a design", () => {
 
   it("publishes immutable numbered versions whose hash follows the content", async () => {
     const e = await newExperiment();
-    await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "One", actions: [{ type: "say", parameters: { text: 'He said "{{hi}}" $(rm -rf /)' } }] }] });
+    await owner.experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: 0,
+      steps: [{ name: "One", actions: [{ type: "say", parameters: { text: 'He said "{{hi}}" $(rm -rf /)' } }] }],
+    });
     const v1 = await owner.versions.publish({ experimentId: e.id });
     const again = await owner.versions.publish({ experimentId: e.id });
     expect([v1.version, again.version]).toEqual([1, 2]);
@@ -90,22 +102,58 @@ describe("saving a design", () => {
     const snapshot = v1.snapshot as { steps: Array<{ actions: Array<{ parameters: { text: string } }> }> };
     expect(snapshot.steps[0]!.actions[0]!.parameters.text).toBe('He said "{{hi}}" $(rm -rf /)');
     const draft = await owner.experiments.get({ experimentId: e.id });
-    await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: draft.draftRevision, steps: draft.steps.map((s) => ({ ...s, name: "Changed" })) });
+    await owner.experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: draft.draftRevision,
+      steps: draft.steps.map((s) => ({ ...s, name: "Changed" })),
+    });
     const v3 = await owner.versions.publish({ experimentId: e.id });
     expect(v3.hash).not.toBe(v1.hash);
-    expect(((await owner.versions.get({ versionId: v1.id })).snapshot as { steps: Array<{ name: string }> }).steps[0]!.name).toBe("One");
+    expect(
+      ((await owner.versions.get({ versionId: v1.id })).snapshot as { steps: Array<{ name: string }> }).steps[0]!.name,
+    ).toBe("One");
   });
 });
 
 describe("input errors a person can read", () => {
   it.each<[string, string, (studyId: string) => unknown, string]>([
     ["an empty study title", "studies.create", () => ({ title: "   " }), "title: Title must not be empty"],
-    ["a study title that is too long", "studies.create", () => ({ title: "x".repeat(201) }), "title: Title must be at most 200 characters"],
-    ["an unknown study status", "studies.update", (studyId) => ({ studyId, status: "finished" }), 'status: Invalid option: expected one of "draft"|"active"|"completed"|"archived"'],
-    ["a member role that does not exist", "members.add", (studyId) => ({ studyId, email: "a@b.org", role: "boss" }), "role: must be one of owner, researcher, wizard, observer"],
-    ["an email that is not one", "members.add", (studyId) => ({ studyId, email: "nobody", role: "observer" }), "email: must be an email address"],
-    ["a participant code with a space", "participants.create", (studyId) => ({ studyId, code: "Jane Doe" }), "code: Participant code may use letters, digits, '.', '_' and '-' only (no names)"],
-    ["a missing participant code", "participants.create", (studyId) => ({ studyId }), "code: Participant code is required"],
+    [
+      "a study title that is too long",
+      "studies.create",
+      () => ({ title: "x".repeat(201) }),
+      "title: Title must be at most 200 characters",
+    ],
+    [
+      "an unknown study status",
+      "studies.update",
+      (studyId) => ({ studyId, status: "finished" }),
+      'status: Invalid option: expected one of "draft"|"active"|"completed"|"archived"',
+    ],
+    [
+      "a member role that does not exist",
+      "members.add",
+      (studyId) => ({ studyId, email: "a@b.org", role: "boss" }),
+      "role: must be one of owner, researcher, wizard, observer",
+    ],
+    [
+      "an email that is not one",
+      "members.add",
+      (studyId) => ({ studyId, email: "nobody", role: "observer" }),
+      "email: must be an email address",
+    ],
+    [
+      "a participant code with a space",
+      "participants.create",
+      (studyId) => ({ studyId, code: "Jane Doe" }),
+      "code: Participant code may use letters, digits, '.', '_' and '-' only (no names)",
+    ],
+    [
+      "a missing participant code",
+      "participants.create",
+      (studyId) => ({ studyId }),
+      "code: Participant code is required",
+    ],
   ])("%s", async (_name, path, input, expected) => {
     const study = await f.newStudy();
     const error = await f.httpError("owner", path, input(study.id));
@@ -116,7 +164,11 @@ describe("input errors a person can read", () => {
 
   it("names the nested field of an action in a design", async () => {
     const e = await newExperiment();
-    const error = await f.httpError("owner", "experiments.saveDesign", { experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "say", parameters: "text" }] }] });
+    const error = await f.httpError("owner", "experiments.saveDesign", {
+      experimentId: e.id,
+      baseRevision: 0,
+      steps: [{ name: "S", actions: [{ type: "say", parameters: "text" }] }],
+    });
     expect(error!.message).toBe("Please correct: steps.0.actions.0.parameters: must be an object of named values");
   });
 
@@ -142,7 +194,14 @@ describe("publishing, files and versions", () => {
 
   it("refuses to publish a design with problems, says which, and publishes nothing", async () => {
     const e = await newExperiment();
-    await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "Intro", actions: [{ type: "say", parameters: {} }] }, { name: "Empty", actions: [] }] });
+    await owner.experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: 0,
+      steps: [
+        { name: "Intro", actions: [{ type: "say", parameters: {} }] },
+        { name: "Empty", actions: [] },
+      ],
+    });
     const error = await failure(owner.versions.publish({ experimentId: e.id }));
     expect(error.code).toBe("BAD_REQUEST");
     expect(error.message).toMatch(/cannot be published until these 2 problems are fixed/);
@@ -164,7 +223,11 @@ describe("publishing, files and versions", () => {
 
   it.each([
     ["not JSON", "{ steps: [", /^This file cannot be imported\. \$: /],
-    ["a wrong format", JSON.stringify({ format: "something-else", formatVersion: 1, experiment: {}, steps: [] }), /\$\.format: /],
+    [
+      "a wrong format",
+      JSON.stringify({ format: "something-else", formatVersion: 1, experiment: {}, steps: [] }),
+      /\$\.format: /,
+    ],
     ["a branch to a step that is not in the file", null, /targets/],
   ])("refuses an import of %s, saying where, and stores nothing", async (_name, text, message) => {
     const study = await f.newStudy();
@@ -174,7 +237,14 @@ describe("publishing, files and versions", () => {
         format: "hristudio.experiment",
         formatVersion: 1,
         experiment: { name: "X", description: "", robot: "nao6-ros2" },
-        steps: [{ key: "step-1", name: "A", description: "", actions: [{ type: "branch", name: "", parameters: { targets: { yes: "@step-9" } } }] }],
+        steps: [
+          {
+            key: "step-1",
+            name: "A",
+            description: "",
+            actions: [{ type: "branch", name: "", parameters: { targets: { yes: "@step-9" } } }],
+          },
+        ],
       });
     const error = await failure(owner.experiments.importFile({ studyId: study.id, text: file }));
     expect(error.code).toBe("BAD_REQUEST");
@@ -184,7 +254,10 @@ describe("publishing, files and versions", () => {
 
   it("refuses an oversized file with its limit", async () => {
     const study = await f.newStudy();
-    const error = await f.httpError("owner", "experiments.importFile", { studyId: study.id, text: "x".repeat(2_000_001) });
+    const error = await f.httpError("owner", "experiments.importFile", {
+      studyId: study.id,
+      text: "x".repeat(2_000_001),
+    });
     expect(error!.message).toBe("Please correct: text: the file must be smaller than 2 MB");
   });
 
@@ -196,7 +269,13 @@ describe("publishing, files and versions", () => {
     await owner.experiments.saveDesign({
       experimentId: e.id,
       baseRevision: first.draftRevision,
-      steps: [{ id: step!.id, name: "Introduction", actions: [{ id: step!.actions[0]!.id, type: "say", parameters: { text: "Hello." } }] }],
+      steps: [
+        {
+          id: step!.id,
+          name: "Introduction",
+          actions: [{ id: step!.actions[0]!.id, type: "say", parameters: { text: "Hello." } }],
+        },
+      ],
     });
     await owner.versions.publish({ experimentId: e.id });
     const lines = await owner.versions.diff({ experimentId: e.id, from: 1, to: 2 });

@@ -43,7 +43,13 @@ export async function buildFixture(db: Database) {
     people[caller] = await newPerson(db, caller, SYSTEM_ROLE[caller]);
   }
   const media = testMedia();
-  const contextOf = (user: SessionUser | null) => ({ db, user, secret: TEST_SECRET, runtimeUrl: "ws://127.0.0.1:1", media });
+  const contextOf = (user: SessionUser | null) => ({
+    db,
+    user,
+    secret: TEST_SECRET,
+    runtimeUrl: "ws://127.0.0.1:1",
+    media,
+  });
   const context = (caller: Caller) => contextOf(caller === "anonymous" ? null : people[caller]);
   const api = (caller: Caller) => callerFactory(context(caller));
   /** The API as anyone else, e.g. the owner of a second study. */
@@ -51,20 +57,32 @@ export async function buildFixture(db: Database) {
   /** A study whose members are the four study-role callers. */
   async function newStudy(title = "Fixture study") {
     const study = await api("owner").studies.create({ title });
-    await db.insert(studyMembers).values(
-      (["researcher", "wizard", "observer"] as const).map((role) => ({ studyId: study.id, userId: people[role].id, role })),
-    );
+    await db
+      .insert(studyMembers)
+      .values(
+        (["researcher", "wizard", "observer"] as const).map((role) => ({
+          studyId: study.id,
+          userId: people[role].id,
+          role,
+        })),
+      );
     return study;
   }
   /** The error a browser would receive for a mutation: the formatted shape, as JSON. */
   async function httpError(caller: Caller, path: string, input: unknown) {
     const res = await fetchRequestHandler({
       endpoint: "/api/trpc",
-      req: new Request(`http://test/api/trpc/${path}`, { method: "POST", body: JSON.stringify(input), headers: { "content-type": "application/json" } }),
+      req: new Request(`http://test/api/trpc/${path}`, {
+        method: "POST",
+        body: JSON.stringify(input),
+        headers: { "content-type": "application/json" },
+      }),
       router: appRouter,
       createContext: () => context(caller),
     });
-    const body = (await res.json()) as { error?: { message: string; data: { code: string; issues: Array<{ field: string; message: string }> | null } } };
+    const body = (await res.json()) as {
+      error?: { message: string; data: { code: string; issues: Array<{ field: string; message: string }> | null } };
+    };
     return body.error ?? null;
   }
   return { db, people, api, apiAs, newStudy, httpError, media };

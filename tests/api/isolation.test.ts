@@ -27,19 +27,44 @@ async function victimStudy() {
   const victim = await newPerson(db, "victim");
   const api = f.apiAs(victim);
   const study = await api.studies.create({ title: "Victim study" });
-  const experiment = await api.experiments.create({ studyId: study.id, name: "Secret protocol", robotPluginId: "nao6-ros2" });
-  await api.experiments.saveDesign({ experimentId: experiment.id, baseRevision: 0, steps: [{ name: "Secret step", actions: [{ type: "say", parameters: { text: "secret" } }] }] });
+  const experiment = await api.experiments.create({
+    studyId: study.id,
+    name: "Secret protocol",
+    robotPluginId: "nao6-ros2",
+  });
+  await api.experiments.saveDesign({
+    experimentId: experiment.id,
+    baseRevision: 0,
+    steps: [{ name: "Secret step", actions: [{ type: "say", parameters: { text: "secret" } }] }],
+  });
   const version = await api.versions.publish({ experimentId: experiment.id });
-  const participant = await api.participants.create({ studyId: study.id, code: "V1", consentStatus: "given", consentDate: new Date() });
-  const condition = await api.conditions.create({ studyId: study.id, name: "Secret condition", experimentId: experiment.id });
+  const participant = await api.participants.create({
+    studyId: study.id,
+    code: "V1",
+    consentStatus: "given",
+    consentDate: new Date(),
+  });
+  const condition = await api.conditions.create({
+    studyId: study.id,
+    name: "Secret condition",
+    experimentId: experiment.id,
+  });
   await api.conditions.assign({ participantId: participant.id, conditionId: condition.id });
-  const session = await api.sessions.schedule({ participantId: participant.id, plannedAt: new Date(), wizardId: victim.id });
+  const session = await api.sessions.schedule({
+    participantId: participant.id,
+    plannedAt: new Date(),
+    wizardId: victim.id,
+  });
   const trial = await api.trials.create({ versionId: version.id, participantId: participant.id });
   const annotation = await api.trials.annotate({ trialId: trial.id, relMs: 5, label: "Secret moment" });
   const { recordingId } = await api.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/mp4" });
   const questionnaire = await api.questionnaires.create({ studyId: study.id, instrument: "sus" });
   await api.questionnaires.publish({ questionnaireId: questionnaire.id });
-  await api.questionnaires.createLink({ questionnaireId: questionnaire.id, participantId: participant.id, trialId: trial.id });
+  await api.questionnaires.createLink({
+    questionnaireId: questionnaire.id,
+    participantId: participant.id,
+    trialId: trial.id,
+  });
   const ids: Record<ReferenceKey, string | string[]> = {
     studyId: study.id,
     experimentId: experiment.id,
@@ -63,7 +88,19 @@ const b = await victimStudy();
 async function ownIds(): Promise<Record<ReferenceKey, string | string[]>> {
   const owner = f.api("owner");
   const session = await owner.sessions.schedule({
-    participantId: (await owner.conditions.assign({ participantId: (await owner.participants.create({ studyId: a.study.id, code: "A-S", consentStatus: "given", consentDate: new Date() })).id, conditionId: a.condition.id })).id,
+    participantId: (
+      await owner.conditions.assign({
+        participantId: (
+          await owner.participants.create({
+            studyId: a.study.id,
+            code: "A-S",
+            consentStatus: "given",
+            consentDate: new Date(),
+          })
+        ).id,
+        conditionId: a.condition.id,
+      })
+    ).id,
     plannedAt: new Date(),
     wizardId: f.people.wizard.id,
   });
@@ -127,7 +164,10 @@ function swapped(input: unknown, keys: ReadonlySet<string>): unknown {
   if (Array.isArray(input)) return input.map((v) => swapped(v, keys));
   if (input === null || typeof input !== "object" || input instanceof Date) return input;
   return Object.fromEntries(
-    Object.entries(input).map(([k, v]) => [k, keys.has(k) && v !== null && v !== undefined ? b.ids[k as ReferenceKey] : swapped(v, keys)]),
+    Object.entries(input).map(([k, v]) => [
+      k,
+      keys.has(k) && v !== null && v !== undefined ? b.ids[k as ReferenceKey] : swapped(v, keys),
+    ]),
   );
 }
 
@@ -148,9 +188,15 @@ function variants(input: unknown): Array<[string, unknown]> {
   const allB = swapped(input, new Set(KEYS)) as Record<string, unknown>;
   return [
     ["every id of study B", allB],
-    ...KEYS.filter((k) => !own.has(k)).map((k): [string, unknown] => [`every id of study B and an extra ${k} of study A`, { ...allB, [k]: aIds[k] }]),
+    ...KEYS.filter((k) => !own.has(k)).map((k): [string, unknown] => [
+      `every id of study B and an extra ${k} of study A`,
+      { ...allB, [k]: aIds[k] },
+    ]),
     ...[...own].map((k): [string, unknown] => [`${k} of study B, the rest of A`, swapped(input, new Set([k]))]),
-    ...KEYS.filter((k) => !own.has(k)).map((k): [string, unknown] => [`an extra ${k} of study B`, { ...base, [k]: b.ids[k] }]),
+    ...KEYS.filter((k) => !own.has(k)).map((k): [string, unknown] => [
+      `an extra ${k} of study B`,
+      { ...base, [k]: b.ids[k] },
+    ]),
   ];
 }
 
@@ -169,20 +215,34 @@ describe("study isolation", () => {
   });
 
   // Procedures outside any study (accounts, plugins, administration) must carry no study's ids.
-  it.each(procedures.filter(([path]) => !isStudyProcedure(path)).map(([path]) => [path]))("%s names no row of a study", (path) => {
-    const shape = procedures.find(([p]) => p === path)![1]._def.inputs.flatMap((i) => Object.keys(i.shape ?? {}));
-    expect(shape.filter((k) => (KEYS as string[]).includes(k) && REFERENCES[k as ReferenceKey] !== "member")).toEqual([]);
-  });
+  it.each(procedures.filter(([path]) => !isStudyProcedure(path)).map(([path]) => [path]))(
+    "%s names no row of a study",
+    (path) => {
+      const shape = procedures.find(([p]) => p === path)![1]._def.inputs.flatMap((i) => Object.keys(i.shape ?? {}));
+      expect(shape.filter((k) => (KEYS as string[]).includes(k) && REFERENCES[k as ReferenceKey] !== "member")).toEqual(
+        [],
+      );
+    },
+  );
 
-  const cases = procedures.filter(([path]) => isStudyProcedure(path)).flatMap(([path]) => CALLERS.map((caller) => [path, caller] as const));
+  const cases = procedures
+    .filter(([path]) => isStudyProcedure(path))
+    .flatMap(([path]) => CALLERS.map((caller) => [path, caller] as const));
 
   it.each(cases)("%s by %s: refused with any id of study B", async (path, caller) => {
-    const own = MATRIX[path] ? await MATRIX[path][1](f, a, caller) : { [`${procedures.find(([p]) => p === path)![1]._def.meta!.resource}Id`]: "x" };
+    const own = MATRIX[path]
+      ? await MATRIX[path][1](f, a, caller)
+      : { [`${procedures.find(([p]) => p === path)![1]._def.meta!.resource}Id`]: "x" };
     for (const [attack, input] of variants(own)) {
       const outcome = await call(caller, path, input);
       const refusal = outcome.ok ? null : outcome.error instanceof TRPCError ? outcome.error : null;
-      expect(refusal, `${path} by ${caller} with ${attack} was ${outcome.ok ? "allowed" : `an unexpected error: ${String(outcome.error)}`}`).not.toBeNull();
-      expect(["UNAUTHORIZED", "NOT_FOUND", "FORBIDDEN", "BAD_REQUEST"], `${attack}: ${refusal!.message}`).toContain(refusal!.code);
+      expect(
+        refusal,
+        `${path} by ${caller} with ${attack} was ${outcome.ok ? "allowed" : `an unexpected error: ${String(outcome.error)}`}`,
+      ).not.toBeNull();
+      expect(["UNAUTHORIZED", "NOT_FOUND", "FORBIDDEN", "BAD_REQUEST"], `${attack}: ${refusal!.message}`).toContain(
+        refusal!.code,
+      );
     }
   });
 

@@ -16,12 +16,24 @@ export type Base = Awaited<ReturnType<typeof baseData>>;
 
 export async function baseData(f: Fixture) {
   const study = await f.newStudy();
-  const experiment = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await f.api("owner").experiments.saveDesign({ experimentId: experiment.id, baseRevision: 0, steps: [{ name: "S1", actions: [{ type: "say", parameters: { text: "hi" } }] }] });
+  const experiment = await f
+    .api("owner")
+    .experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+  await f
+    .api("owner")
+    .experiments.saveDesign({
+      experimentId: experiment.id,
+      baseRevision: 0,
+      steps: [{ name: "S1", actions: [{ type: "say", parameters: { text: "hi" } }] }],
+    });
   const version = await f.api("owner").versions.publish({ experimentId: experiment.id });
-  const participant = await f.api("owner").participants.create({ studyId: study.id, code: "P1", consentStatus: "given", consentDate: new Date() });
+  const participant = await f
+    .api("owner")
+    .participants.create({ studyId: study.id, code: "P1", consentStatus: "given", consentDate: new Date() });
   const trial = await f.api("owner").trials.create({ versionId: version.id, participantId: participant.id });
-  const condition = await f.api("owner").conditions.create({ studyId: study.id, name: "With gestures", experimentId: experiment.id });
+  const condition = await f
+    .api("owner")
+    .conditions.create({ studyId: study.id, name: "With gestures", experimentId: experiment.id });
   return { study, experiment, version, participant, trial, condition };
 }
 
@@ -29,7 +41,12 @@ export async function baseData(f: Fixture) {
 /** A consenting participant, assigned, with a session planned for the study's wizard. */
 const freshSession = async (f: Fixture, b: Base) => {
   const owner = f.api("owner");
-  const p = await owner.participants.create({ studyId: b.study.id, code: `S${crypto.randomUUID().slice(0, 8)}`, consentStatus: "given", consentDate: new Date() });
+  const p = await owner.participants.create({
+    studyId: b.study.id,
+    code: `S${crypto.randomUUID().slice(0, 8)}`,
+    consentStatus: "given",
+    consentDate: new Date(),
+  });
   await owner.conditions.assign({ participantId: p.id, conditionId: b.condition.id });
   return owner.sessions.schedule({ participantId: p.id, plannedAt: new Date(), wizardId: f.people.wizard.id });
 };
@@ -37,7 +54,13 @@ const freshSession = async (f: Fixture, b: Base) => {
 /** Each publish gets an experiment of its own, so the base experiment keeps the one version the other rows use. */
 const publishable = async (f: Fixture, b: Base) => {
   const e = await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotPluginId: "nao6-ros2" });
-  await f.api("owner").experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
+  await f
+    .api("owner")
+    .experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: 0,
+      steps: [{ name: "S", actions: [{ type: "wave" }] }],
+    });
   return e;
 };
 /** A published SUS in the base study, and a fresh one-time link to it for the base participant. */
@@ -45,11 +68,17 @@ const freshLink = async (f: Fixture, b: Base) => {
   const owner = f.api("owner");
   const q = await owner.questionnaires.create({ studyId: b.study.id, instrument: "sus" });
   await owner.questionnaires.publish({ questionnaireId: q.id });
-  return owner.questionnaires.createLink({ questionnaireId: q.id, participantId: b.participant.id, trialId: b.trial.id });
+  return owner.questionnaires.createLink({
+    questionnaireId: q.id,
+    participantId: b.participant.id,
+    trialId: b.trial.id,
+  });
 };
 /** A recording of the base trial with one part stored, and (when asked) finished. */
 const freshRecording = async (f: Fixture, b: Base, finished = false) => {
-  const { recordingId } = await f.api("owner").recordings.start({ trialId: b.trial.id, kind: "video", mimeType: "video/mp4" });
+  const { recordingId } = await f
+    .api("owner")
+    .recordings.start({ trialId: b.trial.id, kind: "video", mimeType: "video/mp4" });
   await f.media.storage.put(`recordings/${recordingId}/chunk-000000`, new Uint8Array([1, 2, 3]), "video/mp4");
   if (finished) await f.api("owner").recordings.finish({ recordingId, durationMs: 1000 });
   return { recordingId };
@@ -73,8 +102,14 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "studies.exportArchive": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
   "studies.delete": [OWNER, async (f) => ({ studyId: (await f.newStudy("Doomed")).id, confirmTitle: "Doomed" })],
   "members.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
-  "members.add": [OWNER, async (f, b) => ({ studyId: b.study.id, email: (await newPerson(f.db, "invitee")).email, role: "observer" })],
-  "members.changeRole": [OWNER, async (f, b) => ({ studyId: b.study.id, userId: (await freshMember(f, b)).id, role: "wizard" })],
+  "members.add": [
+    OWNER,
+    async (f, b) => ({ studyId: b.study.id, email: (await newPerson(f.db, "invitee")).email, role: "observer" }),
+  ],
+  "members.changeRole": [
+    OWNER,
+    async (f, b) => ({ studyId: b.study.id, userId: (await freshMember(f, b)).id, role: "wizard" }),
+  ],
   "members.remove": [OWNER, async (f, b) => ({ studyId: b.study.id, userId: (await freshMember(f, b)).id })],
   "experiments.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
   "experiments.get": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
@@ -89,7 +124,13 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "versions.publish": [EDITORS, async (f, b) => ({ experimentId: (await publishable(f, b)).id })],
   "versions.diff": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id, from: 1, to: 1 })],
   "experiments.exportFile": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
-  "experiments.importFile": [EDITORS, async (f, b) => ({ studyId: b.study.id, text: (await f.api("owner").experiments.exportFile({ experimentId: b.experiment.id })).text })],
+  "experiments.importFile": [
+    EDITORS,
+    async (f, b) => ({
+      studyId: b.study.id,
+      text: (await f.api("owner").experiments.exportFile({ experimentId: b.experiment.id })).text,
+    }),
+  ],
   "versions.list": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
   "versions.get": [MEMBERS, (_f, b) => ({ versionId: b.version.id })],
   "participants.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
@@ -98,7 +139,13 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "participants.reinstate": [
     OWNER,
     async (f, b) => {
-      const p = await f.api("owner").participants.create({ studyId: b.study.id, code: `W-${crypto.randomUUID().slice(0, 6)}`, consentStatus: "withdrawn" });
+      const p = await f
+        .api("owner")
+        .participants.create({
+          studyId: b.study.id,
+          code: `W-${crypto.randomUUID().slice(0, 6)}`,
+          consentStatus: "withdrawn",
+        });
       return { participantId: p.id, reason: "recorded by mistake" };
     },
   ],
@@ -106,19 +153,43 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "plugins.get": [SIGNED_IN, () => ({ robotId: "nao6-ros2" })],
   "plugins.repositories.list": [ADMIN, () => undefined],
   "plugins.repositories.add": [ADMIN, () => ({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` })],
-  "plugins.repositories.remove": [ADMIN, async (f) => ({ repositoryId: (await f.api("admin").plugins.repositories.add({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` })).id })],
-  "plugins.repositories.sync": [ADMIN, async (f) => ({ repositoryId: (await f.api("admin").plugins.repositories.add({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` })).id })],
+  "plugins.repositories.remove": [
+    ADMIN,
+    async (f) => ({
+      repositoryId: (
+        await f.api("admin").plugins.repositories.add({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` })
+      ).id,
+    }),
+  ],
+  "plugins.repositories.sync": [
+    ADMIN,
+    async (f) => ({
+      repositoryId: (
+        await f.api("admin").plugins.repositories.add({ url: `http://127.0.0.1:9/${crypto.randomUUID()}/` })
+      ).id,
+    }),
+  ],
   "conditions.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
-  "conditions.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, name: `C-${crypto.randomUUID().slice(0, 6)}`, experimentId: b.experiment.id })],
+  "conditions.create": [
+    EDITORS,
+    (_f, b) => ({ studyId: b.study.id, name: `C-${crypto.randomUUID().slice(0, 6)}`, experimentId: b.experiment.id }),
+  ],
   "conditions.assign": [
     EDITORS,
-    async (f, b) => ({ participantId: (await f.api("owner").participants.create({ studyId: b.study.id, code: `A-${crypto.randomUUID().slice(0, 6)}` })).id, conditionId: b.condition.id }),
+    async (f, b) => ({
+      participantId: (
+        await f.api("owner").participants.create({ studyId: b.study.id, code: `A-${crypto.randomUUID().slice(0, 6)}` })
+      ).id,
+      conditionId: b.condition.id,
+    }),
   ],
   "sessions.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
   "sessions.schedule": [
     EDITORS,
     async (f, b) => {
-      const p = await f.api("owner").participants.create({ studyId: b.study.id, code: `Q${crypto.randomUUID().slice(0, 8)}` });
+      const p = await f
+        .api("owner")
+        .participants.create({ studyId: b.study.id, code: `Q${crypto.randomUUID().slice(0, 8)}` });
       await f.api("owner").conditions.assign({ participantId: p.id, conditionId: b.condition.id });
       return { participantId: p.id, plannedAt: new Date(), wizardId: f.people.wizard.id };
     },
@@ -127,10 +198,26 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "sessions.mine": [SIGNED_IN, () => undefined],
   "sessions.start": [RUNNERS, async (f, b) => ({ sessionId: (await freshSession(f, b)).id })],
   "questionnaires.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
-  "questionnaires.get": [MEMBERS, async (f, b) => ({ questionnaireId: (await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" })).id })],
+  "questionnaires.get": [
+    MEMBERS,
+    async (f, b) => ({
+      questionnaireId: (await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" })).id,
+    }),
+  ],
   "questionnaires.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, name: "Recall" })],
-  "questionnaires.save": [EDITORS, async (f, b) => ({ questionnaireId: (await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" })).id, timing: "after" })],
-  "questionnaires.publish": [EDITORS, async (f, b) => ({ questionnaireId: (await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" })).id })],
+  "questionnaires.save": [
+    EDITORS,
+    async (f, b) => ({
+      questionnaireId: (await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" })).id,
+      timing: "after",
+    }),
+  ],
+  "questionnaires.publish": [
+    EDITORS,
+    async (f, b) => ({
+      questionnaireId: (await f.api("owner").questionnaires.create({ studyId: b.study.id, instrument: "sus" })).id,
+    }),
+  ],
   "questionnaires.createLink": [
     RUNNERS,
     async (f, b) => {
@@ -145,7 +232,10 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "form.open": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token })],
   "form.save": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token, answers: { sus1: 3 } })],
   "form.submit": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token, answers: sus })],
-  "recordings.start": [RUNNERS, (_f, b) => ({ trialId: b.trial.id, kind: "video", mimeType: "video/webm;codecs=vp8,opus" })],
+  "recordings.start": [
+    RUNNERS,
+    (_f, b) => ({ trialId: b.trial.id, kind: "video", mimeType: "video/webm;codecs=vp8,opus" }),
+  ],
   "recordings.setOffset": [RUNNERS, async (f, b) => ({ ...(await freshRecording(f, b)), offsetMs: 120 })],
   "recordings.chunkTarget": [RUNNERS, async (f, b) => freshRecording(f, b)],
   "recordings.finish": [RUNNERS, async (f, b) => ({ ...(await freshRecording(f, b)), durationMs: 1000 })],
@@ -155,7 +245,16 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   // Each caller edits a moment they marked themselves; others' moments are the owner's and researchers' to edit (tested in analysis.test).
   "trials.editAnnotation": [
     MEMBERS,
-    async (f, b, caller) => ({ annotationId: (await f.api(caller as "owner").trials.annotate({ trialId: b.trial.id, relMs: 10, label: "Mine" }).catch(() => ({ id: b.trial.id }))).id, label: "Edited", note: "" }),
+    async (f, b, caller) => ({
+      annotationId: (
+        await f
+          .api(caller as "owner")
+          .trials.annotate({ trialId: b.trial.id, relMs: 10, label: "Mine" })
+          .catch(() => ({ id: b.trial.id }))
+      ).id,
+      label: "Edited",
+      note: "",
+    }),
   ],
   "trials.create": [RUNNERS, (_f, b) => ({ versionId: b.version.id, participantId: b.participant.id })],
   "trials.rehearse": [RUNNERS, (_f, b) => ({ experimentId: b.experiment.id })],
@@ -167,9 +266,16 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "trials.export": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id, format: "json" })],
   "trials.samples": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
   "admin.users.list": [ADMIN, () => undefined],
-  "admin.users.create": [ADMIN, () => ({ name: "New person", email: `new-${crypto.randomUUID().slice(0, 8)}@example.org`, password: "password-123", role: "observer" })],
+  "admin.users.create": [
+    ADMIN,
+    () => ({
+      name: "New person",
+      email: `new-${crypto.randomUUID().slice(0, 8)}@example.org`,
+      password: "password-123",
+      role: "observer",
+    }),
+  ],
   "admin.users.setRole": [ADMIN, async (f) => ({ userId: (await newPerson(f.db, "promoted")).id, role: "wizard" })],
   "admin.users.setDisabled": [ADMIN, async (f) => ({ userId: (await newPerson(f.db, "disabled")).id, disabled: true })],
   "admin.auditLog": [ADMIN, () => ({ limit: 10 })],
 };
-

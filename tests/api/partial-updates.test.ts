@@ -39,10 +39,26 @@ describe("studies.update changes only the fields it names", () => {
     ["title", { title: "Renamed" }, () => ({ title: "Renamed" })],
     ["description", { description: "Changed" }, () => ({ description: "Changed" })],
     ["status", { status: "completed" }, () => ({ status: "completed" })],
-    ["consent required", { settings: { requireConsent: true } }, (b) => ({ settings: { ...b.settings, requireConsent: true } })],
-    ["the wizards' blind", { settings: { blinding: { conditionsFromWizards: false } } }, (b) => ({ settings: { ...b.settings, blinding: { ...b.settings.blinding, conditionsFromWizards: false } } })],
-    ["the results' blind", { settings: { blinding: { resultsUntilComplete: false } } }, (b) => ({ settings: { ...b.settings, blinding: { ...b.settings.blinding, resultsUntilComplete: false } } })],
-    ["the consent document", { settings: { consentDocumentVersion: "3" } }, (b) => ({ settings: { ...b.settings, consentDocumentVersion: "3" } })],
+    [
+      "consent required",
+      { settings: { requireConsent: true } },
+      (b) => ({ settings: { ...b.settings, requireConsent: true } }),
+    ],
+    [
+      "the wizards' blind",
+      { settings: { blinding: { conditionsFromWizards: false } } },
+      (b) => ({ settings: { ...b.settings, blinding: { ...b.settings.blinding, conditionsFromWizards: false } } }),
+    ],
+    [
+      "the results' blind",
+      { settings: { blinding: { resultsUntilComplete: false } } },
+      (b) => ({ settings: { ...b.settings, blinding: { ...b.settings.blinding, resultsUntilComplete: false } } }),
+    ],
+    [
+      "the consent document",
+      { settings: { consentDocumentVersion: "3" } },
+      (b) => ({ settings: { ...b.settings, consentDocumentVersion: "3" } }),
+    ],
   ])("%s", async (_, change, changed) => {
     const studyId = await fullStudy();
     const before = await owner.studies.get({ studyId });
@@ -64,7 +80,8 @@ async function fullParticipant() {
   });
   return { studyId, participantId: p.id };
 }
-const readParticipant = async (studyId: string, participantId: string) => (await owner.participants.list({ studyId })).find((p) => p.id === participantId)!;
+const readParticipant = async (studyId: string, participantId: string) =>
+  (await owner.participants.list({ studyId })).find((p) => p.id === participantId)!;
 
 describe("participants.update changes only the fields it names", () => {
   it.each<[string, Record<string, unknown>]>([
@@ -86,16 +103,25 @@ describe("participants.update changes only the fields it names", () => {
 async function fullQuestionnaire() {
   const studyId = await fullStudy();
   const { id } = await owner.questionnaires.create({ studyId, name: "Recall" });
-  await owner.questionnaires.save({ questionnaireId: id, timing: "before", definition: { ...blankQuestionnaire("Recall", () => "s1"), instructions: "Answer freely" } });
+  await owner.questionnaires.save({
+    questionnaireId: id,
+    timing: "before",
+    definition: { ...blankQuestionnaire("Recall", () => "s1"), instructions: "Answer freely" },
+  });
   return id;
 }
-const readQuestionnaire = async (questionnaireId: string) => withoutStamps(await owner.questionnaires.get({ questionnaireId }));
+const readQuestionnaire = async (questionnaireId: string) =>
+  withoutStamps(await owner.questionnaires.get({ questionnaireId }));
 
 describe("questionnaires.save changes only the fields it names", () => {
   it.each<[string, Record<string, unknown>, object]>([
     ["name", { name: "Story recall" }, { name: "Story recall" }],
     ["timing", { timing: "after" }, { timing: "after" }],
-    ["definition", { definition: blankQuestionnaire("Other", () => "s2") }, { draft: blankQuestionnaire("Other", () => "s2") }],
+    [
+      "definition",
+      { definition: blankQuestionnaire("Other", () => "s2") },
+      { draft: blankQuestionnaire("Other", () => "s2") },
+    ],
   ])("%s", async (_, change, changed) => {
     const questionnaireId = await fullQuestionnaire();
     const before = await readQuestionnaire(questionnaireId);
@@ -111,13 +137,29 @@ describe("the designer's save changes only the experiment details it names", () 
     ["robot", { robotPluginId: "pepper-ros2" }],
   ])("%s", async (_, details) => {
     const studyId = await fullStudy();
-    const e = await owner.experiments.create({ studyId, name: "Full", description: "Every field set", robotPluginId: "nao6-ros2" });
+    const e = await owner.experiments.create({
+      studyId,
+      name: "Full",
+      description: "Every field set",
+      robotPluginId: "nao6-ros2",
+    });
     const before = await owner.experiments.saveDesign({
       experimentId: e.id,
       baseRevision: 0,
-      steps: [{ name: "Greet", description: "Say hello", actions: [{ type: "say", name: "Hello", parameters: { text: "Hi" }, parallelGroup: "g1" }] }],
+      steps: [
+        {
+          name: "Greet",
+          description: "Say hello",
+          actions: [{ type: "say", name: "Hello", parameters: { text: "Hi" }, parallelGroup: "g1" }],
+        },
+      ],
     });
-    const after = await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: before.draftRevision, details, steps: before.steps });
+    const after = await owner.experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: before.draftRevision,
+      details,
+      steps: before.steps,
+    });
     expect(withoutStamps(after)).toEqual(withoutStamps({ ...before, ...details }));
   });
 });

@@ -17,10 +17,16 @@ import { trialHosts } from "../../src/runtime/trial-hosts";
 import { freshDatabase } from "../support/db";
 import { buildFixture } from "./fixture";
 
-const base = JSON.parse(readFileSync(join(import.meta.dirname, "..", "fixtures", "plugins", "base.json"), "utf8")) as Plugin;
+const base = JSON.parse(
+  readFileSync(join(import.meta.dirname, "..", "fixtures", "plugins", "base.json"), "utf8"),
+) as Plugin;
 const v1 = { ...base, robotId: "lab-bot", name: "Lab bot", version: "1.0.0" };
 // The next release speaks on another topic: which one a trial uses shows which document it runs.
-const v2 = { ...v1, version: "1.1.0", actions: v1.actions.map((a) => (a.id === "say_text" ? { ...a, ros2: { ...a.ros2!, topic: "/speech_v2" } } : a)) } as Plugin;
+const v2 = {
+  ...v1,
+  version: "1.1.0",
+  actions: v1.actions.map((a) => (a.id === "say_text" ? { ...a, ros2: { ...a.ros2!, topic: "/speech_v2" } } : a)),
+} as Plugin;
 const files: Record<string, string> = {
   "/repository.json": JSON.stringify({ id: "lab", name: "Our lab" }),
   "/plugins/index.json": JSON.stringify(["lab-bot.json"]),
@@ -35,7 +41,9 @@ let server: Server;
 beforeAll(async () => {
   server = createServer((req, res) => (files[req.url!] ? res.end(files[req.url!]) : res.writeHead(404).end()));
   await new Promise<void>((ok) => server.listen(0, "127.0.0.1", ok));
-  const repository = await f.api("admin").plugins.repositories.add({ url: `http://127.0.0.1:${(server.address() as AddressInfo).port}/` });
+  const repository = await f
+    .api("admin")
+    .plugins.repositories.add({ url: `http://127.0.0.1:${(server.address() as AddressInfo).port}/` });
   await f.api("admin").plugins.repositories.sync({ repositoryId: repository.id });
   repositoryId = repository.id;
   sync = () => f.api("admin").plugins.repositories.sync({ repositoryId });
@@ -47,12 +55,17 @@ afterAll(async () => {
 
 let repositoryId = "";
 let sync: () => Promise<unknown>;
-const topicOf = (plugin: Plugin | null) => (plugin?.actions.find((a) => a.id === "say_text")?.ros2 as { topic: string } | undefined)?.topic;
+const topicOf = (plugin: Plugin | null) =>
+  (plugin?.actions.find((a) => a.id === "say_text")?.ros2 as { topic: string } | undefined)?.topic;
 
 describe("a published version pins its plugin document", async () => {
   const study = await f.newStudy();
   const experiment = await owner.experiments.create({ studyId: study.id, name: "Greeting", robotPluginId: "lab-bot" });
-  await owner.experiments.saveDesign({ experimentId: experiment.id, baseRevision: 0, steps: [{ name: "Hello", actions: [{ type: "lab-bot.say_text", parameters: { text: "Hello" } }] }] });
+  await owner.experiments.saveDesign({
+    experimentId: experiment.id,
+    baseRevision: 0,
+    steps: [{ name: "Hello", actions: [{ type: "lab-bot.say_text", parameters: { text: "Hello" } }] }],
+  });
   let version: Awaited<ReturnType<typeof owner.versions.publish>>;
   let trialId = "";
 
@@ -60,7 +73,11 @@ describe("a published version pins its plugin document", async () => {
     version = await owner.versions.publish({ experimentId: experiment.id });
     const hash = hashCanonical(v1);
     expect(version.pluginHash).toBe(hash);
-    expect((await owner.versions.list({ experimentId: experiment.id }))[0]).toMatchObject({ pluginId: "lab-bot", pluginVersion: "1.0.0", pluginHash: hash });
+    expect((await owner.versions.list({ experimentId: experiment.id }))[0]).toMatchObject({
+      pluginId: "lab-bot",
+      pluginVersion: "1.0.0",
+      pluginHash: hash,
+    });
     expect(await owner.versions.get({ versionId: version.id })).toMatchObject({ pluginHash: hash });
     const [stored] = await db.select().from(pluginDocuments).where(eq(pluginDocuments.hash, hash));
     expect(stored).toMatchObject({ robotId: "lab-bot", version: "1.0.0", source: repositoryId, definition: v1 });
@@ -72,7 +89,12 @@ describe("a published version pins its plugin document", async () => {
     await sync();
     expect((await f.api("observer").plugins.get({ robotId: "lab-bot" })).version).toBe("1.1.0");
     const pinned = await trialPlugin(db, trialId);
-    expect(pinned).toMatchObject({ ok: true, robotId: "lab-bot", pinnedHash: hashCanonical(v1), plugin: { version: "1.0.0" } });
+    expect(pinned).toMatchObject({
+      ok: true,
+      robotId: "lab-bot",
+      pinnedHash: hashCanonical(v1),
+      plugin: { version: "1.0.0" },
+    });
     expect(topicOf(pinned.ok ? pinned.plugin : null)).toBe("/speech");
     const rehearsal = await owner.trials.rehearse({ experimentId: experiment.id });
     const current = await trialPlugin(db, rehearsal.id);
@@ -83,7 +105,12 @@ describe("a published version pins its plugin document", async () => {
   it("opens the trial in the runtime with exactly the pinned document", async () => {
     const lock = await sql.reserve();
     const given: Array<Plugin | null> = [];
-    const hosts = trialHosts(db, lock, (plugin, robotId) => (given.push(plugin), unavailableRobot(`test robot for ${robotId}`)), () => {});
+    const hosts = trialHosts(
+      db,
+      lock,
+      (plugin, robotId) => (given.push(plugin), unavailableRobot(`test robot for ${robotId}`)),
+      () => {},
+    );
     try {
       expect(await hosts.get(trialId)).not.toBeNull();
       expect(given.map((p) => [p?.version, topicOf(p)])).toEqual([["1.0.0", "/speech"]]);
@@ -105,7 +132,12 @@ describe("a published version pins its plugin document", async () => {
     const reason = `Version 1 was published with a lab-bot plugin document (${hashCanonical(v1).slice(0, 12)}) that is no longer stored, so its trials cannot run. Publish the experiment again to run it with the plugin installed now.`;
     expect(await trialPlugin(db, trialId)).toEqual({ ok: false, reason });
     const lock = await sql.reserve();
-    const hosts = trialHosts(db, lock, () => unavailableRobot("never asked"), () => {});
+    const hosts = trialHosts(
+      db,
+      lock,
+      () => unavailableRobot("never asked"),
+      () => {},
+    );
     try {
       // Another trial of the same version: the first one's lock is still held by the connection above.
       const other = await owner.trials.create({ versionId: version.id });

@@ -25,8 +25,17 @@ describe("robot plugins on the server", () => {
   it("records the exact plugin version in a published version", async () => {
     const study = await f.newStudy();
     const e = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-    await f.api("owner").experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
-    expect(await f.api("owner").versions.publish({ experimentId: e.id })).toMatchObject({ pluginId: "nao6-ros2", pluginVersion: "3.0.0" });
+    await f
+      .api("owner")
+      .experiments.saveDesign({
+        experimentId: e.id,
+        baseRevision: 0,
+        steps: [{ name: "S", actions: [{ type: "wave" }] }],
+      });
+    expect(await f.api("owner").versions.publish({ experimentId: e.id })).toMatchObject({
+      pluginId: "nao6-ros2",
+      pluginVersion: "3.0.0",
+    });
   });
 
   it("reports the Storyteller's portability per robot before any trial", async () => {
@@ -44,10 +53,25 @@ describe("robot plugins on the server", () => {
     // As the designer does: the draft and the robot's plugin from the server, the report from the core.
     const draft = await asOwner.experiments.get({ experimentId: storyteller!.id });
     const unsupported = async (robotId: string) =>
-      portability(draft, await asOwner.plugins.get({ robotId })).actions.filter((a) => a.status !== "supported").map((a) => a.type).sort();
+      portability(draft, await asOwner.plugins.get({ robotId }))
+        .actions.filter((a) => a.status !== "supported")
+        .map((a) => a.type)
+        .sort();
     expect(await unsupported("nao6-ros2")).toEqual([]);
     expect(await unsupported("simulated")).toEqual([]);
-    expect(await unsupported("turtlebot3-burger")).toEqual(["head_shake", "look_down", "nod", "say", "say", "say", "say", "say", "wave"]);
-    await expect(asOwner.plugins.get({ robotId: "r2d2" })).rejects.toThrow('No robot plugin called "r2d2" is installed.');
+    expect(await unsupported("turtlebot3-burger")).toEqual([
+      "head_shake",
+      "look_down",
+      "nod",
+      "say",
+      "say",
+      "say",
+      "say",
+      "say",
+      "wave",
+    ]);
+    await expect(asOwner.plugins.get({ robotId: "r2d2" })).rejects.toThrow(
+      'No robot plugin called "r2d2" is installed.',
+    );
   });
 });

@@ -12,7 +12,13 @@ const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
 const owner = f.api("owner");
 // The participant: no account at all.
-const participant = appRouter.createCaller({ db, user: null, secret: TEST_SECRET, runtimeUrl: "ws://127.0.0.1:1", media: testMedia() }).form;
+const participant = appRouter.createCaller({
+  db,
+  user: null,
+  secret: TEST_SECRET,
+  runtimeUrl: "ws://127.0.0.1:1",
+  media: testMedia(),
+}).form;
 afterAll(close);
 
 const SUS = Object.fromEntries([4, 2, 3, 4, 3, 1, 3, 3, 3, 2].map((v, i) => [`sus${i + 1}`, v]));
@@ -21,7 +27,12 @@ async function studyWithSus() {
   const study = await f.newStudy();
   const q = await owner.questionnaires.create({ studyId: study.id, instrument: "sus" });
   await owner.questionnaires.publish({ questionnaireId: q.id });
-  const p = await owner.participants.create({ studyId: study.id, code: "P001", consentStatus: "given", consentDate: new Date() });
+  const p = await owner.participants.create({
+    studyId: study.id,
+    code: "P001",
+    consentStatus: "given",
+    consentDate: new Date(),
+  });
   return { study, q, p };
 }
 
@@ -30,20 +41,34 @@ describe("questionnaire versions", () => {
     const { q, p } = await studyWithSus();
     const first = await owner.questionnaires.createLink({ questionnaireId: q.id, participantId: p.id });
     const draft = (await owner.questionnaires.get({ questionnaireId: q.id })).draft;
-    await owner.questionnaires.save({ questionnaireId: q.id, definition: { ...draft, instructions: "Rate the robot's storytelling." } });
+    await owner.questionnaires.save({
+      questionnaireId: q.id,
+      definition: { ...draft, instructions: "Rate the robot's storytelling." },
+    });
     expect(await owner.questionnaires.publish({ questionnaireId: q.id })).toMatchObject({ version: 2 });
     expect(first.version).toBe(1);
-    expect((await participant.open({ token: first.token })).definition.instructions).not.toBe("Rate the robot's storytelling.");
+    expect((await participant.open({ token: first.token })).definition.instructions).not.toBe(
+      "Rate the robot's storytelling.",
+    );
     const second = await owner.questionnaires.createLink({ questionnaireId: q.id, participantId: p.id });
     expect(second.version).toBe(2);
-    expect((await participant.open({ token: second.token })).definition.instructions).toBe("Rate the robot's storytelling.");
+    expect((await participant.open({ token: second.token })).definition.instructions).toBe(
+      "Rate the robot's storytelling.",
+    );
   });
 
   it("refuses a broken definition, naming the place", async () => {
     const { q } = await studyWithSus();
     const draft = (await owner.questionnaires.get({ questionnaireId: q.id })).draft;
-    const broken = { ...draft, sections: [{ ...draft.sections[0]!, items: [{ ...draft.sections[0]!.items[0]!, kind: "single", options: ["only one"] }] }] };
-    await expect(owner.questionnaires.save({ questionnaireId: q.id, definition: broken })).rejects.toMatchObject({ message: "Please correct: definition.sections.0.items.0.options: needs at least 2 options" });
+    const broken = {
+      ...draft,
+      sections: [
+        { ...draft.sections[0]!, items: [{ ...draft.sections[0]!.items[0]!, kind: "single", options: ["only one"] }] },
+      ],
+    };
+    await expect(owner.questionnaires.save({ questionnaireId: q.id, definition: broken })).rejects.toMatchObject({
+      message: "Please correct: definition.sections.0.items.0.options: needs at least 2 options",
+    });
   });
 });
 
@@ -53,25 +78,45 @@ describe("one-time links", () => {
     const { token } = await owner.questionnaires.createLink({ questionnaireId: q.id, participantId: p.id });
     await participant.save({ token, answers: { sus1: 4, sus2: 2 } });
     expect((await participant.open({ token })).answers).toEqual({ sus1: 4, sus2: 2 });
-    await expect(participant.submit({ token, answers: { sus1: 4 } })).rejects.toMatchObject({ code: "BAD_REQUEST", message: expect.stringMatching(/^Please check: I found the system unnecessarily complex\.: please answer/) });
+    await expect(participant.submit({ token, answers: { sus1: 4 } })).rejects.toMatchObject({
+      code: "BAD_REQUEST",
+      message: expect.stringMatching(/^Please check: I found the system unnecessarily complex\.: please answer/),
+    });
     expect(await participant.submit({ token, answers: SUS })).toEqual({ submitted: true, score: 60 });
     const used = { code: "FORBIDDEN", message: expect.stringMatching(/already been submitted with this link/) };
     await expect(participant.open({ token })).rejects.toMatchObject(used);
     await expect(participant.submit({ token, answers: SUS })).rejects.toMatchObject(used);
     const csv = (await owner.questionnaires.exportCsv({ studyId: study.id })).body.split("\r\n");
     expect(csv[0]).toBe("participant,trial_id,questionnaire,version,item_id,item,answer");
-    expect(csv).toContain("P001,,System Usability Scale (SUS),1,sus1,I think that I would like to use this system frequently.,4");
+    expect(csv).toContain(
+      "P001,,System Usability Scale (SUS),1,sus1,I think that I would like to use this system frequently.,4",
+    );
     expect(csv).toContain("P001,,System Usability Scale (SUS),1,score,score,60");
   });
 
   it("refuses an expired link and a made-up one, and never makes a link for another study's participant", async () => {
     const { q, p } = await studyWithSus();
-    const { token } = await owner.questionnaires.createLink({ questionnaireId: q.id, participantId: p.id, expiresInMinutes: 1 });
-    await db.update(questionnaireLinks).set({ expiresAt: new Date(Date.now() - 1000) }).where(eq(questionnaireLinks.studyId, p.studyId));
-    await expect(participant.open({ token })).rejects.toMatchObject({ code: "FORBIDDEN", message: expect.stringMatching(/^This link expired at .* UTC\. Please ask the researcher for a new one\.$/) });
-    await expect(participant.open({ token: "x".repeat(32) })).rejects.toMatchObject({ code: "NOT_FOUND", message: "This questionnaire link is not valid. Please ask the researcher for a new one." });
+    const { token } = await owner.questionnaires.createLink({
+      questionnaireId: q.id,
+      participantId: p.id,
+      expiresInMinutes: 1,
+    });
+    await db
+      .update(questionnaireLinks)
+      .set({ expiresAt: new Date(Date.now() - 1000) })
+      .where(eq(questionnaireLinks.studyId, p.studyId));
+    await expect(participant.open({ token })).rejects.toMatchObject({
+      code: "FORBIDDEN",
+      message: expect.stringMatching(/^This link expired at .* UTC\. Please ask the researcher for a new one\.$/),
+    });
+    await expect(participant.open({ token: "x".repeat(32) })).rejects.toMatchObject({
+      code: "NOT_FOUND",
+      message: "This questionnaire link is not valid. Please ask the researcher for a new one.",
+    });
     const other = await studyWithSus();
-    await expect(owner.questionnaires.createLink({ questionnaireId: q.id, participantId: other.p.id })).rejects.toMatchObject({
+    await expect(
+      owner.questionnaires.createLink({ questionnaireId: q.id, participantId: other.p.id }),
+    ).rejects.toMatchObject({
       code: "BAD_REQUEST",
       message: "Please correct: participantId: not a participant of this study",
     });
@@ -81,7 +126,9 @@ describe("one-time links", () => {
     const { q, p } = await studyWithSus();
     const { token } = await owner.questionnaires.createLink({ questionnaireId: q.id, participantId: p.id });
     await participant.save({ token, answers: { sus1: 5 } });
-    await expect(participant.save({ token, answers: { sus1: 9, "<script>": "x" } })).rejects.toMatchObject({ code: "BAD_REQUEST" });
+    await expect(participant.save({ token, answers: { sus1: 9, "<script>": "x" } })).rejects.toMatchObject({
+      code: "BAD_REQUEST",
+    });
     expect((await participant.open({ token })).answers).toEqual({ sus1: 5 });
   });
 });
@@ -91,14 +138,33 @@ describe("digital consent", () => {
     const study = await f.newStudy();
     const q = await owner.questionnaires.create({ studyId: study.id, name: "Consent form" });
     const draft = (await owner.questionnaires.get({ questionnaireId: q.id })).draft;
-    const consentText = "You will hear a robot tell a story. Your answers are stored under a code, never your name. You may stop at any time.";
-    await owner.questionnaires.save({ questionnaireId: q.id, definition: { ...draft, sections: [{ ...draft.sections[0]!, items: [{ id: "agree", kind: "consent", text: consentText, required: true }] }] } });
+    const consentText =
+      "You will hear a robot tell a story. Your answers are stored under a code, never your name. You may stop at any time.";
+    await owner.questionnaires.save({
+      questionnaireId: q.id,
+      definition: {
+        ...draft,
+        sections: [
+          { ...draft.sections[0]!, items: [{ id: "agree", kind: "consent", text: consentText, required: true }] },
+        ],
+      },
+    });
     await owner.questionnaires.publish({ questionnaireId: q.id });
     const p = await owner.participants.create({ studyId: study.id, code: "C001" });
-    const { token } = await owner.questionnaires.createLink({ questionnaireId: q.id, participantId: p.id, expiresInMinutes: 60 * 24 * 7 });
-    await expect(participant.submit({ token, answers: { agree: false } })).rejects.toMatchObject({ message: expect.stringMatching(/please agree to take part/) });
+    const { token } = await owner.questionnaires.createLink({
+      questionnaireId: q.id,
+      participantId: p.id,
+      expiresInMinutes: 60 * 24 * 7,
+    });
+    await expect(participant.submit({ token, answers: { agree: false } })).rejects.toMatchObject({
+      message: expect.stringMatching(/please agree to take part/),
+    });
     await participant.submit({ token, answers: { agree: true } });
     const [after] = await owner.participants.list({ studyId: study.id });
-    expect(after).toMatchObject({ consentStatus: "given", consentVersion: "Consent form v1", consentDate: expect.any(Date) });
+    expect(after).toMatchObject({
+      consentStatus: "given",
+      consentVersion: "Consent form v1",
+      consentDate: expect.any(Date),
+    });
   });
 });

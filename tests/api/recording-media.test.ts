@@ -16,7 +16,11 @@ async function recording(finished: boolean) {
   const api = await s.apiAs(owner);
   const study = await s.f.newStudy();
   const e = await api.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await api.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
+  await api.experiments.saveDesign({
+    experimentId: e.id,
+    baseRevision: 0,
+    steps: [{ name: "S", actions: [{ type: "wave" }] }],
+  });
   const trial = await api.trials.create({ versionId: (await api.versions.publish({ experimentId: e.id })).id });
   const { recordingId } = await api.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/mp4" });
   await s.server.media.storage.put(`recordings/${recordingId}/chunk-000000`, bytes, "video/mp4");
@@ -25,7 +29,12 @@ async function recording(finished: boolean) {
 }
 
 const get = (recordingId: string, who: Headers, headers: Record<string, string> = {}, query = "") =>
-  media.GET(new Request(`${ORIGIN}/api/recordings/${recordingId}/media${query}`, { headers: { cookie: who.get("cookie")!, ...headers } }), { params: Promise.resolve({ recordingId }) });
+  media.GET(
+    new Request(`${ORIGIN}/api/recordings/${recordingId}/media${query}`, {
+      headers: { cookie: who.get("cookie")!, ...headers },
+    }),
+    { params: Promise.resolve({ recordingId }) },
+  );
 
 const body = async (res: Response) => new Uint8Array(await res.arrayBuffer());
 
@@ -35,7 +44,11 @@ describe("a recording's media route", () => {
     const res = await get(id, observer);
     expect(res.status).toBe(200);
     expect(res.body).toBeInstanceOf(ReadableStream);
-    expect(Object.fromEntries(res.headers)).toMatchObject({ "content-type": "video/mp4", "content-length": "100000", "accept-ranges": "bytes" });
+    expect(Object.fromEntries(res.headers)).toMatchObject({
+      "content-type": "video/mp4",
+      "content-length": "100000",
+      "accept-ranges": "bytes",
+    });
     expect(await body(res)).toEqual(bytes);
   });
 

@@ -45,7 +45,10 @@ describe("an unexpected error in a route", () => {
   it("treats a procedure's wrapped failure (INTERNAL_SERVER_ERROR) the same, and other refusals as before", async () => {
     const { result: res } = await logged(() =>
       apiRoute(new Request(`${ORIGIN}/api/anything`, { headers: owner }), async () => {
-        throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: 'null value in column "code" violates not-null constraint' });
+        throw new TRPCError({
+          code: "INTERNAL_SERVER_ERROR",
+          message: 'null value in column "code" violates not-null constraint',
+        });
       }),
     );
     expect(res.status).toBe(500);
@@ -60,16 +63,27 @@ describe("an unexpected error in a route", () => {
     const api = await s.apiAs(owner);
     const study = await s.f.newStudy();
     const e = await api.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-    await api.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
+    await api.experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: 0,
+      steps: [{ name: "S", actions: [{ type: "wave" }] }],
+    });
     const trial = await api.trials.create({ versionId: (await api.versions.publish({ experimentId: e.id })).id });
     const { recordingId } = await api.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/webm" });
     // A file where the recording's folder should be: the store cannot write.
     mkdirSync(join(process.env.HRI_MEDIA_DIR!, "recordings"), { recursive: true });
     writeFileSync(join(process.env.HRI_MEDIA_DIR!, "recordings", recordingId), "in the way");
     const { result: res, log } = await logged(() =>
-      chunks.PUT(new Request(`${ORIGIN}/api/recordings/${recordingId}/chunks/0`, { method: "PUT", headers: { cookie: owner.get("cookie")!, "content-type": "video/webm" }, body: new Uint8Array([1, 2, 3]) }), {
-        params: Promise.resolve({ recordingId, index: "0" }),
-      }),
+      chunks.PUT(
+        new Request(`${ORIGIN}/api/recordings/${recordingId}/chunks/0`, {
+          method: "PUT",
+          headers: { cookie: owner.get("cookie")!, "content-type": "video/webm" },
+          body: new Uint8Array([1, 2, 3]),
+        }),
+        {
+          params: Promise.resolve({ recordingId, index: "0" }),
+        },
+      ),
     );
     expect(res.status).toBe(500);
     const text = await res.text();
@@ -79,7 +93,10 @@ describe("an unexpected error in a route", () => {
   });
 
   it("gives each error its own reference", async () => {
-    const { result } = await logged(async () => [logUnexpected(new Error("a"), "here"), logUnexpected(new Error("b"), "here")]);
+    const { result } = await logged(async () => [
+      logUnexpected(new Error("a"), "here"),
+      logUnexpected(new Error("b"), "here"),
+    ]);
     expect(result[0]).not.toBe(result[1]);
   });
 });

@@ -30,12 +30,20 @@ const routes = routeFiles(API).filter((r) => !OWN_TESTS.has(r));
 /** A study with a finished recording and a recording still taking parts, built by `api`. */
 async function studyWithRows(api: Awaited<ReturnType<typeof s.apiAs>>, studyId: string, code: string) {
   const e = await api.experiments.create({ studyId, name: `Experiment ${code}`, robotPluginId: "nao6-ros2" });
-  await api.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "say", parameters: { text: `secret of ${code}` } }] }] });
+  await api.experiments.saveDesign({
+    experimentId: e.id,
+    baseRevision: 0,
+    steps: [{ name: "S", actions: [{ type: "say", parameters: { text: `secret of ${code}` } }] }],
+  });
   const version = await api.versions.publish({ experimentId: e.id });
   const p = await api.participants.create({ studyId, code, consentStatus: "given", consentDate: new Date() });
   const trial = await api.trials.create({ versionId: version.id, participantId: p.id });
   const finished = await api.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/mp4" });
-  await s.server.media.storage.put(`recordings/${finished.recordingId}/chunk-000000`, new TextEncoder().encode(`video of ${code}`), "video/mp4");
+  await s.server.media.storage.put(
+    `recordings/${finished.recordingId}/chunk-000000`,
+    new TextEncoder().encode(`video of ${code}`),
+    "video/mp4",
+  );
   await api.recordings.finish({ recordingId: finished.recordingId, durationMs: 1000 });
   const open = await api.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/mp4" });
   return { studyId, trialId: trial.id, recordingId: finished.recordingId, openRecordingId: open.recordingId };
@@ -62,10 +70,18 @@ function param(name: string, ids: Ids, method: string): string {
 }
 
 async function call(route: string, method: string, ids: Ids, who: Headers | null, query = "") {
-  const handlers = (await import(`../../src/app/api/${route}/route`)) as Record<string, (req: Request, ctx: { params: Promise<Record<string, string>> }) => Promise<Response>>;
-  const params = Object.fromEntries([...route.matchAll(/\[(\w+)\]/g)].map(([, name]) => [name!, param(name!, ids, method)]));
+  const handlers = (await import(`../../src/app/api/${route}/route`)) as Record<
+    string,
+    (req: Request, ctx: { params: Promise<Record<string, string>> }) => Promise<Response>
+  >;
+  const params = Object.fromEntries(
+    [...route.matchAll(/\[(\w+)\]/g)].map(([, name]) => [name!, param(name!, ids, method)]),
+  );
   const path = route.replace(/\[(\w+)\]/g, (_, name: string) => params[name]!);
-  const init: RequestInit = { method, headers: { ...(who ? { cookie: who.get("cookie")! } : {}), "content-type": "video/mp4" } };
+  const init: RequestInit = {
+    method,
+    headers: { ...(who ? { cookie: who.get("cookie")! } : {}), "content-type": "video/mp4" },
+  };
   if (method === "PUT" || method === "POST") init.body = new TextEncoder().encode("smuggled part");
   return handlers[method]!(new Request(`${ORIGIN}/api/${path}${query}`, init), { params: Promise.resolve(params) });
 }
@@ -78,11 +94,18 @@ for (const route of routes) {
 }
 const CALLERS: Caller[] = ["owner", "researcher", "wizard", "observer", "outsider", "admin", "anonymous"];
 const signedIn: Partial<Record<Caller, Headers>> = { owner: ownerHeaders };
-for (const caller of CALLERS) if (caller !== "anonymous" && !signedIn[caller]) signedIn[caller] = await s.signIn(caller);
+for (const caller of CALLERS)
+  if (caller !== "anonymous" && !signedIn[caller]) signedIn[caller] = await s.signIn(caller);
 
 describe("REST routes keep studies apart", () => {
   it("finds the routes", () => {
-    expect(cases.map(([r, m]) => `${m} ${r}`).sort()).toEqual(expect.arrayContaining(["GET recordings/[recordingId]/media", "PUT recordings/[recordingId]/chunks/[index]", "GET trials/[trialId]/export"]));
+    expect(cases.map(([r, m]) => `${m} ${r}`).sort()).toEqual(
+      expect.arrayContaining([
+        "GET recordings/[recordingId]/media",
+        "PUT recordings/[recordingId]/chunks/[index]",
+        "GET trials/[trialId]/export",
+      ]),
+    );
   });
 
   it.each(cases)("%s %s works for study A's owner with A's ids", async (route, method) => {
@@ -91,15 +114,21 @@ describe("REST routes keep studies apart", () => {
   });
 
   const attacks = cases.flatMap(([route, method]) => CALLERS.map((caller) => [route, method, caller] as const));
-  it.each(attacks)("%s %s by %s of study A: refused with study B's ids, alone or beside A's", async (route, method, caller) => {
-    const smuggled = `?studyId=${a.studyId}&trialId=${a.trialId}&recordingId=${a.recordingId}`;
-    for (const query of ["", smuggled]) {
-      const res = await call(route, method, b, signedIn[caller] ?? null, query);
-      const text = await res.text();
-      expect([401, 403, 404], `${caller} with B's ids${query ? " and A's in the query" : ""}: ${res.status} ${text}`).toContain(res.status);
-      expect(text).not.toMatch(/B-1|Victim/);
-    }
-  });
+  it.each(attacks)(
+    "%s %s by %s of study A: refused with study B's ids, alone or beside A's",
+    async (route, method, caller) => {
+      const smuggled = `?studyId=${a.studyId}&trialId=${a.trialId}&recordingId=${a.recordingId}`;
+      for (const query of ["", smuggled]) {
+        const res = await call(route, method, b, signedIn[caller] ?? null, query);
+        const text = await res.text();
+        expect(
+          [401, 403, 404],
+          `${caller} with B's ids${query ? " and A's in the query" : ""}: ${res.status} ${text}`,
+        ).toContain(res.status);
+        expect(text).not.toMatch(/B-1|Victim/);
+      }
+    },
+  );
 
   it("stored no part in study B's recording", async () => {
     expect(await storedOfB()).toBe(before);

@@ -13,9 +13,22 @@ afterAll(close);
 it("thins samples to at most one per slice of time, first of each, in order; the full series stays available", async () => {
   const study = await f.newStudy();
   const e = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
+  await owner.experiments.saveDesign({
+    experimentId: e.id,
+    baseRevision: 0,
+    steps: [{ name: "S", actions: [{ type: "wave" }] }],
+  });
   const trial = await owner.trials.create({ versionId: (await owner.versions.publish({ experimentId: e.id })).id });
-  await db.insert(trialSamples).values(Array.from({ length: 1000 }, (_, i) => ({ trialId: trial.id, topic: "/joint_states", relMs: i * 20, data: { position: [i] } })));
+  await db
+    .insert(trialSamples)
+    .values(
+      Array.from({ length: 1000 }, (_, i) => ({
+        trialId: trial.id,
+        topic: "/joint_states",
+        relMs: i * 20,
+        data: { position: [i] },
+      })),
+    );
   const thinned = await owner.trials.samples({ trialId: trial.id, topic: "/joint_states", maxPoints: 10 });
   expect(thinned.length).toBeLessThanOrEqual(11);
   expect(thinned.length).toBeGreaterThanOrEqual(10);

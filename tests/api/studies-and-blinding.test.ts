@@ -17,25 +17,45 @@ afterAll(close);
 async function runningStudy() {
   const study = await f.newStudy();
   const experiment = await owner.experiments.create({ studyId: study.id, name: "Story", robotPluginId: "nao6-ros2" });
-  await owner.experiments.saveDesign({ experimentId: experiment.id, baseRevision: 0, steps: [{ name: "Hello", actions: [{ type: "wave" }] }] });
+  await owner.experiments.saveDesign({
+    experimentId: experiment.id,
+    baseRevision: 0,
+    steps: [{ name: "Hello", actions: [{ type: "wave" }] }],
+  });
   const version = await owner.versions.publish({ experimentId: experiment.id });
   const condition = await owner.conditions.create({ studyId: study.id, name: "Waving", experimentId: experiment.id });
-  const participant = await owner.participants.create({ studyId: study.id, code: "P001", consentStatus: "given", consentDate: new Date() });
+  const participant = await owner.participants.create({
+    studyId: study.id,
+    code: "P001",
+    consentStatus: "given",
+    consentDate: new Date(),
+  });
   const trial = await owner.trials.create({ versionId: version.id, participantId: participant.id });
   return { study, experiment, version, condition, participant, trial };
 }
 
-const actions = async (studyId: string) => (await db.select({ action: auditLog.action }).from(auditLog).where(eq(auditLog.studyId, studyId))).map((r) => r.action);
+const actions = async (studyId: string) =>
+  (await db.select({ action: auditLog.action }).from(auditLog).where(eq(auditLog.studyId, studyId))).map(
+    (r) => r.action,
+  );
 
 describe("results hidden until the study is complete", () => {
   it("refuses researchers and observers the data, lets the owner see it, and logs the lifting", async () => {
     const { study, trial } = await runningStudy();
-    await owner.studies.update({ studyId: study.id, settings: { blinding: { conditionsFromWizards: false, resultsUntilComplete: true } } });
+    await owner.studies.update({
+      studyId: study.id,
+      settings: { blinding: { conditionsFromWizards: false, resultsUntilComplete: true } },
+    });
     for (const caller of ["researcher", "observer"] as const) {
-      await expect(f.api(caller).trials.export({ trialId: trial.id, format: "json" })).rejects.toMatchObject({ code: "FORBIDDEN", message: "This study hides results until it is marked completed (blinding)." });
+      await expect(f.api(caller).trials.export({ trialId: trial.id, format: "json" })).rejects.toMatchObject({
+        code: "FORBIDDEN",
+        message: "This study hides results until it is marked completed (blinding).",
+      });
       await expect(f.api(caller).trials.events({ trialId: trial.id })).rejects.toMatchObject({ code: "FORBIDDEN" });
     }
-    await expect(owner.trials.export({ trialId: trial.id, format: "csv" })).resolves.toMatchObject({ contentType: expect.stringMatching(/csv/) });
+    await expect(owner.trials.export({ trialId: trial.id, format: "csv" })).resolves.toMatchObject({
+      contentType: expect.stringMatching(/csv/),
+    });
     await owner.studies.update({ studyId: study.id, status: "completed" });
     await expect(f.api("researcher").trials.export({ trialId: trial.id, format: "json" })).resolves.toBeTruthy();
     expect(await actions(study.id)).toContain("study.blind.lifted.results");
@@ -43,10 +63,16 @@ describe("results hidden until the study is complete", () => {
 
   it("logs turning off the wizards' blind", async () => {
     const { study } = await runningStudy();
-    await owner.studies.update({ studyId: study.id, settings: { blinding: { conditionsFromWizards: true, resultsUntilComplete: false } } });
+    await owner.studies.update({
+      studyId: study.id,
+      settings: { blinding: { conditionsFromWizards: true, resultsUntilComplete: false } },
+    });
     await expect(f.api("wizard").conditions.list({ studyId: study.id })).rejects.toMatchObject({ code: "FORBIDDEN" });
     expect((await f.api("wizard").participants.list({ studyId: study.id }))[0]!.conditionId).toBeNull();
-    await owner.studies.update({ studyId: study.id, settings: { blinding: { conditionsFromWizards: false, resultsUntilComplete: false } } });
+    await owner.studies.update({
+      studyId: study.id,
+      settings: { blinding: { conditionsFromWizards: false, resultsUntilComplete: false } },
+    });
     expect(await actions(study.id)).toContain("study.blind.lifted.conditions");
     await expect(f.api("wizard").conditions.list({ studyId: study.id })).resolves.toHaveLength(1);
   });
@@ -55,8 +81,14 @@ describe("results hidden until the study is complete", () => {
 describe("study settings", () => {
   it("changes only the settings given: choosing a strategy keeps the blinds and the consent check", async () => {
     const study = await f.newStudy();
-    await owner.studies.update({ studyId: study.id, settings: { requireConsent: false, blinding: { conditionsFromWizards: true, resultsUntilComplete: true } } });
-    await owner.studies.update({ studyId: study.id, settings: { assignment: { strategy: "balanced", perCondition: 2 } } });
+    await owner.studies.update({
+      studyId: study.id,
+      settings: { requireConsent: false, blinding: { conditionsFromWizards: true, resultsUntilComplete: true } },
+    });
+    await owner.studies.update({
+      studyId: study.id,
+      settings: { assignment: { strategy: "balanced", perCondition: 2 } },
+    });
     expect((await owner.studies.get({ studyId: study.id })).settings).toMatchObject({
       requireConsent: false,
       blinding: { conditionsFromWizards: true, resultsUntilComplete: true },
@@ -71,11 +103,17 @@ describe("lists", () => {
     await owner.conditions.assign({ participantId: participant.id, conditionId: condition.id });
     const q = await owner.questionnaires.create({ studyId: study.id, instrument: "sus" });
     await owner.questionnaires.publish({ questionnaireId: q.id });
-    expect(await owner.experiments.list({ studyId: study.id })).toMatchObject([{ id: experiment.id, stepCount: 1, latestVersion: 1 }]);
+    expect(await owner.experiments.list({ studyId: study.id })).toMatchObject([
+      { id: experiment.id, stepCount: 1, latestVersion: 1 },
+    ]);
     expect(await owner.conditions.list({ studyId: study.id })).toMatchObject([{ participantCount: 1 }]);
     expect(await owner.participants.list({ studyId: study.id })).toMatchObject([{ trialCount: 1 }]);
     expect(await owner.questionnaires.list({ studyId: study.id })).toMatchObject([{ latestVersion: 1 }]);
-    expect((await owner.studies.mine()).find((s) => s.id === study.id)).toMatchObject({ experimentCount: 1, trialCount: 1, participantCount: 1 });
+    expect((await owner.studies.mine()).find((s) => s.id === study.id)).toMatchObject({
+      experimentCount: 1,
+      trialCount: 1,
+      participantCount: 1,
+    });
   });
 });
 
@@ -83,34 +121,67 @@ describe("withdrawal", () => {
   it("takes the participant's data out of analysis and exports, keeps it stored, logs it, and allows no new trial", async () => {
     const { study, version, participant, trial } = await runningStudy();
     await owner.participants.update({ participantId: participant.id, consentStatus: "withdrawn" });
-    const refused = { code: "PRECONDITION_FAILED", message: "P001 withdrew from the study: their data is excluded from analysis and exports." };
+    const refused = {
+      code: "PRECONDITION_FAILED",
+      message: "P001 withdrew from the study: their data is excluded from analysis and exports.",
+    };
     await expect(owner.trials.export({ trialId: trial.id, format: "json" })).rejects.toMatchObject(refused);
     await expect(owner.trials.events({ trialId: trial.id })).rejects.toMatchObject(refused);
     await expect(owner.trials.samples({ trialId: trial.id })).rejects.toMatchObject(refused);
-    expect((await owner.trials.list({ studyId: study.id }))[0]).toMatchObject({ id: trial.id, participantWithdrawn: true });
+    expect((await owner.trials.list({ studyId: study.id }))[0]).toMatchObject({
+      id: trial.id,
+      participantWithdrawn: true,
+    });
     expect(await actions(study.id)).toContain("participant.consent.withdrawn");
     await owner.studies.update({ studyId: study.id, settings: { requireConsent: false } });
-    await expect(owner.trials.create({ versionId: version.id, participantId: participant.id })).rejects.toMatchObject({ code: "PRECONDITION_FAILED", message: expect.stringMatching(/has withdrawn/) });
+    await expect(owner.trials.create({ versionId: version.id, participantId: participant.id })).rejects.toMatchObject({
+      code: "PRECONDITION_FAILED",
+      message: expect.stringMatching(/has withdrawn/),
+    });
   });
 });
 
 describe("the study archive", () => {
   it("holds the design, every trial's record and events, and the answers, without withdrawn participants", async () => {
     const { study, version, trial } = await runningStudy();
-    const other = await owner.participants.create({ studyId: study.id, code: "P002", consentStatus: "given", consentDate: new Date() });
+    const other = await owner.participants.create({
+      studyId: study.id,
+      code: "P002",
+      consentStatus: "given",
+      consentDate: new Date(),
+    });
     const withdrawnTrial = await owner.trials.create({ versionId: version.id, participantId: other.id });
     await owner.participants.update({ participantId: other.id, consentStatus: "withdrawn" });
     const archive = await owner.studies.exportArchive({ studyId: study.id });
     expect(archive).toMatchObject({ filename: "fixture-study.zip", contentType: "application/zip" });
     const files = unzipSync(archive.body);
-    expect(Object.keys(files).sort()).toEqual(["README.txt", "questionnaire-answers.csv", "study.json", `trials/${trial.id}-events.csv`, `trials/${trial.id}.eaf`, `trials/${trial.id}.json`]);
+    expect(Object.keys(files).sort()).toEqual([
+      "README.txt",
+      "questionnaire-answers.csv",
+      "study.json",
+      `trials/${trial.id}-events.csv`,
+      `trials/${trial.id}.eaf`,
+      `trials/${trial.id}.json`,
+    ]);
     const content = JSON.parse(strFromU8(files["study.json"]!));
-    expect(content).toMatchObject({ participants: [{ code: "P001" }], withdrawnParticipants: 1, experiments: [{ name: "Story", versions: [{ version: 1 }] }] });
+    expect(content).toMatchObject({
+      participants: [{ code: "P001" }],
+      withdrawnParticipants: 1,
+      experiments: [{ name: "Story", versions: [{ version: 1 }] }],
+    });
     expect(JSON.stringify(content)).not.toContain("P002");
     expect(Object.keys(files).join()).not.toContain(withdrawnTrial.id);
-    expect(JSON.parse(strFromU8(files[`trials/${trial.id}.json`]!))).toMatchObject({ protocol: { steps: [{ name: "Hello" }] }, questionnaires: [] });
-    await owner.studies.update({ studyId: study.id, settings: { blinding: { conditionsFromWizards: false, resultsUntilComplete: true } } });
-    await expect(f.api("researcher").studies.exportArchive({ studyId: study.id })).rejects.toMatchObject({ code: "FORBIDDEN" });
+    expect(JSON.parse(strFromU8(files[`trials/${trial.id}.json`]!))).toMatchObject({
+      protocol: { steps: [{ name: "Hello" }] },
+      questionnaires: [],
+    });
+    await owner.studies.update({
+      studyId: study.id,
+      settings: { blinding: { conditionsFromWizards: false, resultsUntilComplete: true } },
+    });
+    await expect(f.api("researcher").studies.exportArchive({ studyId: study.id })).rejects.toMatchObject({
+      code: "FORBIDDEN",
+    });
   });
 });
 
@@ -127,12 +198,26 @@ describe("participants' demographics and consent", () => {
         ],
       },
     });
-    const p = await owner.participants.create({ studyId: study.id, code: "D1", demographics: { age: 41, handedness: "left" } });
+    const p = await owner.participants.create({
+      studyId: study.id,
+      code: "D1",
+      demographics: { age: 41, handedness: "left" },
+    });
     expect(p).toMatchObject({ demographics: { age: 41, handedness: "left" }, consentVersion: null });
-    const given = await owner.participants.update({ participantId: p.id, consentStatus: "given", consentDate: new Date() });
+    const given = await owner.participants.update({
+      participantId: p.id,
+      consentStatus: "given",
+      consentDate: new Date(),
+    });
     expect(given.consentVersion).toBe("2026-03 v2");
-    const error = await f.httpError("owner", "participants.create", { studyId: study.id, code: "D2", demographics: { age: "forty", name: "Jane" } });
-    expect(error!.message).toBe("Please correct: demographics: Age: must be a number; name: is not a demographic field of this study");
+    const error = await f.httpError("owner", "participants.create", {
+      studyId: study.id,
+      code: "D2",
+      demographics: { age: "forty", name: "Jane" },
+    });
+    expect(error!.message).toBe(
+      "Please correct: demographics: Age: must be a number; name: is not a demographic field of this study",
+    );
     expect((await owner.participants.list({ studyId: study.id })).map((x) => x.code)).toEqual(["D1"]);
   });
 });
@@ -141,19 +226,31 @@ describe("sessions", () => {
   it("plans each condition of a within-subject order once, and a second start reopens the same trial", async () => {
     const { study, experiment, condition } = await runningStudy();
     const second = await owner.conditions.create({ studyId: study.id, name: "Still", experimentId: experiment.id });
-    await owner.studies.update({ studyId: study.id, settings: { assignment: { strategy: "counterbalanced", perCondition: 1 } } });
-    const p = await owner.participants.create({ studyId: study.id, code: "W1", consentStatus: "given", consentDate: new Date() });
+    await owner.studies.update({
+      studyId: study.id,
+      settings: { assignment: { strategy: "counterbalanced", perCondition: 1 } },
+    });
+    const p = await owner.participants.create({
+      studyId: study.id,
+      code: "W1",
+      consentStatus: "given",
+      consentDate: new Date(),
+    });
     const assigned = await owner.conditions.assign({ participantId: p.id });
     const wizardId = f.people.wizard.id;
     await owner.sessions.schedule({ participantId: p.id, plannedAt: new Date("2026-12-01T10:00:00Z"), wizardId });
     await owner.sessions.schedule({ participantId: p.id, plannedAt: new Date("2026-12-08T10:00:00Z"), wizardId });
-    await expect(owner.sessions.schedule({ participantId: p.id, plannedAt: new Date(), wizardId })).rejects.toMatchObject({ code: "CONFLICT" });
+    await expect(
+      owner.sessions.schedule({ participantId: p.id, plannedAt: new Date(), wizardId }),
+    ).rejects.toMatchObject({ code: "CONFLICT" });
     const planned = await owner.sessions.list({ studyId: study.id });
     const names = new Map([
       [condition.id, condition.name],
       [second.id, second.name],
     ]);
-    expect(planned.map((s) => s.conditionName)).toEqual((assigned.conditionOrder as string[]).map((id) => names.get(id)));
+    expect(planned.map((s) => s.conditionName)).toEqual(
+      (assigned.conditionOrder as string[]).map((id) => names.get(id)),
+    );
 
     const mine = await f.api("wizard").sessions.mine();
     const first = mine.find((s) => s.id === planned[0]!.id)!;
@@ -161,17 +258,23 @@ describe("sessions", () => {
     const a = await f.api("wizard").sessions.start({ sessionId: first.id });
     const b = await f.api("wizard").sessions.start({ sessionId: first.id });
     expect(b.trialId).toBe(a.trialId);
-    await expect(owner.sessions.remove({ sessionId: first.id })).rejects.toMatchObject({ message: expect.stringMatching(/has started/) });
+    await expect(owner.sessions.remove({ sessionId: first.id })).rejects.toMatchObject({
+      message: expect.stringMatching(/has started/),
+    });
   });
 
   it("refuses to plan a session before the participant is assigned, or for an observer as wizard", async () => {
     const { study, participant } = await runningStudy();
-    await expect(owner.sessions.schedule({ participantId: participant.id, plannedAt: new Date(), wizardId: f.people.wizard.id })).rejects.toMatchObject({
+    await expect(
+      owner.sessions.schedule({ participantId: participant.id, plannedAt: new Date(), wizardId: f.people.wizard.id }),
+    ).rejects.toMatchObject({
       code: "PRECONDITION_FAILED",
       message: "P001 has no condition yet: assign them first.",
     });
     const [c] = await owner.conditions.list({ studyId: study.id });
     await owner.conditions.assign({ participantId: participant.id, conditionId: c!.id });
-    await expect(owner.sessions.schedule({ participantId: participant.id, plannedAt: new Date(), wizardId: f.people.observer.id })).rejects.toMatchObject({ code: "BAD_REQUEST" });
+    await expect(
+      owner.sessions.schedule({ participantId: participant.id, plannedAt: new Date(), wizardId: f.people.observer.id }),
+    ).rejects.toMatchObject({ code: "BAD_REQUEST" });
   });
 });

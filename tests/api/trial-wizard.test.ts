@@ -12,10 +12,18 @@ afterAll(close);
 it("assigns the creator by default, the named wizard when given, and no one for an explicit null", async () => {
   const study = await f.newStudy();
   const e = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await owner.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "wave" }] }] });
+  await owner.experiments.saveDesign({
+    experimentId: e.id,
+    baseRevision: 0,
+    steps: [{ name: "S", actions: [{ type: "wave" }] }],
+  });
   const versionId = (await owner.versions.publish({ experimentId: e.id })).id;
   expect(await owner.trials.create({ versionId })).toMatchObject({ wizardId: f.people.owner.id });
-  expect(await owner.trials.create({ versionId, wizardId: f.people.wizard.id })).toMatchObject({ wizardId: f.people.wizard.id });
+  expect(await owner.trials.create({ versionId, wizardId: f.people.wizard.id })).toMatchObject({
+    wizardId: f.people.wizard.id,
+  });
   expect(await owner.trials.create({ versionId, wizardId: null })).toMatchObject({ wizardId: null });
-  await expect(owner.trials.create({ versionId, wizardId: f.people.observer.id })).rejects.toMatchObject({ code: "BAD_REQUEST" });
+  await expect(owner.trials.create({ versionId, wizardId: f.people.observer.id })).rejects.toMatchObject({
+    code: "BAD_REQUEST",
+  });
 });

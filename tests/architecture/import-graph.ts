@@ -30,7 +30,12 @@ function importsOf(file: string): { target: string; typeOnly: boolean }[] {
       found.push({ target: node.moduleSpecifier.text, typeOnly: node.importClause?.isTypeOnly ?? false });
     } else if (ts.isExportDeclaration(node) && node.moduleSpecifier && ts.isStringLiteral(node.moduleSpecifier)) {
       found.push({ target: node.moduleSpecifier.text, typeOnly: node.isTypeOnly });
-    } else if (ts.isCallExpression(node) && node.expression.kind === ts.SyntaxKind.ImportKeyword && node.arguments[0] && ts.isStringLiteral(node.arguments[0])) {
+    } else if (
+      ts.isCallExpression(node) &&
+      node.expression.kind === ts.SyntaxKind.ImportKeyword &&
+      node.arguments[0] &&
+      ts.isStringLiteral(node.arguments[0])
+    ) {
       found.push({ target: node.arguments[0].text, typeOnly: false });
     }
     ts.forEachChild(node, visit);
@@ -40,5 +45,7 @@ function importsOf(file: string): { target: string; typeOnly: boolean }[] {
 }
 
 export function importGraph(dir = "src"): ImportEdge[] {
-  return sources(dir).flatMap((file) => importsOf(file).map(({ target, typeOnly }) => ({ from: file, to: resolve(file, target), typeOnly })));
+  return sources(dir).flatMap((file) =>
+    importsOf(file).map(({ target, typeOnly }) => ({ from: file, to: resolve(file, target), typeOnly })),
+  );
 }

@@ -37,13 +37,15 @@ const SERVER_SIDE: readonly Layer[] = ["data", "robots", "server", "runtime"];
 
 // What the core may use from packages: computation only.
 const PURE_PACKAGES = new Set(["zod", "ajv", "node:crypto"]);
-const isUiPackage = (name: string) => ["react", "react-dom", "next"].includes(name) || name.startsWith("react-dom/") || name.startsWith("next/");
+const isUiPackage = (name: string) =>
+  ["react", "react-dom", "next"].includes(name) || name.startsWith("react-dom/") || name.startsWith("next/");
 
 const isOurs = (path: string) => path.startsWith("src/") || path.startsWith("plugins/");
 
 export function layerOf(path: string): Layer | null {
   for (const [layer, { paths }] of Object.entries(LAYERS)) {
-    if (paths.some((p) => (p.endsWith("/") ? path.startsWith(p) : path === p || path.startsWith(`${p}.`)))) return layer as Layer;
+    if (paths.some((p) => (p.endsWith("/") ? path.startsWith(p) : path === p || path.startsWith(`${p}.`))))
+      return layer as Layer;
   }
   return null;
 }
@@ -54,7 +56,8 @@ export function violation({ from, to, typeOnly }: ImportEdge): string | null {
   if (source === null) return `${from} is in no layer: add its folder to LAYERS`;
   if (!isOurs(to)) {
     if (source === "core" && !PURE_PACKAGES.has(to)) return `${from} (core) imports the package ${to}`;
-    if (SERVER_SIDE.includes(source) && isUiPackage(to)) return `${from} (${source}) imports the user-interface package ${to}`;
+    if (SERVER_SIDE.includes(source) && isUiPackage(to))
+      return `${from} (${source}) imports the user-interface package ${to}`;
     return null;
   }
   const target = layerOf(to);
@@ -65,4 +68,5 @@ export function violation({ from, to, typeOnly }: ImportEdge): string | null {
   return `${from} (${source}) imports ${to} (${target})`;
 }
 
-export const violations = (graph: readonly ImportEdge[]): string[] => graph.map(violation).filter((v): v is string => v !== null);
+export const violations = (graph: readonly ImportEdge[]): string[] =>
+  graph.map(violation).filter((v): v is string => v !== null);

@@ -125,7 +125,9 @@ describe.sequential("the experiment designer, in the browser", () => {
     await r.fill(r.properties.getByLabel("Answer 1", { exact: true }), "correct (red)");
     await r.fill(r.properties.getByLabel("Answer 2", { exact: true }), "incorrect / don't know");
     await r.drag("branch", "Recall question");
-    await expect.poll(() => page.getByRole("region", { name: "Checks" }).textContent()).toContain('choose the step the answer "correct (red)" leads to');
+    await expect
+      .poll(() => page.getByRole("region", { name: "Checks" }).textContent())
+      .toContain('choose the step the answer "correct (red)" leads to');
     await r.click(r.properties.getByRole("button", { name: "Create a new step for “correct (red)”" }));
     await r.click(r.properties.getByRole("button", { name: "Create a new step for “incorrect / don't know”" }));
     await screenshot(page, "designer-branch");
@@ -161,7 +163,9 @@ describe.sequential("the experiment designer, in the browser", () => {
       expect(gesture!.runTogether).toBe(speech!.runTogether);
     }
     const { score, failed } = scoreDesign(file);
-    console.log(`designer: built the Interactive Storyteller in ${r.operations} UI operations; design checklist score ${score}/100`);
+    console.log(
+      `designer: built the Interactive Storyteller in ${r.operations} UI operations; design checklist score ${score}/100`,
+    );
     expect(failed).toEqual([]);
     expect(score).toBe(100);
     await context.close();
@@ -185,7 +189,9 @@ describe.sequential("the experiment designer, in the browser", () => {
     await page.keyboard.press("Enter");
     await expect.poll(() => intro.count()).toBe(3);
     // "Run together" from the library makes the selected nod start with the action above it.
-    const together = page.getByRole("region", { name: "Properties" }).getByLabel("Starts together with the action above");
+    const together = page
+      .getByRole("region", { name: "Properties" })
+      .getByLabel("Starts together with the action above");
     expect(await together.isChecked()).toBe(false);
     await page.locator('[data-block="run_together"]').focus();
     await page.keyboard.press("Enter");
@@ -216,7 +222,9 @@ describe.sequential("the experiment designer, in the browser", () => {
     await observer.goto(designerUrl);
     await observer.getByText("You can read this experiment").waitFor();
     await observer.getByRole("button", { name: /^Step 1:/ }).click();
-    await expect.poll(() => observer.getByRole("region", { name: "Properties" }).getByLabel("Step name").isDisabled()).toBe(true);
+    await expect
+      .poll(() => observer.getByRole("region", { name: "Properties" }).getByLabel("Step name").isDisabled())
+      .toBe(true);
     expect(await observer.getByRole("button", { name: "Publish" }).count()).toBe(0);
     await observer.context().close();
   }, 60_000);
@@ -238,12 +246,15 @@ describe.sequential("the experiment designer, in the browser", () => {
     ] as const) {
       await page.getByRole("button", { name: /^Step 1:/ }).click();
       await page.getByRole("region", { name: "Properties" }).getByLabel("Step name").fill(name);
-      if (page === first) await expect.poll(() => first.locator("[data-save-state]").getAttribute("data-save-state")).toBe("saved");
+      if (page === first)
+        await expect.poll(() => first.locator("[data-save-state]").getAttribute("data-save-state")).toBe("saved");
     }
     await second.getByText("Someone else saved this experiment while you were editing it.").waitFor();
     await screenshot(second, "designer-conflict");
     await second.getByRole("button", { name: /Load their version/ }).click();
-    await expect.poll(() => second.getByRole("button", { name: /^Step 1:/ }).textContent()).toContain("Introduction (first)");
+    await expect
+      .poll(() => second.getByRole("button", { name: /^Step 1:/ }).textContent())
+      .toContain("Introduction (first)");
     await Promise.all(pages.map((p) => p.context().close()));
   }, 60_000);
 });

@@ -54,10 +54,15 @@ describe.sequential("the platform foundation, in the browser", () => {
     await page.getByRole("button", { name: "Add repository" }).click();
     await page.getByRole("button", { name: /^Sync / }).click();
     // The fixture's NAO6 has the robotId of our own first-party plugin: refused, not shadowed.
-    await page.getByText("nao6-ros2 is already provided by the first-party plugins; this repository's copy was not installed.").waitFor();
+    await page
+      .getByText("nao6-ros2 is already provided by the first-party plugins; this repository's copy was not installed.")
+      .waitFor();
     await page.getByText("HRIStudio Official Robot Plugins").waitFor();
     // Its repository.json says official; the administrator's choice stands.
-    await page.getByRole("row", { name: /HRIStudio Official Robot Plugins/ }).getByText("verified").waitFor();
+    await page
+      .getByRole("row", { name: /HRIStudio Official Robot Plugins/ })
+      .getByText("verified")
+      .waitFor();
     await screenshot(page, "admin-plugins");
     await page.context().close();
     repo.close();
@@ -112,7 +117,11 @@ describe.sequential("the platform foundation, in the browser", () => {
     // Past the interface, straight at the API with the observer's own session.
     const studyId = studyUrl.split("/").pop()!;
     const status = await page.evaluate(async (id) => {
-      const res = await fetch("/api/trpc/studies.update", { method: "POST", headers: { "content-type": "application/json" }, body: JSON.stringify({ studyId: id, title: "Hijacked" }) });
+      const res = await fetch("/api/trpc/studies.update", {
+        method: "POST",
+        headers: { "content-type": "application/json" },
+        body: JSON.stringify({ studyId: id, title: "Hijacked" }),
+      });
       return (await res.json()).error?.data?.code as string;
     }, studyId);
     expect(status).toBe("FORBIDDEN");
@@ -147,7 +156,9 @@ describe.sequential("the platform foundation, in the browser", () => {
     await screenshot(page, "conditions");
     await page.getByRole("tab", { name: "Participants" }).click();
     for (const code of ["P001", "P002"]) await page.getByRole("button", { name: `Assign ${code}` }).click();
-    await expect.poll(async () => (await page.getByRole("cell", { name: /^(Gestures|No gestures)$/ }).allTextContents()).sort()).toEqual(["Gestures", "No gestures"]);
+    await expect
+      .poll(async () => (await page.getByRole("cell", { name: /^(Gestures|No gestures)$/ }).allTextContents()).sort())
+      .toEqual(["Gestures", "No gestures"]);
     await page.context().close();
   });
 
@@ -172,12 +183,21 @@ describe.sequential("the platform foundation, in the browser", () => {
     for (const cell of ["Ada Admin", "Tia Temp"]) await newest.getByRole("cell", { name: cell, exact: true }).waitFor();
     await newest.getByText("wizard", { exact: true }).waitFor();
     // Earlier tests' study changes carry the study's title.
-    await log.getByRole("row").filter({ hasText: "added a member" }).filter({ hasText: "Gesture and recall" }).first().waitFor();
+    await log
+      .getByRole("row")
+      .filter({ hasText: "added a member" })
+      .filter({ hasText: "Gesture and recall" })
+      .first()
+      .waitFor();
     await screenshot(page, "admin-audit-log");
 
     await page.getByLabel("Show", { exact: true }).selectOption({ label: "Accounts" });
-    await expect.poll(async () => (await log.getByRole("row").allTextContents()).slice(1).every((row) => /user\./.test(row))).toBe(true);
-    expect(await log.getByRole("row").filter({ hasText: "created an account" }).filter({ hasText: "Tia Temp" }).count()).toBe(1);
+    await expect
+      .poll(async () => (await log.getByRole("row").allTextContents()).slice(1).every((row) => /user\./.test(row)))
+      .toBe(true);
+    expect(
+      await log.getByRole("row").filter({ hasText: "created an account" }).filter({ hasText: "Tia Temp" }).count(),
+    ).toBe(1);
     await page.context().close();
   });
 

@@ -52,11 +52,23 @@ describe.sequential("a live trial in two browsers", () => {
       await then();
     };
     const stepIs = async (page: Page, name: string) => expect.poll(() => currentStep(page)).toBe(name);
-    const allDone = () => expect.poll(async () => (await wizard.locator('[data-testid^="action-"]').allTextContents()).every((t) => /^(done|skipped)/.test(t)), { timeout: 10_000 }).toBe(true).catch(async (e: Error) => {
-        // Say what the log holds, so a failure here can be read without rerunning.
-        const log = await researcherApi.trials.events.query({ trialId: trialPath.split("/").pop()! });
-        throw new Error(`${e.message}\nTrial log: ${JSON.stringify(log.map((x) => [x.seq, x.type, "actionId" in x ? x.actionId : "", "reason" in x ? x.reason : ""]))}`);
-      });
+    const allDone = () =>
+      expect
+        .poll(
+          async () =>
+            (await wizard.locator('[data-testid^="action-"]').allTextContents()).every((t) =>
+              /^(done|skipped)/.test(t),
+            ),
+          { timeout: 10_000 },
+        )
+        .toBe(true)
+        .catch(async (e: Error) => {
+          // Say what the log holds, so a failure here can be read without rerunning.
+          const log = await researcherApi.trials.events.query({ trialId: trialPath.split("/").pop()! });
+          throw new Error(
+            `${e.message}\nTrial log: ${JSON.stringify(log.map((x) => [x.seq, x.type, "actionId" in x ? x.actionId : "", "reason" in x ? x.reason : ""]))}`,
+          );
+        });
 
     await press("n", () => stepIs(wizard, "Introduction"));
     await stepIs(observer, "Introduction");
@@ -68,10 +80,18 @@ describe.sequential("a live trial in two browsers", () => {
     await press("n", () => stepIs(wizard, "Recall question"));
     await stepIs(observer, "Recall question");
     // The pause holds the protocol: N during it is refused, and the question waits.
-    await press("n", () => expect.poll(async () => (await wizard.locator('[data-testid^="action-"]').first().textContent()) ?? "").toMatch(/^(sent|running)/));
+    await press("n", () =>
+      expect
+        .poll(async () => (await wizard.locator('[data-testid^="action-"]').first().textContent()) ?? "")
+        .toMatch(/^(sent|running)/),
+    );
     await wizard.keyboard.press("n");
     await wizard.getByRole("alert").filter({ hasText: "Wait: the 2 s pause is still running." }).waitFor();
-    await expect.poll(async () => (await wizard.locator('[data-testid^="action-"]').first().textContent()) ?? "", { timeout: 5000 }).toMatch(/^done/);
+    await expect
+      .poll(async () => (await wizard.locator('[data-testid^="action-"]').first().textContent()) ?? "", {
+        timeout: 5000,
+      })
+      .toMatch(/^done/);
     await press("n", () => wizard.getByText("What did the participant answer?").waitFor());
 
     await observer.getByLabel("Label").fill("Participant hesitated");
@@ -96,12 +116,24 @@ describe.sequential("a live trial in two browsers", () => {
     await observer.getByRole("region", { name: "Timeline" }).getByText("Participant hesitated").waitFor();
     await observer.getByRole("img", { name: /Joint angles of/ }).waitFor();
     await screenshot(observer, "analysis");
-    const csv = await observer.evaluate(async (id) => (await fetch(`/api/trials/${id}/export?format=csv`)).text(), trialId);
+    const csv = await observer.evaluate(
+      async (id) => (await fetch(`/api/trials/${id}/export?format=csv`)).text(),
+      trialId,
+    );
     expect(csv.trim().split("\r\n")).toHaveLength(events.length + 1);
-    const record = await observer.evaluate(async (id) => (await fetch(`/api/trials/${id}/export?format=json`)).json(), trialId);
-    expect(record).toMatchObject({ schemaVersion: 1, protocol: { experiment: { name: "Interactive Storyteller" } }, annotations: [{ label: "Participant hesitated" }] });
+    const record = await observer.evaluate(
+      async (id) => (await fetch(`/api/trials/${id}/export?format=json`)).json(),
+      trialId,
+    );
+    expect(record).toMatchObject({
+      schemaVersion: 1,
+      protocol: { experiment: { name: "Interactive Storyteller" } },
+      annotations: [{ label: "Participant hesitated" }],
+    });
     // Wizards run trials; reading the data is for researchers and observers.
-    expect(await wizard.evaluate(async (id) => (await fetch(`/api/trials/${id}/export?format=csv`)).status, trialId)).toBe(403);
+    expect(
+      await wizard.evaluate(async (id) => (await fetch(`/api/trials/${id}/export?format=csv`)).status, trialId),
+    ).toBe(403);
     await wizard.context().close();
     await observer.context().close();
   }, 60_000);
@@ -131,7 +163,11 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.keyboard.press("n");
     await expect.poll(() => currentStep(wizard)).toBe("Introduction");
     await wizard.keyboard.press("n");
-    await expect.poll(async () => (await wizard.locator('[data-testid^="action-"]').allTextContents()).every((t) => t.startsWith("done"))).toBe(true);
+    await expect
+      .poll(async () =>
+        (await wizard.locator('[data-testid^="action-"]').allTextContents()).every((t) => t.startsWith("done")),
+      )
+      .toBe(true);
 
     process.kill(childPid(app, "runtime/main.ts"), "SIGKILL");
     await wizard.getByText("reconnecting", { exact: true }).waitFor();
@@ -145,7 +181,11 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.getByText("Unscripted robot action").click();
     await wizard.getByLabel("Action").selectOption({ label: "Posture" });
     await wizard.getByRole("button", { name: /Send “Posture”/ }).click();
-    await wizard.getByText("must have required property").or(wizard.getByText(/posture.*required|required.*posture/i)).first().waitFor();
+    await wizard
+      .getByText("must have required property")
+      .or(wizard.getByText(/posture.*required|required.*posture/i))
+      .first()
+      .waitFor();
     await wizard.getByLabel("Action").selectOption({ label: "Nod" });
     await wizard.getByRole("button", { name: /Send “Nod”/ }).click();
     await wizard.getByRole("region", { name: "Off script" }).getByText(/^done/).waitFor();
@@ -154,7 +194,11 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.getByRole("button", { name: "Jump to Recall question" }).click();
     await expect.poll(() => currentStep(wizard)).toBe("Recall question");
     await wizard.getByRole("button", { name: "Run Question now" }).click();
-    await wizard.getByTestId(/action-/).filter({ hasText: "Question" }).getByText("done").waitFor();
+    await wizard
+      .getByTestId(/action-/)
+      .filter({ hasText: "Question" })
+      .getByText("done")
+      .waitFor();
     await wizard.getByRole("button", { name: "Abort trial…" }).click();
     await wizard.getByRole("button", { name: "Confirm: abort this trial" }).click();
     await expect.poll(() => wizard.getByTestId("trial-status").textContent()).toBe("aborted");
@@ -163,7 +207,11 @@ describe.sequential("a live trial in two browsers", () => {
     const log = await researcherApi.trials.events.query({ trialId });
     const seqs = log.map((e) => e.seq);
     expect(seqs).toEqual(seqs.map((_, i) => i + 1));
-    expect(log.filter((e) => e.deviation).map((e) => e.deviation)).toEqual(["unscripted", "manual_jump", "out_of_order"]);
+    expect(log.filter((e) => e.deviation).map((e) => e.deviation)).toEqual([
+      "unscripted",
+      "manual_jump",
+      "out_of_order",
+    ]);
     expect((await wizardApi.trials.get.query({ trialId })).isRehearsal).toBe(true);
     await wizard.context().close();
   }, 60_000);
@@ -181,7 +229,11 @@ describe.sequential("a live trial in two browsers", () => {
     const { url, token } = await wizardApi.trials.socketToken.mutate({ trialId: trial.id });
     const wizard = await connectTrial(url, token);
     await wizard.command("s", { kind: "start" });
-    await wizard.command("u", { kind: "unscripted", actionType: "say", parameters: { text: 'She said "hi" {{name}} & left.' } });
+    await wizard.command("u", {
+      kind: "unscripted",
+      actionType: "say",
+      parameters: { text: 'She said "hi" {{name}} & left.' },
+    });
     await wizard.command("w", { kind: "unscripted", actionType: "wave", parameters: {} });
     await page.getByRole("status", { name: "Robot speech" }).getByText('“She said "hi" {{name}} & left.”').waitFor();
     await expect.poll(() => page.getByTestId("robot-gesture").textContent()).not.toBe("none");

@@ -58,11 +58,20 @@ describe.sequential("questionnaires in the browser", () => {
     await tablet.goto(link);
     const items = tablet.locator("fieldset");
     await expect.poll(() => items.count()).toBe(10);
-    for (const [i, value] of ANSWERS.slice(0, 5).entries()) await items.nth(i).getByRole("radio", { name: new RegExp(`: ${value}$`) }).check();
+    for (const [i, value] of ANSWERS.slice(0, 5).entries())
+      await items
+        .nth(i)
+        .getByRole("radio", { name: new RegExp(`: ${value}$`) })
+        .check();
     await tablet.getByText("Your answers so far are saved.").waitFor();
     await tablet.reload();
     await expect.poll(() => items.nth(4).getByRole("radio", { name: /: 3$/ }).isChecked()).toBe(true);
-    for (const [i, value] of ANSWERS.entries()) if (i >= 5) await items.nth(i).getByRole("radio", { name: new RegExp(`: ${value}$`) }).check();
+    for (const [i, value] of ANSWERS.entries())
+      if (i >= 5)
+        await items
+          .nth(i)
+          .getByRole("radio", { name: new RegExp(`: ${value}$`) })
+          .check();
     await screenshot(tablet, "questionnaire-participant");
     await tablet.getByRole("button", { name: "Submit answers" }).click();
     await tablet.getByRole("heading", { name: "Thank you!" }).waitFor();
@@ -78,12 +87,16 @@ describe.sequential("questionnaires in the browser", () => {
     const zipped = researcher.waitForEvent("download");
     await researcher.getByRole("button", { name: /Download the whole study/ }).click();
     const archive = unzipSync(readFileSync((await (await zipped).path())!));
-    expect(strFromU8(archive["questionnaire-answers.csv"]!)).toContain(`P001,${trial.id},System Usability Scale (SUS),1,score,score,60`);
+    expect(strFromU8(archive["questionnaire-answers.csv"]!)).toContain(
+      `P001,${trial.id},System Usability Scale (SUS),1,score,score,60`,
+    );
     expect(Object.keys(archive)).toContain(`trials/${trial.id}.eaf`);
     const csv = await (await researcher.request.get(`/api/studies/${study!.id}/questionnaires`)).text();
     expect(csv.split("\r\n")).toContain(`P001,${trial.id},System Usability Scale (SUS),1,score,score,60`);
     const record = JSON.parse((await api.trials.export.query({ trialId: trial.id, format: "json" })).body);
-    expect(record.questionnaires).toMatchObject([{ questionnaire: "System Usability Scale (SUS)", score: { score: 60 } }]);
+    expect(record.questionnaires).toMatchObject([
+      { questionnaire: "System Usability Scale (SUS)", score: { score: 60 } },
+    ]);
   }, 180_000);
 
   it("builds a consent form, sends its link ahead, and the participant's agreement is their consent record", async () => {
@@ -97,7 +110,11 @@ describe.sequential("questionnaires in the browser", () => {
     await researcher.getByLabel("Title the participant sees").fill("Taking part in the storytelling study");
     await researcher.getByLabel("Kind of question").selectOption("consent");
     await researcher.getByRole("button", { name: "Add question" }).click();
-    await researcher.getByLabel("Text of question 1").fill("A robot will tell you a short story and ask you about it. We keep your answers under a code, never your name. You may stop at any time.");
+    await researcher
+      .getByLabel("Text of question 1")
+      .fill(
+        "A robot will tell you a short story and ask you about it. We keep your answers under a code, never your name. You may stop at any time.",
+      );
     await researcher.getByLabel("Kind of question").selectOption("number");
     await researcher.getByRole("button", { name: "Add question" }).click();
     await researcher.getByLabel("Text of question 2").fill("Your age (optional)");
@@ -108,7 +125,9 @@ describe.sequential("questionnaires in the browser", () => {
     await researcher.getByRole("link", { name: "← Study" }).click();
     await researcher.getByRole("tab", { name: "Participants" }).click();
     // Typing before the page is interactive would be lost: its submit button says when it is.
-    await expect.poll(() => researcher.getByRole("button", { name: "Add participant" }).isEnabled(), { timeout: 30_000 }).toBe(true);
+    await expect
+      .poll(() => researcher.getByRole("button", { name: "Add participant" }).isEnabled(), { timeout: 30_000 })
+      .toBe(true);
     await researcher.getByLabel("Participant code").fill("C900");
     await researcher.getByRole("button", { name: "Add participant" }).click();
     await researcher.getByRole("cell", { name: "C900", exact: true }).waitFor({ timeout: 45_000 });

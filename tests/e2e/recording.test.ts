@@ -40,7 +40,13 @@ describe.sequential("recording a trial", () => {
     return page;
   };
   const partsSaved = async (page: Awaited<ReturnType<typeof wizardPage>>, atLeast: number) =>
-    expect.poll(async () => Number(/^(\d+) part/.exec((await page.getByTestId("recording-parts").textContent()) ?? "")?.[1] ?? 0), { timeout: 30_000 }).toBeGreaterThanOrEqual(atLeast);
+    expect
+      .poll(
+        async () =>
+          Number(/^(\d+) part/.exec((await page.getByTestId("recording-parts").textContent()) ?? "")?.[1] ?? 0),
+        { timeout: 30_000 },
+      )
+      .toBeGreaterThanOrEqual(atLeast);
 
   it("records while the trial runs, saves at its end, and plays in step with the timeline", async () => {
     const trial = await wizardApi.trials.create.mutate({ versionId, participantId });
@@ -55,32 +61,48 @@ describe.sequential("recording a trial", () => {
     await wizard.getByText(/waiting to be sent/).waitFor({ timeout: 15_000 });
     await wizard.getByText(/the recording continues and its parts are sent when it is back/).waitFor();
     await wizard.unroute(chunks);
-    await expect.poll(async () => (await wizard.getByTestId("recording-parts").textContent()) ?? "", { timeout: 30_000 }).not.toMatch(/waiting/);
+    await expect
+      .poll(async () => (await wizard.getByTestId("recording-parts").textContent()) ?? "", { timeout: 30_000 })
+      .not.toMatch(/waiting/);
     await runWholeTrial(wizardApi, trial.id);
     await wizard.getByText("The recording is saved with this trial.").waitFor({ timeout: 30_000 });
     const [recording] = await researcher.recordings.list.query({ trialId: trial.id });
-    expect(recording).toMatchObject({ status: "complete", kind: "video", mimeType: expect.stringMatching(/^video\/webm/) });
+    expect(recording).toMatchObject({
+      status: "complete",
+      kind: "video",
+      mimeType: expect.stringMatching(/^video\/webm/),
+    });
     expect(recording!.offsetMs).toEqual(expect.any(Number));
     expect(recording!.durationMs).toBeGreaterThan(2000);
     // The measured offset is in the trial's own log, as an event.
     const log = await researcher.trials.events.query({ trialId: trial.id });
-    expect(log.find((e) => e.type === "recording.started")).toMatchObject({ recordingId: recording!.id, offsetMs: recording!.offsetMs });
+    expect(log.find((e) => e.type === "recording.started")).toMatchObject({
+      recordingId: recording!.id,
+      offsetMs: recording!.offsetMs,
+    });
 
     const analysis = await (await newContext(browser, app.url)).newPage();
     await signInAs(analysis, "researcher@demo.hristudio", DEMO_PASSWORD);
     await analysis.goto(`/trials/${trial.id}/analysis`);
     const video = analysis.getByTestId("trial-video");
     // Chrome's own recordings declare no duration; the server wrote it in, so the player knows it and can seek.
-    await expect.poll(() => video.evaluate((v: HTMLVideoElement) => v.duration), { timeout: 15_000 }).toBeCloseTo(recording!.durationMs! / 1000, 0);
+    await expect
+      .poll(() => video.evaluate((v: HTMLVideoElement) => v.duration), { timeout: 15_000 })
+      .toBeCloseTo(recording!.durationMs! / 1000, 0);
     const row = analysis.getByRole("button", { name: /trial\.completed/ });
     await row.click();
     await expect.poll(() => video.evaluate((v: HTMLVideoElement) => v.currentTime)).toBeGreaterThan(0.5);
     await expect.poll(() => row.getAttribute("aria-current")).toBe("time");
     // The chart: an action bar seeks the video too, and the playhead follows.
     await analysis.getByLabel("Timeline chart").scrollIntoViewIfNeeded();
-    await analysis.getByRole("button", { name: /^Action .* at / }).first().click({ force: true });
+    await analysis
+      .getByRole("button", { name: /^Action .* at / })
+      .first()
+      .click({ force: true });
     // The first action came right after t0: in the recording, that is its offset from t0 in.
-    await expect.poll(() => video.evaluate((v: HTMLVideoElement) => v.currentTime)).toBeCloseTo(-recording!.offsetMs! / 1000, 0);
+    await expect
+      .poll(() => video.evaluate((v: HTMLVideoElement) => v.currentTime))
+      .toBeCloseTo(-recording!.offsetMs! / 1000, 0);
     await analysis.getByTestId("playhead").waitFor();
     // A moment marked afterwards, at the playhead, then edited.
     const marked = analysis.getByRole("region", { name: "Marked moments" });
@@ -111,16 +133,35 @@ describe.sequential("recording a trial", () => {
 
   it("refuses parts of the wrong type or over the size limit, saying why", async () => {
     const trial = await wizardApi.trials.create.mutate({ versionId, participantId });
-    const { recordingId } = await wizardApi.recordings.start.mutate({ trialId: trial.id, kind: "video", mimeType: "video/webm" });
+    const { recordingId } = await wizardApi.recordings.start.mutate({
+      trialId: trial.id,
+      kind: "video",
+      mimeType: "video/webm",
+    });
     const page = await (await newContext(browser, app.url)).newPage();
     await signInAs(page, "wizard@demo.hristudio", DEMO_PASSWORD);
-    const wrongType = await page.request.put(`/api/recordings/${recordingId}/chunks/0`, { headers: { "content-type": "text/x-shellscript" }, data: "echo hi" });
-    expect([wrongType.status(), await wrongType.text()]).toEqual([415, 'This recording is video/webm; a part sent as "text/x-shellscript" is refused.']);
-    const tooBig = await page.request.put(`/api/recordings/${recordingId}/chunks/0`, { headers: { "content-type": "video/webm" }, data: Buffer.alloc(17 * 1024 * 1024) });
-    expect([tooBig.status(), await tooBig.text()]).toEqual([413, "A part of a recording may be at most 16 MB; this one is 17 MB."]);
+    const wrongType = await page.request.put(`/api/recordings/${recordingId}/chunks/0`, {
+      headers: { "content-type": "text/x-shellscript" },
+      data: "echo hi",
+    });
+    expect([wrongType.status(), await wrongType.text()]).toEqual([
+      415,
+      'This recording is video/webm; a part sent as "text/x-shellscript" is refused.',
+    ]);
+    const tooBig = await page.request.put(`/api/recordings/${recordingId}/chunks/0`, {
+      headers: { "content-type": "video/webm" },
+      data: Buffer.alloc(17 * 1024 * 1024),
+    });
+    expect([tooBig.status(), await tooBig.text()]).toEqual([
+      413,
+      "A part of a recording may be at most 16 MB; this one is 17 MB.",
+    ]);
     const observer = await (await newContext(browser, app.url)).newPage();
     await signInAs(observer, "observer@demo.hristudio", DEMO_PASSWORD);
-    const notTheirs = await observer.request.put(`/api/recordings/${recordingId}/chunks/0`, { headers: { "content-type": "video/webm" }, data: Buffer.alloc(10) });
+    const notTheirs = await observer.request.put(`/api/recordings/${recordingId}/chunks/0`, {
+      headers: { "content-type": "video/webm" },
+      data: Buffer.alloc(10),
+    });
     expect(notTheirs.status()).toBe(403);
     await Promise.all([page.context().close(), observer.context().close()]);
   }, 60_000);

@@ -34,7 +34,10 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
     const [study] = await api.studies.mine.query();
     const [storyteller] = await api.experiments.list.query({ studyId: study!.id });
     const file = await api.experiments.exportFile.query({ experimentId: storyteller!.id });
-    const copy = await api.experiments.importFile.mutate({ studyId: study!.id, text: file.text.replace('"name": "Interactive Storyteller"', '"name": "Storyteller, voice only"') });
+    const copy = await api.experiments.importFile.mutate({
+      studyId: study!.id,
+      text: file.text.replace('"name": "Interactive Storyteller"', '"name": "Storyteller, voice only"'),
+    });
     for (const id of [storyteller!.id, copy.id]) await api.versions.publish.mutate({ experimentId: id });
   });
   afterAll(async () => {
@@ -58,7 +61,11 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
     await researcher.getByText(/Seed for the audit/).waitFor();
     for (const [i, name] of CONDITIONS.entries()) {
       await researcher.getByLabel("Condition name").fill(name);
-      await researcher.getByLabel("Runs experiment").selectOption({ label: i === 0 ? "Interactive Storyteller (nao6-ros2)" : "Storyteller, voice only (nao6-ros2)" });
+      await researcher
+        .getByLabel("Runs experiment")
+        .selectOption({
+          label: i === 0 ? "Interactive Storyteller (nao6-ros2)" : "Storyteller, voice only (nao6-ros2)",
+        });
       await researcher.getByRole("button", { name: "Add condition" }).click();
       await researcher.getByRole("cell", { name, exact: true }).waitFor();
     }
@@ -72,7 +79,11 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
     }
     // Balanced: two participants in each condition.
     await expect
-      .poll(async () => (await researcher.getByRole("cell", { name: new RegExp(`^(${CONDITIONS.join("|")})$`) }).allTextContents()).sort())
+      .poll(async () =>
+        (
+          await researcher.getByRole("cell", { name: new RegExp(`^(${CONDITIONS.join("|")})$`) }).allTextContents()
+        ).sort(),
+      )
       .toEqual([CONDITIONS[1], CONDITIONS[1], CONDITIONS[0], CONDITIONS[0]]);
 
     await researcher.getByRole("tab", { name: "Sessions" }).click();
@@ -103,9 +114,15 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
       await wizard.waitForURL(/\/sessions$/);
     }
     // Every session is finished: the page, loaded afresh, has none left.
-    await expect.poll(async () => (await wizard.reload(), await wizard.getByText("No sessions are planned for you.").count()), { timeout: 30_000 }).toBe(1);
+    await expect
+      .poll(async () => (await wizard.reload(), await wizard.getByText("No sessions are planned for you.").count()), {
+        timeout: 30_000,
+      })
+      .toBe(1);
     const everything = seen.join("\n");
-    expect([...CONDITIONS, "Interactive Storyteller", "voice only"].filter((name) => everything.includes(name))).toEqual([]);
+    expect(
+      [...CONDITIONS, "Interactive Storyteller", "voice only"].filter((name) => everything.includes(name)),
+    ).toEqual([]);
     await wizard.context().close();
 
     // The study level: four finished trials, their fidelity, each step's timing.
@@ -116,8 +133,17 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
     await results.getByText("4 completed / 4").waitFor();
     const trialsTable = results.getByRole("region", { name: "Trials" });
     for (const code of CODES) await trialsTable.getByRole("link", { name: code }).waitFor();
-    await expect.poll(async () => (await trialsTable.getByRole("cell", { name: new RegExp(`^(${CONDITIONS.join("|")})$`) }).allTextContents()).length).toBe(4);
-    await results.getByRole("img", { name: /Median time in each step/ }).getByText("Introduction").waitFor();
+    await expect
+      .poll(
+        async () =>
+          (await trialsTable.getByRole("cell", { name: new RegExp(`^(${CONDITIONS.join("|")})$`) }).allTextContents())
+            .length,
+      )
+      .toBe(4);
+    await results
+      .getByRole("img", { name: /Median time in each step/ })
+      .getByText("Introduction")
+      .waitFor();
     await screenshot(results, "study-results");
     await results.context().close();
   }, 300_000);
@@ -129,16 +155,29 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
     await researcher.getByRole("tab", { name: "Trials" }).click();
     // Me by default: the wizard select starts there.
     expect(await researcher.getByLabel("Wizard", { exact: true }).inputValue()).toBe("me");
-    for (const [code, wizard] of [["P001", "Wim Wizard (wizard)"], ["P002", "Any wizard (the first to start it)"]]) {
-      await researcher.getByRole("combobox", { name: /^Experiment/ }).selectOption({ label: "Interactive Storyteller" });
+    for (const [code, wizard] of [
+      ["P001", "Wim Wizard (wizard)"],
+      ["P002", "Any wizard (the first to start it)"],
+    ]) {
+      await researcher
+        .getByRole("combobox", { name: /^Experiment/ })
+        .selectOption({ label: "Interactive Storyteller" });
       await researcher.getByText(/Runs published version/).waitFor();
       await researcher.getByRole("combobox", { name: /^Participant/ }).selectOption({ label: code });
       await researcher.getByLabel("Wizard", { exact: true }).selectOption({ label: wizard });
       await researcher.getByRole("button", { name: "Create trial" }).click();
       await researcher.getByRole("row").filter({ hasText: code }).waitFor();
     }
-    await researcher.getByRole("row").filter({ hasText: "P001" }).getByRole("cell", { name: "Wim Wizard", exact: true }).waitFor();
-    await researcher.getByRole("row").filter({ hasText: "P002" }).getByRole("cell", { name: "any wizard", exact: true }).waitFor();
+    await researcher
+      .getByRole("row")
+      .filter({ hasText: "P001" })
+      .getByRole("cell", { name: "Wim Wizard", exact: true })
+      .waitFor();
+    await researcher
+      .getByRole("row")
+      .filter({ hasText: "P002" })
+      .getByRole("cell", { name: "any wizard", exact: true })
+      .waitFor();
     await researcher.context().close();
   }, 120_000);
 });

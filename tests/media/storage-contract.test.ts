@@ -46,11 +46,14 @@ describe.each([
   it("tells the size, and streams the whole or a range of bytes", async () => {
     const bytes = (await store.get("recordings/r1/chunk-000001"))!;
     expect(await store.size("recordings/r1/chunk-000001")).toBe(bytes.length);
-    const read = async (stream: ReadableStream<Uint8Array> | null) => Buffer.from(await new Response(stream).arrayBuffer());
+    const read = async (stream: ReadableStream<Uint8Array> | null) =>
+      Buffer.from(await new Response(stream).arrayBuffer());
     expect(Buffer.compare(await read(await store.stream("recordings/r1/chunk-000001")), bytes)).toBe(0);
     const middle = await read(await store.stream("recordings/r1/chunk-000001", { start: 1_000_000, end: 1_000_009 }));
     expect([...middle]).toEqual([...bytes.subarray(1_000_000, 1_000_010)]);
-    const last = await read(await store.stream("recordings/r1/chunk-000001", { start: bytes.length - 1, end: bytes.length - 1 }));
+    const last = await read(
+      await store.stream("recordings/r1/chunk-000001", { start: bytes.length - 1, end: bytes.length - 1 }),
+    );
     expect([...last]).toEqual([bytes.at(-1)]);
     expect(await store.size("recordings/none/chunk-000001")).toBeNull();
     expect(await store.stream("recordings/none/chunk-000001")).toBeNull();
@@ -63,7 +66,10 @@ describe.each([
     expect(await store.list("recordings/nothing-here/")).toEqual([]);
   });
 
-  it.each(["../escape", "recordings/../../etc/passwd", "/absolute", "a//b", "spaces here", ""])("refuses the key %j and stores nothing", async (key) => {
-    await expect(store.put(key, new Uint8Array([1]), "video/webm")).rejects.toThrow(/is not a valid media key/);
-  });
+  it.each(["../escape", "recordings/../../etc/passwd", "/absolute", "a//b", "spaces here", ""])(
+    "refuses the key %j and stores nothing",
+    async (key) => {
+      await expect(store.put(key, new Uint8Array([1]), "video/webm")).rejects.toThrow(/is not a valid media key/);
+    },
+  );
 });

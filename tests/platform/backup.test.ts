@@ -21,12 +21,15 @@ import { BUN, newDataDir } from "../support/app";
 import { freshDatabaseUrl } from "../support/db";
 
 const root = join(import.meta.dirname, "..", "..");
-const TRICKY = "tab\there, a newline\nand a backslash \\ , quotes \"'\" , ünïcödé 😀, \\N (not a null)";
+const TRICKY = 'tab\there, a newline\nand a backslash \\ , quotes "\'" , ünïcödé 😀, \\N (not a null)';
 
 /** One of the commands, as `npm run` starts it, with its own environment. */
 function command(name: "backup" | "restore", args: string[], env: Record<string, string>) {
   return new Promise<{ code: number | null; stdout: string; stderr: string }>((done) => {
-    const child = spawn(BUN, ["run", `src/launcher/${name}.ts`, ...args], { cwd: root, env: { ...process.env, DATABASE_URL: "", HRI_MEDIA_DIR: "", ...env } });
+    const child = spawn(BUN, ["run", `src/launcher/${name}.ts`, ...args], {
+      cwd: root,
+      env: { ...process.env, DATABASE_URL: "", HRI_MEDIA_DIR: "", ...env },
+    });
     let stdout = "";
     let stderr = "";
     child.stdout.on("data", (d) => (stdout += d));
@@ -39,10 +42,14 @@ function command(name: "backup" | "restore", args: string[], env: Record<string,
 async function everything(url: string) {
   const sql = postgres(url, { max: 1, onnotice: () => {}, connection: { TimeZone: "UTC" } });
   try {
-    const tables = await sql<Array<{ name: string }>>`SELECT tablename AS name FROM pg_tables WHERE schemaname = 'public' ORDER BY 1`;
+    const tables = await sql<
+      Array<{ name: string }>
+    >`SELECT tablename AS name FROM pg_tables WHERE schemaname = 'public' ORDER BY 1`;
     const rows: Record<string, string[]> = {};
     for (const { name } of tables) {
-      rows[name] = (await sql.unsafe<Array<{ row: string }>>(`SELECT t::text AS row FROM "${name}" t ORDER BY 1`)).map((r) => r.row);
+      rows[name] = (await sql.unsafe<Array<{ row: string }>>(`SELECT t::text AS row FROM "${name}" t ORDER BY 1`)).map(
+        (r) => r.row,
+      );
     }
     return rows;
   } finally {
@@ -75,16 +82,39 @@ async function studyData(url: string, mediaDir: string) {
     await seedDemo(db, "password-123");
     const person = await newPerson(db, "owner");
     const storage = new LocalStorage(mediaDir);
-    const api = appRouter.createCaller({ db, user: person, secret: TEST_SECRET, runtimeUrl: "ws://127.0.0.1:1", media: { storage, maxBytes: 8 * 1024 * 1024 } });
+    const api = appRouter.createCaller({
+      db,
+      user: person,
+      secret: TEST_SECRET,
+      runtimeUrl: "ws://127.0.0.1:1",
+      media: { storage, maxBytes: 8 * 1024 * 1024 },
+    });
     const study = await api.studies.create({ title: `Backups: ${TRICKY}` });
     const e = await api.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-    await api.experiments.saveDesign({ experimentId: e.id, baseRevision: 0, steps: [{ name: "S", actions: [{ type: "say", parameters: { text: TRICKY } }] }] });
+    await api.experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: 0,
+      steps: [{ name: "S", actions: [{ type: "say", parameters: { text: TRICKY } }] }],
+    });
     const trial = await api.trials.create({ versionId: (await api.versions.publish({ experimentId: e.id })).id });
-    await appendEvents(db, { id: trial.id, lastSeq: 0, t0: null }, [
-      { type: "trial.started" },
-      { type: "action.requested", stepId: null, actionId: "a1", actionType: "say", parameters: { text: TRICKY, big: 2 ** 53 + 1, nothing: null }, scripted: false, deviation: "unscripted" },
-      { type: "note.added", text: TRICKY },
-    ], person.id);
+    await appendEvents(
+      db,
+      { id: trial.id, lastSeq: 0, t0: null },
+      [
+        { type: "trial.started" },
+        {
+          type: "action.requested",
+          stepId: null,
+          actionId: "a1",
+          actionType: "say",
+          parameters: { text: TRICKY, big: 2 ** 53 + 1, nothing: null },
+          scripted: false,
+          deviation: "unscripted",
+        },
+        { type: "note.added", text: TRICKY },
+      ],
+      person.id,
+    );
     await sql`INSERT INTO trial_samples (trial_id, topic, rel_ms, data) VALUES (${trial.id}, '/joint_states', 0.1 + 0.2, '{"position": [1e-300, -0.0, 12345678901234567890]}')`;
     const video = new Uint8Array(200_000).map((_, i) => (i * 31) % 256);
     const finished = await api.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/mp4" });
@@ -112,7 +142,9 @@ describe("npm run backup, then npm run restore into a fresh data folder", async 
     const result = await command("backup", ["--out", file], { HRI_DATA_DIR: dataDir });
     expect(result.stderr).toMatch(/tables 1\/\d+ /);
     expect(result.stderr).toMatch(/media files 2\/2/);
-    expect(result.stdout).toContain("Backed up 2 studies, 1 trial, 3 events, 2 recordings (2 media files, 195.3 KB) from the running database in");
+    expect(result.stdout).toContain(
+      "Backed up 2 studies, 1 trial, 3 events, 2 recordings (2 media files, 195.3 KB) from the running database in",
+    );
     expect(result.code).toBe(0);
   });
 
@@ -134,7 +166,8 @@ describe("npm run backup, then npm run restore into a fresh data folder", async 
 
     // The sequences carry on where they were: a new sample gets a new id.
     const sql = postgres(restored.url, { max: 1, onnotice: () => {} });
-    const [added] = await sql`INSERT INTO trial_samples (trial_id, topic, rel_ms, data) VALUES (${trialId}, 't', 1, '{}') RETURNING id`;
+    const [added] =
+      await sql`INSERT INTO trial_samples (trial_id, topic, rel_ms, data) VALUES (${trialId}, 't', 1, '{}') RETURNING id`;
     const [{ max }] = (await sql`SELECT max(id)::int AS max FROM trial_samples`) as unknown as [{ max: number }];
     await sql.end();
     expect(Number(added!.id)).toBe(max);
@@ -145,7 +178,15 @@ describe("npm run backup, then npm run restore into a fresh data folder", async 
     const { db, close } = createDatabase(server.url, { max: 1 });
     let writing = true;
     const writer = (async () => {
-      for (let seq = 3; writing; ) seq = (await appendEvents(db, { id: trialId, lastSeq: seq, t0: new Date() }, [{ type: "note.added", text: `note ${seq}` }], null)).at(-1)!.seq;
+      for (let seq = 3; writing; )
+        seq = (
+          await appendEvents(
+            db,
+            { id: trialId, lastSeq: seq, t0: new Date() },
+            [{ type: "note.added", text: `note ${seq}` }],
+            null,
+          )
+        ).at(-1)!.seq;
     })();
     const during = join(folder(), "during.tar");
     const backedUp = await command("backup", ["--out", during], { HRI_DATA_DIR: dataDir });
@@ -220,11 +261,16 @@ describe("a backup of a database through DATABASE_URL at an older migration leve
     expect(result.stderr).toContain(`Migrating from ${journal[0]!.tag} up to ${journal.at(-1)!.tag}`);
     expect(result.code).toBe(0);
     const check = postgres(target, { max: 1, onnotice: () => {} });
-    const users = await check`SELECT name, "user".created_at::text AS created, settings FROM "user" JOIN studies ON studies.created_by = "user".id`;
-    const [{ count }] = (await check`SELECT count(*)::int AS count FROM drizzle.__drizzle_migrations`) as unknown as [{ count: number }];
+    const users =
+      await check`SELECT name, "user".created_at::text AS created, settings FROM "user" JOIN studies ON studies.created_by = "user".id`;
+    const [{ count }] = (await check`SELECT count(*)::int AS count FROM drizzle.__drizzle_migrations`) as unknown as [
+      { count: number },
+    ];
     await check.end();
     // The name as it was, the time to the microsecond, and the column a later migration added, at its default.
-    expect(users).toEqual([{ name: TRICKY, created: expect.stringMatching(/^2020-02-29 \d\d:34:56\.789012/), settings: {} }]);
+    expect(users).toEqual([
+      { name: TRICKY, created: expect.stringMatching(/^2020-02-29 \d\d:34:56\.789012/), settings: {} },
+    ]);
     expect(count).toBe(journal.length);
   });
 });

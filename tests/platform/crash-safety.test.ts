@@ -39,7 +39,9 @@ describe.sequential("the app after kill -9", () => {
     const { dataDir } = app!;
     await app!.crash("everything");
     const titles = await titlesAfterRestart(dataDir);
-    expect(titles).toEqual(expect.arrayContaining(["Confirmed before the launcher died", "Confirmed before everything died"]));
+    expect(titles).toEqual(
+      expect.arrayContaining(["Confirmed before the launcher died", "Confirmed before everything died"]),
+    );
     // The demo seed ran once, on the empty database only.
     expect(titles.filter((t) => t === "Storytelling and memory (demo)")).toHaveLength(1);
     expect(app!.output()).not.toContain("Demo accounts");

@@ -33,18 +33,28 @@ describe("security headers", () => {
   it("on the API and on a download: a policy that allows nothing", async () => {
     const api = await fetch(`${app.url}/api/trpc/studies.mine`);
     expect(api.status).toBe(401);
-    expect(Object.fromEntries(api.headers)).toMatchObject({ ...COMMON, "content-security-policy": expect.stringMatching(/^default-src 'none'; frame-ancestors 'none'/) });
+    expect(Object.fromEntries(api.headers)).toMatchObject({
+      ...COMMON,
+      "content-security-policy": expect.stringMatching(/^default-src 'none'; frame-ancestors 'none'/),
+    });
 
     const cookie = await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD);
     const [study] = await apiClient(app.url, cookie).studies.mine.query();
     const download = await fetch(`${app.url}/api/studies/${study!.id}/questionnaires`, { headers: { cookie } });
     expect(download.status).toBe(200);
     expect(download.headers.get("content-type")).toMatch(/^text\/csv/);
-    expect(Object.fromEntries(download.headers)).toMatchObject({ ...COMMON, "content-security-policy": expect.stringMatching(/^default-src 'none'/) });
+    expect(Object.fromEntries(download.headers)).toMatchObject({
+      ...COMMON,
+      "content-security-policy": expect.stringMatching(/^default-src 'none'/),
+    });
   });
 
   it("and over real HTTP, a body declared too large for the public form is refused unread", async () => {
-    const res = await fetch(`${app.url}/api/trpc/form.save`, { method: "POST", headers: { "content-type": "application/json" }, body: new Uint8Array(1024 * 1024) });
+    const res = await fetch(`${app.url}/api/trpc/form.save`, {
+      method: "POST",
+      headers: { "content-type": "application/json" },
+      body: new Uint8Array(1024 * 1024),
+    });
     expect(res.status).toBe(413);
     expect(await res.text()).toBe("A request to the public form may be at most 512 KB; this one is 1 MB.");
   });

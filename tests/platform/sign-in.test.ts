@@ -17,7 +17,12 @@ interface Reply {
 }
 
 /** A POST to the auth API from the loopback address `from`, with any extra headers (X-Forwarded-For…). */
-function post(app: RunningApp, path: string, body: unknown, options: { from?: string; headers?: Record<string, string> } = {}): Promise<Reply> {
+function post(
+  app: RunningApp,
+  path: string,
+  body: unknown,
+  options: { from?: string; headers?: Record<string, string> } = {},
+): Promise<Reply> {
   const url = new URL(`${app.url}/api/auth${path}`);
   const payload = JSON.stringify(body);
   return new Promise((ok, fail) => {
@@ -26,7 +31,12 @@ function post(app: RunningApp, path: string, body: unknown, options: { from?: st
       {
         method: "POST",
         localAddress: options.from,
-        headers: { "content-type": "application/json", "content-length": Buffer.byteLength(payload), origin: app.url, ...options.headers },
+        headers: {
+          "content-type": "application/json",
+          "content-length": Buffer.byteLength(payload),
+          origin: app.url,
+          ...options.headers,
+        },
       },
       (res) => {
         let text = "";
@@ -48,8 +58,12 @@ function post(app: RunningApp, path: string, body: unknown, options: { from?: st
   });
 }
 
-const signInAs = (app: RunningApp, email: string, password: string, options: { from?: string; headers?: Record<string, string> } = {}) =>
-  post(app, "/sign-in/email", { email, password }, options);
+const signInAs = (
+  app: RunningApp,
+  email: string,
+  password: string,
+  options: { from?: string; headers?: Record<string, string> } = {},
+) => post(app, "/sign-in/email", { email, password }, options);
 
 async function statuses(attempts: Array<() => Promise<Reply>>): Promise<number[]> {
   const result: number[] = [];
@@ -86,14 +100,22 @@ describe.sequential("sign-in and sign-up, with no trusted proxies (the default)"
   });
 
   it("does not let one client lock out the address it names in X-Forwarded-For", async () => {
-    const spoofing = () => signInAs(app, "spoof@example.org", "wrong-password", { from: "127.0.0.5", headers: { "x-forwarded-for": "127.0.0.6" } });
+    const spoofing = () =>
+      signInAs(app, "spoof@example.org", "wrong-password", {
+        from: "127.0.0.5",
+        headers: { "x-forwarded-for": "127.0.0.6" },
+      });
     expect(await statuses([spoofing, spoofing, spoofing, spoofing])).toEqual([401, 401, 401, 429]);
     // The address it named still has its whole budget.
     expect((await signInAs(app, "observer@demo.hristudio", DEMO_PASSWORD, { from: "127.0.0.6" })).status).toBe(200);
   });
 
   it("refuses self sign-up by default, and the API refuses callers without a session", async () => {
-    const res = await post(app, "/sign-up/email", { name: "Eve", email: "eve@example.org", password: "long-enough-password" });
+    const res = await post(app, "/sign-up/email", {
+      name: "Eve",
+      email: "eve@example.org",
+      password: "long-enough-password",
+    });
     expect(res.status).toBeGreaterThanOrEqual(400);
     await expect(apiClient(app.url).studies.mine.query()).rejects.toMatchObject({ data: { code: "UNAUTHORIZED" } });
   });
@@ -104,10 +126,14 @@ describe.sequential("sign-in and sign-up, with no trusted proxies (the default)"
     const admin = apiClient(app.url, (await signInAs(app, "admin@demo.hristudio", DEMO_PASSWORD, from)).cookie);
     const wizard = (await admin.admin.users.list.query()).find((u) => u.email === "wizard@demo.hristudio")!;
     await admin.admin.users.setDisabled.mutate({ userId: wizard.id, disabled: true });
-    await expect(apiClient(app.url, wizardCookie).studies.mine.query()).rejects.toMatchObject({ data: { code: "UNAUTHORIZED" } });
+    await expect(apiClient(app.url, wizardCookie).studies.mine.query()).rejects.toMatchObject({
+      data: { code: "UNAUTHORIZED" },
+    });
     expect((await signInAs(app, "wizard@demo.hristudio", DEMO_PASSWORD, from)).status).not.toBe(200);
     await admin.admin.users.setDisabled.mutate({ userId: wizard.id, disabled: false });
-    expect((await signInAs(app, "wizard@demo.hristudio", DEMO_PASSWORD, { from: "127.0.0.8" })).cookie).toContain("session_token");
+    expect((await signInAs(app, "wizard@demo.hristudio", DEMO_PASSWORD, { from: "127.0.0.8" })).cookie).toContain(
+      "session_token",
+    );
   });
 });
 
@@ -116,7 +142,12 @@ describe.sequential("sign-in behind a trusted proxy, and the per-account limit",
   // The tests connect from 127.0.0.1, playing the reverse proxy.
   beforeAll(async () => {
     app = await startApp({
-      env: { HRI_TRUSTED_PROXIES: "127.0.0.1", HRI_SIGNIN_PER_MINUTE: "3", HRI_SIGNIN_ACCOUNT_FAILURES: "3", HRI_ALLOW_SIGNUP: "true" },
+      env: {
+        HRI_TRUSTED_PROXIES: "127.0.0.1",
+        HRI_SIGNIN_PER_MINUTE: "3",
+        HRI_SIGNIN_ACCOUNT_FAILURES: "3",
+        HRI_ALLOW_SIGNUP: "true",
+      },
     });
   });
   afterAll(async () => app?.stop());
@@ -125,14 +156,17 @@ describe.sequential("sign-in behind a trusted proxy, and the per-account limit",
 
   it("gives each forwarded client its own budget, keyed on the entry the proxy appended", async () => {
     // What a client wrote in front of the proxy's entry changes nothing.
-    const first = [1, 2, 3, 4].map((i) => () => signInAs(app, "first@example.org", "wrong-password", via(`9.9.9.${i}, 203.0.113.10`)));
+    const first = [1, 2, 3, 4].map(
+      (i) => () => signInAs(app, "first@example.org", "wrong-password", via(`9.9.9.${i}, 203.0.113.10`)),
+    );
     expect(await statuses(first)).toEqual([401, 401, 401, 429]);
     const second = () => signInAs(app, "second@example.org", "wrong-password", via(`9.9.9.9, 203.0.113.11`));
     expect(await statuses([second])).toEqual([401]);
   });
 
   it("refuses an account after too many failures from several addresses, even with the right password; other accounts are unaffected", async () => {
-    const attempt = (password: string, address: string, email = "researcher@demo.hristudio") => signInAs(app, email, password, via(address));
+    const attempt = (password: string, address: string, email = "researcher@demo.hristudio") =>
+      signInAs(app, email, password, via(address));
     expect((await attempt("wrong-password", "198.51.100.1")).status).toBe(401);
     expect((await attempt("wrong-password", "198.51.100.2")).status).toBe(401);
     // The owner signing in meanwhile does not wipe the failures others left.
@@ -147,7 +181,12 @@ describe.sequential("sign-in behind a trusted proxy, and the per-account limit",
   });
 
   it("allows self sign-up when HRI_ALLOW_SIGNUP is on, and a sign-up cannot choose its role", async () => {
-    const res = await post(app, "/sign-up/email", { name: "Eve", email: "eve@example.org", password: "long-enough-password", role: "administrator" });
+    const res = await post(app, "/sign-up/email", {
+      name: "Eve",
+      email: "eve@example.org",
+      password: "long-enough-password",
+      role: "administrator",
+    });
     expect(res.status).toBe(200);
     const cookie = await signIn(app.url, "eve@example.org", "long-enough-password");
     const eve = apiClient(app.url, cookie);

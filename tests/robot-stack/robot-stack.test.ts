@@ -17,20 +17,32 @@ describe("robot-stack", () => {
   });
 
   it("lists in .env.example every variable the compose file and the entrypoint use", () => {
-    const example = new Set(read(".env.example").split("\n").filter((l) => /^\w+=/.test(l)).map((l) => l.split("=")[0]!));
-    for (const name of [...variables(read("compose.yml")), ...variables(read("entrypoint.sh"))]) expect(example).toContain(name);
+    const example = new Set(
+      read(".env.example")
+        .split("\n")
+        .filter((l) => /^\w+=/.test(l))
+        .map((l) => l.split("=")[0]!),
+    );
+    for (const name of [...variables(read("compose.yml")), ...variables(read("entrypoint.sh"))])
+      expect(example).toContain(name);
   });
 
   it("has shell and Python files that parse", () => {
     expect(spawnSync("bash", ["-n", join(dir, "entrypoint.sh")]).status).toBe(0);
     for (const file of ["init_robot.py", "animation_relay.py"]) {
-      const check = spawnSync("python3", ["-c", "import ast,sys; ast.parse(open(sys.argv[1]).read())", join(dir, file)], { encoding: "utf8" });
+      const check = spawnSync(
+        "python3",
+        ["-c", "import ast,sys; ast.parse(open(sys.argv[1]).read())", join(dir, file)],
+        { encoding: "utf8" },
+      );
       expect(check.stderr).toBe("");
     }
   });
 
   it("relays every topic the NAO6 plugin publishes to", () => {
-    const plugin = JSON.parse(readFileSync(join(dir, "..", "plugins", "nao6-ros2.json"), "utf8")) as { actions: Array<{ ros2?: { topic?: string } }> };
+    const plugin = JSON.parse(readFileSync(join(dir, "..", "plugins", "nao6-ros2.json"), "utf8")) as {
+      actions: Array<{ ros2?: { topic?: string } }>;
+    };
     const topics = new Set(plugin.actions.map((a) => a.ros2?.topic).filter((t): t is string => !!t && t !== "/ssh"));
     const guide = readFileSync(join(dir, "..", "docs", "robot-setup.md"), "utf8");
     for (const topic of topics) expect(guide).toContain(`\`${topic}\``);

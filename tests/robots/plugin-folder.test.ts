@@ -10,7 +10,12 @@ describe("first-party plugins", () => {
   it("load through the public loader with no errors", async () => {
     const folder = await loadPluginFolder("plugins");
     expect(folder.errors).toEqual([]);
-    expect(folder.plugins.map((p) => p.robotId).sort()).toEqual(["nao6-ros2", "pepper-ros2", "simulated", "turtlebot3-burger"]);
+    expect(folder.plugins.map((p) => p.robotId).sort()).toEqual([
+      "nao6-ros2",
+      "pepper-ros2",
+      "simulated",
+      "turtlebot3-burger",
+    ]);
   });
 
   it("our NAO6 file is the fixture plus additive fields only", async () => {
@@ -39,7 +44,12 @@ describe("a folder with a bad file (fail soft)", () => {
     expect(folder.plugins.map((p) => p.robotId)).toEqual(["nao6-ros2"]);
     expect(folder.errors).toEqual([
       { file: "b-broken.json", path: "/actions/2/timeout", code: "schema", reason: "must be an integer" },
-      { file: "c-same-robot.json", path: "/robotId", code: "duplicate_robot", reason: 'robotId "nao6-ros2" is already declared by a-good.json' },
+      {
+        file: "c-same-robot.json",
+        path: "/robotId",
+        code: "duplicate_robot",
+        reason: 'robotId "nao6-ros2" is already declared by a-good.json',
+      },
     ]);
   });
 

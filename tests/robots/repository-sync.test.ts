@@ -38,17 +38,32 @@ describe("fetchRepository", () => {
   it("fetches the official repository and its NAO6 plugin unmodified", async () => {
     const result = await fetchRepository(`${base}/official`);
     // The TurtleBot3 files send ROS 2 action goals, which the format cannot express yet (issue 16): refused, and named.
-    expect([...new Set(result.errors.map((e) => e.file))]).toEqual(["turtlebot3-burger.json", "turtlebot3-waffle.json"]);
+    expect([...new Set(result.errors.map((e) => e.file))]).toEqual([
+      "turtlebot3-burger.json",
+      "turtlebot3-waffle.json",
+    ]);
     expect(result.repository?.id).toBe("hristudio-official");
-    expect(result.plugins.map((p) => [p.file, p.plugin.robotId, p.plugin.version, p.trust])).toEqual([["nao6-ros2.json", "nao6-ros2", "3.0.0", "verified"]]);
+    expect(result.plugins.map((p) => [p.file, p.plugin.robotId, p.plugin.version, p.trust])).toEqual([
+      ["nao6-ros2.json", "nao6-ros2", "3.0.0", "verified"],
+    ]);
   });
 
   it("keeps the good plugins, reports the bad and the missing, and caps trust at the repository's", async () => {
     const result = await fetchRepository(`${base}/mixed/`);
     expect(result.plugins.map((p) => [p.plugin.robotId, p.trust])).toEqual([["nao6-ros2", "community"]]);
     expect(result.errors).toEqual([
-      { file: "broken.json", path: "/robotId", code: "schema", reason: 'must be lower-case letters, digits, "-" or "_", starting with a letter or digit' },
-      { file: "plugins/missing.json", path: "", code: "unreadable", reason: `cannot fetch ${base}/mixed/plugins/missing.json: HTTP 404` },
+      {
+        file: "broken.json",
+        path: "/robotId",
+        code: "schema",
+        reason: 'must be lower-case letters, digits, "-" or "_", starting with a letter or digit',
+      },
+      {
+        file: "plugins/missing.json",
+        path: "",
+        code: "unreadable",
+        reason: `cannot fetch ${base}/mixed/plugins/missing.json: HTTP 404`,
+      },
     ]);
   });
 
@@ -73,9 +88,27 @@ describe("pluginChanges", () => {
     const ours = await load("plugins/nao6-ros2.json");
     const after = [{ ...ours, version: "3.1.0" }, await load("plugins/pepper-ros2.json"), before[1]!];
     expect(pluginChanges(before, after)).toEqual([
-      { robotId: "nao6-ros2", change: "updated", fromVersion: "3.0.0", toVersion: "3.1.0", actions: { added: ["look_down", "play_animation"], removed: [], changed: [] } },
-      { robotId: "pepper-ros2", change: "added", fromVersion: undefined, toVersion: "1.0.0", actions: { added: expect.any(Array), removed: [], changed: [] } },
-      { robotId: "turtlebot3-burger", change: "unchanged", fromVersion: "1.0.0", toVersion: "1.0.0", actions: { added: [], removed: [], changed: [] } },
+      {
+        robotId: "nao6-ros2",
+        change: "updated",
+        fromVersion: "3.0.0",
+        toVersion: "3.1.0",
+        actions: { added: ["look_down", "play_animation"], removed: [], changed: [] },
+      },
+      {
+        robotId: "pepper-ros2",
+        change: "added",
+        fromVersion: undefined,
+        toVersion: "1.0.0",
+        actions: { added: expect.any(Array), removed: [], changed: [] },
+      },
+      {
+        robotId: "turtlebot3-burger",
+        change: "unchanged",
+        fromVersion: "1.0.0",
+        toVersion: "1.0.0",
+        actions: { added: [], removed: [], changed: [] },
+      },
     ]);
   });
 });

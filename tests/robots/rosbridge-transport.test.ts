@@ -11,12 +11,17 @@ import type { Health } from "../../src/robots/transports/transport";
 import { readTranscript } from "./support/replay";
 
 const fixture = (() => {
-  const loaded = loadPlugin("nao6-ros2.json", readFileSync("tests/fixtures/hristudio-plugins/plugins/nao6-ros2.json", "utf8"));
+  const loaded = loadPlugin(
+    "nao6-ros2.json",
+    readFileSync("tests/fixtures/hristudio-plugins/plugins/nao6-ros2.json", "utf8"),
+  );
   if (!loaded.ok) throw new Error("fixture");
   return loaded.value as Plugin;
 })();
 const hostile = (readTranscript("02-hostile-text-roundtrip.jsonl")[4]!.frame as { msg: { data: string } }).msg.data;
-const hostileSha = JSON.parse(readFileSync("tests/fixtures/rosbridge-transcripts/02-hostile-text-roundtrip.check.json", "utf8")).sent.sha256_utf8;
+const hostileSha = JSON.parse(
+  readFileSync("tests/fixtures/rosbridge-transcripts/02-hostile-text-roundtrip.check.json", "utf8"),
+).sent.sha256_utf8;
 
 let sim: Simulator | null = null;
 let transport: RosbridgeTransport | null = null;
@@ -63,23 +68,28 @@ function expectedPayload(action: PluginAction) {
 }
 
 describe("every action of the fixture NAO6 plugin through roslib", () => {
-  const overRosbridge = fixture.actions.filter((a) => a.ros2 && "payloadMapping" in a.ros2 && a.ros2.payloadMapping.type !== "ssh");
+  const overRosbridge = fixture.actions.filter(
+    (a) => a.ros2 && "payloadMapping" in a.ros2 && a.ros2.payloadMapping.type !== "ssh",
+  );
   const overSsh = fixture.actions.filter((a) => !overRosbridge.includes(a));
 
   it("covers all 20 actions: 14 over rosbridge, 6 over SSH", () => {
     expect([overRosbridge.length, overSsh.length]).toEqual([14, 6]);
   });
 
-  it.each(overRosbridge.map((a) => [a.id, a] as const))("%s arrives with its exact topic, type and payload", async (_, action) => {
-    const { sim, transport } = await setUp();
-    const ros2 = action.ros2 as { topic: string; messageType: string };
-    const outcome = await transport.dispatch(action, parametersFor[action.id] ?? {});
-    expect(outcome).toEqual({ status: "completed", detail: { topic: ros2.topic } });
-    await until(() => lastPublish(sim, ros2.topic).count === 1);
-    const received = lastPublish(sim, ros2.topic);
-    expect(received.type).toBe(ros2.messageType);
-    expect(received.msg).toEqual(expectedPayload(action));
-  });
+  it.each(overRosbridge.map((a) => [a.id, a] as const))(
+    "%s arrives with its exact topic, type and payload",
+    async (_, action) => {
+      const { sim, transport } = await setUp();
+      const ros2 = action.ros2 as { topic: string; messageType: string };
+      const outcome = await transport.dispatch(action, parametersFor[action.id] ?? {});
+      expect(outcome).toEqual({ status: "completed", detail: { topic: ros2.topic } });
+      await until(() => lastPublish(sim, ros2.topic).count === 1);
+      const received = lastPublish(sim, ros2.topic);
+      expect(received.type).toBe(ros2.messageType);
+      expect(received.msg).toEqual(expectedPayload(action));
+    },
+  );
 
   it("the hostile text of transcript 02 arrives byte-identical", async () => {
     const { sim, transport } = await setUp();
@@ -90,16 +100,25 @@ describe("every action of the fixture NAO6 plugin through roslib", () => {
     expect(sim.state.lastSaid).toBe(hostile);
   });
 
-  it.each(overSsh.map((a) => [a.id, a] as const))("%s is refused as an SSH action, and nothing is published", async (_, action) => {
-    const { sim, transport } = await setUp();
-    expect(await transport.dispatch(action, {})).toEqual({ status: "failed", reason: `action "${action.id}" runs over SSH, not rosbridge` });
-    expect(sim.received.filter((r) => r.message.op === "publish")).toEqual([]);
-  });
+  it.each(overSsh.map((a) => [a.id, a] as const))(
+    "%s is refused as an SSH action, and nothing is published",
+    async (_, action) => {
+      const { sim, transport } = await setUp();
+      expect(await transport.dispatch(action, {})).toEqual({
+        status: "failed",
+        reason: `action "${action.id}" runs over SSH, not rosbridge`,
+      });
+      expect(sim.received.filter((r) => r.message.op === "publish")).toEqual([]);
+    },
+  );
 
   it("refuses bad parameters before sending anything", async () => {
     const { sim, transport } = await setUp();
     const walk = fixture.actions.find((a) => a.id === "walk_forward")!;
-    expect(await transport.dispatch(walk, { speed: 3 })).toEqual({ status: "failed", reason: '"speed" must be <= 0.55' });
+    expect(await transport.dispatch(walk, { speed: 3 })).toEqual({
+      status: "failed",
+      reason: '"speed" must be <= 0.55',
+    });
     expect(sim.received).toEqual([]);
   });
 });
@@ -125,7 +144,10 @@ describe("service calls", () => {
   it("fails with the robot's reason", async () => {
     const { transport } = await setUp();
     const outcome = await transport.dispatch(service("/broken"), {});
-    expect(outcome).toEqual({ status: "failed", reason: "service [/broken] responded with an error: error processing request: motor fault" });
+    expect(outcome).toEqual({
+      status: "failed",
+      reason: "service [/broken] responded with an error: error processing request: motor fault",
+    });
   });
 
   it("times out at the plugin's timeout", async () => {
@@ -158,7 +180,10 @@ describe("connection health", () => {
     sim.faults.dropConnections();
     await until(() => transport.health().state !== "connected");
     const stop = fixture.actions.find((a) => a.id === "stop_walking")!;
-    expect(await transport.dispatch({ ...stop, retryable: false }, {})).toEqual({ status: "failed", reason: "robot not connected" });
+    expect(await transport.dispatch({ ...stop, retryable: false }, {})).toEqual({
+      status: "failed",
+      reason: "robot not connected",
+    });
     const pending = transport.dispatch(stop, {});
     setTimeout(() => sim.faults.refuseConnections(false), 300);
     expect(await pending).toEqual({ status: "completed", detail: { topic: "/cmd_vel" } });

@@ -23,7 +23,8 @@ const isJointStates = (f: Record<string, unknown>) => f.op === "publish" && f.to
 
 /** Error texts differ between ROS 1 and ROS 2 servers; their shape does not. */
 function comparable(frame: Record<string, unknown>) {
-  if (frame.op === "service_response" && frame.result === false && typeof frame.values === "string") return { ...frame, values: "<error text>" };
+  if (frame.op === "service_response" && frame.result === false && typeof frame.values === "string")
+    return { ...frame, values: "<error text>" };
   return frame;
 }
 
@@ -50,9 +51,13 @@ describe.each(FILES)("%s", (file) => {
   it("answers with the same frames in the same order (joint states aside)", () => {
     const { lines, got } = results.get(file)!;
     for (const conn of connections(lines)) {
-      const expected = lines.filter((l) => l.dir === "recv" && (l.conn ?? 1) === conn).map((l) => l.frame as Record<string, unknown>);
+      const expected = lines
+        .filter((l) => l.dir === "recv" && (l.conn ?? 1) === conn)
+        .map((l) => l.frame as Record<string, unknown>);
       const ours = got.filter((g) => g.conn === conn).map((g) => g.frame);
-      expect(ours.filter((f) => !isJointStates(f)).map(comparable), `connection ${conn}`).toEqual(expected.filter((f) => !isJointStates(f)).map(comparable));
+      expect(ours.filter((f) => !isJointStates(f)).map(comparable), `connection ${conn}`).toEqual(
+        expected.filter((f) => !isJointStates(f)).map(comparable),
+      );
     }
   });
 
@@ -60,10 +65,14 @@ describe.each(FILES)("%s", (file) => {
     const { lines, got } = results.get(file)!;
     // The ROS 2 spelling sensor_msgs/msg/JointState is refused by the ROS 1
     // server but accepted by ours: in 06 joint states flow after that subscribe.
-    const ros2Subscribe = file.startsWith("06") ? lines.find((l) => (l.frame as { id?: string })?.id === "sub-js-ros2-name")!.t_ms : Infinity;
+    const ros2Subscribe = file.startsWith("06")
+      ? lines.find((l) => (l.frame as { id?: string })?.id === "sub-js-ros2-name")!.t_ms
+      : Infinity;
     for (const conn of connections(lines)) {
       const marks = lines.filter((l) => l.dir !== "recv" && (l.conn ?? 1) === conn).map((l) => l.t_ms);
-      const recorded = lines.filter((l) => l.dir === "recv" && (l.conn ?? 1) === conn && isJointStates(l.frame as Record<string, unknown>)).map((l) => l.t_ms);
+      const recorded = lines
+        .filter((l) => l.dir === "recv" && (l.conn ?? 1) === conn && isJointStates(l.frame as Record<string, unknown>))
+        .map((l) => l.t_ms);
       const ours = got.filter((g) => g.conn === conn && isJointStates(g.frame)).map((g) => g.t);
       for (let i = 0; i + 1 < marks.length; i++) {
         const [a, b] = [marks[i]!, marks[i + 1]!];
@@ -71,7 +80,10 @@ describe.each(FILES)("%s", (file) => {
         const want = recorded.filter((t) => t >= a && t < b).length;
         const have = ours.filter((t) => t >= a + (want ? 0 : 100) && t < b).length;
         if (want === 0) expect(have, `conn ${conn}, ${a}-${b} ms`).toBe(0);
-        else expect(Math.abs(have - want), `conn ${conn}, ${a}-${b} ms: ${have} vs ${want}`).toBeLessThanOrEqual(Math.max(2, want * 0.2));
+        else
+          expect(Math.abs(have - want), `conn ${conn}, ${a}-${b} ms: ${have} vs ${want}`).toBeLessThanOrEqual(
+            Math.max(2, want * 0.2),
+          );
       }
     }
     if (file.startsWith("06")) expect(got.some((g) => isJointStates(g.frame) && g.t > ros2Subscribe)).toBe(true);
@@ -80,7 +92,9 @@ describe.each(FILES)("%s", (file) => {
 
 describe("details", () => {
   it("joint states have the README's shape in ROS 2 form", () => {
-    const frame = results.get("03-subscribe-throttle-unsubscribe.jsonl")!.got.find((g) => isJointStates(g.frame))!.frame;
+    const frame = results
+      .get("03-subscribe-throttle-unsubscribe.jsonl")!
+      .got.find((g) => isJointStates(g.frame))!.frame;
     const msg = frame.msg as Record<string, any>;
     expect(msg.header.frame_id).toBe("base_link");
     expect(Object.keys(msg.header.stamp)).toEqual(["sec", "nanosec"]);
@@ -96,14 +110,17 @@ describe("details", () => {
     ["09-reconnect-no-restore.jsonl", 0, 1223, 200],
     ["09-reconnect-no-restore.jsonl", 5237, 6442, 200],
   ])("%s: throttled frames from %i to %i ms are at least %i ms apart", (file, from, to, rate) => {
-    const times = results.get(file)!.got.filter((g) => isJointStates(g.frame) && g.t >= from && g.t < to).map((g) => g.t);
+    const times = results
+      .get(file)!
+      .got.filter((g) => isJointStates(g.frame) && g.t >= from && g.t < to)
+      .map((g) => g.t);
     expect(times.length).toBeGreaterThan(2);
     for (let i = 1; i < times.length; i++) expect(times[i]! - times[i - 1]!).toBeGreaterThanOrEqual(rate - 15);
   });
 
   it("the hostile text of 02 comes back byte-identical on /speech and /speech_done", () => {
     const { lines, got } = results.get("02-hostile-text-roundtrip.jsonl")!;
-    const sent = ((lines[4]!.frame as any).msg.data as string);
+    const sent = (lines[4]!.frame as any).msg.data as string;
     const speech = got.filter((g) => g.frame.topic === "/speech").map((g) => (g.frame.msg as any).data);
     const done = got.filter((g) => g.frame.topic === "/speech_done").map((g) => (g.frame.msg as any).data);
     expect(speech).toEqual([sent]);

@@ -79,7 +79,11 @@ describe("the simulated NAO6", () => {
     sim = await startSimulator({ port: 0, nodes: simulatedRobot(nao6) });
     const c = await client(sim.url);
     c.send({ op: "publish", topic: "/animation", msg: { data: "animations/Stand/Gestures/Hey_1" } });
-    c.send({ op: "publish", topic: "/joint_angles", msg: { joint_names: ["HeadPitch"], joint_angles: [0.44], speed: 0.1, relative: 0 } });
+    c.send({
+      op: "publish",
+      topic: "/joint_angles",
+      msg: { joint_names: ["HeadPitch"], joint_angles: [0.44], speed: 0.1, relative: 0 },
+    });
     await c.until(() => sim!.state.headPitch > 0.4);
     expect(sim.state.animation).toBe("animations/Stand/Gestures/Hey_1");
     c.socket.close();

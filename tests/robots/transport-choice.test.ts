@@ -17,7 +17,10 @@ describe("choosing a transport from the plugin", () => {
     if (!choice.ok) throw new Error(choice.reason);
     await choice.transport.connect();
     const gesture = simulated.actions.find((a) => a.id === "gesture")!;
-    expect(await choice.transport.dispatch(gesture, { name: "wave" })).toEqual({ status: "completed", detail: { topic: "/gesture" } });
+    expect(await choice.transport.dispatch(gesture, { name: "wave" })).toEqual({
+      status: "completed",
+      detail: { topic: "/gesture" },
+    });
     await choice.transport.close();
   });
 

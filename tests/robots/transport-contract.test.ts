@@ -34,13 +34,23 @@ interface Rig {
 async function rosbridgeRig(): Promise<Rig> {
   const nao = (loadPlugin("nao6-ros2.json", readFileSync("plugins/nao6-ros2.json", "utf8")) as { value: Plugin }).value;
   const sim = await startSimulator({ port: 0, nodes: simulatedRobot(nao) });
-  const call = (id: string, service: string, timeout?: number): PluginAction => ({ id, name: id, category: "test", parameterSchema: none, timeout, ros2: { service, serviceType: "std_srvs/srv/Trigger" } });
+  const call = (id: string, service: string, timeout?: number): PluginAction => ({
+    id,
+    name: id,
+    category: "test",
+    parameterSchema: none,
+    timeout,
+    ros2: { service, serviceType: "std_srvs/srv/Trigger" },
+  });
   return {
     transport: new RosbridgeTransport({ url: sim.url, backoffMs: { first: 100, max: 200 } }),
     say: nao.actions.find((a) => a.id === "say_text")!,
     fails: call("broken", "/broken"),
     slow: call("slow", "/slow_op", 300),
-    heard: () => sim.received.filter((r) => r.message.op === "publish" && r.message.topic === "/speech").map((r) => (r.message.msg as { data: string }).data),
+    heard: () =>
+      sim.received
+        .filter((r) => r.message.op === "publish" && r.message.topic === "/speech")
+        .map((r) => (r.message.msg as { data: string }).data),
     drop: () => {
       sim.faults.refuseConnections(true);
       sim.faults.dropConnections();
@@ -61,11 +71,21 @@ async function sshRig(): Promise<Rig> {
     ros2: { topic: "/ssh", messageType: "std_msgs/msg/String", payloadMapping: { type: "ssh", sshCommand } },
   });
   return {
-    transport: new SshTransport({ host: "127.0.0.1", port: sshd.port, username: sshd.username, privateKeyFile: sshd.keyFile, backoffMs: { first: 100, max: 200 } }),
+    transport: new SshTransport({
+      host: "127.0.0.1",
+      port: sshd.port,
+      username: sshd.username,
+      privateKeyFile: sshd.keyFile,
+      backoffMs: { first: 100, max: 200 },
+    }),
     say: command("say", "qicli call ALTextToSpeech.say {{text}}", textSchema),
     fails: command("fails", "qicli call fail"),
     slow: command("slow", "qicli call slow", none, 300),
-    heard: () => sshd.calls().filter((c) => c[1] === "ALTextToSpeech.say").map((c) => c[2]!),
+    heard: () =>
+      sshd
+        .calls()
+        .filter((c) => c[1] === "ALTextToSpeech.say")
+        .map((c) => c[2]!),
     drop: () => sshd.stop(),
     restore: () => sshd.restart(),
     close: async () => sshd.stop(),
@@ -87,7 +107,20 @@ async function httpRig(): Promise<Rig> {
   await new Promise<void>((ok) => server.listen(0, "127.0.0.1", ok));
   const port = (server.address() as AddressInfo).port;
   const base = `http://127.0.0.1:${port}/`;
-  const request = (id: string, url: string, body?: Record<string, string>, schema = none, timeout?: number): PluginAction => ({ id, name: id, category: "test", parameterSchema: schema, timeout, http: { method: "POST", url, body } });
+  const request = (
+    id: string,
+    url: string,
+    body?: Record<string, string>,
+    schema = none,
+    timeout?: number,
+  ): PluginAction => ({
+    id,
+    name: id,
+    category: "test",
+    parameterSchema: schema,
+    timeout,
+    http: { method: "POST", url, body },
+  });
   return {
     transport: new HttpTransport({ baseUrl: base, heartbeatEveryMs: 200 }),
     say: request("say", "speech", { text: "{{text}}" }, textSchema),
@@ -146,8 +179,13 @@ describe.each([
   });
 
   it("fails an action at once while the robot is away, but holds a retryable one until the robot is back", async () => {
-    expect((await rig.transport.dispatch({ ...rig.say, retryable: false, timeout: 5000 }, { text: "not now" })).status).toBe("failed");
-    const held = rig.transport.dispatch({ ...rig.say, retryable: true, timeout: 20_000 }, { text: "when you are back" });
+    expect(
+      (await rig.transport.dispatch({ ...rig.say, retryable: false, timeout: 5000 }, { text: "not now" })).status,
+    ).toBe("failed");
+    const held = rig.transport.dispatch(
+      { ...rig.say, retryable: true, timeout: 20_000 },
+      { text: "when you are back" },
+    );
     await new Promise((r) => setTimeout(r, 400));
     await rig.restore();
     expect(await held).toMatchObject({ status: "completed" });
@@ -158,7 +196,9 @@ describe.each([
   it("times out a retryable action when the robot stays away", async () => {
     rig.drop();
     await expect.poll(() => rig.transport.health().state, { timeout: 5000 }).not.toBe("connected");
-    expect(await rig.transport.dispatch({ ...rig.say, retryable: true, timeout: 600 }, { text: "never" })).toMatchObject({ status: "timed_out" });
+    expect(
+      await rig.transport.dispatch({ ...rig.say, retryable: true, timeout: 600 }, { text: "never" }),
+    ).toMatchObject({ status: "timed_out" });
     await rig.restore();
   });
 });

@@ -3,19 +3,33 @@
 // stays closed once closed.
 import { describe, expect, it } from "vitest";
 import type { PluginAction } from "../../src/core/plugins";
-import { backoffDelay, checkedParameters, LinkedTransport, RECONNECT_BACKOFF, unreached } from "../../src/robots/transports/link";
+import {
+  backoffDelay,
+  checkedParameters,
+  LinkedTransport,
+  RECONNECT_BACKOFF,
+  unreached,
+} from "../../src/robots/transports/link";
 import type { Health } from "../../src/robots/transports/transport";
 
 const say = {
   id: "say",
   name: "Say",
-  parameterSchema: { type: "object", properties: { text: { type: "string" }, volume: { type: "number", default: 0.5 } }, required: ["text"] },
+  parameterSchema: {
+    type: "object",
+    properties: { text: { type: "string" }, volume: { type: "number", default: 0.5 } },
+    required: ["text"],
+  },
 } as unknown as PluginAction;
 
 describe("shared transport plumbing", () => {
   it.each<[string, Record<string, unknown>, unknown]>([
     ["fills the schema's defaults in", { text: "Hi" }, { ok: true, parameters: { text: "Hi", volume: 0.5 } }],
-    ["refuses what the schema refuses, naming the parameter", {}, { ok: false, outcome: { status: "failed", reason: expect.stringContaining("text") } }],
+    [
+      "refuses what the schema refuses, naming the parameter",
+      {},
+      { ok: false, outcome: { status: "failed", reason: expect.stringContaining("text") } },
+    ],
   ])("checked parameters: %s", (_, parameters, expected) => {
     expect(checkedParameters(say, parameters)).toEqual(expected);
   });

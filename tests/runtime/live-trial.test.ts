@@ -59,7 +59,10 @@ describe.sequential("a live trial through the runtime", () => {
   it("never lets an observer command, but lets them mark a moment everyone sees", async () => {
     const wizard = await open(wizardApi);
     const observer = await open(observerApi);
-    expect(await observer.command("o1", { kind: "next" })).toMatchObject({ type: "rejected", reason: "As observer you may watch this trial but not run it." });
+    expect(await observer.command("o1", { kind: "next" })).toMatchObject({
+      type: "rejected",
+      reason: "As observer you may watch this trial but not run it.",
+    });
     observer.send({ type: "annotate", requestId: "a1", label: "Participant laughed", note: "" });
     await observer.next((m) => m.type === "ack" && m.requestId === "a1");
     const seen = await wizard.next((m) => m.type === "annotation");
@@ -71,7 +74,9 @@ describe.sequential("a live trial through the runtime", () => {
   it("refuses messages it does not understand and tokens it did not sign", async () => {
     const wizard = await open(wizardApi);
     wizard.send({ type: "command", requestId: "x", command: { kind: "fly" } });
-    expect((await wizard.next((m) => m.type === "rejected")).reason).toMatch(/^The message is not understood: command.kind/);
+    expect((await wizard.next((m) => m.type === "rejected")).reason).toMatch(
+      /^The message is not understood: command.kind/,
+    );
     wizard.close();
     const forged = await connectTrial(app.runtimeUrl, "forged.token");
     expect(forged.closed).toEqual({ code: 4401, reason: "Your link to this trial has expired. Reload the page." });

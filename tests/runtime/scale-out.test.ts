@@ -15,7 +15,14 @@ const SECRET = "scale-out-test-secret".padEnd(40, "x");
 const protocol = {
   schemaVersion: 1,
   experiment: { id: "e", name: "E", description: "", robotPluginId: "no-robot" },
-  steps: [{ id: "s1", name: "Only step", description: "", actions: [{ id: "a1", type: "wizard_instruction", name: "Smile", parameters: {}, parallelGroup: null }] }],
+  steps: [
+    {
+      id: "s1",
+      name: "Only step",
+      description: "",
+      actions: [{ id: "a1", type: "wizard_instruction", name: "Smile", parameters: {}, parallelGroup: null }],
+    },
+  ],
 };
 
 describe.sequential("several runtime processes", () => {
@@ -29,12 +36,39 @@ describe.sequential("several runtime processes", () => {
   beforeAll(async () => {
     const url = await freshDatabaseUrl();
     const { db, close } = createDatabase(url);
-    for (const role of ["wizard", "observer"]) people[role] = (await createAccount(db, { name: role, email: `${role}@example.org`, password: "password-123", role: "researcher" })).id;
+    for (const role of ["wizard", "observer"])
+      people[role] = (
+        await createAccount(db, {
+          name: role,
+          email: `${role}@example.org`,
+          password: "password-123",
+          role: "researcher",
+        })
+      ).id;
     const [study] = await db.insert(studies).values({ title: "S" }).returning();
-    await db.insert(studyMembers).values(["wizard", "observer"].map((role) => ({ studyId: study!.id, userId: people[role]!, role: role as "wizard" | "observer" })));
-    const [experiment] = await db.insert(experiments).values({ studyId: study!.id, name: "E", robotPluginId: "no-robot" }).returning();
-    const [version] = await db.insert(experimentVersions).values({ experimentId: experiment!.id, version: 1, snapshot: protocol, hash: "h", pluginId: "no-robot" }).returning();
-    trialId = (await db.insert(trials).values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id }).returning())[0]!.id;
+    await db
+      .insert(studyMembers)
+      .values(
+        ["wizard", "observer"].map((role) => ({
+          studyId: study!.id,
+          userId: people[role]!,
+          role: role as "wizard" | "observer",
+        })),
+      );
+    const [experiment] = await db
+      .insert(experiments)
+      .values({ studyId: study!.id, name: "E", robotPluginId: "no-robot" })
+      .returning();
+    const [version] = await db
+      .insert(experimentVersions)
+      .values({ experimentId: experiment!.id, version: 1, snapshot: protocol, hash: "h", pluginId: "no-robot" })
+      .returning();
+    trialId = (
+      await db
+        .insert(trials)
+        .values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id })
+        .returning()
+    )[0]!.id;
     await close();
     a = await startRuntime(url, SECRET);
     b = await startRuntime(url, SECRET);
@@ -48,10 +82,15 @@ describe.sequential("several runtime processes", () => {
     expect(await wizard.command("r1", { kind: "start" })).toMatchObject({ type: "ack", seqs: [1, 2] });
     expect(await wizard.command("r2", { kind: "note", text: "Participant arrived late" })).toMatchObject({ seqs: [3] });
     await observer.next((m) => m.type === "events" && (m.events as Array<{ seq: number }>).some((e) => e.seq === 3));
-    const seen = observer.messages.flatMap((m) => (m.type === "events" ? (m.events as Array<{ seq: number }>).map((e) => e.seq) : []));
+    const seen = observer.messages.flatMap((m) =>
+      m.type === "events" ? (m.events as Array<{ seq: number }>).map((e) => e.seq) : [],
+    );
     expect(seen).toEqual([1, 2, 3]);
     const elsewhere = await connectTrial(b.url, token("wizard"));
-    expect(await elsewhere.command("r3", { kind: "next" })).toMatchObject({ type: "rejected", reason: expect.stringMatching(/^Another runtime process is running this trial/) });
+    expect(await elsewhere.command("r3", { kind: "next" })).toMatchObject({
+      type: "rejected",
+      reason: expect.stringMatching(/^Another runtime process is running this trial/),
+    });
     wizard.close();
     observer.close();
     elsewhere.close();

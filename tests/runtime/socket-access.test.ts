@@ -10,7 +10,8 @@ import { socketFixture } from "../support/socket-fixture";
 import { connectTrial, type TrialSocket } from "../support/socket";
 
 type Fixture = Awaited<ReturnType<typeof socketFixture>>;
-const seqsIn = (socket: TrialSocket) => socket.messages.flatMap((m) => (m.type === "events" ? (m.events as Array<{ seq: number }>).map((e) => e.seq) : []));
+const seqsIn = (socket: TrialSocket) =>
+  socket.messages.flatMap((m) => (m.type === "events" ? (m.events as Array<{ seq: number }>).map((e) => e.seq) : []));
 const welcomeOf = (socket: TrialSocket) => socket.messages.find((m) => m.type === "welcome")!;
 /** A bounded wait for something that must happen soon (never a timing assertion). */
 async function eventually(check: () => boolean, what: string, seconds = 3) {
@@ -41,17 +42,30 @@ describe.sequential("the trial socket's access", () => {
     const otherStudysTrial = await f.b.trial(f.b.people.wizard!, "live");
     const observer = await f.open("observer", trialId);
     for (let i = 0; i < 5; i++) {
-      observer.send({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: f.token(f.a.people.observer!, trialId), lastSeq: 0 });
+      observer.send({
+        type: "hello",
+        version: SOCKET_PROTOCOL_VERSION,
+        token: f.token(f.a.people.observer!, trialId),
+        lastSeq: 0,
+      });
     }
     // Not even a valid token for another study's trial changes what this connection follows.
-    observer.send({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: f.token(f.b.people.owner!, otherStudysTrial), lastSeq: 0 });
+    observer.send({
+      type: "hello",
+      version: SOCKET_PROTOCOL_VERSION,
+      token: f.token(f.b.people.owner!, otherStudysTrial),
+      lastSeq: 0,
+    });
     await eventually(() => observer.messages.filter((m) => m.type === "rejected").length === 6, "six hellos refused");
     expect(observer.messages.filter((m) => m.type === "rejected").map((m) => m.reason)).toEqual(
       Array(6).fill("This connection has already said hello: open a new connection to follow another trial."),
     );
     const wizard = await f.open("wizard", trialId);
     expect(await wizard.command("s", { kind: "start" })).toMatchObject({ type: "ack", seqs: [1, 2] });
-    expect(await wizard.command("n", { kind: "note", text: "Participant sat down" })).toMatchObject({ type: "ack", seqs: [3] });
+    expect(await wizard.command("n", { kind: "note", text: "Participant sat down" })).toMatchObject({
+      type: "ack",
+      seqs: [3],
+    });
     await observer.next((m) => m.type === "events" && seqsIn({ ...observer, messages: [m] }).includes(3));
     await wizard.command("n2", { kind: "note", text: "One more, so any duplicate of 3 has arrived" });
     await observer.next((m) => m.type === "events" && seqsIn({ ...observer, messages: [m] }).includes(4));
@@ -65,12 +79,16 @@ describe.sequential("the trial socket's access", () => {
     const trialId = await f.a.trial(f.a.people.wizard!, "live");
     const researcher = await f.open("researcher", trialId);
     expect(welcomeOf(researcher)).toMatchObject({ role: "researcher", mayRun: true });
-    await f.db.delete(studyMembers).where(and(eq(studyMembers.studyId, f.a.studyId), eq(studyMembers.userId, f.a.people.researcher!)));
+    await f.db
+      .delete(studyMembers)
+      .where(and(eq(studyMembers.studyId, f.a.studyId), eq(studyMembers.userId, f.a.people.researcher!)));
     await eventually(() => researcher.closed !== null, "the removed member's socket is closed within a bounded wait");
     expect(researcher.closed).toEqual({ code: 4403, reason: "You are no longer a member of this study." });
     const back = await f.open("researcher", trialId);
     expect(back.closed).toEqual({ code: 4403, reason: "You are no longer a member of this study." });
-    await f.db.insert(studyMembers).values({ studyId: f.a.studyId, userId: f.a.people.researcher!, role: "researcher" });
+    await f.db
+      .insert(studyMembers)
+      .values({ studyId: f.a.studyId, userId: f.a.people.researcher!, role: "researcher" });
   });
 
   it("cuts off a disabled account at once", async () => {
@@ -86,12 +104,27 @@ describe.sequential("the trial socket's access", () => {
     const trialId = await f.a.trial(f.a.people.wizard!, "live");
     const researcher = await f.open("researcher", trialId);
     expect(await researcher.command("r1", { kind: "note", text: "Still a researcher" })).toMatchObject({ type: "ack" });
-    await f.db.update(studyMembers).set({ role: "observer" }).where(and(eq(studyMembers.studyId, f.a.studyId), eq(studyMembers.userId, f.a.people.researcher!)));
-    expect(await researcher.next((m) => m.type === "access")).toEqual({ type: "access", role: "observer", mayRun: false });
-    expect(await researcher.command("r2", { kind: "next" })).toMatchObject({ type: "rejected", reason: "As observer you may watch this trial but not run it." });
+    await f.db
+      .update(studyMembers)
+      .set({ role: "observer" })
+      .where(and(eq(studyMembers.studyId, f.a.studyId), eq(studyMembers.userId, f.a.people.researcher!)));
+    expect(await researcher.next((m) => m.type === "access")).toEqual({
+      type: "access",
+      role: "observer",
+      mayRun: false,
+    });
+    expect(await researcher.command("r2", { kind: "next" })).toMatchObject({
+      type: "rejected",
+      reason: "As observer you may watch this trial but not run it.",
+    });
     expect(await researcher.command("r3", { kind: "emergency_stop" })).toMatchObject({ type: "rejected" });
-    await f.db.update(studyMembers).set({ role: "researcher" }).where(and(eq(studyMembers.studyId, f.a.studyId), eq(studyMembers.userId, f.a.people.researcher!)));
-    expect(await researcher.next((m) => m.type === "access" && m.role === "researcher")).toMatchObject({ mayRun: true });
+    await f.db
+      .update(studyMembers)
+      .set({ role: "researcher" })
+      .where(and(eq(studyMembers.studyId, f.a.studyId), eq(studyMembers.userId, f.a.people.researcher!)));
+    expect(await researcher.next((m) => m.type === "access" && m.role === "researcher")).toMatchObject({
+      mayRun: true,
+    });
     researcher.close();
   });
 
@@ -101,7 +134,10 @@ describe.sequential("the trial socket's access", () => {
     const unblinded = await f.open("researcher", finished);
     expect((welcomeOf(unblinded).events as unknown[]).length).toBe(3);
     unblinded.close();
-    await f.db.update(studies).set({ settings: { blinding: { conditionsFromWizards: false, resultsUntilComplete: true } } }).where(eq(studies.id, f.a.studyId));
+    await f.db
+      .update(studies)
+      .set({ settings: { blinding: { conditionsFromWizards: false, resultsUntilComplete: true } } })
+      .where(eq(studies.id, f.a.studyId));
     const blinded = await f.open("researcher", finished);
     expect(welcomeOf(blinded)).toMatchObject({ role: "researcher", events: [] });
     const observer = await f.open("observer", finished);
@@ -121,8 +157,16 @@ describe.sequential("the trial socket's access", () => {
     const other = await f.open("otherWizard", trialId);
     expect(welcomeOf(other)).toMatchObject({ role: "wizard", mayRun: false });
     expect((welcomeOf(other).events as unknown[]).length).toBe(2);
-    for (const command of [{ kind: "next" }, { kind: "jump", stepId: "A-step-2" }, { kind: "abort", reason: "mine now" }, { kind: "note", text: "x" }]) {
-      expect(await other.command(`o-${command.kind}`, command)).toMatchObject({ type: "rejected", reason: "This trial is assigned to another wizard: you may watch it but not run it." });
+    for (const command of [
+      { kind: "next" },
+      { kind: "jump", stepId: "A-step-2" },
+      { kind: "abort", reason: "mine now" },
+      { kind: "note", text: "x" },
+    ]) {
+      expect(await other.command(`o-${command.kind}`, command)).toMatchObject({
+        type: "rejected",
+        reason: "This trial is assigned to another wizard: you may watch it but not run it.",
+      });
     }
     expect(await other.command("stop", { kind: "emergency_stop" })).toMatchObject({ type: "ack" });
     other.close();
@@ -137,7 +181,10 @@ describe.sequential("the trial socket's access", () => {
     const [row] = await f.db.select({ wizardId: trials.wizardId }).from(trials).where(eq(trials.id, trialId));
     expect(row!.wizardId).toBe(f.a.people.otherWizard);
     expect(await second.next((m) => m.type === "access")).toEqual({ type: "access", role: "wizard", mayRun: false });
-    expect(await second.command("n", { kind: "next" })).toMatchObject({ type: "rejected", reason: "This trial is assigned to another wizard: you may watch it but not run it." });
+    expect(await second.command("n", { kind: "next" })).toMatchObject({
+      type: "rejected",
+      reason: "This trial is assigned to another wizard: you may watch it but not run it.",
+    });
     expect(await first.command("n", { kind: "next" })).toMatchObject({ type: "ack" });
     first.close();
     second.close();
@@ -148,8 +195,13 @@ describe.sequential("the trial socket's access", () => {
     const mine = await f.recording(trialId);
     const elsewhere = await f.recording(await f.a.trial(f.a.people.wizard!, "live"));
     const wizard = await f.open("wizard", trialId);
-    expect(await wizard.command("other", { kind: "recording", recordingId: elsewhere, offsetMs: 0 })).toMatchObject({ type: "rejected", reason: "That recording belongs to another trial: it was not logged here." });
-    expect(await wizard.command("mine", { kind: "recording", recordingId: mine, offsetMs: 0 })).toMatchObject({ type: "ack" });
+    expect(await wizard.command("other", { kind: "recording", recordingId: elsewhere, offsetMs: 0 })).toMatchObject({
+      type: "rejected",
+      reason: "That recording belongs to another trial: it was not logged here.",
+    });
+    expect(await wizard.command("mine", { kind: "recording", recordingId: mine, offsetMs: 0 })).toMatchObject({
+      type: "ack",
+    });
     wizard.close();
   });
 

@@ -48,7 +48,10 @@ function templateOf(schema: z.ZodObject, name: string): Template {
     else if (field.def.type === "number") fields[key] = 0;
     else if (field.def.type === "record") fields[key] = {};
     else if (key === "command") command = { name: "", fields: {}, idKeys: [] };
-    else throw new Error(`The matrix cannot fill ${name}.${key} (${field.def.type}): teach templateOf this kind of field.`);
+    else
+      throw new Error(
+        `The matrix cannot fill ${name}.${key} (${field.def.type}): teach templateOf this kind of field.`,
+      );
   }
   return { name, fields, idKeys, command };
 }
@@ -56,7 +59,11 @@ function templateOf(schema: z.ZodObject, name: string): Template {
 const TEMPLATES: Template[] = clientMessageSchema.options.flatMap((message) => {
   const outer = templateOf(message as unknown as z.ZodObject, String(message.shape.type.value));
   if (!outer.command) return [outer];
-  return commandSchema.options.map((c) => ({ ...outer, name: `command ${String(c.shape.kind.value)}`, command: templateOf(c as unknown as z.ZodObject, String(c.shape.kind.value)) }));
+  return commandSchema.options.map((c) => ({
+    ...outer,
+    name: `command ${String(c.shape.kind.value)}`,
+    command: templateOf(c as unknown as z.ZodObject, String(c.shape.kind.value)),
+  }));
 });
 
 /** (a) all own; (b) all other; (c) every proper mix of declared keys, and own keys plus the other study's ids in every key not declared. */
@@ -66,7 +73,11 @@ function variantsOf(t: Template): Array<{ name: string; sides: Record<string, Si
   const variants = [{ name: "own ids", sides: all("own"), extras: false }];
   if (keys.length) variants.push({ name: "other study's ids", sides: all("other"), extras: false });
   for (let mask = 1; mask < 2 ** keys.length - 1; mask++) {
-    variants.push({ name: `mixed ids (${keys.map((k, i) => `${k}: ${mask & (1 << i) ? "other" : "own"}`).join(", ")})`, sides: Object.fromEntries(keys.map((k, i) => [k, mask & (1 << i) ? "other" : "own"])), extras: false });
+    variants.push({
+      name: `mixed ids (${keys.map((k, i) => `${k}: ${mask & (1 << i) ? "other" : "own"}`).join(", ")})`,
+      sides: Object.fromEntries(keys.map((k, i) => [k, mask & (1 << i) ? "other" : "own"])),
+      extras: false,
+    });
   }
   variants.push({ name: "own ids, other study's ids in every undeclared id key", sides: all("own"), extras: true });
   return variants;
@@ -98,52 +109,84 @@ describe.sequential("every socket message × every role × own, other and mixed 
     f = await socketFixture();
     bTrial = await f.b.trial(f.b.people.wizard!, "live");
     bRecording = await f.recording(bTrial);
-    secretsOfB.push(f.b.studyId, bTrial, bRecording, ...Object.values(f.b.people), "B-step-1", "B-step-2", "B-ask", "B-yes", "B-smile", "B-wave", "B experiment", "B owner", "B wizard");
+    secretsOfB.push(
+      f.b.studyId,
+      bTrial,
+      bRecording,
+      ...Object.values(f.b.people),
+      "B-step-1",
+      "B-step-2",
+      "B-ask",
+      "B-yes",
+      "B-smile",
+      "B-wave",
+      "B experiment",
+      "B owner",
+      "B wizard",
+    );
   });
   afterAll(async () => f?.stop());
 
   it("covers every message and command the protocol declares", () => {
-    expect(TEMPLATES.map((t) => t.name)).toEqual(expect.arrayContaining(["hello", "ping", "annotate", ...commandSchema.options.map((c) => `command ${String(c.shape.kind.value)}`)]));
+    expect(TEMPLATES.map((t) => t.name)).toEqual(
+      expect.arrayContaining([
+        "hello",
+        "ping",
+        "annotate",
+        ...commandSchema.options.map((c) => `command ${String(c.shape.kind.value)}`),
+      ]),
+    );
   });
 
-  it.each(CASES.map((c) => [c.who, c.t.name, c.v.name, c] as const))("%s · %s · %s", async (who, _message, _variant, { t, v }) => {
-    const trialId = await f.a.trial(f.a.people.wizard!, "live");
-    aTrials.push(trialId);
-    const usesRecording = [...t.idKeys, ...(t.command?.idKeys ?? [])].includes("recordingId");
-    const ids: Record<Side, Ids> = {
-      own: { trialId, studyId: f.a.studyId, recordingId: usesRecording ? await f.recording(trialId) : "" },
-      other: { trialId: bTrial, studyId: f.b.studyId, recordingId: bRecording },
-    };
-    const socket = await f.open(who, trialId);
-    if (who === "outsider") {
-      expect(socket.closed).toEqual({ code: 4403, reason: "You are no longer a member of this study." });
-      expect(socket.messages).toEqual([]);
-      return;
-    }
-    const message = build(t, v.sides, v.extras, ids);
-    const before = socket.messages.length;
-    socket.send(message);
-    const reply = await socket.next((m) => socket.messages.indexOf(m) >= before && ["ack", "rejected", "pong"].includes(String(m.type)));
-    if (typeof message.requestId === "string") expect(reply.requestId).toBe(message.requestId);
-    // (b), (c): an id of another study in any declared key is refused.
-    if (Object.values(v.sides).includes("other")) expect(reply).toMatchObject({ type: "rejected" });
-    // Roles: observers never command; a wizard commands another wizard's trial only to stop it.
-    const kind = t.command ? String(t.command.fields.kind) : null;
-    if (kind && (who === "observer" || (who === "otherWizard" && kind !== "emergency_stop"))) expect(reply).toMatchObject({ type: "rejected" });
-    if (t.name === "hello") expect(reply).toMatchObject({ type: "rejected", reason: expect.stringMatching(/already said hello/) });
-    // No read: nothing this socket received, except the refusal of what it sent, names study B.
-    await socket.command("after", { kind: "note", text: "drain" }).catch(() => null);
-    const received = socket.messages.filter((m) => m.type !== "rejected").map((m) => JSON.stringify(m));
-    expect(secretsOfB.filter((s) => received.some((text) => text.includes(s)))).toEqual([]);
-    for (const m of socket.messages) if (m.type === "events" || m.type === "welcome") expect((m.events as Array<{ trialId: string }>).every((e) => e.trialId === trialId)).toBe(true);
-    socket.close();
-  });
+  it.each(CASES.map((c) => [c.who, c.t.name, c.v.name, c] as const))(
+    "%s · %s · %s",
+    async (who, _message, _variant, { t, v }) => {
+      const trialId = await f.a.trial(f.a.people.wizard!, "live");
+      aTrials.push(trialId);
+      const usesRecording = [...t.idKeys, ...(t.command?.idKeys ?? [])].includes("recordingId");
+      const ids: Record<Side, Ids> = {
+        own: { trialId, studyId: f.a.studyId, recordingId: usesRecording ? await f.recording(trialId) : "" },
+        other: { trialId: bTrial, studyId: f.b.studyId, recordingId: bRecording },
+      };
+      const socket = await f.open(who, trialId);
+      if (who === "outsider") {
+        expect(socket.closed).toEqual({ code: 4403, reason: "You are no longer a member of this study." });
+        expect(socket.messages).toEqual([]);
+        return;
+      }
+      const message = build(t, v.sides, v.extras, ids);
+      const before = socket.messages.length;
+      socket.send(message);
+      const reply = await socket.next(
+        (m) => socket.messages.indexOf(m) >= before && ["ack", "rejected", "pong"].includes(String(m.type)),
+      );
+      if (typeof message.requestId === "string") expect(reply.requestId).toBe(message.requestId);
+      // (b), (c): an id of another study in any declared key is refused.
+      if (Object.values(v.sides).includes("other")) expect(reply).toMatchObject({ type: "rejected" });
+      // Roles: observers never command; a wizard commands another wizard's trial only to stop it.
+      const kind = t.command ? String(t.command.fields.kind) : null;
+      if (kind && (who === "observer" || (who === "otherWizard" && kind !== "emergency_stop")))
+        expect(reply).toMatchObject({ type: "rejected" });
+      if (t.name === "hello")
+        expect(reply).toMatchObject({ type: "rejected", reason: expect.stringMatching(/already said hello/) });
+      // No read: nothing this socket received, except the refusal of what it sent, names study B.
+      await socket.command("after", { kind: "note", text: "drain" }).catch(() => null);
+      const received = socket.messages.filter((m) => m.type !== "rejected").map((m) => JSON.stringify(m));
+      expect(secretsOfB.filter((s) => received.some((text) => text.includes(s)))).toEqual([]);
+      for (const m of socket.messages)
+        if (m.type === "events" || m.type === "welcome")
+          expect((m.events as Array<{ trialId: string }>).every((e) => e.trialId === trialId)).toBe(true);
+      socket.close();
+    },
+  );
 
   it("wrote nothing to the other study, and nothing of it into this study's logs", async () => {
     const bEvents = await f.db.select().from(trialEvents).where(eq(trialEvents.trialId, bTrial));
     expect(bEvents.map((e) => e.type)).toEqual(["trial.started", "step.entered"]);
     expect(await f.db.select().from(annotations).where(eq(annotations.trialId, bTrial))).toEqual([]);
-    expect((await f.db.select({ w: trials.wizardId }).from(trials).where(eq(trials.id, bTrial)))[0]!.w).toBe(f.b.people.wizard);
+    expect((await f.db.select({ w: trials.wizardId }).from(trials).where(eq(trials.id, bTrial)))[0]!.w).toBe(
+      f.b.people.wizard,
+    );
     const aLogs = JSON.stringify(await f.db.select().from(trialEvents).where(inArray(trialEvents.trialId, aTrials)));
     const aNotes = JSON.stringify(await f.db.select().from(annotations).where(inArray(annotations.trialId, aTrials)));
     expect(secretsOfB.filter((s) => aLogs.includes(s) || aNotes.includes(s))).toEqual([]);

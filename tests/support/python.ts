@@ -17,7 +17,16 @@ export function python(args: string[]) {
 export function ensurePython(module: string, requirement: string) {
   if (python(["-c", `import ${module}`]).status === 0) return;
   mkdirSync(target, { recursive: true });
-  const install = python(["-m", "pip", "install", "--quiet", "--disable-pip-version-check", "--target", target, requirement]);
+  const install = python([
+    "-m",
+    "pip",
+    "install",
+    "--quiet",
+    "--disable-pip-version-check",
+    "--target",
+    target,
+    requirement,
+  ]);
   if (install.status !== 0) throw new Error(`Could not install ${requirement} from PyPI: ${install.stderr}`);
 }
 
@@ -25,10 +34,19 @@ export function ensurePython(module: string, requirement: string) {
 export async function startS3Server(): Promise<{ url: string; stop(): void }> {
   ensurePython("moto.server", "moto[server]==5.1.22");
   const port = await freePort();
-  const child: ChildProcess = spawn("python3", ["-m", "moto.server", "-H", "127.0.0.1", "-p", String(port)], { env, stdio: "ignore" });
+  const child: ChildProcess = spawn("python3", ["-m", "moto.server", "-H", "127.0.0.1", "-p", String(port)], {
+    env,
+    stdio: "ignore",
+  });
   const url = `http://127.0.0.1:${port}`;
   for (let i = 0; i < 150; i++) {
-    if (await fetch(url).then(() => true, () => false)) return { url, stop: () => child.kill("SIGKILL") };
+    if (
+      await fetch(url).then(
+        () => true,
+        () => false,
+      )
+    )
+      return { url, stop: () => child.kill("SIGKILL") };
     await new Promise((r) => setTimeout(r, 100));
   }
   child.kill("SIGKILL");

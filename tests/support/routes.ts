@@ -34,7 +34,10 @@ export async function routeServer() {
       }),
     );
     if (!res.ok) throw new Error(`Signing in as ${caller} failed: ${res.status} ${await res.text()}`);
-    const cookie = res.headers.getSetCookie().map((c) => c.split(";")[0]).join("; ");
+    const cookie = res.headers
+      .getSetCookie()
+      .map((c) => c.split(";")[0])
+      .join("; ");
     return new Headers({ cookie, origin: ORIGIN });
   }
 

@@ -15,9 +15,12 @@ export async function runWholeTrial(wizard: ReturnType<typeof apiClient>, trialI
   let completed = false;
   for (let i = 0; i < 200 && !completed; i++) {
     const reply = await socket.command(`c${i}`, { kind: "next" });
-    if (String(reply.reason ?? "").startsWith("Record the participant's answer")) await socket.command(`a${i}`, { kind: "answer", actionId: question.id, optionId: options[0]!.id });
+    if (String(reply.reason ?? "").startsWith("Record the participant's answer"))
+      await socket.command(`a${i}`, { kind: "answer", actionId: question.id, optionId: options[0]!.id });
     else if (reply.type === "rejected") await new Promise((r) => setTimeout(r, 150));
-    completed = socket.messages.some((m) => ((m.events as Array<{ type: string }> | undefined) ?? []).some((e) => e.type === "trial.completed"));
+    completed = socket.messages.some((m) =>
+      ((m.events as Array<{ type: string }> | undefined) ?? []).some((e) => e.type === "trial.completed"),
+    );
   }
   socket.close();
   expect(completed, `the trial did not complete: ${JSON.stringify(socket.messages.slice(-6))}`).toBe(true);

@@ -6,7 +6,13 @@ import { BUN } from "./app";
 export async function startRuntime(databaseUrl: string, secret: string): Promise<{ url: string; child: ChildProcess }> {
   const port = await freePort();
   const child = spawn(BUN, ["run", "src/runtime/main.ts"], {
-    env: { ...process.env, DATABASE_URL: databaseUrl, BETTER_AUTH_SECRET: secret, HRI_RUNTIME_PORT: String(port), HOST: "127.0.0.1" },
+    env: {
+      ...process.env,
+      DATABASE_URL: databaseUrl,
+      BETTER_AUTH_SECRET: secret,
+      HRI_RUNTIME_PORT: String(port),
+      HOST: "127.0.0.1",
+    },
     stdio: ["ignore", "pipe", "pipe"],
   });
   await new Promise<void>((ok, fail) => {

@@ -24,10 +24,26 @@ const protocolOf = (tag: string) => ({
       description: "",
       actions: [
         { id: `${tag}-smile`, type: "wizard_instruction", name: "Smile", parameters: {}, parallelGroup: null },
-        { id: `${tag}-ask`, type: "record_answer", name: "Ask", parameters: { options: [{ id: `${tag}-yes`, label: "Yes" }, { id: `${tag}-no`, label: "No" }] }, parallelGroup: null },
+        {
+          id: `${tag}-ask`,
+          type: "record_answer",
+          name: "Ask",
+          parameters: {
+            options: [
+              { id: `${tag}-yes`, label: "Yes" },
+              { id: `${tag}-no`, label: "No" },
+            ],
+          },
+          parallelGroup: null,
+        },
       ],
     },
-    { id: `${tag}-step-2`, name: "Goodbye", description: "", actions: [{ id: `${tag}-wave`, type: "wizard_instruction", name: "Wave", parameters: {}, parallelGroup: null }] },
+    {
+      id: `${tag}-step-2`,
+      name: "Goodbye",
+      description: "",
+      actions: [{ id: `${tag}-wave`, type: "wizard_instruction", name: "Wave", parameters: {}, parallelGroup: null }],
+    },
   ],
 });
 
@@ -38,28 +54,62 @@ export async function socketFixture() {
   const url = await freshDatabaseUrl();
   const { db, close } = createDatabase(url, { max: 4 });
   const studyOf = async (tag: string, people: Record<string, "owner" | "researcher" | "wizard" | "observer">) => {
-    const [study] = await db.insert(studies).values({ title: `Study ${tag}`, status: "active" }).returning();
+    const [study] = await db
+      .insert(studies)
+      .values({ title: `Study ${tag}`, status: "active" })
+      .returning();
     const ids: Record<string, string> = {};
     for (const [who, role] of Object.entries(people)) {
-      ids[who] = (await createAccount(db, { name: `${tag} ${who}`, email: `${who}@${tag.toLowerCase()}.example.org`, password: "password-123", role: "researcher" })).id;
+      ids[who] = (
+        await createAccount(db, {
+          name: `${tag} ${who}`,
+          email: `${who}@${tag.toLowerCase()}.example.org`,
+          password: "password-123",
+          role: "researcher",
+        })
+      ).id;
       await db.insert(studyMembers).values({ studyId: study!.id, userId: ids[who]!, role });
     }
-    const [experiment] = await db.insert(experiments).values({ studyId: study!.id, name: `${tag} experiment`, robotPluginId: "no-robot" }).returning();
-    const [version] = await db.insert(experimentVersions).values({ experimentId: experiment!.id, version: 1, snapshot: protocolOf(tag), hash: tag, pluginId: "no-robot" }).returning();
+    const [experiment] = await db
+      .insert(experiments)
+      .values({ studyId: study!.id, name: `${tag} experiment`, robotPluginId: "no-robot" })
+      .returning();
+    const [version] = await db
+      .insert(experimentVersions)
+      .values({ experimentId: experiment!.id, version: 1, snapshot: protocolOf(tag), hash: tag, pluginId: "no-robot" })
+      .returning();
     /** A trial of this study, its events stored before the runtime first opens it. */
     const trial = async (wizardId: string | null, state: "scheduled" | "live" | "completed" = "scheduled") => {
-      const live: EngineEvent[] = [{ type: "trial.started" }, { type: "step.entered", stepId: `${tag}-step-1`, via: "start" }];
-      const events = state === "scheduled" ? [] : state === "live" ? live : [...live, { type: "trial.completed" } as const];
-      const [row] = await db.insert(trials).values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id, wizardId }).returning();
+      const live: EngineEvent[] = [
+        { type: "trial.started" },
+        { type: "step.entered", stepId: `${tag}-step-1`, via: "start" },
+      ];
+      const events =
+        state === "scheduled" ? [] : state === "live" ? live : [...live, { type: "trial.completed" } as const];
+      const [row] = await db
+        .insert(trials)
+        .values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id, wizardId })
+        .returning();
       await appendEvents(db, { id: row!.id, lastSeq: 0, t0: null }, events, wizardId);
       return row!.id;
     };
     return { studyId: study!.id, people: ids, trial };
   };
-  const a = await studyOf("A", { owner: "owner", researcher: "researcher", wizard: "wizard", otherWizard: "wizard", observer: "observer" });
+  const a = await studyOf("A", {
+    owner: "owner",
+    researcher: "researcher",
+    wizard: "wizard",
+    otherWizard: "wizard",
+    observer: "observer",
+  });
   const b = await studyOf("B", { owner: "owner", wizard: "wizard" });
   const recording = async (trialId: string) =>
-    (await db.insert(mediaRecordings).values({ trialId, kind: "video", storageKey: `recordings/${trialId}`, mimeType: "video/webm" }).returning())[0]!.id;
+    (
+      await db
+        .insert(mediaRecordings)
+        .values({ trialId, kind: "video", storageKey: `recordings/${trialId}`, mimeType: "video/webm" })
+        .returning()
+    )[0]!.id;
   const runtime = await startRuntime(url, SECRET);
   const children: ChildProcess[] = [runtime.child];
   const personId = (who: Person) => (who === "outsider" ? b.people.owner! : a.people[who]!);
@@ -72,7 +122,11 @@ export async function socketFixture() {
     token: (userId: string, trialId: string) => signSocketToken({ userId, trialId }, SECRET),
     /** Opens a socket to a trial as someone, with a fresh token. */
     open: (who: Person | { userId: string }, trialId: string, lastSeq = 0) =>
-      connectTrial(runtime.url, signSocketToken({ userId: typeof who === "string" ? personId(who) : who.userId, trialId }, SECRET), lastSeq),
+      connectTrial(
+        runtime.url,
+        signSocketToken({ userId: typeof who === "string" ? personId(who) : who.userId, trialId }, SECRET),
+        lastSeq,
+      ),
     url: runtime.url,
     async stop() {
       for (const c of children) c.kill("SIGKILL");

@@ -21,7 +21,8 @@ export async function connectTrial(url: string, token: string, lastSeq = 0): Pro
   ws.on("message", (data) => {
     const parsed = parseServerMessage(String(data));
     // Thrown here, it fails the test that received it as an unhandled error.
-    if (!parsed.ok) throw new Error(`The runtime sent a message the browser would refuse: ${parsed.reason}\n${String(data)}`);
+    if (!parsed.ok)
+      throw new Error(`The runtime sent a message the browser would refuse: ${parsed.reason}\n${String(data)}`);
     messages.push(parsed.message);
     for (const w of [...waiters]) w();
   });

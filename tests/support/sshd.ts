@@ -19,10 +19,14 @@ export interface TestSshd {
 }
 
 export async function startSshd(): Promise<TestSshd> {
-  if (!existsSync(SSHD)) throw new Error("openssh-server is needed for the SSH tests: apt-get install openssh-server (npm test installs it as root).");
+  if (!existsSync(SSHD))
+    throw new Error(
+      "openssh-server is needed for the SSH tests: apt-get install openssh-server (npm test installs it as root).",
+    );
   const dir = mkdtempSync(join(tmpdir(), "hri-sshd-"));
   chmodSync(dir, 0o755);
-  const key = (name: string, type: string) => spawnSync("ssh-keygen", ["-q", "-t", type, "-N", "", "-f", join(dir, name)]);
+  const key = (name: string, type: string) =>
+    spawnSync("ssh-keygen", ["-q", "-t", type, "-N", "", "-f", join(dir, name)]);
   key("host_key", "ed25519");
   key("client_key", "ed25519");
   writeFileSync(join(dir, "authorized_keys"), readFileSync(join(dir, "client_key.pub")));
@@ -59,7 +63,14 @@ export async function startSshd(): Promise<TestSshd> {
     port,
     username: userInfo().username,
     keyFile: join(dir, "client_key"),
-    calls: () => (existsSync(calls) ? readFileSync(calls, "utf8").trim().split("\n").filter(Boolean).map((l) => JSON.parse(l) as string[]) : []),
+    calls: () =>
+      existsSync(calls)
+        ? readFileSync(calls, "utf8")
+            .trim()
+            .split("\n")
+            .filter(Boolean)
+            .map((l) => JSON.parse(l) as string[])
+        : [],
     // The listener and every per-connection sshd below it: a robot gone from the network.
     stop: () => killTree(child.pid!),
     // The robot back on the network, at the same address.
@@ -80,7 +91,10 @@ async function listen(config: string): Promise<ChildProcess> {
 }
 
 function killTree(pid: number) {
-  const children = spawnSync("ps", ["-o", "pid=", "--ppid", String(pid)], { encoding: "utf8" }).stdout.split("\n").map(Number).filter(Boolean);
+  const children = spawnSync("ps", ["-o", "pid=", "--ppid", String(pid)], { encoding: "utf8" })
+    .stdout.split("\n")
+    .map(Number)
+    .filter(Boolean);
   children.forEach(killTree);
   try {
     process.kill(pid, "SIGKILL");

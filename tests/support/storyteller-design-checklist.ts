@@ -14,13 +14,21 @@ interface FileStep {
 }
 
 const GESTURES = ["wave", "nod", "head_shake", "look_down", "pause", "play_animation", "posture"];
-const isA = (a: FileAction | undefined, word: string) => !!a && (a.type === word || a.type.endsWith(`.${word}`) || a.type.includes(word));
+const isA = (a: FileAction | undefined, word: string) =>
+  !!a && (a.type === word || a.type.endsWith(`.${word}`) || a.type.includes(word));
 
 export function scoreDesign(fileText: string) {
   const file = JSON.parse(fileText) as { steps: FileStep[] };
   const steps = file.steps;
-  const stepWith = (text: string) => steps.findIndex((s) => s.actions.some((a) => a.type === "say" && a.parameters.text === text));
-  const [intro, story, question, correct, incorrect] = [TEXT.intro, TEXT.story, TEXT.question, TEXT.correct, TEXT.incorrect].map(stepWith) as [number, number, number, number, number];
+  const stepWith = (text: string) =>
+    steps.findIndex((s) => s.actions.some((a) => a.type === "say" && a.parameters.text === text));
+  const [intro, story, question, correct, incorrect] = [
+    TEXT.intro,
+    TEXT.story,
+    TEXT.question,
+    TEXT.correct,
+    TEXT.incorrect,
+  ].map(stepWith) as [number, number, number, number, number];
   const inStep = (i: number, pick: (a: FileAction) => boolean) => steps[i]?.actions.filter(pick) ?? [];
 
   // The question's step records the answer and branches on it at once; each answer goes to its response.
@@ -45,10 +53,25 @@ export function scoreDesign(fileText: string) {
     ["both branch responses with the exact text", 10, correct >= 0 && incorrect >= 0],
     // A step is found by its speech; with the speech wrong, by its place, so one mistake costs one item.
     ["wave as a distinct action in step 1", 10, intro <= 0 && inStep(0, (a) => isA(a, "wave")).length > 0],
-    ["a narrative gesture as a distinct action in step 2", 10, (story === 1 || story < 0) && inStep(1, (a) => GESTURES.some((g) => isA(a, g))).length > 0],
-    ["nod in branch A, head shake in branch B", 10, inStep(correct, (a) => isA(a, "nod")).length > 0 && inStep(incorrect, (a) => isA(a, "head_shake")).length > 0],
+    [
+      "a narrative gesture as a distinct action in step 2",
+      10,
+      (story === 1 || story < 0) && inStep(1, (a) => GESTURES.some((g) => isA(a, g))).length > 0,
+    ],
+    [
+      "nod in branch A, head shake in branch B",
+      10,
+      inStep(correct, (a) => isA(a, "nod")).length > 0 && inStep(incorrect, (a) => isA(a, "head_shake")).length > 0,
+    ],
     ["a branch that resolves from the recorded answer", 15, branchResolves],
-    ["all four steps in the right order", 15, intro <= 0 && story === 1 && question === 2 && Math.min(correct, incorrect) === 3],
+    [
+      "all four steps in the right order",
+      15,
+      intro <= 0 && story === 1 && question === 2 && Math.min(correct, incorrect) === 3,
+    ],
   ];
-  return { score: items.reduce((n, [, points, ok]) => n + (ok ? points : 0), 0), failed: items.filter(([, , ok]) => !ok).map(([name]) => name) };
+  return {
+    score: items.reduce((n, [, points, ok]) => n + (ok ? points : 0), 0),
+    failed: items.filter(([, , ok]) => !ok).map(([name]) => name),
+  };
 }

@@ -9,7 +9,11 @@ describe("namedIn", () => {
     ["a top-level id", { trialId: "t1" }, [{ path: "trialId", key: "trialId", value: "t1" }]],
     ["a nested id", { a: [{ trialId: "t2" }] }, [{ path: "a.0.trialId", key: "trialId", value: "t2" }]],
     ["an id array", { stepIds: ["s1"] }, [{ path: "stepIds", key: "stepIds", value: ["s1"] }]],
-    ["a non-string value, kept for the caller to refuse", { trialId: 5 }, [{ path: "trialId", key: "trialId", value: 5 }]],
+    [
+      "a non-string value, kept for the caller to refuse",
+      { trialId: 5 },
+      [{ path: "trialId", key: "trialId", value: 5 }],
+    ],
     ["not an object", "trialId", []],
   ])("%s", (_name, input, expected) => {
     expect(namedIn(input, KEYS)).toEqual(expected);

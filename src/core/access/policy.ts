@@ -70,7 +70,11 @@ export function decide(subject: Subject, op: Operation): Decision {
   }
   // Experiments, versions and conditions name the condition; a blinded wizard runs sessions without them.
   if (op === "experiment.read" && subject.blinding?.conditionsHidden) {
-    return { allow: false, hidden: false, reason: "This study hides its conditions from wizards (blinding): run your sessions from “My sessions”." };
+    return {
+      allow: false,
+      hidden: false,
+      reason: "This study hides its conditions from wizards (blinding): run your sessions from “My sessions”.",
+    };
   }
   if (op === "data.read" && subject.blinding?.resultsHidden) {
     return { allow: false, hidden: false, reason: "This study hides results until it is marked completed (blinding)." };

@@ -9,9 +9,19 @@ describe("per-account sign-in limit", () => {
   it.each<[string, number, number, string | null]>([
     ["lets the first attempt through", 1, 0, null],
     ["lets the attempt that reaches the limit through", 3, 5, null],
-    ["refuses the attempt past the limit, naming the minutes left", 4, 5, "Too many failed sign-ins for this account; try again in 10 minutes."],
+    [
+      "refuses the attempt past the limit, naming the minutes left",
+      4,
+      5,
+      "Too many failed sign-ins for this account; try again in 10 minutes.",
+    ],
     ["rounds the minutes left up", 4, 13.5, "Too many failed sign-ins for this account; try again in 2 minutes."],
-    ["says one minute in the last minute", 9, 14.9, "Too many failed sign-ins for this account; try again in 1 minute."],
+    [
+      "says one minute in the last minute",
+      9,
+      14.9,
+      "Too many failed sign-ins for this account; try again in 1 minute.",
+    ],
   ])("%s", (_name, failures, minutesIn, expected) => {
     expect(accountRefusal({ failures, windowStartedAt: start }, at(minutesIn), limit)).toBe(expected);
   });

@@ -3,30 +3,68 @@ import { NOT_BLINDED } from "../studies/blinding";
 import { annotateVerdict, commandVerdict, mayReadTrialLog, touches, type TrialAccess } from "./trial-socket";
 
 const me = "u-me";
-const access = (over: Partial<TrialAccess> & { wizardId?: string | null; status?: TrialAccess["trial"]["status"] } = {}): TrialAccess => {
+const access = (
+  over: Partial<TrialAccess> & { wizardId?: string | null; status?: TrialAccess["trial"]["status"] } = {},
+): TrialAccess => {
   const { wizardId = me, status = "in_progress", ...rest } = over;
-  return { userId: me, name: "Me", systemRole: "researcher", active: true, studyId: "s1", studyRole: "wizard", blinding: NOT_BLINDED, trial: { wizardId, status }, ...rest };
+  return {
+    userId: me,
+    name: "Me",
+    systemRole: "researcher",
+    active: true,
+    studyId: "s1",
+    studyRole: "wizard",
+    blinding: NOT_BLINDED,
+    trial: { wizardId, status },
+    ...rest,
+  };
 };
 
 describe("who may command a trial over its socket", () => {
   it.each<[string, TrialAccess, string, "allow" | "claim" | RegExp]>([
     ["the assigned wizard", access(), "next", "allow"],
     ["a wizard on another wizard's trial", access({ wizardId: "u-other" }), "next", /assigned to another wizard/],
-    ["a wizard starting another wizard's trial", access({ wizardId: "u-other", status: "scheduled" }), "start", /assigned to another wizard/],
-    ["a wizard stopping another wizard's robot (safety first)", access({ wizardId: "u-other" }), "emergency_stop", "allow"],
-    ["a wizard starting an unassigned trial claims it", access({ wizardId: null, status: "scheduled" }), "start", "claim"],
+    [
+      "a wizard starting another wizard's trial",
+      access({ wizardId: "u-other", status: "scheduled" }),
+      "start",
+      /assigned to another wizard/,
+    ],
+    [
+      "a wizard stopping another wizard's robot (safety first)",
+      access({ wizardId: "u-other" }),
+      "emergency_stop",
+      "allow",
+    ],
+    [
+      "a wizard starting an unassigned trial claims it",
+      access({ wizardId: null, status: "scheduled" }),
+      "start",
+      "claim",
+    ],
     ["a wizard on an unassigned running trial", access({ wizardId: null }), "next", "allow"],
     ["an owner on a wizard's trial", access({ studyRole: "owner", wizardId: "u-other" }), "jump", "allow"],
     ["a researcher on a wizard's trial", access({ studyRole: "researcher", wizardId: "u-other" }), "abort", "allow"],
-    ["a researcher starting an unassigned trial does not claim it", access({ studyRole: "researcher", wizardId: null, status: "scheduled" }), "start", "allow"],
-    ["an observer", access({ studyRole: "observer" }), "next", /^As observer you may watch this trial but not run it\.$/],
+    [
+      "a researcher starting an unassigned trial does not claim it",
+      access({ studyRole: "researcher", wizardId: null, status: "scheduled" }),
+      "start",
+      "allow",
+    ],
+    [
+      "an observer",
+      access({ studyRole: "observer" }),
+      "next",
+      /^As observer you may watch this trial but not run it\.$/,
+    ],
     ["an observer's emergency stop", access({ studyRole: "observer" }), "emergency_stop", /As observer/],
     ["a removed member", access({ studyRole: null }), "next", /no longer a member/],
     ["a removed member's emergency stop", access({ studyRole: null }), "emergency_stop", /no longer a member/],
     ["a disabled account", access({ active: false, studyRole: "owner" }), "next", /no longer active/],
   ])("%s", (_name, who, kind, expected) => {
     const verdict = commandVerdict(who, kind);
-    if (expected === "allow" || expected === "claim") expect(verdict).toEqual({ allow: true, claim: expected === "claim" });
+    if (expected === "allow" || expected === "claim")
+      expect(verdict).toEqual({ allow: true, claim: expected === "claim" });
     else expect(verdict.allow ? "allowed" : verdict.reason).toMatch(expected);
   });
 
@@ -43,10 +81,22 @@ describe("who receives a trial's event log", () => {
   const blind = { conditionsHidden: false, resultsHidden: true };
   it.each<[string, TrialAccess, boolean]>([
     ["a researcher, finished trial", access({ studyRole: "researcher", status: "completed" }), true],
-    ["a results-blinded researcher, finished trial", access({ studyRole: "researcher", blinding: blind, status: "completed" }), false],
-    ["a results-blinded researcher, aborted trial", access({ studyRole: "researcher", blinding: blind, status: "aborted" }), false],
+    [
+      "a results-blinded researcher, finished trial",
+      access({ studyRole: "researcher", blinding: blind, status: "completed" }),
+      false,
+    ],
+    [
+      "a results-blinded researcher, aborted trial",
+      access({ studyRole: "researcher", blinding: blind, status: "aborted" }),
+      false,
+    ],
     ["a results-blinded researcher, live trial", access({ studyRole: "researcher", blinding: blind }), true],
-    ["a results-blinded observer, paused trial", access({ studyRole: "observer", blinding: blind, status: "paused" }), true],
+    [
+      "a results-blinded observer, paused trial",
+      access({ studyRole: "observer", blinding: blind, status: "paused" }),
+      true,
+    ],
     ["a wizard (no data.read), finished trial", access({ status: "completed" }), false],
     ["a wizard, scheduled trial", access({ status: "scheduled" }), true],
     ["an owner, finished trial", access({ studyRole: "owner", status: "completed" }), true],

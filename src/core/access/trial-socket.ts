@@ -50,7 +50,9 @@ export function commandVerdict(access: TrialAccess, kind: string): SocketVerdict
 export function annotateVerdict(access: TrialAccess): SocketVerdict {
   const lost = lostAccess(access);
   if (lost) return refuse(lost);
-  return studyRoleMay(access.studyRole!, "annotation.create") ? { allow: true, claim: false } : refuse(`As ${access.studyRole} you may not mark moments in this trial.`);
+  return studyRoleMay(access.studyRole!, "annotation.create")
+    ? { allow: true, claim: false }
+    : refuse(`As ${access.studyRole} you may not mark moments in this trial.`);
 }
 
 /**
@@ -60,7 +62,10 @@ export function annotateVerdict(access: TrialAccess): SocketVerdict {
  */
 export function mayReadTrialLog(access: TrialAccess): boolean {
   if (lostAccess(access)) return false;
-  if (decide({ systemRole: access.systemRole, studyRole: access.studyRole, blinding: access.blinding }, "data.read").allow) return true;
+  if (
+    decide({ systemRole: access.systemRole, studyRole: access.studyRole, blinding: access.blinding }, "data.read").allow
+  )
+    return true;
   return access.trial.status !== "completed" && access.trial.status !== "aborted";
 }
 

@@ -19,25 +19,47 @@ type Span = { start: number; end: number; value: string };
 
 const MOMENT_MS = 1000;
 
-const escapeXml = (text: string) => text.replace(/[<>&'"]/g, (c) => ({ "<": "&lt;", ">": "&gt;", "&": "&amp;", "'": "&apos;", '"': "&quot;" })[c]!);
+const escapeXml = (text: string) =>
+  text.replace(/[<>&'"]/g, (c) => ({ "<": "&lt;", ">": "&gt;", "&": "&amp;", "'": "&apos;", '"': "&quot;" })[c]!);
 
 /** ELAN wants every annotation to last: an instant becomes a millisecond. */
-const span = (start: number, end: number | null, value: string): Span => ({ start, end: Math.max(start + 1, end ?? start + 1), value });
+const span = (start: number, end: number | null, value: string): Span => ({
+  start,
+  end: Math.max(start + 1, end ?? start + 1),
+  value,
+});
 
 function tiers(input: ElanInput): Record<string, Span[]> {
   const report = fidelityReport(input.protocol, input.events);
   const lastMs = Math.max(0, ...input.events.map((e) => e.relMs ?? 0));
-  const steps = report.steps.filter((s) => s.enteredMs !== null).map((s) => span(s.enteredMs!, s.leftMs ?? lastMs, s.name));
+  const steps = report.steps
+    .filter((s) => s.enteredMs !== null)
+    .map((s) => span(s.enteredMs!, s.leftMs ?? lastMs, s.name));
   const actions = report.actions
     .filter((a) => a.requestedMs !== null)
     .map((a) => {
       const text = input.protocol.steps.flatMap((s) => s.actions).find((x) => x.id === a.actionId)?.parameters.text;
-      return span(a.requestedMs!, a.requestedMs! + (a.durationMs ?? 0), typeof text === "string" ? `${a.name}: ${text}` : a.name);
+      return span(
+        a.requestedMs!,
+        a.requestedMs! + (a.durationMs ?? 0),
+        typeof text === "string" ? `${a.name}: ${text}` : a.name,
+      );
     });
-  const unscripted = report.unscripted.filter((u) => u.requestedMs !== null).map((u) => span(u.requestedMs!, null, `unscripted ${u.type}`));
-  const deviations = input.events.filter((e) => e.deviation && e.relMs !== null).map((e) => span(e.relMs!, null, `${e.deviation!.replace("_", " ")}: ${e.type}`));
-  const moments = input.annotations.map((m) => span(m.relMs, m.relMs + MOMENT_MS, m.note ? `${m.label}: ${m.note}` : m.label));
-  return { Step: steps, Action: [...actions, ...unscripted].sort((a, b) => a.start - b.start), Deviation: deviations, "Marked moment": moments };
+  const unscripted = report.unscripted
+    .filter((u) => u.requestedMs !== null)
+    .map((u) => span(u.requestedMs!, null, `unscripted ${u.type}`));
+  const deviations = input.events
+    .filter((e) => e.deviation && e.relMs !== null)
+    .map((e) => span(e.relMs!, null, `${e.deviation!.replace("_", " ")}: ${e.type}`));
+  const moments = input.annotations.map((m) =>
+    span(m.relMs, m.relMs + MOMENT_MS, m.note ? `${m.label}: ${m.note}` : m.label),
+  );
+  return {
+    Step: steps,
+    Action: [...actions, ...unscripted].sort((a, b) => a.start - b.start),
+    Deviation: deviations,
+    "Marked moment": moments,
+  };
 }
 
 export function elanDocument(input: ElanInput): string {

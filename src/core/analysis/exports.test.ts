@@ -4,7 +4,14 @@ import type { StoredEvent } from "@/core/trial";
 import { eventsCsv } from "./exports";
 
 const events: StoredEvent[] = [
-  { seq: 1, type: "trial.started", relMs: 0, trialId: "t1", serverTime: new Date("2026-01-01T10:00:00.000Z"), actorId: "u1" },
+  {
+    seq: 1,
+    type: "trial.started",
+    relMs: 0,
+    trialId: "t1",
+    serverTime: new Date("2026-01-01T10:00:00.000Z"),
+    actorId: "u1",
+  },
   {
     seq: 2,
     type: "action.requested",
@@ -24,8 +31,31 @@ const events: StoredEvent[] = [
 describe("the events CSV", () => {
   it("parses back to the same events, quotes, commas, newlines and all", () => {
     const [header, ...rows] = parseCsv(eventsCsv("t1", events));
-    expect(header).toEqual(["trial_id", "seq", "type", "step_id", "action_id", "action_type", "deviation", "rel_ms", "server_time", "actor_id", "payload"]);
+    expect(header).toEqual([
+      "trial_id",
+      "seq",
+      "type",
+      "step_id",
+      "action_id",
+      "action_type",
+      "deviation",
+      "rel_ms",
+      "server_time",
+      "actor_id",
+      "payload",
+    ]);
     expect(rows.map((r) => JSON.parse(r[10]!))).toEqual(JSON.parse(JSON.stringify(events)));
-    expect(rows[1]!.slice(0, 10)).toEqual(["t1", "2", "action.requested", "s1", "a1", "say", "unscripted", "12.5", "2026-01-01T10:00:00.012Z", "u1"]);
+    expect(rows[1]!.slice(0, 10)).toEqual([
+      "t1",
+      "2",
+      "action.requested",
+      "s1",
+      "a1",
+      "say",
+      "unscripted",
+      "12.5",
+      "2026-01-01T10:00:00.012Z",
+      "u1",
+    ]);
   });
 });

@@ -6,7 +6,19 @@ import type { StoredEvent } from "@/core/trial";
 
 export const TRIAL_RECORD_SCHEMA_VERSION = 1;
 
-export const EVENT_COLUMNS = ["trial_id", "seq", "type", "step_id", "action_id", "action_type", "deviation", "rel_ms", "server_time", "actor_id", "payload"] as const;
+export const EVENT_COLUMNS = [
+  "trial_id",
+  "seq",
+  "type",
+  "step_id",
+  "action_id",
+  "action_type",
+  "deviation",
+  "rel_ms",
+  "server_time",
+  "actor_id",
+  "payload",
+] as const;
 
 export function eventsCsv(trialId: string, events: StoredEvent[]): string {
   const rows = events.map((e) => {

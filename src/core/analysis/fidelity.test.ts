@@ -8,20 +8,79 @@ const report = (commands: Command[]) => fidelityReport(protocol, simulate(protoc
 describe("the fidelity report", () => {
   it.each<[string, Command[], Partial<ReturnType<typeof report>["totals"]>, number, Record<string, number>]>([
     // The branch not taken (head shake, its end) is not reached, and does not count against fidelity.
-    ["a perfect run", perfect, { planned: 9, executed: 7, notReached: 2, skipped: 0, failed: 0, unscripted: 0 }, 100, {}],
-    ["a skipped gesture", [{ kind: "start" }, { kind: "skip", actionId: "wave" }, { kind: "next" }, ...done("hello")], { executed: 1, skipped: 1 }, 50, { skipped: 1 }],
-    ["a failed action", [{ kind: "start" }, { kind: "next" }, { kind: "failed", actionId: "hello", reason: "robot unreachable" }, ...done("wave")], { executed: 1, failed: 1 }, 50, {}],
-    ["a timeout", [{ kind: "start" }, { kind: "next" }, { kind: "timed_out", actionId: "hello" }, ...done("wave")], { executed: 1, timedOut: 1 }, 50, {}],
-    ["parallel actions triggered one by one stay in order", [{ kind: "start" }, { kind: "trigger", actionId: "wave" }, ...done("wave"), { kind: "trigger", actionId: "hello" }, ...done("hello")], { executed: 2, outOfOrder: 0 }, 100, {}],
+    [
+      "a perfect run",
+      perfect,
+      { planned: 9, executed: 7, notReached: 2, skipped: 0, failed: 0, unscripted: 0 },
+      100,
+      {},
+    ],
+    [
+      "a skipped gesture",
+      [{ kind: "start" }, { kind: "skip", actionId: "wave" }, { kind: "next" }, ...done("hello")],
+      { executed: 1, skipped: 1 },
+      50,
+      { skipped: 1 },
+    ],
+    [
+      "a failed action",
+      [
+        { kind: "start" },
+        { kind: "next" },
+        { kind: "failed", actionId: "hello", reason: "robot unreachable" },
+        ...done("wave"),
+      ],
+      { executed: 1, failed: 1 },
+      50,
+      {},
+    ],
+    [
+      "a timeout",
+      [{ kind: "start" }, { kind: "next" }, { kind: "timed_out", actionId: "hello" }, ...done("wave")],
+      { executed: 1, timedOut: 1 },
+      50,
+      {},
+    ],
+    [
+      "parallel actions triggered one by one stay in order",
+      [
+        { kind: "start" },
+        { kind: "trigger", actionId: "wave" },
+        ...done("wave"),
+        { kind: "trigger", actionId: "hello" },
+        ...done("hello"),
+      ],
+      { executed: 2, outOfOrder: 0 },
+      100,
+      {},
+    ],
     [
       "an answer recorded before the question was asked",
-      [{ kind: "start" }, { kind: "next" }, ...done("hello", "wave"), { kind: "next" }, { kind: "answer", actionId: "answer", optionId: "yes" }],
+      [
+        { kind: "start" },
+        { kind: "next" },
+        ...done("hello", "wave"),
+        { kind: "next" },
+        { kind: "answer", actionId: "answer", optionId: "yes" },
+      ],
       { executed: 4, outOfOrder: 1 },
       42.9,
       { out_of_order: 1 },
     ],
-    ["unscripted speech", [{ kind: "start" }, { kind: "unscripted", actionId: "u1", actionType: "say", parameters: { text: "Bless you" } }], { unscripted: 1, executed: 0 }, 0, { unscripted: 1 }],
-    ["aborted mid-way", [{ kind: "start" }, { kind: "next" }, ...done("hello", "wave"), { kind: "abort", reason: "left" }], { executed: 2, notReached: 7 }, 100, {}],
+    [
+      "unscripted speech",
+      [{ kind: "start" }, { kind: "unscripted", actionId: "u1", actionType: "say", parameters: { text: "Bless you" } }],
+      { unscripted: 1, executed: 0 },
+      0,
+      { unscripted: 1 },
+    ],
+    [
+      "aborted mid-way",
+      [{ kind: "start" }, { kind: "next" }, ...done("hello", "wave"), { kind: "abort", reason: "left" }],
+      { executed: 2, notReached: 7 },
+      100,
+      {},
+    ],
   ])("%s", (_name, commands, totals, fidelity, deviations) => {
     const r = report(commands);
     expect(r.totals).toMatchObject(totals);
@@ -38,9 +97,19 @@ describe("the fidelity report", () => {
 
   it("times steps and actions from the log", () => {
     const r = report(perfect);
-    expect(r.steps.map((s) => [s.stepId, s.reached])).toEqual([["intro", true], ["ask", true], ["right", true], ["wrong", false]]);
+    expect(r.steps.map((s) => [s.stepId, s.reached])).toEqual([
+      ["intro", true],
+      ["ask", true],
+      ["right", true],
+      ["wrong", false],
+    ]);
     expect(r.steps[0]).toMatchObject({ enteredMs: 10, leftMs: 80, durationMs: 70 });
-    expect(r.actions.find((a) => a.actionId === "hello")).toMatchObject({ outcome: "executed", requestedMs: 20, dispatchLatencyMs: 20, durationMs: 30 });
+    expect(r.actions.find((a) => a.actionId === "hello")).toMatchObject({
+      outcome: "executed",
+      requestedMs: 20,
+      dispatchLatencyMs: 20,
+      durationMs: 30,
+    });
     expect(r.completed).toBe(true);
   });
 });

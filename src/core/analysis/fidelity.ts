@@ -32,10 +32,24 @@ export interface StepTiming {
 export interface FidelityReport {
   actions: PlannedAction[];
   steps: StepTiming[];
-  unscripted: Array<{ actionId: string; type: string; requestedMs: number | null; parameters: Record<string, unknown> }>;
+  unscripted: Array<{
+    actionId: string;
+    type: string;
+    requestedMs: number | null;
+    parameters: Record<string, unknown>;
+  }>;
   branches: { byLogic: number; byHand: number };
   deviations: Record<string, number>;
-  totals: { planned: number; executed: number; skipped: number; failed: number; timedOut: number; notReached: number; outOfOrder: number; unscripted: number };
+  totals: {
+    planned: number;
+    executed: number;
+    skipped: number;
+    failed: number;
+    timedOut: number;
+    notReached: number;
+    outOfOrder: number;
+    unscripted: number;
+  };
   /**
    * Execution fidelity, in %: scripted actions of the steps the trial reached
    * that were executed as designed (in order, not skipped, not failed), over
@@ -45,26 +59,46 @@ export interface FidelityReport {
   completed: boolean;
 }
 
-type E = TrialEvent & { actionId?: string; stepId?: string | null; actionType?: string; scripted?: boolean; parameters?: Record<string, unknown> };
+type E = TrialEvent & {
+  actionId?: string;
+  stepId?: string | null;
+  actionType?: string;
+  scripted?: boolean;
+  parameters?: Record<string, unknown>;
+};
 
 export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[]): FidelityReport {
   const log = events as E[];
   const first = (type: string, actionId: string) => log.find((e) => e.type === type && e.actionId === actionId);
   const entries = log.filter((e) => e.type === "step.entered");
-  const end = log.find((e) => e.type === "trial.completed" || e.type === "trial.aborted")?.relMs ?? log.at(-1)?.relMs ?? null;
+  const end =
+    log.find((e) => e.type === "trial.completed" || e.type === "trial.aborted")?.relMs ?? log.at(-1)?.relMs ?? null;
 
   const steps: StepTiming[] = protocol.steps.map((step) => {
     const entered = entries.find((e) => e.stepId === step.id);
     const next = entered ? entries.find((e) => e.seq > entered.seq) : undefined;
     const leftMs = entered ? (next?.relMs ?? end) : null;
     const enteredMs = entered?.relMs ?? null;
-    return { stepId: step.id, name: step.name, reached: !!entered, enteredMs, leftMs, durationMs: enteredMs !== null && leftMs !== null ? leftMs - enteredMs : null };
+    return {
+      stepId: step.id,
+      name: step.name,
+      reached: !!entered,
+      enteredMs,
+      leftMs,
+      durationMs: enteredMs !== null && leftMs !== null ? leftMs - enteredMs : null,
+    };
   });
 
   const actions: PlannedAction[] = protocol.steps.flatMap((step) =>
     step.actions.map((a) => {
-      const requested = first("action.requested", a.id) ?? first("answer.recorded", a.id) ?? first("branch.resolved", a.id);
-      const finished = first("action.completed", a.id) ?? first("action.failed", a.id) ?? first("action.timed_out", a.id) ?? first("answer.recorded", a.id) ?? first("branch.resolved", a.id);
+      const requested =
+        first("action.requested", a.id) ?? first("answer.recorded", a.id) ?? first("branch.resolved", a.id);
+      const finished =
+        first("action.completed", a.id) ??
+        first("action.failed", a.id) ??
+        first("action.timed_out", a.id) ??
+        first("answer.recorded", a.id) ??
+        first("branch.resolved", a.id);
       const dispatched = first("action.dispatched", a.id);
       const outcome: ActionOutcome = first("action.skipped", a.id)
         ? "skipped"
@@ -86,13 +120,21 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[]): F
         outcome,
         outOfOrder: log.some((e) => e.actionId === a.id && e.deviation === "out_of_order"),
         requestedMs: at(requested),
-        durationMs: requested && finished && at(finished) !== null && at(requested) !== null ? at(finished)! - at(requested)! : null,
-        dispatchLatencyMs: requested && dispatched && !(CONTROL_TYPES as readonly string[]).includes(a.type) ? at(dispatched)! - at(requested)! : null,
+        durationMs:
+          requested && finished && at(finished) !== null && at(requested) !== null
+            ? at(finished)! - at(requested)!
+            : null,
+        dispatchLatencyMs:
+          requested && dispatched && !(CONTROL_TYPES as readonly string[]).includes(a.type)
+            ? at(dispatched)! - at(requested)!
+            : null,
       };
     }),
   );
 
-  const unscripted = log.filter((e) => e.type === "action.requested" && e.scripted === false).map((e) => ({ actionId: e.actionId!, type: e.actionType!, requestedMs: e.relMs, parameters: e.parameters ?? {} }));
+  const unscripted = log
+    .filter((e) => e.type === "action.requested" && e.scripted === false)
+    .map((e) => ({ actionId: e.actionId!, type: e.actionType!, requestedMs: e.relMs, parameters: e.parameters ?? {} }));
   const deviations: Record<string, number> = {};
   for (const e of log) if (e.deviation) deviations[e.deviation] = (deviations[e.deviation] ?? 0) + 1;
   const count = (o: ActionOutcome) => actions.filter((a) => a.outcome === o).length;
@@ -103,7 +145,10 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[]): F
     actions,
     steps,
     unscripted,
-    branches: { byLogic: log.filter((e) => e.type === "branch.resolved").length, byHand: log.filter((e) => e.type === "step.entered" && e.deviation === "manual_jump").length },
+    branches: {
+      byLogic: log.filter((e) => e.type === "branch.resolved").length,
+      byHand: log.filter((e) => e.type === "step.entered" && e.deviation === "manual_jump").length,
+    },
     deviations,
     totals: {
       planned: actions.length,

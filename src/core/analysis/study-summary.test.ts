@@ -19,7 +19,9 @@ describe("the study-level summary", () => {
   ]);
 
   it("lists each trial's figures", () => {
-    expect(summary.trials.map((t) => [t.participantCode, t.condition, t.completed, t.executionFidelity, t.deviations])).toEqual([
+    expect(
+      summary.trials.map((t) => [t.participantCode, t.condition, t.completed, t.executionFidelity, t.deviations]),
+    ).toEqual([
       ["P1", "gestures", true, 100, 0],
       ["P2", "gestures", true, 100, 0],
       ["P3", "voice", false, 50, 1],
@@ -43,10 +45,22 @@ describe("the study-level summary", () => {
   });
 
   it("sums up how consistently the protocol was run", () => {
-    expect(summary.consistency).toMatchObject({ trials: 3, completed: 2, withoutDeviation: 2, deviationsByKind: { skipped: 1 } });
+    expect(summary.consistency).toMatchObject({
+      trials: 3,
+      completed: 2,
+      withoutDeviation: 2,
+      deviationsByKind: { skipped: 1 },
+    });
     expect(summary.consistency.meanFidelity).toBeCloseTo(83.33, 2);
     expect(summary.consistency.sdFidelity).toBeCloseTo(28.87, 2);
-    expect(studySummary([]).consistency).toEqual({ trials: 0, completed: 0, meanFidelity: null, sdFidelity: null, withoutDeviation: 0, deviationsByKind: {} });
+    expect(studySummary([]).consistency).toEqual({
+      trials: 0,
+      completed: 0,
+      meanFidelity: null,
+      sdFidelity: null,
+      withoutDeviation: 0,
+      deviationsByKind: {},
+    });
   });
 
   it.each<[number[], ReturnType<typeof spread>]>([

@@ -76,7 +76,8 @@ export function studySummary(trials: TrialFigures[]): StudySummary {
     };
   });
   const stepNames: string[] = [];
-  for (const { report } of trials) for (const s of report.steps) if (!stepNames.includes(s.name)) stepNames.push(s.name);
+  for (const { report } of trials)
+    for (const s of report.steps) if (!stepNames.includes(s.name)) stepNames.push(s.name);
   const steps = stepNames.map((name) => {
     const timings = trials.flatMap(({ report }) => report.steps.filter((s) => s.name === name));
     return {
@@ -88,7 +89,9 @@ export function studySummary(trials: TrialFigures[]): StudySummary {
   const fidelity = rows.map((r) => r.executionFidelity);
   const mean = fidelity.length ? sum(fidelity) / fidelity.length : null;
   const deviationsByKind: Record<string, number> = {};
-  for (const { report } of trials) for (const [kind, n] of Object.entries(report.deviations)) deviationsByKind[kind] = (deviationsByKind[kind] ?? 0) + n;
+  for (const { report } of trials)
+    for (const [kind, n] of Object.entries(report.deviations))
+      deviationsByKind[kind] = (deviationsByKind[kind] ?? 0) + n;
   return {
     trials: rows,
     steps,
@@ -96,7 +99,10 @@ export function studySummary(trials: TrialFigures[]): StudySummary {
       trials: rows.length,
       completed: rows.filter((r) => r.completed).length,
       meanFidelity: mean,
-      sdFidelity: mean === null || fidelity.length < 2 ? null : Math.sqrt(sum(fidelity.map((f) => (f - mean) ** 2)) / (fidelity.length - 1)),
+      sdFidelity:
+        mean === null || fidelity.length < 2
+          ? null
+          : Math.sqrt(sum(fidelity.map((f) => (f - mean) ** 2)) / (fidelity.length - 1)),
       withoutDeviation: rows.filter((r) => r.deviations === 0).length,
       deviationsByKind,
     },

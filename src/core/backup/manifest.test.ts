@@ -28,18 +28,35 @@ describe("the backup manifest", () => {
     ["not JSON", "{", "is not JSON"],
     ["another file", JSON.stringify({ hello: 1 }), "not an HRIStudio backup"],
     ["a newer format", JSON.stringify({ ...manifest, version: 2 }), "written by a newer HRIStudio (backup format 2"],
-    ["a damaged table list", JSON.stringify({ ...manifest, tables: [{ name: "x", rows: -1 }] }), "manifest.json is damaged: tables.0.columns"],
-    ["a sequence that is not a number", JSON.stringify({ ...manifest, sequences: [{ name: "s", value: "1e3", called: true }] }), "sequences.0.value"],
+    [
+      "a damaged table list",
+      JSON.stringify({ ...manifest, tables: [{ name: "x", rows: -1 }] }),
+      "manifest.json is damaged: tables.0.columns",
+    ],
+    [
+      "a sequence that is not a number",
+      JSON.stringify({ ...manifest, sequences: [{ name: "s", value: "1e3", called: true }] }),
+      "sequences.0.value",
+    ],
   ])("refuses %s plainly", (_, text, message) => {
     expect(() => parseManifest(text)).toThrow(message);
   });
 
   it("counts what a researcher checks", () => {
-    expect(countsOf(manifest)).toEqual({ studies: 2, trials: 3, events: 40, recordings: 1, mediaFiles: 2, mediaBytes: 1536 });
-    expect(describeCounts(countsOf(manifest))).toBe("2 studies, 3 trials, 40 events, 1 recording (2 media files, 1.5 KB)");
-    expect(describeCounts(countsOf({ ...manifest, tables: [{ name: "studies", columns: ["id"], rows: 1 }], media: [] }))).toBe(
-      "1 study, 0 trials, 0 events, 0 recordings (0 media files, 0 bytes)",
+    expect(countsOf(manifest)).toEqual({
+      studies: 2,
+      trials: 3,
+      events: 40,
+      recordings: 1,
+      mediaFiles: 2,
+      mediaBytes: 1536,
+    });
+    expect(describeCounts(countsOf(manifest))).toBe(
+      "2 studies, 3 trials, 40 events, 1 recording (2 media files, 1.5 KB)",
     );
+    expect(
+      describeCounts(countsOf({ ...manifest, tables: [{ name: "studies", columns: ["id"], rows: 1 }], media: [] })),
+    ).toBe("1 study, 0 trials, 0 events, 0 recordings (0 media files, 0 bytes)");
   });
 
   it.each([

@@ -17,7 +17,9 @@ const manifestSchema = z.object({
   /** How many of the committed migrations the database had (0 = none), and the last one's name. */
   migrations: z.object({ level: z.number().int().min(0), last: z.string().nullable() }),
   /** In load order: parents before the tables pointing at them. */
-  tables: z.array(z.object({ name: z.string().min(1), columns: z.array(z.string().min(1)), rows: z.number().int().min(0) })),
+  tables: z.array(
+    z.object({ name: z.string().min(1), columns: z.array(z.string().min(1)), rows: z.number().int().min(0) }),
+  ),
   /** Sequence values as text: they are bigints. */
   sequences: z.array(z.object({ name: z.string().min(1), value: z.string().regex(/^-?\d+$/), called: z.boolean() })),
   media: z.array(z.object({ key: z.string().min(1), size: z.number().int().min(0) })),
@@ -34,14 +36,19 @@ export function parseManifest(text: string): BackupManifest {
     throw new Error("The backup file's manifest.json is not JSON: the file is damaged or not an HRIStudio backup.");
   }
   const format = (json as { format?: unknown; version?: unknown } | null) ?? {};
-  if (format.format !== BACKUP_FORMAT) throw new Error("This file is not an HRIStudio backup (its manifest.json does not say so).");
+  if (format.format !== BACKUP_FORMAT)
+    throw new Error("This file is not an HRIStudio backup (its manifest.json does not say so).");
   if (typeof format.version === "number" && format.version > BACKUP_VERSION) {
-    throw new Error(`This backup was written by a newer HRIStudio (backup format ${format.version}; this copy reads up to ${BACKUP_VERSION}). Update HRIStudio, then restore.`);
+    throw new Error(
+      `This backup was written by a newer HRIStudio (backup format ${format.version}; this copy reads up to ${BACKUP_VERSION}). Update HRIStudio, then restore.`,
+    );
   }
   const parsed = manifestSchema.safeParse(json);
   if (!parsed.success) {
     const issue = parsed.error.issues[0]!;
-    throw new Error(`The backup file's manifest.json is damaged: ${issue.path.join(".") || "(top)"}: ${issue.message}.`);
+    throw new Error(
+      `The backup file's manifest.json is damaged: ${issue.path.join(".") || "(top)"}: ${issue.message}.`,
+    );
   }
   return parsed.data;
 }

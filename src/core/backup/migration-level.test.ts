@@ -35,7 +35,12 @@ describe("checkRestoreLevels", () => {
   });
 
   it.each<[string, MigrationLevel, MigrationLevel, string]>([
-    ["a backup from a newer HRIStudio", { level: 4, last: "0003_future" }, at(0), "comes from a newer HRIStudio (database migration 0003_future"],
+    [
+      "a backup from a newer HRIStudio",
+      { level: 4, last: "0003_future" },
+      at(0),
+      "comes from a newer HRIStudio (database migration 0003_future",
+    ],
     ["a backup from another line", { level: 2, last: "0001_other" }, at(0), "comes from another line"],
     ["a target set up beyond the backup", at(1), at(3), "already set up at a later migration (0002_most)"],
   ])("refuses %s", (_, backup, target, message) => {

@@ -35,7 +35,9 @@ export function checkRestoreLevels(journal: JournalEntry[], backup: MigrationLev
     );
   }
   if (backup.level > 0 && journal[backup.level - 1]!.tag !== backup.last) {
-    throw new Error(`This backup's database migration ${backup.last} is not this copy's migration ${backup.level} (${journal[backup.level - 1]!.tag}): it comes from another line of HRIStudio.`);
+    throw new Error(
+      `This backup's database migration ${backup.last} is not this copy's migration ${backup.level} (${journal[backup.level - 1]!.tag}): it comes from another line of HRIStudio.`,
+    );
   }
   if (target.level > backup.level) {
     throw new Error(

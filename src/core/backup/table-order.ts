@@ -28,7 +28,9 @@ export function loadOrder(tables: string[], references: Reference[]): string[] {
     const ready = tables.filter((t) => !placed.has(t) && [...parents.get(t)!].every((p) => placed.has(p))).sort();
     if (!ready.length) {
       const stuck = tables.filter((t) => !placed.has(t)).sort();
-      throw new Error(`The tables ${stuck.join(", ")} point at each other in a circle; they cannot be loaded one after another.`);
+      throw new Error(
+        `The tables ${stuck.join(", ")} point at each other in a circle; they cannot be loaded one after another.`,
+      );
     }
     for (const t of ready) {
       order.push(t);

@@ -78,13 +78,21 @@ export type TarEntryHeader = { name: string; size: number; type: string };
 
 /** A header read back; null for the zero block that ends the archive. Refuses a damaged block. */
 export function readTarHeader(block: Uint8Array, offset: number): TarEntryHeader | null {
-  if (block.length !== BLOCK) throw new Error(`The backup file ends in the middle of a header (at byte ${offset}): it is incomplete.`);
+  if (block.length !== BLOCK)
+    throw new Error(`The backup file ends in the middle of a header (at byte ${offset}): it is incomplete.`);
   if (block.every((b) => b === 0)) return null;
   const stored = Number.parseInt(readString(block, 148, 8).trim(), 8);
-  if (stored !== checksum(block)) throw new Error(`The backup file is damaged at byte ${offset} (a header's checksum does not match), or it is not a backup file.`);
+  if (stored !== checksum(block))
+    throw new Error(
+      `The backup file is damaged at byte ${offset} (a header's checksum does not match), or it is not a backup file.`,
+    );
   const prefix = readString(block, 345, 155);
   const name = readString(block, 0, 100);
-  return { name: prefix ? `${prefix}/${name}` : name, size: readSize(block), type: String.fromCharCode(block[156] || 48) };
+  return {
+    name: prefix ? `${prefix}/${name}` : name,
+    size: readSize(block),
+    type: String.fromCharCode(block[156] || 48),
+  };
 }
 
 /** Zero bytes that bring an entry's data up to a whole block. */

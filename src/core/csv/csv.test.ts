@@ -35,6 +35,14 @@ describe("a CSV cell", () => {
 
 describe("a CSV document", () => {
   it("writes the header, then a CRLF-ended line per row", () => {
-    expect(csvDocument(["a", "b"], [[1, "+x"], ["y", null]])).toBe("a,b\r\n1,'+x\r\ny,\r\n");
+    expect(
+      csvDocument(
+        ["a", "b"],
+        [
+          [1, "+x"],
+          ["y", null],
+        ],
+      ),
+    ).toBe("a,b\r\n1,'+x\r\ny,\r\n");
   });
 });

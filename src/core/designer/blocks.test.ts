@@ -4,7 +4,18 @@ import { blockFor, library, RUN_TOGETHER } from "./blocks";
 describe("the block library", () => {
   it("offers the control blocks, run together, and the abstract actions even without a robot", () => {
     const types = library(null).map((b) => b.type);
-    expect(types).toEqual(expect.arrayContaining(["wizard_instruction", "record_answer", "branch", "end_trial", "run_together", "say", "wave", "pause"]));
+    expect(types).toEqual(
+      expect.arrayContaining([
+        "wizard_instruction",
+        "record_answer",
+        "branch",
+        "end_trial",
+        "run_together",
+        "say",
+        "wave",
+        "pause",
+      ]),
+    );
   });
 
   it("never takes run together for an action: it is a tool that links actions", () => {

@@ -1,7 +1,14 @@
 // The designer's library: the engine's control blocks, the abstract actions
 // every robot may map, and the chosen robot's own actions. Each block carries
 // the JSON Schema its properties form is generated from.
-import { ABSTRACT_ACTIONS, parseActionType, robotActionType, withDefaults, type ParameterSchema, type Plugin } from "../plugins";
+import {
+  ABSTRACT_ACTIONS,
+  parseActionType,
+  robotActionType,
+  withDefaults,
+  type ParameterSchema,
+  type Plugin,
+} from "../plugins";
 
 export type BlockCategory = "speech" | "movement" | "timing" | "wizard" | "logic" | "robot";
 
@@ -45,7 +52,10 @@ export const CONTROL_BLOCKS: Block[] = [
           maxItems: 12,
           items: {
             type: "object",
-            properties: { id: { type: "string", minLength: 1, maxLength: 100 }, label: { type: "string", title: "Answer", minLength: 1, maxLength: 200 } },
+            properties: {
+              id: { type: "string", minLength: 1, maxLength: 100 },
+              label: { type: "string", title: "Answer", minLength: 1, maxLength: 200 },
+            },
             required: ["id", "label"],
             additionalProperties: false,
           },
@@ -67,7 +77,13 @@ export const CONTROL_BLOCKS: Block[] = [
       additionalProperties: false,
     },
   },
-  { type: "end_trial", name: "End trial", category: "logic", description: "Ends the trial here.", parameterSchema: none },
+  {
+    type: "end_trial",
+    name: "End trial",
+    category: "logic",
+    description: "Ends the trial here.",
+    parameterSchema: none,
+  },
 ];
 
 const CATEGORY: Record<string, BlockCategory> = { say: "speech", pause: "timing" };
@@ -112,14 +128,21 @@ export function library(plugin: Plugin | null): Block[] {
 /** The block behind an action's type, if the library knows it. */
 export function blockFor(type: string, plugin: Plugin | null): Block | undefined {
   const parsed = parseActionType(type);
-  if (parsed.kind === "robot") return plugin && parsed.robotId === plugin.robotId ? robotBlocks(plugin).find((b) => b.type === type) : undefined;
+  if (parsed.kind === "robot")
+    return plugin && parsed.robotId === plugin.robotId ? robotBlocks(plugin).find((b) => b.type === type) : undefined;
   return CONTROL_BLOCKS.find((b) => b.type === type) ?? ABSTRACT_BLOCKS.find((b) => b.type === type);
 }
 
 /** What a freshly dropped block starts with: its schema's defaults. */
 export function initialParameters(block: Block, newId: () => string): Record<string, unknown> {
   if (block.type === "record_answer") {
-    return { prompt: "", options: [{ id: newId(), label: "Yes" }, { id: newId(), label: "No" }] };
+    return {
+      prompt: "",
+      options: [
+        { id: newId(), label: "Yes" },
+        { id: newId(), label: "No" },
+      ],
+    };
   }
   if (block.type === "branch") return { targets: {} };
   return withDefaults(block.parameterSchema, {});

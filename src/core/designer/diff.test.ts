@@ -3,20 +3,45 @@ import type { ProtocolSnapshot } from "../protocol/snapshot";
 import { diffProtocols } from "./diff";
 
 type Snapshot = ProtocolSnapshot;
-const act = (id: string, type: string, name: string, parameters: Record<string, unknown> = {}, parallelGroup: string | null = null) => ({ id, type, name, parameters, parallelGroup });
+const act = (
+  id: string,
+  type: string,
+  name: string,
+  parameters: Record<string, unknown> = {},
+  parallelGroup: string | null = null,
+) => ({ id, type, name, parameters, parallelGroup });
 
 const base: Snapshot = {
   schemaVersion: 1,
   experiment: { id: "exp", name: "Storyteller", description: "Kai on Mars", robotPluginId: "nao6-ros2" },
   steps: [
-    { id: "intro", name: "Intro", description: "A greeting", actions: [act("greet", "say", "Greeting", { text: "Hello." }, "g1"), act("wave", "wave", "Wave", {}, "g1")] },
-    { id: "story", name: "Story", description: "", actions: [act("tell", "say", "Tell", { text: "Kai had been on Mars for six days." }), act("look", "look_down", "Look down")] },
+    {
+      id: "intro",
+      name: "Intro",
+      description: "A greeting",
+      actions: [act("greet", "say", "Greeting", { text: "Hello." }, "g1"), act("wave", "wave", "Wave", {}, "g1")],
+    },
+    {
+      id: "story",
+      name: "Story",
+      description: "",
+      actions: [
+        act("tell", "say", "Tell", { text: "Kai had been on Mars for six days." }),
+        act("look", "look_down", "Look down"),
+      ],
+    },
     {
       id: "recall",
       name: "Recall",
       description: "",
       actions: [
-        act("ask", "record_answer", "Answer", { prompt: "Color?", options: [{ id: "right", label: "red" }, { id: "wrong", label: "other" }] }),
+        act("ask", "record_answer", "Answer", {
+          prompt: "Color?",
+          options: [
+            { id: "right", label: "red" },
+            { id: "wrong", label: "other" },
+          ],
+        }),
         act("route", "branch", "Respond", { targets: { right: "yes", wrong: "no" } }),
       ],
     },
@@ -31,8 +56,23 @@ const action = (s: Snapshot, id: string) => s.steps.flatMap((x) => x.actions).fi
 describe("diffProtocols", () => {
   const rows: Array<[string, (s: Snapshot) => void, string[]]> = [
     ["identical versions", () => {}, []],
-    ["the same parameters written in another key order", (s) => (action(s, "ask").parameters = { options: [{ label: "red", id: "right" }, { label: "other", id: "wrong" }], prompt: "Color?" }), []],
-    ["a run-together group renamed, still the same actions", (s) => step(s, "intro").actions.forEach((a) => (a.parallelGroup = "other")), []],
+    [
+      "the same parameters written in another key order",
+      (s) =>
+        (action(s, "ask").parameters = {
+          options: [
+            { label: "red", id: "right" },
+            { label: "other", id: "wrong" },
+          ],
+          prompt: "Color?",
+        }),
+      [],
+    ],
+    [
+      "a run-together group renamed, still the same actions",
+      (s) => step(s, "intro").actions.forEach((a) => (a.parallelGroup = "other")),
+      [],
+    ],
     [
       "experiment details",
       (s) => (s.experiment = { ...s.experiment, name: "Storyteller 2", description: "", robotPluginId: "pepper-ros2" }),
@@ -44,26 +84,55 @@ describe("diffProtocols", () => {
     ],
     [
       "a step added",
-      (s) => s.steps.splice(1, 0, { id: "hold", name: "Pause", description: "", actions: [act("p", "pause", "Hold", { seconds: 2 })] }),
+      (s) =>
+        s.steps.splice(1, 0, {
+          id: "hold",
+          name: "Pause",
+          description: "",
+          actions: [act("p", "pause", "Hold", { seconds: 2 })],
+        }),
       ['added step: Step "Pause" added at position 2', 'added action: Action "Hold" added to "Pause" at position 1'],
     ],
     [
       "a step removed with its actions",
       (s) => s.steps.splice(1, 1),
-      ['removed step: Step "Story" removed', 'removed action: Action "Tell" removed from "Story"', 'removed action: Action "Look down" removed from "Story"'],
+      [
+        'removed step: Step "Story" removed',
+        'removed action: Action "Tell" removed from "Story"',
+        'removed action: Action "Look down" removed from "Story"',
+      ],
     ],
     [
       "a step renamed and described",
       (s) => Object.assign(step(s, "intro"), { name: "Introduction", description: "The robot says hello" }),
-      ['changed step: Step "Intro" renamed to "Introduction"', 'changed step: Step "Introduction": description changed from "A greeting" to "The robot says hello"'],
+      [
+        'changed step: Step "Intro" renamed to "Introduction"',
+        'changed step: Step "Introduction": description changed from "A greeting" to "The robot says hello"',
+      ],
     ],
-    ["a step moved forward", (s) => s.steps.unshift(...s.steps.splice(2, 1)), ['moved step: Step "Recall" moved from position 3 to 1']],
-    ["two steps swapped", (s) => s.steps.push(s.steps.splice(3, 1)[0]!), ['moved step: Step "Correct" moved from position 4 to 5']],
-    ["a text changed", (s) => (action(s, "greet").parameters.text = "Hello there."), ['changed action: Action "Greeting" in "Intro": text changed from "Hello." to "Hello there."']],
+    [
+      "a step moved forward",
+      (s) => s.steps.unshift(...s.steps.splice(2, 1)),
+      ['moved step: Step "Recall" moved from position 3 to 1'],
+    ],
+    [
+      "two steps swapped",
+      (s) => s.steps.push(s.steps.splice(3, 1)[0]!),
+      ['moved step: Step "Correct" moved from position 4 to 5'],
+    ],
+    [
+      "a text changed",
+      (s) => (action(s, "greet").parameters.text = "Hello there."),
+      ['changed action: Action "Greeting" in "Intro": text changed from "Hello." to "Hello there."'],
+    ],
     [
       "a long text, shortened",
-      (s) => (action(s, "tell").parameters.text = "Kai had been on the Martian surface for six days. On the seventh morning, she walked to the crater."),
-      ['changed action: Action "Tell" in "Story": text changed from "Kai had been on Mars for six days." to "Kai had been on the Martian surface for six days. On the seventh morning, she …'],
+      (s) =>
+        (action(s, "tell").parameters.text =
+          "Kai had been on the Martian surface for six days. On the seventh morning, she walked to the crater."),
+      [
+        'changed action: Action "Tell" in "Story": text changed from "Kai had been on Mars for six days." to "Kai had been on the Martian surface for six days. On the seventh morning, she …',
+      ],
     ],
     [
       "parameters set and removed",
@@ -71,20 +140,33 @@ describe("diffProtocols", () => {
         action(s, "look").parameters.angle = 10;
         delete action(s, "greet").parameters.text;
       },
-      ['changed action: Action "Greeting" in "Intro": text removed (was "Hello.")', 'changed action: Action "Look down" in "Story": angle set to 10'],
+      [
+        'changed action: Action "Greeting" in "Intro": text removed (was "Hello.")',
+        'changed action: Action "Look down" in "Story": angle set to 10',
+      ],
     ],
     [
       "an action moved to another step",
       (s) => step(s, "story").actions.push(step(s, "intro").actions.pop()!),
-      ['changed action: Actions that run together in "Intro" changed from "Greeting" + "Wave" to none', 'moved action: Action "Wave" moved from "Intro" to "Story"'],
+      [
+        'changed action: Actions that run together in "Intro" changed from "Greeting" + "Wave" to none',
+        'moved action: Action "Wave" moved from "Intro" to "Story"',
+      ],
     ],
-    ["actions reordered in a step", (s) => step(s, "story").actions.reverse(), ['moved action: Action "Tell" in "Story" moved from position 1 to 2']],
+    [
+      "actions reordered in a step",
+      (s) => step(s, "story").actions.reverse(),
+      ['moved action: Action "Tell" in "Story" moved from position 1 to 2'],
+    ],
     [
       "actions renamed, retyped, removed and added",
       (s) => {
         Object.assign(action(s, "end2"), { name: "Finish" });
         Object.assign(action(s, "look"), { type: "nao6-ros2.look_at_floor" });
-        step(s, "yes").actions = [act("thanks", "say", "Thanks", { text: "Thank you!" }), act("end1", "end_trial", "End")];
+        step(s, "yes").actions = [
+          act("thanks", "say", "Thanks", { text: "Thank you!" }),
+          act("end1", "end_trial", "End"),
+        ];
         step(s, "intro").actions.splice(1, 1);
       },
       [
@@ -103,7 +185,10 @@ describe("diffProtocols", () => {
     [
       "a branch answer sent elsewhere, another dropped",
       (s) => (action(s, "route").parameters.targets = { right: "no" }),
-      ['changed action: Action "Respond" in "Recall": answer "red" goes to "Incorrect" instead of "Correct"', 'changed action: Action "Respond" in "Recall": answer "other" no longer goes to "Incorrect"'],
+      [
+        'changed action: Action "Respond" in "Recall": answer "red" goes to "Incorrect" instead of "Correct"',
+        'changed action: Action "Respond" in "Recall": answer "other" no longer goes to "Incorrect"',
+      ],
     ],
     [
       "an answer added, with its branch",

@@ -18,9 +18,16 @@ export function diffProtocols(before: ProtocolSnapshot, after: ProtocolSnapshot)
   const lines: DiffLine[] = [];
   const line = (kind: DiffLine["kind"], what: DiffLine["what"], text: string) => lines.push({ kind, what, text });
   const [was, now] = [before.experiment, after.experiment];
-  if (was.name !== now.name) line("changed", "experiment", `Experiment renamed from ${show(was.name)} to ${show(now.name)}`);
-  if (was.description !== now.description) line("changed", "experiment", `Experiment description changed from ${show(was.description)} to ${show(now.description)}`);
-  if (was.robotPluginId !== now.robotPluginId) line("changed", "experiment", `Robot changed from ${show(was.robotPluginId)} to ${show(now.robotPluginId)}`);
+  if (was.name !== now.name)
+    line("changed", "experiment", `Experiment renamed from ${show(was.name)} to ${show(now.name)}`);
+  if (was.description !== now.description)
+    line(
+      "changed",
+      "experiment",
+      `Experiment description changed from ${show(was.description)} to ${show(now.description)}`,
+    );
+  if (was.robotPluginId !== now.robotPluginId)
+    line("changed", "experiment", `Robot changed from ${show(was.robotPluginId)} to ${show(now.robotPluginId)}`);
 
   const oldSteps = new Map(before.steps.map((step, index) => [step.id, { step, index }]));
   const newSteps = new Map(after.steps.map((step, index) => [step.id, { step, index }]));
@@ -30,7 +37,8 @@ export function diffProtocols(before: ProtocolSnapshot, after: ProtocolSnapshot)
   const stepName = (id: string) => show((newSteps.get(id) ?? oldSteps.get(id))?.step.name ?? id);
   const removedActions = (step: Step) => {
     for (const action of step.actions) {
-      if (!newActions.has(action.id)) line("removed", "action", `Action ${show(nameOf(action))} removed from ${stepName(step.id)}`);
+      if (!newActions.has(action.id))
+        line("removed", "action", `Action ${show(nameOf(action))} removed from ${stepName(step.id)}`);
     }
   };
 
@@ -49,11 +57,20 @@ export function diffProtocols(before: ProtocolSnapshot, after: ProtocolSnapshot)
     if (!old) line("added", "step", `Step ${where} added at position ${index + 1}`);
     else {
       if (old.step.name !== step.name) line("changed", "step", `Step ${show(old.step.name)} renamed to ${where}`);
-      if (movedSteps.has(step.id)) line("moved", "step", `Step ${where} moved from position ${old.index + 1} to ${index + 1}`);
-      if (old.step.description !== step.description) line("changed", "step", `Step ${where}: description changed from ${show(old.step.description)} to ${show(step.description)}`);
+      if (movedSteps.has(step.id))
+        line("moved", "step", `Step ${where} moved from position ${old.index + 1} to ${index + 1}`);
+      if (old.step.description !== step.description)
+        line(
+          "changed",
+          "step",
+          `Step ${where}: description changed from ${show(old.step.description)} to ${show(step.description)}`,
+        );
       removedActions(old.step);
     }
-    const stayed = (s: Step) => s.actions.filter((a) => oldActions.get(a.id)?.stepId === step.id && newActions.get(a.id)?.stepId === step.id).map((a) => a.id);
+    const stayed = (s: Step) =>
+      s.actions
+        .filter((a) => oldActions.get(a.id)?.stepId === step.id && newActions.get(a.id)?.stepId === step.id)
+        .map((a) => a.id);
     const movedActions = displaced(old ? stayed(old.step) : [], stayed(step));
     step.actions.forEach((action, position) => {
       const prior = oldActions.get(action.id);
@@ -62,32 +79,58 @@ export function diffProtocols(before: ProtocolSnapshot, after: ProtocolSnapshot)
         line("added", "action", `Action ${name} added to ${where} at position ${position + 1}`);
         return;
       }
-      if (prior.stepId !== step.id) line("moved", "action", `Action ${name} moved from ${stepName(prior.stepId)} to ${where}`);
-      if (movedActions.has(action.id)) line("moved", "action", `Action ${name} in ${where} moved from position ${prior.index + 1} to ${position + 1}`);
-      if (nameOf(prior.action) !== nameOf(action)) line("changed", "action", `Action ${show(nameOf(prior.action))} in ${where} renamed to ${name}`);
-      if (prior.action.type !== action.type) line("changed", "action", `Action ${name} in ${where}: type changed from ${show(prior.action.type)} to ${show(action.type)}`);
-      const labels = answerLabels([oldSteps.get(prior.stepId)?.step.actions[prior.index - 1], step.actions[position - 1]]);
-      for (const change of parameterChanges(prior.action, action, labels, stepName)) line("changed", "action", `Action ${name} in ${where}: ${change}`);
+      if (prior.stepId !== step.id)
+        line("moved", "action", `Action ${name} moved from ${stepName(prior.stepId)} to ${where}`);
+      if (movedActions.has(action.id))
+        line("moved", "action", `Action ${name} in ${where} moved from position ${prior.index + 1} to ${position + 1}`);
+      if (nameOf(prior.action) !== nameOf(action))
+        line("changed", "action", `Action ${show(nameOf(prior.action))} in ${where} renamed to ${name}`);
+      if (prior.action.type !== action.type)
+        line(
+          "changed",
+          "action",
+          `Action ${name} in ${where}: type changed from ${show(prior.action.type)} to ${show(action.type)}`,
+        );
+      const labels = answerLabels([
+        oldSteps.get(prior.stepId)?.step.actions[prior.index - 1],
+        step.actions[position - 1],
+      ]);
+      for (const change of parameterChanges(prior.action, action, labels, stepName))
+        line("changed", "action", `Action ${name} in ${where}: ${change}`);
     });
     const [wasTogether, isTogether] = [together(old?.step), together(step)];
     if (wasTogether.key !== isTogether.key) {
-      line("changed", "action", `Actions that run together in ${where} changed from ${wasTogether.text} to ${isTogether.text}`);
+      line(
+        "changed",
+        "action",
+        `Actions that run together in ${where} changed from ${wasTogether.text} to ${isTogether.text}`,
+      );
     }
   });
   return lines;
 }
 
 function actionsById(snapshot: ProtocolSnapshot) {
-  return new Map(snapshot.steps.flatMap((step) => step.actions.map((action, index) => [action.id, { action, index, stepId: step.id }] as const)));
+  return new Map(
+    snapshot.steps.flatMap((step) =>
+      step.actions.map((action, index) => [action.id, { action, index, stepId: step.id }] as const),
+    ),
+  );
 }
 
 /** One phrase per parameter that changed; a branch's targets one per answer. */
-function parameterChanges(was: Action, now: Action, labels: Map<string, string>, stepName: (id: string) => string): string[] {
+function parameterChanges(
+  was: Action,
+  now: Action,
+  labels: Map<string, string>,
+  stepName: (id: string) => string,
+): string[] {
   const keys = [...new Set([...Object.keys(was.parameters), ...Object.keys(now.parameters)])].sort();
   return keys.flatMap((key) => {
     const [from, to] = [own(was.parameters, key), own(now.parameters, key)];
     if (same(from, to)) return [];
-    if (key === "targets" && was.type === "branch" && now.type === "branch") return routeChanges(from, to, labels, stepName);
+    if (key === "targets" && was.type === "branch" && now.type === "branch")
+      return routeChanges(from, to, labels, stepName);
     if (from === undefined) return [`${key} set to ${show(to)}`];
     if (to === undefined) return [`${key} removed (was ${show(from)})`];
     return [`${key} changed from ${show(from)} to ${show(to)}`];
@@ -95,7 +138,12 @@ function parameterChanges(was: Action, now: Action, labels: Map<string, string>,
 }
 
 /** One line per answer whose branch target changed, the answer named by its label. */
-function routeChanges(from: unknown, to: unknown, labels: Map<string, string>, stepName: (id: string) => string): string[] {
+function routeChanges(
+  from: unknown,
+  to: unknown,
+  labels: Map<string, string>,
+  stepName: (id: string) => string,
+): string[] {
   const [was, now] = [targetsOf(from), targetsOf(to)];
   return [...new Set([...Object.keys(was), ...Object.keys(now)])].sort().flatMap((option) => {
     const [a, b] = [own(was, option), own(now, option)];

@@ -21,11 +21,40 @@ const awkward: DesignDraft = {
       name: "{{not a template}}",
       description: "$(rm -rf /); `echo hi` && 'single'",
       actions: [
-        { id: "a1", type: "say", name: "", parameters: { text: '{"json": "inside"} \\n not a newline' }, parallelGroup: "x" },
+        {
+          id: "a1",
+          type: "say",
+          name: "",
+          parameters: { text: '{"json": "inside"} \\n not a newline' },
+          parallelGroup: "x",
+        },
         { id: "a2", type: "wave", name: "Wave", parameters: {}, parallelGroup: "x" },
-        { id: "a3", type: "nao6-ros2.custom", name: "Odd keys", parameters: { b: 1, "10": "ten", "2": "two", a: { z: [3, { y: 1, x: null }], "": true }, __proto__x: 0 }, parallelGroup: null },
-        { id: "a4", type: "record_answer", name: "Answer", parameters: { options: [{ id: "7", label: "Seven" }, { id: "constructor", label: "Built" }] }, parallelGroup: null },
-        { id: "a5", type: "branch", name: "Go", parameters: { targets: { "7": "c", constructor: "a" } }, parallelGroup: null },
+        {
+          id: "a3",
+          type: "nao6-ros2.custom",
+          name: "Odd keys",
+          parameters: { b: 1, "10": "ten", "2": "two", a: { z: [3, { y: 1, x: null }], "": true }, __proto__x: 0 },
+          parallelGroup: null,
+        },
+        {
+          id: "a4",
+          type: "record_answer",
+          name: "Answer",
+          parameters: {
+            options: [
+              { id: "7", label: "Seven" },
+              { id: "constructor", label: "Built" },
+            ],
+          },
+          parallelGroup: null,
+        },
+        {
+          id: "a5",
+          type: "branch",
+          name: "Go",
+          parameters: { targets: { "7": "c", constructor: "a" } },
+          parallelGroup: null,
+        },
       ],
     },
     { id: "b", name: "Empty step", description: "", actions: [] },
@@ -57,7 +86,14 @@ function normalized(draft: DesignDraft) {
           ...a,
           id: name(a.id),
           parallelGroup: a.parallelGroup && name(a.parallelGroup),
-          parameters: a.type === "branch" ? { targets: Object.fromEntries(Object.entries(a.parameters.targets as object).map(([k, v]) => [k, name(v)])) } : a.parameters,
+          parameters:
+            a.type === "branch"
+              ? {
+                  targets: Object.fromEntries(
+                    Object.entries(a.parameters.targets as object).map(([k, v]) => [k, name(v)]),
+                  ),
+                }
+              : a.parameters,
         })),
       })),
     }),
@@ -92,11 +128,28 @@ describe("exporting and importing an experiment", () => {
           name: "Ask",
           description: "",
           actions: [
-            { id: "uuid-q", type: "record_answer", name: "Ready?", parameters: { prompt: "Ready?", options: [{ label: "Yes", id: "y" }] }, parallelGroup: null },
-            { id: "uuid-b", type: "branch", name: "Go", parameters: { targets: { y: "uuid-bye", n: "uuid-deleted" } }, parallelGroup: null },
+            {
+              id: "uuid-q",
+              type: "record_answer",
+              name: "Ready?",
+              parameters: { prompt: "Ready?", options: [{ label: "Yes", id: "y" }] },
+              parallelGroup: null,
+            },
+            {
+              id: "uuid-b",
+              type: "branch",
+              name: "Go",
+              parameters: { targets: { y: "uuid-bye", n: "uuid-deleted" } },
+              parallelGroup: null,
+            },
           ],
         },
-        { id: "uuid-bye", name: "Bye", description: "", actions: [{ id: "uuid-w", type: "wave", name: "Wave", parameters: {}, parallelGroup: "uuid-g" }] },
+        {
+          id: "uuid-bye",
+          name: "Bye",
+          description: "",
+          actions: [{ id: "uuid-w", type: "wave", name: "Wave", parameters: {}, parallelGroup: "uuid-g" }],
+        },
       ],
     };
     expect(exportExperiment(draft)).toBe(
@@ -194,38 +247,120 @@ describe("importing a bad file", () => {
     return JSON.stringify(file);
   };
   // Built as text: JSON.stringify itself gives up on nesting this deep.
-  const deep = (change: (file: Record<string, any>) => void) => edit(change).replace('"DEEP"', `${"[".repeat(5000)}${"]".repeat(5000)}`);
+  const deep = (change: (file: Record<string, any>) => void) =>
+    edit(change).replace('"DEEP"', `${"[".repeat(5000)}${"]".repeat(5000)}`);
   const rows: Array<[string, string, Array<[string, string]>]> = [
     ["empty", "", [["$", "is not valid JSON: the file ends where a value was expected (line 1, column 1)"]]],
     ["not JSON", '{\n  "format": "hristudio.experiment",\n  oops\n}', [["$", "(line 3, column 3)"]]],
     ["null", "null", [["$", "must be an object"]]],
     ["a list at the top", "[]", [["$", "must be an object"]]],
-    ["a plugin file", '{"robotId": "nao6-ros2", "actions": []}', [["$.format", "this is not an HRIStudio experiment file"]]],
-    ["a newer format", edit((f) => (f.formatVersion = 2)), [["$.formatVersion", "is 2: the file comes from a newer HRIStudio"]]],
+    [
+      "a plugin file",
+      '{"robotId": "nao6-ros2", "actions": []}',
+      [["$.format", "this is not an HRIStudio experiment file"]],
+    ],
+    [
+      "a newer format",
+      edit((f) => (f.formatVersion = 2)),
+      [["$.formatVersion", "is 2: the file comes from a newer HRIStudio"]],
+    ],
     ["a version as text", edit((f) => (f.formatVersion = "1")), [["$.formatVersion", "must be 1"]]],
     ["no steps", edit((f) => delete f.steps), [["$.steps", "must be a list"]]],
     ["no experiment", edit((f) => delete f.experiment), [["$.experiment", "must be an object"]]],
     ["a blank robot", edit((f) => (f.experiment.robot = " ")), [["$.experiment.robot", "must be a non-empty string"]]],
-    ["a field the format does not have", edit((f) => (f.steps[1].colour = "red")), [["$.steps[1].colour", "is not part of an experiment file"]]],
+    [
+      "a field the format does not have",
+      edit((f) => (f.steps[1].colour = "red")),
+      [["$.steps[1].colour", "is not part of an experiment file"]],
+    ],
     ["a step that is not an object", edit((f) => (f.steps[0] = "intro")), [["$.steps[0]", "must be an object"]]],
     ["a step without a name", edit((f) => delete f.steps[2].name), [["$.steps[2].name", "must be a non-empty string"]]],
-    ["two steps with one key", edit((f) => (f.steps[3].key = "step-1")), [["$.steps[3].key", '"step-1" is already the key of step 1'], ["$.steps[2].actions[3].parameters.targets.correct", '"@step-4" names no step']]],
+    [
+      "two steps with one key",
+      edit((f) => (f.steps[3].key = "step-1")),
+      [
+        ["$.steps[3].key", '"step-1" is already the key of step 1'],
+        ["$.steps[2].actions[3].parameters.targets.correct", '"@step-4" names no step'],
+      ],
+    ],
     ["actions that are not a list", edit((f) => (f.steps[0].actions = {})), [["$.steps[0].actions", "must be a list"]]],
-    ["an action type that is a number", edit((f) => (f.steps[2].actions[0].type = 7)), [["$.steps[2].actions[0].type", "must be a non-empty string"]]],
-    ["parameters that are null", edit((f) => (f.steps[0].actions[0].parameters = null)), [["$.steps[0].actions[0].parameters", "must be an object"]]],
-    ["parameters that are a list", edit((f) => (f.steps[0].actions[0].parameters = [])), [["$.steps[0].actions[0].parameters", "must be an object"]]],
-    ["an empty group name", edit((f) => (f.steps[0].actions[0].runTogether = "")), [["$.steps[0].actions[0].runTogether", "must be a non-empty string, or left out"]]],
-    ["a branch to a missing step", edit((f) => (f.steps[2].actions[3].parameters.targets.correct = "@step-9")), [["$.steps[2].actions[3].parameters.targets.correct", '"@step-9" names no step of this file']]],
-    ["a branch to a database id", edit((f) => (f.steps[2].actions[3].parameters.targets.correct = "4f1c")), [["$.steps[2].actions[3].parameters.targets.correct", 'must name a step by "@" and its key']]],
-    ["a target under an odd option id", edit((f) => (f.steps[2].actions[3].parameters.targets = { "my answer": 3 })), [['$.steps[2].actions[3].parameters.targets["my answer"]', 'must name a step by "@"']]],
-    ["too many steps", edit((f) => (f.steps = Array.from({ length: 501 }, (_, i) => ({ key: `step-${i + 1}`, name: "S", actions: [] })))), [["$.steps", "has 501 steps; an experiment can have at most 500"]]],
-    ["too many actions", edit((f) => (f.steps[1].actions = Array(501).fill({ type: "nod" }))), [["$.steps[1].actions", "has 501 actions; a step can have at most 500"]]],
-    ["a name too long", edit((f) => (f.experiment.name = "n".repeat(201))), [["$.experiment.name", "must be at most 200 characters (it has 201)"]]],
-    ["a text too long", edit((f) => (f.steps[0].actions[0].parameters.text = "t".repeat(5001))), [["$.steps[0].actions[0].parameters.text", "must be at most 5000 characters"]]],
-    ["parameters nested absurdly deep", deep((f) => (f.steps[0].actions[1].parameters = "DEEP")), [["$.steps[0].actions[1].parameters", "must be an object"]]],
-    ["a parameter nested absurdly deep", deep((f) => (f.steps[0].actions[1].parameters = { deep: "DEEP" })), [[`$.steps[0].actions[1].parameters.deep${"[0]".repeat(32)}`, "is nested more than 32 levels deep"]]],
-    ["a whole file nested absurdly deep", `${"[".repeat(1_000_000)}${"]".repeat(1_000_000)}`, [["$", "must be an object"]]],
-    ["a file over 2 MB", JSON.stringify({ format: "hristudio.experiment", padding: "é".repeat(1_100_000) }), [["$", "larger than 2 MB"]]],
+    [
+      "an action type that is a number",
+      edit((f) => (f.steps[2].actions[0].type = 7)),
+      [["$.steps[2].actions[0].type", "must be a non-empty string"]],
+    ],
+    [
+      "parameters that are null",
+      edit((f) => (f.steps[0].actions[0].parameters = null)),
+      [["$.steps[0].actions[0].parameters", "must be an object"]],
+    ],
+    [
+      "parameters that are a list",
+      edit((f) => (f.steps[0].actions[0].parameters = [])),
+      [["$.steps[0].actions[0].parameters", "must be an object"]],
+    ],
+    [
+      "an empty group name",
+      edit((f) => (f.steps[0].actions[0].runTogether = "")),
+      [["$.steps[0].actions[0].runTogether", "must be a non-empty string, or left out"]],
+    ],
+    [
+      "a branch to a missing step",
+      edit((f) => (f.steps[2].actions[3].parameters.targets.correct = "@step-9")),
+      [["$.steps[2].actions[3].parameters.targets.correct", '"@step-9" names no step of this file']],
+    ],
+    [
+      "a branch to a database id",
+      edit((f) => (f.steps[2].actions[3].parameters.targets.correct = "4f1c")),
+      [["$.steps[2].actions[3].parameters.targets.correct", 'must name a step by "@" and its key']],
+    ],
+    [
+      "a target under an odd option id",
+      edit((f) => (f.steps[2].actions[3].parameters.targets = { "my answer": 3 })),
+      [['$.steps[2].actions[3].parameters.targets["my answer"]', 'must name a step by "@"']],
+    ],
+    [
+      "too many steps",
+      edit(
+        (f) => (f.steps = Array.from({ length: 501 }, (_, i) => ({ key: `step-${i + 1}`, name: "S", actions: [] }))),
+      ),
+      [["$.steps", "has 501 steps; an experiment can have at most 500"]],
+    ],
+    [
+      "too many actions",
+      edit((f) => (f.steps[1].actions = Array(501).fill({ type: "nod" }))),
+      [["$.steps[1].actions", "has 501 actions; a step can have at most 500"]],
+    ],
+    [
+      "a name too long",
+      edit((f) => (f.experiment.name = "n".repeat(201))),
+      [["$.experiment.name", "must be at most 200 characters (it has 201)"]],
+    ],
+    [
+      "a text too long",
+      edit((f) => (f.steps[0].actions[0].parameters.text = "t".repeat(5001))),
+      [["$.steps[0].actions[0].parameters.text", "must be at most 5000 characters"]],
+    ],
+    [
+      "parameters nested absurdly deep",
+      deep((f) => (f.steps[0].actions[1].parameters = "DEEP")),
+      [["$.steps[0].actions[1].parameters", "must be an object"]],
+    ],
+    [
+      "a parameter nested absurdly deep",
+      deep((f) => (f.steps[0].actions[1].parameters = { deep: "DEEP" })),
+      [[`$.steps[0].actions[1].parameters.deep${"[0]".repeat(32)}`, "is nested more than 32 levels deep"]],
+    ],
+    [
+      "a whole file nested absurdly deep",
+      `${"[".repeat(1_000_000)}${"]".repeat(1_000_000)}`,
+      [["$", "must be an object"]],
+    ],
+    [
+      "a file over 2 MB",
+      JSON.stringify({ format: "hristudio.experiment", padding: "é".repeat(1_100_000) }),
+      [["$", "larger than 2 MB"]],
+    ],
   ];
 
   it.each(rows)("%s", (_, text, expected) => {
@@ -242,7 +377,8 @@ describe("importing a bad file", () => {
     const paths: Array<Array<string | number>> = [];
     const visit = (value: unknown, path: Array<string | number>) => {
       paths.push(path);
-      if (value && typeof value === "object") for (const [k, v] of Object.entries(value)) visit(v, [...path, Array.isArray(value) ? Number(k) : k]);
+      if (value && typeof value === "object")
+        for (const [k, v] of Object.entries(value)) visit(v, [...path, Array.isArray(value) ? Number(k) : k]);
     };
     visit(JSON.parse(text), []);
     for (const path of paths.slice(1)) {

@@ -94,11 +94,24 @@ export function exportExperiment(draft: DesignDraft): string {
 /** Never throws: a file that cannot be imported comes back as its problems, each with its place in the file. */
 export function importExperiment(text: string, newId: NewId): ImportResult {
   if (text.length > MAX_BYTES || new TextEncoder().encode(text).length > MAX_BYTES) {
-    return { ok: false, problems: [{ path: "$", message: "the file is larger than 2 MB; an experiment file is far smaller, so this is probably not one" }] };
+    return {
+      ok: false,
+      problems: [
+        {
+          path: "$",
+          message: "the file is larger than 2 MB; an experiment file is far smaller, so this is probably not one",
+        },
+      ],
+    };
   }
   const parsed = parseJsonText(text);
   if (!parsed.ok) {
-    return { ok: false, problems: [{ path: "$", message: `is not valid JSON: ${parsed.reason} (line ${parsed.line}, column ${parsed.column})` }] };
+    return {
+      ok: false,
+      problems: [
+        { path: "$", message: `is not valid JSON: ${parsed.reason} (line ${parsed.line}, column ${parsed.column})` },
+      ],
+    };
   }
   const problems = check(parsed.value);
   if (problems.length) return { ok: false, problems };
@@ -121,7 +134,10 @@ function build(file: ExperimentFile, newId: NewId): DesignDraft {
         id: newId(),
         type: action.type,
         name: action.name ?? "",
-        parameters: action.type === "branch" ? swapTargets(action.parameters ?? {}, (key) => ids.get(key)) : (action.parameters ?? {}),
+        parameters:
+          action.type === "branch"
+            ? swapTargets(action.parameters ?? {}, (key) => ids.get(key))
+            : (action.parameters ?? {}),
         parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
       })),
     })),
@@ -129,7 +145,10 @@ function build(file: ExperimentFile, newId: NewId): DesignDraft {
 }
 
 /** A branch's targets renamed one by one; a target with no new name is dropped. */
-function swapTargets(parameters: Record<string, unknown>, rename: (target: string) => string | undefined): Record<string, unknown> {
+function swapTargets(
+  parameters: Record<string, unknown>,
+  rename: (target: string) => string | undefined,
+): Record<string, unknown> {
   if (!isObject(parameters.targets)) return parameters;
   const targets = Object.entries(parameters.targets).flatMap(([option, target]) => {
     const renamed = typeof target === "string" ? rename(target) : undefined;
@@ -151,7 +170,9 @@ function write(value: unknown, indent: string, sorted: boolean): string {
     const keys = Object.keys(value).filter((k) => value[k] !== undefined);
     if (sorted) keys.sort();
     if (keys.length === 0) return "{}";
-    const lines = keys.map((k) => `${inner}${JSON.stringify(k)}: ${write(value[k], inner, sorted || k === "parameters")}`);
+    const lines = keys.map(
+      (k) => `${inner}${JSON.stringify(k)}: ${write(value[k], inner, sorted || k === "parameters")}`,
+    );
     return `{\n${lines.join(",\n")}\n${indent}}`;
   }
   return JSON.stringify(value) ?? "null";
@@ -170,7 +191,8 @@ function check(file: unknown): ImportProblem[] {
   };
   const object = (value: unknown, path: string, fields: string[]): value is Record<string, unknown> => {
     if (!isObject(value)) return flag(path, "must be an object ({ … })");
-    for (const key of Object.keys(value)) if (!fields.includes(key)) flag(member(path, key), "is not part of an experiment file");
+    for (const key of Object.keys(value))
+      if (!fields.includes(key)) flag(member(path, key), "is not part of an experiment file");
     return true;
   };
   const list = (value: unknown, path: string, max: number, what: string, within: string): value is unknown[] => {
@@ -178,7 +200,13 @@ function check(file: unknown): ImportProblem[] {
     if (value.length > max) return flag(path, `has ${value.length} ${what}; ${within} can have at most ${max}`);
     return true;
   };
-  const text = (owner: Record<string, unknown>, key: string, path: string, max: number, need: "required" | "optional") => {
+  const text = (
+    owner: Record<string, unknown>,
+    key: string,
+    path: string,
+    max: number,
+    need: "required" | "optional",
+  ) => {
     const value = owner[key];
     if (value === undefined && need === "optional") return;
     if (typeof value !== "string" || (need === "required" && !value.trim())) {
@@ -192,16 +220,21 @@ function check(file: unknown): ImportProblem[] {
       flag(path, `is nested more than ${MAX_DEPTH} levels deep`);
       return;
     }
-    if (typeof value === "string" && value.length > MAX_TEXT) flag(path, `must be at most ${MAX_TEXT} characters (it has ${value.length})`);
+    if (typeof value === "string" && value.length > MAX_TEXT)
+      flag(path, `must be at most ${MAX_TEXT} characters (it has ${value.length})`);
     if (Array.isArray(value)) value.forEach((v, i) => values(v, `${path}[${i}]`, depth + 1));
     else if (isObject(value)) for (const [k, v] of Object.entries(value)) values(v, member(path, k), depth + 1);
   };
 
-  if (!isObject(file)) return [{ path: "$", message: "must be an object ({ … }): an experiment file holds one experiment" }];
-  if (file.format !== FORMAT) return [{ path: "$.format", message: `must be "${FORMAT}": this is not an HRIStudio experiment file` }];
+  if (!isObject(file))
+    return [{ path: "$", message: "must be an object ({ … }): an experiment file holds one experiment" }];
+  if (file.format !== FORMAT)
+    return [{ path: "$.format", message: `must be "${FORMAT}": this is not an HRIStudio experiment file` }];
   if (file.formatVersion !== FORMAT_VERSION) {
     const newer = typeof file.formatVersion === "number" && file.formatVersion > FORMAT_VERSION;
-    const message = newer ? `is ${file.formatVersion}: the file comes from a newer HRIStudio, and this one reads version ${FORMAT_VERSION}` : `must be ${FORMAT_VERSION}`;
+    const message = newer
+      ? `is ${file.formatVersion}: the file comes from a newer HRIStudio, and this one reads version ${FORMAT_VERSION}`
+      : `must be ${FORMAT_VERSION}`;
     return [{ path: "$.formatVersion", message }];
   }
   object(file, "$", ENVELOPE);
@@ -217,7 +250,8 @@ function check(file: unknown): ImportProblem[] {
     if (!object(step, path, STEP)) return;
     text(step, "key", path, MAX_NAME, "required");
     if (typeof step.key === "string" && step.key.trim()) {
-      if (keys.has(step.key)) flag(`${path}.key`, `"${step.key}" is already the key of step ${keys.get(step.key)}; each step needs its own`);
+      if (keys.has(step.key))
+        flag(`${path}.key`, `"${step.key}" is already the key of step ${keys.get(step.key)}; each step needs its own`);
       else keys.set(step.key, s + 1);
     }
     text(step, "name", path, MAX_NAME, "required");
@@ -231,7 +265,8 @@ function check(file: unknown): ImportProblem[] {
       text(action, "type", path, MAX_NAME, "required");
       text(action, "name", path, MAX_NAME, "optional");
       text(action, "runTogether", path, MAX_NAME, "optional");
-      if (action.runTogether === "") flag(`${path}.runTogether`, "must be a non-empty string, or left out for an action that runs alone");
+      if (action.runTogether === "")
+        flag(`${path}.runTogether`, "must be a non-empty string, or left out for an action that runs alone");
       if (action.parameters === undefined) return;
       if (!isObject(action.parameters)) flag(`${path}.parameters`, "must be an object ({ … })");
       else {
@@ -239,7 +274,8 @@ function check(file: unknown): ImportProblem[] {
         if (action.type === "branch" && isObject(action.parameters.targets)) {
           for (const [option, target] of Object.entries(action.parameters.targets)) {
             const at = member(`${path}.parameters.targets`, option);
-            if (typeof target !== "string" || !target.startsWith("@")) flag(at, 'must name a step by "@" and its key, such as "@step-2"');
+            if (typeof target !== "string" || !target.startsWith("@"))
+              flag(at, 'must name a step by "@" and its key, such as "@step-2"');
             else if (!keys.has(target.slice(1))) flag(at, `"${target}" names no step of this file`);
           }
         }

@@ -31,27 +31,95 @@ function draft(): DesignDraft {
   };
 }
 
-const shape = (d: DesignDraft) => d.steps.map((s) => `${s.id}: ${s.actions.map((a) => a.id + (a.parallelGroup ? `[${a.parallelGroup}]` : "")).join(" ")}`);
+const shape = (d: DesignDraft) =>
+  d.steps.map(
+    (s) => `${s.id}: ${s.actions.map((a) => a.id + (a.parallelGroup ? `[${a.parallelGroup}]` : "")).join(" ")}`,
+  );
 
 describe("designer commands", () => {
   const cases: Array<[string, Command, string[] | ((d: DesignDraft) => unknown), unknown?]> = [
-    ["add step at the end", commands.addStep("Recall"), shape, ["intro: hello[g] wave[g] bow", "story: tale", "end: ", "id-1: "]],
-    ["add step at a position", commands.addStep("Recall", 1), (d) => d.steps.map((s) => s.name), ["Introduction", "Recall", "Story", "End"]],
-    ["edit step", commands.updateStep("story", { name: "The story", description: "Kai on Mars" }), (d) => [d.steps[1]!.name, d.steps[1]!.description], ["The story", "Kai on Mars"]],
+    [
+      "add step at the end",
+      commands.addStep("Recall"),
+      shape,
+      ["intro: hello[g] wave[g] bow", "story: tale", "end: ", "id-1: "],
+    ],
+    [
+      "add step at a position",
+      commands.addStep("Recall", 1),
+      (d) => d.steps.map((s) => s.name),
+      ["Introduction", "Recall", "Story", "End"],
+    ],
+    [
+      "edit step",
+      commands.updateStep("story", { name: "The story", description: "Kai on Mars" }),
+      (d) => [d.steps[1]!.name, d.steps[1]!.description],
+      ["The story", "Kai on Mars"],
+    ],
     ["delete step", commands.removeStep("story"), (d) => d.steps.map((s) => s.id), ["intro", "end"]],
     ["move step up", commands.moveStep("end", 0), (d) => d.steps.map((s) => s.id), ["end", "intro", "story"]],
-    ["move step past the end stays last", commands.moveStep("intro", 99), (d) => d.steps.map((s) => s.id), ["story", "end", "intro"]],
-    ["add action into a step", commands.addAction("end", 0, { type: "end_trial", name: "End", parameters: {} }), shape, ["intro: hello[g] wave[g] bow", "story: tale", "end: id-1"]],
-    ["add action between two", commands.addAction("intro", 2, say("Hi")), shape, ["intro: hello[g] wave[g] id-1 bow", "story: tale", "end: "]],
+    [
+      "move step past the end stays last",
+      commands.moveStep("intro", 99),
+      (d) => d.steps.map((s) => s.id),
+      ["story", "end", "intro"],
+    ],
+    [
+      "add action into a step",
+      commands.addAction("end", 0, { type: "end_trial", name: "End", parameters: {} }),
+      shape,
+      ["intro: hello[g] wave[g] bow", "story: tale", "end: id-1"],
+    ],
+    [
+      "add action between two",
+      commands.addAction("intro", 2, say("Hi")),
+      shape,
+      ["intro: hello[g] wave[g] id-1 bow", "story: tale", "end: "],
+    ],
     ["delete action", commands.removeAction("bow"), shape, ["intro: hello[g] wave[g]", "story: tale", "end: "]],
-    ["move action within its step leaves its group", commands.moveAction("hello", "intro", 2), shape, ["intro: wave bow hello", "story: tale", "end: "]],
-    ["move action to another step", commands.moveAction("bow", "story", 0), shape, ["intro: hello[g] wave[g]", "story: bow tale", "end: "]],
-    ["move action into an empty step", commands.moveAction("tale", "end", 5), shape, ["intro: hello[g] wave[g] bow", "story: ", "end: tale"]],
+    [
+      "move action within its step leaves its group",
+      commands.moveAction("hello", "intro", 2),
+      shape,
+      ["intro: wave bow hello", "story: tale", "end: "],
+    ],
+    [
+      "move action to another step",
+      commands.moveAction("bow", "story", 0),
+      shape,
+      ["intro: hello[g] wave[g]", "story: bow tale", "end: "],
+    ],
+    [
+      "move action into an empty step",
+      commands.moveAction("tale", "end", 5),
+      shape,
+      ["intro: hello[g] wave[g] bow", "story: ", "end: tale"],
+    ],
     ["rename action", commands.renameAction("bow", "Deep bow"), (d) => d.steps[0]!.actions[2]!.name, "Deep bow"],
-    ["set parameter", commands.setParameter("hello", "text", 'She said "hi" {{x}} $(rm -rf /)'), (d) => d.steps[0]!.actions[0]!.parameters, { text: 'She said "hi" {{x}} $(rm -rf /)' }],
-    ["clear parameter", commands.setParameter("hello", "text", undefined), (d) => d.steps[0]!.actions[0]!.parameters, {}],
-    ["run together with the action above joins its group", commands.setRunTogether("bow", true), shape, ["intro: hello[g] wave[g] bow[g]", "story: tale", "end: "]],
-    ["run on its own", commands.setRunTogether("wave", false), shape, ["intro: hello wave bow", "story: tale", "end: "]],
+    [
+      "set parameter",
+      commands.setParameter("hello", "text", 'She said "hi" {{x}} $(rm -rf /)'),
+      (d) => d.steps[0]!.actions[0]!.parameters,
+      { text: 'She said "hi" {{x}} $(rm -rf /)' },
+    ],
+    [
+      "clear parameter",
+      commands.setParameter("hello", "text", undefined),
+      (d) => d.steps[0]!.actions[0]!.parameters,
+      {},
+    ],
+    [
+      "run together with the action above joins its group",
+      commands.setRunTogether("bow", true),
+      shape,
+      ["intro: hello[g] wave[g] bow[g]", "story: tale", "end: "],
+    ],
+    [
+      "run on its own",
+      commands.setRunTogether("wave", false),
+      shape,
+      ["intro: hello wave bow", "story: tale", "end: "],
+    ],
     ["change robot", commands.setRobot("pepper"), (d) => d.robotPluginId, "pepper"],
     ["rename experiment", commands.setDetails({ name: "Storyteller v2" }), (d) => d.name, "Storyteller v2"],
   ];
@@ -79,7 +147,11 @@ describe("designer commands", () => {
 
   it("creates a step for an answer from the branch itself and points the answer at it", () => {
     let h = startHistory(draft());
-    h = execute(h, commands.addAction("story", 1, { type: "branch", name: "Branch", parameters: { targets: {} } }, "branch"), ids());
+    h = execute(
+      h,
+      commands.addAction("story", 1, { type: "branch", name: "Branch", parameters: { targets: {} } }, "branch"),
+      ids(),
+    );
     h = execute(h, commands.addStepForAnswer("branch", "correct", "Response — correct"), () => "new-step");
     expect(h.present.steps.at(-1)).toMatchObject({ id: "new-step", name: "Response — correct" });
     expect(h.present.steps[1]!.actions[1]!.parameters).toEqual({ targets: { correct: "new-step" } });

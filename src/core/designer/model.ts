@@ -29,7 +29,8 @@ export function execute(history: History, command: Command, newId: NewId): Histo
   const next = command.apply(history.present, newId);
   if (next === history.present) return history;
   const last = history.past.at(-1);
-  if (command.mergeKey && last?.mergeKey === command.mergeKey && history.future.length === 0) return { ...history, present: next };
+  if (command.mergeKey && last?.mergeKey === command.mergeKey && history.future.length === 0)
+    return { ...history, present: next };
   const entry = { label: command.label, draft: history.present, mergeKey: command.mergeKey };
   return { present: next, past: [...history.past, entry].slice(-HISTORY_LIMIT), future: [] };
 }
@@ -37,13 +38,21 @@ export function execute(history: History, command: Command, newId: NewId): Histo
 export function undo(history: History): History {
   const last = history.past.at(-1);
   if (!last) return history;
-  return { present: last.draft, past: history.past.slice(0, -1), future: [{ label: last.label, draft: history.present }, ...history.future] };
+  return {
+    present: last.draft,
+    past: history.past.slice(0, -1),
+    future: [{ label: last.label, draft: history.present }, ...history.future],
+  };
 }
 
 export function redo(history: History): History {
   const [first, ...rest] = history.future;
   if (!first) return history;
-  return { present: first.draft, past: [...history.past, { label: first.label, draft: history.present }], future: rest };
+  return {
+    present: first.draft,
+    past: [...history.past, { label: first.label, draft: history.present }],
+    future: rest,
+  };
 }
 
 /** The draft inside a stored design (which also carries positions, times, revision...). */
@@ -56,7 +65,13 @@ export function draftFrom(design: DesignDraft): DesignDraft {
       id: s.id,
       name: s.name,
       description: s.description,
-      actions: s.actions.map((a) => ({ id: a.id, type: a.type, name: a.name, parameters: a.parameters, parallelGroup: a.parallelGroup })),
+      actions: s.actions.map((a) => ({
+        id: a.id,
+        type: a.type,
+        name: a.name,
+        parameters: a.parameters,
+        parallelGroup: a.parallelGroup,
+      })),
     })),
   };
 }
@@ -88,12 +103,20 @@ function withoutLoneGroups(step: DesignStep): DesignStep {
   const count = new Map<string, number>();
   for (const a of step.actions) if (a.parallelGroup) count.set(a.parallelGroup, (count.get(a.parallelGroup) ?? 0) + 1);
   if (![...count.values()].includes(1)) return step;
-  return { ...step, actions: step.actions.map((a) => (a.parallelGroup && count.get(a.parallelGroup) === 1 ? { ...a, parallelGroup: null } : a)) };
+  return {
+    ...step,
+    actions: step.actions.map((a) =>
+      a.parallelGroup && count.get(a.parallelGroup) === 1 ? { ...a, parallelGroup: null } : a,
+    ),
+  };
 }
 
 function replaceAction(draft: DesignDraft, actionId: string, change: (a: DesignAction) => DesignAction): DesignDraft {
   const { step } = locateAction(draft, actionId);
-  return replaceStep(draft, step.id, (s) => ({ ...s, actions: s.actions.map((a) => (a.id === actionId ? change(a) : a)) }));
+  return replaceStep(draft, step.id, (s) => ({
+    ...s,
+    actions: s.actions.map((a) => (a.id === actionId ? change(a) : a)),
+  }));
 }
 
 function clampIndex(index: number, length: number) {
@@ -136,7 +159,12 @@ export const commands = {
     label: "add step",
     apply: (d, newId) => {
       const steps = [...d.steps];
-      steps.splice(clampIndex(index ?? steps.length, steps.length), 0, { id: id ?? newId(), name, description: "", actions: [] });
+      steps.splice(clampIndex(index ?? steps.length, steps.length), 0, {
+        id: id ?? newId(),
+        name,
+        description: "",
+        actions: [],
+      });
       return { ...d, steps };
     },
   }),
@@ -193,7 +221,10 @@ export const commands = {
         const actions = from.step.actions.map((a) => (a.id === actionId ? leaveGroup(a) : a));
         return replaceStep(d, toStepId, (s) => ({ ...s, actions: move(actions, from.index, to) }));
       }
-      const without = replaceStep(d, from.step.id, (s) => ({ ...s, actions: s.actions.filter((a) => a.id !== actionId) }));
+      const without = replaceStep(d, from.step.id, (s) => ({
+        ...s,
+        actions: s.actions.filter((a) => a.id !== actionId),
+      }));
       return replaceStep(without, target.step.id, (s) => {
         const actions = [...s.actions];
         actions.splice(clampIndex(toIndex, actions.length), 0, leaveGroup(from.action));
@@ -235,7 +266,13 @@ export const commands = {
         const renamed = tail >= 2 ? newId() : null;
         return replaceStep(d, step.id, (s) => ({
           ...s,
-          actions: s.actions.map((a, i) => (i === index ? { ...a, parallelGroup: null } : i > index && i <= index + tail ? { ...a, parallelGroup: renamed } : a)),
+          actions: s.actions.map((a, i) =>
+            i === index
+              ? { ...a, parallelGroup: null }
+              : i > index && i <= index + tail
+                ? { ...a, parallelGroup: renamed }
+                : a,
+          ),
         }));
       }
       const above = step.actions[index - 1];
@@ -243,7 +280,11 @@ export const commands = {
       const group = above.parallelGroup ?? newId();
       return replaceStep(d, step.id, (s) => ({
         ...s,
-        actions: s.actions.map((a, i) => (i === index - 1 || i === index || (a.parallelGroup && a.parallelGroup === action.parallelGroup) ? { ...a, parallelGroup: group } : a)),
+        actions: s.actions.map((a, i) =>
+          i === index - 1 || i === index || (a.parallelGroup && a.parallelGroup === action.parallelGroup)
+            ? { ...a, parallelGroup: group }
+            : a,
+        ),
       }));
     },
   }),

@@ -17,15 +17,28 @@ function draft(...steps: ActionSpec[][]): DesignDraft {
       id: `s${s + 1}`,
       name: `Step ${s + 1}`,
       description: "",
-      actions: actions.map((a, i) => ({ id: `s${s + 1}a${i + 1}`, name: "", parameters: {}, parallelGroup: null, ...a })),
+      actions: actions.map((a, i) => ({
+        id: `s${s + 1}a${i + 1}`,
+        name: "",
+        parameters: {},
+        parallelGroup: null,
+        ...a,
+      })),
     })),
   };
 }
 
-const say = (text: unknown = "Hello", extra: Partial<DesignAction> = {}): ActionSpec => ({ type: "say", parameters: { text }, ...extra });
+const say = (text: unknown = "Hello", extra: Partial<DesignAction> = {}): ActionSpec => ({
+  type: "say",
+  parameters: { text },
+  ...extra,
+});
 const wave = (extra: Partial<DesignAction> = {}): ActionSpec => ({ type: "wave", ...extra });
 const end: ActionSpec = { type: "end_trial" };
-const question = (...labels: string[]): ActionSpec => ({ type: "record_answer", parameters: { options: labels.map((label, i) => ({ id: `o${i + 1}`, label })) } });
+const question = (...labels: string[]): ActionSpec => ({
+  type: "record_answer",
+  parameters: { options: labels.map((label, i) => ({ id: `o${i + 1}`, label })) },
+});
 const branch = (targets: Record<string, unknown>): ActionSpec => ({ type: "branch", parameters: { targets } });
 
 const summary = (issues: DesignIssue[]) =>
@@ -38,16 +51,32 @@ const toy: Plugin = {
   version: "1.0.0",
   pluginApiVersion: "1.0",
   actions: [
-    { id: "speak", name: "Speak", category: "speech", parameterSchema: { type: "object", properties: { words: { type: "string", maxLength: 20 } }, required: ["words"] } },
+    {
+      id: "speak",
+      name: "Speak",
+      category: "speech",
+      parameterSchema: {
+        type: "object",
+        properties: { words: { type: "string", maxLength: 20 } },
+        required: ["words"],
+      },
+    },
     { id: "stand", name: "Stand", category: "posture", parameterSchema: { type: "object", properties: {} } },
     {
       id: "beep",
       name: "Beep",
       category: "sound",
-      parameterSchema: { type: "object", properties: { volume: { type: "number", title: "Volume", minimum: 0, maximum: 1 } }, required: ["volume"] },
+      parameterSchema: {
+        type: "object",
+        properties: { volume: { type: "number", title: "Volume", minimum: 0, maximum: 1 } },
+        required: ["volume"],
+      },
     },
   ],
-  abstract: { say: { action: "speak", parameters: { words: "{{text}}" } }, posture: { action: "stand", when: { posture: "stand" } } },
+  abstract: {
+    say: { action: "speak", parameters: { words: "{{text}}" } },
+    posture: { action: "stand", when: { posture: "stand" } },
+  },
   unsupported: [{ action: "wave", reason: "It has no arms." }],
 };
 
@@ -59,39 +88,103 @@ describe("validateDesign", () => {
     ["a step with no actions", draft([say()], [], [say()]), ["error empty_step s2"]],
     ["an unknown block", draft([{ type: "dance" }]), ["error unknown_block s1a1"]],
     ["another robot's action", draft([{ type: "pepper.bow" }]), ["error unknown_block s1a1"], toy],
-    ["a robot action without its plugin", draft([{ type: "toy.beep", parameters: { volume: 1 } }]), ["error unknown_block s1a1"]],
+    [
+      "a robot action without its plugin",
+      draft([{ type: "toy.beep", parameters: { volume: 1 } }]),
+      ["error unknown_block s1a1"],
+    ],
     ["a robot action with its plugin", draft([{ type: "toy.beep", parameters: { volume: 1 } }]), [], toy],
-    ["a robot action with a bad parameter", draft([{ type: "toy.beep", parameters: { volume: 2 } }]), ["error parameter s1a1 volume"], toy],
+    [
+      "a robot action with a bad parameter",
+      draft([{ type: "toy.beep", parameters: { volume: 2 } }]),
+      ["error parameter s1a1 volume"],
+      toy,
+    ],
     ["say without text", draft([{ type: "say" }]), ["error parameter s1a1 text"]],
     ["say with empty text", draft([say("")]), ["error parameter s1a1 text"]],
-    ["a misspelt parameter", draft([say("Hi", { parameters: { text: "Hi", txet: "Hi" } })]), ["error parameter s1a1 txet"]],
+    [
+      "a misspelt parameter",
+      draft([say("Hi", { parameters: { text: "Hi", txet: "Hi" } })]),
+      ["error parameter s1a1 txet"],
+    ],
     ["a question with one answer", draft([question("Yes")]), ["error parameter s1a1 options"]],
     ["a branch with no question before it", draft([say(), branch({})], [say()]), ["error branch_without_answer s1a2"]],
-    ["a branch separated from its question", draft([question("Yes", "No"), say(), branch({ o1: "s2", o2: "s2" })], [say()]), ["error branch_without_answer s1a3"]],
-    ["a branch answer leading nowhere", draft([question("Yes", "No"), branch({ o1: "s2" })], [say()]), ["error branch_target_missing s1a2 targets"]],
-    ["a branch answer leading to a deleted step", draft([question("Yes", "No"), branch({ o1: "s2", o2: "gone" })], [say()]), ["error branch_target_missing s1a2 targets"]],
-    ["a branch to the steps after it", draft([question("Yes", "No"), branch({ o1: "s2", o2: "s3" })], [say(), end], [say()]), []],
+    [
+      "a branch separated from its question",
+      draft([question("Yes", "No"), say(), branch({ o1: "s2", o2: "s2" })], [say()]),
+      ["error branch_without_answer s1a3"],
+    ],
+    [
+      "a branch answer leading nowhere",
+      draft([question("Yes", "No"), branch({ o1: "s2" })], [say()]),
+      ["error branch_target_missing s1a2 targets"],
+    ],
+    [
+      "a branch answer leading to a deleted step",
+      draft([question("Yes", "No"), branch({ o1: "s2", o2: "gone" })], [say()]),
+      ["error branch_target_missing s1a2 targets"],
+    ],
+    [
+      "a branch to the steps after it",
+      draft([question("Yes", "No"), branch({ o1: "s2", o2: "s3" })], [say(), end], [say()]),
+      [],
+    ],
     ["a step after an end is never reached", draft([say(), end], [say()]), ["error unreachable_step s2"]],
-    ["a step skipped by every answer", draft([question("Yes", "No"), branch({ o1: "s3", o2: "s3" })], [say()], [say()]), ["error unreachable_step s2"]],
-    ["a broken branch falls through rather than cascading", draft([question("Yes", "No"), branch({ o1: "s3" })], [say(), end], [say()]), ["error branch_target_missing s1a2 targets"]],
-    ["a branch that always loops back", draft([say()], [question("Again", "Once more"), branch({ o1: "s1", o2: "s2" })], [say()]), ["error no_end s1", "error unreachable_step s3"]],
+    [
+      "a step skipped by every answer",
+      draft([question("Yes", "No"), branch({ o1: "s3", o2: "s3" })], [say()], [say()]),
+      ["error unreachable_step s2"],
+    ],
+    [
+      "a broken branch falls through rather than cascading",
+      draft([question("Yes", "No"), branch({ o1: "s3" })], [say(), end], [say()]),
+      ["error branch_target_missing s1a2 targets"],
+    ],
+    [
+      "a branch that always loops back",
+      draft([say()], [question("Again", "Once more"), branch({ o1: "s1", o2: "s2" })], [say()]),
+      ["error no_end s1", "error unreachable_step s3"],
+    ],
     ["a loop with a way out", draft([say()], [question("Again", "Done"), branch({ o1: "s1", o2: "s3" })], [say()]), []],
     ["actions after an end", draft([say(), end, wave(), end]), ["warning after_end s1a3", "warning after_end s1a4"]],
     ["the same answer twice", draft([question("Yes", " yes", "No")]), ["warning duplicate_option s1a1 options"]],
     ["running together with a neighbour", draft([say("Hi", { parallelGroup: "g" }), wave({ parallelGroup: "g" })]), []],
-    ["running together with no neighbour", draft([say("Hi", { parallelGroup: "g" }), wave(), say("Bye", { parallelGroup: "g" })]), ["warning run_together_alone s1a1", "warning run_together_alone s1a3"]],
+    [
+      "running together with no neighbour",
+      draft([say("Hi", { parallelGroup: "g" }), wave(), say("Bye", { parallelGroup: "g" })]),
+      ["warning run_together_alone s1a1", "warning run_together_alone s1a3"],
+    ],
     ["an action the robot cannot do", draft([wave()]), ["warning unsupported_on_robot s1a1"], toy],
-    ["a value the robot does not support", draft([{ type: "posture", parameters: { posture: "sit" } }]), ["error parameter s1a1 posture"], toy],
-    ["a problem only the robot's own action has", draft([say("This sentence is far too long for the toy")]), ["error parameter s1a1 words"], toy],
+    [
+      "a value the robot does not support",
+      draft([{ type: "posture", parameters: { posture: "sit" } }]),
+      ["error parameter s1a1 posture"],
+      toy,
+    ],
+    [
+      "a problem only the robot's own action has",
+      draft([say("This sentence is far too long for the toy")]),
+      ["error parameter s1a1 words"],
+      toy,
+    ],
     ["a problem reported once, not again by the robot", draft([say("")]), ["error parameter s1a1 text"], toy],
     [
       "issues in step order, then action order",
       draft([wave({ parallelGroup: "g" }), say("")], [], [{ type: "dance" }, end, say()]),
-      ["warning run_together_alone s1a1", "warning unsupported_on_robot s1a1", "error parameter s1a2 text", "error empty_step s2", "error unknown_block s3a1", "warning after_end s3a3"],
+      [
+        "warning run_together_alone s1a1",
+        "warning unsupported_on_robot s1a1",
+        "error parameter s1a2 text",
+        "error empty_step s2",
+        "error unknown_block s3a1",
+        "warning after_end s3a3",
+      ],
       toy,
     ],
   ];
-  it.each(rows)("%s", (_, design, expected, plugin = null) => expect(summary(validateDesign(design, plugin))).toEqual(expected));
+  it.each(rows)("%s", (_, design, expected, plugin = null) =>
+    expect(summary(validateDesign(design, plugin))).toEqual(expected),
+  );
 
   it("speaks to researchers, naming steps, actions and fields as the designer shows them", () => {
     const design = draft([say("", { name: "Greeting" }), wave({ name: "Wave hello" })], [say(), end], [say()]);
@@ -104,7 +197,9 @@ describe("validateDesign", () => {
     expect(validateDesign(draft([question("Yes", "No"), branch({ o1: "s1" })]), null).map((i) => i.message)).toEqual([
       '"Branch": choose the step the answer "No" leads to.',
     ]);
-    expect(validateDesign(draft([say()], [question("Again", "More"), branch({ o1: "s1", o2: "s1" })]), null)[0]!.message).toBe(
+    expect(
+      validateDesign(draft([say()], [question("Again", "More"), branch({ o1: "s1", o2: "s1" })]), null)[0]!.message,
+    ).toBe(
       'The trial can never end from step "Step 1": every way on loops back without reaching an "End trial" block or the last step.',
     );
   });

@@ -36,16 +36,27 @@ type Route = { option: Option; to: number } | { option: Option; to: null; why: "
 
 export function validateDesign(draft: DesignDraft, plugin: Plugin | null): DesignIssue[] {
   if (draft.steps.length === 0) {
-    return [{ severity: "error", code: "no_steps", message: "The experiment has no steps yet. Add a step to say what happens first." }];
+    return [
+      {
+        severity: "error",
+        code: "no_steps",
+        message: "The experiment has no steps yet. Add a step to say what happens first.",
+      },
+    ];
   }
   const placed: Placed[] = [];
   const indexById = new Map(draft.steps.map((s, i) => [s.id, i]));
   const reported = new Set<string>();
   draft.steps.forEach((step, s) => {
-    const add = (action: number, issue: Omit<DesignIssue, "stepId">) => placed.push({ step: s, action, issue: { ...issue, stepId: step.id } });
+    const add = (action: number, issue: Omit<DesignIssue, "stepId">) =>
+      placed.push({ step: s, action, issue: { ...issue, stepId: step.id } });
     const where = stepLabel(step, s);
     if (step.actions.length === 0) {
-      add(-1, { severity: "error", code: "empty_step", message: `${upper(where)} has no actions yet. Add what the robot or the wizard should do, or remove the step.` });
+      add(-1, {
+        severity: "error",
+        code: "empty_step",
+        message: `${upper(where)} has no actions yet. Add what the robot or the wizard should do, or remove the step.`,
+      });
     }
     const end = step.actions.findIndex((a) => a.type === "end_trial");
     step.actions.forEach((action, a) => {
@@ -55,20 +66,41 @@ export function validateDesign(draft: DesignDraft, plugin: Plugin | null): Desig
       if (!block) at({ severity: "error", code: "unknown_block", message: unknownMessage(action, name, plugin) });
       for (const problem of block ? validateParameters(block.parameterSchema, action.parameters) : []) {
         reported.add(`${action.id}\n${problem.parameter}\n${problem.message}`);
-        at({ severity: "error", code: "parameter", parameter: problem.parameter, message: `${name}: ${titled(problem.message, problem.parameter, block)}.` });
+        at({
+          severity: "error",
+          code: "parameter",
+          parameter: problem.parameter,
+          message: `${name}: ${titled(problem.message, problem.parameter, block)}.`,
+        });
       }
       if (end >= 0 && a > end) {
-        at({ severity: "warning", code: "after_end", message: `${name} comes after "End trial" in ${where}, so it never runs.` });
+        at({
+          severity: "warning",
+          code: "after_end",
+          message: `${name} comes after "End trial" in ${where}, so it never runs.`,
+        });
       }
-      if (action.parallelGroup && ![step.actions[a - 1], step.actions[a + 1]].some((n) => n?.parallelGroup === action.parallelGroup)) {
-        at({ severity: "warning", code: "run_together_alone", message: `${name} is set to run together with other actions, but no action next to it is in its group, so it runs on its own.` });
+      if (
+        action.parallelGroup &&
+        ![step.actions[a - 1], step.actions[a + 1]].some((n) => n?.parallelGroup === action.parallelGroup)
+      ) {
+        at({
+          severity: "warning",
+          code: "run_together_alone",
+          message: `${name} is set to run together with other actions, but no action next to it is in its group, so it runs on its own.`,
+        });
       }
       if (action.type === "record_answer") {
         const seen = new Set<string>();
         for (const option of optionsOf(action)) {
           const label = option.label.trim().toLowerCase();
           if (seen.has(label)) {
-            at({ severity: "warning", code: "duplicate_option", parameter: "options", message: `${name} offers the answer "${option.label}" twice; the wizard cannot tell them apart.` });
+            at({
+              severity: "warning",
+              code: "duplicate_option",
+              parameter: "options",
+              message: `${name} offers the answer "${option.label}" twice; the wizard cannot tell them apart.`,
+            });
           }
           seen.add(label);
         }
@@ -76,7 +108,11 @@ export function validateDesign(draft: DesignDraft, plugin: Plugin | null): Desig
       if (action.type !== "branch") return;
       const routes = routesOf(step, a, indexById);
       if (!routes) {
-        at({ severity: "error", code: "branch_without_answer", message: `${name} must come right after a "Record answer" block in the same step: it chooses the next step from that answer.` });
+        at({
+          severity: "error",
+          code: "branch_without_answer",
+          message: `${name} must come right after a "Record answer" block in the same step: it chooses the next step from that answer.`,
+        });
       }
       for (const route of routes ?? []) {
         if (route.to !== null) continue;
@@ -146,7 +182,11 @@ function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[
   draft.steps.forEach((step, s) => {
     if (reached.has(s)) return;
     const message = `${upper(stepLabel(step, s))} can never be reached: the steps before it end the trial or branch elsewhere, and no branch leads to it.`;
-    issues.push({ step: s, action: -1, issue: { severity: "error", code: "unreachable_step", message, stepId: step.id } });
+    issues.push({
+      step: s,
+      action: -1,
+      issue: { severity: "error", code: "unreachable_step", message, stepId: step.id },
+    });
   });
   const stuck = draft.steps.findIndex((_, s) => reached.has(s) && !canEnd[s]);
   if (stuck >= 0) {
@@ -158,27 +198,48 @@ function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[
 }
 
 function robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>): Placed[] {
-  const position = new Map(draft.steps.flatMap((step, s) => step.actions.map((action, a) => [action.id, { step, s, action, a }] as const)));
+  const position = new Map(
+    draft.steps.flatMap((step, s) => step.actions.map((action, a) => [action.id, { step, s, action, a }] as const)),
+  );
   return portability(draft, plugin).actions.flatMap((result): Placed[] => {
     const { step, s, action, a } = position.get(result.actionId)!;
     const block = blockFor(action.type, plugin);
     if (!block) return []; // already an unknown block
-    const place = (issue: Omit<DesignIssue, "stepId" | "actionId">): Placed => ({ step: s, action: a, issue: { ...issue, stepId: step.id, actionId: action.id } });
+    const place = (issue: Omit<DesignIssue, "stepId" | "actionId">): Placed => ({
+      step: s,
+      action: a,
+      issue: { ...issue, stepId: step.id, actionId: action.id },
+    });
     const name = actionLabel(action, block);
     if (result.status === "unsupported") {
-      return [place({ severity: "warning", code: "unsupported_on_robot", message: `${name} cannot run on ${plugin.name}: ${result.reason}` })];
+      return [
+        place({
+          severity: "warning",
+          code: "unsupported_on_robot",
+          message: `${name} cannot run on ${plugin.name}: ${result.reason}`,
+        }),
+      ];
     }
     return result.problems
       .filter((p) => !reported.has(`${action.id}\n${p.parameter}\n${p.message}`))
-      .map((p) => place({ severity: "error", code: "parameter", parameter: p.parameter, message: `${name} on ${plugin.name}: ${titled(p.message, p.parameter, block)}.` }));
+      .map((p) =>
+        place({
+          severity: "error",
+          code: "parameter",
+          parameter: p.parameter,
+          message: `${name} on ${plugin.name}: ${titled(p.message, p.parameter, block)}.`,
+        }),
+      );
   });
 }
 
 function unknownMessage(action: DesignAction, name: string, plugin: Plugin | null): string {
   const parsed = parseActionType(action.type);
-  if (parsed.kind !== "robot") return `${name} is a kind of action the designer does not know ("${action.type}"). Replace it with a block from the library.`;
+  if (parsed.kind !== "robot")
+    return `${name} is a kind of action the designer does not know ("${action.type}"). Replace it with a block from the library.`;
   if (!plugin) return `${name} needs the plugin of the robot "${parsed.robotId}", which is not loaded.`;
-  if (plugin.robotId !== parsed.robotId) return `${name} is an action of the robot "${parsed.robotId}", not of ${plugin.name}.`;
+  if (plugin.robotId !== parsed.robotId)
+    return `${name} is an action of the robot "${parsed.robotId}", not of ${plugin.name}.`;
   return `${plugin.name} has no action "${parsed.actionId}", which ${name} needs. The plugin may have changed: replace it with a block from the library.`;
 }
 

@@ -9,8 +9,35 @@ const info = (extra: number[] = []) => {
   return [0x15, 0x49, 0xa9, 0x66, 0x80 | data.length, ...data];
 };
 const cluster = [0x1f, 0x43, 0xb6, 0x75, 0x83, 0xe7, 0x81, 0x00];
-const live = (infoBytes: number[]) => new Uint8Array([...ebmlHeader, 0x18, 0x53, 0x80, 0x67, 0x01, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, ...infoBytes, ...cluster]);
-const known = (infoBytes: number[]) => new Uint8Array([...ebmlHeader, 0x18, 0x53, 0x80, 0x67, 0x80 | (infoBytes.length + cluster.length), ...infoBytes, ...cluster]);
+const live = (infoBytes: number[]) =>
+  new Uint8Array([
+    ...ebmlHeader,
+    0x18,
+    0x53,
+    0x80,
+    0x67,
+    0x01,
+    0xff,
+    0xff,
+    0xff,
+    0xff,
+    0xff,
+    0xff,
+    0xff,
+    ...infoBytes,
+    ...cluster,
+  ]);
+const known = (infoBytes: number[]) =>
+  new Uint8Array([
+    ...ebmlHeader,
+    0x18,
+    0x53,
+    0x80,
+    0x67,
+    0x80 | (infoBytes.length + cluster.length),
+    ...infoBytes,
+    ...cluster,
+  ]);
 
 describe("WebM duration", () => {
   it.each([

@@ -113,10 +113,21 @@ export function withWebmDuration(bytes: Uint8Array, durationMs: number): Uint8Ar
   }
   const durationElement = new Uint8Array([0x44, 0x89, 0x88, ...float64(ticks)]);
   const infoData = bytes.subarray(info.dataStart, info.dataStart + info.size!);
-  const newInfo = new Uint8Array([0x15, 0x49, 0xa9, 0x66, ...size8(infoData.length + durationElement.length), ...infoData, ...durationElement]);
+  const newInfo = new Uint8Array([
+    0x15,
+    0x49,
+    0xa9,
+    0x66,
+    ...size8(infoData.length + durationElement.length),
+    ...infoData,
+    ...durationElement,
+  ]);
   const grown = newInfo.length - (info.dataStart + info.size! - info.start);
   // A Segment of known size grows by what was inserted; a live one's "unknown" stays as written.
-  const segmentSize = segment.size === null ? bytes.subarray(segment.dataStart - segment.sizeLength, segment.dataStart) : size8(segment.size + grown);
+  const segmentSize =
+    segment.size === null
+      ? bytes.subarray(segment.dataStart - segment.sizeLength, segment.dataStart)
+      : size8(segment.size + grown);
   return concat([
     bytes.subarray(0, segment.start),
     bytes.subarray(segment.start, segment.dataStart - segment.sizeLength),

@@ -49,10 +49,15 @@ describe("IP addresses", () => {
     expect(inRange(parseIp(ip)!, parseRange(range)!)).toBe(expected);
   });
 
-  it.each(["10.0.0.0/33", "10.0.0.0/-1", "10.0.0.0/", "10.0.0.0/8/8", "::ffff:10.0.0.0/95", "fd00::/129", "proxy.local"])(
-    "refuses the range %s",
-    (text) => expect(parseRange(text)).toBeNull(),
-  );
+  it.each([
+    "10.0.0.0/33",
+    "10.0.0.0/-1",
+    "10.0.0.0/",
+    "10.0.0.0/8/8",
+    "::ffff:10.0.0.0/95",
+    "fd00::/129",
+    "proxy.local",
+  ])("refuses the range %s", (text) => expect(parseRange(text)).toBeNull());
 });
 
 describe("trusted proxies setting", () => {
@@ -62,7 +67,9 @@ describe("trusted proxies setting", () => {
   });
 
   it("names the entry it cannot read", () => {
-    expect(parseTrustedProxies("127.0.0.1, proxy.local")).toEqual({ error: '"proxy.local" is not an IP address or CIDR range (such as 10.0.0.0/8)' });
+    expect(parseTrustedProxies("127.0.0.1, proxy.local")).toEqual({
+      error: '"proxy.local" is not an IP address or CIDR range (such as 10.0.0.0/8)',
+    });
   });
 });
 
@@ -71,15 +78,51 @@ describe("the client's address", () => {
     // With no trusted proxies X-Forwarded-For is never read.
     ["ignores the header when nothing is trusted", "198.51.100.7", "203.0.113.1", "", "198.51.100.7"],
     ["reports a mapped socket address in IPv4 form", "::ffff:198.51.100.7", undefined, "", "198.51.100.7"],
-    ["ignores the header from a socket that is not a trusted proxy", "198.51.100.7", "203.0.113.1", "10.0.0.0/8", "198.51.100.7"],
+    [
+      "ignores the header from a socket that is not a trusted proxy",
+      "198.51.100.7",
+      "203.0.113.1",
+      "10.0.0.0/8",
+      "198.51.100.7",
+    ],
     ["takes the entry the trusted proxy appended", "10.0.0.2", "203.0.113.1", "10.0.0.0/8", "203.0.113.1"],
-    ["takes the right-most untrusted entry, not what the client prepended", "10.0.0.2", "1.1.1.1, 203.0.113.1", "10.0.0.0/8", "203.0.113.1"],
-    ["walks past a chain of trusted proxies", "10.0.0.2", "1.1.1.1, 203.0.113.1, 10.0.0.9, 10.0.0.5", "10.0.0.0/8", "203.0.113.1"],
-    ["reads several X-Forwarded-For headers as one list", "10.0.0.2", ["1.1.1.1", "203.0.113.1, 10.0.0.9"], "10.0.0.0/8", "203.0.113.1"],
-    ["matches a mapped socket address against an IPv4 range", "::ffff:10.0.0.2", "203.0.113.1", "10.0.0.0/8", "203.0.113.1"],
+    [
+      "takes the right-most untrusted entry, not what the client prepended",
+      "10.0.0.2",
+      "1.1.1.1, 203.0.113.1",
+      "10.0.0.0/8",
+      "203.0.113.1",
+    ],
+    [
+      "walks past a chain of trusted proxies",
+      "10.0.0.2",
+      "1.1.1.1, 203.0.113.1, 10.0.0.9, 10.0.0.5",
+      "10.0.0.0/8",
+      "203.0.113.1",
+    ],
+    [
+      "reads several X-Forwarded-For headers as one list",
+      "10.0.0.2",
+      ["1.1.1.1", "203.0.113.1, 10.0.0.9"],
+      "10.0.0.0/8",
+      "203.0.113.1",
+    ],
+    [
+      "matches a mapped socket address against an IPv4 range",
+      "::ffff:10.0.0.2",
+      "203.0.113.1",
+      "10.0.0.0/8",
+      "203.0.113.1",
+    ],
     ["answers with the proxy when the header is missing", "10.0.0.2", undefined, "10.0.0.0/8", "10.0.0.2"],
     ["answers with the left-most proxy when every hop is trusted", "10.0.0.2", "10.0.0.7", "10.0.0.0/8", "10.0.0.7"],
-    ["stops at an unreadable entry and answers with the nearest proxy", "10.0.0.2", "203.0.113.1, bogus, 10.0.0.9", "10.0.0.0/8", "10.0.0.9"],
+    [
+      "stops at an unreadable entry and answers with the nearest proxy",
+      "10.0.0.2",
+      "203.0.113.1, bogus, 10.0.0.9",
+      "10.0.0.0/8",
+      "10.0.0.9",
+    ],
     ["handles IPv6 clients behind the proxy", "10.0.0.2", "2001:db8::7", "10.0.0.0/8", "2001:db8:0:0:0:0:0:7"],
     ["answers unknown when the socket is gone", undefined, "203.0.113.1", "0.0.0.0/0", "unknown"],
   ])("%s", (_name, socketAddress, forwardedFor, trusted, expected) => {

@@ -10,7 +10,10 @@ export const CLIENT_ADDRESS_HEADER = "x-hri-client-address";
 
 /** Parses the comma-separated setting; names the first entry that is not an address or range. */
 export function parseTrustedProxies(setting: string): { ranges: IpRange[] } | { error: string } {
-  const entries = setting.split(",").map((e) => e.trim()).filter(Boolean);
+  const entries = setting
+    .split(",")
+    .map((e) => e.trim())
+    .filter(Boolean);
   const ranges: IpRange[] = [];
   for (const entry of entries) {
     const range = parseRange(entry);
@@ -33,7 +36,12 @@ export function clientAddress({ socketAddress, forwardedFor, trustedProxies }: H
   if (!socket) return "unknown";
   const trusted = (ip: Uint8Array) => trustedProxies.some((range) => inRange(ip, range));
   if (!trusted(socket)) return formatIp(socket);
-  const claims = [forwardedFor ?? []].flat().join(",").split(",").map((e) => e.trim()).filter(Boolean);
+  const claims = [forwardedFor ?? []]
+    .flat()
+    .join(",")
+    .split(",")
+    .map((e) => e.trim())
+    .filter(Boolean);
   let nearest = socket;
   for (let i = claims.length - 1; i >= 0; i--) {
     const hop = parseIp(claims[i]!);

@@ -48,7 +48,10 @@ function parseIpv6(text: string): IpBytes | null {
 
 /** The address's bytes (4 for IPv4 and IPv4-mapped IPv6, 16 for IPv6), or null if it is not an address. */
 export function parseIp(text: string): IpBytes | null {
-  const bare = text.trim().replace(/^\[(.*)\]$/, "$1").replace(/%.*$/, "");
+  const bare = text
+    .trim()
+    .replace(/^\[(.*)\]$/, "$1")
+    .replace(/%.*$/, "");
   return bare.includes(":") ? parseIpv6(bare) : parseIpv4(bare);
 }
 
@@ -59,7 +62,8 @@ export function parseRange(text: string): IpRange | null {
   if (!bytes || rest.length) return null;
   // An IPv4-mapped range such as ::ffff:10.0.0.0/104 is the IPv4 range /8.
   const offset = bytes.length === 4 && address!.includes(":") ? 96 : 0;
-  const prefix = prefixText === undefined ? bytes.length * 8 : /^\d{1,3}$/.test(prefixText) ? Number(prefixText) - offset : NaN;
+  const prefix =
+    prefixText === undefined ? bytes.length * 8 : /^\d{1,3}$/.test(prefixText) ? Number(prefixText) - offset : NaN;
   return Number.isInteger(prefix) && prefix >= 0 && prefix <= bytes.length * 8 ? { bytes, prefix } : null;
 }
 

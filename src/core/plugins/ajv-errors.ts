@@ -37,20 +37,27 @@ function plain1(error: ErrorObject): PlainError | null {
     case "required":
       return { path: `${path}/${escapePointer(String(params.missingProperty))}`, reason: "is required but missing" };
     case "additionalProperties":
-      return { path: `${path}/${escapePointer(String(params.additionalProperty))}`, reason: "is not an allowed field here" };
+      return {
+        path: `${path}/${escapePointer(String(params.additionalProperty))}`,
+        reason: "is not an allowed field here",
+      };
     case "type": {
       const types = String(params.type).split(",");
       return { path, reason: `must be ${types.map((t) => ARTICLE[t] ?? `a ${t}`).join(" or ")}` };
     }
     case "enum":
-      return { path, reason: `must be one of: ${(params.allowedValues as unknown[]).map((v) => JSON.stringify(v)).join(", ")}` };
+      return {
+        path,
+        reason: `must be one of: ${(params.allowedValues as unknown[]).map((v) => JSON.stringify(v)).join(", ")}`,
+      };
     case "const":
       return { path, reason: `must be ${JSON.stringify(params.allowedValue)}` };
     case "pattern": {
       const definition = /definitions\/(\w+)\/pattern$/.exec(error.schemaPath)?.[1];
       if (definition && PATTERN_HINTS[definition]) return { path, reason: PATTERN_HINTS[definition] };
       if (error.schemaPath.includes("/version/")) return { path, reason: 'must be a version like "1.2.3"' };
-      if (error.schemaPath.includes("/pluginApiVersion/")) return { path, reason: 'must be a 1.x plugin API version like "1.0"' };
+      if (error.schemaPath.includes("/pluginApiVersion/"))
+        return { path, reason: 'must be a 1.x plugin API version like "1.0"' };
       return { path, reason: `must match the pattern ${String(params.pattern)}` };
     }
     default:

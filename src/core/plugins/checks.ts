@@ -14,7 +14,12 @@ export function checkPlugin(file: string, plugin: Plugin): PluginError[] {
   const seen = new Map<string, number>();
   plugin.actions.forEach((action, i) => {
     const earlier = seen.get(action.id);
-    if (earlier !== undefined) add(pointer("actions", i, "id"), "duplicate_action", `action id "${action.id}" is already used by /actions/${earlier}`);
+    if (earlier !== undefined)
+      add(
+        pointer("actions", i, "id"),
+        "duplicate_action",
+        `action id "${action.id}" is already used by /actions/${earlier}`,
+      );
     else seen.set(action.id, i);
     checkAction(action, pointer("actions", i), add);
   });
@@ -33,7 +38,8 @@ function checkAction(action: PluginAction, at: string, add: Add) {
     return;
   }
   for (const [k, name] of (schema.required ?? []).entries()) {
-    if (!Object.hasOwn(schema.properties, name)) add(`${at}/parameterSchema/required/${k}`, "bad_parameter_schema", `requires "${name}", which is not a property`);
+    if (!Object.hasOwn(schema.properties, name))
+      add(`${at}/parameterSchema/required/${k}`, "bad_parameter_schema", `requires "${name}", which is not a property`);
   }
   for (const [name, property] of Object.entries(schema.properties)) {
     const here = `${at}/parameterSchema${pointer("properties", name)}`;
@@ -43,7 +49,8 @@ function checkAction(action: PluginAction, at: string, add: Add) {
     }
     if (property.default !== undefined) {
       const problem = checkValue(property, property.default);
-      if (problem) add(`${here}/default`, "bad_parameter_schema", `default ${JSON.stringify(property.default)} ${problem}`);
+      if (problem)
+        add(`${here}/default`, "bad_parameter_schema", `default ${JSON.stringify(property.default)} ${problem}`);
     }
   }
   const ros2 = action.ros2;
@@ -54,13 +61,15 @@ function checkAction(action: PluginAction, at: string, add: Add) {
     }
     if (mapping.type !== "ssh" && mapping.payload) {
       for (const p of placeholders(mapping.payload, `${at}/ros2/payloadMapping/payload`)) {
-        if (!Object.hasOwn(schema.properties, p.name)) add(p.path, "unknown_placeholder", `{{${p.name}}} names no parameter of action "${action.id}"`);
+        if (!Object.hasOwn(schema.properties, p.name))
+          add(p.path, "unknown_placeholder", `{{${p.name}}} names no parameter of action "${action.id}"`);
       }
     }
   }
   if (action.http) {
     for (const p of placeholders({ url: action.http.url, body: action.http.body ?? {} }, `${at}/http`)) {
-      if (!Object.hasOwn(schema.properties, p.name)) add(p.path, "unknown_placeholder", `{{${p.name}}} names no parameter of action "${action.id}"`);
+      if (!Object.hasOwn(schema.properties, p.name))
+        add(p.path, "unknown_placeholder", `{{${p.name}}} names no parameter of action "${action.id}"`);
     }
   }
 }
@@ -68,7 +77,8 @@ function checkAction(action: PluginAction, at: string, add: Add) {
 function checkAbstract(plugin: Plugin, add: Add) {
   const unsupported = new Set((plugin.unsupported ?? []).map((u) => u.action));
   (plugin.unsupported ?? []).forEach((u, i) => {
-    if (!abstractAction(u.action)) add(pointer("unsupported", i, "action"), "unknown_abstract_action", `"${u.action}" is not an abstract action`);
+    if (!abstractAction(u.action))
+      add(pointer("unsupported", i, "action"), "unknown_abstract_action", `"${u.action}" is not an abstract action`);
   });
   for (const [id, value] of Object.entries(plugin.abstract ?? {})) {
     const vocabulary = abstractAction(id);
@@ -76,20 +86,28 @@ function checkAbstract(plugin: Plugin, add: Add) {
       add(pointer("abstract", id), "unknown_abstract_action", `"${id}" is not an abstract action`);
       continue;
     }
-    if (unsupported.has(id)) add(pointer("abstract", id), "bad_binding", `"${id}" is both mapped and listed as unsupported`);
+    if (unsupported.has(id))
+      add(pointer("abstract", id), "bad_binding", `"${id}" is both mapped and listed as unsupported`);
     const bindings: AbstractBinding[] = Array.isArray(value) ? value : [value];
     bindings.forEach((binding, n) => {
       const at = Array.isArray(value) ? pointer("abstract", id, n) : pointer("abstract", id);
       const target = plugin.actions.find((a) => a.id === binding.action);
       if (!target) return add(`${at}/action`, "bad_binding", `no action "${binding.action}" in this plugin`);
       for (const name of Object.keys(binding.parameters ?? {})) {
-        if (!Object.hasOwn(target.parameterSchema.properties, name)) add(`${at}/parameters${pointer(name)}`, "bad_binding", `"${name}" is not a parameter of action "${target.id}"`);
+        if (!Object.hasOwn(target.parameterSchema.properties, name))
+          add(
+            `${at}/parameters${pointer(name)}`,
+            "bad_binding",
+            `"${name}" is not a parameter of action "${target.id}"`,
+          );
       }
       for (const p of placeholders(binding.parameters ?? {}, `${at}/parameters`)) {
-        if (!Object.hasOwn(vocabulary.parameterSchema.properties, p.name)) add(p.path, "unknown_placeholder", `{{${p.name}}} is not a parameter of abstract action "${id}"`);
+        if (!Object.hasOwn(vocabulary.parameterSchema.properties, p.name))
+          add(p.path, "unknown_placeholder", `{{${p.name}}} is not a parameter of abstract action "${id}"`);
       }
       for (const name of Object.keys(binding.when ?? {})) {
-        if (!Object.hasOwn(vocabulary.parameterSchema.properties, name)) add(`${at}/when${pointer(name)}`, "bad_binding", `"${name}" is not a parameter of abstract action "${id}"`);
+        if (!Object.hasOwn(vocabulary.parameterSchema.properties, name))
+          add(`${at}/when${pointer(name)}`, "bad_binding", `"${name}" is not a parameter of abstract action "${id}"`);
       }
     });
   }

@@ -11,7 +11,10 @@ export const FIRST_PARTY = "first-party";
 const TRUST_ORDER: TrustLevel[] = ["community", "verified", "official"];
 
 /** The lower of two trust levels: a plugin is trusted no more than where it came from. A missing claim counts as community. */
-export function effectiveTrust(repositoryTrust: TrustLevel | undefined, pluginTrust: TrustLevel | undefined): TrustLevel {
+export function effectiveTrust(
+  repositoryTrust: TrustLevel | undefined,
+  pluginTrust: TrustLevel | undefined,
+): TrustLevel {
   const rank = (t: TrustLevel | undefined) => (t ? TRUST_ORDER.indexOf(t) : 0);
   return TRUST_ORDER[Math.min(rank(repositoryTrust), rank(pluginTrust))]!;
 }

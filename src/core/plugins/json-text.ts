@@ -84,7 +84,11 @@ function findSyntaxError(text: string): { offset: number; reason: string } {
     if (c === "f") return literal("false");
     if (c === "n") return literal("null");
     if (c === "-" || (c !== undefined && c >= "0" && c <= "9")) return number();
-    fail(i >= text.length ? "the file ends where a value was expected" : `unexpected ${describe()} where a value was expected`);
+    fail(
+      i >= text.length
+        ? "the file ends where a value was expected"
+        : `unexpected ${describe()} where a value was expected`,
+    );
   };
   const object = () => {
     i++;

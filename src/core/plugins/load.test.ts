@@ -21,11 +21,23 @@ describe("HRIStudio files load unmodified", () => {
 
 describe("bad repository files", () => {
   it.each([
-    ["plugins/index.json", '["../../etc/passwd.json"]', [{ path: "/0", reason: "must be a plugin file name ending in .json, without folders" }]],
-    ["plugins/index.json", '["a.json", "a.json"]', [{ path: "", reason: "must NOT have duplicate items (items ## 1 and 0 are identical)" }]],
+    [
+      "plugins/index.json",
+      '["../../etc/passwd.json"]',
+      [{ path: "/0", reason: "must be a plugin file name ending in .json, without folders" }],
+    ],
+    [
+      "plugins/index.json",
+      '["a.json", "a.json"]',
+      [{ path: "", reason: "must NOT have duplicate items (items ## 1 and 0 are identical)" }],
+    ],
     ["plugins/index.json", '{"plugins": []}', [{ path: "", reason: "must be a list" }]],
     ["repository.json", '{"name": "x"}', [{ path: "/id", reason: "is required but missing" }]],
-    ["repository.json", '{"id": "x", "name": "x", "trust": "total"}', [{ path: "/trust", reason: 'must be one of: "official", "verified", "community"' }]],
+    [
+      "repository.json",
+      '{"id": "x", "name": "x", "trust": "total"}',
+      [{ path: "/trust", reason: 'must be one of: "official", "verified", "community"' }],
+    ],
   ])("%s %s", (file, text, expected) => {
     const result = file === "repository.json" ? parseRepository(file, text) : parsePluginIndex(file, text);
     expect(result.ok ? [] : result.errors).toEqual(expected.map((e) => ({ file, code: "schema", ...e })));
@@ -34,7 +46,16 @@ describe("bad repository files", () => {
   it("gives line and column for invalid JSON", () => {
     expect(parsePluginIndex("plugins/index.json", '[\n  "a.json"\n  "b.json"\n]')).toEqual({
       ok: false,
-      errors: [{ file: "plugins/index.json", path: "", code: "invalid_json", reason: 'invalid JSON: expected "," or "]" in a list, found "\\""', line: 3, column: 3 }],
+      errors: [
+        {
+          file: "plugins/index.json",
+          path: "",
+          code: "invalid_json",
+          reason: 'invalid JSON: expected "," or "]" in a list, found "\\""',
+          line: 3,
+          column: 3,
+        },
+      ],
     });
   });
 });

@@ -36,6 +36,15 @@ export function parseJson(file: string, text: string): LoadResult<unknown> {
   if (parsed.ok) return { ok: true, value: parsed.value };
   return {
     ok: false,
-    errors: [{ file, path: "", code: "invalid_json", reason: `invalid JSON: ${parsed.reason}`, line: parsed.line, column: parsed.column }],
+    errors: [
+      {
+        file,
+        path: "",
+        code: "invalid_json",
+        reason: `invalid JSON: ${parsed.reason}`,
+        line: parsed.line,
+        column: parsed.column,
+      },
+    ],
   };
 }

@@ -48,7 +48,8 @@ export function validateParameters(schema: ParameterSchema, parameters: unknown)
     for (const error of validate.errors ?? []) {
       if (error.keyword === "additionalProperties") continue; // reported above
       const params = error.params as Record<string, unknown>;
-      const name = error.keyword === "required" ? String(params.missingProperty) : error.instancePath.split("/")[1] ?? "";
+      const name =
+        error.keyword === "required" ? String(params.missingProperty) : (error.instancePath.split("/")[1] ?? "");
       problems.push({ parameter: name, message: describe(error, name) });
     }
   }
@@ -67,7 +68,11 @@ function describe(error: ErrorObject, name: string): string {
     case "minLength":
       if (params.limit === 1) return `"${name}" must not be empty`;
   }
-  const inside = error.instancePath.split("/").slice(2).map((s) => `[${s}]`).join("");
+  const inside = error.instancePath
+    .split("/")
+    .slice(2)
+    .map((s) => `[${s}]`)
+    .join("");
   return `"${name}"${inside} ${error.message}`;
 }
 
@@ -77,7 +82,8 @@ export function withDefaults(schema: ParameterSchema, parameters: Record<string,
   for (const [name, property] of Object.entries(schema.properties)) {
     const fallback = property.default;
     // Only objects need a copy; the designer validates every action on each edit.
-    if (out[name] === undefined && fallback !== undefined) out[name] = typeof fallback === "object" && fallback !== null ? structuredClone(fallback) : fallback;
+    if (out[name] === undefined && fallback !== undefined)
+      out[name] = typeof fallback === "object" && fallback !== null ? structuredClone(fallback) : fallback;
   }
   return out;
 }

@@ -18,7 +18,9 @@ const storyteller: PortableExperiment = {
 };
 
 const summary = (file: string) =>
-  portability(storyteller, plugin(file)).actions.map((a) => `${a.type}: ${a.status}${a.pluginAction ? ` (${a.pluginAction})` : ""}${a.reason ? ` - ${a.reason}` : ""}`);
+  portability(storyteller, plugin(file)).actions.map(
+    (a) => `${a.type}: ${a.status}${a.pluginAction ? ` (${a.pluginAction})` : ""}${a.reason ? ` - ${a.reason}` : ""}`,
+  );
 
 describe("the Interactive Storyteller on each first-party robot", () => {
   const robotRows = (via: Record<string, string>) => [
@@ -37,12 +39,20 @@ describe("the Interactive Storyteller on each first-party robot", () => {
     `head_shake: supported (${via.head_shake})`,
     "end_trial: supported",
   ];
-  const naoqi = { say: "say_text", wave: "play_animation_hey", look_down: "look_down", nod: "play_animation_yes", head_shake: "play_animation_no" };
+  const naoqi = {
+    say: "say_text",
+    wave: "play_animation_hey",
+    look_down: "look_down",
+    nod: "play_animation_yes",
+    head_shake: "play_animation_no",
+  };
 
   it("NAO6 runs all of it", () => expect(summary("nao6-ros2.json")).toEqual(robotRows(naoqi)));
   it("Pepper runs all of it", () => expect(summary("pepper-ros2.json")).toEqual(robotRows(naoqi)));
   it("the simulated robot runs all of it", () =>
-    expect(summary("simulated.json")).toEqual(robotRows({ say: "say", wave: "gesture", look_down: "gesture", nod: "gesture", head_shake: "gesture" })));
+    expect(summary("simulated.json")).toEqual(
+      robotRows({ say: "say", wave: "gesture", look_down: "gesture", nod: "gesture", head_shake: "gesture" }),
+    ));
 
   it("TurtleBot3 cannot speak or gesture, and says why", () => {
     const report = portability(storyteller, plugin("turtlebot3-burger.json"));

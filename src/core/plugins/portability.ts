@@ -7,7 +7,11 @@ import type { Plugin } from "./types";
 
 /** The experiment shape the report reads: steps of typed actions. */
 export interface PortableExperiment {
-  steps: Array<{ id?: string; name?: string; actions: Array<{ id: string; type: string; parameters?: Record<string, unknown> }> }>;
+  steps: Array<{
+    id?: string;
+    name?: string;
+    actions: Array<{ id: string; type: string; parameters?: Record<string, unknown> }>;
+  }>;
 }
 
 export type PortabilityStatus = "supported" | "unsupported" | "parameter_problems";
@@ -45,9 +49,20 @@ export function portability(experiment: PortableExperiment, plugin: Plugin): Por
         case "unsupported":
           return { ...base, status: "unsupported", by: "robot", reason: resolution.reason };
         case "parameter_problems":
-          return { ...base, status: "parameter_problems", by: "robot", pluginAction: resolution.action?.id, problems: resolution.problems };
+          return {
+            ...base,
+            status: "parameter_problems",
+            by: "robot",
+            pluginAction: resolution.action?.id,
+            problems: resolution.problems,
+          };
       }
     }),
   );
-  return { robotId: plugin.robotId, pluginVersion: plugin.version, portable: actions.every((a) => a.status === "supported"), actions };
+  return {
+    robotId: plugin.robotId,
+    pluginVersion: plugin.version,
+    portable: actions.every((a) => a.status === "supported"),
+    actions,
+  };
 }

@@ -36,15 +36,22 @@ export function parsePluginIndex(file: string, text: string): LoadResult<string[
 }
 
 /** `patternReason` replaces ajv's regular expression, which means nothing to a researcher. */
-function check<T>(file: string, text: string, validate: ReturnType<typeof ajv.compile>, patternReason: string): LoadResult<T> {
+function check<T>(
+  file: string,
+  text: string,
+  validate: ReturnType<typeof ajv.compile>,
+  patternReason: string,
+): LoadResult<T> {
   const parsed = parseJson(file, text);
   if (!parsed.ok) return parsed;
   if (validate(parsed.value)) return { ok: true, value: parsed.value as T };
-  const errors = plainErrors(validate.errors).map((e): PluginError => ({
-    file,
-    path: e.path,
-    code: "schema",
-    reason: e.reason.startsWith("must match the pattern") ? patternReason : e.reason,
-  }));
+  const errors = plainErrors(validate.errors).map(
+    (e): PluginError => ({
+      file,
+      path: e.path,
+      code: "schema",
+      reason: e.reason.startsWith("must match the pattern") ? patternReason : e.reason,
+    }),
+  );
   return { ok: false, errors };
 }

@@ -47,7 +47,9 @@ function resolveAbstract(plugin: Plugin, id: string, parameters: unknown): Resol
   if (!binding) return { status: "parameter_problems", problems: unmatched(bindings, given) };
   const action = plugin.actions.find((a) => a.id === binding.action)!;
   // An abstract parameter left out (an optional speed) leaves the robot's default.
-  const present = Object.fromEntries(Object.entries(binding.parameters ?? {}).filter(([, t]) => !mentionsMissing(t, given)));
+  const present = Object.fromEntries(
+    Object.entries(binding.parameters ?? {}).filter(([, t]) => !mentionsMissing(t, given)),
+  );
   const filled = fillTemplate(present as JsonObject, given);
   if (!filled.ok) return { status: "parameter_problems", problems: [{ parameter: "", message: filled.reason }] };
   return checked(action, filled.value);
@@ -56,7 +58,11 @@ function resolveAbstract(plugin: Plugin, id: string, parameters: unknown): Resol
 function checked(action: PluginAction, parameters: unknown): Resolution {
   const problems = validateParameters(action.parameterSchema, parameters);
   if (problems.length) return { status: "parameter_problems", problems, action };
-  return { status: "supported", action, parameters: withDefaults(action.parameterSchema, parameters as Record<string, unknown>) };
+  return {
+    status: "supported",
+    action,
+    parameters: withDefaults(action.parameterSchema, parameters as Record<string, unknown>),
+  };
 }
 
 function mentionsMissing(template: unknown, given: Record<string, unknown>): boolean {

@@ -34,7 +34,12 @@ export function placeholders(template: unknown, base = ""): Array<{ path: string
   return found;
 }
 
-function walk(node: JsonValue, path: string, depth: number, lookup: (name: string, path: string) => JsonValue): JsonValue {
+function walk(
+  node: JsonValue,
+  path: string,
+  depth: number,
+  lookup: (name: string, path: string) => JsonValue,
+): JsonValue {
   if (depth > MAX_DEPTH) return node;
   if (typeof node === "string") return fillString(node, path, lookup);
   if (Array.isArray(node)) return node.map((item, i) => walk(item, `${path}/${i}`, depth + 1, lookup));

@@ -10,9 +10,40 @@ type Named<T> = keyof { [K in keyof T as string extends K ? never : K]: T[K] };
 type Fields<T> = { [K in Named<T>]-?: true };
 
 // The compiler makes each list name exactly the type's fields: one missing or extra does not build.
-const PLUGIN: Fields<Plugin> = { robotId: true, name: true, description: true, version: true, pluginApiVersion: true, trustLevel: true, category: true, capabilities: true, ros2Config: true, transport: true, actions: true, abstract: true, unsupported: true, stateTopics: true };
-const ACTION: Fields<PluginAction> = { id: true, name: true, description: true, category: true, icon: true, timeout: true, retryable: true, parameterSchema: true, ros2: true, http: true };
-const PARAMETERS: Fields<ParameterSchema> = { type: true, properties: true, required: true, additionalProperties: true };
+const PLUGIN: Fields<Plugin> = {
+  robotId: true,
+  name: true,
+  description: true,
+  version: true,
+  pluginApiVersion: true,
+  trustLevel: true,
+  category: true,
+  capabilities: true,
+  ros2Config: true,
+  transport: true,
+  actions: true,
+  abstract: true,
+  unsupported: true,
+  stateTopics: true,
+};
+const ACTION: Fields<PluginAction> = {
+  id: true,
+  name: true,
+  description: true,
+  category: true,
+  icon: true,
+  timeout: true,
+  retryable: true,
+  parameterSchema: true,
+  ros2: true,
+  http: true,
+};
+const PARAMETERS: Fields<ParameterSchema> = {
+  type: true,
+  properties: true,
+  required: true,
+  additionalProperties: true,
+};
 const BINDING: Fields<AbstractBinding> = { action: true, parameters: true, when: true };
 
 /** Fields of the schema the code reads through `[extra: string]` or not at all: kept as the file wrote them. */

@@ -3,7 +3,11 @@ import { canonicalJson, hashCanonical } from "./canonical";
 
 describe("canonical JSON", () => {
   it.each<[string, unknown, string]>([
-    ["sorts keys at every depth", { b: 1, a: { d: [3, { z: 1, y: 2 }], c: null } }, '{"a":{"c":null,"d":[3,{"y":2,"z":1}]},"b":1}'],
+    [
+      "sorts keys at every depth",
+      { b: 1, a: { d: [3, { z: 1, y: 2 }], c: null } },
+      '{"a":{"c":null,"d":[3,{"y":2,"z":1}]},"b":1}',
+    ],
     ["keeps array order", [3, 1, 2], "[3,1,2]"],
     ["drops undefined values", { a: undefined, b: 1 }, '{"b":1}'],
     ["escapes text the JSON way", { t: 'quote " brace { newline \n' }, '{"t":"quote \\" brace { newline \\n"}'],
@@ -12,7 +16,9 @@ describe("canonical JSON", () => {
   });
 
   it.each([[Number.NaN], [Number.POSITIVE_INFINITY]])("refuses %s and says where", (bad) => {
-    expect(() => canonicalJson({ steps: [{ seconds: bad }] })).toThrow(`$.steps[0].seconds: ${bad} cannot be stored as JSON`);
+    expect(() => canonicalJson({ steps: [{ seconds: bad }] })).toThrow(
+      `$.steps[0].seconds: ${bad} cannot be stored as JSON`,
+    );
   });
 
   it("hashes equal designs equally, whatever their key order", () => {

@@ -11,7 +11,11 @@ describe("the snapshot of a design", () => {
       ...design,
       studyId: "study-1",
       revision: 7,
-      steps: design.steps.map((s, i) => ({ ...s, position: i, actions: s.actions.map((a) => ({ ...a, createdAt: new Date(0) })) })),
+      steps: design.steps.map((s, i) => ({
+        ...s,
+        position: i,
+        actions: s.actions.map((a) => ({ ...a, createdAt: new Date(0) })),
+      })),
     };
     expect(snapshotOf(stored)).toEqual(snapshotOf(design));
     expect(Object.keys(snapshotOf(stored).experiment).sort()).toEqual(["description", "id", "name", "robotPluginId"]);

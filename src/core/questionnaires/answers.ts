@@ -10,14 +10,22 @@ export type Answers = Record<string, Answer>;
 function problemWith(item: Item, value: Answer): string | null {
   switch (item.kind) {
     case "likert":
-      return Number.isInteger(value) && (value as number) >= item.scale.min && (value as number) <= item.scale.max ? null : `choose a point from ${item.scale.min} to ${item.scale.max}`;
+      return Number.isInteger(value) && (value as number) >= item.scale.min && (value as number) <= item.scale.max
+        ? null
+        : `choose a point from ${item.scale.min} to ${item.scale.max}`;
     case "single":
       return typeof value === "string" && item.options.includes(value) ? null : "choose one of the options";
     case "multiple":
-      return Array.isArray(value) && value.every((v) => item.options.includes(v)) && new Set(value).size === value.length ? null : "choose among the options";
+      return Array.isArray(value) &&
+        value.every((v) => item.options.includes(v)) &&
+        new Set(value).size === value.length
+        ? null
+        : "choose among the options";
     case "short_text":
     case "long_text":
-      return typeof value === "string" && value.length <= (item.kind === "short_text" ? 500 : 10_000) ? null : "is too long";
+      return typeof value === "string" && value.length <= (item.kind === "short_text" ? 500 : 10_000)
+        ? null
+        : "is too long";
     case "number":
       if (typeof value !== "number" || !Number.isFinite(value)) return "must be a number";
       if (item.min !== undefined && value < item.min) return `must be at least ${item.min}`;
@@ -27,7 +35,8 @@ function problemWith(item: Item, value: Answer): string | null {
   }
 }
 
-const isEmpty = (v: Answer | undefined) => v === undefined || v === "" || (Array.isArray(v) && v.length === 0) || v === false;
+const isEmpty = (v: Answer | undefined) =>
+  v === undefined || v === "" || (Array.isArray(v) && v.length === 0) || v === false;
 
 /**
  * Problems as "item: reason". A draft may be incomplete; a final answer set
@@ -41,7 +50,10 @@ export function answerProblems(definition: Definition, answers: Answers, final: 
   for (const item of known.values()) {
     const value = answers[item.id];
     if (isEmpty(value)) {
-      if (final && item.required) problems.push(`${item.text.slice(0, 80)}: ${item.kind === "consent" ? "please agree to take part, or leave the study" : "please answer"}`);
+      if (final && item.required)
+        problems.push(
+          `${item.text.slice(0, 80)}: ${item.kind === "consent" ? "please agree to take part, or leave the study" : "please answer"}`,
+        );
       continue;
     }
     const problem = problemWith(item, value!);
@@ -52,7 +64,12 @@ export function answerProblems(definition: Definition, answers: Answers, final: 
 
 /** The order a participant sees: sections in place, a randomised section's items shuffled from a per-link seed. */
 export function presentedOrder(definition: Definition, seed: string): Definition {
-  return { ...definition, sections: definition.sections.map((s) => (s.randomize ? { ...s, items: shuffled(s.items, seededRandom(`${seed}:${s.id}`)) } : s)) };
+  return {
+    ...definition,
+    sections: definition.sections.map((s) =>
+      s.randomize ? { ...s, items: shuffled(s.items, seededRandom(`${seed}:${s.id}`)) } : s,
+    ),
+  };
 }
 
 /** The instrument's published score, when the questionnaire is one and every item is answered. */

@@ -3,7 +3,8 @@
 // A published version freezes this; answers point at the version shown.
 import { z } from "zod";
 
-const text = (max: number) => z.string().trim().min(1, "must not be empty").max(max, `must be at most ${max} characters`);
+const text = (max: number) =>
+  z.string().trim().min(1, "must not be empty").max(max, `must be at most ${max} characters`);
 const itemBase = { id: z.string().min(1).max(100), text: text(1000), required: z.boolean().default(false) };
 
 export const itemSchema = z.discriminatedUnion("kind", [
@@ -11,11 +12,24 @@ export const itemSchema = z.discriminatedUnion("kind", [
     ...itemBase,
     kind: z.literal("likert"),
     scale: z
-      .object({ min: z.number().int().min(0).max(1), max: z.number().int().min(2).max(11), minLabel: z.string().max(100).default(""), maxLabel: z.string().max(100).default("") })
+      .object({
+        min: z.number().int().min(0).max(1),
+        max: z.number().int().min(2).max(11),
+        minLabel: z.string().max(100).default(""),
+        maxLabel: z.string().max(100).default(""),
+      })
       .refine((s) => s.max > s.min, "the scale must run upwards"),
   }),
-  z.object({ ...itemBase, kind: z.literal("single"), options: z.array(text(200)).min(2, "needs at least 2 options").max(30) }),
-  z.object({ ...itemBase, kind: z.literal("multiple"), options: z.array(text(200)).min(2, "needs at least 2 options").max(30) }),
+  z.object({
+    ...itemBase,
+    kind: z.literal("single"),
+    options: z.array(text(200)).min(2, "needs at least 2 options").max(30),
+  }),
+  z.object({
+    ...itemBase,
+    kind: z.literal("multiple"),
+    options: z.array(text(200)).min(2, "needs at least 2 options").max(30),
+  }),
   z.object({ ...itemBase, kind: z.literal("short_text") }),
   z.object({ ...itemBase, kind: z.literal("long_text") }),
   z.object({ ...itemBase, kind: z.literal("number"), min: z.number().optional(), max: z.number().optional() }),
@@ -52,7 +66,12 @@ export const definitionSchema = z
     const seen = new Set<string>();
     d.sections.forEach((s, si) =>
       s.items.forEach((item, ii) => {
-        if (seen.has(item.id)) ctx.addIssue({ code: "custom", path: ["sections", si, "items", ii, "id"], message: `"${item.id}" is used twice` });
+        if (seen.has(item.id))
+          ctx.addIssue({
+            code: "custom",
+            path: ["sections", si, "items", ii, "id"],
+            message: `"${item.id}" is used twice`,
+          });
         seen.add(item.id);
       }),
     );

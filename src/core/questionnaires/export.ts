@@ -13,18 +13,44 @@ export interface SubmittedResponse {
   score: unknown;
 }
 
-export const ANSWER_COLUMNS = ["participant", "trial_id", "questionnaire", "version", "item_id", "item", "answer"] as const;
+export const ANSWER_COLUMNS = [
+  "participant",
+  "trial_id",
+  "questionnaire",
+  "version",
+  "item_id",
+  "item",
+  "answer",
+] as const;
 
 // A number answer stays a number (a scale's -3 is written -3); text and choices are text.
-const answerCell = (value: unknown): CsvValue => (Array.isArray(value) ? value.join("; ") : typeof value === "number" ? value : value === undefined || value === null ? "" : String(value));
+const answerCell = (value: unknown): CsvValue =>
+  Array.isArray(value)
+    ? value.join("; ")
+    : typeof value === "number"
+      ? value
+      : value === undefined || value === null
+        ? ""
+        : String(value);
 
 export function answersCsv(responses: SubmittedResponse[]): string {
   const rows = responses.flatMap((r): CsvValue[][] => {
     const answers = (r.answers ?? {}) as Record<string, unknown>;
     const base = [r.participantCode, r.trialId ?? "", r.questionnaire, r.version];
-    const itemRows = items(r.definition as Definition).map((item) => [...base, item.id, item.text, answerCell(answers[item.id])]);
+    const itemRows = items(r.definition as Definition).map((item) => [
+      ...base,
+      item.id,
+      item.text,
+      answerCell(answers[item.id]),
+    ]);
     const score = r.score as { score?: number; subscales?: Record<string, number> } | null;
-    const scoreRows = score?.score === undefined ? [] : [[...base, "score", "score", score.score], ...Object.entries(score.subscales ?? {}).map(([name, value]) => [...base, `score.${name}`, name, value])];
+    const scoreRows =
+      score?.score === undefined
+        ? []
+        : [
+            [...base, "score", "score", score.score],
+            ...Object.entries(score.subscales ?? {}).map(([name, value]) => [...base, `score.${name}`, name, value]),
+          ];
     return [...itemRows, ...scoreRows];
   });
   return csvDocument(ANSWER_COLUMNS, rows);

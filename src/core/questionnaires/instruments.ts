@@ -18,14 +18,36 @@ const SUS_ITEMS = [
 // Godspeed (Bartneck et al., 2009), in the published order: anthropomorphism,
 // animacy, likeability, perceived intelligence, perceived safety.
 const GODSPEED_PAIRS: Array<[string, string]> = [
-  ["Fake", "Natural"], ["Machinelike", "Humanlike"], ["Unconscious", "Conscious"], ["Artificial", "Lifelike"], ["Moving rigidly", "Moving elegantly"],
-  ["Dead", "Alive"], ["Stagnant", "Lively"], ["Mechanical", "Organic"], ["Artificial", "Lifelike"], ["Inert", "Interactive"], ["Apathetic", "Responsive"],
-  ["Dislike", "Like"], ["Unfriendly", "Friendly"], ["Unkind", "Kind"], ["Unpleasant", "Pleasant"], ["Awful", "Nice"],
-  ["Incompetent", "Competent"], ["Ignorant", "Knowledgeable"], ["Irresponsible", "Responsible"], ["Unintelligent", "Intelligent"], ["Foolish", "Sensible"],
-  ["Anxious", "Relaxed"], ["Agitated", "Calm"], ["Quiescent", "Surprised"],
+  ["Fake", "Natural"],
+  ["Machinelike", "Humanlike"],
+  ["Unconscious", "Conscious"],
+  ["Artificial", "Lifelike"],
+  ["Moving rigidly", "Moving elegantly"],
+  ["Dead", "Alive"],
+  ["Stagnant", "Lively"],
+  ["Mechanical", "Organic"],
+  ["Artificial", "Lifelike"],
+  ["Inert", "Interactive"],
+  ["Apathetic", "Responsive"],
+  ["Dislike", "Like"],
+  ["Unfriendly", "Friendly"],
+  ["Unkind", "Kind"],
+  ["Unpleasant", "Pleasant"],
+  ["Awful", "Nice"],
+  ["Incompetent", "Competent"],
+  ["Ignorant", "Knowledgeable"],
+  ["Irresponsible", "Responsible"],
+  ["Unintelligent", "Intelligent"],
+  ["Foolish", "Sensible"],
+  ["Anxious", "Relaxed"],
+  ["Agitated", "Calm"],
+  ["Quiescent", "Surprised"],
 ];
 
-export const INSTRUMENT_NAMES: Record<Instrument, string> = { sus: "System Usability Scale (SUS)", godspeed: "Godspeed questionnaire" };
+export const INSTRUMENT_NAMES: Record<Instrument, string> = {
+  sus: "System Usability Scale (SUS)",
+  godspeed: "Godspeed questionnaire",
+};
 
 export function instrumentDefinition(instrument: Instrument): Definition {
   if (instrument === "sus") {
@@ -38,7 +60,13 @@ export function instrumentDefinition(instrument: Instrument): Definition {
           id: "sus",
           title: "",
           randomize: false,
-          items: SUS_ITEMS.map((text, i) => ({ id: `sus${i + 1}`, kind: "likert", text, required: true, scale: { min: 1, max: 5, minLabel: "Strongly disagree", maxLabel: "Strongly agree" } })),
+          items: SUS_ITEMS.map((text, i) => ({
+            id: `sus${i + 1}`,
+            kind: "likert",
+            text,
+            required: true,
+            scale: { min: 1, max: 5, minLabel: "Strongly disagree", maxLabel: "Strongly agree" },
+          })),
         },
       ],
     };
@@ -52,7 +80,13 @@ export function instrumentDefinition(instrument: Instrument): Definition {
         id: "godspeed",
         title: "",
         randomize: false,
-        items: GODSPEED_PAIRS.map(([low, high], i) => ({ id: `gs${i + 1}`, kind: "likert", text: `${low} – ${high}`, required: true, scale: { min: 1, max: 5, minLabel: low, maxLabel: high } })),
+        items: GODSPEED_PAIRS.map(([low, high], i) => ({
+          id: `gs${i + 1}`,
+          kind: "likert",
+          text: `${low} – ${high}`,
+          required: true,
+          scale: { min: 1, max: 5, minLabel: low, maxLabel: high },
+        })),
       },
     ],
   };

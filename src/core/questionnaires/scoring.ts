@@ -3,7 +3,13 @@
 
 export type Scored = { ok: true; score: number; subscales?: Record<string, number> } | { ok: false; reason: string };
 
-function checkAnswers(answers: readonly number[], count: number, min: number, max: number, name: string): string | null {
+function checkAnswers(
+  answers: readonly number[],
+  count: number,
+  min: number,
+  max: number,
+  name: string,
+): string | null {
   if (answers.length !== count) return `${name} has ${count} items; ${answers.length} answers were given.`;
   const bad = answers.findIndex((a) => !Number.isInteger(a) || a < min || a > max);
   return bad >= 0 ? `${name} item ${bad + 1}: the answer must be a whole number from ${min} to ${max}.` : null;
@@ -37,7 +43,10 @@ export function scoreGodspeed(answers: readonly number[]): Scored {
   const problem = checkAnswers(answers, 24, 1, 5, "Godspeed");
   if (problem) return { ok: false, reason: problem };
   const subscales = Object.fromEntries(
-    Object.entries(GODSPEED_SUBSCALES).map(([name, items]) => [name, items.reduce((t, i) => t + answers[i - 1]!, 0) / items.length]),
+    Object.entries(GODSPEED_SUBSCALES).map(([name, items]) => [
+      name,
+      items.reduce((t, i) => t + answers[i - 1]!, 0) / items.length,
+    ]),
   );
   const means = Object.values(subscales);
   return { ok: true, score: means.reduce((a, b) => a + b, 0) / means.length, subscales };

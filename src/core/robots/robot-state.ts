@@ -20,5 +20,14 @@ export interface RobotState {
 }
 
 export function initialState(): RobotState {
-  return { speaking: null, lastSaid: null, animation: null, gesture: null, posture: "stand", velocity: { linear: 0, angular: 0 }, headPitch: 0, battery: 100 };
+  return {
+    speaking: null,
+    lastSaid: null,
+    animation: null,
+    gesture: null,
+    posture: "stand",
+    velocity: { linear: 0, angular: 0 },
+    headPitch: 0,
+    battery: 100,
+  };
 }

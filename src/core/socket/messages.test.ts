@@ -5,12 +5,28 @@ import { parseClientMessage, parseServerMessage, SOCKET_PROTOCOL_VERSION, toWire
 describe("the socket protocol", () => {
   it.each<[string, string, string | null]>([
     ["a hello", JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: "t", lastSeq: 0 }), null],
-    ["a command", JSON.stringify({ type: "command", requestId: "r1", command: { kind: "answer", actionId: "a", optionId: "o" } }), null],
+    [
+      "a command",
+      JSON.stringify({ type: "command", requestId: "r1", command: { kind: "answer", actionId: "a", optionId: "o" } }),
+      null,
+    ],
     ["not JSON", "{nope", "The message is not valid JSON."],
     ["an unknown type", JSON.stringify({ type: "shout" }), "The message is not understood: type: "],
-    ["an old protocol version", JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION - 1, token: "t", lastSeq: 0 }), "The message is not understood: version: "],
-    ["a command missing a field", JSON.stringify({ type: "command", requestId: "r1", command: { kind: "trigger" } }), "The message is not understood: command.actionId: "],
-    ["a negative lastSeq", JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: "t", lastSeq: -1 }), "The message is not understood: lastSeq: "],
+    [
+      "an old protocol version",
+      JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION - 1, token: "t", lastSeq: 0 }),
+      "The message is not understood: version: ",
+    ],
+    [
+      "a command missing a field",
+      JSON.stringify({ type: "command", requestId: "r1", command: { kind: "trigger" } }),
+      "The message is not understood: command.actionId: ",
+    ],
+    [
+      "a negative lastSeq",
+      JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: "t", lastSeq: -1 }),
+      "The message is not understood: lastSeq: ",
+    ],
   ])("%s", (_name, raw, reasonStart) => {
     const parsed = parseClientMessage(raw);
     if (reasonStart === null) expect(parsed.ok).toBe(true);
@@ -18,8 +34,16 @@ describe("the socket protocol", () => {
   });
 });
 
-const stored: StoredEvent = { type: "trial.started", seq: 1, relMs: 0, trialId: "t1", serverTime: new Date("2026-01-01T10:00:00.000Z"), actorId: "u1" };
-const welcome = (events: unknown[], version: number = SOCKET_PROTOCOL_VERSION) => JSON.stringify({ type: "welcome", version, trialId: "t1", role: "wizard", mayRun: true, events, viewers: [] });
+const stored: StoredEvent = {
+  type: "trial.started",
+  seq: 1,
+  relMs: 0,
+  trialId: "t1",
+  serverTime: new Date("2026-01-01T10:00:00.000Z"),
+  actorId: "u1",
+};
+const welcome = (events: unknown[], version: number = SOCKET_PROTOCOL_VERSION) =>
+  JSON.stringify({ type: "welcome", version, trialId: "t1", role: "wizard", mayRun: true, events, viewers: [] });
 
 describe("the browser's check of what the runtime sends", () => {
   it.each<[string, string, string | null]>([
@@ -30,10 +54,26 @@ describe("the browser's check of what the runtime sends", () => {
     ["the robot's status", JSON.stringify({ type: "robot", connected: false, detail: "unplugged" }), null],
     ["not JSON", "{nope", "The message is not valid JSON."],
     ["an unknown type", JSON.stringify({ type: "shout" }), "The message is not understood: type: "],
-    ["a welcome from another protocol version", welcome([], SOCKET_PROTOCOL_VERSION + 1), "The message is not understood: version: "],
-    ["an event without its place in the log", welcome([{ ...toWire(stored), seq: undefined }]), "The message is not understood: events.0: "],
-    ["an event whose time is not a string", JSON.stringify({ type: "events", events: [{ ...toWire(stored), serverTime: 5 }] }), "The message is not understood: events.0: "],
-    ["an ack without its request", JSON.stringify({ type: "ack", seqs: [] }), "The message is not understood: requestId: "],
+    [
+      "a welcome from another protocol version",
+      welcome([], SOCKET_PROTOCOL_VERSION + 1),
+      "The message is not understood: version: ",
+    ],
+    [
+      "an event without its place in the log",
+      welcome([{ ...toWire(stored), seq: undefined }]),
+      "The message is not understood: events.0: ",
+    ],
+    [
+      "an event whose time is not a string",
+      JSON.stringify({ type: "events", events: [{ ...toWire(stored), serverTime: 5 }] }),
+      "The message is not understood: events.0: ",
+    ],
+    [
+      "an ack without its request",
+      JSON.stringify({ type: "ack", seqs: [] }),
+      "The message is not understood: requestId: ",
+    ],
   ])("%s", (_name, raw, reasonStart) => {
     const parsed = parseServerMessage(raw);
     if (reasonStart === null) expect(parsed.ok).toBe(true);
@@ -42,6 +82,9 @@ describe("the browser's check of what the runtime sends", () => {
 
   it("carries a stored event as the same event with its time as an ISO string", () => {
     const parsed = parseServerMessage(JSON.stringify({ type: "events", events: [toWire(stored)] }));
-    expect(parsed).toEqual({ ok: true, message: { type: "events", events: [{ ...stored, serverTime: "2026-01-01T10:00:00.000Z" }] } });
+    expect(parsed).toEqual({
+      ok: true,
+      message: { type: "events", events: [{ ...stored, serverTime: "2026-01-01T10:00:00.000Z" }] },
+    });
   });
 });

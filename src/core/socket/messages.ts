@@ -26,16 +26,30 @@ export const commandSchema = z.discriminatedUnion("kind", [
   z.object({ kind: z.literal("complete") }),
   z.object({ kind: z.literal("emergency_stop") }),
   z.object({ kind: z.literal("note"), text: z.string().min(1).max(5000) }),
-  z.object({ kind: z.literal("recording"), recordingId: id, offsetMs: z.number().finite().min(-86_400_000).max(86_400_000) }),
+  z.object({
+    kind: z.literal("recording"),
+    recordingId: id,
+    offsetMs: z.number().finite().min(-86_400_000).max(86_400_000),
+  }),
 ]);
 
 export type WizardCommand = z.infer<typeof commandSchema>;
 
 export const clientMessageSchema = z.discriminatedUnion("type", [
   // First and only once on a connection (the token works once); `lastSeq` asks for exactly what was missed.
-  z.object({ type: z.literal("hello"), version: z.literal(SOCKET_PROTOCOL_VERSION), token: z.string().min(1).max(4000), lastSeq: z.number().int().min(0) }),
+  z.object({
+    type: z.literal("hello"),
+    version: z.literal(SOCKET_PROTOCOL_VERSION),
+    token: z.string().min(1).max(4000),
+    lastSeq: z.number().int().min(0),
+  }),
   z.object({ type: z.literal("command"), requestId: id, command: commandSchema }),
-  z.object({ type: z.literal("annotate"), requestId: id, label: z.string().min(1).max(200), note: z.string().max(5000).default("") }),
+  z.object({
+    type: z.literal("annotate"),
+    requestId: id,
+    label: z.string().min(1).max(200),
+    note: z.string().max(5000).default(""),
+  }),
   z.object({ type: z.literal("ping") }),
 ]);
 
@@ -48,7 +62,14 @@ export const toWire = (event: StoredEvent): WireEvent => ({ ...event, serverTime
 
 // The log's own fields are checked; the event inside is the server's engine's
 // own output, which the browser folds with the same engine.
-const logFields = z.object({ seq: z.number().int().min(1), type: z.string(), relMs: z.number().nullable(), trialId: id, serverTime: z.string(), actorId: z.string().nullable() });
+const logFields = z.object({
+  seq: z.number().int().min(1),
+  type: z.string(),
+  relMs: z.number().nullable(),
+  trialId: id,
+  serverTime: z.string(),
+  actorId: z.string().nullable(),
+});
 const wireEvent = z.custom<WireEvent>((e) => logFields.safeParse(e).success, "not a stored event");
 
 const viewer = z.object({ userId: z.string(), name: z.string(), role: z.string() });
@@ -56,14 +77,25 @@ const viewer = z.object({ userId: z.string(), name: z.string(), role: z.string()
 export const serverMessageSchema = z.discriminatedUnion("type", [
   // `events` is empty unless the caller may read the log (see mayReadTrialLog);
   // `mayRun`: whether this caller may command this trial now.
-  z.object({ type: z.literal("welcome"), version: z.literal(SOCKET_PROTOCOL_VERSION), trialId: id, role: z.string(), mayRun: z.boolean(), events: z.array(wireEvent), viewers: z.array(viewer) }),
+  z.object({
+    type: z.literal("welcome"),
+    version: z.literal(SOCKET_PROTOCOL_VERSION),
+    trialId: id,
+    role: z.string(),
+    mayRun: z.boolean(),
+    events: z.array(wireEvent),
+    viewers: z.array(viewer),
+  }),
   // The caller's role or rights changed while connected (a removed member is disconnected instead).
   z.object({ type: z.literal("access"), role: z.string(), mayRun: z.boolean() }),
   z.object({ type: z.literal("events"), events: z.array(wireEvent) }),
   z.object({ type: z.literal("ack"), requestId: z.string(), seqs: z.array(z.number().int()) }),
   z.object({ type: z.literal("rejected"), requestId: z.string().nullable(), reason: z.string() }),
   z.object({ type: z.literal("presence"), viewers: z.array(viewer) }),
-  z.object({ type: z.literal("annotation"), annotation: z.object({ id, relMs: z.number(), label: z.string(), note: z.string(), authorName: z.string() }) }),
+  z.object({
+    type: z.literal("annotation"),
+    annotation: z.object({ id, relMs: z.number(), label: z.string(), note: z.string(), authorName: z.string() }),
+  }),
   z.object({ type: z.literal("robot"), connected: z.boolean(), detail: z.string().optional() }),
   z.object({ type: z.literal("pong") }),
 ]);
@@ -83,7 +115,10 @@ function parseWith<M>(schema: z.ZodType<M>, raw: string): Parsed<M> {
   const parsed = schema.safeParse(data);
   if (parsed.success) return { ok: true, message: parsed.data };
   const issue = parsed.error.issues[0]!;
-  return { ok: false, reason: `The message is not understood: ${issue.path.join(".") || "(message)"}: ${issue.message}` };
+  return {
+    ok: false,
+    reason: `The message is not understood: ${issue.path.join(".") || "(message)"}: ${issue.message}`,
+  };
 }
 
 /** The runtime's check of what a browser sends. */

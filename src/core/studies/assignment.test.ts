@@ -12,7 +12,8 @@ describe("assigning conditions", () => {
     ["balanced", { kind: "balanced", perCondition: 2 }],
     ["counterbalanced", { kind: "counterbalanced" }],
   ])("%s: the same seed gives the same assignments, another seed others", (_name, strategy) => {
-    const run = (seed: string) => Array.from({ length: 40 }, (_, i) => JSON.stringify(assign(strategy, ["A", "B", "C"], seed, i)));
+    const run = (seed: string) =>
+      Array.from({ length: 40 }, (_, i) => JSON.stringify(assign(strategy, ["A", "B", "C"], seed, i)));
     expect(run("study-42")).toEqual(run("study-42"));
     if (strategy.kind !== "counterbalanced") expect(run("study-42")).not.toEqual(run("study-43"));
   });
@@ -34,23 +35,30 @@ describe("assigning conditions", () => {
   });
 
   it("fixed takes the researcher's choice and refuses anything else", () => {
-    expect(assign({ kind: "fixed" }, conditions, "s", 0, "TurtleBot voice only")).toEqual({ condition: "TurtleBot voice only" });
-    expect(() => assign({ kind: "fixed" }, conditions, "s", 0, "Pepper")).toThrow("Choose one of the conditions: NAO with gestures, TurtleBot voice only.");
+    expect(assign({ kind: "fixed" }, conditions, "s", 0, "TurtleBot voice only")).toEqual({
+      condition: "TurtleBot voice only",
+    });
+    expect(() => assign({ kind: "fixed" }, conditions, "s", 0, "Pepper")).toThrow(
+      "Choose one of the conditions: NAO with gestures, TurtleBot voice only.",
+    );
   });
 
-  it.each([2, 3, 4, 5, 6])("a balanced Latin square of %i: every condition once per position, and carry-over balanced", (n) => {
-    const rows = balancedLatinSquare(n);
-    expect(rows).toHaveLength(n % 2 === 0 ? n : 2 * n);
-    for (const row of rows) expect([...row].sort((a, b) => a - b)).toEqual(Array.from({ length: n }, (_, i) => i));
-    for (let p = 0; p < n; p++) {
-      const column = counts(rows.map((r) => String(r[p])));
-      expect(new Set(Object.values(column)).size).toBe(1);
-    }
-    // Every ordered pair (a right before b) occurs equally often.
-    const pairs = counts(rows.flatMap((r) => r.slice(1).map((b, i) => `${r[i]}>${b}`)));
-    expect(Object.keys(pairs)).toHaveLength(n * (n - 1));
-    expect(new Set(Object.values(pairs)).size).toBe(1);
-  });
+  it.each([2, 3, 4, 5, 6])(
+    "a balanced Latin square of %i: every condition once per position, and carry-over balanced",
+    (n) => {
+      const rows = balancedLatinSquare(n);
+      expect(rows).toHaveLength(n % 2 === 0 ? n : 2 * n);
+      for (const row of rows) expect([...row].sort((a, b) => a - b)).toEqual(Array.from({ length: n }, (_, i) => i));
+      for (let p = 0; p < n; p++) {
+        const column = counts(rows.map((r) => String(r[p])));
+        expect(new Set(Object.values(column)).size).toBe(1);
+      }
+      // Every ordered pair (a right before b) occurs equally often.
+      const pairs = counts(rows.flatMap((r) => r.slice(1).map((b, i) => `${r[i]}>${b}`)));
+      expect(Object.keys(pairs)).toHaveLength(n * (n - 1));
+      expect(new Set(Object.values(pairs)).size).toBe(1);
+    },
+  );
 
   it("refuses a study without conditions and a negative position", () => {
     expect(() => assign({ kind: "random" }, [], "s", 0)).toThrow("The study has no conditions to assign.");

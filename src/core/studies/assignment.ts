@@ -15,19 +15,29 @@ export type Strategy =
 
 export type Assignment = { condition: string } | { order: string[] };
 
-export function assign(strategy: Strategy, conditions: readonly string[], seed: string, position: number, fixed?: string): Assignment {
+export function assign(
+  strategy: Strategy,
+  conditions: readonly string[],
+  seed: string,
+  position: number,
+  fixed?: string,
+): Assignment {
   if (conditions.length === 0) throw new Error("The study has no conditions to assign.");
   if (!Number.isInteger(position) || position < 0) throw new Error("position must be a whole number from 0.");
   switch (strategy.kind) {
     case "fixed":
-      if (!fixed || !conditions.includes(fixed)) throw new Error(`Choose one of the conditions: ${conditions.join(", ")}.`);
+      if (!fixed || !conditions.includes(fixed))
+        throw new Error(`Choose one of the conditions: ${conditions.join(", ")}.`);
       return { condition: fixed };
     case "random":
       return { condition: conditions[Math.floor(seededRandom(`${seed}:${position}`)() * conditions.length)]! };
     case "balanced": {
       const size = conditions.length * strategy.perCondition;
       const block = Math.floor(position / size);
-      const order = shuffled(conditions.flatMap((c) => Array<string>(strategy.perCondition).fill(c)), seededRandom(`${seed}:block:${block}`));
+      const order = shuffled(
+        conditions.flatMap((c) => Array<string>(strategy.perCondition).fill(c)),
+        seededRandom(`${seed}:block:${block}`),
+      );
       return { condition: order[position % size]! };
     }
     case "counterbalanced": {
@@ -44,7 +54,10 @@ export function assign(strategy: Strategy, conditions: readonly string[], seed: 
  */
 export function balancedLatinSquare(n: number): number[][] {
   // Williams' first row is 0, 1, n-1, 2, n-2, …; each next row adds 1 (mod n).
-  const base = [0, ...Array.from({ length: n - 1 }, (_, i) => (i % 2 === 0 ? Math.floor(i / 2) + 1 : n - Math.ceil(i / 2)))];
+  const base = [
+    0,
+    ...Array.from({ length: n - 1 }, (_, i) => (i % 2 === 0 ? Math.floor(i / 2) + 1 : n - Math.ceil(i / 2))),
+  ];
   const rows = Array.from({ length: n }, (_, r) => base.map((c) => (c + r) % n));
   return n % 2 === 0 ? rows : [...rows, ...rows.map((row) => [...row].reverse())];
 }

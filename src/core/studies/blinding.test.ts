@@ -15,12 +15,16 @@ describe("who a blind hides what from", () => {
     ["researcher", "completed", false, false],
     ["observer", "archived", false, false],
     ["wizard", "completed", true, false],
-  ])("%s in an %s study with both blinds: conditions hidden %s, results hidden %s", (role, status, conditions, results) => {
-    expect(blindingFor(role, both, status)).toEqual({ conditionsHidden: conditions, resultsHidden: results });
-  });
+  ])(
+    "%s in an %s study with both blinds: conditions hidden %s, results hidden %s",
+    (role, status, conditions, results) => {
+      expect(blindingFor(role, both, status)).toEqual({ conditionsHidden: conditions, resultsHidden: results });
+    },
+  );
 
   it("hides nothing from anyone when the study has no blinds", () => {
-    for (const role of ["owner", "researcher", "wizard", "observer"] as const) expect(blindingFor(role, none, "active")).toEqual({ conditionsHidden: false, resultsHidden: false });
+    for (const role of ["owner", "researcher", "wizard", "observer"] as const)
+      expect(blindingFor(role, none, "active")).toEqual({ conditionsHidden: false, resultsHidden: false });
   });
 
   it.each([
@@ -31,12 +35,21 @@ describe("who a blind hides what from", () => {
     ["researcher", "experiment.read", true],
     ["owner", "data.read", true],
   ] as const)("the policy, for a blinded %s, answers %s with %s", (role, op, allowed) => {
-    expect(decide({ systemRole: "researcher", studyRole: role, blinding: blindingFor(role, both, "active") }, op).allow).toBe(allowed);
+    expect(
+      decide({ systemRole: "researcher", studyRole: role, blinding: blindingFor(role, both, "active") }, op).allow,
+    ).toBe(allowed);
   });
 
   it("says why in words when a blind refuses", () => {
-    const d = decide({ systemRole: "wizard", studyRole: "wizard", blinding: { conditionsHidden: true, resultsHidden: false } }, "experiment.read");
-    expect(d).toMatchObject({ allow: false, hidden: false, reason: expect.stringMatching(/hides its conditions from wizards/) });
+    const d = decide(
+      { systemRole: "wizard", studyRole: "wizard", blinding: { conditionsHidden: true, resultsHidden: false } },
+      "experiment.read",
+    );
+    expect(d).toMatchObject({
+      allow: false,
+      hidden: false,
+      reason: expect.stringMatching(/hides its conditions from wizards/),
+    });
   });
 
   it("strips a trial of everything that points at its condition", () => {
@@ -47,10 +60,19 @@ describe("who a blind hides what from", () => {
       versionId: "v1",
       version: 3,
       participantCode: "P001",
-      protocol: { schemaVersion: 1, experiment: { id: "e1", name: "NAO with gestures", description: "gestures", robotPluginId: "nao6-ros2" }, steps: [] },
+      protocol: {
+        schemaVersion: 1,
+        experiment: { id: "e1", name: "NAO with gestures", description: "gestures", robotPluginId: "nao6-ros2" },
+        steps: [],
+      },
     };
     const blinded = blindTrial(trial);
     expect(JSON.stringify(blinded)).not.toMatch(/e1|v1|gestures/);
-    expect(blinded).toMatchObject({ id: "t1", participantCode: "P001", experimentName: BLINDED_NAME, protocol: { experiment: { robotPluginId: "nao6-ros2" }, steps: [] } });
+    expect(blinded).toMatchObject({
+      id: "t1",
+      participantCode: "P001",
+      experimentName: BLINDED_NAME,
+      protocol: { experiment: { robotPluginId: "nao6-ros2" }, steps: [] },
+    });
   });
 });

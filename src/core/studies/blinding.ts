@@ -24,7 +24,15 @@ export function blindingFor(role: StudyRole | null, settings: StudySettings, stu
 export const BLINDED_NAME = "Session (condition hidden)";
 
 /** A trial as a blinded wizard may see it: nothing that names or points at its condition. */
-export function blindTrial<T extends { experimentId?: string | null; experimentName?: string | null; versionId?: string | null; version?: number | null; protocol?: unknown }>(trial: T): T {
+export function blindTrial<
+  T extends {
+    experimentId?: string | null;
+    experimentName?: string | null;
+    versionId?: string | null;
+    version?: number | null;
+    protocol?: unknown;
+  },
+>(trial: T): T {
   const protocol = trial.protocol as { experiment?: Record<string, unknown> } | undefined;
   return {
     ...trial,
@@ -32,6 +40,18 @@ export function blindTrial<T extends { experimentId?: string | null; experimentN
     ...("experimentName" in trial ? { experimentName: BLINDED_NAME } : {}),
     ...("versionId" in trial ? { versionId: null } : {}),
     ...("version" in trial ? { version: null } : {}),
-    ...(protocol?.experiment ? { protocol: { ...protocol, experiment: { id: "", name: BLINDED_NAME, description: "", robotPluginId: protocol.experiment.robotPluginId } } } : {}),
+    ...(protocol?.experiment
+      ? {
+          protocol: {
+            ...protocol,
+            experiment: {
+              id: "",
+              name: BLINDED_NAME,
+              description: "",
+              robotPluginId: protocol.experiment.robotPluginId,
+            },
+          },
+        }
+      : {}),
   };
 }

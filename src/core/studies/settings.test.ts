@@ -17,10 +17,26 @@ describe("a settings change touches only what it names", () => {
   it.each<[string, unknown, Partial<StudySettings>]>([
     ["nothing", {}, {}],
     ["consent required", { requireConsent: true }, { requireConsent: true }],
-    ["one blind", { blinding: { resultsUntilComplete: false } }, { blinding: { conditionsFromWizards: true, resultsUntilComplete: false } }],
-    ["the other blind", { blinding: { conditionsFromWizards: false } }, { blinding: { conditionsFromWizards: false, resultsUntilComplete: true } }],
-    ["the strategy (a new seed, the block size kept)", { assignment: { strategy: "random" } }, { assignment: { strategy: "random", perCondition: 3, seed: "new-seed" } }],
-    ["the block size (a new seed)", { assignment: { perCondition: 2 } }, { assignment: { strategy: "balanced", perCondition: 2, seed: "new-seed" } }],
+    [
+      "one blind",
+      { blinding: { resultsUntilComplete: false } },
+      { blinding: { conditionsFromWizards: true, resultsUntilComplete: false } },
+    ],
+    [
+      "the other blind",
+      { blinding: { conditionsFromWizards: false } },
+      { blinding: { conditionsFromWizards: false, resultsUntilComplete: true } },
+    ],
+    [
+      "the strategy (a new seed, the block size kept)",
+      { assignment: { strategy: "random" } },
+      { assignment: { strategy: "random", perCondition: 3, seed: "new-seed" } },
+    ],
+    [
+      "the block size (a new seed)",
+      { assignment: { perCondition: 2 } },
+      { assignment: { strategy: "balanced", perCondition: 2, seed: "new-seed" } },
+    ],
     ["the consent document", { consentDocumentVersion: "3" }, { consentDocumentVersion: "3" }],
     ["the demographic fields", { demographics: [] }, { demographics: [] }],
   ])("%s", (_, change, changed) => {

@@ -12,7 +12,10 @@ const assignmentFields = {
   seed: z.string().min(1).max(200).optional(),
 };
 
-export const assignmentSettingsSchema = z.object({ ...assignmentFields, perCondition: assignmentFields.perCondition.default(1) });
+export const assignmentSettingsSchema = z.object({
+  ...assignmentFields,
+  perCondition: assignmentFields.perCondition.default(1),
+});
 
 const blindingFields = {
   /** Wizards never see which condition (or experiment) a session runs. */
@@ -62,7 +65,11 @@ export const studySettingsSchema = z.object({
  * for a key left out, and that would overwrite what the study has.
  */
 export const studySettingsChangeSchema = z
-  .object({ ...settingFields, assignment: z.object(assignmentFields).partial(), blinding: z.object(blindingFields).partial() })
+  .object({
+    ...settingFields,
+    assignment: z.object(assignmentFields).partial(),
+    blinding: z.object(blindingFields).partial(),
+  })
   .partial();
 
 export type StudySettingsChange = z.infer<typeof studySettingsChangeSchema>;
@@ -72,12 +79,18 @@ export type StudySettingsChange = z.infer<typeof studySettingsChangeSchema>;
  * A changed assignment gets a fresh seed unless the change gives one, so each
  * choice of strategy has its own reproducible sequence.
  */
-export function changedSettings(before: StudySettings, change: StudySettingsChange, newSeed: () => string): StudySettings {
+export function changedSettings(
+  before: StudySettings,
+  change: StudySettingsChange,
+  newSeed: () => string,
+): StudySettings {
   const { assignment, blinding, ...rest } = change;
   return {
     ...before,
     ...rest,
-    assignment: assignment ? { ...before.assignment, ...assignment, seed: assignment.seed ?? newSeed() } : before.assignment,
+    assignment: assignment
+      ? { ...before.assignment, ...assignment, seed: assignment.seed ?? newSeed() }
+      : before.assignment,
     blinding: { ...before.blinding, ...blinding },
   };
 }

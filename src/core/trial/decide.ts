@@ -42,7 +42,10 @@ export function decide(protocol: TrialProtocol, state: TrialState, command: Comm
     case "pause":
       return ok({ type: "trial.paused" });
     case "complete":
-      return ok({ type: "trial.completed", ...(reachedEnd(protocol, state) ? {} : { deviation: "ended_early" as const }) });
+      return ok({
+        type: "trial.completed",
+        ...(reachedEnd(protocol, state) ? {} : { deviation: "ended_early" as const }),
+      });
     case "next":
       return next(protocol, state);
     case "trigger":
@@ -74,7 +77,8 @@ export function decide(protocol: TrialProtocol, state: TrialState, command: Comm
 function next(protocol: TrialProtocol, state: TrialState): Decision {
   // A designed pause holds the protocol: what follows waits until it is over.
   const holding = findStep(protocol, state.currentStepId)!.step.actions.find(
-    (a) => a.type === "pause" && (state.actions[a.id]?.status === "requested" || state.actions[a.id]?.status === "running"),
+    (a) =>
+      a.type === "pause" && (state.actions[a.id]?.status === "requested" || state.actions[a.id]?.status === "running"),
   );
   if (holding) return no(`Wait: the ${Number(holding.parameters.seconds ?? 0)} s pause is still running.`);
   const unit = nextUnit(protocol, state);
@@ -88,18 +92,29 @@ function next(protocol: TrialProtocol, state: TrialState): Decision {
 function trigger(protocol: TrialProtocol, state: TrialState, actionId: string): Decision {
   const found = findAction(protocol, actionId);
   if (!found) return no("That action is not in this protocol; use an unscripted action instead.");
-  if (found.step.id !== state.currentStepId) return no(`"${found.action.name ?? found.action.type}" belongs to another step: jump to "${found.step.name}" first.`);
-  if (state.actions[actionId]?.status !== "waiting") return no(`"${found.action.name ?? found.action.type}" has already run.`);
+  if (found.step.id !== state.currentStepId)
+    return no(
+      `"${found.action.name ?? found.action.type}" belongs to another step: jump to "${found.step.name}" first.`,
+    );
+  if (state.actions[actionId]?.status !== "waiting")
+    return no(`"${found.action.name ?? found.action.type}" has already run.`);
   const inTurn = nextUnit(protocol, state).some((a) => a.id === actionId);
   return request(protocol, state, [found.action], inTurn ? undefined : "out_of_order");
 }
 
-function request(protocol: TrialProtocol, state: TrialState, unit: ProtocolAction[], deviation: DeviationKind | undefined): Decision {
+function request(
+  protocol: TrialProtocol,
+  state: TrialState,
+  unit: ProtocolAction[],
+  deviation: DeviationKind | undefined,
+): Decision {
   const stepId = state.currentStepId!;
   const events: EngineEvent[] = [];
   for (const action of unit) {
     if (action.type === "record_answer") {
-      const labels = answerOptions(action).map((o) => o.label).join(" or ");
+      const labels = answerOptions(action)
+        .map((o) => o.label)
+        .join(" or ");
       return no(`Record the participant's answer: ${labels}.`);
     }
     if (action.type === "branch") return no("This branch follows the recorded answer: record the answer first.");
@@ -127,7 +142,8 @@ function skip(protocol: TrialProtocol, state: TrialState, actionId: string | und
   const stepId = state.currentStepId!;
   const events: EngineEvent[] = [];
   for (const action of targets) {
-    if (!action || findAction(protocol, action.id)!.step.id !== stepId) return no("Only actions of the current step can be skipped.");
+    if (!action || findAction(protocol, action.id)!.step.id !== stepId)
+      return no("Only actions of the current step can be skipped.");
     if (state.actions[action.id]?.status !== "waiting") return no(`"${action.name ?? action.type}" has already run.`);
     events.push({ type: "action.skipped", stepId, actionId: action.id, deviation: "skipped" });
   }
@@ -138,14 +154,22 @@ function skip(protocol: TrialProtocol, state: TrialState, actionId: string | und
 function answer(protocol: TrialProtocol, state: TrialState, actionId: string, optionId: string): Decision {
   const found = findAction(protocol, actionId);
   if (!found || found.action.type !== "record_answer") return no("That is not a question of this protocol.");
-  if (found.step.id !== state.currentStepId) return no(`That question belongs to "${found.step.name}", not the current step.`);
+  if (found.step.id !== state.currentStepId)
+    return no(`That question belongs to "${found.step.name}", not the current step.`);
   if (state.actions[actionId]?.status !== "waiting") return no("The answer to this question is already recorded.");
   const option = answerOptions(found.action).find((o) => o.id === optionId);
   if (!option) return no(`"${optionId}" is not one of this question's answers.`);
   const inTurn = nextUnit(protocol, state).some((a) => a.id === actionId);
   const stepId = found.step.id;
   const events: EngineEvent[] = [
-    { type: "answer.recorded", stepId, actionId, optionId, label: option.label, ...(inTurn ? {} : { deviation: "out_of_order" as const }) },
+    {
+      type: "answer.recorded",
+      stepId,
+      actionId,
+      optionId,
+      label: option.label,
+      ...(inTurn ? {} : { deviation: "out_of_order" as const }),
+    },
   ];
   // A branch right after the question resolves from the answer by itself.
   const actions = found.step.actions;
@@ -162,16 +186,27 @@ function answer(protocol: TrialProtocol, state: TrialState, actionId: string, op
   return ok(...events);
 }
 
-function robotReport(state: TrialState, command: Extract<Command, { kind: "dispatched" | "completed" | "failed" | "timed_out" }>): Decision {
+function robotReport(
+  state: TrialState,
+  command: Extract<Command, { kind: "dispatched" | "completed" | "failed" | "timed_out" }>,
+): Decision {
   const action = state.actions[command.actionId];
   if (!action || action.status === "waiting") return no("The robot reported on an action that was never requested.");
   if (FINISHED.has(action.status)) return no("The robot reported on an action that has already finished.");
   switch (command.kind) {
     case "dispatched":
       if (action.status !== "requested") return no("That action was already dispatched.");
-      return ok({ type: "action.dispatched", actionId: command.actionId, ...(command.detail ? { detail: command.detail } : {}) });
+      return ok({
+        type: "action.dispatched",
+        actionId: command.actionId,
+        ...(command.detail ? { detail: command.detail } : {}),
+      });
     case "completed":
-      return ok({ type: "action.completed", actionId: command.actionId, ...(command.detail ? { detail: command.detail } : {}) });
+      return ok({
+        type: "action.completed",
+        actionId: command.actionId,
+        ...(command.detail ? { detail: command.detail } : {}),
+      });
     case "failed":
       return ok({ type: "action.failed", actionId: command.actionId, reason: command.reason });
     case "timed_out":

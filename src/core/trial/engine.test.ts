@@ -19,12 +19,35 @@ const protocol: TrialProtocol = {
       actions: [
         { id: "hold", type: "pause", parameters: { seconds: 2 } },
         { id: "ask", type: "say", parameters: { text: "What color?" } },
-        { id: "answer", type: "record_answer", parameters: { options: [{ id: "correct", label: "red" }, { id: "incorrect", label: "other" }] } },
+        {
+          id: "answer",
+          type: "record_answer",
+          parameters: {
+            options: [
+              { id: "correct", label: "red" },
+              { id: "incorrect", label: "other" },
+            ],
+          },
+        },
         { id: "branch", type: "branch", parameters: { targets: { correct: "yes", incorrect: "no" } } },
       ],
     },
-    { id: "yes", name: "Correct", actions: [{ id: "nod", type: "nod", parameters: {} }, { id: "end-yes", type: "end_trial", parameters: {} }] },
-    { id: "no", name: "Incorrect", actions: [{ id: "shake", type: "head_shake", parameters: {} }, { id: "end-no", type: "end_trial", parameters: {} }] },
+    {
+      id: "yes",
+      name: "Correct",
+      actions: [
+        { id: "nod", type: "nod", parameters: {} },
+        { id: "end-yes", type: "end_trial", parameters: {} },
+      ],
+    },
+    {
+      id: "no",
+      name: "Incorrect",
+      actions: [
+        { id: "shake", type: "head_shake", parameters: {} },
+        { id: "end-no", type: "end_trial", parameters: {} },
+      ],
+    },
   ],
 };
 
@@ -44,51 +67,182 @@ const introDone: Command[] = [
   { kind: "completed", actionId: "wave" },
   { kind: "next" },
 ];
-const atQuestion: Command[] = [...introDone, { kind: "next" }, { kind: "next" }, { kind: "dispatched", actionId: "hold" }, { kind: "completed", actionId: "hold" }, { kind: "next" }];
+const atQuestion: Command[] = [
+  ...introDone,
+  { kind: "next" },
+  { kind: "next" },
+  { kind: "dispatched", actionId: "hold" },
+  { kind: "completed", actionId: "hold" },
+  { kind: "next" },
+];
 
 const brief = (events: EngineEvent[] | string) =>
-  typeof events === "string" ? events : events.map((e) => [e.type, "actionId" in e ? e.actionId : "stepId" in e ? e.stepId : null, e.deviation ?? null]);
+  typeof events === "string"
+    ? events
+    : events.map((e) => [e.type, "actionId" in e ? e.actionId : "stepId" in e ? e.stepId : null, e.deviation ?? null]);
 
 describe("the trial engine", () => {
   it.each<[string, Command[], unknown]>([
-    ["start enters the first step", start, [["trial.started", null, null], ["step.entered", "intro", null]]],
-    ["a recording's start is logged before the trial starts", [{ kind: "recording", recordingId: "r1", offsetMs: -1500 }], [["recording.started", null, null]]],
-    ["and while it runs, changing nothing else", [...start, { kind: "recording", recordingId: "r1", offsetMs: 800 }], [["recording.started", null, null]]],
-    ["next starts a parallel group together", [...start, { kind: "next" }], [["action.requested", "hello", null], ["action.requested", "wave", null]]],
-    ["a wizard instruction finishes as it starts", [...introDone], [["action.requested", "note", null], ["action.completed", "note", null]]],
-    ["next on a finished step enters the following one", [...introDone, { kind: "next" }], [["step.entered", "recall", null]]],
-    ["a pause is requested; the clock completes it", [...introDone, { kind: "next" }, { kind: "next" }], [["action.requested", "hold", null]]],
-    ["next waits while a designed pause runs", [...introDone, { kind: "next" }, { kind: "next" }, { kind: "next" }], "Wait: the 2 s pause is still running."],
-    ["the question must be answered, not skipped past by next", [...atQuestion, { kind: "next" }], "Record the participant's answer: red or other."],
+    [
+      "start enters the first step",
+      start,
+      [
+        ["trial.started", null, null],
+        ["step.entered", "intro", null],
+      ],
+    ],
+    [
+      "a recording's start is logged before the trial starts",
+      [{ kind: "recording", recordingId: "r1", offsetMs: -1500 }],
+      [["recording.started", null, null]],
+    ],
+    [
+      "and while it runs, changing nothing else",
+      [...start, { kind: "recording", recordingId: "r1", offsetMs: 800 }],
+      [["recording.started", null, null]],
+    ],
+    [
+      "next starts a parallel group together",
+      [...start, { kind: "next" }],
+      [
+        ["action.requested", "hello", null],
+        ["action.requested", "wave", null],
+      ],
+    ],
+    [
+      "a wizard instruction finishes as it starts",
+      [...introDone],
+      [
+        ["action.requested", "note", null],
+        ["action.completed", "note", null],
+      ],
+    ],
+    [
+      "next on a finished step enters the following one",
+      [...introDone, { kind: "next" }],
+      [["step.entered", "recall", null]],
+    ],
+    [
+      "a pause is requested; the clock completes it",
+      [...introDone, { kind: "next" }, { kind: "next" }],
+      [["action.requested", "hold", null]],
+    ],
+    [
+      "next waits while a designed pause runs",
+      [...introDone, { kind: "next" }, { kind: "next" }, { kind: "next" }],
+      "Wait: the 2 s pause is still running.",
+    ],
+    [
+      "the question must be answered, not skipped past by next",
+      [...atQuestion, { kind: "next" }],
+      "Record the participant's answer: red or other.",
+    ],
     [
       "an answer resolves the branch to its step by itself",
       [...atQuestion, { kind: "answer", actionId: "answer", optionId: "incorrect" }],
-      [["answer.recorded", "answer", null], ["branch.resolved", "branch", null], ["step.entered", "no", null]],
+      [
+        ["answer.recorded", "answer", null],
+        ["branch.resolved", "branch", null],
+        ["step.entered", "no", null],
+      ],
     ],
-    ["an unknown answer is refused", [...atQuestion, { kind: "answer", actionId: "answer", optionId: "blue" }], '"blue" is not one of this question\'s answers.'],
+    [
+      "an unknown answer is refused",
+      [...atQuestion, { kind: "answer", actionId: "answer", optionId: "blue" }],
+      '"blue" is not one of this question\'s answers.',
+    ],
     ["skip marks a deviation", [...start, { kind: "skip", actionId: "wave" }], [["action.skipped", "wave", "skipped"]]],
-    ["skip with no action skips the whole next unit", [...start, { kind: "skip" }], [["action.skipped", "hello", "skipped"], ["action.skipped", "wave", "skipped"]]],
-    ["triggering a later action is out of order", [...start, { kind: "trigger", actionId: "note" }], [["action.requested", "note", "out_of_order"], ["action.completed", "note", null]]],
-    ["triggering the next action is in order", [...start, { kind: "trigger", actionId: "wave" }], [["action.requested", "wave", null]]],
-    ["an action of another step needs a jump first", [...start, { kind: "trigger", actionId: "nod" }], '"nod" belongs to another step: jump to "Correct" first.'],
-    ["a manual jump is a deviation", [...start, { kind: "jump", stepId: "yes" }], [["step.entered", "yes", "manual_jump"]]],
+    [
+      "skip with no action skips the whole next unit",
+      [...start, { kind: "skip" }],
+      [
+        ["action.skipped", "hello", "skipped"],
+        ["action.skipped", "wave", "skipped"],
+      ],
+    ],
+    [
+      "triggering a later action is out of order",
+      [...start, { kind: "trigger", actionId: "note" }],
+      [
+        ["action.requested", "note", "out_of_order"],
+        ["action.completed", "note", null],
+      ],
+    ],
+    [
+      "triggering the next action is in order",
+      [...start, { kind: "trigger", actionId: "wave" }],
+      [["action.requested", "wave", null]],
+    ],
+    [
+      "an action of another step needs a jump first",
+      [...start, { kind: "trigger", actionId: "nod" }],
+      '"nod" belongs to another step: jump to "Correct" first.',
+    ],
+    [
+      "a manual jump is a deviation",
+      [...start, { kind: "jump", stepId: "yes" }],
+      [["step.entered", "yes", "manual_jump"]],
+    ],
     [
       "an unscripted action is a deviation",
       [...start, { kind: "unscripted", actionId: "u1", actionType: "say", parameters: { text: "Bless you" } }],
       [["action.requested", "u1", "unscripted"]],
     ],
-    ["end_trial completes the trial", [...atQuestion, { kind: "answer", actionId: "answer", optionId: "correct" }, { kind: "next" }, { kind: "next" }], [["action.requested", "end-yes", null], ["action.completed", "end-yes", null], ["trial.completed", null, null]]],
+    [
+      "end_trial completes the trial",
+      [...atQuestion, { kind: "answer", actionId: "answer", optionId: "correct" }, { kind: "next" }, { kind: "next" }],
+      [
+        ["action.requested", "end-yes", null],
+        ["action.completed", "end-yes", null],
+        ["trial.completed", null, null],
+      ],
+    ],
     ["completing early is a deviation", [...start, { kind: "complete" }], [["trial.completed", null, "ended_early"]]],
-    ["a paused trial refuses next", [...start, { kind: "pause" }, { kind: "next" }], "The trial is paused: resume it first."],
-    ["resume continues a paused trial", [...start, { kind: "pause" }, { kind: "resume" }, { kind: "next" }], [["action.requested", "hello", null], ["action.requested", "wave", null]]],
+    [
+      "a paused trial refuses next",
+      [...start, { kind: "pause" }, { kind: "next" }],
+      "The trial is paused: resume it first.",
+    ],
+    [
+      "resume continues a paused trial",
+      [...start, { kind: "pause" }, { kind: "resume" }, { kind: "next" }],
+      [
+        ["action.requested", "hello", null],
+        ["action.requested", "wave", null],
+      ],
+    ],
     ["emergency stop pauses the trial", [...start, { kind: "emergency_stop" }], [["trial.emergency_stop", null, null]]],
-    ["abort ends the trial", [...start, { kind: "abort", reason: "participant left" }], [["trial.aborted", null, null]]],
-    ["nothing runs after an abort", [...start, { kind: "abort", reason: "x" }, { kind: "next" }], "The trial is not running."],
+    [
+      "abort ends the trial",
+      [...start, { kind: "abort", reason: "participant left" }],
+      [["trial.aborted", null, null]],
+    ],
+    [
+      "nothing runs after an abort",
+      [...start, { kind: "abort", reason: "x" }, { kind: "next" }],
+      "The trial is not running.",
+    ],
     ["a second start is refused", [...start, { kind: "start" }], "This trial has already started."],
-    ["a failure is recorded with its reason", [...start, { kind: "next" }, { kind: "failed", actionId: "hello", reason: "robot unreachable" }], [["action.failed", "hello", null]]],
-    ["a timeout is recorded", [...start, { kind: "next" }, { kind: "dispatched", actionId: "hello" }, { kind: "timed_out", actionId: "hello" }], [["action.timed_out", "hello", null]]],
-    ["a late completion after a timeout is refused", [...start, { kind: "next" }, { kind: "timed_out", actionId: "hello" }, { kind: "completed", actionId: "hello" }], "The robot reported on an action that has already finished."],
-    ["a report on an action never requested is refused", [...start, { kind: "completed", actionId: "hello" }], "The robot reported on an action that was never requested."],
+    [
+      "a failure is recorded with its reason",
+      [...start, { kind: "next" }, { kind: "failed", actionId: "hello", reason: "robot unreachable" }],
+      [["action.failed", "hello", null]],
+    ],
+    [
+      "a timeout is recorded",
+      [...start, { kind: "next" }, { kind: "dispatched", actionId: "hello" }, { kind: "timed_out", actionId: "hello" }],
+      [["action.timed_out", "hello", null]],
+    ],
+    [
+      "a late completion after a timeout is refused",
+      [...start, { kind: "next" }, { kind: "timed_out", actionId: "hello" }, { kind: "completed", actionId: "hello" }],
+      "The robot reported on an action that has already finished.",
+    ],
+    [
+      "a report on an action never requested is refused",
+      [...start, { kind: "completed", actionId: "hello" }],
+      "The robot reported on an action that was never requested.",
+    ],
   ])("%s", (_name, commands, expected) => {
     expect(brief(run(commands).last)).toEqual(expected);
   });
@@ -104,7 +258,12 @@ describe("the trial engine", () => {
   });
 
   it("times every action from its events", () => {
-    const { state } = run([...start, { kind: "next" }, { kind: "dispatched", actionId: "hello" }, { kind: "completed", actionId: "hello" }]);
+    const { state } = run([
+      ...start,
+      { kind: "next" },
+      { kind: "dispatched", actionId: "hello" },
+      { kind: "completed", actionId: "hello" },
+    ]);
     expect(state.actions.hello).toEqual({ status: "done", requestedAt: 20, finishedAt: 50 });
   });
 });

@@ -11,7 +11,11 @@ export interface Simulation {
 }
 
 /** `clock(i)` gives the relMs of the i-th stored event (default: 10 ms apart). */
-export function simulate(protocol: TrialProtocol, commands: Command[], clock: (i: number) => number = (i) => i * 10): Simulation {
+export function simulate(
+  protocol: TrialProtocol,
+  commands: Command[],
+  clock: (i: number) => number = (i) => i * 10,
+): Simulation {
   const log: TrialEvent[] = [];
   let last: EngineEvent[] | string = [];
   for (const command of commands) {

@@ -6,7 +6,13 @@ export interface TrialProtocol {
   steps: Array<{
     id: string;
     name: string;
-    actions: Array<{ id: string; type: string; name?: string; parameters: Record<string, unknown>; parallelGroup?: string | null }>;
+    actions: Array<{
+      id: string;
+      type: string;
+      name?: string;
+      parameters: Record<string, unknown>;
+      parallelGroup?: string | null;
+    }>;
   }>;
 }
 
@@ -55,7 +61,11 @@ export type TrialEvent = EngineEvent & { seq: number; relMs: number | null };
  * database gives the time as a Date; the socket carries it as an ISO string
  * (`StoredEvent<string>`).
  */
-export type StoredEvent<Time extends Date | string = Date> = TrialEvent & { trialId: string; serverTime: Time; actorId: string | null };
+export type StoredEvent<Time extends Date | string = Date> = TrialEvent & {
+  trialId: string;
+  serverTime: Time;
+  actorId: string | null;
+};
 
 export type Command =
   | { kind: "start" }

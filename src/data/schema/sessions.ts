@@ -25,5 +25,8 @@ export const sessions = pgTable(
     createdBy: text("created_by").references(() => user.id, { onDelete: "set null" }),
     createdAt: createdAt(),
   },
-  (t) => [index("sessions_study_idx").on(t.studyId, t.plannedAt), index("sessions_wizard_idx").on(t.wizardId, t.plannedAt)],
+  (t) => [
+    index("sessions_study_idx").on(t.studyId, t.plannedAt),
+    index("sessions_wizard_idx").on(t.wizardId, t.plannedAt),
+  ],
 );

@@ -19,7 +19,10 @@ export function AuditLogPage() {
   const [area, setArea] = useState<AuditArea | "">("");
   const [limit, setLimit] = useState(PAGE);
   // The rows already shown stay while more (or another area) load.
-  const entries = useQuery({ ...trpc.admin.auditLog.queryOptions({ limit, area: area || undefined }), placeholderData: keepPreviousData });
+  const entries = useQuery({
+    ...trpc.admin.auditLog.queryOptions({ limit, area: area || undefined }),
+    placeholderData: keepPreviousData,
+  });
   const more = entries.data?.length === limit && limit < MOST;
   return (
     <div className="space-y-6">
@@ -49,7 +52,11 @@ export function AuditLogPage() {
       </div>
       <ListView
         query={entries}
-        empty={<EmptyState title={area ? "Nothing recorded in this area yet." : "Nothing recorded yet."}>Changes to accounts, studies, members, consent and plugins appear here.</EmptyState>}
+        empty={
+          <EmptyState title={area ? "Nothing recorded in this area yet." : "Nothing recorded yet."}>
+            Changes to accounts, studies, members, consent and plugins appear here.
+          </EmptyState>
+        }
         label="Audit log"
         columns={
           <>
@@ -71,7 +78,13 @@ export function AuditLogPage() {
               <div>{actionWords(e.action)}</div>
               <div className="font-mono text-xs text-slate-500">{e.action}</div>
             </Td>
-            <Td className={e.targetName || e.target === e.studyId ? undefined : "font-mono text-xs [overflow-wrap:anywhere]"}>{e.targetName ?? (e.target === e.studyId ? "the study" : e.target)}</Td>
+            <Td
+              className={
+                e.targetName || e.target === e.studyId ? undefined : "font-mono text-xs [overflow-wrap:anywhere]"
+              }
+            >
+              {e.targetName ?? (e.target === e.studyId ? "the study" : e.target)}
+            </Td>
             <Td className="max-w-sm">
               <Details details={e.details} />
             </Td>
@@ -79,7 +92,11 @@ export function AuditLogPage() {
         )}
       />
       {more && (
-        <Button variant="secondary" disabled={entries.isFetching} onClick={() => setLimit(Math.min(limit + PAGE, MOST))}>
+        <Button
+          variant="secondary"
+          disabled={entries.isFetching}
+          onClick={() => setLimit(Math.min(limit + PAGE, MOST))}
+        >
           {entries.isFetching ? "Loading…" : "Show older entries"}
         </Button>
       )}

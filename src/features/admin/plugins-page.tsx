@@ -28,8 +28,14 @@ export function PluginsPage() {
   const robots = useQuery(trpc.plugins.list.queryOptions());
   const [url, setUrl] = useState("");
   const [trust, setTrust] = useState<Trust>("community");
-  const refresh = () => Promise.all([queryClient.invalidateQueries({ queryKey: trpc.plugins.repositories.list.queryKey() }), queryClient.invalidateQueries({ queryKey: trpc.plugins.list.queryKey() })]);
-  const add = useMutation(trpc.plugins.repositories.add.mutationOptions({ onSuccess: () => (setUrl(""), setTrust("community"), refresh()) }));
+  const refresh = () =>
+    Promise.all([
+      queryClient.invalidateQueries({ queryKey: trpc.plugins.repositories.list.queryKey() }),
+      queryClient.invalidateQueries({ queryKey: trpc.plugins.list.queryKey() }),
+    ]);
+  const add = useMutation(
+    trpc.plugins.repositories.add.mutationOptions({ onSuccess: () => (setUrl(""), setTrust("community"), refresh()) }),
+  );
   const sync = useMutation(trpc.plugins.repositories.sync.mutationOptions({ onSuccess: refresh }));
   const submit = (e: FormEvent) => {
     e.preventDefault();
@@ -42,7 +48,12 @@ export function PluginsPage() {
         <h2 className="mb-3 font-semibold">Add a plugin repository</h2>
         <form onSubmit={submit} className="flex flex-wrap items-end gap-3">
           <div className="min-w-96 flex-1">
-            <Field label="Repository address" required error={fieldError(add.error, "url")} hint="The folder that holds repository.json, e.g. https://repo.example.org/">
+            <Field
+              label="Repository address"
+              required
+              error={fieldError(add.error, "url")}
+              hint="The folder that holds repository.json, e.g. https://repo.example.org/"
+            >
               {(p) => <Input {...p} value={url} onChange={(e) => setUrl(e.target.value)} />}
             </Field>
           </div>
@@ -86,7 +97,9 @@ export function PluginsPage() {
           )}
         </Card>
       )}
-      {repositories.data?.length === 0 && <EmptyState title="No repositories yet.">The first-party robots below are always available.</EmptyState>}
+      {repositories.data?.length === 0 && (
+        <EmptyState title="No repositories yet.">The first-party robots below are always available.</EmptyState>
+      )}
       {!!repositories.data?.length && (
         <Table>
           <thead>
@@ -109,7 +122,13 @@ export function PluginsPage() {
                 </Td>
                 <Td>{r.lastSyncedAt ? new Date(r.lastSyncedAt).toLocaleString() : "never"}</Td>
                 <Td className="text-right">
-                  <Button size="sm" variant="secondary" aria-label={`Sync ${r.name}`} disabled={sync.isPending} onClick={() => sync.mutate({ repositoryId: r.id })}>
+                  <Button
+                    size="sm"
+                    variant="secondary"
+                    aria-label={`Sync ${r.name}`}
+                    disabled={sync.isPending}
+                    onClick={() => sync.mutate({ repositoryId: r.id })}
+                  >
                     Sync now
                   </Button>
                 </Td>
@@ -120,7 +139,9 @@ export function PluginsPage() {
       )}
 
       <h2 className="pt-2 text-lg font-semibold">Robots available to experiments</h2>
-      {robots.data?.problems.map((p) => <Problem key={p} error={{ message: `A plugin file could not be loaded: ${p}` }} />)}
+      {robots.data?.problems.map((p) => (
+        <Problem key={p} error={{ message: `A plugin file could not be loaded: ${p}` }} />
+      ))}
       <Table>
         <thead>
           <tr>

@@ -53,7 +53,11 @@ export function UsersPage({ selfId }: { selfId: string }) {
             <Td>{u.disabled ? <Badge tone="red">disabled</Badge> : <Badge tone="green">active</Badge>}</Td>
             <Td className="text-right">
               {u.id !== selfId && (
-                <Button variant="ghost" size="sm" onClick={() => setDisabled.mutate({ userId: u.id, disabled: !u.disabled })}>
+                <Button
+                  variant="ghost"
+                  size="sm"
+                  onClick={() => setDisabled.mutate({ userId: u.id, disabled: !u.disabled })}
+                >
                   {u.disabled ? `Enable ${u.name}` : `Disable ${u.name}`}
                 </Button>
               )}
@@ -76,7 +80,8 @@ function NewAccount({ onCreated }: { onCreated: () => void }) {
       },
     }),
   );
-  const set = (key: keyof typeof form) => (e: { target: { value: string } }) => setForm({ ...form, [key]: e.target.value });
+  const set = (key: keyof typeof form) => (e: { target: { value: string } }) =>
+    setForm({ ...form, [key]: e.target.value });
   const submit = (e: FormEvent) => {
     e.preventDefault();
     create.mutate(form);
@@ -92,7 +97,15 @@ function NewAccount({ onCreated }: { onCreated: () => void }) {
           {(p) => <Input {...p} type="email" value={form.email} onChange={set("email")} />}
         </Field>
         <Field label="Initial password" required error={fieldError(create.error, "password")}>
-          {(p) => <Input {...p} type="password" autoComplete="new-password" value={form.password} onChange={set("password")} />}
+          {(p) => (
+            <Input
+              {...p}
+              type="password"
+              autoComplete="new-password"
+              value={form.password}
+              onChange={set("password")}
+            />
+          )}
         </Field>
         <Field label="System role">
           {(p) => (
@@ -107,7 +120,11 @@ function NewAccount({ onCreated }: { onCreated: () => void }) {
           Create account
         </Button>
       </form>
-      {create.error && !create.error.data?.issues && <div className="mt-3"><Problem error={create.error} /></div>}
+      {create.error && !create.error.data?.issues && (
+        <div className="mt-3">
+          <Problem error={create.error} />
+        </div>
+      )}
     </Card>
   );
 }

@@ -17,7 +17,14 @@ import { Table, Td, Th } from "@/ui/table";
 import { seconds } from "@/ui/format";
 import { JointAngles } from "./joint-angles";
 
-const OUTCOME_TONE: Record<string, Tone> = { executed: "green", skipped: "amber", failed: "red", timed_out: "red", not_reached: "slate", running: "blue" };
+const OUTCOME_TONE: Record<string, Tone> = {
+  executed: "green",
+  skipped: "amber",
+  failed: "red",
+  timed_out: "red",
+  not_reached: "slate",
+  running: "blue",
+};
 
 export function AnalysisPage({ trialId }: { trialId: string }) {
   const trpc = useTRPC();
@@ -27,16 +34,25 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   const recording = useTrialRecording(trialId, trial.data?.myRole !== "wizard");
   const video = useRef<HTMLVideoElement>(null);
   const [playheadMs, setPlayheadMs] = useState<number | null>(null);
-  const samples = useQuery({ ...trpc.trials.samples.queryOptions({ trialId, topic: "/joint_states", maxPoints: 2000 }), enabled: trial.data?.myRole !== "wizard" });
+  const samples = useQuery({
+    ...trpc.trials.samples.queryOptions({ trialId, topic: "/joint_states", maxPoints: 2000 }),
+    enabled: trial.data?.myRole !== "wizard",
+  });
   const report = useMemo(
-    () => (trial.data && events.data ? fidelityReport(trial.data.protocol as TrialProtocol, events.data as unknown as TrialEvent[]) : null),
+    () =>
+      trial.data && events.data
+        ? fidelityReport(trial.data.protocol as TrialProtocol, events.data as unknown as TrialEvent[])
+        : null,
     [trial.data, events.data],
   );
   if (trial.isPending || events.isPending) return <Spinner label="Loading the trial…" />;
   if (trial.error || events.error) return <Problem error={trial.error ?? events.error} />;
   const t = trial.data;
   const r = report!;
-  const timeline = [...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })), ...(moments.data ?? []).map((m) => ({ at: m.relMs, kind: "moment" as const, m }))].sort((a, b) => a.at - b.at);
+  const timeline = [
+    ...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })),
+    ...(moments.data ?? []).map((m) => ({ at: m.relMs, kind: "moment" as const, m })),
+  ].sort((a, b) => a.at - b.at);
   // The row the playhead is in: the last one at or before it.
   const current = playheadMs === null ? -1 : timeline.findLastIndex((item) => item.at <= playheadMs);
   return (
@@ -88,7 +104,8 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
                 <Td>{r.steps.find((s) => s.stepId === a.stepId)?.name}</Td>
                 <Td>{a.name}</Td>
                 <Td>
-                  <Badge tone={OUTCOME_TONE[a.outcome]}>{a.outcome.replace("_", " ")}</Badge> {a.outOfOrder && <Badge tone="amber">out of order</Badge>}
+                  <Badge tone={OUTCOME_TONE[a.outcome]}>{a.outcome.replace("_", " ")}</Badge>{" "}
+                  {a.outOfOrder && <Badge tone="amber">out of order</Badge>}
                 </Td>
                 <Td>{seconds(a.requestedMs)}</Td>
                 <Td>{seconds(a.durationMs)}</Td>
@@ -102,7 +119,9 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         <h2 className="mb-2 text-lg font-semibold">Timeline</h2>
         <TimelineChart
           report={r}
-          deviations={events.data.filter((e) => e.deviation && e.relMs !== null).map((e) => ({ at: e.relMs!, kind: String(e.deviation) }))}
+          deviations={events.data
+            .filter((e) => e.deviation && e.relMs !== null)
+            .map((e) => ({ at: e.relMs!, kind: String(e.deviation) }))}
           moments={(moments.data ?? []).map((m) => ({ at: m.relMs, label: m.label }))}
           endMs={timeline.at(-1)?.at ?? 0}
           playheadMs={playheadMs}
@@ -110,32 +129,39 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         />
         <Card className="divide-y divide-slate-100 text-sm">
           {timeline.map((item, i) => (
-              <button
-                key={i}
-                type="button"
-                disabled={!recording}
-                aria-current={current === i ? "time" : undefined}
-                onClick={() => recording && video.current && (video.current.currentTime = videoSeconds(recording, item.at))}
-                className={`flex w-full gap-3 px-4 py-1.5 text-left enabled:hover:bg-slate-50 ${current === i ? "bg-brand-50" : ""}`}
-              >
-                <span className="w-16 shrink-0 font-mono text-xs text-slate-500">{seconds(item.at)}</span>
-                {item.kind === "moment" ? (
-                  <span>
-                    <Badge tone="violet">marked</Badge> <strong>{item.m.label}</strong> {item.m.note} <span className="text-xs text-slate-400">by {item.m.authorName}</span>
-                  </span>
-                ) : (
-                  <span>
-                    {item.e.type}
-                    {"actionId" in item.e && item.e.actionId ? <span className="text-slate-500"> · {item.e.actionId.slice(0, 8)}</span> : null}
-                    {item.e.deviation && <Badge tone="amber">{item.e.deviation.replace("_", " ")}</Badge>}
-                  </span>
-                )}
-              </button>
-            ))}
+            <button
+              key={i}
+              type="button"
+              disabled={!recording}
+              aria-current={current === i ? "time" : undefined}
+              onClick={() =>
+                recording && video.current && (video.current.currentTime = videoSeconds(recording, item.at))
+              }
+              className={`flex w-full gap-3 px-4 py-1.5 text-left enabled:hover:bg-slate-50 ${current === i ? "bg-brand-50" : ""}`}
+            >
+              <span className="w-16 shrink-0 font-mono text-xs text-slate-500">{seconds(item.at)}</span>
+              {item.kind === "moment" ? (
+                <span>
+                  <Badge tone="violet">marked</Badge> <strong>{item.m.label}</strong> {item.m.note}{" "}
+                  <span className="text-xs text-slate-400">by {item.m.authorName}</span>
+                </span>
+              ) : (
+                <span>
+                  {item.e.type}
+                  {"actionId" in item.e && item.e.actionId ? (
+                    <span className="text-slate-500"> · {item.e.actionId.slice(0, 8)}</span>
+                  ) : null}
+                  {item.e.deviation && <Badge tone="amber">{item.e.deviation.replace("_", " ")}</Badge>}
+                </span>
+              )}
+            </button>
+          ))}
         </Card>
       </section>
       <MomentsEditor trialId={trialId} moments={moments.data ?? []} playheadMs={playheadMs} />
-      {samples.data && samples.data.length > 0 && <JointAngles samples={samples.data as Array<{ relMs: number; data: unknown }>} />}
+      {samples.data && samples.data.length > 0 && (
+        <JointAngles samples={samples.data as Array<{ relMs: number; data: unknown }>} />
+      )}
     </div>
   );
 }

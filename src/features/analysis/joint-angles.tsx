@@ -24,9 +24,20 @@ export function JointAngles({ samples }: { samples: Array<{ relMs: number; data:
     <section aria-label="Joint angles">
       <h2 className="mb-2 text-lg font-semibold">Robot joint angles</h2>
       <Card className="p-4">
-        <svg viewBox="0 0 1000 190" className="h-48 w-full" role="img" aria-label={`Joint angles of ${names.join(", ")} over ${(tMax / 1000).toFixed(0)} s`}>
+        <svg
+          viewBox="0 0 1000 190"
+          className="h-48 w-full"
+          role="img"
+          aria-label={`Joint angles of ${names.join(", ")} over ${(tMax / 1000).toFixed(0)} s`}
+        >
           {names.map((name, j) => (
-            <polyline key={name} fill="none" stroke={COLOURS[j % COLOURS.length]} strokeWidth="2" points={rows.map((r) => `${x(r.t).toFixed(1)},${y(r.position[j] ?? 0).toFixed(1)}`).join(" ")} />
+            <polyline
+              key={name}
+              fill="none"
+              stroke={COLOURS[j % COLOURS.length]}
+              strokeWidth="2"
+              points={rows.map((r) => `${x(r.t).toFixed(1)},${y(r.position[j] ?? 0).toFixed(1)}`).join(" ")}
+            />
           ))}
         </svg>
         <div className="mt-2 flex flex-wrap gap-4 text-xs">

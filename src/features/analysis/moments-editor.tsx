@@ -17,12 +17,22 @@ interface Moment {
   authorName: string | null;
 }
 
-export function MomentsEditor({ trialId, moments, playheadMs }: { trialId: string; moments: Moment[]; playheadMs: number | null }) {
+export function MomentsEditor({
+  trialId,
+  moments,
+  playheadMs,
+}: {
+  trialId: string;
+  moments: Moment[];
+  playheadMs: number | null;
+}) {
   const trpc = useTRPC();
   const queryClient = useQueryClient();
   const refresh = () => queryClient.invalidateQueries({ queryKey: trpc.trials.annotations.queryKey({ trialId }) });
   const annotate = useMutation(trpc.trials.annotate.mutationOptions({ onSuccess: refresh }));
-  const edit = useMutation(trpc.trials.editAnnotation.mutationOptions({ onSuccess: () => (setEditing(null), refresh()) }));
+  const edit = useMutation(
+    trpc.trials.editAnnotation.mutationOptions({ onSuccess: () => (setEditing(null), refresh()) }),
+  );
   const [label, setLabel] = useState("");
   const [note, setNote] = useState("");
   const [seconds, setSeconds] = useState("");
@@ -30,16 +40,40 @@ export function MomentsEditor({ trialId, moments, playheadMs }: { trialId: strin
   const at = seconds !== "" ? Number(seconds) * 1000 : (playheadMs ?? 0);
   const submit = (e: FormEvent) => {
     e.preventDefault();
-    annotate.mutate({ trialId, relMs: Math.max(0, at), label, note }, { onSuccess: () => (setLabel(""), setNote(""), setSeconds("")) });
+    annotate.mutate(
+      { trialId, relMs: Math.max(0, at), label, note },
+      { onSuccess: () => (setLabel(""), setNote(""), setSeconds("")) },
+    );
   };
   return (
     <section aria-label="Marked moments" className="space-y-2">
       <h2 className="text-lg font-semibold">Marked moments</h2>
       <Card className="space-y-3 p-4 text-sm">
         <form onSubmit={submit} className="flex flex-wrap items-end gap-2">
-          <Input aria-label="What happened" placeholder="What happened" className="w-56" value={label} onChange={(e) => setLabel(e.target.value)} />
-          <Input aria-label="Note (optional)" placeholder="Note (optional)" className="w-64" value={note} onChange={(e) => setNote(e.target.value)} />
-          <Input aria-label="At (seconds)" placeholder={`${(at / 1000).toFixed(1)} s`} type="number" min={0} step="0.1" className="w-28" value={seconds} onChange={(e) => setSeconds(e.target.value)} />
+          <Input
+            aria-label="What happened"
+            placeholder="What happened"
+            className="w-56"
+            value={label}
+            onChange={(e) => setLabel(e.target.value)}
+          />
+          <Input
+            aria-label="Note (optional)"
+            placeholder="Note (optional)"
+            className="w-64"
+            value={note}
+            onChange={(e) => setNote(e.target.value)}
+          />
+          <Input
+            aria-label="At (seconds)"
+            placeholder={`${(at / 1000).toFixed(1)} s`}
+            type="number"
+            min={0}
+            step="0.1"
+            className="w-28"
+            value={seconds}
+            onChange={(e) => setSeconds(e.target.value)}
+          />
           <Button type="submit" size="sm" disabled={!label.trim() || annotate.isPending}>
             Mark at {(at / 1000).toFixed(1)} s
           </Button>
@@ -51,9 +85,22 @@ export function MomentsEditor({ trialId, moments, playheadMs }: { trialId: strin
               <span className="w-16 font-mono text-xs text-slate-500">{(m.relMs / 1000).toFixed(1)} s</span>
               {editing?.id === m.id ? (
                 <>
-                  <Input aria-label="Edit what happened" className="h-8 w-56" value={editing.label} onChange={(e) => setEditing({ ...editing, label: e.target.value })} />
-                  <Input aria-label="Edit the note" className="h-8 w-64" value={editing.note} onChange={(e) => setEditing({ ...editing, note: e.target.value })} />
-                  <Button size="sm" onClick={() => edit.mutate({ annotationId: m.id, label: editing.label, note: editing.note })}>
+                  <Input
+                    aria-label="Edit what happened"
+                    className="h-8 w-56"
+                    value={editing.label}
+                    onChange={(e) => setEditing({ ...editing, label: e.target.value })}
+                  />
+                  <Input
+                    aria-label="Edit the note"
+                    className="h-8 w-64"
+                    value={editing.note}
+                    onChange={(e) => setEditing({ ...editing, note: e.target.value })}
+                  />
+                  <Button
+                    size="sm"
+                    onClick={() => edit.mutate({ annotationId: m.id, label: editing.label, note: editing.note })}
+                  >
                     Save
                   </Button>
                   <Button size="sm" variant="ghost" onClick={() => setEditing(null)}>
@@ -62,8 +109,15 @@ export function MomentsEditor({ trialId, moments, playheadMs }: { trialId: strin
                 </>
               ) : (
                 <>
-                  <strong>{m.label}</strong> <span className="text-slate-600">{m.note}</span> <span className="text-xs text-slate-400">by {m.authorName ?? "someone"}</span>
-                  <Button size="sm" variant="ghost" className="ml-auto" aria-label={`Edit “${m.label}”`} onClick={() => setEditing({ id: m.id, label: m.label, note: m.note })}>
+                  <strong>{m.label}</strong> <span className="text-slate-600">{m.note}</span>{" "}
+                  <span className="text-xs text-slate-400">by {m.authorName ?? "someone"}</span>
+                  <Button
+                    size="sm"
+                    variant="ghost"
+                    className="ml-auto"
+                    aria-label={`Edit “${m.label}”`}
+                    onClick={() => setEditing({ id: m.id, label: m.label, note: m.note })}
+                  >
                     Edit
                   </Button>
                 </>

@@ -16,7 +16,10 @@ export function QuestionnaireAnswers({ trialId, studyId }: { trialId: string; st
     <section aria-label="Questionnaires" className="space-y-3">
       <div className="flex items-center gap-3">
         <h2 className="text-lg font-semibold">Questionnaires</h2>
-        <a className="ml-auto text-sm font-medium text-brand-600 hover:underline" href={`/api/studies/${studyId}/questionnaires`}>
+        <a
+          className="ml-auto text-sm font-medium text-brand-600 hover:underline"
+          href={`/api/studies/${studyId}/questionnaires`}
+        >
           Download all answers of the study (CSV)
         </a>
       </div>
@@ -46,7 +49,8 @@ export function QuestionnaireAnswers({ trialId, studyId }: { trialId: string; st
               <ol className="mt-2 list-decimal space-y-1 pl-5">
                 {items(r.definition as Definition).map((item) => (
                   <li key={item.id}>
-                    {item.kind === "consent" ? "Consent" : item.text} <span className="font-medium">→ {formatAnswer(answers[item.id])}</span>
+                    {item.kind === "consent" ? "Consent" : item.text}{" "}
+                    <span className="font-medium">→ {formatAnswer(answers[item.id])}</span>
                   </li>
                 ))}
               </ol>
@@ -58,4 +62,5 @@ export function QuestionnaireAnswers({ trialId, studyId }: { trialId: string; st
   );
 }
 
-const formatAnswer = (v: unknown) => (v === undefined ? "—" : Array.isArray(v) ? v.join(", ") : v === true ? "agreed" : String(v));
+const formatAnswer = (v: unknown) =>
+  v === undefined ? "—" : Array.isArray(v) ? v.join(", ") : v === true ? "agreed" : String(v);

@@ -22,7 +22,15 @@ export function useTrialRecording(trialId: string, enabled: boolean): Recording 
 export const trialMs = (recording: Recording, seconds: number) => seconds * 1000 + (recording.offsetMs ?? 0);
 export const videoSeconds = (recording: Recording, ms: number) => Math.max(0, (ms - (recording.offsetMs ?? 0)) / 1000);
 
-export function RecordingPlayer({ recording, video, onTime }: { recording: Recording; video: RefObject<HTMLVideoElement | null>; onTime: (trialMs: number) => void }) {
+export function RecordingPlayer({
+  recording,
+  video,
+  onTime,
+}: {
+  recording: Recording;
+  video: RefObject<HTMLVideoElement | null>;
+  onTime: (trialMs: number) => void;
+}) {
   return (
     <Card className="overflow-hidden">
       {/* biome-ignore lint/a11y/useMediaCaption: a trial's own recording; no captions exist for it */}
@@ -37,8 +45,13 @@ export function RecordingPlayer({ recording, video, onTime }: { recording: Recor
         onSeeked={(e) => onTime(trialMs(recording, e.currentTarget.currentTime))}
       />
       <p className="px-4 py-2 text-xs text-slate-500">
-        Click any moment of the timeline below to see it. The recording started {Math.abs((recording.offsetMs ?? 0) / 1000).toFixed(1)} s {(recording.offsetMs ?? 0) <= 0 ? "before" : "after"} the trial.{" "}
-        <a className="font-medium text-brand-600 hover:underline" href={`/api/recordings/${recording.id}/media?download`}>
+        Click any moment of the timeline below to see it. The recording started{" "}
+        {Math.abs((recording.offsetMs ?? 0) / 1000).toFixed(1)} s {(recording.offsetMs ?? 0) <= 0 ? "before" : "after"}{" "}
+        the trial.{" "}
+        <a
+          className="font-medium text-brand-600 hover:underline"
+          href={`/api/recordings/${recording.id}/media?download`}
+        >
           Download the recording
         </a>{" "}
         (save it beside the ELAN file to open both together).

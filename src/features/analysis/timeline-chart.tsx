@@ -23,7 +23,8 @@ export function TimelineChart({ report, deviations, moments, endMs, playheadMs, 
   const left = (ms: number) => `${Math.min(100, Math.max(0, (ms / total) * 100))}%`;
   const width = (from: number, to: number) => `max(3px, ${Math.min(100, ((to - from) / total) * 100)}%)`;
   const seek = (ms: number) => onSeek?.(ms);
-  const item = "absolute top-1 bottom-1 rounded-sm text-[10px] leading-4 overflow-hidden whitespace-nowrap px-0.5 text-left";
+  const item =
+    "absolute top-1 bottom-1 rounded-sm text-[10px] leading-4 overflow-hidden whitespace-nowrap px-0.5 text-left";
   // Clicking empty space seeks to that time too.
   const laneSeek = (e: React.MouseEvent<HTMLDivElement>) => {
     if (e.target !== e.currentTarget || !onSeek) return;
@@ -36,7 +37,11 @@ export function TimelineChart({ report, deviations, moments, endMs, playheadMs, 
       {/* biome-ignore lint/a11y/useKeyWithClickEvents: a click anywhere on the lane seeks, for the mouse; every bar in it is a button for the keyboard */}
       {/* biome-ignore lint/a11y/noStaticElementInteractions: the same click; the lane itself is no control */}
       {/* biome-ignore lint/a11y/useAriaPropsSupportedByRole: the lane's name is read with the bars it holds */}
-      <div className={cn("relative h-6 rounded bg-slate-50", onSeek && "cursor-pointer")} onClick={laneSeek} aria-label={`${name} over time`}>
+      <div
+        className={cn("relative h-6 rounded bg-slate-50", onSeek && "cursor-pointer")}
+        onClick={laneSeek}
+        aria-label={`${name} over time`}
+      >
         {children}
       </div>
     </div>
@@ -48,7 +53,14 @@ export function TimelineChart({ report, deviations, moments, endMs, playheadMs, 
         report.steps
           .filter((s) => s.enteredMs !== null)
           .map((s, i) => (
-            <button key={s.stepId} type="button" title={s.name} className={cn(item, BAND[i % 2])} style={{ left: left(s.enteredMs!), width: width(s.enteredMs!, s.leftMs ?? endMs) }} onClick={() => seek(s.enteredMs!)}>
+            <button
+              key={s.stepId}
+              type="button"
+              title={s.name}
+              className={cn(item, BAND[i % 2])}
+              style={{ left: left(s.enteredMs!), width: width(s.enteredMs!, s.leftMs ?? endMs) }}
+              onClick={() => seek(s.enteredMs!)}
+            >
               {s.name}
             </button>
           )),
@@ -63,7 +75,10 @@ export function TimelineChart({ report, deviations, moments, endMs, playheadMs, 
               type="button"
               title={`${a.name}: ${a.outcome}`}
               aria-label={`Action ${a.name} at ${seconds(a.requestedMs)}`}
-              className={cn(item, a.outcome === "executed" ? "bg-emerald-300" : a.outcome === "skipped" ? "bg-amber-300" : "bg-red-300")}
+              className={cn(
+                item,
+                a.outcome === "executed" ? "bg-emerald-300" : a.outcome === "skipped" ? "bg-amber-300" : "bg-red-300",
+              )}
               style={{ left: left(a.requestedMs!), width: width(a.requestedMs!, a.requestedMs! + (a.durationMs ?? 0)) }}
               onClick={() => seek(a.requestedMs!)}
             />
@@ -72,17 +87,39 @@ export function TimelineChart({ report, deviations, moments, endMs, playheadMs, 
       {lane(
         "Deviations",
         deviations.map((d, i) => (
-          <button key={i} type="button" title={d.kind.replace("_", " ")} aria-label={`Deviation: ${d.kind.replace("_", " ")}`} className="absolute top-0 bottom-0 w-1 rounded bg-amber-500" style={{ left: left(d.at) }} onClick={() => seek(d.at)} />
+          <button
+            key={i}
+            type="button"
+            title={d.kind.replace("_", " ")}
+            aria-label={`Deviation: ${d.kind.replace("_", " ")}`}
+            className="absolute top-0 bottom-0 w-1 rounded bg-amber-500"
+            style={{ left: left(d.at) }}
+            onClick={() => seek(d.at)}
+          />
         )),
       )}
       {lane(
         "Marked",
         moments.map((m, i) => (
-          <button key={i} type="button" title={m.label} aria-label={`Marked: ${m.label}`} className="absolute top-1 h-4 w-4 -translate-x-1/2 rotate-45 rounded-sm bg-violet-500" style={{ left: left(m.at) }} onClick={() => seek(m.at)} />
+          <button
+            key={i}
+            type="button"
+            title={m.label}
+            aria-label={`Marked: ${m.label}`}
+            className="absolute top-1 h-4 w-4 -translate-x-1/2 rotate-45 rounded-sm bg-violet-500"
+            style={{ left: left(m.at) }}
+            onClick={() => seek(m.at)}
+          />
         )),
       )}
       {playheadMs !== null && (
-        <div className="pointer-events-none absolute inset-y-3 w-0.5 bg-red-600" data-testid="playhead" style={{ left: `calc(1rem + 6rem + 0.5rem + (100% - 2rem - 6.5rem) * ${Math.min(1, Math.max(0, playheadMs / total))})` }} />
+        <div
+          className="pointer-events-none absolute inset-y-3 w-0.5 bg-red-600"
+          data-testid="playhead"
+          style={{
+            left: `calc(1rem + 6rem + 0.5rem + (100% - 2rem - 6.5rem) * ${Math.min(1, Math.max(0, playheadMs / total))})`,
+          }}
+        />
       )}
     </Card>
   );

@@ -33,10 +33,20 @@ export function SignInForm() {
   return (
     <form onSubmit={submit} method="post" className="space-y-4">
       <Field label="Email" required>
-        {(p) => <Input {...p} type="email" autoComplete="username" value={email} onChange={(e) => setEmail(e.target.value)} />}
+        {(p) => (
+          <Input {...p} type="email" autoComplete="username" value={email} onChange={(e) => setEmail(e.target.value)} />
+        )}
       </Field>
       <Field label="Password" required>
-        {(p) => <Input {...p} type="password" autoComplete="current-password" value={password} onChange={(e) => setPassword(e.target.value)} />}
+        {(p) => (
+          <Input
+            {...p}
+            type="password"
+            autoComplete="current-password"
+            value={password}
+            onChange={(e) => setPassword(e.target.value)}
+          />
+        )}
       </Field>
       {error && <Problem error={{ message: error }} />}
       <Button type="submit" className="w-full" disabled={busy}>

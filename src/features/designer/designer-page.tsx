@@ -2,7 +2,18 @@
 // The experiment designer: library (left), protocol timeline (centre),
 // properties and checks (right). Every edit is a command of the headless
 // model; this page only renders the draft and turns gestures into commands.
-import { DndContext, DragOverlay, PointerSensor, pointerWithin, rectIntersection, useSensor, useSensors, type CollisionDetection, type DragEndEvent, type DragStartEvent } from "@dnd-kit/core";
+import {
+  DndContext,
+  DragOverlay,
+  PointerSensor,
+  pointerWithin,
+  rectIntersection,
+  useSensor,
+  useSensors,
+  type CollisionDetection,
+  type DragEndEvent,
+  type DragStartEvent,
+} from "@dnd-kit/core";
 import { useQuery } from "@tanstack/react-query";
 import { ArrowLeft, Plus, Redo2, Undo2 } from "lucide-react";
 import Link from "next/link";
@@ -40,9 +51,15 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const trpc = useTRPC();
   const designer = useDesigner(experimentId);
   const { draft } = designer;
-  const study = useQuery({ ...trpc.studies.get.queryOptions({ studyId: designer.loaded.data?.studyId ?? "" }), enabled: Boolean(designer.loaded.data) });
+  const study = useQuery({
+    ...trpc.studies.get.queryOptions({ studyId: designer.loaded.data?.studyId ?? "" }),
+    enabled: Boolean(designer.loaded.data),
+  });
   const robots = useQuery(trpc.plugins.list.queryOptions());
-  const pluginQuery = useQuery({ ...trpc.plugins.get.queryOptions({ robotId: draft?.robotPluginId ?? "" }), enabled: Boolean(draft?.robotPluginId) });
+  const pluginQuery = useQuery({
+    ...trpc.plugins.get.queryOptions({ robotId: draft?.robotPluginId ?? "" }),
+    enabled: Boolean(draft?.robotPluginId),
+  });
   const plugin = (pluginQuery.data ?? null) as Plugin | null;
   const [selection, setSelection] = useState<Selection>(null);
 
@@ -64,7 +81,10 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
     }
     return map;
   }, [issues]);
-  const unsupported = useMemo(() => new Set(blocks.filter((b) => plugin && isUnsupported(plugin, b.type)).map((b) => b.type)), [blocks, plugin]);
+  const unsupported = useMemo(
+    () => new Set(blocks.filter((b) => plugin && isUnsupported(plugin, b.type)).map((b) => b.type)),
+    [blocks, plugin],
+  );
 
   const role = study.data?.myRole;
   const canEdit = role ? studyRoleMay(role, "experiment.edit") : false;
@@ -85,7 +105,8 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
         const found = locateAction(draft, selection.id);
         return { stepId: found.step.id, index: found.index + 1 };
       }
-      if (selection?.kind === "step") return { stepId: selection.id, index: locateStep(draft, selection.id).step.actions.length };
+      if (selection?.kind === "step")
+        return { stepId: selection.id, index: locateStep(draft, selection.id).step.actions.length };
     } catch {
       // the selection was deleted: fall through to the last step
     }
@@ -96,7 +117,14 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const addBlock = useCallback(
     (block: Block, stepId: string, index: number) => {
       const id = newId();
-      run(commands.addAction(stepId, index, { type: block.type, name: "", parameters: initialParameters(block, newId) }, id));
+      run(
+        commands.addAction(
+          stepId,
+          index,
+          { type: block.type, name: "", parameters: initialParameters(block, newId) },
+          id,
+        ),
+      );
       setSelection({ kind: "action", id });
     },
     [run],
@@ -108,7 +136,8 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
       if (block.type === RUN_TOGETHER.type) {
         const { selection } = latest.current;
         if (selection?.kind === "action") run(commands.setRunTogether(selection.id, true));
-        else setNotice("Select the action that should start together with the one above it, then choose “Run together”.");
+        else
+          setNotice("Select the action that should start together with the one above it, then choose “Run together”.");
         return;
       }
       const at = insertionPoint();
@@ -127,7 +156,8 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const moveSelected = useCallback(
     (delta: -1 | 1) => {
       if (!draft || !selection) return;
-      if (selection.kind === "step") return run(commands.moveStep(selection.id, locateStep(draft, selection.id).index + delta));
+      if (selection.kind === "step")
+        return run(commands.moveStep(selection.id, locateStep(draft, selection.id).index + delta));
       const { step, stepIndex, index } = locateAction(draft, selection.id);
       const to = index + delta;
       if (to >= 0 && to < step.actions.length) return run(commands.moveAction(selection.id, step.id, to));
@@ -144,7 +174,13 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
     setSelection(null);
   }, [selection, run]);
 
-  useDesignerKeys({ undo: designer.undo, redo: designer.redo, move: moveSelected, remove: deleteSelected, enabled: canEdit });
+  useDesignerKeys({
+    undo: designer.undo,
+    redo: designer.redo,
+    move: moveSelected,
+    remove: deleteSelected,
+    enabled: canEdit,
+  });
 
   const sensors = useSensors(useSensor(PointerSensor, POINTER));
   const [dragging, setDragging] = useState<string | null>(null);
@@ -178,14 +214,30 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   return (
     <div className="relative left-1/2 -my-8 flex h-[calc(100vh-3.5rem-1px)] w-screen -translate-x-1/2 flex-col gap-3 p-4">
       <header className="flex flex-wrap items-center gap-3">
-        <Link href={`/studies/${designer.loaded.data!.studyId}`} className="text-slate-500 hover:text-slate-800" aria-label="Back to the study">
+        <Link
+          href={`/studies/${designer.loaded.data!.studyId}`}
+          className="text-slate-500 hover:text-slate-800"
+          aria-label="Back to the study"
+        >
           <ArrowLeft className="h-5 w-5" aria-hidden />
         </Link>
-        <Input aria-label="Experiment name" className="h-9 max-w-xs font-semibold" value={draft.name} disabled={!canEdit} onChange={(e) => run(commands.setDetails({ name: e.target.value }))} />
+        <Input
+          aria-label="Experiment name"
+          className="h-9 max-w-xs font-semibold"
+          value={draft.name}
+          disabled={!canEdit}
+          onChange={(e) => run(commands.setDetails({ name: e.target.value }))}
+        />
         {/* biome-ignore lint/a11y/noLabelWithoutControl: the select inside is the control (a custom component the rule cannot see through) */}
         <label className="flex items-center gap-2 text-sm text-slate-600">
           Robot
-          <NativeSelect aria-label="Robot" className="h-9 w-auto py-0" value={draft.robotPluginId} disabled={!canEdit} onChange={(e) => run(commands.setRobot(e.target.value))}>
+          <NativeSelect
+            aria-label="Robot"
+            className="h-9 w-auto py-0"
+            value={draft.robotPluginId}
+            disabled={!canEdit}
+            onChange={(e) => run(commands.setRobot(e.target.value))}
+          >
             {robots.data?.robots.map((r) => (
               <option key={r.robotId} value={r.robotId}>
                 {r.name}
@@ -195,16 +247,33 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
         </label>
         <div className="ml-auto flex items-center gap-2">
           <SaveStatus save={designer.save} />
-          <Button variant="ghost" size="sm" aria-label="Undo" title={`Undo ${designer.history?.past.at(-1)?.label ?? ""} (Ctrl+Z)`} disabled={!designer.history?.past.length || !canEdit} onClick={designer.undo}>
+          <Button
+            variant="ghost"
+            size="sm"
+            aria-label="Undo"
+            title={`Undo ${designer.history?.past.at(-1)?.label ?? ""} (Ctrl+Z)`}
+            disabled={!designer.history?.past.length || !canEdit}
+            onClick={designer.undo}
+          >
             <Undo2 className="h-4 w-4" aria-hidden />
           </Button>
-          <Button variant="ghost" size="sm" aria-label="Redo" title={`Redo ${designer.history?.future[0]?.label ?? ""} (Ctrl+Shift+Z)`} disabled={!designer.history?.future.length || !canEdit} onClick={designer.redo}>
+          <Button
+            variant="ghost"
+            size="sm"
+            aria-label="Redo"
+            title={`Redo ${designer.history?.future[0]?.label ?? ""} (Ctrl+Shift+Z)`}
+            disabled={!designer.history?.future.length || !canEdit}
+            onClick={designer.redo}
+          >
             <Redo2 className="h-4 w-4" aria-hidden />
           </Button>
         </div>
       </header>
       {designer.save.kind === "conflict" && (
-        <div role="alert" className="flex flex-wrap items-center gap-3 rounded-md border border-amber-300 bg-amber-50 p-3 text-sm text-amber-900">
+        <div
+          role="alert"
+          className="flex flex-wrap items-center gap-3 rounded-md border border-amber-300 bg-amber-50 p-3 text-sm text-amber-900"
+        >
           Someone else saved this experiment while you were editing it. Your latest changes are not saved yet.
           <Button size="sm" variant="secondary" onClick={() => void designer.loadTheirs()}>
             Load their version (drop my changes)
@@ -216,15 +285,29 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
       )}
       {designer.save.kind === "failed" && <Problem error={{ message: `Not saved: ${designer.save.message}` }} />}
       {designer.notice && <Problem error={{ message: designer.notice }} />}
-      <DndContext sensors={sensors} collisionDetection={collision} onDragStart={onDragStart} onDragEnd={onDragEnd} onDragCancel={() => setDragging(null)}>
+      <DndContext
+        sensors={sensors}
+        collisionDetection={collision}
+        onDragStart={onDragStart}
+        onDragEnd={onDragEnd}
+        onDragCancel={() => setDragging(null)}
+      >
         <div className="grid min-h-0 flex-1 grid-cols-[16rem_minmax(0,1fr)_24rem] gap-4">
           {canEdit ? (
             <LibraryPanel blocks={blocks} unsupported={unsupported} onAdd={addFromLibrary} />
           ) : (
-            <p className="text-sm text-slate-500">You can read this experiment; only its owner and researchers edit it.</p>
+            <p className="text-sm text-slate-500">
+              You can read this experiment; only its owner and researchers edit it.
+            </p>
           )}
           <main className="min-h-0 space-y-3 overflow-y-auto pr-1">
-            <ProtocolTimeline steps={draft.steps} selection={selection} marks={marks} blockName={blockName} onSelect={setSelection} />
+            <ProtocolTimeline
+              steps={draft.steps}
+              selection={selection}
+              marks={marks}
+              blockName={blockName}
+              onSelect={setSelection}
+            />
             {canEdit && (
               <Button variant="secondary" onClick={addStep}>
                 <Plus className="h-4 w-4" aria-hidden /> Add step
@@ -233,18 +316,36 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
           </main>
           <div className="min-h-0 space-y-3 overflow-y-auto">
             <fieldset disabled={!canEdit} className="min-w-0">
-              <PropertiesPanel draft={draft} selection={selection} issues={issues} blockFor={blockFor} run={run} onMove={moveSelected} onDelete={deleteSelected} />
+              <PropertiesPanel
+                draft={draft}
+                selection={selection}
+                issues={issues}
+                blockFor={blockFor}
+                run={run}
+                onMove={moveSelected}
+                onDelete={deleteSelected}
+              />
             </fieldset>
             <IssuesPanel draft={draft} issues={issues} robotName={robotName} onSelect={setSelection} />
             <VersionsPanel
               experimentId={experimentId}
               canPublish={canPublish}
-              blocked={errors ? "Fix the problems listed above to publish." : designer.save.kind === "conflict" ? "Resolve the editing conflict first." : null}
+              blocked={
+                errors
+                  ? "Fix the problems listed above to publish."
+                  : designer.save.kind === "conflict"
+                    ? "Resolve the editing conflict first."
+                    : null
+              }
               beforePublish={designer.saveNow}
             />
           </div>
         </div>
-        <DragOverlay dropAnimation={null}>{dragging && <div className="rounded-md border border-brand-500 bg-white px-3 py-1.5 text-sm shadow-lg">{dragging}</div>}</DragOverlay>
+        <DragOverlay dropAnimation={null}>
+          {dragging && (
+            <div className="rounded-md border border-brand-500 bg-white px-3 py-1.5 text-sm shadow-lg">{dragging}</div>
+          )}
+        </DragOverlay>
       </DndContext>
     </div>
   );
@@ -290,20 +391,38 @@ function isUnsupported(plugin: Plugin, type: string) {
 }
 
 function SaveStatus({ save }: { save: SaveState }) {
-  const text = { saved: "All changes saved", saving: "Saving…", unsaved: "Unsaved changes", conflict: "Not saved: conflict", failed: "Not saved" }[save.kind];
+  const text = {
+    saved: "All changes saved",
+    saving: "Saving…",
+    unsaved: "Unsaved changes",
+    conflict: "Not saved: conflict",
+    failed: "Not saved",
+  }[save.kind];
   return (
-    <span role="status" data-save-state={save.kind} className={save.kind === "saved" ? "text-xs text-slate-500" : "text-xs text-amber-800"}>
+    <span
+      role="status"
+      data-save-state={save.kind}
+      className={save.kind === "saved" ? "text-xs text-slate-500" : "text-xs text-amber-800"}
+    >
       {text}
     </span>
   );
 }
 
 /** The designer's keys: undo/redo, Alt+arrows to move, Delete to remove; never while typing. */
-function useDesignerKeys(keys: { undo: () => void; redo: () => void; move: (d: -1 | 1) => void; remove: () => void; enabled: boolean }) {
+function useDesignerKeys(keys: {
+  undo: () => void;
+  redo: () => void;
+  move: (d: -1 | 1) => void;
+  remove: () => void;
+  enabled: boolean;
+}) {
   useEffect(() => {
     if (!keys.enabled) return;
     const onKey = (e: KeyboardEvent) => {
-      const typing = e.target instanceof HTMLElement && (e.target.isContentEditable || ["INPUT", "TEXTAREA", "SELECT"].includes(e.target.tagName));
+      const typing =
+        e.target instanceof HTMLElement &&
+        (e.target.isContentEditable || ["INPUT", "TEXTAREA", "SELECT"].includes(e.target.tagName));
       const mod = e.ctrlKey || e.metaKey;
       if (mod && e.key.toLowerCase() === "z" && !typing) {
         e.preventDefault();

@@ -6,7 +6,17 @@ import type { DesignIssue } from "@/core/designer/validate";
 import type { DesignDraft } from "@/core/designer/types";
 import type { Selection } from "./protocol-timeline";
 
-export function IssuesPanel({ draft, issues, robotName, onSelect }: { draft: DesignDraft; issues: DesignIssue[]; robotName: string; onSelect: (s: Selection) => void }) {
+export function IssuesPanel({
+  draft,
+  issues,
+  robotName,
+  onSelect,
+}: {
+  draft: DesignDraft;
+  issues: DesignIssue[];
+  robotName: string;
+  onSelect: (s: Selection) => void;
+}) {
   const errors = issues.filter((i) => i.severity === "error").length;
   const warnings = issues.length - errors;
   const actionCount = draft.steps.reduce((n, s) => n + s.actions.length, 0);
@@ -14,9 +24,17 @@ export function IssuesPanel({ draft, issues, robotName, onSelect }: { draft: Des
   return (
     <section aria-label="Checks" className="rounded-lg border border-slate-200 bg-white p-4 shadow-sm">
       <h2 className="mb-2 flex items-center gap-2 font-semibold">
-        {errors ? <AlertCircle className="h-4 w-4 text-red-600" aria-hidden /> : <CheckCircle2 className="h-4 w-4 text-emerald-600" aria-hidden />}
+        {errors ? (
+          <AlertCircle className="h-4 w-4 text-red-600" aria-hidden />
+        ) : (
+          <CheckCircle2 className="h-4 w-4 text-emerald-600" aria-hidden />
+        )}
         {errors ? `${errors} problem${errors > 1 ? "s" : ""} to fix before publishing` : "Ready to publish"}
-        {warnings > 0 && <span className="text-sm font-normal text-amber-800">· {warnings} warning{warnings > 1 ? "s" : ""}</span>}
+        {warnings > 0 && (
+          <span className="text-sm font-normal text-amber-800">
+            · {warnings} warning{warnings > 1 ? "s" : ""}
+          </span>
+        )}
       </h2>
       <p className="mb-2 text-xs text-slate-500" data-testid="portability">
         {unsupported
@@ -29,7 +47,15 @@ export function IssuesPanel({ draft, issues, robotName, onSelect }: { draft: Des
             <button
               type="button"
               className="flex w-full items-start gap-1.5 rounded px-1 py-0.5 text-left hover:bg-slate-100"
-              onClick={() => onSelect(issue.actionId ? { kind: "action", id: issue.actionId } : issue.stepId ? { kind: "step", id: issue.stepId } : null)}
+              onClick={() =>
+                onSelect(
+                  issue.actionId
+                    ? { kind: "action", id: issue.actionId }
+                    : issue.stepId
+                      ? { kind: "step", id: issue.stepId }
+                      : null,
+                )
+              }
             >
               {issue.severity === "error" ? (
                 <AlertCircle className="mt-0.5 h-4 w-4 shrink-0 text-red-600" aria-label="Error" />

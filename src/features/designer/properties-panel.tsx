@@ -58,7 +58,14 @@ function Toolbar({ what, onMove, onDelete }: { what: string; onMove: Props["onMo
       <Button variant="ghost" size="sm" onClick={() => onMove(1)} title="Alt+↓" aria-label={`Move ${what} down`}>
         <ArrowDown className="h-4 w-4" aria-hidden /> Down
       </Button>
-      <Button variant="ghost" size="sm" className="ml-auto text-red-700" onClick={onDelete} title="Delete" aria-label={`Delete ${what}`}>
+      <Button
+        variant="ghost"
+        size="sm"
+        className="ml-auto text-red-700"
+        onClick={onDelete}
+        title="Delete"
+        aria-label={`Delete ${what}`}
+      >
         <Trash2 className="h-4 w-4" aria-hidden /> Delete
       </Button>
     </div>
@@ -72,10 +79,22 @@ function StepProperties({ draft, stepId, issues, run, onMove, onDelete }: Props 
     <div className="space-y-3">
       <h2 className="font-semibold">Step {index + 1}</h2>
       <Field label="Step name" required error={step.name.trim() ? undefined : "A step needs a name."}>
-        {(p) => <Input {...p} value={step.name} onChange={(e) => run(commands.updateStep(stepId, { name: e.target.value }))} />}
+        {(p) => (
+          <Input
+            {...p}
+            value={step.name}
+            onChange={(e) => run(commands.updateStep(stepId, { name: e.target.value }))}
+          />
+        )}
       </Field>
       <Field label="Description" hint="For the researchers and the wizard; the participant never sees it.">
-        {(p) => <Textarea {...p} value={step.description} onChange={(e) => run(commands.updateStep(stepId, { description: e.target.value }))} />}
+        {(p) => (
+          <Textarea
+            {...p}
+            value={step.description}
+            onChange={(e) => run(commands.updateStep(stepId, { description: e.target.value }))}
+          />
+        )}
       </Field>
       <IssueList issues={own} />
       <Toolbar what="step" onMove={onMove} onDelete={onDelete} />
@@ -83,29 +102,47 @@ function StepProperties({ draft, stepId, issues, run, onMove, onDelete }: Props 
   );
 }
 
-function ActionProperties({ draft, action, issues, blockFor, run, onMove, onDelete }: Props & { action: DesignAction }) {
+function ActionProperties({
+  draft,
+  action,
+  issues,
+  blockFor,
+  run,
+  onMove,
+  onDelete,
+}: Props & { action: DesignAction }) {
   const block = blockFor(action.type);
   const { step, index } = locateAction(draft, action.id);
   const own = issues.filter((i) => i.actionId === action.id);
   const problems = own.filter((i) => i.parameter).map((i) => ({ parameter: i.parameter!, message: i.message }));
   const setParameters = (values: Record<string, unknown>) => {
-    for (const [k, v] of Object.entries(values)) if (v !== action.parameters[k]) run(commands.setParameter(action.id, k, v));
+    for (const [k, v] of Object.entries(values))
+      if (v !== action.parameters[k]) run(commands.setParameter(action.id, k, v));
   };
   return (
     <div className="space-y-3">
       <div>
         <h2 className="font-semibold">{block?.name ?? action.type}</h2>
-        <p className="text-xs text-slate-500">{block?.description ?? "This block is not known for the chosen robot."}</p>
+        <p className="text-xs text-slate-500">
+          {block?.description ?? "This block is not known for the chosen robot."}
+        </p>
       </div>
       <Field label="Label" hint="A short name shown in the timeline and to the wizard.">
-        {(p) => <Input {...p} value={action.name} onChange={(e) => run(commands.renameAction(action.id, e.target.value))} />}
+        {(p) => (
+          <Input {...p} value={action.name} onChange={(e) => run(commands.renameAction(action.id, e.target.value))} />
+        )}
       </Field>
       {action.type === "record_answer" ? (
         <AnswerEditor action={action} run={run} problems={problems} />
       ) : action.type === "branch" ? (
         <BranchEditor draft={draft} action={action} answer={step.actions[index - 1]} run={run} />
       ) : block ? (
-        <SchemaForm schema={block.parameterSchema} value={action.parameters} onChange={setParameters} problems={problems} />
+        <SchemaForm
+          schema={block.parameterSchema}
+          value={action.parameters}
+          onChange={setParameters}
+          problems={problems}
+        />
       ) : null}
       <label className="flex items-center gap-2 text-sm">
         <input
@@ -125,13 +162,29 @@ function ActionProperties({ draft, action, issues, blockFor, run, onMove, onDele
 
 type Option = { id: string; label: string };
 
-function AnswerEditor({ action, run, problems }: { action: DesignAction; run: Props["run"]; problems: Array<{ parameter: string; message: string }> }) {
+function AnswerEditor({
+  action,
+  run,
+  problems,
+}: {
+  action: DesignAction;
+  run: Props["run"];
+  problems: Array<{ parameter: string; message: string }>;
+}) {
   const options = (Array.isArray(action.parameters.options) ? action.parameters.options : []) as Option[];
   const setOptions = (next: Option[]) => run(commands.setParameter(action.id, "options", next));
-  const schema: ParameterSchema = { type: "object", properties: { prompt: { type: "string", title: "Question for the wizard" } } };
+  const schema: ParameterSchema = {
+    type: "object",
+    properties: { prompt: { type: "string", title: "Question for the wizard" } },
+  };
   return (
     <div className="space-y-3">
-      <SchemaForm schema={schema} value={action.parameters} onChange={(v) => run(commands.setParameter(action.id, "prompt", v.prompt))} problems={problems} />
+      <SchemaForm
+        schema={schema}
+        value={action.parameters}
+        onChange={(v) => run(commands.setParameter(action.id, "prompt", v.prompt))}
+        problems={problems}
+      />
       <fieldset className="space-y-2">
         <legend className="text-sm font-medium text-slate-700">Answers the wizard can record</legend>
         {options.map((o, i) => (
@@ -141,15 +194,28 @@ function AnswerEditor({ action, run, problems }: { action: DesignAction; run: Pr
               value={o.label}
               onChange={(e) => setOptions(options.map((x) => (x.id === o.id ? { ...x, label: e.target.value } : x)))}
             />
-            <Button variant="ghost" size="sm" aria-label={`Remove answer ${i + 1}`} onClick={() => setOptions(options.filter((x) => x.id !== o.id))}>
+            <Button
+              variant="ghost"
+              size="sm"
+              aria-label={`Remove answer ${i + 1}`}
+              onClick={() => setOptions(options.filter((x) => x.id !== o.id))}
+            >
               <X className="h-4 w-4" aria-hidden />
             </Button>
           </div>
         ))}
-        {problems.filter((p) => p.parameter === "options").map((p) => (
-          <p key={p.message} className="text-sm text-red-600">{p.message}</p>
-        ))}
-        <Button variant="secondary" size="sm" onClick={() => setOptions([...options, { id: newId(), label: `Answer ${options.length + 1}` }])}>
+        {problems
+          .filter((p) => p.parameter === "options")
+          .map((p) => (
+            <p key={p.message} className="text-sm text-red-600">
+              {p.message}
+            </p>
+          ))}
+        <Button
+          variant="secondary"
+          size="sm"
+          onClick={() => setOptions([...options, { id: newId(), label: `Answer ${options.length + 1}` }])}
+        >
           <Plus className="h-4 w-4" aria-hidden /> Add an answer
         </Button>
       </fieldset>
@@ -157,9 +223,23 @@ function AnswerEditor({ action, run, problems }: { action: DesignAction; run: Pr
   );
 }
 
-function BranchEditor({ draft, action, answer, run }: { draft: DesignDraft; action: DesignAction; answer: DesignAction | undefined; run: Props["run"] }) {
+function BranchEditor({
+  draft,
+  action,
+  answer,
+  run,
+}: {
+  draft: DesignDraft;
+  action: DesignAction;
+  answer: DesignAction | undefined;
+  run: Props["run"];
+}) {
   if (answer?.type !== "record_answer") {
-    return <p className="text-sm text-amber-800">Place this branch right after a “Record answer” block: it goes where the recorded answer says.</p>;
+    return (
+      <p className="text-sm text-amber-800">
+        Place this branch right after a “Record answer” block: it goes where the recorded answer says.
+      </p>
+    );
   }
   const options = (Array.isArray(answer.parameters.options) ? answer.parameters.options : []) as Option[];
   const targets = (action.parameters.targets ?? {}) as Record<string, string>;
@@ -168,9 +248,17 @@ function BranchEditor({ draft, action, answer, run }: { draft: DesignDraft; acti
       <legend className="text-sm font-medium text-slate-700">For each answer, go to</legend>
       {options.map((o) => (
         <div key={o.id} className="space-y-1">
-          <Field label={`If “${o.label}”`} required error={targets[o.id] ? undefined : "Choose a step for this answer."}>
+          <Field
+            label={`If “${o.label}”`}
+            required
+            error={targets[o.id] ? undefined : "Choose a step for this answer."}
+          >
             {(p) => (
-              <NativeSelect {...p} value={targets[o.id] ?? ""} onChange={(e) => run(commands.setBranchTarget(action.id, o.id, e.target.value || null))}>
+              <NativeSelect
+                {...p}
+                value={targets[o.id] ?? ""}
+                onChange={(e) => run(commands.setBranchTarget(action.id, o.id, e.target.value || null))}
+              >
                 <option value="">Choose a step…</option>
                 {draft.steps.map((s, i) => (
                   <option key={s.id} value={s.id}>
@@ -181,7 +269,11 @@ function BranchEditor({ draft, action, answer, run }: { draft: DesignDraft; acti
             )}
           </Field>
           {!targets[o.id] && (
-            <Button variant="ghost" size="sm" onClick={() => run(commands.addStepForAnswer(action.id, o.id, `Response — ${o.label}`))}>
+            <Button
+              variant="ghost"
+              size="sm"
+              onClick={() => run(commands.addStepForAnswer(action.id, o.id, `Response — ${o.label}`))}
+            >
               <Plus className="h-4 w-4" aria-hidden /> Create a new step for “{o.label}”
             </Button>
           )}

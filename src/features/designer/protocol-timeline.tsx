@@ -40,7 +40,10 @@ export function ProtocolTimeline({
     <SortableContext items={items} strategy={verticalListSortingStrategy}>
       <ol aria-label="Protocol" className="space-y-3">
         {steps.map((step, index) => {
-          const selected = selection && (selection.id === step.id || step.actions.some((a) => a.id === selection.id)) ? selection.id : null;
+          const selected =
+            selection && (selection.id === step.id || step.actions.some((a) => a.id === selection.id))
+              ? selection.id
+              : null;
           return (
             <StepCard
               key={step.id}
@@ -95,14 +98,30 @@ const StepCard = memo(
         ref={sortable.setNodeRef}
         style={{ transform: CSS.Translate.toString(sortable.transform), transition: sortable.transition }}
         data-step={step.name}
-        className={cn("rounded-lg border bg-white shadow-sm", selected === step.id ? "border-brand-500 ring-2 ring-brand-500/30" : "border-slate-200", sortable.isDragging && "opacity-60")}
+        className={cn(
+          "rounded-lg border bg-white shadow-sm",
+          selected === step.id ? "border-brand-500 ring-2 ring-brand-500/30" : "border-slate-200",
+          sortable.isDragging && "opacity-60",
+        )}
       >
         <div className="flex items-center gap-2 border-b border-slate-100 px-3 py-2">
-          <button type="button" aria-label={`Drag step ${step.name}`} className="cursor-grab text-slate-400 hover:text-slate-700" {...sortable.attributes} {...sortable.listeners}>
+          <button
+            type="button"
+            aria-label={`Drag step ${step.name}`}
+            className="cursor-grab text-slate-400 hover:text-slate-700"
+            {...sortable.attributes}
+            {...sortable.listeners}
+          >
             <GripVertical className="h-4 w-4" aria-hidden />
           </button>
-          <button type="button" className="flex-1 text-left" onClick={() => onSelect({ kind: "step", id: step.id })} aria-label={`Step ${index + 1}: ${step.name}`}>
-            <span className="text-xs font-semibold text-slate-400">Step {index + 1}</span> <span className="font-semibold">{step.name}</span>
+          <button
+            type="button"
+            className="flex-1 text-left"
+            onClick={() => onSelect({ kind: "step", id: step.id })}
+            aria-label={`Step ${index + 1}: ${step.name}`}
+          >
+            <span className="text-xs font-semibold text-slate-400">Step {index + 1}</span>{" "}
+            <span className="font-semibold">{step.name}</span>
             {step.description && <span className="ml-2 text-xs text-slate-500">{step.description}</span>}
           </button>
           <MarkIcons marks={stepMarks} />
@@ -133,14 +152,23 @@ const StepCard = memo(
         <div
           ref={drop.setNodeRef}
           data-drop-zone={step.name}
-          className={cn("mx-2 mb-2 rounded-md border border-dashed px-3 py-2 text-center text-xs", drop.isOver ? "border-brand-500 bg-brand-50 text-brand-700" : "border-slate-300 text-slate-400")}
+          className={cn(
+            "mx-2 mb-2 rounded-md border border-dashed px-3 py-2 text-center text-xs",
+            drop.isOver ? "border-brand-500 bg-brand-50 text-brand-700" : "border-slate-300 text-slate-400",
+          )}
         >
           {step.actions.length ? "Drop a block here to add it at the end" : "Empty step: drop a block here"}
         </div>
       </li>
     );
   },
-  (a, b) => a.step === b.step && a.index === b.index && a.selected === b.selected && a.marksKey === b.marksKey && a.blockName === b.blockName && a.onSelect === b.onSelect,
+  (a, b) =>
+    a.step === b.step &&
+    a.index === b.index &&
+    a.selected === b.selected &&
+    a.marksKey === b.marksKey &&
+    a.blockName === b.blockName &&
+    a.onSelect === b.onSelect,
 );
 
 const ActionCard = memo(function ActionCard({
@@ -220,7 +248,10 @@ function MarkIcons({ marks }: { marks: Marks | undefined }) {
     <span className="flex shrink-0 gap-1">
       {marks.errors.length > 0 && (
         <span title={marks.errors.join("\n")} className="text-red-600">
-          <AlertCircle className="h-4 w-4" aria-label={`${marks.errors.length} problem(s): ${marks.errors.join(" ")}`} />
+          <AlertCircle
+            className="h-4 w-4"
+            aria-label={`${marks.errors.length} problem(s): ${marks.errors.join(" ")}`}
+          />
         </span>
       )}
       {marks.warnings.length > 0 && (

@@ -10,13 +10,20 @@ import { newId } from "@/lib/new-id";
 import { useTRPC } from "@/lib/trpc";
 import { messageOf } from "@/ui/problem";
 
-export type SaveState = { kind: "saved" } | { kind: "saving" } | { kind: "unsaved" } | { kind: "conflict" } | { kind: "failed"; message: string };
+export type SaveState =
+  | { kind: "saved" }
+  | { kind: "saving" }
+  | { kind: "unsaved" }
+  | { kind: "conflict" }
+  | { kind: "failed"; message: string };
 
 const AUTOSAVE_DELAY_MS = 700;
 
 export function useDesigner(experimentId: string) {
   const trpc = useTRPC();
-  const loaded = useQuery(trpc.experiments.get.queryOptions({ experimentId }, { refetchOnWindowFocus: false, staleTime: Infinity }));
+  const loaded = useQuery(
+    trpc.experiments.get.queryOptions({ experimentId }, { refetchOnWindowFocus: false, staleTime: Infinity }),
+  );
   const [history, setHistory] = useState<History | null>(null);
   const [save, setSave] = useState<SaveState>({ kind: "saved" });
   const [notice, setNotice] = useState<string | null>(null);

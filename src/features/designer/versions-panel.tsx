@@ -10,13 +10,25 @@ import { NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
 import { Badge } from "@/ui/surface";
 
-export function VersionsPanel({ experimentId, canPublish, blocked, beforePublish }: { experimentId: string; canPublish: boolean; blocked: string | null; beforePublish: () => Promise<void> }) {
+export function VersionsPanel({
+  experimentId,
+  canPublish,
+  blocked,
+  beforePublish,
+}: {
+  experimentId: string;
+  canPublish: boolean;
+  blocked: string | null;
+  beforePublish: () => Promise<void>;
+}) {
   const trpc = useTRPC();
   const client = useTRPCClient();
   const queryClient = useQueryClient();
   const versions = useQuery(trpc.versions.list.queryOptions({ experimentId }));
   const publish = useMutation(
-    trpc.versions.publish.mutationOptions({ onSuccess: () => queryClient.invalidateQueries({ queryKey: trpc.versions.list.queryKey({ experimentId }) }) }),
+    trpc.versions.publish.mutationOptions({
+      onSuccess: () => queryClient.invalidateQueries({ queryKey: trpc.versions.list.queryKey({ experimentId }) }),
+    }),
   );
   const [exportError, setExportError] = useState<unknown>(null);
   const download = async () => {
@@ -89,7 +101,12 @@ function VersionDiff({ experimentId, versions }: { experimentId: string; version
   const [to, setTo] = useState(versions[0]!);
   const diff = useQuery(trpc.versions.diff.queryOptions({ experimentId, from, to }));
   const pick = (value: number, set: (n: number) => void, label: string) => (
-    <NativeSelect aria-label={label} className="h-8 w-auto py-0" value={value} onChange={(e) => set(Number(e.target.value))}>
+    <NativeSelect
+      aria-label={label}
+      className="h-8 w-auto py-0"
+      value={value}
+      onChange={(e) => set(Number(e.target.value))}
+    >
       {versions.map((v) => (
         <option key={v} value={v}>
           version {v}
@@ -107,7 +124,12 @@ function VersionDiff({ experimentId, versions }: { experimentId: string; version
         <ul aria-label="Changes between versions" className="space-y-0.5 text-sm">
           {diff.data.length === 0 && <li className="text-slate-500">No differences.</li>}
           {diff.data.map((line, i) => (
-            <li key={i} className={line.kind === "added" ? "text-emerald-800" : line.kind === "removed" ? "text-red-800" : "text-slate-700"}>
+            <li
+              key={i}
+              className={
+                line.kind === "added" ? "text-emerald-800" : line.kind === "removed" ? "text-red-800" : "text-slate-700"
+              }
+            >
               {line.kind === "added" ? "+ " : line.kind === "removed" ? "− " : "• "}
               {line.text}
             </li>

@@ -23,7 +23,14 @@ export function MarkMoment({ annotate }: { annotate: (label: string, note: strin
       <h2 className="mb-2 font-semibold">Mark a moment</h2>
       <form onSubmit={submit} className="space-y-2">
         <Field label="Label" required>
-          {(p) => <Input {...p} value={label} onChange={(e) => setLabel(e.target.value)} placeholder="e.g. participant laughed" />}
+          {(p) => (
+            <Input
+              {...p}
+              value={label}
+              onChange={(e) => setLabel(e.target.value)}
+              placeholder="e.g. participant laughed"
+            />
+          )}
         </Field>
         <Field label="Note">{(p) => <Input {...p} value={note} onChange={(e) => setNote(e.target.value)} />}</Field>
         <Button type="submit">Mark moment</Button>
@@ -40,8 +47,10 @@ export function Moments({ annotations }: { annotations: Annotation[] }) {
       <ul className="space-y-1 text-sm" aria-label="Marked moments">
         {annotations.map((a) => (
           <li key={a.id}>
-            <span className="font-mono text-xs text-slate-500">{(a.relMs / 1000).toFixed(1)} s</span> <strong>{a.label}</strong>
-            {a.note && <span className="text-slate-600"> — {a.note}</span>} <span className="text-xs text-slate-400">by {a.authorName}</span>
+            <span className="font-mono text-xs text-slate-500">{(a.relMs / 1000).toFixed(1)} s</span>{" "}
+            <strong>{a.label}</strong>
+            {a.note && <span className="text-slate-600"> — {a.note}</span>}{" "}
+            <span className="text-xs text-slate-400">by {a.authorName}</span>
           </li>
         ))}
       </ul>

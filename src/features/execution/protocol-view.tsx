@@ -20,7 +20,15 @@ export function describeAction(a: { type: string; name?: string; parameters: Rec
   return a.name || text || a.type.replaceAll("_", " ");
 }
 
-export function StepList({ protocol, state, onJump }: { protocol: TrialProtocol; state: TrialState; onJump?: (stepId: string) => void }) {
+export function StepList({
+  protocol,
+  state,
+  onJump,
+}: {
+  protocol: TrialProtocol;
+  state: TrialState;
+  onJump?: (stepId: string) => void;
+}) {
   return (
     <ol className="space-y-1" aria-label="Steps">
       {protocol.steps.map((step, i) => {
@@ -30,11 +38,19 @@ export function StepList({ protocol, state, onJump }: { protocol: TrialProtocol;
           <li
             key={step.id}
             aria-current={current ? "step" : undefined}
-            className={cn("rounded-md px-3 py-2 text-sm", current ? "bg-brand-600 font-semibold text-white" : done ? "text-slate-400" : "text-slate-700")}
+            className={cn(
+              "rounded-md px-3 py-2 text-sm",
+              current ? "bg-brand-600 font-semibold text-white" : done ? "text-slate-400" : "text-slate-700",
+            )}
           >
             {i + 1}. {step.name}
             {onJump && !current && state.status === "in_progress" && (
-              <button type="button" className="ml-2 text-xs text-brand-600 underline-offset-2 hover:underline" aria-label={`Jump to ${step.name}`} onClick={() => onJump(step.id)}>
+              <button
+                type="button"
+                className="ml-2 text-xs text-brand-600 underline-offset-2 hover:underline"
+                aria-label={`Jump to ${step.name}`}
+                onClick={() => onJump(step.id)}
+              >
                 jump
               </button>
             )}
@@ -45,7 +61,15 @@ export function StepList({ protocol, state, onJump }: { protocol: TrialProtocol;
   );
 }
 
-export function StepActions({ protocol, state, onTrigger }: { protocol: TrialProtocol; state: TrialState; onTrigger?: (actionId: string) => void }) {
+export function StepActions({
+  protocol,
+  state,
+  onTrigger,
+}: {
+  protocol: TrialProtocol;
+  state: TrialState;
+  onTrigger?: (actionId: string) => void;
+}) {
   const step = protocol.steps.find((s) => s.id === state.currentStepId);
   if (!step) return <p className="text-slate-500">The trial has not started.</p>;
   return (
@@ -56,20 +80,35 @@ export function StepActions({ protocol, state, onTrigger }: { protocol: TrialPro
       <ul className="mt-3 divide-y divide-slate-100 rounded-lg border border-slate-200 bg-white">
         {step.actions.map((a) => {
           const s = state.actions[a.id]!;
-          const took = s.finishedAt != null && s.requestedAt != null ? `${((s.finishedAt - s.requestedAt) / 1000).toFixed(1)} s` : "";
+          const took =
+            s.finishedAt != null && s.requestedAt != null
+              ? `${((s.finishedAt - s.requestedAt) / 1000).toFixed(1)} s`
+              : "";
           return (
             <li key={a.id} className="flex items-center gap-3 px-4 py-2 text-sm" data-testid={`action-${a.id}`}>
               <Badge tone={STATUS[s.status].tone}>{STATUS[s.status].label}</Badge>
               <span className="flex-1">
-                {a.type === "wizard_instruction" ? <strong>Instruction: {String(a.parameters.text ?? a.name)}</strong> : describeAction(a)}
+                {a.type === "wizard_instruction" ? (
+                  <strong>Instruction: {String(a.parameters.text ?? a.name)}</strong>
+                ) : (
+                  describeAction(a)
+                )}
                 {a.parallelGroup && <span className="ml-2 text-xs text-slate-400">together</span>}
               </span>
               <span className="text-xs tabular-nums text-slate-500">{took}</span>
-              {onTrigger && s.status === "waiting" && state.status === "in_progress" && !["record_answer", "branch"].includes(a.type) && (
-                <button type="button" className="text-xs text-brand-600 hover:underline" aria-label={`Run ${describeAction(a)} now`} onClick={() => onTrigger(a.id)}>
-                  run now
-                </button>
-              )}
+              {onTrigger &&
+                s.status === "waiting" &&
+                state.status === "in_progress" &&
+                !["record_answer", "branch"].includes(a.type) && (
+                  <button
+                    type="button"
+                    className="text-xs text-brand-600 hover:underline"
+                    aria-label={`Run ${describeAction(a)} now`}
+                    onClick={() => onTrigger(a.id)}
+                  >
+                    run now
+                  </button>
+                )}
             </li>
           );
         })}
@@ -79,7 +118,19 @@ export function StepActions({ protocol, state, onTrigger }: { protocol: TrialPro
 }
 
 /** Actions the wizard sent off script, with their status: deviations, visible as they happen. */
-export function OffScript({ events, state }: { events: Array<{ type: string; actionId?: string; actionType?: string; scripted?: boolean; parameters?: Record<string, unknown> }>; state: TrialState }) {
+export function OffScript({
+  events,
+  state,
+}: {
+  events: Array<{
+    type: string;
+    actionId?: string;
+    actionType?: string;
+    scripted?: boolean;
+    parameters?: Record<string, unknown>;
+  }>;
+  state: TrialState;
+}) {
   const unscripted = events.filter((e) => e.type === "action.requested" && e.scripted === false);
   if (!unscripted.length) return null;
   return (

@@ -23,7 +23,16 @@ export function TrialPage({ trialId }: { trialId: string }) {
   return <LiveTrial trial={trial.data} protocol={trial.data.protocol as TrialProtocol} />;
 }
 
-type Trial = { id: string; studyId: string; experimentName: string; participantId: string | null; participantCode: string | null; isRehearsal: boolean; version: number | null; myRole: "owner" | "researcher" | "wizard" | "observer" };
+type Trial = {
+  id: string;
+  studyId: string;
+  experimentName: string;
+  participantId: string | null;
+  participantCode: string | null;
+  isRehearsal: boolean;
+  version: number | null;
+  myRole: "owner" | "researcher" | "wizard" | "observer";
+};
 
 function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol }) {
   const live = useTrialSocket(trial.id, protocol);
@@ -32,7 +41,10 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
   const started = live.events.find((e) => e.type === "trial.started");
   const ended = live.state.status === "completed" || live.state.status === "aborted";
   const { command } = live;
-  const logRecording = useCallback((recordingId: string, offsetMs: number) => void command({ kind: "recording", recordingId, offsetMs }), [command]);
+  const logRecording = useCallback(
+    (recordingId: string, offsetMs: number) => void command({ kind: "recording", recordingId, offsetMs }),
+    [command],
+  );
   return (
     <div className="space-y-4">
       <div className="flex flex-wrap items-center gap-3">
@@ -50,7 +62,11 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
         <span className="ml-auto flex items-center gap-4">
           {live.robot && (
             <Badge tone={live.robot.connected ? "green" : "red"}>
-              <span data-testid="robot-status">{live.robot.connected ? "robot connected" : `robot disconnected${live.robot.detail ? ` (${live.robot.detail})` : ""}`}</span>
+              <span data-testid="robot-status">
+                {live.robot.connected
+                  ? "robot connected"
+                  : `robot disconnected${live.robot.detail ? ` (${live.robot.detail})` : ""}`}
+              </span>
             </Badge>
           )}
           <Badge tone={live.connected ? "green" : "red"}>{live.connected ? "live" : "reconnecting"}</Badge>
@@ -65,17 +81,34 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
       )}
       <div className="grid gap-6 lg:grid-cols-[14rem_1fr_20rem]">
         <Card className="p-3">
-          <StepList protocol={protocol} state={live.state} onJump={wizard ? (stepId) => void live.command({ kind: "jump", stepId }) : undefined} />
+          <StepList
+            protocol={protocol}
+            state={live.state}
+            onJump={wizard ? (stepId) => void live.command({ kind: "jump", stepId }) : undefined}
+          />
         </Card>
         <div className="space-y-6">
-          <StepActions protocol={protocol} state={live.state} onTrigger={wizard ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined} />
+          <StepActions
+            protocol={protocol}
+            state={live.state}
+            onTrigger={wizard ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined}
+          />
           <OffScript events={live.events} state={live.state} />
           {wizard && <WizardControls protocol={protocol} state={live.state} send={live.command} />}
         </div>
         <div className="space-y-4">
           <Watching viewers={live.viewers} />
-          {wizard && <RecordingPanel trialId={trial.id} startedAt={started?.serverTime ?? null} ended={ended} logStart={logRecording} />}
-          {wizard && trial.participantId && !trial.isRehearsal && <TrialQuestionnaires studyId={trial.studyId} trialId={trial.id} participantId={trial.participantId} />}
+          {wizard && (
+            <RecordingPanel
+              trialId={trial.id}
+              startedAt={started?.serverTime ?? null}
+              ended={ended}
+              logStart={logRecording}
+            />
+          )}
+          {wizard && trial.participantId && !trial.isRehearsal && (
+            <TrialQuestionnaires studyId={trial.studyId} trialId={trial.id} participantId={trial.participantId} />
+          )}
           {!wizard && <MarkMoment annotate={live.annotate} />}
           <Moments annotations={live.annotations} />
           {wizard && (

@@ -10,7 +10,13 @@ import { SchemaForm } from "@/ui/schema-form";
 
 const ROBOT_ACTIONS = ABSTRACT_ACTIONS.filter((a) => !a.runtime && a.id !== "say");
 
-export function UnscriptedAction({ send, disabled }: { send: (c: WizardCommand) => Promise<{ ok: boolean }>; disabled: boolean }) {
+export function UnscriptedAction({
+  send,
+  disabled,
+}: {
+  send: (c: WizardCommand) => Promise<{ ok: boolean }>;
+  disabled: boolean;
+}) {
   const [id, setId] = useState(ROBOT_ACTIONS[0]!.id);
   const [values, setValues] = useState<Record<string, unknown>>({});
   const [problems, setProblems] = useState<ParameterProblem[]>([]);

@@ -6,7 +6,15 @@
 import { useMutation } from "@tanstack/react-query";
 import { useCallback, useEffect, useMemo, useRef, useState } from "react";
 import { fold, type TrialProtocol } from "@/core/trial";
-import { parseServerMessage, SOCKET_PROTOCOL_VERSION, type ClientMessage, type ServerMessage, type Viewer, type WireEvent, type WizardCommand } from "@/core/socket/messages";
+import {
+  parseServerMessage,
+  SOCKET_PROTOCOL_VERSION,
+  type ClientMessage,
+  type ServerMessage,
+  type Viewer,
+  type WireEvent,
+  type WizardCommand,
+} from "@/core/socket/messages";
 import { useTRPC } from "@/lib/trpc";
 
 export type Annotation = Extract<ServerMessage, { type: "annotation" }>["annotation"];
@@ -49,7 +57,15 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
       }
       const ws = new WebSocket(ticket.url);
       socket.current = ws;
-      ws.onopen = () => ws.send(JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: ticket.token, lastSeq: lastSeq.current } satisfies ClientMessage));
+      ws.onopen = () =>
+        ws.send(
+          JSON.stringify({
+            type: "hello",
+            version: SOCKET_PROTOCOL_VERSION,
+            token: ticket.token,
+            lastSeq: lastSeq.current,
+          } satisfies ClientMessage),
+        );
       ws.onmessage = (message) => {
         const parsed = parseServerMessage(String(message.data));
         // A server of another version (the page outlived an upgrade) or a broken message: say so rather than fold it.
@@ -76,7 +92,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
       };
       ws.onclose = (event) => {
         setConnected(false);
-        for (const settle of pending.current.values()) settle({ ok: false, reason: "The connection dropped before the server confirmed this." });
+        for (const settle of pending.current.values())
+          settle({ ok: false, reason: "The connection dropped before the server confirmed this." });
         pending.current.clear();
         if (stopped) return;
         // Shut out (no longer a member, account disabled): say why and stay disconnected.
@@ -102,7 +119,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
 
   const request = useCallback((message: (requestId: string) => ClientMessage): Promise<Outcome> => {
     const ws = socket.current;
-    if (!ws || ws.readyState !== WebSocket.OPEN) return Promise.resolve({ ok: false, reason: "Not connected to the trial yet." });
+    if (!ws || ws.readyState !== WebSocket.OPEN)
+      return Promise.resolve({ ok: false, reason: "Not connected to the trial yet." });
     const requestId = crypto.randomUUID();
     return new Promise((settle) => {
       pending.current.set(requestId, settle);

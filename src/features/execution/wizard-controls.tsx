@@ -83,7 +83,11 @@ export function WizardControls({ protocol, state, send }: { protocol: TrialProto
           <p className="font-medium">{String(question.parameters.prompt ?? "Record the participant's answer")}</p>
           <div className="mt-3 flex flex-wrap gap-2">
             {options.map((o, i) => (
-              <Button key={o.id} size="lg" onClick={() => void send({ kind: "answer", actionId: question.id, optionId: o.id })}>
+              <Button
+                key={o.id}
+                size="lg"
+                onClick={() => void send({ kind: "answer", actionId: question.id, optionId: o.id })}
+              >
                 <kbd className="rounded bg-white/20 px-1.5 text-xs">{i + 1}</kbd> {o.label}
               </Button>
             ))}
@@ -91,24 +95,46 @@ export function WizardControls({ protocol, state, send }: { protocol: TrialProto
         </div>
       ) : (
         <Button size="lg" className="h-16 w-full text-lg" disabled={ended || state.status === "paused"} onClick={next}>
-          <kbd className="rounded bg-white/20 px-1.5 text-xs">N</kbd> {ended ? "Trial ended" : nextLabel(protocol, state)}
+          <kbd className="rounded bg-white/20 px-1.5 text-xs">N</kbd>{" "}
+          {ended ? "Trial ended" : nextLabel(protocol, state)}
         </Button>
       )}
       <div className="flex flex-wrap gap-2">
-        <Button variant="secondary" disabled={!running || unit.length === 0} onClick={() => void send({ kind: "skip" })}>
+        <Button
+          variant="secondary"
+          disabled={!running || unit.length === 0}
+          onClick={() => void send({ kind: "skip" })}
+        >
           Skip (S)
         </Button>
-        <Button variant="secondary" disabled={ended || state.status === "scheduled"} onClick={() => void send({ kind: state.status === "paused" ? "resume" : "pause" })}>
+        <Button
+          variant="secondary"
+          disabled={ended || state.status === "scheduled"}
+          onClick={() => void send({ kind: state.status === "paused" ? "resume" : "pause" })}
+        >
           {state.status === "paused" ? "Resume (P)" : "Pause (P)"}
         </Button>
-        <Button variant="secondary" disabled={ended || state.status === "scheduled"} onClick={() => void send({ kind: "complete" })}>
+        <Button
+          variant="secondary"
+          disabled={ended || state.status === "scheduled"}
+          onClick={() => void send({ kind: "complete" })}
+        >
           Complete trial
         </Button>
-        <Button variant="danger" disabled={ended || state.status === "scheduled"} onClick={() => void send({ kind: "emergency_stop" })}>
+        <Button
+          variant="danger"
+          disabled={ended || state.status === "scheduled"}
+          onClick={() => void send({ kind: "emergency_stop" })}
+        >
           Emergency stop (Esc)
         </Button>
         {confirmAbort ? (
-          <Button variant="danger" onClick={() => void send({ kind: "abort", reason: "Aborted by the wizard" }).then(() => setConfirmAbort(false))}>
+          <Button
+            variant="danger"
+            onClick={() =>
+              void send({ kind: "abort", reason: "Aborted by the wizard" }).then(() => setConfirmAbort(false))
+            }
+          >
             Confirm: abort this trial
           </Button>
         ) : (
@@ -124,7 +150,14 @@ export function WizardControls({ protocol, state, send }: { protocol: TrialProto
           void say();
         }}
       >
-        <Input ref={speech} aria-label="Unscripted speech" placeholder="Say something off script (U)…" value={text} onChange={(e) => setText(e.target.value)} disabled={!running} />
+        <Input
+          ref={speech}
+          aria-label="Unscripted speech"
+          placeholder="Say something off script (U)…"
+          value={text}
+          onChange={(e) => setText(e.target.value)}
+          disabled={!running}
+        />
         <Button type="submit" variant="secondary" disabled={!running}>
           Say
         </Button>
@@ -137,7 +170,13 @@ export function WizardControls({ protocol, state, send }: { protocol: TrialProto
           void addNote();
         }}
       >
-        <Input aria-label="Wizard note" placeholder="Note for the log (not said by the robot)…" value={note} onChange={(e) => setNote(e.target.value)} disabled={ended} />
+        <Input
+          aria-label="Wizard note"
+          placeholder="Note for the log (not said by the robot)…"
+          value={note}
+          onChange={(e) => setNote(e.target.value)}
+          disabled={ended}
+        />
         <Button type="submit" variant="ghost" disabled={ended}>
           Add note
         </Button>

@@ -33,7 +33,11 @@ export function QuestionnaireBuilderPage({ questionnaireId }: { questionnaireId:
   const [name, setName] = useState("");
   const [changed, setChanged] = useState(false);
   const save = useMutation(trpc.questionnaires.save.mutationOptions({ onSuccess: () => setChanged(false) }));
-  const publish = useMutation(trpc.questionnaires.publish.mutationOptions({ onSuccess: () => queryClient.invalidateQueries({ queryKey: trpc.questionnaires.list.queryKey() }) }));
+  const publish = useMutation(
+    trpc.questionnaires.publish.mutationOptions({
+      onSuccess: () => queryClient.invalidateQueries({ queryKey: trpc.questionnaires.list.queryKey() }),
+    }),
+  );
 
   useEffect(() => {
     if (loaded.data && !definition) {
@@ -76,24 +80,64 @@ export function QuestionnaireBuilderPage({ questionnaireId }: { questionnaireId:
         </div>
       </div>
       <Problem error={save.error ?? publish.error} />
-      {publish.data && <p className="text-sm text-emerald-800">Published version {publish.data.version}. New links show this version; answers given before keep theirs.</p>}
+      {publish.data && (
+        <p className="text-sm text-emerald-800">
+          Published version {publish.data.version}. New links show this version; answers given before keep theirs.
+        </p>
+      )}
       <Card className="space-y-3 p-5">
-        <Field label="Name in the study">{(p) => <Input {...p} value={name} onChange={(e) => (setName(e.target.value), setChanged(true))} />}</Field>
-        <Field label="Title the participant sees">{(p) => <Input {...p} value={definition.title} onChange={(e) => edit(builder.setDetails(definition, { title: e.target.value }))} />}</Field>
-        <Field label="Instructions">{(p) => <Textarea {...p} value={definition.instructions} onChange={(e) => edit(builder.setDetails(definition, { instructions: e.target.value }))} />}</Field>
+        <Field label="Name in the study">
+          {(p) => <Input {...p} value={name} onChange={(e) => (setName(e.target.value), setChanged(true))} />}
+        </Field>
+        <Field label="Title the participant sees">
+          {(p) => (
+            <Input
+              {...p}
+              value={definition.title}
+              onChange={(e) => edit(builder.setDetails(definition, { title: e.target.value }))}
+            />
+          )}
+        </Field>
+        <Field label="Instructions">
+          {(p) => (
+            <Textarea
+              {...p}
+              value={definition.instructions}
+              onChange={(e) => edit(builder.setDetails(definition, { instructions: e.target.value }))}
+            />
+          )}
+        </Field>
       </Card>
       {definition.sections.map((section, si) => (
         <Card key={section.id} className="space-y-4 p-5">
           <div className="flex flex-wrap items-end gap-3">
             <div className="w-72">
-              <Field label={`Section ${si + 1} title`}>{(p) => <Input {...p} value={section.title} onChange={(e) => edit(builder.updateSection(definition, section.id, { title: e.target.value }))} />}</Field>
+              <Field label={`Section ${si + 1} title`}>
+                {(p) => (
+                  <Input
+                    {...p}
+                    value={section.title}
+                    onChange={(e) => edit(builder.updateSection(definition, section.id, { title: e.target.value }))}
+                  />
+                )}
+              </Field>
             </div>
             <label className="mb-2 flex items-center gap-2 text-sm">
-              <input type="checkbox" className="h-4 w-4" checked={section.randomize} onChange={(e) => edit(builder.updateSection(definition, section.id, { randomize: e.target.checked }))} />
+              <input
+                type="checkbox"
+                className="h-4 w-4"
+                checked={section.randomize}
+                onChange={(e) => edit(builder.updateSection(definition, section.id, { randomize: e.target.checked }))}
+              />
               Show its questions in a random order for each participant
             </label>
             {definition.sections.length > 1 && (
-              <Button variant="ghost" size="sm" className="mb-1 ml-auto text-red-700" onClick={() => edit(builder.removeSection(definition, section.id))}>
+              <Button
+                variant="ghost"
+                size="sm"
+                className="mb-1 ml-auto text-red-700"
+                onClick={() => edit(builder.removeSection(definition, section.id))}
+              >
                 Remove section
               </Button>
             )}
@@ -101,15 +145,35 @@ export function QuestionnaireBuilderPage({ questionnaireId }: { questionnaireId:
           <ol className="space-y-3">
             {section.items.map((item, ii) => (
               <li key={item.id} className="rounded-md border border-slate-200 p-3">
-                <ItemEditor item={item} number={ii + 1} onChange={(changes) => edit(builder.updateItem(definition, item.id, changes))} />
+                <ItemEditor
+                  item={item}
+                  number={ii + 1}
+                  onChange={(changes) => edit(builder.updateItem(definition, item.id, changes))}
+                />
                 <div className="mt-2 flex gap-1">
-                  <Button variant="ghost" size="sm" aria-label={`Move question ${ii + 1} up`} onClick={() => edit(builder.moveItem(definition, item.id, -1))}>
+                  <Button
+                    variant="ghost"
+                    size="sm"
+                    aria-label={`Move question ${ii + 1} up`}
+                    onClick={() => edit(builder.moveItem(definition, item.id, -1))}
+                  >
                     <ArrowUp className="h-4 w-4" aria-hidden />
                   </Button>
-                  <Button variant="ghost" size="sm" aria-label={`Move question ${ii + 1} down`} onClick={() => edit(builder.moveItem(definition, item.id, 1))}>
+                  <Button
+                    variant="ghost"
+                    size="sm"
+                    aria-label={`Move question ${ii + 1} down`}
+                    onClick={() => edit(builder.moveItem(definition, item.id, 1))}
+                  >
                     <ArrowDown className="h-4 w-4" aria-hidden />
                   </Button>
-                  <Button variant="ghost" size="sm" className="ml-auto text-red-700" aria-label={`Remove question ${ii + 1}`} onClick={() => edit(builder.removeItem(definition, item.id))}>
+                  <Button
+                    variant="ghost"
+                    size="sm"
+                    className="ml-auto text-red-700"
+                    aria-label={`Remove question ${ii + 1}`}
+                    onClick={() => edit(builder.removeItem(definition, item.id))}
+                  >
                     <Trash2 className="h-4 w-4" aria-hidden />
                   </Button>
                 </div>
@@ -130,7 +194,12 @@ function AddQuestion({ onAdd }: { onAdd: (kind: ItemKind) => void }) {
   const [kind, setKind] = useState<ItemKind>("likert");
   return (
     <div className="flex items-center gap-2">
-      <NativeSelect aria-label="Kind of question" className="w-56" value={kind} onChange={(e) => setKind(e.target.value as ItemKind)}>
+      <NativeSelect
+        aria-label="Kind of question"
+        className="w-56"
+        value={kind}
+        onChange={(e) => setKind(e.target.value as ItemKind)}
+      >
         {KINDS.map(([k, label]) => (
           <option key={k} value={k}>
             {label}
@@ -144,27 +213,74 @@ function AddQuestion({ onAdd }: { onAdd: (kind: ItemKind) => void }) {
   );
 }
 
-function ItemEditor({ item, number, onChange }: { item: Item; number: number; onChange: (changes: Partial<Item>) => void }) {
+function ItemEditor({
+  item,
+  number,
+  onChange,
+}: {
+  item: Item;
+  number: number;
+  onChange: (changes: Partial<Item>) => void;
+}) {
   const kindName = KINDS.find(([k]) => k === item.kind)![1];
   return (
     <div className="space-y-2">
       <div className="flex items-center gap-2 text-xs text-slate-500">
         <span className="font-semibold">Question {number}</span> · {kindName}
         <label className="ml-auto flex items-center gap-1">
-          <input type="checkbox" checked={item.required} onChange={(e) => onChange({ required: e.target.checked })} /> required
+          <input type="checkbox" checked={item.required} onChange={(e) => onChange({ required: e.target.checked })} />{" "}
+          required
         </label>
       </div>
-      <Textarea aria-label={`Text of question ${number}`} className="min-h-12" value={item.text} onChange={(e) => onChange({ text: e.target.value })} />
+      <Textarea
+        aria-label={`Text of question ${number}`}
+        className="min-h-12"
+        value={item.text}
+        onChange={(e) => onChange({ text: e.target.value })}
+      />
       {item.kind === "likert" && (
         <div className="flex flex-wrap gap-2 text-sm">
-          <Input aria-label="Lowest point" type="number" className="w-20" value={item.scale.min} onChange={(e) => onChange({ scale: { ...item.scale, min: Number(e.target.value) } })} />
-          <Input aria-label="Highest point" type="number" className="w-20" value={item.scale.max} onChange={(e) => onChange({ scale: { ...item.scale, max: Number(e.target.value) } })} />
-          <Input aria-label="Label of the lowest point" className="w-44" value={item.scale.minLabel} onChange={(e) => onChange({ scale: { ...item.scale, minLabel: e.target.value } })} />
-          <Input aria-label="Label of the highest point" className="w-44" value={item.scale.maxLabel} onChange={(e) => onChange({ scale: { ...item.scale, maxLabel: e.target.value } })} />
+          <Input
+            aria-label="Lowest point"
+            type="number"
+            className="w-20"
+            value={item.scale.min}
+            onChange={(e) => onChange({ scale: { ...item.scale, min: Number(e.target.value) } })}
+          />
+          <Input
+            aria-label="Highest point"
+            type="number"
+            className="w-20"
+            value={item.scale.max}
+            onChange={(e) => onChange({ scale: { ...item.scale, max: Number(e.target.value) } })}
+          />
+          <Input
+            aria-label="Label of the lowest point"
+            className="w-44"
+            value={item.scale.minLabel}
+            onChange={(e) => onChange({ scale: { ...item.scale, minLabel: e.target.value } })}
+          />
+          <Input
+            aria-label="Label of the highest point"
+            className="w-44"
+            value={item.scale.maxLabel}
+            onChange={(e) => onChange({ scale: { ...item.scale, maxLabel: e.target.value } })}
+          />
         </div>
       )}
       {(item.kind === "single" || item.kind === "multiple") && (
-        <Input aria-label="Options, one per comma" value={item.options.join(", ")} onChange={(e) => onChange({ options: e.target.value.split(",").map((o) => o.trim()).filter(Boolean) })} />
+        <Input
+          aria-label="Options, one per comma"
+          value={item.options.join(", ")}
+          onChange={(e) =>
+            onChange({
+              options: e.target.value
+                .split(",")
+                .map((o) => o.trim())
+                .filter(Boolean),
+            })
+          }
+        />
       )}
     </div>
   );

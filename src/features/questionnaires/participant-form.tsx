@@ -16,7 +16,9 @@ const DRAFT_DELAY_MS = 600;
 
 export function ParticipantForm({ token }: { token: string }) {
   const trpc = useTRPC();
-  const form = useQuery(trpc.form.open.queryOptions({ token }, { retry: false, refetchOnWindowFocus: false, staleTime: Infinity }));
+  const form = useQuery(
+    trpc.form.open.queryOptions({ token }, { retry: false, refetchOnWindowFocus: false, staleTime: Infinity }),
+  );
   const [answers, setAnswers] = useState<Answers | null>(null);
   const save = useMutation(trpc.form.save.mutationOptions());
   const submit = useMutation(trpc.form.submit.mutationOptions());
@@ -67,7 +69,9 @@ export function ParticipantForm({ token }: { token: string }) {
       <header>
         <p className="text-sm text-slate-500">{form.data.studyTitle}</p>
         <h1 className="text-2xl font-semibold">{definition.title}</h1>
-        {definition.instructions && <p className="mt-2 whitespace-pre-wrap text-slate-700">{definition.instructions}</p>}
+        {definition.instructions && (
+          <p className="mt-2 whitespace-pre-wrap text-slate-700">{definition.instructions}</p>
+        )}
       </header>
       {definition.sections.map((section) => (
         <section key={section.id} className="space-y-4">
@@ -85,19 +89,39 @@ export function ParticipantForm({ token }: { token: string }) {
           Submit answers
         </Button>
         <span role="status" className="text-sm text-slate-500">
-          {save.isPending ? "Saving…" : save.isSuccess ? "Your answers so far are saved." : save.error ? "Not saved: check your connection." : ""}
+          {save.isPending
+            ? "Saving…"
+            : save.isSuccess
+              ? "Your answers so far are saved."
+              : save.error
+                ? "Not saved: check your connection."
+                : ""}
         </span>
       </div>
     </form>
   );
 }
 
-function ItemField({ item, number, value, onChange }: { item: Item; number: number; value: Answer | undefined; onChange: (v: Answer | undefined) => void }) {
+function ItemField({
+  item,
+  number,
+  value,
+  onChange,
+}: {
+  item: Item;
+  number: number;
+  value: Answer | undefined;
+  onChange: (v: Answer | undefined) => void;
+}) {
   const label = (
     <legend className="mb-3 font-medium">
       <span className="mr-1 text-slate-400">{number}.</span>
       {item.kind === "consent" ? "Consent" : item.text}
-      {item.required && <span className="ml-0.5 text-red-600" aria-hidden>*</span>}
+      {item.required && (
+        <span className="ml-0.5 text-red-600" aria-hidden>
+          *
+        </span>
+      )}
     </legend>
   );
   switch (item.kind) {
@@ -109,8 +133,19 @@ function ItemField({ item, number, value, onChange }: { item: Item; number: numb
           <div className="flex flex-wrap items-center gap-2">
             <span className="w-28 text-right text-sm text-slate-500">{item.scale.minLabel}</span>
             {points.map((p) => (
-              <label key={p} className="flex cursor-pointer flex-col items-center gap-1 rounded-md border border-slate-200 px-3 py-2 has-[:checked]:border-brand-500 has-[:checked]:bg-brand-50">
-                <input type="radio" name={item.id} value={p} checked={value === p} onChange={() => onChange(p)} aria-label={`${item.text}: ${p}`} className="h-5 w-5" />
+              <label
+                key={p}
+                className="flex cursor-pointer flex-col items-center gap-1 rounded-md border border-slate-200 px-3 py-2 has-[:checked]:border-brand-500 has-[:checked]:bg-brand-50"
+              >
+                <input
+                  type="radio"
+                  name={item.id}
+                  value={p}
+                  checked={value === p}
+                  onChange={() => onChange(p)}
+                  aria-label={`${item.text}: ${p}`}
+                  className="h-5 w-5"
+                />
                 <span className="text-sm">{p}</span>
               </label>
             ))}
@@ -134,7 +169,13 @@ function ItemField({ item, number, value, onChange }: { item: Item; number: numb
               };
               return (
                 <label key={o} className="flex items-center gap-2">
-                  <input type={item.kind === "single" ? "radio" : "checkbox"} name={item.id} checked={chosen} onChange={toggle} className="h-5 w-5" />
+                  <input
+                    type={item.kind === "single" ? "radio" : "checkbox"}
+                    name={item.id}
+                    checked={chosen}
+                    onChange={toggle}
+                    className="h-5 w-5"
+                  />
                   {o}
                 </label>
               );
@@ -148,7 +189,13 @@ function ItemField({ item, number, value, onChange }: { item: Item; number: numb
           {label}
           <p className="mb-3 whitespace-pre-wrap rounded-md bg-slate-50 p-3 text-sm text-slate-700">{item.text}</p>
           <label className="flex items-center gap-2 font-medium">
-            <input type="checkbox" checked={value === true} onChange={(e) => onChange(e.target.checked)} className="h-5 w-5" />I agree to take part
+            <input
+              type="checkbox"
+              checked={value === true}
+              onChange={(e) => onChange(e.target.checked)}
+              className="h-5 w-5"
+            />
+            I agree to take part
           </label>
         </fieldset>
       );
@@ -156,7 +203,15 @@ function ItemField({ item, number, value, onChange }: { item: Item; number: numb
       return (
         <fieldset>
           {label}
-          <Input type="number" aria-label={item.text} min={item.min} max={item.max} value={typeof value === "number" ? value : ""} onChange={(e) => onChange(e.target.value === "" ? undefined : Number(e.target.value))} className="max-w-40" />
+          <Input
+            type="number"
+            aria-label={item.text}
+            min={item.min}
+            max={item.max}
+            value={typeof value === "number" ? value : ""}
+            onChange={(e) => onChange(e.target.value === "" ? undefined : Number(e.target.value))}
+            className="max-w-40"
+          />
         </fieldset>
       );
     default:
@@ -164,9 +219,17 @@ function ItemField({ item, number, value, onChange }: { item: Item; number: numb
         <fieldset>
           {label}
           {item.kind === "long_text" ? (
-            <Textarea aria-label={item.text} value={typeof value === "string" ? value : ""} onChange={(e) => onChange(e.target.value)} />
+            <Textarea
+              aria-label={item.text}
+              value={typeof value === "string" ? value : ""}
+              onChange={(e) => onChange(e.target.value)}
+            />
           ) : (
-            <Input aria-label={item.text} value={typeof value === "string" ? value : ""} onChange={(e) => onChange(e.target.value)} />
+            <Input
+              aria-label={item.text}
+              value={typeof value === "string" ? value : ""}
+              onChange={(e) => onChange(e.target.value)}
+            />
           )}
         </fieldset>
       );

@@ -9,7 +9,15 @@ import { Dialog } from "@/ui/dialog";
 import { Field, Input, NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
 
-export function SendLinkDialog({ studyId, participantId, code }: { studyId: string; participantId: string; code: string }) {
+export function SendLinkDialog({
+  studyId,
+  participantId,
+  code,
+}: {
+  studyId: string;
+  participantId: string;
+  code: string;
+}) {
   const trpc = useTRPC();
   const [open, setOpen] = useState(false);
   const list = useQuery({ ...trpc.questionnaires.list.queryOptions({ studyId }), enabled: open });
@@ -31,7 +39,10 @@ export function SendLinkDialog({ studyId, participantId, code }: { studyId: stri
       }
     >
       <div className="space-y-3">
-        <Field label="Questionnaire" hint={list.data && !published.length ? "Publish a questionnaire first." : undefined}>
+        <Field
+          label="Questionnaire"
+          hint={list.data && !published.length ? "Publish a questionnaire first." : undefined}
+        >
           {(p) => (
             <NativeSelect {...p} value={questionnaireId} onChange={(e) => setQuestionnaireId(e.target.value)}>
               <option value="">Choose…</option>
@@ -43,8 +54,24 @@ export function SendLinkDialog({ studyId, participantId, code }: { studyId: stri
             </NativeSelect>
           )}
         </Field>
-        <Field label="Valid for (days)">{(p) => <Input {...p} type="number" min={1} max={30} value={days} onChange={(e) => setDays(Number(e.target.value))} />}</Field>
-        <Button disabled={!questionnaireId || createLink.isPending} onClick={() => createLink.mutate({ questionnaireId, participantId, expiresInMinutes: Math.round(days * 24 * 60) })}>
+        <Field label="Valid for (days)">
+          {(p) => (
+            <Input
+              {...p}
+              type="number"
+              min={1}
+              max={30}
+              value={days}
+              onChange={(e) => setDays(Number(e.target.value))}
+            />
+          )}
+        </Field>
+        <Button
+          disabled={!questionnaireId || createLink.isPending}
+          onClick={() =>
+            createLink.mutate({ questionnaireId, participantId, expiresInMinutes: Math.round(days * 24 * 60) })
+          }
+        >
           Make the link
         </Button>
         <Problem error={createLink.error} />

@@ -9,7 +9,15 @@ import { Button } from "@/ui/button";
 import { Problem } from "@/ui/problem";
 import { Card } from "@/ui/surface";
 
-export function TrialQuestionnaires({ studyId, trialId, participantId }: { studyId: string; trialId: string; participantId: string }) {
+export function TrialQuestionnaires({
+  studyId,
+  trialId,
+  participantId,
+}: {
+  studyId: string;
+  trialId: string;
+  participantId: string;
+}) {
   const trpc = useTRPC();
   const list = useQuery(trpc.questionnaires.list.queryOptions({ studyId }));
   const [links, setLinks] = useState<Record<string, string>>({});
@@ -31,17 +39,31 @@ export function TrialQuestionnaires({ studyId, trialId, participantId }: { study
             {q.name} <span className="text-xs text-slate-500">({q.timing} the trial)</span>
           </div>
           {links[q.id] ? (
-            <a href={links[q.id]} target="_blank" rel="noreferrer" data-testid={`questionnaire-link-${q.name}`} className="flex items-center gap-1 break-all text-brand-700 hover:underline">
+            <a
+              href={links[q.id]}
+              target="_blank"
+              rel="noreferrer"
+              data-testid={`questionnaire-link-${q.name}`}
+              className="flex items-center gap-1 break-all text-brand-700 hover:underline"
+            >
               <ExternalLink className="h-3.5 w-3.5 shrink-0" aria-hidden /> {links[q.id]}
             </a>
           ) : (
-            <Button size="sm" variant="secondary" disabled={createLink.isPending} onClick={() => void open(q.id)} aria-label={`Open ${q.name} for the participant`}>
+            <Button
+              size="sm"
+              variant="secondary"
+              disabled={createLink.isPending}
+              onClick={() => void open(q.id)}
+              aria-label={`Open ${q.name} for the participant`}
+            >
               Open for the participant
             </Button>
           )}
         </div>
       ))}
-      <p className="text-xs text-slate-500">Each link works once, for this participant only, and expires in two hours.</p>
+      <p className="text-xs text-slate-500">
+        Each link works once, for this participant only, and expires in two hours.
+      </p>
       <Problem error={createLink.error} />
     </Card>
   );

@@ -9,9 +9,20 @@ import { Problem } from "@/ui/problem";
 import { Card } from "@/ui/surface";
 import { useRecorder } from "./use-recorder";
 
-const clock = (ms: number) => `${String(Math.floor(ms / 60000)).padStart(2, "0")}:${String(Math.floor(ms / 1000) % 60).padStart(2, "0")}`;
+const clock = (ms: number) =>
+  `${String(Math.floor(ms / 60000)).padStart(2, "0")}:${String(Math.floor(ms / 1000) % 60).padStart(2, "0")}`;
 
-export function RecordingPanel({ trialId, startedAt, ended, logStart }: { trialId: string; startedAt: string | null; ended: boolean; logStart: (recordingId: string, offsetMs: number) => void }) {
+export function RecordingPanel({
+  trialId,
+  startedAt,
+  ended,
+  logStart,
+}: {
+  trialId: string;
+  startedAt: string | null;
+  ended: boolean;
+  logStart: (recordingId: string, offsetMs: number) => void;
+}) {
   const recorder = useRecorder(trialId, startedAt, ended, logStart);
   const [camera, setCamera] = useState("");
   const [microphone, setMicrophone] = useState("");
@@ -23,8 +34,13 @@ export function RecordingPanel({ trialId, startedAt, ended, logStart }: { trialI
       <h2 className="flex items-center gap-2 font-semibold">
         <Video className="h-4 w-4" aria-hidden /> Recording
         {active && (
-          <span role="status" data-testid="recording-indicator" className="ml-auto flex items-center gap-1 font-mono text-red-700">
-            <Circle className="h-3 w-3 animate-pulse fill-red-600 text-red-600" aria-hidden /> REC {clock(recorder.elapsedMs)}
+          <span
+            role="status"
+            data-testid="recording-indicator"
+            className="ml-auto flex items-center gap-1 font-mono text-red-700"
+          >
+            <Circle className="h-3 w-3 animate-pulse fill-red-600 text-red-600" aria-hidden /> REC{" "}
+            {clock(recorder.elapsedMs)}
           </span>
         )}
       </h2>
@@ -46,7 +62,11 @@ export function RecordingPanel({ trialId, startedAt, ended, logStart }: { trialI
               </option>
             ))}
           </NativeSelect>
-          <Button size="sm" disabled={recorder.state === "starting" || ended} onClick={() => void recorder.start(camera, microphone)}>
+          <Button
+            size="sm"
+            disabled={recorder.state === "starting" || ended}
+            onClick={() => void recorder.start(camera, microphone)}
+          >
             <Circle className="h-3.5 w-3.5 fill-current" aria-hidden /> Start recording
           </Button>
         </>
@@ -54,16 +74,25 @@ export function RecordingPanel({ trialId, startedAt, ended, logStart }: { trialI
       {active && (
         <>
           <p className="text-xs text-slate-600" data-testid="recording-parts">
-            {recorder.sent} part{recorder.sent === 1 ? "" : "s"} saved on the server{recorder.waiting ? `, ${recorder.waiting} waiting to be sent` : ""}
+            {recorder.sent} part{recorder.sent === 1 ? "" : "s"} saved on the server
+            {recorder.waiting ? `, ${recorder.waiting} waiting to be sent` : ""}
           </p>
-          <Button size="sm" variant="secondary" disabled={recorder.state === "finishing"} onClick={() => void recorder.stop()}>
-            <Square className="h-3.5 w-3.5" aria-hidden /> {recorder.state === "finishing" ? "Saving…" : "Stop and save"}
+          <Button
+            size="sm"
+            variant="secondary"
+            disabled={recorder.state === "finishing"}
+            onClick={() => void recorder.stop()}
+          >
+            <Square className="h-3.5 w-3.5" aria-hidden />{" "}
+            {recorder.state === "finishing" ? "Saving…" : "Stop and save"}
           </Button>
         </>
       )}
       {recorder.state === "saved" && <p className="text-emerald-800">The recording is saved with this trial.</p>}
       {recorder.problem && <Problem error={{ message: recorder.problem }} />}
-      {!active && recorder.state === "idle" && <p className="text-xs text-slate-500">It stops and is saved by itself when the trial ends.</p>}
+      {!active && recorder.state === "idle" && (
+        <p className="text-xs text-slate-500">It stops and is saved by itself when the trial ends.</p>
+      )}
     </Card>
   );
 }

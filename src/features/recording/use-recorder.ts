@@ -17,7 +17,12 @@ function pickType(): string {
 }
 
 /** `logStart` writes the recording's start into the trial's own log (the socket's "recording" command). */
-export function useRecorder(trialId: string, trialStartedAt: string | null, trialEnded: boolean, logStart: (recordingId: string, offsetMs: number) => void) {
+export function useRecorder(
+  trialId: string,
+  trialStartedAt: string | null,
+  trialEnded: boolean,
+  logStart: (recordingId: string, offsetMs: number) => void,
+) {
   const client = useTRPCClient();
   const [state, setState] = useState<RecorderState>("idle");
   const [problem, setProblem] = useState<string | null>(null);
@@ -25,11 +30,22 @@ export function useRecorder(trialId: string, trialStartedAt: string | null, tria
   const [waiting, setWaiting] = useState(0);
   const [elapsedMs, setElapsedMs] = useState(0);
   const [devices, setDevices] = useState<MediaDeviceInfo[]>([]);
-  const recording = useRef<{ id: string; recorder: MediaRecorder; stream: MediaStream; startedAt: number; type: string; next: number; offsetSent: boolean } | null>(null);
+  const recording = useRef<{
+    id: string;
+    recorder: MediaRecorder;
+    stream: MediaStream;
+    startedAt: number;
+    type: string;
+    next: number;
+    offsetSent: boolean;
+  } | null>(null);
   const queue = useRef<Array<{ index: number; blob: Blob }>>([]);
   const pumping = useRef<Promise<void> | null>(null);
 
-  const listDevices = useCallback(async () => setDevices((await navigator.mediaDevices.enumerateDevices()).filter((d) => d.kind !== "audiooutput")), []);
+  const listDevices = useCallback(
+    async () => setDevices((await navigator.mediaDevices.enumerateDevices()).filter((d) => d.kind !== "audiooutput")),
+    [],
+  );
   useEffect(() => void listDevices().catch(() => {}), [listDevices]);
 
   /** Sends waiting parts in order; a failure waits and tries again, never drops a part. */
@@ -38,7 +54,11 @@ export function useRecorder(trialId: string, trialStartedAt: string | null, tria
       let delay = RETRY_MS.first;
       while (queue.current.length && recording.current) {
         const { index, blob } = queue.current[0]!;
-        const response = await fetch(`/api/recordings/${recording.current.id}/chunks/${index}`, { method: "PUT", headers: { "content-type": recording.current.type }, body: blob }).catch(() => null);
+        const response = await fetch(`/api/recordings/${recording.current.id}/chunks/${index}`, {
+          method: "PUT",
+          headers: { "content-type": recording.current.type },
+          body: blob,
+        }).catch(() => null);
         if (response?.ok) {
           queue.current.shift();
           setSent((n) => n + 1);
@@ -49,7 +69,9 @@ export function useRecorder(trialId: string, trialStartedAt: string | null, tria
           setState("failed");
           return;
         } else {
-          setProblem("The connection to the server is interrupted: the recording continues and its parts are sent when it is back.");
+          setProblem(
+            "The connection to the server is interrupted: the recording continues and its parts are sent when it is back.",
+          );
           await new Promise((r) => setTimeout(r, delay));
           delay = Math.min(RETRY_MS.max, delay * 2);
         }
@@ -74,7 +96,15 @@ export function useRecorder(trialId: string, trialStartedAt: string | null, tria
         const type = pickType();
         const { recordingId } = await client.recordings.start.mutate({ trialId, kind: "video", mimeType: type });
         const recorder = new MediaRecorder(stream, { mimeType: type });
-        recording.current = { id: recordingId, recorder, stream, startedAt: Date.now(), type, next: 0, offsetSent: false };
+        recording.current = {
+          id: recordingId,
+          recorder,
+          stream,
+          startedAt: Date.now(),
+          type,
+          next: 0,
+          offsetSent: false,
+        };
         recorder.ondataavailable = (e) => {
           if (!e.data.size || !recording.current) return;
           queue.current.push({ index: recording.current.next++, blob: e.data });

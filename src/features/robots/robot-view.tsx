@@ -55,18 +55,35 @@ export function RobotView({ url }: { url: string }) {
         </Button>
       </div>
       <Card className="flex flex-col items-center gap-6 p-10">
-        <div role="status" aria-label="Robot speech" className="min-h-16 max-w-xl rounded-2xl border border-slate-200 bg-white px-5 py-3 text-center text-lg shadow-sm">
-          {state?.speaking ? `“${state.speaking}”` : <span className="text-slate-400">{state?.lastSaid ? `Last said: “${state.lastSaid}”` : "…"}</span>}
+        <div
+          role="status"
+          aria-label="Robot speech"
+          className="min-h-16 max-w-xl rounded-2xl border border-slate-200 bg-white px-5 py-3 text-center text-lg shadow-sm"
+        >
+          {state?.speaking ? (
+            `“${state.speaking}”`
+          ) : (
+            <span className="text-slate-400">{state?.lastSaid ? `Last said: “${state.lastSaid}”` : "…"}</span>
+          )}
         </div>
         <RobotFigure state={state} />
         <dl className="grid grid-cols-2 gap-x-8 gap-y-1 text-sm sm:grid-cols-4">
           <Fact label="Gesture" value={state?.gesture ?? state?.animation ?? "none"} />
           <Fact label="Posture" value={state?.posture ?? "—"} />
-          <Fact label="Moving" value={state && (state.velocity.linear || state.velocity.angular) ? `${state.velocity.linear} m/s, ${state.velocity.angular} rad/s` : "no"} />
+          <Fact
+            label="Moving"
+            value={
+              state && (state.velocity.linear || state.velocity.angular)
+                ? `${state.velocity.linear} m/s, ${state.velocity.angular} rad/s`
+                : "no"
+            }
+          />
           <Fact label="Battery" value={state ? `${Math.round(state.battery)} %` : "—"} />
         </dl>
       </Card>
-      <p className="text-sm text-slate-500">This page shows the built-in simulated robot that `npm start` runs when no real robot is configured.</p>
+      <p className="text-sm text-slate-500">
+        This page shows the built-in simulated robot that `npm start` runs when no real robot is configured.
+      </p>
     </div>
   );
 }
@@ -94,10 +111,35 @@ function RobotFigure({ state }: { state: RobotState | null }) {
         <circle cx="70" cy="30" r="4" fill={state?.speaking ? "#2458b8" : "#475569"} />
       </g>
       <rect x="38" y="55" width="44" height="50" rx="8" fill="#f8fafc" stroke="#475569" />
-      <rect x="16" y={waving ? 30 : 58} width="12" height="40" rx="6" fill="#f8fafc" stroke="#475569" transform={waving ? "rotate(-30 22 50)" : undefined} />
+      <rect
+        x="16"
+        y={waving ? 30 : 58}
+        width="12"
+        height="40"
+        rx="6"
+        fill="#f8fafc"
+        stroke="#475569"
+        transform={waving ? "rotate(-30 22 50)" : undefined}
+      />
       <rect x="92" y="58" width="12" height="40" rx="6" fill="#f8fafc" stroke="#475569" />
-      <rect x="42" y="108" width="14" height={state?.posture === "sit" ? 24 : 44} rx="6" fill="#f8fafc" stroke="#475569" />
-      <rect x="64" y="108" width="14" height={state?.posture === "sit" ? 24 : 44} rx="6" fill="#f8fafc" stroke="#475569" />
+      <rect
+        x="42"
+        y="108"
+        width="14"
+        height={state?.posture === "sit" ? 24 : 44}
+        rx="6"
+        fill="#f8fafc"
+        stroke="#475569"
+      />
+      <rect
+        x="64"
+        y="108"
+        width="14"
+        height={state?.posture === "sit" ? 24 : 44}
+        rx="6"
+        fill="#f8fafc"
+        stroke="#475569"
+      />
     </svg>
   );
 }

@@ -19,7 +19,11 @@ export function MySessionsPage() {
       <p className="text-sm text-slate-600">The sessions you run that are not finished yet, soonest first.</p>
       {sessions.isPending && <Spinner />}
       <Problem error={sessions.error ?? start.error} />
-      {sessions.data?.length === 0 && <EmptyState title="No sessions are planned for you.">A researcher plans sessions in a study's Sessions tab.</EmptyState>}
+      {sessions.data?.length === 0 && (
+        <EmptyState title="No sessions are planned for you.">
+          A researcher plans sessions in a study's Sessions tab.
+        </EmptyState>
+      )}
       <ul className="space-y-3" aria-label="My sessions">
         {sessions.data?.map((s, i) => (
           <li key={s.id}>
@@ -35,7 +39,11 @@ export function MySessionsPage() {
                 </div>
               </div>
               {s.trialStatus && <Badge tone={STATUS_TONE[s.trialStatus]}>{s.trialStatus.replace("_", " ")}</Badge>}
-              <Button aria-label={`Start the session of ${s.participantCode}`} disabled={start.isPending} onClick={() => start.mutate({ sessionId: s.id })}>
+              <Button
+                aria-label={`Start the session of ${s.participantCode}`}
+                disabled={start.isPending}
+                onClick={() => start.mutate({ sessionId: s.id })}
+              >
                 <Play className="h-4 w-4" aria-hidden /> {s.trialId ? "Continue" : "Start"}
               </Button>
             </Card>

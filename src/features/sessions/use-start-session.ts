@@ -8,5 +8,7 @@ import { useTRPC } from "@/lib/trpc";
 export function useStartSession() {
   const trpc = useTRPC();
   const router = useRouter();
-  return useMutation(trpc.sessions.start.mutationOptions({ onSuccess: ({ trialId }) => router.push(`/trials/${trialId}`) }));
+  return useMutation(
+    trpc.sessions.start.mutationOptions({ onSuccess: ({ trialId }) => router.push(`/trials/${trialId}`) }),
+  );
 }

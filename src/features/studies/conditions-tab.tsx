@@ -20,7 +20,15 @@ const STRATEGY_HELP: Record<(typeof ASSIGNMENT_STRATEGIES)[number], string> = {
 
 type Assignment = { strategy: (typeof ASSIGNMENT_STRATEGIES)[number]; perCondition: number; seed?: string };
 
-export function ConditionsTab({ studyId, role, assignment }: { studyId: string; role: StudyRole; assignment: Assignment }) {
+export function ConditionsTab({
+  studyId,
+  role,
+  assignment,
+}: {
+  studyId: string;
+  role: StudyRole;
+  assignment: Assignment;
+}) {
   const trpc = useTRPC();
   const queryClient = useQueryClient();
   const list = useQuery(trpc.conditions.list.queryOptions({ studyId }));
@@ -31,7 +39,11 @@ export function ConditionsTab({ studyId, role, assignment }: { studyId: string; 
   const [strategy, setStrategy] = useState(assignment.strategy);
   const refresh = () => queryClient.invalidateQueries({ queryKey: trpc.conditions.list.queryKey({ studyId }) });
   const create = useMutation(trpc.conditions.create.mutationOptions({ onSuccess: () => (setName(""), refresh()) }));
-  const update = useMutation(trpc.studies.update.mutationOptions({ onSuccess: () => queryClient.invalidateQueries({ queryKey: trpc.studies.get.queryKey({ studyId }) }) }));
+  const update = useMutation(
+    trpc.studies.update.mutationOptions({
+      onSuccess: () => queryClient.invalidateQueries({ queryKey: trpc.studies.get.queryKey({ studyId }) }),
+    }),
+  );
   const submit = (e: FormEvent) => {
     e.preventDefault();
     create.mutate({ studyId, name, experimentId });
@@ -43,7 +55,11 @@ export function ConditionsTab({ studyId, role, assignment }: { studyId: string; 
           <div className="w-64">
             <Field label="Assignment strategy" hint={STRATEGY_HELP[strategy]}>
               {(p) => (
-                <NativeSelect {...p} value={strategy} onChange={(e) => setStrategy(e.target.value as Assignment["strategy"])}>
+                <NativeSelect
+                  {...p}
+                  value={strategy}
+                  onChange={(e) => setStrategy(e.target.value as Assignment["strategy"])}
+                >
                   {ASSIGNMENT_STRATEGIES.map((s) => (
                     <option key={s}>{s}</option>
                   ))}
@@ -51,10 +67,18 @@ export function ConditionsTab({ studyId, role, assignment }: { studyId: string; 
               )}
             </Field>
           </div>
-          <Button className="mb-5" disabled={update.isPending} onClick={() => update.mutate({ studyId, settings: { assignment: { strategy, perCondition: 1 } } })}>
+          <Button
+            className="mb-5"
+            disabled={update.isPending}
+            onClick={() => update.mutate({ studyId, settings: { assignment: { strategy, perCondition: 1 } } })}
+          >
             Use this strategy
           </Button>
-          {assignment.seed && <p className="mb-5 text-xs text-slate-500">Seed for the audit: <code>{assignment.seed}</code></p>}
+          {assignment.seed && (
+            <p className="mb-5 text-xs text-slate-500">
+              Seed for the audit: <code>{assignment.seed}</code>
+            </p>
+          )}
         </Card>
       )}
       {edit && (
@@ -63,7 +87,14 @@ export function ConditionsTab({ studyId, role, assignment }: { studyId: string; 
           <form onSubmit={submit} className="flex flex-wrap items-end gap-3">
             <div className="w-64">
               <Field label="Condition name" required error={fieldError(create.error, "name")}>
-                {(p) => <Input {...p} value={name} onChange={(e) => setName(e.target.value)} placeholder="NAO with gestures" />}
+                {(p) => (
+                  <Input
+                    {...p}
+                    value={name}
+                    onChange={(e) => setName(e.target.value)}
+                    placeholder="NAO with gestures"
+                  />
+                )}
               </Field>
             </div>
             <div className="w-64">

@@ -21,7 +21,9 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
   const publish = useMutation(trpc.versions.publish.mutationOptions({ onSuccess: refresh }));
   const edit = studyRoleMay(role, "experiment.edit");
   const router = useRouter();
-  const rehearse = useMutation(trpc.trials.rehearse.mutationOptions({ onSuccess: (trial) => router.push(`/trials/${trial.id}`) }));
+  const rehearse = useMutation(
+    trpc.trials.rehearse.mutationOptions({ onSuccess: (trial) => router.push(`/trials/${trial.id}`) }),
+  );
   const canRehearse = studyRoleMay(role, "trial.create");
   return (
     <div className="space-y-4">
@@ -56,7 +58,9 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
               <code className="text-xs">{e.robotPluginId}</code>
             </Td>
             <Td>{e.stepCount}</Td>
-            <Td>{e.latestVersion ? <Badge tone="green">version {e.latestVersion}</Badge> : <Badge>draft only</Badge>}</Td>
+            <Td>
+              {e.latestVersion ? <Badge tone="green">version {e.latestVersion}</Badge> : <Badge>draft only</Badge>}
+            </Td>
             <Td className="space-x-2 text-right">
               <Button variant="ghost" size="sm" asChild>
                 <Link href={`/experiments/${e.id}`} aria-label={`${edit ? "Design" : "Open"} ${e.name}`}>
@@ -64,12 +68,24 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
                 </Link>
               </Button>
               {canRehearse && (
-                <Button variant="ghost" size="sm" aria-label={`Rehearse ${e.name}`} disabled={rehearse.isPending} onClick={() => rehearse.mutate({ experimentId: e.id })}>
+                <Button
+                  variant="ghost"
+                  size="sm"
+                  aria-label={`Rehearse ${e.name}`}
+                  disabled={rehearse.isPending}
+                  onClick={() => rehearse.mutate({ experimentId: e.id })}
+                >
                   Rehearse
                 </Button>
               )}
               {edit && (
-                <Button variant="secondary" size="sm" aria-label={`Publish ${e.name}`} disabled={publish.isPending} onClick={() => publish.mutate({ experimentId: e.id })}>
+                <Button
+                  variant="secondary"
+                  size="sm"
+                  aria-label={`Publish ${e.name}`}
+                  disabled={publish.isPending}
+                  onClick={() => publish.mutate({ experimentId: e.id })}
+                >
                   Publish
                 </Button>
               )}
@@ -107,7 +123,9 @@ function NewExperimentDialog({ studyId, onCreated }: { studyId: string; onCreate
         <Field label="Name" required error={fieldError(create.error, "name")}>
           {(p) => <Input {...p} value={name} onChange={(e) => setName(e.target.value)} autoFocus />}
         </Field>
-        <Field label="Description">{(p) => <Textarea {...p} value={description} onChange={(e) => setDescription(e.target.value)} />}</Field>
+        <Field label="Description">
+          {(p) => <Textarea {...p} value={description} onChange={(e) => setDescription(e.target.value)} />}
+        </Field>
         <Field label="Robot" required hint="Its actions appear in the designer; another robot can be chosen later.">
           {(p) => (
             <NativeSelect {...p} value={robot} onChange={(e) => setRobot(e.target.value)}>
@@ -131,22 +149,47 @@ function NewExperimentDialog({ studyId, onCreated }: { studyId: string; onCreate
 }
 
 /** An experiment file exported from this or another lab's HRIStudio. */
-function ImportExperimentDialog({ studyId, onImported }: { studyId: string; onImported: (experimentId: string) => void }) {
+function ImportExperimentDialog({
+  studyId,
+  onImported,
+}: {
+  studyId: string;
+  onImported: (experimentId: string) => void;
+}) {
   const trpc = useTRPC();
   const [open, setOpen] = useState(false);
   const [fileProblem, setFileProblem] = useState<string | null>(null);
-  const importFile = useMutation(trpc.experiments.importFile.mutationOptions({ onSuccess: (design) => onImported(design.id) }));
+  const importFile = useMutation(
+    trpc.experiments.importFile.mutationOptions({ onSuccess: (design) => onImported(design.id) }),
+  );
   const choose = async (file: File | undefined) => {
     setFileProblem(null);
     if (!file) return;
-    if (file.size > 2_000_000) return setFileProblem(`“${file.name}” is ${(file.size / 1e6).toFixed(1)} MB; an experiment file must be smaller than 2 MB.`);
+    if (file.size > 2_000_000)
+      return setFileProblem(
+        `“${file.name}” is ${(file.size / 1e6).toFixed(1)} MB; an experiment file must be smaller than 2 MB.`,
+      );
     importFile.mutate({ studyId, text: await file.text() });
   };
   return (
-    <Dialog title="Import an experiment" description="From a file exported by HRIStudio (.hristudio-experiment.json)." open={open} onOpenChange={setOpen} trigger={<Button variant="secondary">Import file</Button>}>
+    <Dialog
+      title="Import an experiment"
+      description="From a file exported by HRIStudio (.hristudio-experiment.json)."
+      open={open}
+      onOpenChange={setOpen}
+      trigger={<Button variant="secondary">Import file</Button>}
+    >
       <div className="space-y-3">
         <Field label="Experiment file">
-          {(p) => <input {...p} type="file" accept=".json,application/json" className="text-sm" onChange={(e) => void choose(e.target.files?.[0])} />}
+          {(p) => (
+            <input
+              {...p}
+              type="file"
+              accept=".json,application/json"
+              className="text-sm"
+              onChange={(e) => void choose(e.target.files?.[0])}
+            />
+          )}
         </Field>
         {importFile.isPending && <Spinner label="Importing…" />}
         <Problem error={fileProblem ? { message: fileProblem } : importFile.error} />

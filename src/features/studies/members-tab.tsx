@@ -64,7 +64,12 @@ export function MembersTab({ studyId, role }: { studyId: string; role: StudyRole
             </Td>
             {manage && (
               <Td className="text-right">
-                <Button variant="ghost" size="sm" aria-label={`Remove ${m.name}`} onClick={() => remove.mutate({ studyId, userId: m.userId })}>
+                <Button
+                  variant="ghost"
+                  size="sm"
+                  aria-label={`Remove ${m.name}`}
+                  onClick={() => remove.mutate({ studyId, userId: m.userId })}
+                >
                   Remove
                 </Button>
               </Td>
@@ -98,7 +103,15 @@ function InviteForm({ studyId, onAdded }: { studyId: string; onAdded: () => void
       <form onSubmit={submit} className="flex flex-wrap items-end gap-3">
         <div className="min-w-64 flex-1">
           <Field label="Member email" required error={fieldError(add.error, "email")}>
-            {(p) => <Input {...p} type="email" value={email} onChange={(e) => setEmail(e.target.value)} placeholder="name@lab.org" />}
+            {(p) => (
+              <Input
+                {...p}
+                type="email"
+                value={email}
+                onChange={(e) => setEmail(e.target.value)}
+                placeholder="name@lab.org"
+              />
+            )}
           </Field>
         </div>
         <div className="w-56">

@@ -29,7 +29,13 @@ export function NewStudyDialog() {
     create.mutate({ title, description });
   };
   return (
-    <Dialog title="New study" description="A study holds its experiments, participants and trials." open={open} onOpenChange={setOpen} trigger={<Button>New study</Button>}>
+    <Dialog
+      title="New study"
+      description="A study holds its experiments, participants and trials."
+      open={open}
+      onOpenChange={setOpen}
+      trigger={<Button>New study</Button>}
+    >
       <form onSubmit={submit} className="space-y-4">
         <Field label="Title" required error={fieldError(create.error, "title")}>
           {(p) => <Input {...p} value={title} onChange={(e) => setTitle(e.target.value)} autoFocus />}

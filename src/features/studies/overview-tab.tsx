@@ -11,7 +11,14 @@ import { Card } from "@/ui/surface";
 import type { StudySettings } from "@/core/studies/settings";
 import { DemographicsEditor } from "./demographics-editor";
 
-type Study = { id: string; title: string; description: string; status: "draft" | "active" | "completed" | "archived"; settings: StudySettings; myRole: StudyRole };
+type Study = {
+  id: string;
+  title: string;
+  description: string;
+  status: "draft" | "active" | "completed" | "archived";
+  settings: StudySettings;
+  myRole: StudyRole;
+};
 
 export function OverviewTab({ study }: { study: Study }) {
   const trpc = useTRPC();
@@ -39,7 +46,13 @@ export function OverviewTab({ study }: { study: Study }) {
   }
   const submit = (e: FormEvent) => {
     e.preventDefault();
-    update.mutate({ studyId: study.id, title, description, status, settings: { requireConsent, blinding, consentDocumentVersion, demographics } });
+    update.mutate({
+      studyId: study.id,
+      title,
+      description,
+      status,
+      settings: { requireConsent, blinding, consentDocumentVersion, demographics },
+    });
   };
   return (
     <Card className="max-w-2xl p-6">
@@ -47,7 +60,9 @@ export function OverviewTab({ study }: { study: Study }) {
         <Field label="Title" required error={fieldError(update.error, "title")}>
           {(p) => <Input {...p} value={title} onChange={(e) => setTitle(e.target.value)} />}
         </Field>
-        <Field label="Description">{(p) => <Textarea {...p} value={description} onChange={(e) => setDescription(e.target.value)} />}</Field>
+        <Field label="Description">
+          {(p) => <Textarea {...p} value={description} onChange={(e) => setDescription(e.target.value)} />}
+        </Field>
         <Field label="Status" hint="Active studies run trials; completed ones keep their data read-only.">
           {(p) => (
             <NativeSelect {...p} value={status} onChange={(e) => setStatus(e.target.value as Study["status"])}>
@@ -60,26 +75,50 @@ export function OverviewTab({ study }: { study: Study }) {
           )}
         </Field>
         <label className="flex items-center gap-2 text-sm">
-          <input type="checkbox" className="h-4 w-4" checked={requireConsent} onChange={(e) => setRequireConsent(e.target.checked)} />
+          <input
+            type="checkbox"
+            className="h-4 w-4"
+            checked={requireConsent}
+            onChange={(e) => setRequireConsent(e.target.checked)}
+          />
           Trials need a participant whose consent is recorded
         </label>
-        <Field label="Consent document version" hint="Recorded with each consent, so you know which text a participant agreed to.">
-          {(p) => <Input {...p} value={consentDocumentVersion} onChange={(e) => setConsentDocumentVersion(e.target.value)} />}
+        <Field
+          label="Consent document version"
+          hint="Recorded with each consent, so you know which text a participant agreed to."
+        >
+          {(p) => (
+            <Input {...p} value={consentDocumentVersion} onChange={(e) => setConsentDocumentVersion(e.target.value)} />
+          )}
         </Field>
         <fieldset className="space-y-2 rounded-md border border-slate-200 p-3">
           <legend className="px-1 text-sm font-medium text-slate-700">Blinding</legend>
           <label className="flex items-start gap-2 text-sm">
-            <input type="checkbox" className="mt-0.5 h-4 w-4" checked={blinding.conditionsFromWizards} onChange={(e) => setBlinding({ ...blinding, conditionsFromWizards: e.target.checked })} />
+            <input
+              type="checkbox"
+              className="mt-0.5 h-4 w-4"
+              checked={blinding.conditionsFromWizards}
+              onChange={(e) => setBlinding({ ...blinding, conditionsFromWizards: e.target.checked })}
+            />
             <span>
               Hide each session's condition from wizards
-              <span className="block text-xs text-slate-500">Wizards run sessions from “My sessions” and never see condition or experiment names.</span>
+              <span className="block text-xs text-slate-500">
+                Wizards run sessions from “My sessions” and never see condition or experiment names.
+              </span>
             </span>
           </label>
           <label className="flex items-start gap-2 text-sm">
-            <input type="checkbox" className="mt-0.5 h-4 w-4" checked={blinding.resultsUntilComplete} onChange={(e) => setBlinding({ ...blinding, resultsUntilComplete: e.target.checked })} />
+            <input
+              type="checkbox"
+              className="mt-0.5 h-4 w-4"
+              checked={blinding.resultsUntilComplete}
+              onChange={(e) => setBlinding({ ...blinding, resultsUntilComplete: e.target.checked })}
+            />
             <span>
               Hide results from researchers and observers until the study is completed
-              <span className="block text-xs text-slate-500">Analysis and exports open when the status is set to completed. Lifting a blind is logged.</span>
+              <span className="block text-xs text-slate-500">
+                Analysis and exports open when the status is set to completed. Lifting a blind is logged.
+              </span>
             </span>
           </label>
         </fieldset>

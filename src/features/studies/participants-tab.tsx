@@ -15,7 +15,17 @@ import { Td, Th } from "@/ui/table";
 const CONSENT = ["pending", "given", "declined", "withdrawn"] as const;
 type Consent = (typeof CONSENT)[number];
 
-export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId: string; role: StudyRole; settings: StudySettings; blinded: boolean }) {
+export function ParticipantsTab({
+  studyId,
+  role,
+  settings,
+  blinded,
+}: {
+  studyId: string;
+  role: StudyRole;
+  settings: StudySettings;
+  blinded: boolean;
+}) {
   const strategy = settings.assignment.strategy;
   const trpc = useTRPC();
   const queryClient = useQueryClient();
@@ -26,7 +36,9 @@ export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId:
   const assign = useMutation(trpc.conditions.assign.mutationOptions({ onSuccess: refresh }));
   const reinstate = useMutation(trpc.participants.reinstate.mutationOptions({ onSuccess: refresh }));
   const askToReinstate = (participantId: string, code: string) => {
-    const reason = window.prompt(`Why is ${code} reinstated? Their consent is recorded as given again, and your reason goes into the study's audit log.`);
+    const reason = window.prompt(
+      `Why is ${code} reinstated? Their consent is recorded as given again, and your reason goes into the study's audit log.`,
+    );
     if (reason?.trim()) reinstate.mutate({ participantId, reason: reason.trim() });
   };
   const conditionName = (id: string | null) => conditions.data?.find((c) => c.id === id)?.name;
@@ -61,7 +73,11 @@ export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId:
                   value={p.consentStatus}
                   onChange={(e) => {
                     const consentStatus = e.target.value as Consent;
-                    update.mutate({ participantId: p.id, consentStatus, consentDate: consentStatus === "given" ? new Date() : p.consentDate });
+                    update.mutate({
+                      participantId: p.id,
+                      consentStatus,
+                      consentDate: consentStatus === "given" ? new Date() : p.consentDate,
+                    });
                   }}
                 >
                   {CONSENT.map((c) => (
@@ -79,7 +95,9 @@ export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId:
             </Td>
             <Td>
               {p.consentDate ? new Date(p.consentDate).toLocaleDateString() : "—"}
-              {p.consentStatus === "withdrawn" && <div className="text-xs text-red-700">data excluded from analysis and exports</div>}
+              {p.consentStatus === "withdrawn" && (
+                <div className="text-xs text-red-700">data excluded from analysis and exports</div>
+              )}
             </Td>
             <Td className="text-xs">{p.consentVersion ?? "—"}</Td>
             {settings.demographics.length > 0 && (
@@ -96,7 +114,12 @@ export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId:
               ) : p.conditionId ? (
                 conditionName(p.conditionId)
               ) : manage && conditions.data?.length && strategy === "fixed" ? (
-                <NativeSelect aria-label={`Condition of ${p.code}`} className="w-48" value="" onChange={(e) => assign.mutate({ participantId: p.id, conditionId: e.target.value })}>
+                <NativeSelect
+                  aria-label={`Condition of ${p.code}`}
+                  className="w-48"
+                  value=""
+                  onChange={(e) => assign.mutate({ participantId: p.id, conditionId: e.target.value })}
+                >
                   <option value="">Choose…</option>
                   {conditions.data.map((c) => (
                     <option key={c.id} value={c.id}>
@@ -105,7 +128,12 @@ export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId:
                   ))}
                 </NativeSelect>
               ) : manage && conditions.data?.length ? (
-                <Button size="sm" variant="secondary" aria-label={`Assign ${p.code}`} onClick={() => assign.mutate({ participantId: p.id })}>
+                <Button
+                  size="sm"
+                  variant="secondary"
+                  aria-label={`Assign ${p.code}`}
+                  onClick={() => assign.mutate({ participantId: p.id })}
+                >
                   Assign ({strategy})
                 </Button>
               ) : (
@@ -125,7 +153,15 @@ export function ParticipantsTab({ studyId, role, settings, blinded }: { studyId:
   );
 }
 
-function AddParticipant({ studyId, fields, onAdded }: { studyId: string; fields: DemographicField[]; onAdded: () => void }) {
+function AddParticipant({
+  studyId,
+  fields,
+  onAdded,
+}: {
+  studyId: string;
+  fields: DemographicField[];
+  onAdded: () => void;
+}) {
   const trpc = useTRPC();
   const [code, setCode] = useState("");
   const [answers, setAnswers] = useState<Record<string, string>>({});
@@ -143,16 +179,29 @@ function AddParticipant({ studyId, fields, onAdded }: { studyId: string; fields:
     e.preventDefault();
     // Unanswered questions stay out: every answer is optional.
     const demographics = Object.fromEntries(
-      fields.filter((f) => answers[f.key]?.trim()).map((f) => [f.key, f.type === "number" ? Number(answers[f.key]) : answers[f.key]!.trim()]),
+      fields
+        .filter((f) => answers[f.key]?.trim())
+        .map((f) => [f.key, f.type === "number" ? Number(answers[f.key]) : answers[f.key]!.trim()]),
     );
-    create.mutate({ studyId, code, consentStatus: consent, consentDate: consent === "given" ? new Date() : null, demographics });
+    create.mutate({
+      studyId,
+      code,
+      consentStatus: consent,
+      consentDate: consent === "given" ? new Date() : null,
+      demographics,
+    });
   };
   return (
     <Card className="p-5">
       <h2 className="mb-3 font-semibold">Add a participant</h2>
       <form onSubmit={submit} className="flex flex-wrap items-end gap-3">
         <div className="w-56">
-          <Field label="Participant code" required error={fieldError(create.error, "code")} hint="A code, never a name.">
+          <Field
+            label="Participant code"
+            required
+            error={fieldError(create.error, "code")}
+            hint="A code, never a name."
+          >
             {(p) => <Input {...p} value={code} onChange={(e) => setCode(e.target.value)} placeholder="P004" />}
           </Field>
         </div>
@@ -172,14 +221,23 @@ function AddParticipant({ studyId, fields, onAdded }: { studyId: string; fields:
             <Field label={f.label} hint="optional">
               {(p) =>
                 f.type === "choice" ? (
-                  <NativeSelect {...p} value={answers[f.key] ?? ""} onChange={(e) => setAnswers({ ...answers, [f.key]: e.target.value })}>
+                  <NativeSelect
+                    {...p}
+                    value={answers[f.key] ?? ""}
+                    onChange={(e) => setAnswers({ ...answers, [f.key]: e.target.value })}
+                  >
                     <option value="">—</option>
                     {f.options.map((o) => (
                       <option key={o}>{o}</option>
                     ))}
                   </NativeSelect>
                 ) : (
-                  <Input {...p} type={f.type === "number" ? "number" : "text"} value={answers[f.key] ?? ""} onChange={(e) => setAnswers({ ...answers, [f.key]: e.target.value })} />
+                  <Input
+                    {...p}
+                    type={f.type === "number" ? "number" : "text"}
+                    value={answers[f.key] ?? ""}
+                    onChange={(e) => setAnswers({ ...answers, [f.key]: e.target.value })}
+                  />
                 )
               }
             </Field>

@@ -32,7 +32,12 @@ export function QuestionnairesTab({ studyId, role }: { studyId: string; role: St
           <Button variant="secondary" onClick={() => create.mutate({ studyId, instrument: "godspeed" })}>
             Add Godspeed
           </Button>
-          <Button variant="secondary" onClick={async () => router.push(`/questionnaires/${(await create.mutateAsync({ studyId, name: "New questionnaire" })).id}`)}>
+          <Button
+            variant="secondary"
+            onClick={async () =>
+              router.push(`/questionnaires/${(await create.mutateAsync({ studyId, name: "New questionnaire" })).id}`)
+            }
+          >
             Build a questionnaire
           </Button>
         </div>
@@ -40,7 +45,11 @@ export function QuestionnairesTab({ studyId, role }: { studyId: string; role: St
       <ListView
         query={list}
         problem={create.error ?? save.error ?? publish.error}
-        empty={<EmptyState title="No questionnaires yet.">Add a standard scale, or build your own with a consent form, Likert items and open questions.</EmptyState>}
+        empty={
+          <EmptyState title="No questionnaires yet.">
+            Add a standard scale, or build your own with a consent form, Likert items and open questions.
+          </EmptyState>
+        }
         columns={
           <>
             <Th>Questionnaire</Th>
@@ -57,7 +66,14 @@ export function QuestionnairesTab({ studyId, role }: { studyId: string; role: St
             </Td>
             <Td>
               {edit ? (
-                <NativeSelect aria-label={`When ${q.name} is filled in`} className="w-64" value={q.timing} onChange={(e) => save.mutate({ questionnaireId: q.id, timing: e.target.value as keyof typeof TIMING })}>
+                <NativeSelect
+                  aria-label={`When ${q.name} is filled in`}
+                  className="w-64"
+                  value={q.timing}
+                  onChange={(e) =>
+                    save.mutate({ questionnaireId: q.id, timing: e.target.value as keyof typeof TIMING })
+                  }
+                >
                   {Object.entries(TIMING).map(([value, label]) => (
                     <option key={value} value={value}>
                       {label}
@@ -68,13 +84,21 @@ export function QuestionnairesTab({ studyId, role }: { studyId: string; role: St
                 TIMING[q.timing]
               )}
             </Td>
-            <Td>{q.latestVersion ? <Badge tone="green">version {q.latestVersion}</Badge> : <Badge>draft only</Badge>}</Td>
+            <Td>
+              {q.latestVersion ? <Badge tone="green">version {q.latestVersion}</Badge> : <Badge>draft only</Badge>}
+            </Td>
             <Td className="space-x-2 text-right">
               <Button variant="ghost" size="sm" asChild>
                 <Link href={`/questionnaires/${q.id}`}>{edit ? "Edit" : "Open"}</Link>
               </Button>
               {studyRoleMay(role, "version.publish") && (
-                <Button variant="secondary" size="sm" aria-label={`Publish ${q.name}`} disabled={publish.isPending} onClick={() => publish.mutate({ questionnaireId: q.id })}>
+                <Button
+                  variant="secondary"
+                  size="sm"
+                  aria-label={`Publish ${q.name}`}
+                  disabled={publish.isPending}
+                  onClick={() => publish.mutate({ questionnaireId: q.id })}
+                >
                   Publish
                 </Button>
               )}

@@ -11,22 +11,36 @@ import { Card, EmptyState, Spinner } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
 import { seconds } from "@/ui/format";
 
-
 export function ResultsTab({ studyId }: { studyId: string }) {
   const trpc = useTRPC();
   const figures = useQuery(trpc.studies.figures.queryOptions({ studyId }));
   if (figures.isPending) return <Spinner label="Computing the study's figures…" />;
   if (figures.error) return <Problem error={figures.error} />;
   const s = figures.data;
-  if (!s.trials.length) return <EmptyState title="No finished trials yet.">Figures appear here as trials are completed.</EmptyState>;
+  if (!s.trials.length)
+    return <EmptyState title="No finished trials yet.">Figures appear here as trials are completed.</EmptyState>;
   const c = s.consistency;
   return (
     <div className="space-y-6">
       <div className="grid gap-4 sm:grid-cols-4">
         <Figure label="Finished trials" value={`${c.completed} completed / ${c.trials}`} />
-        <Figure label="Execution fidelity" value={c.meanFidelity === null ? "—" : `${c.meanFidelity.toFixed(1)} %${c.sdFidelity === null ? "" : ` ± ${c.sdFidelity.toFixed(1)}`}`} />
+        <Figure
+          label="Execution fidelity"
+          value={
+            c.meanFidelity === null
+              ? "—"
+              : `${c.meanFidelity.toFixed(1)} %${c.sdFidelity === null ? "" : ` ± ${c.sdFidelity.toFixed(1)}`}`
+          }
+        />
         <Figure label="Run exactly as scripted" value={`${c.withoutDeviation} of ${c.trials}`} />
-        <Figure label="Deviations" value={Object.entries(c.deviationsByKind).map(([k, n]) => `${n} ${k.replace("_", " ")}`).join(", ") || "none"} />
+        <Figure
+          label="Deviations"
+          value={
+            Object.entries(c.deviationsByKind)
+              .map(([k, n]) => `${n} ${k.replace("_", " ")}`)
+              .join(", ") || "none"
+          }
+        />
       </div>
       <section aria-label="Step timing across participants">
         <h2 className="mb-2 text-lg font-semibold">Time in each step</h2>
@@ -87,14 +101,21 @@ function StepTimingPlot({ steps }: { steps: StudySummary["steps"] }) {
   const longest = Math.max(1, ...steps.map((s) => s.durationMs?.max ?? 0));
   const x = (ms: number) => `${(ms / longest) * 100}%`;
   return (
-    <Card className="space-y-2 p-4" role="img" aria-label="Median time in each step, with the range across participants">
+    <Card
+      className="space-y-2 p-4"
+      role="img"
+      aria-label="Median time in each step, with the range across participants"
+    >
       {steps.map((s) => (
         <div key={s.name} className="grid grid-cols-[12rem_1fr_9rem] items-center gap-3 text-sm">
           <span className="truncate">{s.name}</span>
           <div className="relative h-4 rounded bg-slate-100">
             {s.durationMs && (
               <>
-                <div className="absolute top-1 h-2 rounded bg-brand-200" style={{ left: x(s.durationMs.min), width: `calc(${x(s.durationMs.max - s.durationMs.min)} + 2px)` }} />
+                <div
+                  className="absolute top-1 h-2 rounded bg-brand-200"
+                  style={{ left: x(s.durationMs.min), width: `calc(${x(s.durationMs.max - s.durationMs.min)} + 2px)` }}
+                />
                 <div className="absolute top-0 h-4 w-1 rounded bg-brand-700" style={{ left: x(s.durationMs.median) }} />
               </>
             )}

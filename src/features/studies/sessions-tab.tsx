@@ -27,7 +27,11 @@ export function SessionsTab({ studyId, role }: { studyId: string; role: StudyRol
       <ListView
         query={sessions}
         problem={remove.error ?? start.error}
-        empty={<EmptyState title="No sessions planned yet.">Plan one for each participant once they are assigned to a condition.</EmptyState>}
+        empty={
+          <EmptyState title="No sessions planned yet.">
+            Plan one for each participant once they are assigned to a condition.
+          </EmptyState>
+        }
         columns={
           <>
             <Th>Planned</Th>
@@ -44,15 +48,31 @@ export function SessionsTab({ studyId, role }: { studyId: string; role: StudyRol
             <Td className="font-mono">{s.participantCode}</Td>
             <Td>{s.conditionName ?? <span className="text-slate-400">hidden</span>}</Td>
             <Td>{s.wizardName ?? "—"}</Td>
-            <Td>{s.trialStatus ? <Badge tone={STATUS_TONE[s.trialStatus]}>{s.trialStatus.replace("_", " ")}</Badge> : <Badge>planned</Badge>}</Td>
+            <Td>
+              {s.trialStatus ? (
+                <Badge tone={STATUS_TONE[s.trialStatus]}>{s.trialStatus.replace("_", " ")}</Badge>
+              ) : (
+                <Badge>planned</Badge>
+              )}
+            </Td>
             <Td className="space-x-2 text-right">
               {run && s.trialStatus !== "completed" && s.trialStatus !== "aborted" && (
-                <Button size="sm" aria-label={`Start the session of ${s.participantCode}`} disabled={start.isPending} onClick={() => start.mutate({ sessionId: s.id })}>
+                <Button
+                  size="sm"
+                  aria-label={`Start the session of ${s.participantCode}`}
+                  disabled={start.isPending}
+                  onClick={() => start.mutate({ sessionId: s.id })}
+                >
                   {s.trialId ? "Continue" : "Start"}
                 </Button>
               )}
               {manage && !s.trialId && (
-                <Button size="sm" variant="ghost" aria-label={`Remove the session of ${s.participantCode}`} onClick={() => remove.mutate({ sessionId: s.id })}>
+                <Button
+                  size="sm"
+                  variant="ghost"
+                  aria-label={`Remove the session of ${s.participantCode}`}
+                  onClick={() => remove.mutate({ sessionId: s.id })}
+                >
                   Remove
                 </Button>
               )}
@@ -80,7 +100,9 @@ function ScheduleSession({ studyId, onPlanned }: { studyId: string; onPlanned: (
   const schedule = useMutation(trpc.sessions.schedule.mutationOptions({ onSuccess: onPlanned }));
   const assigned = participants.data?.filter((p) => p.conditionId && p.consentStatus !== "withdrawn") ?? [];
   // Wizards first: they run most sessions.
-  const wizards = (members.data ?? []).filter((m) => m.role !== "observer").sort((a, b) => Number(b.role === "wizard") - Number(a.role === "wizard"));
+  const wizards = (members.data ?? [])
+    .filter((m) => m.role !== "observer")
+    .sort((a, b) => Number(b.role === "wizard") - Number(a.role === "wizard"));
   const submit = (e: FormEvent) => {
     e.preventDefault();
     schedule.mutate({ participantId, wizardId: wizardId || wizards[0]!.userId, plannedAt: new Date(when) });
@@ -90,7 +112,11 @@ function ScheduleSession({ studyId, onPlanned }: { studyId: string; onPlanned: (
       <h2 className="mb-3 font-semibold">Plan a session</h2>
       <form onSubmit={submit} className="flex flex-wrap items-end gap-3">
         <div className="w-44">
-          <Field label="Participant" required hint={assigned.length ? undefined : "Assign participants to conditions first."}>
+          <Field
+            label="Participant"
+            required
+            hint={assigned.length ? undefined : "Assign participants to conditions first."}
+          >
             {(p) => (
               <NativeSelect {...p} value={participantId} onChange={(e) => setParticipantId(e.target.value)}>
                 <option value="">Choose…</option>
@@ -111,7 +137,11 @@ function ScheduleSession({ studyId, onPlanned }: { studyId: string; onPlanned: (
         <div className="w-56">
           <Field label="Wizard" required>
             {(p) => (
-              <NativeSelect {...p} value={wizardId || wizards[0]?.userId || ""} onChange={(e) => setWizardId(e.target.value)}>
+              <NativeSelect
+                {...p}
+                value={wizardId || wizards[0]?.userId || ""}
+                onChange={(e) => setWizardId(e.target.value)}
+              >
                 {wizards.map((w) => (
                   <option key={w.userId} value={w.userId}>
                     {w.name} ({w.role})

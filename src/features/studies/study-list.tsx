@@ -27,7 +27,10 @@ export function StudyList({ systemRole }: { systemRole: SystemRole }) {
       <ul className="grid gap-4 sm:grid-cols-2 lg:grid-cols-3">
         {studies.data?.map((s) => (
           <li key={s.id}>
-            <Link href={`/studies/${s.id}`} className="block focus:outline-none focus-visible:ring-2 focus-visible:ring-brand-500 rounded-lg">
+            <Link
+              href={`/studies/${s.id}`}
+              className="block focus:outline-none focus-visible:ring-2 focus-visible:ring-brand-500 rounded-lg"
+            >
               <Card className="h-full p-5 hover:border-brand-500">
                 <div className="flex items-start justify-between gap-2">
                   <h2 className="font-semibold">{s.title}</h2>

@@ -52,12 +52,26 @@ export function StudyPage({ studyId }: { studyId: string }) {
             ? []
             : [
                 { id: "experiments", label: "Experiments", content: <ExperimentsTab studyId={studyId} role={role} /> },
-                { id: "conditions", label: "Conditions", content: <ConditionsTab studyId={studyId} role={role} assignment={s.settings.assignment} /> },
+                {
+                  id: "conditions",
+                  label: "Conditions",
+                  content: <ConditionsTab studyId={studyId} role={role} assignment={s.settings.assignment} />,
+                },
               ]),
-          { id: "participants", label: "Participants", content: <ParticipantsTab studyId={studyId} role={role} settings={s.settings} blinded={blinded} /> },
+          {
+            id: "participants",
+            label: "Participants",
+            content: <ParticipantsTab studyId={studyId} role={role} settings={s.settings} blinded={blinded} />,
+          },
           { id: "sessions", label: "Sessions", content: <SessionsTab studyId={studyId} role={role} /> },
-          { id: "questionnaires", label: "Questionnaires", content: <QuestionnairesTab studyId={studyId} role={role} /> },
-          ...(studyRoleMay(role, "data.read") ? [{ id: "results", label: "Results", content: <ResultsTab studyId={studyId} /> }] : []),
+          {
+            id: "questionnaires",
+            label: "Questionnaires",
+            content: <QuestionnairesTab studyId={studyId} role={role} />,
+          },
+          ...(studyRoleMay(role, "data.read")
+            ? [{ id: "results", label: "Results", content: <ResultsTab studyId={studyId} /> }]
+            : []),
           { id: "trials", label: "Trials", content: <TrialsTab studyId={studyId} role={role} blinded={blinded} /> },
         ]}
       />

@@ -23,7 +23,9 @@ export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: S
       {/* A blinded wizard starts trials from their sessions: choosing an experiment would reveal the condition. */}
       {studyRoleMay(role, "trial.create") && !blinded && <NewTrial studyId={studyId} onCreated={refresh} />}
       {studyRoleMay(role, "data.read") && (
-        <DownloadLink href={`/api/studies/${studyId}/export`}>Download the whole study (zip: design, every trial's record, events and ELAN file, questionnaire answers)</DownloadLink>
+        <DownloadLink href={`/api/studies/${studyId}/export`}>
+          Download the whole study (zip: design, every trial's record, events and ELAN file, questionnaire answers)
+        </DownloadLink>
       )}
       <ListView
         query={trials}
@@ -43,25 +45,44 @@ export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: S
           <tr key={t.id}>
             <Td className="font-mono">{t.participantCode ?? "—"}</Td>
             <Td>
-              {t.experimentName} {t.isRehearsal ? <Badge tone="amber">rehearsal</Badge> : t.version !== null && <span className="text-xs text-slate-500">v{t.version}</span>}
+              {t.experimentName}{" "}
+              {t.isRehearsal ? (
+                <Badge tone="amber">rehearsal</Badge>
+              ) : (
+                t.version !== null && <span className="text-xs text-slate-500">v{t.version}</span>
+              )}
               {t.participantWithdrawn && <div className="text-xs text-red-700">withdrawn: excluded from analysis</div>}
             </Td>
             {/* No wizard yet: the first of the study's wizards to start it runs it. */}
             <Td>{t.wizardId === null ? <span className="text-slate-500">any wizard</span> : (t.wizardName ?? "—")}</Td>
-            <Td className="text-xs">{t.scores.map((s) => `${s.name}: ${Number.isInteger(s.score) ? s.score : s.score.toFixed(2)}`).join(" · ") || "—"}</Td>
+            <Td className="text-xs">
+              {t.scores
+                .map((s) => `${s.name}: ${Number.isInteger(s.score) ? s.score : s.score.toFixed(2)}`)
+                .join(" · ") || "—"}
+            </Td>
             <Td>
               <Badge tone={STATUS_TONE[t.status]}>{t.status.replace("_", " ")}</Badge>
             </Td>
             <Td>{new Date(t.createdAt).toLocaleString()}</Td>
             <Td className="text-right">
-              <Link className="font-medium text-brand-600 hover:underline" href={`/trials/${t.id}`} aria-label={`${studyRoleMay(role, "trial.run") ? "Run" : "Watch"} trial of ${t.participantCode ?? "no participant"}`}>
+              <Link
+                className="font-medium text-brand-600 hover:underline"
+                href={`/trials/${t.id}`}
+                aria-label={`${studyRoleMay(role, "trial.run") ? "Run" : "Watch"} trial of ${t.participantCode ?? "no participant"}`}
+              >
                 {studyRoleMay(role, "trial.run") ? "Run" : "Watch"}
               </Link>
-              {(t.status === "completed" || t.status === "aborted") && !t.participantWithdrawn && studyRoleMay(role, "data.read") && (
-                <Link className="ml-3 font-medium text-brand-600 hover:underline" href={`/trials/${t.id}/analysis`} aria-label={`Analysis of the trial of ${t.participantCode ?? "no participant"}`}>
-                  Analysis
-                </Link>
-              )}
+              {(t.status === "completed" || t.status === "aborted") &&
+                !t.participantWithdrawn &&
+                studyRoleMay(role, "data.read") && (
+                  <Link
+                    className="ml-3 font-medium text-brand-600 hover:underline"
+                    href={`/trials/${t.id}/analysis`}
+                    aria-label={`Analysis of the trial of ${t.participantCode ?? "no participant"}`}
+                  >
+                    Analysis
+                  </Link>
+                )}
             </Td>
           </tr>
         )}
@@ -83,14 +104,25 @@ function NewTrial({ studyId, onCreated }: { studyId: string; onCreated: () => vo
   const latest = versions.data?.[0];
   const submit = (e: FormEvent) => {
     e.preventDefault();
-    if (latest) create.mutate({ versionId: latest.id, participantId: participantId || null, wizardId: wizardIdOf(wizard) });
+    if (latest)
+      create.mutate({ versionId: latest.id, participantId: participantId || null, wizardId: wizardIdOf(wizard) });
   };
   return (
     <Card className="p-5">
       <h2 className="mb-3 font-semibold">New trial</h2>
       <form onSubmit={submit} className="flex flex-wrap items-end gap-3">
         <div className="w-64">
-          <Field label="Experiment" required hint={experimentId && !latest && !versions.isPending ? "Publish this experiment first." : latest ? `Runs published version ${latest.version}.` : undefined}>
+          <Field
+            label="Experiment"
+            required
+            hint={
+              experimentId && !latest && !versions.isPending
+                ? "Publish this experiment first."
+                : latest
+                  ? `Runs published version ${latest.version}.`
+                  : undefined
+            }
+          >
             {(p) => (
               <NativeSelect {...p} value={experimentId} onChange={(e) => setExperimentId(e.target.value)}>
                 <option value="">Choose…</option>

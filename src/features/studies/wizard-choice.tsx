@@ -9,9 +9,18 @@ import { Field, NativeSelect } from "@/ui/field";
 export type WizardChoiceValue = "me" | "any" | (string & {});
 
 /** trials.create's wizardId: omitted for me, null for anyone, else the member's id. */
-export const wizardIdOf = (choice: WizardChoiceValue) => (choice === "me" ? undefined : choice === "any" ? null : choice);
+export const wizardIdOf = (choice: WizardChoiceValue) =>
+  choice === "me" ? undefined : choice === "any" ? null : choice;
 
-export function WizardChoice({ studyId, value, onChange }: { studyId: string; value: WizardChoiceValue; onChange: (v: WizardChoiceValue) => void }) {
+export function WizardChoice({
+  studyId,
+  value,
+  onChange,
+}: {
+  studyId: string;
+  value: WizardChoiceValue;
+  onChange: (v: WizardChoiceValue) => void;
+}) {
   const trpc = useTRPC();
   const me = useQuery(trpc.account.me.queryOptions());
   const members = useQuery(trpc.members.list.queryOptions({ studyId }));

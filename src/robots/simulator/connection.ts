@@ -69,10 +69,12 @@ export class Connection {
         return this.hooks.log(`connection stops processing after a bare JSON ${JSON.stringify(message)}`);
       }
     }
-    if (Array.isArray(message) || typeof message !== "object" || message === null) return this.hooks.log("received a message without an op");
+    if (Array.isArray(message) || typeof message !== "object" || message === null)
+      return this.hooks.log("received a message without an op");
     const m = message as Message;
     this.hooks.record(m);
-    if (!("op" in m)) return this.hooks.log("receiver" in m ? "received a rosbridge v1.0 message" : "received a message without an op");
+    if (!("op" in m))
+      return this.hooks.log("receiver" in m ? "received a rosbridge v1.0 message" : "received a message without an op");
     const handler = this.ops[m.op as string];
     if (typeof m.op !== "string" || !handler) return this.hooks.log(`unknown operation: ${String(m.op)}`);
     if ("fragment_size" in m) this.fragmentSize = m.fragment_size;
@@ -105,7 +107,8 @@ export class Connection {
       const topic = requireString(m, "topic");
       const typeKey = this.graph.typeOf(topic);
       if (!typeKey) throw new Error(`Cannot infer topic type for topic ${topic} as it is not yet advertised`);
-      if ("msg" in m && (typeof m.msg !== "object" || m.msg === null || Array.isArray(m.msg))) throw new Error("msg must be an object");
+      if ("msg" in m && (typeof m.msg !== "object" || m.msg === null || Array.isArray(m.msg)))
+        throw new Error("msg must be an object");
       this.graph.publish(topic, populate(typeKey, m.msg));
     },
     subscribe: (m) => {
@@ -154,7 +157,8 @@ export class Connection {
 
   private send(message: Message) {
     const size = this.fragmentSize;
-    if (size !== null && !Number.isInteger(size)) return this.hooks.log(`cannot send: fragment_size ${JSON.stringify(size)} is not an integer`);
+    if (size !== null && !Number.isInteger(size))
+      return this.hooks.log(`cannot send: fragment_size ${JSON.stringify(size)} is not an integer`);
     const text = encode(message);
     const frames = size === null ? [text] : fragments(text, size as number, message.id);
     for (const frame of frames) this.hooks.send(frame);

@@ -5,7 +5,9 @@
 import { lookupType } from "./ros-types";
 
 type Listener = (message: Record<string, unknown>) => void;
-export type ServiceHandler = (request: Record<string, unknown>) => Record<string, unknown> | Promise<Record<string, unknown>>;
+export type ServiceHandler = (
+  request: Record<string, unknown>,
+) => Record<string, unknown> | Promise<Record<string, unknown>>;
 
 interface Topic {
   typeKey: string;

@@ -8,11 +8,19 @@ export { battery, jointStates, pluginTopics, robotStateReport, speech, testServi
 const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 
 /** The default robot: the topics of a plugin (NAO6's by default), speech, joint states and battery. */
-export function simulatedRobot(plugin: Plugin, { msPerChar = 60, jointStatesHz = 10, batteryHz = 1 } = {}): RobotNode[] {
+export function simulatedRobot(
+  plugin: Plugin,
+  { msPerChar = 60, jointStatesHz = 10, batteryHz = 1 } = {},
+): RobotNode[] {
   return [
     pluginTopics(plugin),
     speech({ msPerChar }),
-    jointStates({ hz: jointStatesHz, names: NAO_JOINTS, position: (_, s) => [0, s.headPitch, 1.4, 1.4], velocity: [0, 0, 0, 0] }),
+    jointStates({
+      hz: jointStatesHz,
+      names: NAO_JOINTS,
+      position: (_, s) => [0, s.headPitch, 1.4, 1.4],
+      velocity: [0, 0, 0, 0],
+    }),
     battery({ hz: batteryHz }),
     robotStateReport(),
     testServices(),

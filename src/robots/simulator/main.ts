@@ -9,7 +9,11 @@ export async function startDefaultSimulator(env: Record<string, string | undefin
   const file = env.SIM_PLUGIN ?? "plugins/nao6-ros2.json";
   const loaded = loadPlugin(file, await readFile(file, "utf8"));
   if (!loaded.ok) throw new Error(loaded.errors.map(formatPluginError).join("\n"));
-  return startSimulator({ host: env.SIM_HOST ?? "127.0.0.1", port: Number(env.SIM_PORT ?? 9090), nodes: simulatedRobot(loaded.value) });
+  return startSimulator({
+    host: env.SIM_HOST ?? "127.0.0.1",
+    port: Number(env.SIM_PORT ?? 9090),
+    nodes: simulatedRobot(loaded.value),
+  });
 }
 
 if (import.meta.url === `file://${process.argv[1]}`) {

@@ -42,13 +42,24 @@ const stamp = () => {
 };
 
 /** sensor_msgs/msg/JointState at a fixed rate; `position(n, state)` gives the nth sample. */
-export function jointStates({ hz = 10, names = ["head_yaw", "head_pitch"], position = (n: number, _: RobotState) => [0.01 * n, -0.5], velocity = [0.1, 0] } = {}): RobotNode {
+export function jointStates({
+  hz = 10,
+  names = ["head_yaw", "head_pitch"],
+  position = (n: number, _: RobotState) => [0.01 * n, -0.5],
+  velocity = [0.1, 0],
+} = {}): RobotNode {
   return (graph, state) => {
     graph.declare("/joint_states", "sensor_msgs/msg/JointState", ROBOT);
     let n = 0;
     const timer = setInterval(() => {
       n++;
-      graph.publish("/joint_states", { header: { stamp: stamp(), frame_id: "base_link" }, name: names, position: position(n, state), velocity, effort: [] });
+      graph.publish("/joint_states", {
+        header: { stamp: stamp(), frame_id: "base_link" },
+        name: names,
+        position: position(n, state),
+        velocity,
+        effort: [],
+      });
     }, 1000 / hz);
     return () => clearInterval(timer);
   };
@@ -61,7 +72,16 @@ export function battery({ hz = 1 } = {}): RobotNode {
     const timer = setInterval(() => {
       state.battery = Math.max(0, state.battery - 0.01);
       const percentage = state.battery / 100;
-      graph.publish("/battery", { header: { stamp: stamp(), frame_id: "" }, voltage: 21.6 + percentage * 4, current: -1.2, charge: percentage * 2.25, capacity: 2.25, percentage, power_supply_status: 2, present: true });
+      graph.publish("/battery", {
+        header: { stamp: stamp(), frame_id: "" },
+        voltage: 21.6 + percentage * 4,
+        current: -1.2,
+        charge: percentage * 2.25,
+        capacity: 2.25,
+        percentage,
+        power_supply_status: 2,
+        present: true,
+      });
     }, 1000 / hz);
     return () => clearInterval(timer);
   };
@@ -92,7 +112,8 @@ export function pluginTopics(plugin: Plugin): RobotNode {
   return (graph, state) => {
     for (const action of plugin.actions) {
       const ros2 = action.ros2;
-      if (ros2 && "topic" in ros2 && ros2.payloadMapping.type !== "ssh") graph.declare(ros2.topic, ros2.messageType, ROBOT);
+      if (ros2 && "topic" in ros2 && ros2.payloadMapping.type !== "ssh")
+        graph.declare(ros2.topic, ros2.messageType, ROBOT);
     }
     const stops = [
       graph.listen("/animation", (m) => void (state.animation = String(m.data))),
@@ -115,12 +136,22 @@ export function pluginTopics(plugin: Plugin): RobotNode {
 /** The services the recorded test node offered (README "ROS side"). */
 export function testServices({ slowMs = 3000 } = {}): RobotNode {
   return (graph, state) => {
-    graph.offer("/set_led", "std_srvs/srv/SetBool", (r) => ({ success: true, message: `led=${r.data ? "True" : "False"}` }));
+    graph.offer("/set_led", "std_srvs/srv/SetBool", (r) => ({
+      success: true,
+      message: `led=${r.data ? "True" : "False"}`,
+    }));
     graph.offer("/wake_up", "std_srvs/srv/Trigger", () => {
       state.posture = "stand";
       return { success: true, message: "awake" };
     });
-    graph.offer("/slow_op", "std_srvs/srv/Trigger", () => new Promise((done) => setTimeout(() => done({ success: true, message: `slow done after ${slowMs / 1000} s` }), slowMs)));
+    graph.offer(
+      "/slow_op",
+      "std_srvs/srv/Trigger",
+      () =>
+        new Promise((done) =>
+          setTimeout(() => done({ success: true, message: `slow done after ${slowMs / 1000} s` }), slowMs),
+        ),
+    );
     graph.offer("/broken", "std_srvs/srv/Trigger", () => {
       throw new Error("motor fault");
     });

@@ -18,7 +18,13 @@ const MESSAGES: Record<string, Definition> = {
   "builtin_interfaces/Time": { sec: "int32", nanosec: "uint32" },
   "geometry_msgs/Vector3": { x: "float64", y: "float64", z: "float64" },
   "geometry_msgs/Twist": { linear: "geometry_msgs/Vector3", angular: "geometry_msgs/Vector3" },
-  "sensor_msgs/JointState": { header: "std_msgs/Header", name: "string[]", position: "float64[]", velocity: "float64[]", effort: "float64[]" },
+  "sensor_msgs/JointState": {
+    header: "std_msgs/Header",
+    name: "string[]",
+    position: "float64[]",
+    velocity: "float64[]",
+    effort: "float64[]",
+  },
   "sensor_msgs/BatteryState": {
     header: "std_msgs/Header",
     voltage: "float32",
@@ -29,7 +35,13 @@ const MESSAGES: Record<string, Definition> = {
     power_supply_status: "uint8",
     present: "bool",
   },
-  "naoqi_bridge_msgs/JointAnglesWithSpeed": { header: "std_msgs/Header", joint_names: "string[]", joint_angles: "float32[]", speed: "float32", relative: "uint8" },
+  "naoqi_bridge_msgs/JointAnglesWithSpeed": {
+    header: "std_msgs/Header",
+    joint_names: "string[]",
+    joint_angles: "float32[]",
+    speed: "float32",
+    relative: "uint8",
+  },
 };
 
 const SERVICES: Record<string, { request: Definition; response: Definition }> = {
@@ -62,7 +74,12 @@ export function lookupType(name: unknown, kind: "msg" | "srv" = "msg"): TypeLook
   const table = kind === "msg" ? MESSAGES : SERVICES;
   if (!table[key]) {
     const knownPackage = Object.keys(table).some((k) => k.startsWith(`${parts[0]}/`));
-    return { ok: false, reason: knownPackage ? `Unable to import ${kind} class ${parts[parts.length - 1]} from package ${parts[0]}` : `Unable to load the manifest for package ${parts[0]}` };
+    return {
+      ok: false,
+      reason: knownPackage
+        ? `Unable to import ${kind} class ${parts[parts.length - 1]} from package ${parts[0]}`
+        : `Unable to load the manifest for package ${parts[0]}`,
+    };
   }
   return { ok: true, key, spelling: `${parts[0]}/${kind}/${parts[parts.length - 1]}` };
 }
@@ -80,9 +97,11 @@ export function populateRequest(serviceKey: string, value: unknown): Record<stri
 
 function populateWith(definition: Definition, typeName: string, value: unknown): Record<string, unknown> {
   const given = (value ?? {}) as Record<string, unknown>;
-  if (typeof given !== "object" || Array.isArray(given)) throw new ConversionError(`Message type ${typeName} requires an object, but got ${describe(value)}`);
+  if (typeof given !== "object" || Array.isArray(given))
+    throw new ConversionError(`Message type ${typeName} requires an object, but got ${describe(value)}`);
   for (const key of Object.keys(given)) {
-    if (!Object.hasOwn(definition, key)) throw new ConversionError(`Message type ${typeName} does not have a field ${key}`);
+    if (!Object.hasOwn(definition, key))
+      throw new ConversionError(`Message type ${typeName} does not have a field ${key}`);
   }
   const out: Record<string, unknown> = {};
   for (const [field, type] of Object.entries(definition)) {
@@ -93,15 +112,22 @@ function populateWith(definition: Definition, typeName: string, value: unknown):
 
 function convert(type: Field, value: unknown, typeName: string, field: string): unknown {
   if (type.endsWith("[]")) {
-    if (!Array.isArray(value)) throw new ConversionError(`${typeName} message requires a list for field ${field}, but got ${describe(value)}`);
+    if (!Array.isArray(value))
+      throw new ConversionError(`${typeName} message requires a list for field ${field}, but got ${describe(value)}`);
     return value.map((item) => convert(type.slice(0, -2), item, typeName, field));
   }
-  if (type === "builtin_interfaces/Time" && value && typeof value === "object" && ("secs" in value || "nsecs" in value)) {
+  if (
+    type === "builtin_interfaces/Time" &&
+    value &&
+    typeof value === "object" &&
+    ("secs" in value || "nsecs" in value)
+  ) {
     const { secs = 0, nsecs = 0 } = value as { secs?: unknown; nsecs?: unknown };
     value = { sec: secs, nanosec: nsecs };
   }
   if (MESSAGES[type]) return populateWith(MESSAGES[type]!, type, value);
-  const wrong = () => new ConversionError(`${typeName} message requires a ${type} for field ${field}, but got ${describe(value)}`);
+  const wrong = () =>
+    new ConversionError(`${typeName} message requires a ${type} for field ${field}, but got ${describe(value)}`);
   if (type === "string") {
     if (typeof value !== "string") throw wrong();
     if (/[\ud800-\udbff](?![\udc00-\udfff])|(?<![\ud800-\udbff])[\udc00-\udfff]/.test(value)) {

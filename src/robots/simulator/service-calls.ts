@@ -46,7 +46,12 @@ export class ServiceCalls {
 
   /** A list fills fields in order (extra items ignored); anything but an object or list means no args. */
   private args(typeKey: string, args: unknown): unknown {
-    if (Array.isArray(args)) return Object.fromEntries(requestFields(typeKey).slice(0, args.length).map((f, i) => [f, args[i]]));
+    if (Array.isArray(args))
+      return Object.fromEntries(
+        requestFields(typeKey)
+          .slice(0, args.length)
+          .map((f, i) => [f, args[i]]),
+      );
     if (args && typeof args === "object") return args;
     return {};
   }

@@ -59,13 +59,16 @@ export class Subscription {
   }
 
   private arm(throttleRate: number) {
-    this.timer = setTimeout(() => {
-      this.timer = null;
-      const next = this.queue.shift();
-      if (!next) return;
-      this.lastSent = performance.now();
-      this.send(next);
-      if (this.queue.length) this.arm(throttleRate);
-    }, Math.max(0, this.lastSent + throttleRate - performance.now()));
+    this.timer = setTimeout(
+      () => {
+        this.timer = null;
+        const next = this.queue.shift();
+        if (!next) return;
+        this.lastSent = performance.now();
+        this.send(next);
+        if (this.queue.length) this.arm(throttleRate);
+      },
+      Math.max(0, this.lastSent + throttleRate - performance.now()),
+    );
   }
 }

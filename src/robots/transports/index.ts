@@ -34,7 +34,8 @@ export function transportFor(plugin: Plugin, config: TransportConfig): Transport
     return { ok: true, transport: new RoutedTransport(rosbridge, config.ssh ? new SshTransport(config.ssh) : null) };
   }
   if (kind === "ssh") {
-    if (!config.ssh) return { ok: false, reason: `no SSH address configured for ${plugin.robotId} (HRI_ROBOT_SSH_HOST)` };
+    if (!config.ssh)
+      return { ok: false, reason: `no SSH address configured for ${plugin.robotId} (HRI_ROBOT_SSH_HOST)` };
     return { ok: true, transport: new SshTransport(config.ssh) };
   }
   const base = config.httpBaseUrl ?? (typeof plugin.httpBaseUrl === "string" ? plugin.httpBaseUrl : undefined);

@@ -26,7 +26,8 @@ export function checkedParameters(
   parameters: Record<string, unknown>,
 ): { ok: true; parameters: Record<string, unknown> } | { ok: false; outcome: DispatchOutcome } {
   const problems = validateParameters(action.parameterSchema, parameters);
-  if (problems.length) return { ok: false, outcome: { status: "failed", reason: problems.map((p) => p.message).join("; ") } };
+  if (problems.length)
+    return { ok: false, outcome: { status: "failed", reason: problems.map((p) => p.message).join("; ") } };
   return { ok: true, parameters: withDefaults(action.parameterSchema, parameters) };
 }
 
@@ -41,7 +42,11 @@ const pause = (ms: number) => new Promise((resolve) => setTimeout(resolve, ms));
  * A retryable action's wait for its robot: tries `attempt` until it gives a
  * value or the action's deadline passes, backing off between tries.
  */
-export async function untilDeadline<T>(deadline: number, attempt: () => Promise<T | null>, backoff: Backoff = { first: 100, max: 1000 }): Promise<T | null> {
+export async function untilDeadline<T>(
+  deadline: number,
+  attempt: () => Promise<T | null>,
+  backoff: Backoff = { first: 100, max: 1000 },
+): Promise<T | null> {
   for (let tries = 0; ; tries++) {
     const value = await attempt();
     const left = deadline - Date.now();

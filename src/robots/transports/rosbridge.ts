@@ -9,7 +9,15 @@
 // reconnect a fresh roslib.Ros is made and state subscriptions are re-sent.
 import * as ROSLIB from "roslib";
 import { outgoingFor, type PluginAction } from "../../core/plugins";
-import { backoffDelay, checkedParameters, LinkedTransport, RECONNECT_BACKOFF, timeoutOf, unreached, type Backoff } from "./link";
+import {
+  backoffDelay,
+  checkedParameters,
+  LinkedTransport,
+  RECONNECT_BACKOFF,
+  timeoutOf,
+  unreached,
+  type Backoff,
+} from "./link";
 import type { DispatchOutcome } from "./transport";
 
 export interface RosbridgeOptions {
@@ -58,8 +66,14 @@ export class RosbridgeTransport extends LinkedTransport {
     if (!checked.ok) return checked.outcome;
     const outgoing = outgoingFor(action, checked.parameters);
     if (outgoing.kind === "none") return { status: "failed", reason: outgoing.reason };
-    if (outgoing.kind === "ssh") return { status: "failed", reason: `action "${action.id}" runs over SSH, not rosbridge` };
-    const ros = this.status.state === "connected" ? this.ros : action.retryable ? await this.connectedWithin(started + timeoutMs) : null;
+    if (outgoing.kind === "ssh")
+      return { status: "failed", reason: `action "${action.id}" runs over SSH, not rosbridge` };
+    const ros =
+      this.status.state === "connected"
+        ? this.ros
+        : action.retryable
+          ? await this.connectedWithin(started + timeoutMs)
+          : null;
     if (!ros) return unreached(action, started, "robot not connected");
     if (outgoing.kind === "publish") {
       this.topic(ros, outgoing.topic, outgoing.messageType).publish(outgoing.message);
@@ -68,7 +82,12 @@ export class RosbridgeTransport extends LinkedTransport {
     return this.call(ros, outgoing.service, outgoing.serviceType, outgoing.args, started + timeoutMs);
   }
 
-  override subscribe(topic: string, messageType: string, onMessage: (message: unknown) => void, options: { throttleRate?: number } = {}) {
+  override subscribe(
+    topic: string,
+    messageType: string,
+    onMessage: (message: unknown) => void,
+    options: { throttleRate?: number } = {},
+  ) {
     const subscription: StateSubscription = { topic, messageType, onMessage, throttleRate: options.throttleRate ?? 0 };
     this.subscriptions.add(subscription);
     if (this.ros && this.status.state === "connected") this.listen(this.ros, subscription);
@@ -135,10 +154,19 @@ export class RosbridgeTransport extends LinkedTransport {
     }, every);
   }
 
-  private call(ros: ROSLIB.Ros, name: string, serviceType: string, args: unknown, deadline: number): Promise<DispatchOutcome> {
+  private call(
+    ros: ROSLIB.Ros,
+    name: string,
+    serviceType: string,
+    args: unknown,
+    deadline: number,
+  ): Promise<DispatchOutcome> {
     const started = Date.now();
     return new Promise((resolve) => {
-      const timer = setTimeout(() => resolve({ status: "timed_out", afterMs: Date.now() - started }), Math.max(0, deadline - started));
+      const timer = setTimeout(
+        () => resolve({ status: "timed_out", afterMs: Date.now() - started }),
+        Math.max(0, deadline - started),
+      );
       const done = (outcome: DispatchOutcome) => {
         clearTimeout(timer);
         resolve(outcome);
@@ -162,7 +190,13 @@ export class RosbridgeTransport extends LinkedTransport {
   }
 
   private listen(ros: ROSLIB.Ros, s: StateSubscription) {
-    s.current = new ROSLIB.Topic({ ros, name: s.topic, messageType: s.messageType, throttle_rate: s.throttleRate, reconnect_on_close: false });
+    s.current = new ROSLIB.Topic({
+      ros,
+      name: s.topic,
+      messageType: s.messageType,
+      throttle_rate: s.throttleRate,
+      reconnect_on_close: false,
+    });
     s.current.subscribe(s.onMessage);
   }
 

@@ -3,7 +3,8 @@
 import type { PluginAction } from "../../core/plugins";
 import type { DispatchOutcome, Health, Transport } from "./transport";
 
-const overSsh = (action: PluginAction) => !!action.ros2 && "payloadMapping" in action.ros2 && action.ros2.payloadMapping.type === "ssh";
+const overSsh = (action: PluginAction) =>
+  !!action.ros2 && "payloadMapping" in action.ros2 && action.ros2.payloadMapping.type === "ssh";
 
 export class RoutedTransport implements Transport {
   constructor(
@@ -19,7 +20,11 @@ export class RoutedTransport implements Transport {
 
   dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome> {
     if (!overSsh(action)) return this.primary.dispatch(action, parameters);
-    if (!this.ssh) return Promise.resolve({ status: "failed", reason: `"${action.name}" needs SSH to the robot: set HRI_ROBOT_SSH_HOST (see docs/robot-setup.md)` });
+    if (!this.ssh)
+      return Promise.resolve({
+        status: "failed",
+        reason: `"${action.name}" needs SSH to the robot: set HRI_ROBOT_SSH_HOST (see docs/robot-setup.md)`,
+      });
     return this.ssh.dispatch(action, parameters);
   }
 

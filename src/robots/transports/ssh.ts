@@ -4,7 +4,16 @@
 import { readFileSync } from "node:fs";
 import { Client } from "ssh2";
 import { outgoingFor, shellCommand, type PluginAction } from "../../core/plugins";
-import { backoffDelay, checkedParameters, LinkedTransport, RECONNECT_BACKOFF, timeoutOf, unreached, untilDeadline, type Backoff } from "./link";
+import {
+  backoffDelay,
+  checkedParameters,
+  LinkedTransport,
+  RECONNECT_BACKOFF,
+  timeoutOf,
+  unreached,
+  untilDeadline,
+  type Backoff,
+} from "./link";
 import type { DispatchOutcome } from "./transport";
 
 export interface SshOptions {
@@ -41,7 +50,9 @@ export class SshTransport extends LinkedTransport {
     const built = shellCommand(outgoing.command, checked.parameters);
     if (!built.ok) return { status: "failed", reason: built.reason };
     const timeoutMs = timeoutOf(action);
-    const client = action.retryable ? await untilDeadline(started + timeoutMs, () => this.connection()) : await this.connection();
+    const client = action.retryable
+      ? await untilDeadline(started + timeoutMs, () => this.connection())
+      : await this.connection();
     if (!client) return unreached(action, started, "robot not reachable over SSH");
     // The timeout is the command's: a slow first handshake does not eat into it.
     return this.run(client, built.command, timeoutMs, Date.now());
@@ -67,7 +78,11 @@ export class SshTransport extends LinkedTransport {
         stream.on("close", (code: number | null) => {
           clearTimeout(timer);
           if (code === 0) resolve({ status: "completed", detail: { exitCode: 0 } });
-          else resolve({ status: "failed", reason: `the robot refused the command (exit ${code ?? "unknown"})${stderr.trim() ? `: ${stderr.trim()}` : ""}` });
+          else
+            resolve({
+              status: "failed",
+              reason: `the robot refused the command (exit ${code ?? "unknown"})${stderr.trim() ? `: ${stderr.trim()}` : ""}`,
+            });
         });
       });
     });
@@ -102,7 +117,16 @@ export class SshTransport extends LinkedTransport {
       client.on("error", lost);
       client.on("close", lost);
       const { host, port = 22, username, password, privateKeyFile } = this.options;
-      client.connect({ host, port, username, password, privateKey: privateKeyFile ? readFileSync(privateKeyFile) : undefined, readyTimeout: 5000, keepaliveInterval: 2000, keepaliveCountMax: 2 });
+      client.connect({
+        host,
+        port,
+        username,
+        password,
+        privateKey: privateKeyFile ? readFileSync(privateKeyFile) : undefined,
+        readyTimeout: 5000,
+        keepaliveInterval: 2000,
+        keepaliveCountMax: 2,
+      });
     });
     return this.ready;
   }

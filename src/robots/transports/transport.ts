@@ -26,7 +26,12 @@ export interface Transport {
   /** Sends one action with its parameters; resolves within the action's timeout. */
   dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome>;
   /** Robot state for logging; kept across reconnects. Returns a function that stops it. */
-  subscribe(topic: string, messageType: string, onMessage: (message: unknown) => void, options?: { throttleRate?: number }): () => void;
+  subscribe(
+    topic: string,
+    messageType: string,
+    onMessage: (message: unknown) => void,
+    options?: { throttleRate?: number },
+  ): () => void;
   health(): Health;
   /** Called at once on every change of connection state. */
   onHealth(listener: (health: Health) => void): () => void;

@@ -19,7 +19,12 @@ const refuse = (path: string, what: string): never => {
  * it sits, under any key the schema may or may not use: an unknown id and
  * another study's id read the same.
  */
-export async function assertOneStudy(db: Db, studyId: string, input: unknown, known: { kind: string; id: string }): Promise<void> {
+export async function assertOneStudy(
+  db: Db,
+  studyId: string,
+  input: unknown,
+  known: { kind: string; id: string },
+): Promise<void> {
   const named = namedIn(input, REFERENCE_KEYS).filter((n) => n.value !== null && n.value !== undefined);
   const checked = new Set([`${known.kind}:${known.id}`]);
   for (const { path, key, value } of named) {

@@ -18,7 +18,13 @@ import {
 type Db = Pick<Database, "select">;
 
 const LOADERS = {
-  study: async (db: Db, id: string) => (await db.select({ ...getTableColumns(studies), studyId: studies.id }).from(studies).where(eq(studies.id, id)))[0],
+  study: async (db: Db, id: string) =>
+    (
+      await db
+        .select({ ...getTableColumns(studies), studyId: studies.id })
+        .from(studies)
+        .where(eq(studies.id, id))
+    )[0],
   experiment: async (db: Db, id: string) => (await db.select().from(experiments).where(eq(experiments.id, id)))[0],
   version: async (db: Db, id: string) =>
     (
@@ -32,11 +38,24 @@ const LOADERS = {
   trial: async (db: Db, id: string) => (await db.select().from(trials).where(eq(trials.id, id)))[0],
   condition: async (db: Db, id: string) => (await db.select().from(conditions).where(eq(conditions.id, id)))[0],
   recording: async (db: Db, id: string) =>
-    (await db.select({ ...getTableColumns(mediaRecordings), studyId: trials.studyId }).from(mediaRecordings).innerJoin(trials, eq(trials.id, mediaRecordings.trialId)).where(eq(mediaRecordings.id, id)))[0],
+    (
+      await db
+        .select({ ...getTableColumns(mediaRecordings), studyId: trials.studyId })
+        .from(mediaRecordings)
+        .innerJoin(trials, eq(trials.id, mediaRecordings.trialId))
+        .where(eq(mediaRecordings.id, id))
+    )[0],
   session: async (db: Db, id: string) => (await db.select().from(sessions).where(eq(sessions.id, id)))[0],
   annotation: async (db: Db, id: string) =>
-    (await db.select({ ...getTableColumns(annotations), studyId: trials.studyId }).from(annotations).innerJoin(trials, eq(trials.id, annotations.trialId)).where(eq(annotations.id, id)))[0],
-  questionnaire: async (db: Db, id: string) => (await db.select().from(questionnaires).where(eq(questionnaires.id, id)))[0],
+    (
+      await db
+        .select({ ...getTableColumns(annotations), studyId: trials.studyId })
+        .from(annotations)
+        .innerJoin(trials, eq(trials.id, annotations.trialId))
+        .where(eq(annotations.id, id))
+    )[0],
+  questionnaire: async (db: Db, id: string) =>
+    (await db.select().from(questionnaires).where(eq(questionnaires.id, id)))[0],
 } satisfies Record<string, (db: Db, id: string) => Promise<{ studyId: string } | undefined>>;
 
 export type Resource = keyof typeof LOADERS;
@@ -88,6 +107,10 @@ export function nameOf(resource: Resource): string {
   return NAMES[resource];
 }
 
-export async function loadResource<R extends Resource>(db: Db, resource: R, id: string): Promise<ResourceRow<R> | undefined> {
+export async function loadResource<R extends Resource>(
+  db: Db,
+  resource: R,
+  id: string,
+): Promise<ResourceRow<R> | undefined> {
   return (await LOADERS[resource](db, id)) as ResourceRow<R> | undefined;
 }

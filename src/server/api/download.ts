@@ -12,22 +12,35 @@ import { appRouter } from "./root";
 
 type Caller = ReturnType<typeof appRouter.createCaller>;
 
-export async function apiRoute(req: Request, handle: (api: Caller, context: Context) => Promise<Response>): Promise<Response> {
+export async function apiRoute(
+  req: Request,
+  handle: (api: Caller, context: Context) => Promise<Response>,
+): Promise<Response> {
   try {
     const context = await contextFromHeaders(req.headers);
     return await handle(appRouter.createCaller(context), context);
   } catch (error) {
     // A procedure's unexpected failure arrives wrapped as INTERNAL_SERVER_ERROR with the original message.
-    if (error instanceof TRPCError && error.code !== "INTERNAL_SERVER_ERROR") return new Response(error.message, { status: getHTTPStatusCodeFromError(error) });
+    if (error instanceof TRPCError && error.code !== "INTERNAL_SERVER_ERROR")
+      return new Response(error.message, { status: getHTTPStatusCodeFromError(error) });
     return unexpectedResponse(error, req);
   }
 }
 
-export function download(req: Request, file: (api: Caller) => Promise<{ body: string | Uint8Array<ArrayBuffer>; contentType: string; filename: string }>): Promise<Response> {
+export function download(
+  req: Request,
+  file: (api: Caller) => Promise<{ body: string | Uint8Array<ArrayBuffer>; contentType: string; filename: string }>,
+): Promise<Response> {
   return apiRoute(req, async (api) => {
     const { body, contentType, filename } = await file(api);
     // The length lets the browser show the download's progress.
     const length = typeof body === "string" ? Buffer.byteLength(body) : body.byteLength;
-    return new Response(body, { headers: { "content-type": contentType, "content-length": String(length), "content-disposition": `attachment; filename="${filename}"` } });
+    return new Response(body, {
+      headers: {
+        "content-type": contentType,
+        "content-length": String(length),
+        "content-disposition": `attachment; filename="${filename}"`,
+      },
+    });
   });
 }

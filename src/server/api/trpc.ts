@@ -1,7 +1,15 @@
 import { initTRPC, TRPCError } from "@trpc/server";
 import { ZodError, type z } from "zod";
 import { nulPath } from "@/core/access/input";
-import { decide, isStudyOperation, type Operation, type StudyOperation, type StudyRole, type SystemOperation, type SystemRole } from "@/core/access/policy";
+import {
+  decide,
+  isStudyOperation,
+  type Operation,
+  type StudyOperation,
+  type StudyRole,
+  type SystemOperation,
+  type SystemRole,
+} from "@/core/access/policy";
 import type { Blinding } from "@/core/studies/blinding";
 import type { Database } from "@/data/client";
 import { assertOneStudy } from "../access/membership";
@@ -50,7 +58,11 @@ const t = initTRPC
         : error.code === "INTERNAL_SERVER_ERROR"
           ? unexpectedMessage(logUnexpected(error.cause ?? error, `procedure ${path ?? "(unknown)"}`))
           : shape.message;
-      return { ...shape, message, data: { code: shape.data.code, httpStatus: shape.data.httpStatus, path: shape.data.path, issues } };
+      return {
+        ...shape,
+        message,
+        data: { code: shape.data.code, httpStatus: shape.data.httpStatus, path: shape.data.path, issues },
+      };
     },
   });
 
@@ -60,7 +72,11 @@ export const createCallerFactory = t.createCallerFactory;
 /** PostgreSQL cannot store a NUL character: refused here with where it was, before any handler. */
 const noNul = t.middleware(async ({ getRawInput, next }) => {
   const at = nulPath(await getRawInput());
-  if (at) throw new TRPCError({ code: "BAD_REQUEST", message: `Please correct: ${at}: must not contain the NUL character (\\0)` });
+  if (at)
+    throw new TRPCError({
+      code: "BAD_REQUEST",
+      message: `Please correct: ${at}: must not contain the NUL character (\\0)`,
+    });
   return next();
 });
 
@@ -70,8 +86,13 @@ export const publicProcedure = t.procedure.meta({ op: "public" }).use(noNul);
 /** Signed in, and every procedure declares what it does. */
 const signedIn = t.procedure.use(noNul).use(async ({ ctx, meta, next }) => {
   if (!meta?.op) throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: "Procedure declares no operation." });
-  if (meta.op === "public") throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: "Public procedures use publicProcedure." });
-  if (isStudyOperation(meta.op) && !meta.resource) throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: `Operation ${meta.op} must name the row it acts on.` });
+  if (meta.op === "public")
+    throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: "Public procedures use publicProcedure." });
+  if (isStudyOperation(meta.op) && !meta.resource)
+    throw new TRPCError({
+      code: "INTERNAL_SERVER_ERROR",
+      message: `Operation ${meta.op} must name the row it acts on.`,
+    });
   if (!ctx.user) throw new TRPCError({ code: "UNAUTHORIZED", message: "Please sign in." });
   return next({ ctx: { ...ctx, user: ctx.user } });
 });
@@ -107,14 +128,23 @@ export function studyProcedure<R extends Resource, I extends z.ZodObject>(op: St
     .input(input)
     .use(async ({ ctx, input: parsed, getRawInput, next }) => {
       const id = (parsed as Record<string, unknown>)[key];
-      if (typeof id !== "string") throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: `A procedure on a ${resource} needs ${key} in its input.` });
+      if (typeof id !== "string")
+        throw new TRPCError({
+          code: "INTERNAL_SERVER_ERROR",
+          message: `A procedure on a ${resource} needs ${key} in its input.`,
+        });
       const row = await loadResource(ctx.db, resource, id);
       // An unknown id reads exactly like a row of a study the caller may not see.
-      const notFound = () => new TRPCError({ code: "NOT_FOUND", message: `No such ${nameOf(resource)}, or it belongs to a study you are not a member of.` });
+      const notFound = () =>
+        new TRPCError({
+          code: "NOT_FOUND",
+          message: `No such ${nameOf(resource)}, or it belongs to a study you are not a member of.`,
+        });
       if (!row) throw notFound();
       const { role, blinding } = await studyAccessOf(ctx.db, row.studyId, ctx.user.id);
       const decision = decide({ systemRole: ctx.user.role, studyRole: role, blinding }, op);
-      if (!decision.allow) throw decision.hidden ? notFound() : new TRPCError({ code: "FORBIDDEN", message: decision.reason });
+      if (!decision.allow)
+        throw decision.hidden ? notFound() : new TRPCError({ code: "FORBIDDEN", message: decision.reason });
       await assertOneStudy(ctx.db, row.studyId, await getRawInput(), { kind: resource, id });
       return next({ ctx: { studyId: row.studyId, studyRole: role!, blinding, row } satisfies StudyContext<R> });
     });

@@ -20,7 +20,9 @@ export async function createAccount(db: Database, input: NewAccount) {
       .insert(user)
       .values({ id, name: input.name, email: input.email.toLowerCase(), role: input.role, emailVerified: true })
       .returning();
-    await tx.insert(account).values({ id: crypto.randomUUID(), accountId: id, providerId: "credential", userId: id, password: hash });
+    await tx
+      .insert(account)
+      .values({ id: crypto.randomUUID(), accountId: id, providerId: "credential", userId: id, password: hash });
     return created!;
   });
 }

@@ -29,7 +29,13 @@ export function createAuth(settings: AuthSettings) {
     baseURL: settings.baseURL,
     database: drizzleAdapter(settings.db, {
       provider: "pg",
-      schema: { user: schema.user, session: schema.session, account: schema.account, verification: schema.verification, rateLimit: schema.rateLimit },
+      schema: {
+        user: schema.user,
+        session: schema.session,
+        account: schema.account,
+        verification: schema.verification,
+        rateLimit: schema.rateLimit,
+      },
     }),
     emailAndPassword: { enabled: true, disableSignUp: !settings.allowSignUp, minPasswordLength: 8 },
     user: {

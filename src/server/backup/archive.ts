@@ -68,18 +68,28 @@ export class BackupReader {
 
   static async open(path: string): Promise<BackupReader> {
     const file = await open(path, "r").catch((error: NodeJS.ErrnoException) => {
-      throw new Error(error.code === "ENOENT" ? `There is no backup file at ${path}.` : `Cannot read the backup file ${path}: ${error.message}`);
+      throw new Error(
+        error.code === "ENOENT"
+          ? `There is no backup file at ${path}.`
+          : `Cannot read the backup file ${path}: ${error.message}`,
+      );
     });
     const entries = new Map<string, { offset: number; size: number }>();
     try {
       const { size: fileSize } = await file.stat();
       for (let at = 0; ; ) {
-        if (at >= fileSize) throw new Error(`The backup file ${path} ends before its last entry: it is incomplete (was it copied in full?).`);
+        if (at >= fileSize)
+          throw new Error(
+            `The backup file ${path} ends before its last entry: it is incomplete (was it copied in full?).`,
+          );
         const block = new Uint8Array(BLOCK);
         const { bytesRead } = await file.read(block, 0, BLOCK, at);
         const header = readTarHeader(block.subarray(0, bytesRead), at);
         if (!header) break;
-        if (at + BLOCK + header.size > fileSize) throw new Error(`The backup file ${path} ends inside "${header.name}": it is incomplete (was it copied in full?).`);
+        if (at + BLOCK + header.size > fileSize)
+          throw new Error(
+            `The backup file ${path} ends inside "${header.name}": it is incomplete (was it copied in full?).`,
+          );
         if (header.type === "0") entries.set(header.name, { offset: at + BLOCK, size: header.size });
         at += BLOCK + header.size + paddingAfter(header.size);
       }
@@ -108,7 +118,8 @@ export class BackupReader {
 
   private entry(name: string) {
     const entry = this.entries.get(name);
-    if (!entry) throw new Error(`The backup file ${this.path} has no "${name}": it is incomplete or not an HRIStudio backup.`);
+    if (!entry)
+      throw new Error(`The backup file ${this.path} has no "${name}": it is incomplete or not an HRIStudio backup.`);
     return entry;
   }
 }

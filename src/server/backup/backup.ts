@@ -17,8 +17,14 @@ export interface BackupOptions {
   progress: (line: string) => void;
 }
 
-export async function backup(options: BackupOptions): Promise<{ manifest: BackupManifest; bytes: number; from: string }> {
-  const database = await openDatabase({ databaseUrl: options.databaseUrl, dataDir: options.dataDir, purpose: "backup" });
+export async function backup(
+  options: BackupOptions,
+): Promise<{ manifest: BackupManifest; bytes: number; from: string }> {
+  const database = await openDatabase({
+    databaseUrl: options.databaseUrl,
+    dataDir: options.dataDir,
+    purpose: "backup",
+  });
   const sql = postgres(database.url, { max: 1, onnotice: () => {} });
   await mkdir(dirname(options.out), { recursive: true });
   const writer = await BackupWriter.create(options.out);
@@ -27,7 +33,13 @@ export async function backup(options: BackupOptions): Promise<{ manifest: Backup
     const part = await dumpDatabase(sql, writer, options.progress);
     // After the database's moment, so every recording it lists is already in the store.
     const media = await dumpMedia(options.media, writer, options.progress);
-    const manifest: BackupManifest = { format: BACKUP_FORMAT, version: BACKUP_VERSION, createdAt: new Date().toISOString(), ...part, media };
+    const manifest: BackupManifest = {
+      format: BACKUP_FORMAT,
+      version: BACKUP_VERSION,
+      createdAt: new Date().toISOString(),
+      ...part,
+      media,
+    };
     await writer.add(MANIFEST_FILE, [new TextEncoder().encode(JSON.stringify(manifest, null, 2))]);
     return { manifest, bytes: await writer.finish(), from: database.where };
   } catch (error) {

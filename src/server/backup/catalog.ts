@@ -13,7 +13,9 @@ export const quoteIdent = (name: string) => `"${name.replaceAll('"', '""')}"`;
  * UTC with microseconds, floats to the last bit, bytea as hex.
  */
 export async function fixTextFormats(tx: postgres.TransactionSql) {
-  await tx.unsafe("SET LOCAL TIME ZONE 'UTC'; SET LOCAL datestyle = 'ISO, YMD'; SET LOCAL intervalstyle = 'postgres'; SET LOCAL extra_float_digits = 3; SET LOCAL bytea_output = 'hex'");
+  await tx.unsafe(
+    "SET LOCAL TIME ZONE 'UTC'; SET LOCAL datestyle = 'ISO, YMD'; SET LOCAL intervalstyle = 'postgres'; SET LOCAL extra_float_digits = 3; SET LOCAL bytea_output = 'hex'",
+  );
 }
 
 /** Every table of the public schema with its stored columns, in column order. */
@@ -58,8 +60,14 @@ export async function tablesWithRows(sql: Sql): Promise<string[]> {
 
 /** How far the committed migrations have been applied (Drizzle records each in drizzle.__drizzle_migrations). */
 export async function appliedLevel(sql: Sql, journal: JournalEntry[]): Promise<MigrationLevel> {
-  const [{ exists }] = (await sql`SELECT to_regclass('drizzle.__drizzle_migrations') IS NOT NULL AS exists`) as unknown as [{ exists: boolean }];
+  const [{ exists }] =
+    (await sql`SELECT to_regclass('drizzle.__drizzle_migrations') IS NOT NULL AS exists`) as unknown as [
+      { exists: boolean },
+    ];
   if (!exists) return migrationLevel(journal, []);
   const rows = await sql<Array<{ when: string }>>`SELECT created_at::text AS when FROM drizzle.__drizzle_migrations`;
-  return migrationLevel(journal, rows.map((r) => Number(r.when)));
+  return migrationLevel(
+    journal,
+    rows.map((r) => Number(r.when)),
+  );
 }

@@ -42,16 +42,26 @@ export function runningEmbeddedUrl(dataDir: string): string | null {
   return connectionUrl({ user: "hristudio", password, host: "127.0.0.1", port, database: "hristudio" });
 }
 
-export async function openDatabase(options: { databaseUrl?: string; dataDir: string; purpose: "backup" | "restore" }): Promise<OpenDatabase> {
+export async function openDatabase(options: {
+  databaseUrl?: string;
+  dataDir: string;
+  purpose: "backup" | "restore";
+}): Promise<OpenDatabase> {
   if (options.databaseUrl) {
     const u = new URL(options.databaseUrl);
-    return { url: options.databaseUrl, where: `the database ${u.pathname.slice(1)} on ${u.host} (DATABASE_URL)`, close: nothingToStop };
+    return {
+      url: options.databaseUrl,
+      where: `the database ${u.pathname.slice(1)} on ${u.host} (DATABASE_URL)`,
+      close: nothingToStop,
+    };
   }
   const pgDir = join(options.dataDir, "postgres");
   const running = runningEmbeddedUrl(options.dataDir);
   if (running) return { url: running, where: `the running database in ${pgDir}`, close: nothingToStop };
   if (options.purpose === "backup" && !existsSync(join(pgDir, "PG_VERSION"))) {
-    throw new Error(`There is no database in ${options.dataDir}: nothing to back up. Set HRI_DATA_DIR to the data folder that \`npm start\` uses, or DATABASE_URL to the database.`);
+    throw new Error(
+      `There is no database in ${options.dataDir}: nothing to back up. Set HRI_DATA_DIR to the data folder that \`npm start\` uses, or DATABASE_URL to the database.`,
+    );
   }
   const server = await startEmbeddedPostgres({ dataDir: options.dataDir });
   return { url: server.url, where: `the database in ${pgDir}`, close: () => server.stop() };

@@ -20,7 +20,11 @@ async function* countingRows(chunks: AsyncIterable<Uint8Array>, count: { rows: n
   }
 }
 
-export async function dumpDatabase(sql: postgres.Sql, writer: BackupWriter, progress: (line: string) => void): Promise<DatabasePart> {
+export async function dumpDatabase(
+  sql: postgres.Sql,
+  writer: BackupWriter,
+  progress: (line: string) => void,
+): Promise<DatabasePart> {
   return sql.begin("ISOLATION LEVEL REPEATABLE READ READ ONLY", async (tx) => {
     await fixTextFormats(tx);
     const migrations = await appliedLevel(tx, readJournal());
@@ -33,14 +37,18 @@ export async function dumpDatabase(sql: postgres.Sql, writer: BackupWriter, prog
     for (const [i, name] of order.entries()) {
       progress(`tables ${i + 1}/${order.length} (${name})`);
       const { columns } = found.find((t) => t.name === name)!;
-      const copy = await tx.unsafe(`COPY ${quoteIdent(name)} (${columns.map(quoteIdent).join(", ")}) TO STDOUT`).readable();
+      const copy = await tx
+        .unsafe(`COPY ${quoteIdent(name)} (${columns.map(quoteIdent).join(", ")}) TO STDOUT`)
+        .readable();
       const count = { rows: 0 };
       await writer.add(tableFile(name), countingRows(copy, count));
       tables.push({ name, columns, rows: count.rows });
     }
     const sequences: DatabasePart["sequences"] = [];
     for (const name of await sequencesOf(tx)) {
-      const [row] = await tx.unsafe<Array<{ value: string; called: boolean }>>(`SELECT last_value::text AS value, is_called AS called FROM ${quoteIdent(name)}`);
+      const [row] = await tx.unsafe<Array<{ value: string; called: boolean }>>(
+        `SELECT last_value::text AS value, is_called AS called FROM ${quoteIdent(name)}`,
+      );
       sequences.push({ name, value: row!.value, called: row!.called });
     }
     return { migrations, tables, sequences };

@@ -6,17 +6,26 @@ import { tableFile, type BackupManifest } from "@/core/backup/manifest";
 import type { BackupReader } from "./archive";
 import { fixTextFormats, quoteIdent } from "./catalog";
 
-export async function loadDatabase(sql: postgres.Sql, reader: BackupReader, manifest: BackupManifest, progress: (line: string) => void) {
+export async function loadDatabase(
+  sql: postgres.Sql,
+  reader: BackupReader,
+  manifest: BackupManifest,
+  progress: (line: string) => void,
+) {
   await sql.begin(async (tx) => {
     await fixTextFormats(tx);
     for (const [i, table] of manifest.tables.entries()) {
       progress(`tables ${i + 1}/${manifest.tables.length} (${table.name}, ${table.rows} rows)`);
       if (table.rows === 0) continue;
       try {
-        const copy = await tx.unsafe(`COPY ${quoteIdent(table.name)} (${table.columns.map(quoteIdent).join(", ")}) FROM STDIN`).writable();
+        const copy = await tx
+          .unsafe(`COPY ${quoteIdent(table.name)} (${table.columns.map(quoteIdent).join(", ")}) FROM STDIN`)
+          .writable();
         await pipeline(reader.stream(tableFile(table.name)), copy);
       } catch (error) {
-        throw new Error(`Could not load the table ${table.name}: ${error instanceof Error ? error.message : String(error)}`);
+        throw new Error(
+          `Could not load the table ${table.name}: ${error instanceof Error ? error.message : String(error)}`,
+        );
       }
     }
     for (const s of manifest.sequences) {

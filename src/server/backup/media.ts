@@ -7,7 +7,11 @@ import type { BackupReader, BackupWriter } from "./archive";
 const CONTENT_TYPES: Record<string, string> = { webm: "video/webm", mp4: "video/mp4", ogg: "audio/ogg" };
 const contentType = (key: string) => CONTENT_TYPES[key.slice(key.lastIndexOf(".") + 1)] ?? "application/octet-stream";
 
-export async function dumpMedia(storage: MediaStorage, writer: BackupWriter, progress: (line: string) => void): Promise<BackupManifest["media"]> {
+export async function dumpMedia(
+  storage: MediaStorage,
+  writer: BackupWriter,
+  progress: (line: string) => void,
+): Promise<BackupManifest["media"]> {
   const keys = await storage.list("");
   const media: BackupManifest["media"] = [];
   for (const [i, key] of keys.entries()) {
@@ -19,7 +23,12 @@ export async function dumpMedia(storage: MediaStorage, writer: BackupWriter, pro
   return media;
 }
 
-export async function restoreMedia(storage: MediaStorage, reader: BackupReader, media: BackupManifest["media"], progress: (line: string) => void) {
+export async function restoreMedia(
+  storage: MediaStorage,
+  reader: BackupReader,
+  media: BackupManifest["media"],
+  progress: (line: string) => void,
+) {
   for (const [i, { key }] of media.entries()) {
     progress(`media files ${i + 1}/${media.length} (${key})`);
     await storage.put(key, await reader.bytes(mediaFile(key)), contentType(key));

@@ -19,23 +19,35 @@ export interface RestoreOptions {
   progress: (line: string) => void;
 }
 
-export async function restore(options: RestoreOptions): Promise<{ manifest: BackupManifest; into: string; migration: string }> {
+export async function restore(
+  options: RestoreOptions,
+): Promise<{ manifest: BackupManifest; into: string; migration: string }> {
   const reader = await BackupReader.open(options.file);
   const manifest = parseManifest((await reader.bytes(MANIFEST_FILE)).toString("utf8"));
   const journal = readJournal();
   const present = await options.media.storage.list("");
   if (present.length) {
-    throw new Error(`${options.media.where} already holds ${present.length} media files: restore only into an empty one, so nothing is overwritten.`);
+    throw new Error(
+      `${options.media.where} already holds ${present.length} media files: restore only into an empty one, so nothing is overwritten.`,
+    );
   }
-  const database = await openDatabase({ databaseUrl: options.databaseUrl, dataDir: options.dataDir, purpose: "restore" });
+  const database = await openDatabase({
+    databaseUrl: options.databaseUrl,
+    dataDir: options.dataDir,
+    purpose: "restore",
+  });
   const sql = postgres(database.url, { max: 1, onnotice: () => {} });
   try {
     const full = await tablesWithRows(sql);
     if (full.length) {
-      throw new Error(`${capitalised(database.where)} already holds data (in ${full.join(", ")}). Restore only into a new, empty data folder or database, so nothing is overwritten.`);
+      throw new Error(
+        `${capitalised(database.where)} already holds data (in ${full.join(", ")}). Restore only into a new, empty data folder or database, so nothing is overwritten.`,
+      );
     }
     checkRestoreLevels(journal, manifest.migrations, await appliedLevel(sql, journal));
-    options.progress(`Restoring into ${database.where}: the schema as the backup had it (${manifest.migrations.last ?? "none"})…`);
+    options.progress(
+      `Restoring into ${database.where}: the schema as the backup had it (${manifest.migrations.last ?? "none"})…`,
+    );
     await migrateTo(database.url, manifest.migrations.level);
     await loadDatabase(sql, reader, manifest, options.progress);
     if (manifest.migrations.level < journal.length) {

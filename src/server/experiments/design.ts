@@ -11,19 +11,30 @@ export type Tx = Parameters<Parameters<Database["transaction"]>[0]>[0];
 export async function loadDesign(db: Database | Tx, experimentId: string) {
   const [experiment] = await db.select().from(experiments).where(eq(experiments.id, experimentId));
   if (!experiment) throw new TRPCError({ code: "NOT_FOUND", message: "Experiment not found." });
-  const stepRows = await db.select().from(steps).where(eq(steps.experimentId, experimentId)).orderBy(asc(steps.position));
+  const stepRows = await db
+    .select()
+    .from(steps)
+    .where(eq(steps.experimentId, experimentId))
+    .orderBy(asc(steps.position));
   const actionRows = stepRows.length
     ? await db
         .select()
         .from(actions)
-        .where(inArray(actions.stepId, stepRows.map((s) => s.id)))
+        .where(
+          inArray(
+            actions.stepId,
+            stepRows.map((s) => s.id),
+          ),
+        )
         .orderBy(asc(actions.position))
     : [];
   return {
     ...experiment,
     steps: stepRows.map((s) => ({
       ...s,
-      actions: actionRows.filter((a) => a.stepId === s.id).map((a) => ({ ...a, parameters: a.parameters as Record<string, unknown> })),
+      actions: actionRows
+        .filter((a) => a.stepId === s.id)
+        .map((a) => ({ ...a, parameters: a.parameters as Record<string, unknown> })),
     })),
   };
 }
@@ -40,7 +51,8 @@ export async function bumpRevision(tx: Tx, experimentId: string, userId: string,
   if (expected !== undefined && row!.revision !== expected + 1) {
     throw new TRPCError({
       code: "CONFLICT",
-      message: "Someone else saved this experiment after you opened it. Reload to see their changes; yours were not saved.",
+      message:
+        "Someone else saved this experiment after you opened it. Reload to see their changes; yours were not saved.",
     });
   }
   return row!.revision;
@@ -50,7 +62,8 @@ export async function bumpRevision(tx: Tx, experimentId: string, userId: string,
 export async function saveDesign(db: Database, input: DesignInput, userId: string) {
   return db.transaction(async (tx) => {
     await bumpRevision(tx, input.experimentId, userId, input.baseRevision);
-    if (input.details && Object.keys(input.details).length) await tx.update(experiments).set(input.details).where(eq(experiments.id, input.experimentId));
+    if (input.details && Object.keys(input.details).length)
+      await tx.update(experiments).set(input.details).where(eq(experiments.id, input.experimentId));
     const current = await loadDesign(tx, input.experimentId);
     const ownStepIds = new Set(current.steps.map((s) => s.id));
     const ownActionIds = new Set(current.steps.flatMap((s) => s.actions.map((a) => a.id)));
@@ -59,11 +72,25 @@ export async function saveDesign(db: Database, input: DesignInput, userId: strin
       return given ?? crypto.randomUUID();
     };
     const stepRows = input.steps.map((s, position) => {
-      return { id: checkId(s.id, ownStepIds), experimentId: input.experimentId, position, name: s.name, description: s.description };
+      return {
+        id: checkId(s.id, ownStepIds),
+        experimentId: input.experimentId,
+        position,
+        name: s.name,
+        description: s.description,
+      };
     });
     const actionRows = input.steps.flatMap((s, i) =>
       s.actions.map((a, position) => {
-        return { id: checkId(a.id, ownActionIds), stepId: stepRows[i]!.id, position, type: a.type, name: a.name, parameters: a.parameters, parallelGroup: a.parallelGroup };
+        return {
+          id: checkId(a.id, ownActionIds),
+          stepId: stepRows[i]!.id,
+          position,
+          type: a.type,
+          name: a.name,
+          parameters: a.parameters,
+          parallelGroup: a.parallelGroup,
+        };
       }),
     );
     // Delete and re-insert under the same ids: references from branches stay valid.
@@ -77,6 +104,9 @@ export async function saveDesign(db: Database, input: DesignInput, userId: strin
 /** A client may name a new block's id itself (so branches can point at it), but only a fresh UUID. */
 function assertFreshId(given: string) {
   if (!/^[0-9a-f]{8}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{4}-[0-9a-f]{12}$/i.test(given)) {
-    throw new TRPCError({ code: "BAD_REQUEST", message: `Please correct: id: "${given}" is not an id of this experiment` });
+    throw new TRPCError({
+      code: "BAD_REQUEST",
+      message: `Please correct: id: "${given}" is not an id of this experiment`,
+    });
   }
 }

@@ -9,7 +9,11 @@ import { loadDesign } from "./design";
 
 export async function exportFile(db: Database, experimentId: string) {
   const design = await loadDesign(db, experimentId);
-  const slug = design.name.toLowerCase().replace(/[^a-z0-9]+/g, "-").replace(/^-|-$/g, "") || "experiment";
+  const slug =
+    design.name
+      .toLowerCase()
+      .replace(/[^a-z0-9]+/g, "-")
+      .replace(/^-|-$/g, "") || "experiment";
   return { fileName: `${slug}.hristudio-experiment.json`, text: exportExperiment(draftFrom(design)) };
 }
 
@@ -25,11 +29,31 @@ export async function importFile(db: Database, studyId: string, text: string, us
   return db.transaction(async (tx) => {
     const [experiment] = await tx
       .insert(experiments)
-      .values({ studyId, name: draft.name, description: draft.description, robotPluginId: draft.robotPluginId, updatedBy: userId })
+      .values({
+        studyId,
+        name: draft.name,
+        description: draft.description,
+        robotPluginId: draft.robotPluginId,
+        updatedBy: userId,
+      })
       .returning();
-    const stepRows = draft.steps.map((s, position) => ({ id: s.id, experimentId: experiment!.id, position, name: s.name, description: s.description }));
+    const stepRows = draft.steps.map((s, position) => ({
+      id: s.id,
+      experimentId: experiment!.id,
+      position,
+      name: s.name,
+      description: s.description,
+    }));
     const actionRows = draft.steps.flatMap((s) =>
-      s.actions.map((a, position) => ({ id: a.id, stepId: s.id, position, type: a.type, name: a.name, parameters: a.parameters, parallelGroup: a.parallelGroup })),
+      s.actions.map((a, position) => ({
+        id: a.id,
+        stepId: s.id,
+        position,
+        type: a.type,
+        name: a.name,
+        parameters: a.parameters,
+        parallelGroup: a.parallelGroup,
+      })),
     );
     if (stepRows.length) await tx.insert(steps).values(stepRows);
     if (actionRows.length) await tx.insert(actions).values(actionRows);

@@ -16,20 +16,35 @@ export async function publish(db: Database, experimentId: string, userId: string
     await tx.select({ id: experiments.id }).from(experiments).where(eq(experiments.id, experimentId)).for("update");
     const design = await loadDesign(tx, experimentId);
     if (design.steps.length === 0) {
-      throw new TRPCError({ code: "BAD_REQUEST", message: "This experiment has no steps yet: add at least one step before publishing." });
+      throw new TRPCError({
+        code: "BAD_REQUEST",
+        message: "This experiment has no steps yet: add at least one step before publishing.",
+      });
     }
     // The exact plugin document the design was published against: its trials run with it, whatever is installed later.
     const known = await knownPlugin(tx, design.robotPluginId);
     const plugin = known?.plugin;
     const problems = validateDesign(draftFrom(design), plugin ?? null).filter((i) => i.severity === "error");
     if (problems.length) {
-      const listed = problems.slice(0, 5).map((p) => p.message).join(" ");
-      throw new TRPCError({ code: "BAD_REQUEST", message: `This experiment cannot be published until ${problems.length === 1 ? "this problem is" : `these ${problems.length} problems are`} fixed: ${listed}` });
+      const listed = problems
+        .slice(0, 5)
+        .map((p) => p.message)
+        .join(" ");
+      throw new TRPCError({
+        code: "BAD_REQUEST",
+        message: `This experiment cannot be published until ${problems.length === 1 ? "this problem is" : `these ${problems.length} problems are`} fixed: ${listed}`,
+      });
     }
     if (known) {
       await tx
         .insert(pluginDocuments)
-        .values({ hash: known.hash, robotId: known.robotId, version: known.plugin.version, source: known.source, definition: known.plugin })
+        .values({
+          hash: known.hash,
+          robotId: known.robotId,
+          version: known.plugin.version,
+          source: known.source,
+          definition: known.plugin,
+        })
         .onConflictDoNothing();
     }
     const snapshot = snapshotOf(design);
@@ -39,7 +54,16 @@ export async function publish(db: Database, experimentId: string, userId: string
       .where(eq(experimentVersions.experimentId, experimentId))) as [{ next: number }];
     const [version] = await tx
       .insert(experimentVersions)
-      .values({ experimentId, version: next, snapshot, hash: hashCanonical(snapshot), pluginId: design.robotPluginId, pluginVersion: plugin?.version ?? null, pluginHash: known?.hash ?? null, publishedBy: userId })
+      .values({
+        experimentId,
+        version: next,
+        snapshot,
+        hash: hashCanonical(snapshot),
+        pluginId: design.robotPluginId,
+        pluginVersion: plugin?.version ?? null,
+        pluginHash: known?.hash ?? null,
+        publishedBy: userId,
+      })
       .returning();
     return version!;
   });

@@ -8,7 +8,8 @@ const streamed = (...parts: number[]) =>
       controller.close();
     },
   });
-const request = (body: BodyInit | null, headers: Record<string, string> = {}) => new Request("http://test/x", { method: "POST", body, headers, duplex: "half" } as RequestInit);
+const request = (body: BodyInit | null, headers: Record<string, string> = {}) =>
+  new Request("http://test/x", { method: "POST", body, headers, duplex: "half" } as RequestInit);
 
 describe("reading a body with a limit of 10 bytes", () => {
   it.each([
@@ -23,14 +24,23 @@ describe("reading a body with a limit of 10 bytes", () => {
 
   it.each([
     ["one byte over, in pieces", streamed(5, 6), {}, "A test body may be at most 10 bytes; this one is larger."],
-    ["declared over", streamed(1), { "content-length": "2048" }, "A test body may be at most 10 bytes; this one is 2 KB."],
+    [
+      "declared over",
+      streamed(1),
+      { "content-length": "2048" },
+      "A test body may be at most 10 bytes; this one is 2 KB.",
+    ],
   ])("refuses %s with 413", async (_name, body, headers, message) => {
     const res = (await readBody(request(body, headers), 10, "A test body")) as Response;
     expect([res.status, await res.text()]).toEqual([413, message]);
   });
 
   it("hands a route a copy it can read, with its length and no chunked encoding", async () => {
-    const copy = (await withinLimit(request(streamed(3, 3), { "transfer-encoding": "chunked", "x-kept": "yes" }), 10, "A test body")) as Request;
+    const copy = (await withinLimit(
+      request(streamed(3, 3), { "transfer-encoding": "chunked", "x-kept": "yes" }),
+      10,
+      "A test body",
+    )) as Request;
     expect(copy.headers.get("content-length")).toBe("6");
     expect(copy.headers.get("transfer-encoding")).toBeNull();
     expect(copy.headers.get("x-kept")).toBe("yes");

@@ -6,12 +6,16 @@
 
 import { KB, MB } from "@/core/network/limits";
 
-const size = (bytes: number) => (bytes >= MB ? `${+(bytes / MB).toFixed(1)} MB` : bytes >= KB ? `${+(bytes / KB).toFixed(1)} KB` : `${bytes} bytes`);
+const size = (bytes: number) =>
+  bytes >= MB ? `${+(bytes / MB).toFixed(1)} MB` : bytes >= KB ? `${+(bytes / KB).toFixed(1)} KB` : `${bytes} bytes`;
 
 /** 413 with a sentence naming the limit, e.g. "A part of a recording may be at most 16 MB; this one is 20 MB." */
 export function tooLarge(what: string, limit: number, declared?: number): Response {
   const actual = declared === undefined ? "this one is larger" : `this one is ${size(declared)}`;
-  return new Response(`${what} may be at most ${size(limit)}; ${actual}.`, { status: 413, headers: { "content-type": "text/plain; charset=utf-8", connection: "close" } });
+  return new Response(`${what} may be at most ${size(limit)}; ${actual}.`, {
+    status: 413,
+    headers: { "content-type": "text/plain; charset=utf-8", connection: "close" },
+  });
 }
 
 /**

@@ -1,7 +1,8 @@
 import { describe, expect, it } from "vitest";
 import { pageCsp } from "./security-headers";
 
-const directives = (csp: string) => Object.fromEntries(csp.split("; ").map((d) => [d.split(" ")[0], d.split(" ").slice(1).join(" ")]));
+const directives = (csp: string) =>
+  Object.fromEntries(csp.split("; ").map((d) => [d.split(" ")[0], d.split(" ").slice(1).join(" ")]));
 
 describe("the pages' Content-Security-Policy", () => {
   it.each([
@@ -13,11 +14,19 @@ describe("the pages' Content-Security-Policy", () => {
   });
 
   it("lets the robot page reach the simulated robot when there is one", () => {
-    expect(directives(pageCsp("ws://127.0.0.1:3001", "ws://127.0.0.1:9090"))["connect-src"]).toBe("'self' ws://127.0.0.1:3001 ws://127.0.0.1:9090");
+    expect(directives(pageCsp("ws://127.0.0.1:3001", "ws://127.0.0.1:9090"))["connect-src"]).toBe(
+      "'self' ws://127.0.0.1:3001 ws://127.0.0.1:9090",
+    );
   });
 
   it("forbids framing and plugins, allows blob: media and data: images, and scripts from this site only", () => {
     const csp = directives(pageCsp("ws://127.0.0.1:3001"));
-    expect(csp).toMatchObject({ "frame-ancestors": "'none'", "object-src": "'none'", "media-src": "'self' blob:", "img-src": "'self' blob: data:", "script-src": "'self' 'unsafe-inline' 'unsafe-eval'" });
+    expect(csp).toMatchObject({
+      "frame-ancestors": "'none'",
+      "object-src": "'none'",
+      "media-src": "'self' blob:",
+      "img-src": "'self' blob: data:",
+      "script-src": "'self' 'unsafe-inline' 'unsafe-eval'",
+    });
   });
 });

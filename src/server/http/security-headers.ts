@@ -38,7 +38,10 @@ export function pageCsp(runtimeUrl: string, simulatorUrl?: string): string {
     "img-src 'self' blob: data:",
     "media-src 'self' blob:",
     "font-src 'self' data:",
-    `connect-src 'self' ${[runtimeUrl, simulatorUrl].filter((u): u is string => Boolean(u)).map(origin).join(" ")}`,
+    `connect-src 'self' ${[runtimeUrl, simulatorUrl]
+      .filter((u): u is string => Boolean(u))
+      .map(origin)
+      .join(" ")}`,
     "worker-src 'self' blob:",
     "object-src 'none'",
     "base-uri 'self'",

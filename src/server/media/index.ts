@@ -13,7 +13,12 @@ export function mediaStorage(config: Config): MediaStorage {
     if (!config.HRI_MEDIA_S3_ACCESS_KEY || !config.HRI_MEDIA_S3_SECRET_KEY) {
       throw new Error("HRI_MEDIA_S3_URL is set: set HRI_MEDIA_S3_ACCESS_KEY and HRI_MEDIA_S3_SECRET_KEY too.");
     }
-    chosen = new S3Storage({ url: config.HRI_MEDIA_S3_URL, bucket: config.HRI_MEDIA_S3_BUCKET, accessKey: config.HRI_MEDIA_S3_ACCESS_KEY, secretKey: config.HRI_MEDIA_S3_SECRET_KEY });
+    chosen = new S3Storage({
+      url: config.HRI_MEDIA_S3_URL,
+      bucket: config.HRI_MEDIA_S3_BUCKET,
+      accessKey: config.HRI_MEDIA_S3_ACCESS_KEY,
+      secretKey: config.HRI_MEDIA_S3_SECRET_KEY,
+    });
   } else {
     chosen = new LocalStorage(resolve(config.HRI_MEDIA_DIR ?? join(config.HRI_DATA_DIR, "media")));
   }

@@ -57,10 +57,12 @@ export class LocalStorage implements MediaStorage {
   async list(prefix: string) {
     const base = prefix.replace(/\/$/, "");
     if (base) checkKey(base);
-    const entries = await readdir(join(this.root, base), { recursive: true, withFileTypes: true }).catch((error: NodeJS.ErrnoException) => {
-      if (error.code === "ENOENT") return [];
-      throw error;
-    });
+    const entries = await readdir(join(this.root, base), { recursive: true, withFileTypes: true }).catch(
+      (error: NodeJS.ErrnoException) => {
+        if (error.code === "ENOENT") return [];
+        throw error;
+      },
+    );
     return entries
       .filter((e) => e.isFile() && !e.name.endsWith(".part"))
       .map((e) => join(e.parentPath, e.name).slice(this.root.length + 1))

@@ -13,21 +13,33 @@ export const chunkKey = (storageKey: string, index: number) => `${storageKey}/ch
 const extension = (mimeType: string) => (/mp4/.test(mimeType) ? "mp4" : /ogg/.test(mimeType) ? "ogg" : "webm");
 export const fileKey = (storageKey: string, mimeType: string) => `${storageKey}.${extension(mimeType)}`;
 /** The name a downloaded recording has, and the ELAN document links to. */
-export const recordingFileName = (recordingId: string, mimeType: string) => `recording-${recordingId}.${extension(mimeType)}`;
+export const recordingFileName = (recordingId: string, mimeType: string) =>
+  `recording-${recordingId}.${extension(mimeType)}`;
 
 /** Joins the chunks in order; refuses a gap (a chunk that never arrived) by naming it. */
 export async function joinChunks(storage: MediaStorage, storageKey: string, maxBytes: number): Promise<Uint8Array> {
   const keys = await storage.list(`${storageKey}/`);
-  if (!keys.length) throw new TRPCError({ code: "PRECONDITION_FAILED", message: "No part of this recording arrived: nothing to finish." });
+  if (!keys.length)
+    throw new TRPCError({
+      code: "PRECONDITION_FAILED",
+      message: "No part of this recording arrived: nothing to finish.",
+    });
   const indices = keys.map((k) => Number(k.slice(k.lastIndexOf("-") + 1)));
   const missing = indices.at(-1)! + 1 - indices.length;
   if (indices[0] !== 0 || missing > 0) {
     const gaps = Array.from({ length: indices.at(-1)! + 1 }, (_, i) => i).filter((i) => !indices.includes(i));
-    throw new TRPCError({ code: "PRECONDITION_FAILED", message: `Parts ${gaps.slice(0, 10).join(", ")} of this recording have not arrived yet; the recorder sends them again when it can.` });
+    throw new TRPCError({
+      code: "PRECONDITION_FAILED",
+      message: `Parts ${gaps.slice(0, 10).join(", ")} of this recording have not arrived yet; the recorder sends them again when it can.`,
+    });
   }
   const parts = await Promise.all(keys.map((k) => storage.get(k)));
   const size = parts.reduce((n, p) => n + (p?.length ?? 0), 0);
-  if (size > maxBytes) throw new TRPCError({ code: "PAYLOAD_TOO_LARGE", message: `This recording is ${(size / 1048576).toFixed(0)} MB; the limit is ${(maxBytes / 1048576).toFixed(0)} MB (HRI_MEDIA_MAX_MB).` });
+  if (size > maxBytes)
+    throw new TRPCError({
+      code: "PAYLOAD_TOO_LARGE",
+      message: `This recording is ${(size / 1048576).toFixed(0)} MB; the limit is ${(maxBytes / 1048576).toFixed(0)} MB (HRI_MEDIA_MAX_MB).`,
+    });
   const joined = new Uint8Array(size);
   let at = 0;
   for (const part of parts) {

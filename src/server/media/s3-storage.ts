@@ -34,7 +34,8 @@ export class S3Storage implements MediaStorage {
 
   private bucket() {
     this.bucketReady ??= (async () => {
-      if (!(await this.client.bucketExists(this.options.bucket))) await this.client.makeBucket(this.options.bucket, this.options.region ?? "us-east-1");
+      if (!(await this.client.bucketExists(this.options.bucket)))
+        await this.client.makeBucket(this.options.bucket, this.options.region ?? "us-east-1");
     })().catch((error: unknown) => {
       this.bucketReady = null;
       throw error;
@@ -44,7 +45,9 @@ export class S3Storage implements MediaStorage {
 
   async put(key: string, data: Uint8Array, contentType: string) {
     await this.bucket();
-    await this.client.putObject(this.options.bucket, checkKey(key), Buffer.from(data), data.byteLength, { "Content-Type": contentType });
+    await this.client.putObject(this.options.bucket, checkKey(key), Buffer.from(data), data.byteLength, {
+      "Content-Type": contentType,
+    });
   }
 
   async get(key: string) {
@@ -74,7 +77,12 @@ export class S3Storage implements MediaStorage {
     await this.bucket();
     try {
       const body = range
-        ? await this.client.getPartialObject(this.options.bucket, checkKey(key), range.start, range.end - range.start + 1)
+        ? await this.client.getPartialObject(
+            this.options.bucket,
+            checkKey(key),
+            range.start,
+            range.end - range.start + 1,
+          )
         : await this.client.getObject(this.options.bucket, checkKey(key));
       return webStream(body);
     } catch (error) {
@@ -86,7 +94,8 @@ export class S3Storage implements MediaStorage {
   async list(prefix: string) {
     await this.bucket();
     const keys: string[] = [];
-    for await (const item of this.client.listObjectsV2(this.options.bucket, prefix, true)) if ((item as { name?: string }).name) keys.push((item as { name: string }).name);
+    for await (const item of this.client.listObjectsV2(this.options.bucket, prefix, true))
+      if ((item as { name?: string }).name) keys.push((item as { name: string }).name);
     return keys.sort();
   }
 

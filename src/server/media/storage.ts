@@ -27,7 +27,9 @@ const SAFE_KEY = /^[A-Za-z0-9][A-Za-z0-9._-]*(\/[A-Za-z0-9][A-Za-z0-9._-]*)*$/;
 /** Refuses a key that could escape the storage root or name something odd, saying which. */
 export function checkKey(key: string): string {
   if (key.length > 500 || !SAFE_KEY.test(key) || key.split("/").some((part) => part === "." || part === "..")) {
-    throw new Error(`"${key.slice(0, 80)}" is not a valid media key (letters, digits, ".", "_", "-" in parts separated by "/")`);
+    throw new Error(
+      `"${key.slice(0, 80)}" is not a valid media key (letters, digits, ".", "_", "-" in parts separated by "/")`,
+    );
   }
   return key;
 }

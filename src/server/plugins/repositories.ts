@@ -6,14 +6,26 @@
 import { TRPCError } from "@trpc/server";
 import { and, desc, eq, sql } from "drizzle-orm";
 import { hashCanonical } from "@/core/protocol/canonical";
-import { effectiveTrust, formatPluginError, pluginChanges, shadowing, type Plugin, type PluginChange } from "@/core/plugins";
+import {
+  effectiveTrust,
+  formatPluginError,
+  pluginChanges,
+  shadowing,
+  type Plugin,
+  type PluginChange,
+} from "@/core/plugins";
 import { fetchRepository } from "@/robots/repository-sync";
 import { audit } from "../audit";
 import type { Database } from "@/data/client";
 import { installedPlugins, pluginRepositories } from "@/data/schema";
 import { pluginCatalog } from "@/robots/catalog";
 
-export async function syncRepository(db: Database, repositoryId: string, actorId: string, fetchFn: typeof fetch = fetch) {
+export async function syncRepository(
+  db: Database,
+  repositoryId: string,
+  actorId: string,
+  fetchFn: typeof fetch = fetch,
+) {
   const [repository] = await db.select().from(pluginRepositories).where(eq(pluginRepositories.id, repositoryId));
   if (!repository) throw new TRPCError({ code: "NOT_FOUND", message: "No such plugin repository." });
   const fetched = await fetchRepository(repository.url, fetchFn);
@@ -30,31 +42,66 @@ export async function syncRepository(db: Database, repositoryId: string, actorId
       if (refusal) errors.push(refusal);
       return !refusal;
     });
-    const stored = await tx.select().from(installedPlugins).where(eq(installedPlugins.repositoryId, repositoryId)).orderBy(desc(installedPlugins.installedAt));
+    const stored = await tx
+      .select()
+      .from(installedPlugins)
+      .where(eq(installedPlugins.repositoryId, repositoryId))
+      .orderBy(desc(installedPlugins.installedAt));
     const latest = new Map<string, Plugin>();
     for (const row of stored) if (!latest.has(row.robotId)) latest.set(row.robotId, row.definition as Plugin);
-    changes = pluginChanges([...latest.values()], offered.map((f) => f.plugin));
+    changes = pluginChanges(
+      [...latest.values()],
+      offered.map((f) => f.plugin),
+    );
     for (const { plugin, trust } of offered) {
       const hash = hashCanonical(plugin);
       const [same] = await tx
         .select()
         .from(installedPlugins)
-        .where(and(eq(installedPlugins.repositoryId, repositoryId), eq(installedPlugins.robotId, plugin.robotId), eq(installedPlugins.version, plugin.version)));
+        .where(
+          and(
+            eq(installedPlugins.repositoryId, repositoryId),
+            eq(installedPlugins.robotId, plugin.robotId),
+            eq(installedPlugins.version, plugin.version),
+          ),
+        );
       if (same && same.hash !== hash) {
         // A published version is immutable: experiments point at it.
-        errors.push(`${plugin.robotId} ${plugin.version}: its content changed without a new version number; the stored ${plugin.version} is kept.`);
+        errors.push(
+          `${plugin.robotId} ${plugin.version}: its content changed without a new version number; the stored ${plugin.version} is kept.`,
+        );
         continue;
       }
       // What the files claim (the lower of plugin and repository.json), capped by what the administrator chose.
       const trustLevel = effectiveTrust(repository.trust, trust);
-      if (!same) await tx.insert(installedPlugins).values({ repositoryId, robotId: plugin.robotId, version: plugin.version, name: plugin.name, trustLevel, definition: plugin, hash });
+      if (!same)
+        await tx
+          .insert(installedPlugins)
+          .values({
+            repositoryId,
+            robotId: plugin.robotId,
+            version: plugin.version,
+            name: plugin.name,
+            trustLevel,
+            definition: plugin,
+            hash,
+          });
     }
     // The repository's trust stays what the administrator chose: repository.json cannot raise it.
     await tx
       .update(pluginRepositories)
-      .set({ name: fetched.repository?.name ?? repository.name, lastSyncedAt: new Date(), lastSyncError: errors.length ? errors.join("\n") : null })
+      .set({
+        name: fetched.repository?.name ?? repository.name,
+        lastSyncedAt: new Date(),
+        lastSyncError: errors.length ? errors.join("\n") : null,
+      })
       .where(eq(pluginRepositories.id, repositoryId));
-    await audit(tx, { actorId, action: "plugins.sync", target: repositoryId, details: { changes: changes.filter((c) => c.change !== "unchanged"), errors } });
+    await audit(tx, {
+      actorId,
+      action: "plugins.sync",
+      target: repositoryId,
+      details: { changes: changes.filter((c) => c.change !== "unchanged"), errors },
+    });
   });
   return { changes, errors };
 }

@@ -7,7 +7,14 @@ import { and, eq } from "drizzle-orm";
 import { presentedOrder, type Answers } from "@/core/questionnaires/answers";
 import type { Definition } from "@/core/questionnaires/definition";
 import type { Database } from "@/data/client";
-import { participants, questionnaireLinks, questionnaireResponses, questionnaireVersions, questionnaires, studies } from "@/data/schema";
+import {
+  participants,
+  questionnaireLinks,
+  questionnaireResponses,
+  questionnaireVersions,
+  questionnaires,
+  studies,
+} from "@/data/schema";
 
 export const hashToken = (token: string) => createHash("sha256").update(token).digest("hex");
 
@@ -32,15 +39,33 @@ export async function openLink(db: Database, token: string) {
     .innerJoin(questionnaireVersions, eq(questionnaireVersions.id, questionnaireLinks.versionId))
     .innerJoin(questionnaires, eq(questionnaires.id, questionnaireVersions.questionnaireId))
     .innerJoin(studies, eq(studies.id, questionnaireLinks.studyId))
-    .innerJoin(participants, and(eq(participants.id, questionnaireLinks.participantId), eq(participants.studyId, questionnaireLinks.studyId)))
+    .innerJoin(
+      participants,
+      and(eq(participants.id, questionnaireLinks.participantId), eq(participants.studyId, questionnaireLinks.studyId)),
+    )
     .leftJoin(questionnaireResponses, eq(questionnaireResponses.linkId, questionnaireLinks.id))
     .where(eq(questionnaireLinks.tokenHash, hashToken(token)));
-  if (!row) throw new TRPCError({ code: "NOT_FOUND", message: "This questionnaire link is not valid. Please ask the researcher for a new one." });
+  if (!row)
+    throw new TRPCError({
+      code: "NOT_FOUND",
+      message: "This questionnaire link is not valid. Please ask the researcher for a new one.",
+    });
   // Withdrawing ends every link at once: nothing more is asked of them or stored.
-  if (row.consentStatus === "withdrawn") throw new TRPCError({ code: "FORBIDDEN", message: "This link no longer works: you have withdrawn from this study. Thank you for your time." });
-  if (row.link.usedAt) throw new TRPCError({ code: "FORBIDDEN", message: "This questionnaire has already been submitted with this link. Thank you! A link can be used only once." });
+  if (row.consentStatus === "withdrawn")
+    throw new TRPCError({
+      code: "FORBIDDEN",
+      message: "This link no longer works: you have withdrawn from this study. Thank you for your time.",
+    });
+  if (row.link.usedAt)
+    throw new TRPCError({
+      code: "FORBIDDEN",
+      message: "This questionnaire has already been submitted with this link. Thank you! A link can be used only once.",
+    });
   if (row.link.expiresAt.getTime() < Date.now()) {
-    throw new TRPCError({ code: "FORBIDDEN", message: `This link expired at ${row.link.expiresAt.toISOString().slice(0, 16).replace("T", " ")} UTC. Please ask the researcher for a new one.` });
+    throw new TRPCError({
+      code: "FORBIDDEN",
+      message: `This link expired at ${row.link.expiresAt.toISOString().slice(0, 16).replace("T", " ")} UTC. Please ask the researcher for a new one.`,
+    });
   }
   const definition = row.definition as Definition;
   return {

@@ -2,7 +2,13 @@
 // the participant, the trial. A withdrawn participant's answers are left out.
 import { and, asc, eq, ne } from "drizzle-orm";
 import type { Database } from "@/data/client";
-import { participants, questionnaireLinks, questionnaireResponses, questionnaireVersions, questionnaires } from "@/data/schema";
+import {
+  participants,
+  questionnaireLinks,
+  questionnaireResponses,
+  questionnaireVersions,
+  questionnaires,
+} from "@/data/schema";
 
 export async function submitted(db: Database, where: ReturnType<typeof eq>) {
   return db
@@ -24,4 +30,3 @@ export async function submitted(db: Database, where: ReturnType<typeof eq>) {
     .where(and(where, eq(questionnaireResponses.status, "submitted"), ne(participants.consentStatus, "withdrawn")))
     .orderBy(asc(participants.code), asc(questionnaires.name));
 }
-

@@ -34,7 +34,12 @@ export async function seedDemo(db: Database, password?: string): Promise<DemoAcc
   const ids = new Map<string, string>();
   for (const person of PEOPLE) {
     const pw = password ?? randomBytes(9).toString("base64url");
-    const created = await createAccount(db, { name: person.name, email: person.email, password: pw, role: person.systemRole });
+    const created = await createAccount(db, {
+      name: person.name,
+      email: person.email,
+      password: pw,
+      role: person.systemRole,
+    });
     ids.set(person.email, created.id);
     accounts.push({ email: person.email, password: pw, systemRole: person.systemRole, studyRole: person.studyRole });
   }
@@ -50,19 +55,44 @@ export async function seedDemo(db: Database, password?: string): Promise<DemoAcc
         createdBy: owner,
       })
       .returning();
-    await tx.insert(studyMembers).values(
-      PEOPLE.filter((p) => p.studyRole).map((p) => ({ studyId: study!.id, userId: ids.get(p.email)!, role: p.studyRole! })),
-    );
+    await tx
+      .insert(studyMembers)
+      .values(
+        PEOPLE.filter((p) => p.studyRole).map((p) => ({
+          studyId: study!.id,
+          userId: ids.get(p.email)!,
+          role: p.studyRole!,
+        })),
+      );
     const [experiment] = await tx
       .insert(experiments)
       .values({ ...STORYTELLER, studyId: study!.id, updatedBy: owner })
       .returning();
     const design = storytellerDraft(() => crypto.randomUUID());
-    await tx.insert(steps).values(design.steps.map((s, position) => ({ id: s.id, experimentId: experiment!.id, position, name: s.name, description: s.description })));
-    await tx.insert(actions).values(design.steps.flatMap((s) => s.actions.map((a, position) => ({ ...a, stepId: s.id, position }))));
-    await tx.insert(participants).values(
-      ["P001", "P002", "P003"].map((code) => ({ studyId: study!.id, code, consentStatus: "given" as const, consentDate: new Date() })),
-    );
+    await tx
+      .insert(steps)
+      .values(
+        design.steps.map((s, position) => ({
+          id: s.id,
+          experimentId: experiment!.id,
+          position,
+          name: s.name,
+          description: s.description,
+        })),
+      );
+    await tx
+      .insert(actions)
+      .values(design.steps.flatMap((s) => s.actions.map((a, position) => ({ ...a, stepId: s.id, position }))));
+    await tx
+      .insert(participants)
+      .values(
+        ["P001", "P002", "P003"].map((code) => ({
+          studyId: study!.id,
+          code,
+          consentStatus: "given" as const,
+          consentDate: new Date(),
+        })),
+      );
   });
   return accounts;
 }

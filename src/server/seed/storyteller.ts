@@ -120,14 +120,24 @@ export const STORYTELLER_STEPS: SeedStep[] = [
 export function storytellerDraft(idFor: (key: string) => string = (key) => key): DesignDraft {
   const stepIds = new Map(STORYTELLER_STEPS.map((s) => [s.key, idFor(s.key)]));
   const resolve = (value: Record<string, unknown>) =>
-    JSON.parse(JSON.stringify(value, (_k, v) => (typeof v === "string" && v.startsWith("@") && stepIds.has(v.slice(1)) ? stepIds.get(v.slice(1)) : v))) as Record<string, unknown>;
+    JSON.parse(
+      JSON.stringify(value, (_k, v) =>
+        typeof v === "string" && v.startsWith("@") && stepIds.has(v.slice(1)) ? stepIds.get(v.slice(1)) : v,
+      ),
+    ) as Record<string, unknown>;
   return {
     ...STORYTELLER,
     steps: STORYTELLER_STEPS.map((s) => ({
       id: stepIds.get(s.key)!,
       name: s.name,
       description: s.description,
-      actions: s.actions.map((a, i) => ({ id: idFor(`${s.key}-${i}`), type: a.type, name: a.name, parameters: resolve(a.parameters), parallelGroup: a.parallelGroup ?? null })),
+      actions: s.actions.map((a, i) => ({
+        id: idFor(`${s.key}-${i}`),
+        type: a.type,
+        name: a.name,
+        parameters: resolve(a.parameters),
+        parallelGroup: a.parallelGroup ?? null,
+      })),
     })),
   };
 }

@@ -4,7 +4,16 @@
 import { strToU8, zipSync } from "fflate";
 import { and, asc, eq, inArray, ne } from "drizzle-orm";
 import type { Database } from "@/data/client";
-import { conditions, experimentVersions, experiments, participants, questionnaireLinks, sessions, studies, trials } from "@/data/schema";
+import {
+  conditions,
+  experimentVersions,
+  experiments,
+  participants,
+  questionnaireLinks,
+  sessions,
+  studies,
+  trials,
+} from "@/data/schema";
 import { answersCsv } from "@/core/questionnaires/export";
 import { submitted } from "../questionnaires/responses";
 import { trialFiles } from "../trials/files";
@@ -26,16 +35,48 @@ and answers; study.json says how many.
 
 export async function studyArchive(db: Database, studyId: string) {
   const [study] = await db.select().from(studies).where(eq(studies.id, studyId));
-  const people = await db.select().from(participants).where(eq(participants.studyId, studyId)).orderBy(asc(participants.code));
+  const people = await db
+    .select()
+    .from(participants)
+    .where(eq(participants.studyId, studyId))
+    .orderBy(asc(participants.code));
   const kept = people.filter((p) => p.consentStatus !== "withdrawn");
-  const conditionRows = await db.select().from(conditions).where(eq(conditions.studyId, studyId)).orderBy(asc(conditions.name));
-  const experimentRows = await db.select().from(experiments).where(eq(experiments.studyId, studyId)).orderBy(asc(experiments.name));
-  const versions = experimentRows.length ? await db.select().from(experimentVersions).where(inArray(experimentVersions.experimentId, experimentRows.map((e) => e.id))).orderBy(asc(experimentVersions.version)) : [];
+  const conditionRows = await db
+    .select()
+    .from(conditions)
+    .where(eq(conditions.studyId, studyId))
+    .orderBy(asc(conditions.name));
+  const experimentRows = await db
+    .select()
+    .from(experiments)
+    .where(eq(experiments.studyId, studyId))
+    .orderBy(asc(experiments.name));
+  const versions = experimentRows.length
+    ? await db
+        .select()
+        .from(experimentVersions)
+        .where(
+          inArray(
+            experimentVersions.experimentId,
+            experimentRows.map((e) => e.id),
+          ),
+        )
+        .orderBy(asc(experimentVersions.version))
+    : [];
   const trialRows = kept.length
     ? await db
         .select({ id: trials.id })
         .from(trials)
-        .where(and(eq(trials.studyId, studyId), eq(trials.isRehearsal, false), inArray(trials.participantId, kept.map((p) => p.id))))
+        .where(
+          and(
+            eq(trials.studyId, studyId),
+            eq(trials.isRehearsal, false),
+            inArray(
+              trials.participantId,
+              kept.map((p) => p.id),
+            ),
+          ),
+        )
         .orderBy(asc(trials.createdAt))
     : [];
   const conditionName = (id: string | null) => conditionRows.find((c) => c.id === id)?.name ?? null;
@@ -44,8 +85,18 @@ export async function studyArchive(db: Database, studyId: string) {
     "study.json": strToU8(
       JSON.stringify(
         {
-          study: { id: study!.id, title: study!.title, description: study!.description, status: study!.status, settings: study!.settings },
-          conditions: conditionRows.map((c) => ({ name: c.name, description: c.description, experiment: experimentRows.find((e) => e.id === c.experimentId)?.name })),
+          study: {
+            id: study!.id,
+            title: study!.title,
+            description: study!.description,
+            status: study!.status,
+            settings: study!.settings,
+          },
+          conditions: conditionRows.map((c) => ({
+            name: c.name,
+            description: c.description,
+            experiment: experimentRows.find((e) => e.id === c.experimentId)?.name,
+          })),
           participants: kept.map((p) => ({
             code: p.code,
             consent: { status: p.consentStatus, date: p.consentDate, documentVersion: p.consentVersion },
@@ -58,9 +109,28 @@ export async function studyArchive(db: Database, studyId: string) {
           experiments: experimentRows.map((e) => ({
             name: e.name,
             robot: e.robotPluginId,
-            versions: versions.filter((v) => v.experimentId === e.id).map((v) => ({ version: v.version, hash: v.hash, pluginVersion: v.pluginVersion, publishedAt: v.publishedAt, protocol: v.snapshot })),
+            versions: versions
+              .filter((v) => v.experimentId === e.id)
+              .map((v) => ({
+                version: v.version,
+                hash: v.hash,
+                pluginVersion: v.pluginVersion,
+                publishedAt: v.publishedAt,
+                protocol: v.snapshot,
+              })),
           })),
-          sessions: await db.select({ plannedAt: sessions.plannedAt, participant: participants.code, condition: conditions.name, trialId: sessions.trialId }).from(sessions).innerJoin(participants, eq(participants.id, sessions.participantId)).innerJoin(conditions, eq(conditions.id, sessions.conditionId)).where(and(eq(sessions.studyId, studyId), ne(participants.consentStatus, "withdrawn"))).orderBy(asc(sessions.plannedAt)),
+          sessions: await db
+            .select({
+              plannedAt: sessions.plannedAt,
+              participant: participants.code,
+              condition: conditions.name,
+              trialId: sessions.trialId,
+            })
+            .from(sessions)
+            .innerJoin(participants, eq(participants.id, sessions.participantId))
+            .innerJoin(conditions, eq(conditions.id, sessions.conditionId))
+            .where(and(eq(sessions.studyId, studyId), ne(participants.consentStatus, "withdrawn")))
+            .orderBy(asc(sessions.plannedAt)),
         },
         null,
         2,
@@ -69,8 +139,13 @@ export async function studyArchive(db: Database, studyId: string) {
     "questionnaire-answers.csv": strToU8(answersCsv(await submitted(db, eq(questionnaireLinks.studyId, studyId)))),
   };
   for (const { id } of trialRows) {
-    for (const file of await trialFiles(db, id, ["json", "csv", "eaf"])) files[`trials/${file.filename.replace(/^trial-/, "")}`] = strToU8(file.body);
+    for (const file of await trialFiles(db, id, ["json", "csv", "eaf"]))
+      files[`trials/${file.filename.replace(/^trial-/, "")}`] = strToU8(file.body);
   }
-  const slug = study!.title.toLowerCase().replace(/[^a-z0-9]+/g, "-").replace(/^-|-$/g, "") || "study";
+  const slug =
+    study!.title
+      .toLowerCase()
+      .replace(/[^a-z0-9]+/g, "-")
+      .replace(/^-|-$/g, "") || "study";
   return { filename: `${slug}.zip`, contentType: "application/zip", body: zipSync(files, { level: 6 }) };
 }

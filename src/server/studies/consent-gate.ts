@@ -7,10 +7,20 @@ import type { Database } from "@/data/client";
 import { participants, studies } from "@/data/schema";
 
 export async function assertMayTakePart(db: Database, participantId: string, studyId: string) {
-  const [p] = await db.select().from(participants).where(and(eq(participants.id, participantId), eq(participants.studyId, studyId)));
-  if (!p) throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: participantId: not a participant of this study" });
+  const [p] = await db
+    .select()
+    .from(participants)
+    .where(and(eq(participants.id, participantId), eq(participants.studyId, studyId)));
+  if (!p)
+    throw new TRPCError({
+      code: "BAD_REQUEST",
+      message: "Please correct: participantId: not a participant of this study",
+    });
   if (p.consentStatus === "withdrawn") {
-    throw new TRPCError({ code: "PRECONDITION_FAILED", message: `${p.code} has withdrawn from the study and cannot take part in another trial.` });
+    throw new TRPCError({
+      code: "PRECONDITION_FAILED",
+      message: `${p.code} has withdrawn from the study and cannot take part in another trial.`,
+    });
   }
   const [study] = await db.select({ settings: studies.settings }).from(studies).where(eq(studies.id, studyId));
   if (readSettings(study!.settings).requireConsent && p.consentStatus !== "given") {

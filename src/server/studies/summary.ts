@@ -10,12 +10,24 @@ import { eventsSince } from "@/data/event-store";
 
 export async function studyFigures(db: Database, studyId: string) {
   const rows = await db
-    .select({ id: trials.id, code: participants.code, condition: conditions.name, protocol: experimentVersions.snapshot })
+    .select({
+      id: trials.id,
+      code: participants.code,
+      condition: conditions.name,
+      protocol: experimentVersions.snapshot,
+    })
     .from(trials)
     .innerJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
     .innerJoin(participants, eq(participants.id, trials.participantId))
     .leftJoin(conditions, eq(conditions.id, participants.conditionId))
-    .where(and(eq(trials.studyId, studyId), eq(trials.isRehearsal, false), ne(participants.consentStatus, "withdrawn"), inArray(trials.status, ["completed", "aborted"])))
+    .where(
+      and(
+        eq(trials.studyId, studyId),
+        eq(trials.isRehearsal, false),
+        ne(participants.consentStatus, "withdrawn"),
+        inArray(trials.status, ["completed", "aborted"]),
+      ),
+    )
     .orderBy(asc(trials.createdAt));
   const figures = await Promise.all(
     rows.map(async (r) => ({

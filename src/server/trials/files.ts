@@ -17,7 +17,9 @@ export type TrialFormat = "csv" | "json" | "eaf";
 
 async function readTrial(db: Database, trialId: string) {
   const [trial] = await db.select().from(trials).where(eq(trials.id, trialId));
-  const [version] = trial!.versionId ? await db.select().from(experimentVersions).where(eq(experimentVersions.id, trial!.versionId)) : [];
+  const [version] = trial!.versionId
+    ? await db.select().from(experimentVersions).where(eq(experimentVersions.id, trial!.versionId))
+    : [];
   return {
     trial: trial!,
     version,
@@ -28,23 +30,59 @@ async function readTrial(db: Database, trialId: string) {
       .leftJoin(user, eq(user.id, annotations.authorId))
       .where(eq(annotations.trialId, trialId))
       .orderBy(asc(annotations.relMs)),
-    recordings: await db.select().from(mediaRecordings).where(eq(mediaRecordings.trialId, trialId)).orderBy(asc(mediaRecordings.createdAt)),
+    recordings: await db
+      .select()
+      .from(mediaRecordings)
+      .where(eq(mediaRecordings.trialId, trialId))
+      .orderBy(asc(mediaRecordings.createdAt)),
     questionnaires: await submitted(db, eq(questionnaireLinks.trialId, trialId)),
   };
 }
 
-function fileOf({ trial, version, events, marked, recordings, questionnaires }: Awaited<ReturnType<typeof readTrial>>, format: TrialFormat) {
+function fileOf(
+  { trial, version, events, marked, recordings, questionnaires }: Awaited<ReturnType<typeof readTrial>>,
+  format: TrialFormat,
+) {
   const name = `trial-${trial.id}`;
-  if (format === "csv") return { filename: `${name}-events.csv`, contentType: "text/csv; charset=utf-8", body: eventsCsv(trial.id, events) };
+  if (format === "csv")
+    return {
+      filename: `${name}-events.csv`,
+      contentType: "text/csv; charset=utf-8",
+      body: eventsCsv(trial.id, events),
+    };
   const protocol = (version?.snapshot ?? trial.rehearsalSnapshot) as ProtocolSnapshot;
   if (format === "eaf") {
     const video = recordings.find((r) => r.status === "complete" && r.kind === "video");
-    const media = video ? { fileName: recordingFileName(video.id, video.mimeType), mimeType: video.mimeType, offsetMs: video.offsetMs ?? 0 } : undefined;
-    const body = elanDocument({ protocol, events: events as unknown as TrialEvent[], annotations: marked, date: (trial.t0 ?? trial.createdAt).toISOString(), media });
+    const media = video
+      ? {
+          fileName: recordingFileName(video.id, video.mimeType),
+          mimeType: video.mimeType,
+          offsetMs: video.offsetMs ?? 0,
+        }
+      : undefined;
+    const body = elanDocument({
+      protocol,
+      events: events as unknown as TrialEvent[],
+      annotations: marked,
+      date: (trial.t0 ?? trial.createdAt).toISOString(),
+      media,
+    });
     return { filename: `${name}.eaf`, contentType: "application/xml; charset=utf-8", body };
   }
   const record = trialRecordJson({
-    trial: { ...trial, rehearsalSnapshot: undefined, version: version ? { id: version.id, number: version.version, hash: version.hash, pluginId: version.pluginId, pluginVersion: version.pluginVersion } : null },
+    trial: {
+      ...trial,
+      rehearsalSnapshot: undefined,
+      version: version
+        ? {
+            id: version.id,
+            number: version.version,
+            hash: version.hash,
+            pluginId: version.pluginId,
+            pluginVersion: version.pluginVersion,
+          }
+        : null,
+    },
     protocol,
     events,
     annotations: marked,

@@ -29,7 +29,8 @@ export function readTranscript(name: string): Line[] {
     .map((line) => JSON.parse(line) as Line);
 }
 
-const sleepUntil = (start: number, t: number) => new Promise((r) => setTimeout(r, Math.max(0, start + t - performance.now())));
+const sleepUntil = (start: number, t: number) =>
+  new Promise((r) => setTimeout(r, Math.max(0, start + t - performance.now())));
 
 const answered = (frame: unknown) => (frame as { topic?: string } | null)?.topic !== "/joint_states";
 
@@ -40,8 +41,14 @@ export async function replay(lines: Line[], url: string, tailMs = 400): Promise<
   // Before a connection is closed, its answers recorded so far must have
   // arrived: on a loaded machine they can lag the recorded times.
   const settled = async (conn: number, upTo: number) => {
-    const expected = lines.slice(0, upTo).filter((l) => l.dir === "recv" && (l.conn ?? 1) === conn && answered(l.frame)).length;
-    for (let waited = 0; waited < 3000 && got.filter((g) => g.conn === conn && answered(g.frame)).length < expected; waited += 20) {
+    const expected = lines
+      .slice(0, upTo)
+      .filter((l) => l.dir === "recv" && (l.conn ?? 1) === conn && answered(l.frame)).length;
+    for (
+      let waited = 0;
+      waited < 3000 && got.filter((g) => g.conn === conn && answered(g.frame)).length < expected;
+      waited += 20
+    ) {
       await new Promise((r) => setTimeout(r, 20));
     }
   };
@@ -52,7 +59,9 @@ export async function replay(lines: Line[], url: string, tailMs = 400): Promise<
     if (line.event === "terminate" || line.event === "close") await settled(conn, index);
     if (line.event === "open") {
       const socket = new WebSocket(url, { perMessageDeflate: false });
-      socket.on("message", (data) => got.push({ conn, t: performance.now() - start, frame: JSON.parse(data.toString()) }));
+      socket.on("message", (data) =>
+        got.push({ conn, t: performance.now() - start, frame: JSON.parse(data.toString()) }),
+      );
       await new Promise((resolve, reject) => socket.once("open", resolve).once("error", reject));
       sockets.set(conn, socket);
     } else if (line.event === "terminate") {

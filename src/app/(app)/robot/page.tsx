@@ -4,6 +4,11 @@ export const dynamic = "force-dynamic";
 
 export default function RobotPage() {
   const url = process.env.HRI_SIMULATOR_URL;
-  if (!url) return <p className="text-slate-600">No simulated robot is running: this installation drives a real robot (HRI_ROSBRIDGE_URL).</p>;
+  if (!url)
+    return (
+      <p className="text-slate-600">
+        No simulated robot is running: this installation drives a real robot (HRI_ROSBRIDGE_URL).
+      </p>
+    );
   return <RobotView url={url} />;
 }

@@ -13,7 +13,11 @@ import { id, text } from "../validation";
 const role = z.enum(SYSTEM_ROLES, { error: `must be one of ${SYSTEM_ROLES.join(", ")}` });
 
 function notSelf(actorId: string, userId: string, what: string) {
-  if (actorId === userId) throw new TRPCError({ code: "BAD_REQUEST", message: `You cannot ${what} your own account; ask another administrator.` });
+  if (actorId === userId)
+    throw new TRPCError({
+      code: "BAD_REQUEST",
+      message: `You cannot ${what} your own account; ask another administrator.`,
+    });
 }
 
 // The account an entry is about, beside the account that acted.
@@ -23,7 +27,14 @@ export const adminRouter = router({
   users: router({
     list: guarded("admin.users").query(({ ctx }) =>
       ctx.db
-        .select({ id: user.id, name: user.name, email: user.email, role: user.role, disabled: user.disabled, createdAt: user.createdAt })
+        .select({
+          id: user.id,
+          name: user.name,
+          email: user.email,
+          role: user.role,
+          disabled: user.disabled,
+          createdAt: user.createdAt,
+        })
         .from(user)
         .orderBy(asc(user.name)),
     ),
@@ -38,10 +49,18 @@ export const adminRouter = router({
         }),
       )
       .mutation(async ({ ctx, input }) => {
-        const [taken] = await ctx.db.select({ id: user.id }).from(user).where(eq(user.email, input.email.toLowerCase()));
+        const [taken] = await ctx.db
+          .select({ id: user.id })
+          .from(user)
+          .where(eq(user.email, input.email.toLowerCase()));
         if (taken) throw new TRPCError({ code: "CONFLICT", message: `An account already uses ${input.email}.` });
         const created = await createAccount(ctx.db, input);
-        await audit(ctx.db, { actorId: ctx.user.id, action: "user.create", target: created.id, details: { email: created.email, role: input.role } });
+        await audit(ctx.db, {
+          actorId: ctx.user.id,
+          action: "user.create",
+          target: created.id,
+          details: { email: created.email, role: input.role },
+        });
         return { id: created.id, name: created.name, email: created.email, role: input.role };
       }),
 
@@ -50,9 +69,18 @@ export const adminRouter = router({
       .mutation(async ({ ctx, input }) => {
         notSelf(ctx.user.id, input.userId, "change the role of");
         return ctx.db.transaction(async (tx) => {
-          const [row] = await tx.update(user).set({ role: input.role, updatedAt: new Date() }).where(eq(user.id, input.userId)).returning();
+          const [row] = await tx
+            .update(user)
+            .set({ role: input.role, updatedAt: new Date() })
+            .where(eq(user.id, input.userId))
+            .returning();
           if (!row) throw new TRPCError({ code: "NOT_FOUND", message: "No such account." });
-          await audit(tx, { actorId: ctx.user.id, action: "user.role", target: input.userId, details: { role: input.role } });
+          await audit(tx, {
+            actorId: ctx.user.id,
+            action: "user.role",
+            target: input.userId,
+            details: { role: input.role },
+          });
           return { id: row.id, role: row.role };
         });
       }),
@@ -62,18 +90,28 @@ export const adminRouter = router({
       .mutation(async ({ ctx, input }) => {
         notSelf(ctx.user.id, input.userId, "disable");
         return ctx.db.transaction(async (tx) => {
-          const [row] = await tx.update(user).set({ disabled: input.disabled, updatedAt: new Date() }).where(eq(user.id, input.userId)).returning();
+          const [row] = await tx
+            .update(user)
+            .set({ disabled: input.disabled, updatedAt: new Date() })
+            .where(eq(user.id, input.userId))
+            .returning();
           if (!row) throw new TRPCError({ code: "NOT_FOUND", message: "No such account." });
           // A disabled account is signed out everywhere at once.
           if (input.disabled) await tx.delete(session).where(eq(session.userId, input.userId));
-          await audit(tx, { actorId: ctx.user.id, action: input.disabled ? "user.disable" : "user.enable", target: input.userId });
+          await audit(tx, {
+            actorId: ctx.user.id,
+            action: input.disabled ? "user.disable" : "user.enable",
+            target: input.userId,
+          });
           return { id: row.id, disabled: row.disabled };
         });
       }),
   }),
 
   auditLog: guarded("admin.users")
-    .input(z.object({ limit: z.number().int().min(1).max(500).default(100), area: z.enum(AUDIT_AREA_VALUES).optional() }))
+    .input(
+      z.object({ limit: z.number().int().min(1).max(500).default(100), area: z.enum(AUDIT_AREA_VALUES).optional() }),
+    )
     .query(({ ctx, input }) =>
       ctx.db
         .select({
@@ -82,7 +120,9 @@ export const adminRouter = router({
           action: auditLog.action,
           target: auditLog.target,
           // The target is an id; the account's name, the participant's code or the repository's name says what it was.
-          targetName: sql<string | null>`coalesce(${targetUser.name}, ${participants.code}, ${pluginRepositories.name})`,
+          targetName: sql<
+            string | null
+          >`coalesce(${targetUser.name}, ${participants.code}, ${pluginRepositories.name})`,
           details: auditLog.details,
           actor: user.name,
           studyId: auditLog.studyId,

@@ -6,7 +6,10 @@ const MAX_PARAMETERS_BYTES = 64 * 1024;
 
 export const parameters = z
   .record(z.string(), z.unknown(), { error: "must be an object of named values" })
-  .refine((p) => JSON.stringify(p).length <= MAX_PARAMETERS_BYTES, `must be smaller than ${MAX_PARAMETERS_BYTES / 1024} KB`);
+  .refine(
+    (p) => JSON.stringify(p).length <= MAX_PARAMETERS_BYTES,
+    `must be smaller than ${MAX_PARAMETERS_BYTES / 1024} KB`,
+  );
 
 export const actionFields = z.object({
   type: text("Action type", 200),
@@ -32,7 +35,9 @@ export const designInput = z.object({
   baseRevision: z.number().int().min(0),
   details: experimentDetails.partial().optional(),
   steps: z
-    .array(stepFields.extend({ id: id.optional(), actions: z.array(actionFields.extend({ id: id.optional() })).max(500) }))
+    .array(
+      stepFields.extend({ id: id.optional(), actions: z.array(actionFields.extend({ id: id.optional() })).max(500) }),
+    )
     .max(500),
 });
 

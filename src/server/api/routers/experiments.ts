@@ -9,40 +9,53 @@ import { id } from "../validation";
 import { designInput, experimentDetails } from "./design-input";
 
 export const experimentsRouter = router({
-  list: studyProcedure("experiment.read", "study", z.object({ studyId: id }))
-    .query(({ ctx }) =>
-      ctx.db
-        .select({
-          id: experiments.id,
-          name: experiments.name,
-          description: experiments.description,
-          robotPluginId: experiments.robotPluginId,
-          updatedAt: experiments.updatedAt,
-          stepCount: sql<number>`(select count(*)::int from ${steps} where ${steps.experimentId} = ${qualified(experiments.id)})`,
-          latestVersion: sql<number | null>`(select max(${experimentVersions.version}) from ${experimentVersions} where ${experimentVersions.experimentId} = ${qualified(experiments.id)})`,
-        })
-        .from(experiments)
-        .where(eq(experiments.studyId, ctx.studyId))
-        .orderBy(asc(experiments.name)),
-    ),
+  list: studyProcedure("experiment.read", "study", z.object({ studyId: id })).query(({ ctx }) =>
+    ctx.db
+      .select({
+        id: experiments.id,
+        name: experiments.name,
+        description: experiments.description,
+        robotPluginId: experiments.robotPluginId,
+        updatedAt: experiments.updatedAt,
+        stepCount: sql<number>`(select count(*)::int from ${steps} where ${steps.experimentId} = ${qualified(experiments.id)})`,
+        latestVersion: sql<
+          number | null
+        >`(select max(${experimentVersions.version}) from ${experimentVersions} where ${experimentVersions.experimentId} = ${qualified(experiments.id)})`,
+      })
+      .from(experiments)
+      .where(eq(experiments.studyId, ctx.studyId))
+      .orderBy(asc(experiments.name)),
+  ),
 
-  get: studyProcedure("experiment.read", "experiment", z.object({ experimentId: id }))
-    .query(({ ctx }) => loadDesign(ctx.db, ctx.row.id)),
+  get: studyProcedure("experiment.read", "experiment", z.object({ experimentId: id })).query(({ ctx }) =>
+    loadDesign(ctx.db, ctx.row.id),
+  ),
 
-  create: studyProcedure("experiment.edit", "study", experimentDetails.extend({ studyId: id, description: experimentDetails.shape.description.default("") }))
-    .mutation(async ({ ctx, input }) => {
-      const [row] = await ctx.db.insert(experiments).values({ ...input, studyId: ctx.studyId, updatedBy: ctx.user.id }).returning();
-      return row!;
-    }),
+  create: studyProcedure(
+    "experiment.edit",
+    "study",
+    experimentDetails.extend({ studyId: id, description: experimentDetails.shape.description.default("") }),
+  ).mutation(async ({ ctx, input }) => {
+    const [row] = await ctx.db
+      .insert(experiments)
+      .values({ ...input, studyId: ctx.studyId, updatedBy: ctx.user.id })
+      .returning();
+    return row!;
+  }),
 
   /** The experiment as a file another lab can import. */
-  exportFile: studyProcedure("experiment.read", "experiment", z.object({ experimentId: id }))
-    .query(({ ctx }) => exportFile(ctx.db, ctx.row.id)),
+  exportFile: studyProcedure("experiment.read", "experiment", z.object({ experimentId: id })).query(({ ctx }) =>
+    exportFile(ctx.db, ctx.row.id),
+  ),
 
-  importFile: studyProcedure("experiment.edit", "study", z.object({ studyId: id, text: z.string().max(2_000_000, "the file must be smaller than 2 MB") }))
-    .mutation(({ ctx, input }) => importFile(ctx.db, ctx.studyId, input.text, ctx.user.id)),
+  importFile: studyProcedure(
+    "experiment.edit",
+    "study",
+    z.object({ studyId: id, text: z.string().max(2_000_000, "the file must be smaller than 2 MB") }),
+  ).mutation(({ ctx, input }) => importFile(ctx.db, ctx.studyId, input.text, ctx.user.id)),
 
   /** The whole design in one transaction; refused if someone saved since `baseRevision`. */
-  saveDesign: studyProcedure("experiment.edit", "experiment", designInput)
-    .mutation(({ ctx, input }) => saveDesign(ctx.db, input, ctx.user.id)),
+  saveDesign: studyProcedure("experiment.edit", "experiment", designInput).mutation(({ ctx, input }) =>
+    saveDesign(ctx.db, input, ctx.user.id),
+  ),
 });

@@ -35,36 +35,54 @@ async function memberRole(db: Pick<Database, "select">, studyId: string, userId:
 const LAST_OWNER = "A study needs at least one owner: make someone else owner first.";
 
 export const membersRouter = router({
-  list: studyProcedure("member.read", "study", z.object({ studyId: id }))
-    .query(({ ctx }) =>
-      ctx.db
-        .select({ userId: user.id, name: user.name, email: user.email, role: studyMembers.role, addedAt: studyMembers.addedAt })
-        .from(studyMembers)
-        .innerJoin(user, eq(user.id, studyMembers.userId))
-        .where(eq(studyMembers.studyId, ctx.studyId))
-        .orderBy(asc(user.name)),
-    ),
+  list: studyProcedure("member.read", "study", z.object({ studyId: id })).query(({ ctx }) =>
+    ctx.db
+      .select({
+        userId: user.id,
+        name: user.name,
+        email: user.email,
+        role: studyMembers.role,
+        addedAt: studyMembers.addedAt,
+      })
+      .from(studyMembers)
+      .innerJoin(user, eq(user.id, studyMembers.userId))
+      .where(eq(studyMembers.studyId, ctx.studyId))
+      .orderBy(asc(user.name)),
+  ),
 
-  add: studyProcedure("member.manage", "study", z.object({ studyId: id, email: z.email("must be an email address"), role }))
-    .mutation(async ({ ctx, input }) => {
-      const [person] = await ctx.db.select().from(user).where(eq(user.email, input.email.toLowerCase()));
-      if (!person) {
-        throw new TRPCError({ code: "NOT_FOUND", message: `No account uses ${input.email}. Ask an administrator to create it first.` });
-      }
-      return ctx.db.transaction(async (tx) => {
-        const added = await tx
-          .insert(studyMembers)
-          .values({ studyId: ctx.studyId, userId: person.id, role: input.role })
-          .onConflictDoNothing()
-          .returning();
-        if (added.length === 0) throw new TRPCError({ code: "CONFLICT", message: `${person.name} is already a member of this study.` });
-        await audit(tx, { actorId: ctx.user.id, studyId: ctx.studyId, action: "member.add", target: person.id, details: { role: input.role } });
-        return { userId: person.id, name: person.name, email: person.email, role: input.role };
+  add: studyProcedure(
+    "member.manage",
+    "study",
+    z.object({ studyId: id, email: z.email("must be an email address"), role }),
+  ).mutation(async ({ ctx, input }) => {
+    const [person] = await ctx.db.select().from(user).where(eq(user.email, input.email.toLowerCase()));
+    if (!person) {
+      throw new TRPCError({
+        code: "NOT_FOUND",
+        message: `No account uses ${input.email}. Ask an administrator to create it first.`,
       });
-    }),
+    }
+    return ctx.db.transaction(async (tx) => {
+      const added = await tx
+        .insert(studyMembers)
+        .values({ studyId: ctx.studyId, userId: person.id, role: input.role })
+        .onConflictDoNothing()
+        .returning();
+      if (added.length === 0)
+        throw new TRPCError({ code: "CONFLICT", message: `${person.name} is already a member of this study.` });
+      await audit(tx, {
+        actorId: ctx.user.id,
+        studyId: ctx.studyId,
+        action: "member.add",
+        target: person.id,
+        details: { role: input.role },
+      });
+      return { userId: person.id, name: person.name, email: person.email, role: input.role };
+    });
+  }),
 
-  changeRole: studyProcedure("member.manage", "study", z.object({ studyId: id, userId: id, role }))
-    .mutation(({ ctx, input }) =>
+  changeRole: studyProcedure("member.manage", "study", z.object({ studyId: id, userId: id, role })).mutation(
+    ({ ctx, input }) =>
       ctx.db.transaction(async (tx) => {
         await lockStudy(tx, ctx.studyId);
         const before = await memberRole(tx, ctx.studyId, input.userId);
@@ -75,22 +93,35 @@ export const membersRouter = router({
           .update(studyMembers)
           .set({ role: input.role })
           .where(and(eq(studyMembers.studyId, ctx.studyId), eq(studyMembers.userId, input.userId)));
-        await audit(tx, { actorId: ctx.user.id, studyId: ctx.studyId, action: "member.role", target: input.userId, details: { from: before, to: input.role } });
+        await audit(tx, {
+          actorId: ctx.user.id,
+          studyId: ctx.studyId,
+          action: "member.role",
+          target: input.userId,
+          details: { from: before, to: input.role },
+        });
         return { userId: input.userId, role: input.role };
       }),
-    ),
+  ),
 
-  remove: studyProcedure("member.manage", "study", z.object({ studyId: id, userId: id }))
-    .mutation(({ ctx, input }) =>
-      ctx.db.transaction(async (tx) => {
-        await lockStudy(tx, ctx.studyId);
-        const before = await memberRole(tx, ctx.studyId, input.userId);
-        if (before === "owner" && (await ownerCount(tx, ctx.studyId)) === 1) {
-          throw new TRPCError({ code: "BAD_REQUEST", message: LAST_OWNER });
-        }
-        await tx.delete(studyMembers).where(and(eq(studyMembers.studyId, ctx.studyId), eq(studyMembers.userId, input.userId)));
-        await audit(tx, { actorId: ctx.user.id, studyId: ctx.studyId, action: "member.remove", target: input.userId, details: { role: before } });
-        return { removed: input.userId };
-      }),
-    ),
+  remove: studyProcedure("member.manage", "study", z.object({ studyId: id, userId: id })).mutation(({ ctx, input }) =>
+    ctx.db.transaction(async (tx) => {
+      await lockStudy(tx, ctx.studyId);
+      const before = await memberRole(tx, ctx.studyId, input.userId);
+      if (before === "owner" && (await ownerCount(tx, ctx.studyId)) === 1) {
+        throw new TRPCError({ code: "BAD_REQUEST", message: LAST_OWNER });
+      }
+      await tx
+        .delete(studyMembers)
+        .where(and(eq(studyMembers.studyId, ctx.studyId), eq(studyMembers.userId, input.userId)));
+      await audit(tx, {
+        actorId: ctx.user.id,
+        studyId: ctx.studyId,
+        action: "member.remove",
+        target: input.userId,
+        details: { role: before },
+      });
+      return { removed: input.userId };
+    }),
+  ),
 });

@@ -41,12 +41,15 @@ export const pluginsRouter = router({
     .input(z.object({ robotId: z.string().max(200) }))
     .query(async ({ ctx, input }) => {
       const plugin = await findPlugin(ctx.db, input.robotId);
-      if (!plugin) throw new TRPCError({ code: "NOT_FOUND", message: `No robot plugin called "${input.robotId}" is installed.` });
+      if (!plugin)
+        throw new TRPCError({ code: "NOT_FOUND", message: `No robot plugin called "${input.robotId}" is installed.` });
       return plugin;
     }),
 
   repositories: router({
-    list: guarded("admin.plugins").query(({ ctx }) => ctx.db.select().from(pluginRepositories).orderBy(asc(pluginRepositories.name))),
+    list: guarded("admin.plugins").query(({ ctx }) =>
+      ctx.db.select().from(pluginRepositories).orderBy(asc(pluginRepositories.name)),
+    ),
 
     add: guarded("admin.plugins")
       .input(z.object({ url: repositoryUrl, trust: trust.default("community") }))
@@ -57,7 +60,12 @@ export const pluginsRouter = router({
           .onConflictDoNothing()
           .returning();
         if (!row) throw new TRPCError({ code: "CONFLICT", message: "That repository is already added." });
-        await audit(ctx.db, { actorId: ctx.user.id, action: "plugins.repository.add", target: row.id, details: { url: input.url, trust: input.trust } });
+        await audit(ctx.db, {
+          actorId: ctx.user.id,
+          action: "plugins.repository.add",
+          target: row.id,
+          details: { url: input.url, trust: input.trust },
+        });
         return row;
       }),
 
@@ -65,7 +73,10 @@ export const pluginsRouter = router({
       .input(z.object({ repositoryId: id }))
       .mutation(async ({ ctx, input }) => {
         // Installed versions stay: published experiments point at them.
-        await ctx.db.update(pluginRepositories).set({ enabled: false }).where(eq(pluginRepositories.id, input.repositoryId));
+        await ctx.db
+          .update(pluginRepositories)
+          .set({ enabled: false })
+          .where(eq(pluginRepositories.id, input.repositoryId));
         await audit(ctx.db, { actorId: ctx.user.id, action: "plugins.repository.remove", target: input.repositoryId });
         return { removed: input.repositoryId };
       }),

@@ -7,7 +7,16 @@ import { z } from "zod";
 import { blindingFor } from "@/core/studies/blinding";
 import { readSettings } from "@/core/studies/settings";
 import type { Database } from "@/data/client";
-import { conditions, experimentVersions, participants, sessions, studies, studyMembers, trials, user } from "@/data/schema";
+import {
+  conditions,
+  experimentVersions,
+  participants,
+  sessions,
+  studies,
+  studyMembers,
+  trials,
+  user,
+} from "@/data/schema";
 import { assertMayTakePart } from "../../studies/consent-gate";
 import { guarded, router, studyProcedure } from "../trpc";
 import { id } from "../validation";
@@ -30,55 +39,90 @@ function columns(hideConditions: boolean) {
 }
 
 async function assertWizardOf(db: Database, studyId: string, wizardId: string) {
-  const [m] = await db.select().from(studyMembers).where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
-  if (!m || m.role === "observer") throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: wizardId: the wizard must be an owner, researcher or wizard of this study" });
+  const [m] = await db
+    .select()
+    .from(studyMembers)
+    .where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
+  if (!m || m.role === "observer")
+    throw new TRPCError({
+      code: "BAD_REQUEST",
+      message: "Please correct: wizardId: the wizard must be an owner, researcher or wizard of this study",
+    });
 }
 
 export const sessionsRouter = router({
-  list: studyProcedure("participant.read", "study", z.object({ studyId: id }))
-    .query(({ ctx }) =>
-      ctx.db
-        .select(columns(ctx.blinding.conditionsHidden))
-        .from(sessions)
-        .innerJoin(participants, eq(participants.id, sessions.participantId))
-        .innerJoin(conditions, eq(conditions.id, sessions.conditionId))
-        .leftJoin(user, eq(user.id, sessions.wizardId))
-        .leftJoin(trials, eq(trials.id, sessions.trialId))
-        .where(eq(sessions.studyId, ctx.studyId))
-        .orderBy(asc(sessions.plannedAt)),
-    ),
+  list: studyProcedure("participant.read", "study", z.object({ studyId: id })).query(({ ctx }) =>
+    ctx.db
+      .select(columns(ctx.blinding.conditionsHidden))
+      .from(sessions)
+      .innerJoin(participants, eq(participants.id, sessions.participantId))
+      .innerJoin(conditions, eq(conditions.id, sessions.conditionId))
+      .leftJoin(user, eq(user.id, sessions.wizardId))
+      .leftJoin(trials, eq(trials.id, sessions.trialId))
+      .where(eq(sessions.studyId, ctx.studyId))
+      .orderBy(asc(sessions.plannedAt)),
+  ),
 
   /**
    * Plans a session in the participant's assigned condition; within-subject,
    * the next condition of their order that has no session yet.
    */
-  schedule: studyProcedure("participant.manage", "participant", z.object({ participantId: id, plannedAt, wizardId: id }))
-    .mutation(async ({ ctx, input }) => {
-      const p = ctx.row;
-      if (!p.conditionId) throw new TRPCError({ code: "PRECONDITION_FAILED", message: `${p.code} has no condition yet: assign them first.` });
-      await assertWizardOf(ctx.db, p.studyId, input.wizardId);
-      const planned = (await ctx.db.select({ c: sessions.conditionId }).from(sessions).where(eq(sessions.participantId, p.id))).map((r) => r.c);
-      const order = Array.isArray(p.conditionOrder) ? (p.conditionOrder as string[]) : [p.conditionId];
-      const conditionId = order.find((c) => !planned.includes(c));
-      if (!conditionId) throw new TRPCError({ code: "CONFLICT", message: `${p.code} already has a session for every condition they are assigned.` });
-      const [row] = await ctx.db
-        .insert(sessions)
-        .values({ studyId: p.studyId, participantId: p.id, conditionId, wizardId: input.wizardId, plannedAt: input.plannedAt, createdBy: ctx.user.id })
-        .returning({ id: sessions.id, plannedAt: sessions.plannedAt });
-      return row!;
-    }),
+  schedule: studyProcedure(
+    "participant.manage",
+    "participant",
+    z.object({ participantId: id, plannedAt, wizardId: id }),
+  ).mutation(async ({ ctx, input }) => {
+    const p = ctx.row;
+    if (!p.conditionId)
+      throw new TRPCError({
+        code: "PRECONDITION_FAILED",
+        message: `${p.code} has no condition yet: assign them first.`,
+      });
+    await assertWizardOf(ctx.db, p.studyId, input.wizardId);
+    const planned = (
+      await ctx.db.select({ c: sessions.conditionId }).from(sessions).where(eq(sessions.participantId, p.id))
+    ).map((r) => r.c);
+    const order = Array.isArray(p.conditionOrder) ? (p.conditionOrder as string[]) : [p.conditionId];
+    const conditionId = order.find((c) => !planned.includes(c));
+    if (!conditionId)
+      throw new TRPCError({
+        code: "CONFLICT",
+        message: `${p.code} already has a session for every condition they are assigned.`,
+      });
+    const [row] = await ctx.db
+      .insert(sessions)
+      .values({
+        studyId: p.studyId,
+        participantId: p.id,
+        conditionId,
+        wizardId: input.wizardId,
+        plannedAt: input.plannedAt,
+        createdBy: ctx.user.id,
+      })
+      .returning({ id: sessions.id, plannedAt: sessions.plannedAt });
+    return row!;
+  }),
 
-  remove: studyProcedure("participant.manage", "session", z.object({ sessionId: id }))
-    .mutation(async ({ ctx }) => {
-      if (ctx.row.trialId) throw new TRPCError({ code: "BAD_REQUEST", message: "This session has started: its trial is part of the study's data and stays." });
-      await ctx.db.delete(sessions).where(eq(sessions.id, ctx.row.id));
-      return { removed: ctx.row.id };
-    }),
+  remove: studyProcedure("participant.manage", "session", z.object({ sessionId: id })).mutation(async ({ ctx }) => {
+    if (ctx.row.trialId)
+      throw new TRPCError({
+        code: "BAD_REQUEST",
+        message: "This session has started: its trial is part of the study's data and stays.",
+      });
+    await ctx.db.delete(sessions).where(eq(sessions.id, ctx.row.id));
+    return { removed: ctx.row.id };
+  }),
 
   /** The sessions I run that are not finished, soonest first, across my studies. */
   mine: guarded("account.read").query(async ({ ctx }) => {
     const rows = await ctx.db
-      .select({ ...columns(false), studyTitle: studies.title, studyStatus: studies.status, settings: studies.settings, role: studyMembers.role })
+      .select({
+        ...columns(false),
+        studyTitle: studies.title,
+        studyStatus: studies.status,
+        settings: studies.settings,
+        role: studyMembers.role,
+      })
       .from(sessions)
       .innerJoin(studies, eq(studies.id, sessions.studyId))
       .innerJoin(studyMembers, and(eq(studyMembers.studyId, sessions.studyId), eq(studyMembers.userId, ctx.user.id)))
@@ -86,7 +130,12 @@ export const sessionsRouter = router({
       .innerJoin(conditions, eq(conditions.id, sessions.conditionId))
       .leftJoin(user, eq(user.id, sessions.wizardId))
       .leftJoin(trials, eq(trials.id, sessions.trialId))
-      .where(and(eq(sessions.wizardId, ctx.user.id), or(isNull(sessions.trialId), inArray(trials.status, ["scheduled", "in_progress", "paused"]))))
+      .where(
+        and(
+          eq(sessions.wizardId, ctx.user.id),
+          or(isNull(sessions.trialId), inArray(trials.status, ["scheduled", "in_progress", "paused"])),
+        ),
+      )
       .orderBy(asc(sessions.plannedAt));
     return rows.map(({ settings, role, studyStatus, ...row }) => {
       const hidden = blindingFor(role, readSettings(settings), studyStatus).conditionsHidden;
@@ -95,26 +144,37 @@ export const sessionsRouter = router({
   }),
 
   /** Starts the session's trial on its condition's latest published version, or reopens the one it started. */
-  start: studyProcedure("trial.run", "session", z.object({ sessionId: id }))
-    .mutation(async ({ ctx }) => {
-      const s = ctx.row;
-      if (s.wizardId !== ctx.user.id && ctx.studyRole === "wizard") {
-        throw new TRPCError({ code: "FORBIDDEN", message: "This session is planned for another wizard." });
-      }
-      if (s.trialId) return { trialId: s.trialId };
-      await assertMayTakePart(ctx.db, s.participantId, s.studyId);
-      const [condition] = await ctx.db.select().from(conditions).where(eq(conditions.id, s.conditionId));
-      const [version] = await ctx.db
-        .select()
-        .from(experimentVersions)
-        .where(eq(experimentVersions.experimentId, condition!.experimentId))
-        .orderBy(desc(experimentVersions.version))
-        .limit(1);
-      if (!version) throw new TRPCError({ code: "PRECONDITION_FAILED", message: "This session's experiment has no published version yet: ask a researcher to publish it." });
-      return ctx.db.transaction(async (tx) => {
+  start: studyProcedure("trial.run", "session", z.object({ sessionId: id })).mutation(async ({ ctx }) => {
+    const s = ctx.row;
+    if (s.wizardId !== ctx.user.id && ctx.studyRole === "wizard") {
+      throw new TRPCError({ code: "FORBIDDEN", message: "This session is planned for another wizard." });
+    }
+    if (s.trialId) return { trialId: s.trialId };
+    await assertMayTakePart(ctx.db, s.participantId, s.studyId);
+    const [condition] = await ctx.db.select().from(conditions).where(eq(conditions.id, s.conditionId));
+    const [version] = await ctx.db
+      .select()
+      .from(experimentVersions)
+      .where(eq(experimentVersions.experimentId, condition!.experimentId))
+      .orderBy(desc(experimentVersions.version))
+      .limit(1);
+    if (!version)
+      throw new TRPCError({
+        code: "PRECONDITION_FAILED",
+        message: "This session's experiment has no published version yet: ask a researcher to publish it.",
+      });
+    return ctx.db
+      .transaction(async (tx) => {
         const [trial] = await tx
           .insert(trials)
-          .values({ studyId: s.studyId, experimentId: condition!.experimentId, versionId: version.id, participantId: s.participantId, wizardId: ctx.user.id, createdBy: ctx.user.id })
+          .values({
+            studyId: s.studyId,
+            experimentId: condition!.experimentId,
+            versionId: version.id,
+            participantId: s.participantId,
+            wizardId: ctx.user.id,
+            createdBy: ctx.user.id,
+          })
           .returning({ id: trials.id });
         // Only one start wins: a second click reopens the first's trial.
         const [claimed] = await tx
@@ -124,10 +184,11 @@ export const sessionsRouter = router({
           .returning({ trialId: sessions.trialId });
         if (!claimed) tx.rollback();
         return { trialId: trial!.id };
-      }).catch(async (error: unknown) => {
+      })
+      .catch(async (error: unknown) => {
         const [again] = await ctx.db.select({ trialId: sessions.trialId }).from(sessions).where(eq(sessions.id, s.id));
         if (again?.trialId) return { trialId: again.trialId };
         throw error;
       });
-    }),
+  }),
 });

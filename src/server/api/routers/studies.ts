@@ -45,14 +45,17 @@ export const studiesRouter = router({
       .orderBy(desc(studies.updatedAt));
   }),
 
-  get: studyProcedure("study.read", "study", z.object({ studyId: id }))
-    .query(({ ctx }) => {
-      const { studyId: _, ...study } = ctx.row;
-      const settings = readSettings(study.settings);
-      // The seed lets anyone recompute who gets which condition next: only those who design the study see it.
-      const seeSeed = studyRoleMay(ctx.studyRole, "experiment.edit");
-      return { ...study, settings: seeSeed ? settings : { ...settings, assignment: { ...settings.assignment, seed: undefined } }, myRole: ctx.studyRole };
-    }),
+  get: studyProcedure("study.read", "study", z.object({ studyId: id })).query(({ ctx }) => {
+    const { studyId: _, ...study } = ctx.row;
+    const settings = readSettings(study.settings);
+    // The seed lets anyone recompute who gets which condition next: only those who design the study see it.
+    const seeSeed = studyRoleMay(ctx.studyRole, "experiment.edit");
+    return {
+      ...study,
+      settings: seeSeed ? settings : { ...settings, assignment: { ...settings.assignment, seed: undefined } },
+      myRole: ctx.studyRole,
+    };
+  }),
 
   create: guarded("study.create")
     .input(z.object({ title: text("Title", 200), description: z.string().max(5000).default("") }))
@@ -72,49 +75,56 @@ export const studiesRouter = router({
     "study.update",
     "study",
     z.object({
-        studyId: id,
-        title: text("Title", 200).optional(),
-        description: z.string().max(5000).optional(),
-        status: z.enum(STATUS).optional(),
+      studyId: id,
+      title: text("Title", 200).optional(),
+      description: z.string().max(5000).optional(),
+      status: z.enum(STATUS).optional(),
       settings: studySettingsChangeSchema.optional(),
     }),
-  )
-    .mutation(async ({ ctx, input }) => {
-      const { studyId: _, settings, ...rest } = input;
-      const studyId = ctx.row.id;
-      const current = ctx.row;
-      const before = readSettings(current.settings);
-      // The seed is the server's, made once per choice of strategy, so assignments can be audited and reproduced.
-      const merged = settings ? changedSettings(before, settings, () => randomBytes(12).toString("hex")) : null;
-      const changes = merged ? { ...rest, settings: merged } : rest;
-      return ctx.db.transaction(async (tx) => {
-        const [study] = await tx
-          .update(studies)
-          .set({ ...changes, updatedAt: new Date() })
-          .where(eq(studies.id, studyId))
-          .returning();
-        await audit(tx, { actorId: ctx.user.id, studyId, action: "study.update", target: studyId, details: changes });
-        for (const lifted of liftedBlinds(before, merged ?? before, current.status, study!.status)) {
-          await audit(tx, { actorId: ctx.user.id, studyId, action: `study.blind.lifted.${lifted}`, target: studyId });
-        }
-        return study!;
-      });
-    }),
+  ).mutation(async ({ ctx, input }) => {
+    const { studyId: _, settings, ...rest } = input;
+    const studyId = ctx.row.id;
+    const current = ctx.row;
+    const before = readSettings(current.settings);
+    // The seed is the server's, made once per choice of strategy, so assignments can be audited and reproduced.
+    const merged = settings ? changedSettings(before, settings, () => randomBytes(12).toString("hex")) : null;
+    const changes = merged ? { ...rest, settings: merged } : rest;
+    return ctx.db.transaction(async (tx) => {
+      const [study] = await tx
+        .update(studies)
+        .set({ ...changes, updatedAt: new Date() })
+        .where(eq(studies.id, studyId))
+        .returning();
+      await audit(tx, { actorId: ctx.user.id, studyId, action: "study.update", target: studyId, details: changes });
+      for (const lifted of liftedBlinds(before, merged ?? before, current.status, study!.status)) {
+        await audit(tx, { actorId: ctx.user.id, studyId, action: `study.blind.lifted.${lifted}`, target: studyId });
+      }
+      return study!;
+    });
+  }),
 
   /** Fidelity across the study's finished trials: the table, each step's timing, the consistency. */
-  figures: studyProcedure("data.read", "study", z.object({ studyId: id }))
-    .query(({ ctx }) => studyFigures(ctx.db, ctx.studyId)),
+  figures: studyProcedure("data.read", "study", z.object({ studyId: id })).query(({ ctx }) =>
+    studyFigures(ctx.db, ctx.studyId),
+  ),
 
   /** Everything of the study as one zip, for the lab's archive or a paper's data. */
-  exportArchive: studyProcedure("data.read", "study", z.object({ studyId: id }))
-    .query(({ ctx }) => studyArchive(ctx.db, ctx.studyId)),
+  exportArchive: studyProcedure("data.read", "study", z.object({ studyId: id })).query(({ ctx }) =>
+    studyArchive(ctx.db, ctx.studyId),
+  ),
 
-  delete: studyProcedure("study.delete", "study", z.object({ studyId: id, confirmTitle: z.string().max(200) }))
-    .mutation(async ({ ctx, input }) => {
-      if (ctx.row.title !== input.confirmTitle) {
-        throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: confirmTitle: type the study's exact title to delete it" });
-      }
-      await ctx.db.delete(studies).where(eq(studies.id, ctx.row.id));
-      return { deleted: ctx.row.id };
-    }),
+  delete: studyProcedure(
+    "study.delete",
+    "study",
+    z.object({ studyId: id, confirmTitle: z.string().max(200) }),
+  ).mutation(async ({ ctx, input }) => {
+    if (ctx.row.title !== input.confirmTitle) {
+      throw new TRPCError({
+        code: "BAD_REQUEST",
+        message: "Please correct: confirmTitle: type the study's exact title to delete it",
+      });
+    }
+    await ctx.db.delete(studies).where(eq(studies.id, ctx.row.id));
+    return { deleted: ctx.row.id };
+  }),
 });

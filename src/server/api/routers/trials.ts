@@ -5,7 +5,16 @@ import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
 import { blindTrial } from "@/core/studies/blinding";
 import type { Database } from "@/data/client";
-import { annotations, experimentVersions, experiments, participants, studyMembers, trialSamples, trials, user } from "@/data/schema";
+import {
+  annotations,
+  experimentVersions,
+  experiments,
+  participants,
+  studyMembers,
+  trialSamples,
+  trials,
+  user,
+} from "@/data/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "@/core/protocol/snapshot";
 import { eventsSince } from "@/data/event-store";
@@ -51,155 +60,222 @@ async function assertNotWithdrawn(db: Database, trialId: string) {
     .innerJoin(participants, eq(participants.id, trials.participantId))
     .where(eq(trials.id, trialId));
   if (row?.status === "withdrawn") {
-    throw new TRPCError({ code: "PRECONDITION_FAILED", message: `${row.code} withdrew from the study: their data is excluded from analysis and exports.` });
+    throw new TRPCError({
+      code: "PRECONDITION_FAILED",
+      message: `${row.code} withdrew from the study: their data is excluded from analysis and exports.`,
+    });
   }
 }
 
 export const trialsRouter = router({
   // wizardId: omitted → the creator runs it; null → unassigned, the first wizard to start it claims it.
-  create: studyProcedure("trial.create", "version", z.object({ versionId: id, participantId: id.nullable().default(null), wizardId: id.nullable().optional() }))
-    .mutation(async ({ ctx, input }) => {
-      const { studyId, row: version } = ctx;
-      if (input.participantId) await assertMayTakePart(ctx.db, input.participantId, studyId);
-      const wizardId = input.wizardId === undefined ? ctx.user.id : input.wizardId;
-      if (wizardId !== null) {
-        const [m] = await ctx.db.select().from(studyMembers).where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
-        if (!m || m.role === "observer") {
-          throw new TRPCError({ code: "BAD_REQUEST", message: "Please correct: wizardId: the wizard must be an owner, researcher or wizard of this study" });
-        }
+  create: studyProcedure(
+    "trial.create",
+    "version",
+    z.object({ versionId: id, participantId: id.nullable().default(null), wizardId: id.nullable().optional() }),
+  ).mutation(async ({ ctx, input }) => {
+    const { studyId, row: version } = ctx;
+    if (input.participantId) await assertMayTakePart(ctx.db, input.participantId, studyId);
+    const wizardId = input.wizardId === undefined ? ctx.user.id : input.wizardId;
+    if (wizardId !== null) {
+      const [m] = await ctx.db
+        .select()
+        .from(studyMembers)
+        .where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
+      if (!m || m.role === "observer") {
+        throw new TRPCError({
+          code: "BAD_REQUEST",
+          message: "Please correct: wizardId: the wizard must be an owner, researcher or wizard of this study",
+        });
       }
-      const [row] = await ctx.db
-        .insert(trials)
-        .values({ studyId, experimentId: version.experimentId, versionId: version.id, participantId: input.participantId, wizardId, createdBy: ctx.user.id })
-        .returning();
-      return ctx.blinding.conditionsHidden ? blindTrial(row!) : row!;
-    }),
+    }
+    const [row] = await ctx.db
+      .insert(trials)
+      .values({
+        studyId,
+        experimentId: version.experimentId,
+        versionId: version.id,
+        participantId: input.participantId,
+        wizardId,
+        createdBy: ctx.user.id,
+      })
+      .returning();
+    return ctx.blinding.conditionsHidden ? blindTrial(row!) : row!;
+  }),
 
   /** A rehearsal runs the current draft (no published version needed), marked as rehearsal everywhere. */
-  rehearse: studyProcedure("trial.create", "experiment", z.object({ experimentId: id }))
-    .mutation(async ({ ctx }) => {
-      const design = await loadDesign(ctx.db, ctx.row.id);
-      if (design.steps.length === 0) throw new TRPCError({ code: "BAD_REQUEST", message: "This experiment has no steps yet: add at least one before rehearsing." });
-      const [row] = await ctx.db
-        .insert(trials)
-        .values({ studyId: design.studyId, experimentId: design.id, isRehearsal: true, rehearsalSnapshot: snapshotOf(design), wizardId: ctx.user.id, createdBy: ctx.user.id })
-        .returning();
-      return row!;
-    }),
+  rehearse: studyProcedure("trial.create", "experiment", z.object({ experimentId: id })).mutation(async ({ ctx }) => {
+    const design = await loadDesign(ctx.db, ctx.row.id);
+    if (design.steps.length === 0)
+      throw new TRPCError({
+        code: "BAD_REQUEST",
+        message: "This experiment has no steps yet: add at least one before rehearsing.",
+      });
+    const [row] = await ctx.db
+      .insert(trials)
+      .values({
+        studyId: design.studyId,
+        experimentId: design.id,
+        isRehearsal: true,
+        rehearsalSnapshot: snapshotOf(design),
+        wizardId: ctx.user.id,
+        createdBy: ctx.user.id,
+      })
+      .returning();
+    return row!;
+  }),
 
-  list: studyProcedure("trial.read", "study", z.object({ studyId: id }))
-    .query(async ({ ctx }) => {
-      const rows = await ctx.db
-        .select({ ...columns, scores: questionnaireScores })
-        .from(trials)
-        .innerJoin(experiments, eq(experiments.id, trials.experimentId))
-        .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
-        .leftJoin(participants, eq(participants.id, trials.participantId))
-        .leftJoin(user, eq(user.id, trials.wizardId))
-        .where(eq(trials.studyId, ctx.studyId))
-        .orderBy(desc(trials.createdAt));
-      // Scores are results: only for those who may read the data, and not under a results blind.
-      const showScores = studyRoleMay(ctx.studyRole, "data.read") && !ctx.blinding.resultsHidden;
-      const shown = rows.map((r) => ({ ...r, scores: showScores ? (r.scores ?? []) : [] }));
-      return ctx.blinding.conditionsHidden ? shown.map(blindTrial) : shown;
-    }),
+  list: studyProcedure("trial.read", "study", z.object({ studyId: id })).query(async ({ ctx }) => {
+    const rows = await ctx.db
+      .select({ ...columns, scores: questionnaireScores })
+      .from(trials)
+      .innerJoin(experiments, eq(experiments.id, trials.experimentId))
+      .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
+      .leftJoin(participants, eq(participants.id, trials.participantId))
+      .leftJoin(user, eq(user.id, trials.wizardId))
+      .where(eq(trials.studyId, ctx.studyId))
+      .orderBy(desc(trials.createdAt));
+    // Scores are results: only for those who may read the data, and not under a results blind.
+    const showScores = studyRoleMay(ctx.studyRole, "data.read") && !ctx.blinding.resultsHidden;
+    const shown = rows.map((r) => ({ ...r, scores: showScores ? (r.scores ?? []) : [] }));
+    return ctx.blinding.conditionsHidden ? shown.map(blindTrial) : shown;
+  }),
 
   /** The trial's event log in order: what reports, exports and replays fold. */
-  events: studyProcedure("data.read", "trial", z.object({ trialId: id, afterSeq: z.number().int().min(0).default(0) }))
-    .query(async ({ ctx, input }) => {
-      await assertNotWithdrawn(ctx.db, ctx.row.id);
-      return eventsSince(ctx.db, ctx.row.id, input.afterSeq);
-    }),
+  events: studyProcedure(
+    "data.read",
+    "trial",
+    z.object({ trialId: id, afterSeq: z.number().int().min(0).default(0) }),
+  ).query(async ({ ctx, input }) => {
+    await assertNotWithdrawn(ctx.db, ctx.row.id);
+    return eventsSince(ctx.db, ctx.row.id, input.afterSeq);
+  }),
 
   /** Moments observers and wizards marked, on the trial's clock. */
-  annotations: studyProcedure("trial.read", "trial", z.object({ trialId: id }))
-    .query(({ ctx }) =>
-      ctx.db
-        .select({ id: annotations.id, relMs: annotations.relMs, label: annotations.label, note: annotations.note, authorId: annotations.authorId, authorName: user.name })
-        .from(annotations)
-        .leftJoin(user, eq(user.id, annotations.authorId))
-        .where(eq(annotations.trialId, ctx.row.id))
-        .orderBy(asc(annotations.relMs)),
-    ),
+  annotations: studyProcedure("trial.read", "trial", z.object({ trialId: id })).query(({ ctx }) =>
+    ctx.db
+      .select({
+        id: annotations.id,
+        relMs: annotations.relMs,
+        label: annotations.label,
+        note: annotations.note,
+        authorId: annotations.authorId,
+        authorName: user.name,
+      })
+      .from(annotations)
+      .leftJoin(user, eq(user.id, annotations.authorId))
+      .where(eq(annotations.trialId, ctx.row.id))
+      .orderBy(asc(annotations.relMs)),
+  ),
 
   /** A moment marked afterwards, while watching the recording: at any time of the trial. */
-  annotate: studyProcedure("annotation.create", "trial", z.object({ trialId: id, relMs: z.number().finite().min(0).max(86_400_000), label: text("Label", 200), note: z.string().max(5000).default("") }))
-    .mutation(async ({ ctx, input }) => {
-      const [row] = await ctx.db.insert(annotations).values({ ...input, trialId: ctx.row.id, authorId: ctx.user.id }).returning({ id: annotations.id });
-      return row!;
+  annotate: studyProcedure(
+    "annotation.create",
+    "trial",
+    z.object({
+      trialId: id,
+      relMs: z.number().finite().min(0).max(86_400_000),
+      label: text("Label", 200),
+      note: z.string().max(5000).default(""),
     }),
+  ).mutation(async ({ ctx, input }) => {
+    const [row] = await ctx.db
+      .insert(annotations)
+      .values({ ...input, trialId: ctx.row.id, authorId: ctx.user.id })
+      .returning({ id: annotations.id });
+    return row!;
+  }),
 
   /** Its author may edit a marked moment; so may the study's owner and researchers. */
-  editAnnotation: studyProcedure("annotation.create", "annotation", z.object({ annotationId: id, label: text("Label", 200), note: z.string().max(5000) }))
-    .mutation(async ({ ctx, input }) => {
-      if (ctx.row.authorId !== ctx.user.id && !studyRoleMay(ctx.studyRole, "experiment.edit")) {
-        throw new TRPCError({ code: "FORBIDDEN", message: "Only the person who marked this moment, or the study's owner and researchers, may change it." });
-      }
-      await ctx.db.update(annotations).set({ label: input.label, note: input.note, updatedAt: new Date() }).where(eq(annotations.id, ctx.row.id));
-      return { edited: ctx.row.id };
-    }),
+  editAnnotation: studyProcedure(
+    "annotation.create",
+    "annotation",
+    z.object({ annotationId: id, label: text("Label", 200), note: z.string().max(5000) }),
+  ).mutation(async ({ ctx, input }) => {
+    if (ctx.row.authorId !== ctx.user.id && !studyRoleMay(ctx.studyRole, "experiment.edit")) {
+      throw new TRPCError({
+        code: "FORBIDDEN",
+        message: "Only the person who marked this moment, or the study's owner and researchers, may change it.",
+      });
+    }
+    await ctx.db
+      .update(annotations)
+      .set({ label: input.label, note: input.note, updatedAt: new Date() })
+      .where(eq(annotations.id, ctx.row.id));
+    return { edited: ctx.row.id };
+  }),
 
   /** The trial as a file: its events as tidy CSV, or the full record (protocol embedded) as JSON. */
-  export: studyProcedure("data.read", "trial", z.object({ trialId: id, format: z.enum(["csv", "json", "eaf"], { error: "must be csv, json or eaf" }) }))
-    .query(async ({ ctx, input }) => {
-      await assertNotWithdrawn(ctx.db, ctx.row.id);
-      return trialFile(ctx.db, ctx.row.id, input.format);
-    }),
+  export: studyProcedure(
+    "data.read",
+    "trial",
+    z.object({ trialId: id, format: z.enum(["csv", "json", "eaf"], { error: "must be csv, json or eaf" }) }),
+  ).query(async ({ ctx, input }) => {
+    await assertNotWithdrawn(ctx.db, ctx.row.id);
+    return trialFile(ctx.db, ctx.row.id, input.format);
+  }),
 
   /** Robot state logged during the trial, in time order. */
   samples: studyProcedure(
     "data.read",
     "trial",
     z.object({
-        trialId: id,
-        topic: z.string().max(200).optional(),
-        limit: z.number().int().min(1).max(500_000).default(200_000),
-        // For a chart: at most this many samples, the first of each equal slice of time.
-        maxPoints: z.number().int().min(10).max(20_000).optional(),
+      trialId: id,
+      topic: z.string().max(200).optional(),
+      limit: z.number().int().min(1).max(500_000).default(200_000),
+      // For a chart: at most this many samples, the first of each equal slice of time.
+      maxPoints: z.number().int().min(10).max(20_000).optional(),
     }),
-  )
-    .query(async ({ ctx, input }) => {
-      await assertNotWithdrawn(ctx.db, ctx.row.id);
-      const where = and(eq(trialSamples.trialId, ctx.row.id), input.topic ? eq(trialSamples.topic, input.topic) : undefined);
-      if (input.maxPoints) {
-        // Thinned in the database: an hour at 50 Hz is 180,000 rows, a chart needs a few thousand.
-        const [{ last }] = (await ctx.db.select({ last: sql<number | null>`max(${trialSamples.relMs})` }).from(trialSamples).where(where)) as [{ last: number | null }];
-        // A number we computed, written into the SQL so DISTINCT ON and ORDER BY read the same expression.
-        const perMs = sql.raw(String(input.maxPoints / Math.max(1, Number(last ?? 0) + 1)));
-        const slice = sql<number>`floor(${trialSamples.relMs} * ${perMs})`;
-        const rows = await ctx.db
-          .selectDistinctOn([slice], { topic: trialSamples.topic, relMs: trialSamples.relMs, data: trialSamples.data })
-          .from(trialSamples)
-          .where(where)
-          .orderBy(slice, asc(trialSamples.relMs));
-        return rows;
-      }
-      return ctx.db
-        .select({ topic: trialSamples.topic, relMs: trialSamples.relMs, data: trialSamples.data })
+  ).query(async ({ ctx, input }) => {
+    await assertNotWithdrawn(ctx.db, ctx.row.id);
+    const where = and(
+      eq(trialSamples.trialId, ctx.row.id),
+      input.topic ? eq(trialSamples.topic, input.topic) : undefined,
+    );
+    if (input.maxPoints) {
+      // Thinned in the database: an hour at 50 Hz is 180,000 rows, a chart needs a few thousand.
+      const [{ last }] = (await ctx.db
+        .select({ last: sql<number | null>`max(${trialSamples.relMs})` })
+        .from(trialSamples)
+        .where(where)) as [{ last: number | null }];
+      // A number we computed, written into the SQL so DISTINCT ON and ORDER BY read the same expression.
+      const perMs = sql.raw(String(input.maxPoints / Math.max(1, Number(last ?? 0) + 1)));
+      const slice = sql<number>`floor(${trialSamples.relMs} * ${perMs})`;
+      const rows = await ctx.db
+        .selectDistinctOn([slice], { topic: trialSamples.topic, relMs: trialSamples.relMs, data: trialSamples.data })
         .from(trialSamples)
         .where(where)
-        .orderBy(asc(trialSamples.relMs))
-        .limit(input.limit);
-    }),
+        .orderBy(slice, asc(trialSamples.relMs));
+      return rows;
+    }
+    return ctx.db
+      .select({ topic: trialSamples.topic, relMs: trialSamples.relMs, data: trialSamples.data })
+      .from(trialSamples)
+      .where(where)
+      .orderBy(asc(trialSamples.relMs))
+      .limit(input.limit);
+  }),
 
   /** A short-lived, single-use pass to the trial runtime's socket: who and which trial, nothing more (the runtime looks up my role itself). */
-  socketToken: studyProcedure("trial.read", "trial", z.object({ trialId: id }))
-    .mutation(({ ctx }) => ({
-      url: ctx.runtimeUrl,
-      token: signSocketToken({ userId: ctx.user.id, trialId: ctx.row.id }, ctx.secret),
-    })),
+  socketToken: studyProcedure("trial.read", "trial", z.object({ trialId: id })).mutation(({ ctx }) => ({
+    url: ctx.runtimeUrl,
+    token: signSocketToken({ userId: ctx.user.id, trialId: ctx.row.id }, ctx.secret),
+  })),
 
-  get: studyProcedure("trial.read", "trial", z.object({ trialId: id }))
-    .query(async ({ ctx }) => {
-      const [row] = await ctx.db
-        .select({ ...columns, studyId: trials.studyId, protocol: sql<ProtocolSnapshot>`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})` })
-        .from(trials)
-        .innerJoin(experiments, eq(experiments.id, trials.experimentId))
-        .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
-        .leftJoin(participants, eq(participants.id, trials.participantId))
-        .leftJoin(user, eq(user.id, trials.wizardId))
-        .where(eq(trials.id, ctx.row.id));
-      const trial = { ...row!, myRole: ctx.studyRole };
-      return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
-    }),
+  get: studyProcedure("trial.read", "trial", z.object({ trialId: id })).query(async ({ ctx }) => {
+    const [row] = await ctx.db
+      .select({
+        ...columns,
+        studyId: trials.studyId,
+        protocol: sql<ProtocolSnapshot>`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})`,
+      })
+      .from(trials)
+      .innerJoin(experiments, eq(experiments.id, trials.experimentId))
+      .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
+      .leftJoin(participants, eq(participants.id, trials.participantId))
+      .leftJoin(user, eq(user.id, trials.wizardId))
+      .where(eq(trials.id, ctx.row.id));
+    const trial = { ...row!, myRole: ctx.studyRole };
+    return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
+  }),
 });

@@ -8,15 +8,29 @@ import { withinLimit } from "@/server/http/body-limit";
 // Someone not signed in can only use the public questionnaire form, so their
 // bodies (and the form's, for anyone) are held to the form's small limit; a
 // signed-in researcher may send up to an experiment file import.
-const onlyForm = (req: Request) => new URL(req.url).pathname.replace(/^\/api\/trpc\//, "").split(",").every((path) => path.startsWith("form."));
+const onlyForm = (req: Request) =>
+  new URL(req.url).pathname
+    .replace(/^\/api\/trpc\//, "")
+    .split(",")
+    .every((path) => path.startsWith("form."));
 
 async function handler(req: Request) {
   try {
     const context = await contextFromHeaders(req.headers);
     const publicOnly = !context.user || onlyForm(req);
-    const limited = await withinLimit(req, publicOnly ? LIMITS.publicApi : LIMITS.api, publicOnly ? "A request to the public form" : "A request to the API");
+    const limited = await withinLimit(
+      req,
+      publicOnly ? LIMITS.publicApi : LIMITS.api,
+      publicOnly ? "A request to the public form" : "A request to the API",
+    );
     if (limited instanceof Response) return limited;
-    return await fetchRequestHandler({ endpoint: "/api/trpc", req: limited, router: appRouter, createContext: () => context, maxBatchSize: LIMITS.batchCalls });
+    return await fetchRequestHandler({
+      endpoint: "/api/trpc",
+      req: limited,
+      router: appRouter,
+      createContext: () => context,
+      maxBatchSize: LIMITS.batchCalls,
+    });
   } catch (error) {
     return unexpectedResponse(error, req);
   }

@@ -9,11 +9,19 @@ export async function GET(req: Request, { params }: { params: Promise<{ recordin
   const { recordingId } = await params;
   return apiRoute(req, async (api, context) => {
     const { storageKey, mimeType, sizeBytes } = await api.recordings.media({ recordingId });
-    const headers: Record<string, string> = { "content-type": mimeType, "accept-ranges": "bytes", "cache-control": "private, max-age=3600" };
-    if (new URL(req.url).searchParams.has("download")) headers["content-disposition"] = `attachment; filename="${recordingFileName(recordingId, mimeType)}"`;
+    const headers: Record<string, string> = {
+      "content-type": mimeType,
+      "accept-ranges": "bytes",
+      "cache-control": "private, max-age=3600",
+    };
+    if (new URL(req.url).searchParams.has("download"))
+      headers["content-disposition"] = `attachment; filename="${recordingFileName(recordingId, mimeType)}"`;
     const asked = byteRange(req.headers.get("range"), sizeBytes);
     if (asked.kind === "unsatisfiable") {
-      return new Response("That part of the recording does not exist.", { status: 416, headers: { "content-range": `bytes */${sizeBytes}` } });
+      return new Response("That part of the recording does not exist.", {
+        status: 416,
+        headers: { "content-range": `bytes */${sizeBytes}` },
+      });
     }
     const range = asked.kind === "part" ? asked.range : undefined;
     const body = await context.media.storage.stream(storageKey, range);
@@ -21,7 +29,11 @@ export async function GET(req: Request, { params }: { params: Promise<{ recordin
     if (!range) return new Response(body, { headers: { ...headers, "content-length": String(sizeBytes) } });
     return new Response(body, {
       status: 206,
-      headers: { ...headers, "content-range": `bytes ${range.start}-${range.end}/${sizeBytes}`, "content-length": String(range.end - range.start + 1) },
+      headers: {
+        ...headers,
+        "content-range": `bytes ${range.start}-${range.end}/${sizeBytes}`,
+        "content-length": String(range.end - range.start + 1),
+      },
     });
   });
 }

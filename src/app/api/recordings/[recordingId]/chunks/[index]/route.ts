@@ -12,9 +12,13 @@ export async function PUT(req: Request, { params }: { params: Promise<{ recordin
   return apiRoute(req, async (api, context) => {
     const target = await api.recordings.chunkTarget({ recordingId });
     const n = Number(index);
-    if (!/^\d{1,6}$/.test(index)) return refuse(400, `The part number "${index.slice(0, 20)}" is not a whole number from 0 to 999999.`);
+    if (!/^\d{1,6}$/.test(index))
+      return refuse(400, `The part number "${index.slice(0, 20)}" is not a whole number from 0 to 999999.`);
     if (baseType(req.headers.get("content-type")) !== baseType(target.mimeType)) {
-      return refuse(415, `This recording is ${baseType(target.mimeType)}; a part sent as "${baseType(req.headers.get("content-type")) || "no type"}" is refused.`);
+      return refuse(
+        415,
+        `This recording is ${baseType(target.mimeType)}; a part sent as "${baseType(req.headers.get("content-type")) || "no type"}" is refused.`,
+      );
     }
     const body = await readBody(req, CHUNK_LIMIT_BYTES, "A part of a recording");
     if (body instanceof Response) return body;
