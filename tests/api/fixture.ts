@@ -57,15 +57,13 @@ export async function buildFixture(db: Database) {
   /** A study whose members are the four study-role callers. */
   async function newStudy(title = "Fixture study") {
     const study = await api("owner").studies.create({ title });
-    await db
-      .insert(studyMembers)
-      .values(
-        (["researcher", "wizard", "observer"] as const).map((role) => ({
-          studyId: study.id,
-          userId: people[role].id,
-          role,
-        })),
-      );
+    await db.insert(studyMembers).values(
+      (["researcher", "wizard", "observer"] as const).map((role) => ({
+        studyId: study.id,
+        userId: people[role].id,
+        role,
+      })),
+    );
     return study;
   }
   /** The error a browser would receive for a mutation: the formatted shape, as JSON. */

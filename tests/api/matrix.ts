@@ -19,13 +19,11 @@ export async function baseData(f: Fixture) {
   const experiment = await f
     .api("owner")
     .experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await f
-    .api("owner")
-    .experiments.saveDesign({
-      experimentId: experiment.id,
-      baseRevision: 0,
-      steps: [{ name: "S1", actions: [{ type: "say", parameters: { text: "hi" } }] }],
-    });
+  await f.api("owner").experiments.saveDesign({
+    experimentId: experiment.id,
+    baseRevision: 0,
+    steps: [{ name: "S1", actions: [{ type: "say", parameters: { text: "hi" } }] }],
+  });
   const version = await f.api("owner").versions.publish({ experimentId: experiment.id });
   const participant = await f
     .api("owner")
@@ -54,13 +52,11 @@ const freshSession = async (f: Fixture, b: Base) => {
 /** Each publish gets an experiment of its own, so the base experiment keeps the one version the other rows use. */
 const publishable = async (f: Fixture, b: Base) => {
   const e = await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotPluginId: "nao6-ros2" });
-  await f
-    .api("owner")
-    .experiments.saveDesign({
-      experimentId: e.id,
-      baseRevision: 0,
-      steps: [{ name: "S", actions: [{ type: "wave" }] }],
-    });
+  await f.api("owner").experiments.saveDesign({
+    experimentId: e.id,
+    baseRevision: 0,
+    steps: [{ name: "S", actions: [{ type: "wave" }] }],
+  });
   return e;
 };
 /** A published SUS in the base study, and a fresh one-time link to it for the base participant. */
@@ -139,13 +135,11 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "participants.reinstate": [
     OWNER,
     async (f, b) => {
-      const p = await f
-        .api("owner")
-        .participants.create({
-          studyId: b.study.id,
-          code: `W-${crypto.randomUUID().slice(0, 6)}`,
-          consentStatus: "withdrawn",
-        });
+      const p = await f.api("owner").participants.create({
+        studyId: b.study.id,
+        code: `W-${crypto.randomUUID().slice(0, 6)}`,
+        consentStatus: "withdrawn",
+      });
       return { participantId: p.id, reason: "recorded by mistake" };
     },
   ],

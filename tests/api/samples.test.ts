@@ -19,16 +19,14 @@ it("thins samples to at most one per slice of time, first of each, in order; the
     steps: [{ name: "S", actions: [{ type: "wave" }] }],
   });
   const trial = await owner.trials.create({ versionId: (await owner.versions.publish({ experimentId: e.id })).id });
-  await db
-    .insert(trialSamples)
-    .values(
-      Array.from({ length: 1000 }, (_, i) => ({
-        trialId: trial.id,
-        topic: "/joint_states",
-        relMs: i * 20,
-        data: { position: [i] },
-      })),
-    );
+  await db.insert(trialSamples).values(
+    Array.from({ length: 1000 }, (_, i) => ({
+      trialId: trial.id,
+      topic: "/joint_states",
+      relMs: i * 20,
+      data: { position: [i] },
+    })),
+  );
   const thinned = await owner.trials.samples({ trialId: trial.id, topic: "/joint_states", maxPoints: 10 });
   expect(thinned.length).toBeLessThanOrEqual(11);
   expect(thinned.length).toBeGreaterThanOrEqual(10);

@@ -61,11 +61,9 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
     await researcher.getByText(/Seed for the audit/).waitFor();
     for (const [i, name] of CONDITIONS.entries()) {
       await researcher.getByLabel("Condition name").fill(name);
-      await researcher
-        .getByLabel("Runs experiment")
-        .selectOption({
-          label: i === 0 ? "Interactive Storyteller (nao6-ros2)" : "Storyteller, voice only (nao6-ros2)",
-        });
+      await researcher.getByLabel("Runs experiment").selectOption({
+        label: i === 0 ? "Interactive Storyteller (nao6-ros2)" : "Storyteller, voice only (nao6-ros2)",
+      });
       await researcher.getByRole("button", { name: "Add condition" }).click();
       await researcher.getByRole("cell", { name, exact: true }).waitFor();
     }

@@ -46,15 +46,13 @@ describe.sequential("several runtime processes", () => {
         })
       ).id;
     const [study] = await db.insert(studies).values({ title: "S" }).returning();
-    await db
-      .insert(studyMembers)
-      .values(
-        ["wizard", "observer"].map((role) => ({
-          studyId: study!.id,
-          userId: people[role]!,
-          role: role as "wizard" | "observer",
-        })),
-      );
+    await db.insert(studyMembers).values(
+      ["wizard", "observer"].map((role) => ({
+        studyId: study!.id,
+        userId: people[role]!,
+        role: role as "wizard" | "observer",
+      })),
+    );
     const [experiment] = await db
       .insert(experiments)
       .values({ studyId: study!.id, name: "E", robotPluginId: "no-robot" })

@@ -75,17 +75,15 @@ export async function syncRepository(
       // What the files claim (the lower of plugin and repository.json), capped by what the administrator chose.
       const trustLevel = effectiveTrust(repository.trust, trust);
       if (!same)
-        await tx
-          .insert(installedPlugins)
-          .values({
-            repositoryId,
-            robotId: plugin.robotId,
-            version: plugin.version,
-            name: plugin.name,
-            trustLevel,
-            definition: plugin,
-            hash,
-          });
+        await tx.insert(installedPlugins).values({
+          repositoryId,
+          robotId: plugin.robotId,
+          version: plugin.version,
+          name: plugin.name,
+          trustLevel,
+          definition: plugin,
+          hash,
+        });
     }
     // The repository's trust stays what the administrator chose: repository.json cannot raise it.
     await tx

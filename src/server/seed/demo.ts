@@ -55,44 +55,38 @@ export async function seedDemo(db: Database, password?: string): Promise<DemoAcc
         createdBy: owner,
       })
       .returning();
-    await tx
-      .insert(studyMembers)
-      .values(
-        PEOPLE.filter((p) => p.studyRole).map((p) => ({
-          studyId: study!.id,
-          userId: ids.get(p.email)!,
-          role: p.studyRole!,
-        })),
-      );
+    await tx.insert(studyMembers).values(
+      PEOPLE.filter((p) => p.studyRole).map((p) => ({
+        studyId: study!.id,
+        userId: ids.get(p.email)!,
+        role: p.studyRole!,
+      })),
+    );
     const [experiment] = await tx
       .insert(experiments)
       .values({ ...STORYTELLER, studyId: study!.id, updatedBy: owner })
       .returning();
     const design = storytellerDraft(() => crypto.randomUUID());
-    await tx
-      .insert(steps)
-      .values(
-        design.steps.map((s, position) => ({
-          id: s.id,
-          experimentId: experiment!.id,
-          position,
-          name: s.name,
-          description: s.description,
-        })),
-      );
+    await tx.insert(steps).values(
+      design.steps.map((s, position) => ({
+        id: s.id,
+        experimentId: experiment!.id,
+        position,
+        name: s.name,
+        description: s.description,
+      })),
+    );
     await tx
       .insert(actions)
       .values(design.steps.flatMap((s) => s.actions.map((a, position) => ({ ...a, stepId: s.id, position }))));
-    await tx
-      .insert(participants)
-      .values(
-        ["P001", "P002", "P003"].map((code) => ({
-          studyId: study!.id,
-          code,
-          consentStatus: "given" as const,
-          consentDate: new Date(),
-        })),
-      );
+    await tx.insert(participants).values(
+      ["P001", "P002", "P003"].map((code) => ({
+        studyId: study!.id,
+        code,
+        consentStatus: "given" as const,
+        consentDate: new Date(),
+      })),
+    );
   });
   return accounts;
 }

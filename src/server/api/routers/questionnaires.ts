@@ -162,17 +162,15 @@ export const questionnairesRouter = router({
       });
     const token = newToken();
     const expiresAt = new Date(Date.now() + input.expiresInMinutes * 60_000);
-    await ctx.db
-      .insert(questionnaireLinks)
-      .values({
-        tokenHash: hashToken(token),
-        studyId: q.studyId,
-        versionId: version.id,
-        participantId: p!.id,
-        trialId: input.trialId,
-        expiresAt,
-        createdBy: ctx.user.id,
-      });
+    await ctx.db.insert(questionnaireLinks).values({
+      tokenHash: hashToken(token),
+      studyId: q.studyId,
+      versionId: version.id,
+      participantId: p!.id,
+      trialId: input.trialId,
+      expiresAt,
+      createdBy: ctx.user.id,
+    });
     return { path: `/q/${token}`, token, expiresAt, version: version.version };
   }),
 

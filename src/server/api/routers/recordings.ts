@@ -27,15 +27,13 @@ export const recordingsRouter = router({
         message: "This trial has ended: there is nothing left to record.",
       });
     const recordingId = crypto.randomUUID();
-    await ctx.db
-      .insert(mediaRecordings)
-      .values({
-        id: recordingId,
-        trialId: ctx.row.id,
-        kind: input.kind,
-        mimeType: input.mimeType,
-        storageKey: `recordings/${recordingId}`,
-      });
+    await ctx.db.insert(mediaRecordings).values({
+      id: recordingId,
+      trialId: ctx.row.id,
+      kind: input.kind,
+      mimeType: input.mimeType,
+      storageKey: `recordings/${recordingId}`,
+    });
     return { recordingId, chunkLimitBytes: CHUNK_LIMIT_BYTES };
   }),
 
