@@ -40,6 +40,18 @@ function ensurePackages() {
 }
 
 ensurePackages();
+log("Checking format and lint (Biome)…");
+const biome = spawnSync(
+  "node",
+  [join(root, "node_modules", "@biomejs", "biome", "bin", "biome"), "ci", "--colors=off", "."],
+  { cwd: root, stdio: "inherit" },
+);
+if (biome.status !== 0) {
+  console.error(
+    "[test] Biome found the problems above. `npm run format` fixes the formatting; lint findings are mended by hand.",
+  );
+  process.exit(biome.status ?? 1);
+}
 log("Type-checking…");
 const typecheck = spawnSync("node", [join(root, "node_modules", "typescript", "bin", "tsc"), "--noEmit", "-p", root], {
   cwd: root,
