@@ -1,25 +1,14 @@
 import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
-import { freshDatabase } from "../../tests/support/db";
-import { experiments, studies, trials } from "./schema";
+import { bareTrial, freshDatabase } from "../../tests/support/db";
+import { trials } from "./schema";
 import { appendEvents, eventsSince, NOTIFY_CHANNEL, type TrialCursor } from "./event-store";
 
 describe("the trial event store", async () => {
   const { db, sql, close } = await freshDatabase();
   afterAll(close);
 
-  async function newTrial() {
-    const [study] = await db.insert(studies).values({ title: "S" }).returning();
-    const [experiment] = await db
-      .insert(experiments)
-      .values({ studyId: study!.id, name: "E", robotPluginId: "sim" })
-      .returning();
-    const [trial] = await db
-      .insert(trials)
-      .values({ studyId: study!.id, experimentId: experiment!.id, isRehearsal: true })
-      .returning();
-    return trial!.id;
-  }
+  const newTrial = () => bareTrial(db);
 
   /** What the trial's owner keeps in memory, read back from the database for the test. */
   async function cursor(trialId: string): Promise<TrialCursor> {

@@ -1,6 +1,5 @@
 import { afterAll, describe, expect, it } from "vitest";
-import { freshDatabase } from "../../tests/support/db";
-import { experiments, studies, trials } from "@/data/schema";
+import { bareTrial, freshDatabase } from "../../tests/support/db";
 import { eventsSince } from "@/data/event-store";
 import type { TrialProtocol } from "@/core/trial";
 import type { RobotLink } from "./robot";
@@ -38,18 +37,7 @@ describe("a live trial host", async () => {
   const { db, close } = await freshDatabase();
   afterAll(close);
 
-  async function newTrialId() {
-    const [study] = await db.insert(studies).values({ title: "S" }).returning();
-    const [experiment] = await db
-      .insert(experiments)
-      .values({ studyId: study!.id, name: "E", robotPluginId: "sim" })
-      .returning();
-    const [trial] = await db
-      .insert(trials)
-      .values({ studyId: study!.id, experimentId: experiment!.id, isRehearsal: true })
-      .returning();
-    return trial!.id;
-  }
+  const newTrialId = () => bareTrial(db);
 
   const settle = (host: TrialHost, predicate: () => boolean) =>
     new Promise<void>((resolve) => {

@@ -1,6 +1,7 @@
 import { inject } from "vitest";
 import postgres from "postgres";
-import { createDatabase } from "../../src/data/client";
+import { createDatabase, type Database } from "../../src/data/client";
+import { experiments, studies, trials } from "../../src/data/schema";
 import { withDatabase } from "../../src/data/url";
 
 const TEMPLATE_DB = "hristudio_template";
@@ -25,4 +26,18 @@ export async function freshDatabaseUrl(template: string | null = TEMPLATE_DB): P
 export async function freshDatabase() {
   const url = await freshDatabaseUrl();
   return { url, ...createDatabase(url, { max: 4 }) };
+}
+
+/** A rehearsal trial in a study and experiment of its own, straight in the database: for the event store's tests. */
+export async function bareTrial(db: Database): Promise<string> {
+  const [study] = await db.insert(studies).values({ title: "S" }).returning();
+  const [experiment] = await db
+    .insert(experiments)
+    .values({ studyId: study!.id, name: "E", robotPluginId: "sim" })
+    .returning();
+  const [trial] = await db
+    .insert(trials)
+    .values({ studyId: study!.id, experimentId: experiment!.id, isRehearsal: true })
+    .returning();
+  return trial!.id;
 }
