@@ -5,22 +5,15 @@
 // or researcher could type.
 import { strFromU8, unzipSync } from "fflate";
 import { afterAll, describe, expect, it } from "vitest";
-import { appRouter } from "../../src/server/api/root";
 import { appendEvents } from "../../src/data/event-store";
 import { parseCsv } from "../support/csv";
 import { freshDatabase } from "../support/db";
-import { buildFixture, TEST_SECRET, testMedia } from "./fixture";
+import { buildFixture } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
 const owner = f.api("owner");
-const participant = appRouter.createCaller({
-  db,
-  user: null,
-  secret: TEST_SECRET,
-  runtimeUrl: "ws://127.0.0.1:1",
-  media: testMedia(),
-}).form;
+const participant = f.api("anonymous").form;
 afterAll(close);
 
 const HYPERLINK = '=HYPERLINK("http://x","y")';

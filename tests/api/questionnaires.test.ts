@@ -4,21 +4,14 @@
 import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { questionnaireLinks } from "../../src/data/schema";
-import { appRouter } from "../../src/server/api/root";
 import { freshDatabase } from "../support/db";
-import { buildFixture, TEST_SECRET, testMedia } from "./fixture";
+import { buildFixture } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
 const owner = f.api("owner");
 // The participant: no account at all.
-const participant = appRouter.createCaller({
-  db,
-  user: null,
-  secret: TEST_SECRET,
-  runtimeUrl: "ws://127.0.0.1:1",
-  media: testMedia(),
-}).form;
+const participant = f.api("anonymous").form;
 afterAll(close);
 
 const SUS = Object.fromEntries([4, 2, 3, 4, 3, 1, 3, 3, 3, 2].map((v, i) => [`sus${i + 1}`, v]));

@@ -2,20 +2,13 @@
 // withdrawal undone by an old consent link, the allocation seed in a blinded
 // wizard's hands, a NUL character or a database error answered with SQL.
 import { afterAll, describe, expect, it, vi } from "vitest";
-import { appRouter } from "../../src/server/api/root";
 import { freshDatabase } from "../support/db";
-import { buildFixture, TEST_SECRET, testMedia } from "./fixture";
+import { buildFixture } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
 const owner = f.api("owner");
-const participantForm = appRouter.createCaller({
-  db,
-  user: null,
-  secret: TEST_SECRET,
-  runtimeUrl: "ws://127.0.0.1:1",
-  media: testMedia(),
-}).form;
+const participantForm = f.api("anonymous").form;
 afterAll(close);
 
 /** A published consent form in a fresh study, and a week-long link to it for a new participant. */
