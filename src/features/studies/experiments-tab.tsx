@@ -139,8 +139,9 @@ function NewExperimentDialog({ studyId, onCreated }: { studyId: string; onCreate
         </Field>
         {create.error && !fieldError(create.error, "name") && <Problem error={create.error} />}
         <div className="flex justify-end">
-          <Button type="submit" disabled={create.isPending}>
-            Create experiment
+          {/* Until the robots arrive the required select is empty, and the browser would silently refuse to send. */}
+          <Button type="submit" disabled={create.isPending || !robots.data}>
+            {robots.data ? "Create experiment" : "Loading robots…"}
           </Button>
         </div>
       </form>
