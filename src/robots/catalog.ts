@@ -34,9 +34,12 @@ export interface KnownPlugin {
 
 type Reader = Pick<Database, "select">;
 
+// The first-party files never change while the server runs: hashed once, not on every catalogue read.
+let firstPartyKnown: KnownPlugin[] | null = null;
+
 async function known(db: Reader, where?: SQL): Promise<{ versions: KnownPlugin[]; folder: PluginFolder }> {
   const folder = await firstPartyPlugins();
-  const firstParty = folder.plugins.map(
+  firstPartyKnown ??= folder.plugins.map(
     (p): KnownPlugin => ({
       plugin: p,
       robotId: p.robotId,
@@ -46,6 +49,7 @@ async function known(db: Reader, where?: SQL): Promise<{ versions: KnownPlugin[]
       hash: hashCanonical(p),
     }),
   );
+  const firstParty = firstPartyKnown;
   // Oldest install first: the first repository to install a robot keeps it.
   const rows = await db
     .select({ row: installedPlugins, repositoryName: pluginRepositories.name })

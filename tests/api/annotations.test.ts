@@ -2,7 +2,7 @@
 // its author may edit it, and so may the study's owner and researchers.
 import { afterAll, expect, it } from "vitest";
 import { freshDatabase } from "../support/db";
-import { buildFixture } from "./fixture";
+import { buildFixture, publishedVersion } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -11,13 +11,8 @@ afterAll(close);
 it("lets the author and the researchers edit a marked moment, and nobody else", async () => {
   const owner = f.api("owner");
   const study = await f.newStudy();
-  const e = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await owner.experiments.saveDesign({
-    experimentId: e.id,
-    baseRevision: 0,
-    steps: [{ name: "S", actions: [{ type: "wave" }] }],
-  });
-  const trial = await owner.trials.create({ versionId: (await owner.versions.publish({ experimentId: e.id })).id });
+  const { version } = await publishedVersion(owner, study.id);
+  const trial = await owner.trials.create({ versionId: version.id });
   const { id } = await f
     .api("observer")
     .trials.annotate({ trialId: trial.id, relMs: 61_500, label: "Looks away", note: "" });

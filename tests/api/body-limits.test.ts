@@ -6,6 +6,7 @@ import { afterAll, describe, expect, it } from "vitest";
 import { CHUNK_LIMIT_BYTES } from "../../src/server/media/recordings";
 import { LIMITS } from "../../src/core/network/limits";
 import { endlessBody, ORIGIN, routeServer } from "../support/routes";
+import { publishedVersion } from "./fixture";
 
 const s = await routeServer();
 afterAll(s.close);
@@ -18,13 +19,8 @@ const PIECE = 64 * 1024;
 async function recording() {
   const api = await s.apiAs(owner);
   const study = await s.f.newStudy();
-  const e = await api.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await api.experiments.saveDesign({
-    experimentId: e.id,
-    baseRevision: 0,
-    steps: [{ name: "S", actions: [{ type: "wave" }] }],
-  });
-  const trial = await api.trials.create({ versionId: (await api.versions.publish({ experimentId: e.id })).id });
+  const { version } = await publishedVersion(api, study.id);
+  const trial = await api.trials.create({ versionId: version.id });
   return (await api.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/webm" })).recordingId;
 }
 

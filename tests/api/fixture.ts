@@ -87,3 +87,15 @@ export async function buildFixture(db: Database) {
 }
 
 export type Fixture = Awaited<ReturnType<typeof buildFixture>>;
+type Api = ReturnType<typeof callerFactory>;
+
+/** A published one-step experiment (the robot waves) in the study: what most tests need to start a trial. */
+export async function publishedVersion(api: Api, studyId: string) {
+  const experiment = await api.experiments.create({ studyId, name: "E", robotPluginId: "nao6-ros2" });
+  await api.experiments.saveDesign({
+    experimentId: experiment.id,
+    baseRevision: 0,
+    steps: [{ name: "S", actions: [{ type: "wave" }] }],
+  });
+  return { experiment, version: await api.versions.publish({ experimentId: experiment.id }) };
+}

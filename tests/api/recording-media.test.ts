@@ -3,6 +3,7 @@
 // with ?download naming the file; the policy still decides who may play it.
 import { afterAll, describe, expect, it } from "vitest";
 import { ORIGIN, routeServer } from "../support/routes";
+import { publishedVersion } from "./fixture";
 
 const s = await routeServer();
 afterAll(s.close);
@@ -15,13 +16,8 @@ const bytes = new Uint8Array(100_000).map((_, i) => (i * 7) % 256);
 async function recording(finished: boolean) {
   const api = await s.apiAs(owner);
   const study = await s.f.newStudy();
-  const e = await api.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await api.experiments.saveDesign({
-    experimentId: e.id,
-    baseRevision: 0,
-    steps: [{ name: "S", actions: [{ type: "wave" }] }],
-  });
-  const trial = await api.trials.create({ versionId: (await api.versions.publish({ experimentId: e.id })).id });
+  const { version } = await publishedVersion(api, study.id);
+  const trial = await api.trials.create({ versionId: version.id });
   const { recordingId } = await api.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/mp4" });
   await s.server.media.storage.put(`recordings/${recordingId}/chunk-000000`, bytes, "video/mp4");
   if (finished) await api.recordings.finish({ recordingId, durationMs: 1000 });

@@ -5,7 +5,7 @@ import { afterAll, describe, expect, it } from "vitest";
 import { webmDuration } from "../../src/core/media/webm-duration";
 import { chunkKey } from "../../src/server/media/recordings";
 import { freshDatabase } from "../support/db";
-import { buildFixture } from "./fixture";
+import { buildFixture, publishedVersion } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -21,13 +21,7 @@ const webm = new Uint8Array([
 
 async function trial() {
   const study = await f.newStudy();
-  const e = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await owner.experiments.saveDesign({
-    experimentId: e.id,
-    baseRevision: 0,
-    steps: [{ name: "S", actions: [{ type: "wave" }] }],
-  });
-  const version = await owner.versions.publish({ experimentId: e.id });
+  const { version } = await publishedVersion(owner, study.id);
   return owner.trials.create({ versionId: version.id });
 }
 

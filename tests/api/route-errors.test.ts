@@ -8,6 +8,7 @@ import { afterAll, afterEach, describe, expect, it, vi } from "vitest";
 import { apiRoute } from "../../src/server/api/download";
 import { logUnexpected, unexpectedMessage } from "../../src/data/error-reference";
 import { ORIGIN, routeServer } from "../support/routes";
+import { publishedVersion } from "./fixture";
 
 const s = await routeServer();
 afterAll(s.close);
@@ -62,13 +63,8 @@ describe("an unexpected error in a route", () => {
   it("keeps a media store failure's path out of the answer to a recording part", async () => {
     const api = await s.apiAs(owner);
     const study = await s.f.newStudy();
-    const e = await api.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-    await api.experiments.saveDesign({
-      experimentId: e.id,
-      baseRevision: 0,
-      steps: [{ name: "S", actions: [{ type: "wave" }] }],
-    });
-    const trial = await api.trials.create({ versionId: (await api.versions.publish({ experimentId: e.id })).id });
+    const { version } = await publishedVersion(api, study.id);
+    const trial = await api.trials.create({ versionId: version.id });
     const { recordingId } = await api.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/webm" });
     // A file where the recording's folder should be: the store cannot write.
     mkdirSync(join(process.env.HRI_MEDIA_DIR!, "recordings"), { recursive: true });

@@ -3,7 +3,7 @@
 import { afterAll, expect, it } from "vitest";
 import { trialSamples } from "../../src/data/schema";
 import { freshDatabase } from "../support/db";
-import { buildFixture } from "./fixture";
+import { buildFixture, publishedVersion } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -12,13 +12,8 @@ afterAll(close);
 
 it("thins samples to at most one per slice of time, first of each, in order; the full series stays available", async () => {
   const study = await f.newStudy();
-  const e = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await owner.experiments.saveDesign({
-    experimentId: e.id,
-    baseRevision: 0,
-    steps: [{ name: "S", actions: [{ type: "wave" }] }],
-  });
-  const trial = await owner.trials.create({ versionId: (await owner.versions.publish({ experimentId: e.id })).id });
+  const { version } = await publishedVersion(owner, study.id);
+  const trial = await owner.trials.create({ versionId: version.id });
   await db.insert(trialSamples).values(
     Array.from({ length: 1000 }, (_, i) => ({
       trialId: trial.id,

@@ -2,7 +2,7 @@
 // one yet (`wizardId: null`), in which case the first wizard to start it claims it.
 import { afterAll, expect, it } from "vitest";
 import { freshDatabase } from "../support/db";
-import { buildFixture } from "./fixture";
+import { buildFixture, publishedVersion } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -11,13 +11,8 @@ afterAll(close);
 
 it("assigns the creator by default, the named wizard when given, and no one for an explicit null", async () => {
   const study = await f.newStudy();
-  const e = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
-  await owner.experiments.saveDesign({
-    experimentId: e.id,
-    baseRevision: 0,
-    steps: [{ name: "S", actions: [{ type: "wave" }] }],
-  });
-  const versionId = (await owner.versions.publish({ experimentId: e.id })).id;
+  const { version } = await publishedVersion(owner, study.id);
+  const versionId = version.id;
   expect(await owner.trials.create({ versionId })).toMatchObject({ wizardId: f.people.owner.id });
   expect(await owner.trials.create({ versionId, wizardId: f.people.wizard.id })).toMatchObject({
     wizardId: f.people.wizard.id,
