@@ -2,7 +2,7 @@ import { defineConfig } from "drizzle-kit";
 
 export default defineConfig({
   dialect: "postgresql",
-  schema: "./src/data/schema/index.ts",
-  out: "./src/data/migrations",
+  schema: "./src/store/schema/index.ts",
+  out: "./src/store/migrations",
   dbCredentials: { url: process.env.DATABASE_URL ?? "postgres://localhost/hristudio" },
 });

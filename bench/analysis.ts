@@ -7,7 +7,7 @@
 import { launchBrowser, newContext, signInAs } from "../tests/support/browser";
 import { DEMO_PASSWORD, startApp } from "../tests/support/app";
 import { apiClient, signIn } from "../tests/support/http";
-import { createDatabase } from "../src/data/client";
+import { createDatabase } from "../src/store/client";
 import { report, scratchDatabase } from "./support";
 
 const EVENTS = 2000;

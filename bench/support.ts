@@ -3,8 +3,8 @@
 import { mkdtemp, rm } from "node:fs/promises";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
-import { startEmbeddedPostgres } from "../src/data/embedded";
-import { migrateDatabase } from "../src/data/migrate";
+import { startEmbeddedPostgres } from "../src/store/embedded";
+import { migrateDatabase } from "../src/store/migrate";
 
 export async function scratchDatabase() {
   const dir = await mkdtemp(join(tmpdir(), "hri-bench-"));

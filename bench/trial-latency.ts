@@ -7,11 +7,11 @@ import { spawn } from "node:child_process";
 import { join } from "node:path";
 import { startDefaultSimulator } from "../src/robots/simulator/main";
 import { SOCKET_PROTOCOL_VERSION } from "../src/core/socket/messages";
-import { freePort } from "../src/data/embedded";
+import { freePort } from "../src/store/embedded";
 import { createAccount } from "../src/server/auth/accounts";
-import { createDatabase } from "../src/data/client";
-import { experimentVersions, experiments, studies, studyMembers, trials } from "../src/data/schema";
-import { signSocketToken } from "../src/data/socket-token";
+import { createDatabase } from "../src/store/client";
+import { experimentVersions, experiments, studies, studyMembers, trials } from "../src/store/schema";
+import { signSocketToken } from "../src/store/socket-token";
 import { report, scratchDatabase } from "./support";
 
 const SECRET = "bench-secret".padEnd(40, "x");

@@ -5,7 +5,7 @@
 // front of a route, Next.js buffers the request body (up to 10 MB) before the
 // route can apply its own limit while reading.
 import { NextResponse } from "next/server";
-import { readConfig } from "@/data/config";
+import { readConfig } from "@/store/config";
 import { pageCsp } from "@/server/http/security-headers";
 import { browserRuntimeUrl } from "@/server/runtime-url";
 

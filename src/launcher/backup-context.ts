@@ -1,7 +1,7 @@
 // What `npm run backup` and `npm run restore` both read from the environment:
 // the data folder, the database, the media store, and where progress goes.
 import { join, resolve } from "node:path";
-import { readConfig } from "../data/config";
+import { readConfig } from "../store/config";
 import { mediaStorage } from "../server/media";
 
 const root = resolve(import.meta.dirname, "..", "..");

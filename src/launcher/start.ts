@@ -3,10 +3,10 @@
 import { spawn, type ChildProcess } from "node:child_process";
 import { mkdirSync, writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
-import { readConfig } from "../data/config";
-import { createDatabase } from "../data/client";
-import { freePort, startEmbeddedPostgres, type EmbeddedDatabase } from "../data/embedded";
-import { migrateDatabase } from "../data/migrate";
+import { readConfig } from "../store/config";
+import { createDatabase } from "../store/client";
+import { freePort, startEmbeddedPostgres, type EmbeddedDatabase } from "../store/embedded";
+import { migrateDatabase } from "../store/migrate";
 import { seedDemo, type DemoAccount } from "../server/seed/demo";
 import { buildIfChanged } from "./build";
 import { rememberChildren, stopOrphanedChildren } from "./children";

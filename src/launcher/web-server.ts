@@ -8,7 +8,7 @@
 import { createServer } from "node:http";
 import next from "next";
 import { CLIENT_ADDRESS_HEADER, clientAddress } from "../core/network/client-address";
-import { readConfig } from "../data/config";
+import { readConfig } from "../store/config";
 
 const dev = process.argv.includes("--dev");
 const dir = process.cwd();

@@ -7,8 +7,8 @@ import { join } from "node:path";
 import { hashCanonical } from "@/core/protocol/canonical";
 import { chooseProviders, FIRST_PARTY, type Plugin, type TrustLevel } from "@/core/plugins";
 import { loadPluginFolder, type PluginFolder } from "@/robots/plugin-folder";
-import type { Database } from "@/data/client";
-import { installedPlugins, pluginRepositories } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { installedPlugins, pluginRepositories } from "@/store/schema";
 
 export const PLUGINS_DIR = join(process.cwd(), "plugins");
 const FIRST_PARTY_NAME = "the first-party plugins";

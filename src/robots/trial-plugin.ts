@@ -4,8 +4,8 @@
 // published before pinning use the robot's current plugin.
 import { eq } from "drizzle-orm";
 import type { Plugin } from "@/core/plugins";
-import type { Database } from "@/data/client";
-import { experimentVersions, experiments, pluginDocuments, trials } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { experimentVersions, experiments, pluginDocuments, trials } from "@/store/schema";
 import { findPlugin } from "./catalog";
 
 export type TrialPlugin =

@@ -3,10 +3,10 @@
 import { and, eq, isNull, lt, or } from "drizzle-orm";
 import type postgres from "postgres";
 import type { AccessChange, TrialAccess } from "@/core/access/trial-socket";
-import type { Database } from "@/data/client";
-import { mediaRecordings, socketTokenUses, trials, user } from "@/data/schema";
-import { studyAccessOf } from "@/data/study-access";
-import type { SocketClaims } from "@/data/socket-token";
+import type { Database } from "@/store/client";
+import { mediaRecordings, socketTokenUses, trials, user } from "@/store/schema";
+import { studyAccessOf } from "@/store/study-access";
+import type { SocketClaims } from "@/store/socket-token";
 
 /** The caller's access to a trial now; null when the trial no longer exists. */
 export async function loadTrialAccess(db: Database, trialId: string, userId: string): Promise<TrialAccess | null> {

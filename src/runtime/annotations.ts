@@ -1,6 +1,6 @@
 import { eq } from "drizzle-orm";
-import type { Database } from "@/data/client";
-import { annotations, trials } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { annotations, trials } from "@/store/schema";
 
 /** A marked moment, timed on the trial's clock (0 before the trial starts). */
 export async function annotate(

@@ -1,7 +1,7 @@
 // The trial runtime process: `bun run src/runtime/main.ts`. The launcher
 // starts it beside the web app with the same database and secret.
-import { readConfig } from "@/data/config";
-import { createDatabase } from "@/data/client";
+import { readConfig } from "@/store/config";
+import { createDatabase } from "@/store/client";
 import type { Plugin } from "@/core/plugins";
 import { pluginCatalog } from "@/robots/catalog";
 import { transportFor } from "@/robots/transports";

@@ -2,9 +2,9 @@
 // through PostgreSQL LISTEN/NOTIFY: the owner notifies at commit, we read
 // what is new from the log. No other broker.
 import type postgres from "postgres";
-import type { Database } from "@/data/client";
+import type { Database } from "@/store/client";
 import type { StoredEvent } from "@/core/trial";
-import { eventsSince, NOTIFY_CHANNEL } from "@/data/event-store";
+import { eventsSince, NOTIFY_CHANNEL } from "@/store/event-store";
 
 interface Follower {
   lastSeq: number;

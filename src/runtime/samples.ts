@@ -1,8 +1,8 @@
 // Robot state (joint angles, battery…) logged while a trial runs, timed on
 // the trial's clock and written in batches: high-rate data never slows the
 // wizard's events.
-import type { Database } from "@/data/client";
-import { trialSamples } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { trialSamples } from "@/store/schema";
 
 const FLUSH_EVERY_MS = 500;
 const FLUSH_AT = 500;

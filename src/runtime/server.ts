@@ -11,10 +11,10 @@ import {
   type AccessChange,
   type TrialAccess,
 } from "@/core/access/trial-socket";
-import type { Database } from "@/data/client";
-import { verifySocketToken, type SocketClaims } from "@/data/socket-token";
+import type { Database } from "@/store/client";
+import { verifySocketToken, type SocketClaims } from "@/store/socket-token";
 import type { StoredEvent } from "@/core/trial";
-import { eventsSince, STATUS_AFTER } from "@/data/event-store";
+import { eventsSince, STATUS_AFTER } from "@/store/event-store";
 import {
   parseClientMessage,
   SOCKET_PROTOCOL_VERSION,
@@ -24,7 +24,7 @@ import {
   type Viewer,
 } from "@/core/socket/messages";
 import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
-import { logUnexpected } from "@/data/error-reference";
+import { logUnexpected } from "@/store/error-reference";
 import { annotate } from "./annotations";
 import type { EventRelay } from "./relay";
 import type { TrialHosts } from "./trial-hosts";

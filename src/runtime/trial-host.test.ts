@@ -1,6 +1,6 @@
 import { afterAll, describe, expect, it } from "vitest";
 import { bareTrial, freshDatabase } from "../../tests/support/db";
-import { eventsSince } from "@/data/event-store";
+import { eventsSince } from "@/store/event-store";
 import type { TrialProtocol } from "@/core/trial";
 import type { RobotLink } from "./robot";
 import { TrialHost } from "./trial-host";

@@ -11,8 +11,8 @@ import {
   type TrialProtocol,
   type TrialState,
 } from "@/core/trial";
-import type { Database } from "@/data/client";
-import { appendEvents, eventsSince } from "@/data/event-store";
+import type { Database } from "@/store/client";
+import { appendEvents, eventsSince } from "@/store/event-store";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import type { RobotLink } from "./robot";
 import { sampleRecorder } from "./samples";

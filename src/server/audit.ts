@@ -1,5 +1,5 @@
-import type { Database } from "@/data/client";
-import { auditLog } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { auditLog } from "@/store/schema";
 
 type Tx = Parameters<Parameters<Database["transaction"]>[0]>[0];
 

@@ -1,7 +1,7 @@
 // The server's shared parts for the Next.js process, built once from the environment.
-import { readConfig } from "@/data/config";
+import { readConfig } from "@/store/config";
 import { createAuth, type Auth } from "./auth/auth";
-import { createDatabase, type Database } from "@/data/client";
+import { createDatabase, type Database } from "@/store/client";
 import { mediaStorage } from "./media";
 import { browserRuntimeUrl } from "./runtime-url";
 import type { Context, SessionUser } from "./api/trpc";

@@ -1,4 +1,4 @@
-import type { Config } from "@/data/config";
+import type { Config } from "@/store/config";
 
 /** Where browsers reach the trial runtime: HRI_RUNTIME_URL, or this host at HRI_RUNTIME_PORT. */
 export function browserRuntimeUrl(config: Config): string {

@@ -5,7 +5,7 @@
 // or researcher could type.
 import { strFromU8, unzipSync } from "fflate";
 import { afterAll, describe, expect, it } from "vitest";
-import { appendEvents } from "../../src/data/event-store";
+import { appendEvents } from "../../src/store/event-store";
 import { parseCsv } from "../support/csv";
 import { freshDatabase } from "../support/db";
 import { buildFixture } from "./fixture";

@@ -8,8 +8,8 @@ import type { SystemRole } from "../../src/core/access/policy";
 import { createCallerFactory, type Context, type SessionUser } from "../../src/server/api/trpc";
 import { appRouter } from "../../src/server/api/root";
 import { createAccount } from "../../src/server/auth/accounts";
-import type { Database } from "../../src/data/client";
-import { studyMembers } from "../../src/data/schema";
+import type { Database } from "../../src/store/client";
+import { studyMembers } from "../../src/store/schema";
 
 export const CALLERS = ["owner", "researcher", "wizard", "observer", "outsider", "admin", "anonymous"] as const;
 export type Caller = (typeof CALLERS)[number];

@@ -10,7 +10,7 @@ import { eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import type { Plugin } from "../../src/core/plugins";
 import { hashCanonical } from "../../src/core/protocol/canonical";
-import { experimentVersions, pluginDocuments } from "../../src/data/schema";
+import { experimentVersions, pluginDocuments } from "../../src/store/schema";
 import { trialPlugin } from "../../src/robots/trial-plugin";
 import { unavailableRobot } from "../../src/runtime/robot-link";
 import { trialHosts } from "../../src/runtime/trial-hosts";

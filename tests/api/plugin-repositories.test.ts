@@ -8,7 +8,7 @@ import { readFileSync } from "node:fs";
 import { join } from "node:path";
 import { and, eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { auditLog } from "../../src/data/schema";
+import { auditLog } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
 import { buildFixture } from "./fixture";
 

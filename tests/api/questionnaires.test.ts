@@ -3,7 +3,7 @@
 // server, digital consent feeding the consent gate, and the CSV export.
 import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
-import { questionnaireLinks } from "../../src/data/schema";
+import { questionnaireLinks } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
 import { buildFixture } from "./fixture";
 

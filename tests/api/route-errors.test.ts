@@ -6,7 +6,7 @@ import { join } from "node:path";
 import { TRPCError } from "@trpc/server";
 import { afterAll, afterEach, describe, expect, it, vi } from "vitest";
 import { apiRoute } from "../../src/server/api/download";
-import { logUnexpected, unexpectedMessage } from "../../src/data/error-reference";
+import { logUnexpected, unexpectedMessage } from "../../src/store/error-reference";
 import { ORIGIN, routeServer } from "../support/routes";
 import { publishedVersion } from "./fixture";
 

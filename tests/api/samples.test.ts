@@ -1,7 +1,7 @@
 // Robot data for the analysis chart: an hour at 50 Hz is far more than a
 // chart can draw, so the server thins it by equal slices of time.
 import { afterAll, expect, it } from "vitest";
-import { trialSamples } from "../../src/data/schema";
+import { trialSamples } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
 import { buildFixture, publishedVersion } from "./fixture";
 

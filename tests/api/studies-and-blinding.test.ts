@@ -4,7 +4,7 @@
 import { eq } from "drizzle-orm";
 import { strFromU8, unzipSync } from "fflate";
 import { afterAll, describe, expect, it } from "vitest";
-import { auditLog } from "../../src/data/schema";
+import { auditLog } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
 import { buildFixture } from "./fixture";
 

@@ -15,12 +15,12 @@ describe("architecture", () => {
   });
 
   it.each([
-    ["the core importing the data layer", value("src/core/trial/engine.ts", "src/data/client")],
+    ["the core importing the data layer", value("src/core/trial/engine.ts", "src/store/client")],
     ["the core importing a package with I/O", value("src/core/trial/engine.ts", "postgres")],
     ["the core importing a server's types", types("src/core/trial/engine.ts", "src/server/api/trpc")],
-    ["the data layer importing the server", value("src/data/event-store.ts", "src/server/audit")],
-    ["the data layer importing the runtime", value("src/data/event-store.ts", "src/runtime/relay")],
-    ["the data layer importing robots", value("src/data/event-store.ts", "src/robots/catalog")],
+    ["the data layer importing the server", value("src/store/event-store.ts", "src/server/audit")],
+    ["the data layer importing the runtime", value("src/store/event-store.ts", "src/runtime/relay")],
+    ["the data layer importing robots", value("src/store/event-store.ts", "src/robots/catalog")],
     ["robots importing the server", value("src/robots/catalog.ts", "src/server/config")],
     ["the runtime importing the web server", value("src/runtime/server.ts", "src/server/trials/files")],
     ["the web server importing the runtime", value("src/server/api/routers/trials.ts", "src/runtime/relay")],
@@ -29,7 +29,7 @@ describe("architecture", () => {
     ["the runtime importing Next.js", value("src/runtime/server.ts", "next/headers")],
     ["a feature importing the runtime", value("src/features/execution/use-trial-socket.ts", "src/runtime/server")],
     ["a feature importing server code", value("src/features/auth/session.ts", "src/server/context")],
-    ["a feature importing the data layer", types("src/features/analysis/analysis-page.tsx", "src/data/event-store")],
+    ["a feature importing the data layer", types("src/features/analysis/analysis-page.tsx", "src/store/event-store")],
     ["a feature importing the app", value("src/features/shell/top-bar.tsx", "src/app/layout")],
     ["shared UI importing a feature", value("src/ui/table.tsx", "src/features/shell/top-bar")],
     ["the browser's clients importing shared UI", value("src/lib/trpc.tsx", "src/ui/button")],
@@ -42,8 +42,8 @@ describe("architecture", () => {
   });
 
   it.each([
-    ["the data layer importing the core", value("src/data/event-store.ts", "src/core/trial")],
-    ["robots importing the data layer", value("src/robots/catalog.ts", "src/data/schema")],
+    ["the data layer importing the core", value("src/store/event-store.ts", "src/core/trial")],
+    ["robots importing the data layer", value("src/robots/catalog.ts", "src/store/schema")],
     ["the runtime importing data, core and robots", value("src/runtime/trial-hosts.ts", "src/robots/trial-plugin")],
     ["the core importing the plugin schema", value("src/core/plugins/schema.ts", "plugins/plugin.schema.json")],
     ["the browser's API client importing the router's type", types("src/lib/trpc.tsx", "src/server/api/root")],

@@ -17,14 +17,14 @@ export const LAYERS = {
   // Pure computation; the plugin schema is part of the core's declarations.
   core: { paths: ["src/core/", "plugins/plugin.schema.json"], imports: [] },
   // What both servers stand on: the database, the event store, study access, socket tokens, config, error references.
-  data: { paths: ["src/data/"], imports: ["core"] },
+  store: { paths: ["src/store/"], imports: ["core"] },
   // Plugin loading and the catalog (which reads installed plugins), transports, the simulated robot.
-  robots: { paths: ["src/robots/"], imports: ["core", "data"] },
-  server: { paths: ["src/server/"], imports: ["core", "data", "robots"] },
-  runtime: { paths: ["src/runtime/"], imports: ["core", "data", "robots"] },
-  launcher: { paths: ["src/launcher/"], imports: ["core", "data", "server"] },
+  robots: { paths: ["src/robots/"], imports: ["core", "store"] },
+  server: { paths: ["src/server/"], imports: ["core", "store", "robots"] },
+  runtime: { paths: ["src/runtime/"], imports: ["core", "store", "robots"] },
+  launcher: { paths: ["src/launcher/"], imports: ["core", "store", "server"] },
   // The browser side. Routes and pages compose features and the server's handlers.
-  app: { paths: ["src/app/", "src/proxy.ts"], imports: ["core", "data", "server", "features", "ui", "lib"] },
+  app: { paths: ["src/app/", "src/proxy.ts"], imports: ["core", "store", "server", "features", "ui", "lib"] },
   features: { paths: ["src/features/"], imports: ["core", "ui", "lib"] },
   // Shared components may use the browser's clients (the API, auth); the clients use no components.
   ui: { paths: ["src/ui/"], imports: ["core", "lib"] },
@@ -33,7 +33,7 @@ export const LAYERS = {
 
 const BROWSER: readonly Layer[] = ["features", "lib", "ui"];
 // The launcher is left out: it is the process that starts Next.js.
-const SERVER_SIDE: readonly Layer[] = ["data", "robots", "server", "runtime"];
+const SERVER_SIDE: readonly Layer[] = ["store", "robots", "server", "runtime"];
 
 // What the core may use from packages: computation only.
 const PURE_PACKAGES = new Set(["zod", "ajv", "node:crypto"]);

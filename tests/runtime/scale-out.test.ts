@@ -4,9 +4,9 @@
 import type { ChildProcess } from "node:child_process";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { createAccount } from "../../src/server/auth/accounts";
-import { createDatabase } from "../../src/data/client";
-import { experimentVersions, experiments, studies, studyMembers, trials } from "../../src/data/schema";
-import { signSocketToken } from "../../src/data/socket-token";
+import { createDatabase } from "../../src/store/client";
+import { experimentVersions, experiments, studies, studyMembers, trials } from "../../src/store/schema";
+import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { startRuntime } from "../support/runtime";
 import { connectTrial } from "../support/socket";

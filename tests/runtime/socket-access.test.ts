@@ -4,7 +4,7 @@
 // only what the caller may read, and a wizard runs only their own trials.
 import { and, eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { studies, studyMembers, trials, user } from "../../src/data/schema";
+import { studies, studyMembers, trials, user } from "../../src/store/schema";
 import { SOCKET_PROTOCOL_VERSION } from "../../src/core/socket/messages";
 import { socketFixture } from "../support/socket-fixture";
 import { connectTrial, type TrialSocket } from "../support/socket";

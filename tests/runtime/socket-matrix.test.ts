@@ -7,7 +7,7 @@ import { eq, inArray } from "drizzle-orm";
 import type { z } from "zod";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { clientMessageSchema, commandSchema, id } from "../../src/core/socket/messages";
-import { annotations, trialEvents, trials } from "../../src/data/schema";
+import { annotations, trialEvents, trials } from "../../src/store/schema";
 import { socketFixture, STUDY_ROLES_HERE, type Person } from "../support/socket-fixture";
 
 type Fixture = Awaited<ReturnType<typeof socketFixture>>;

@@ -4,7 +4,7 @@
 import { spawn, type ChildProcess } from "node:child_process";
 import { mkdirSync, mkdtempSync, readFileSync } from "node:fs";
 import { join, resolve } from "node:path";
-import { freePort } from "../../src/data/embedded";
+import { freePort } from "../../src/store/embedded";
 
 const root = resolve(import.meta.dirname, "..", "..");
 export const BUN = join(root, "node_modules", "@oven", `bun-${process.platform}-${process.arch}`, "bin", "bun");

@@ -1,8 +1,8 @@
 import { inject } from "vitest";
 import postgres from "postgres";
-import { createDatabase, type Database } from "../../src/data/client";
-import { experiments, studies, trials } from "../../src/data/schema";
-import { withDatabase } from "../../src/data/url";
+import { createDatabase, type Database } from "../../src/store/client";
+import { experiments, studies, trials } from "../../src/store/schema";
+import { withDatabase } from "../../src/store/url";
 
 const TEMPLATE_DB = "hristudio_template";
 

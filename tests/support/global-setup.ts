@@ -4,9 +4,9 @@ import type { TestProject } from "vitest/node";
 import { mkdtemp, rm } from "node:fs/promises";
 import { join } from "node:path";
 import postgres from "postgres";
-import { startEmbeddedPostgres } from "../../src/data/embedded";
-import { migrateDatabase } from "../../src/data/migrate";
-import { withDatabase } from "../../src/data/url";
+import { startEmbeddedPostgres } from "../../src/store/embedded";
+import { migrateDatabase } from "../../src/store/migrate";
+import { withDatabase } from "../../src/store/url";
 
 export const TEMPLATE_DB = "hristudio_template";
 

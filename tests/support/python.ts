@@ -4,7 +4,7 @@
 import { spawn, spawnSync, type ChildProcess } from "node:child_process";
 import { mkdirSync } from "node:fs";
 import { join, resolve } from "node:path";
-import { freePort } from "../../src/data/embedded";
+import { freePort } from "../../src/store/embedded";
 
 const target = join(resolve(import.meta.dirname, "..", ".."), ".tmp", "python");
 const env = { ...process.env, PYTHONPATH: target };

@@ -1,6 +1,6 @@
 // A trial runtime process (Bun) against a test database, as the launcher starts it.
 import { spawn, type ChildProcess } from "node:child_process";
-import { freePort } from "../../src/data/embedded";
+import { freePort } from "../../src/store/embedded";
 import { BUN } from "./app";
 
 export async function startRuntime(databaseUrl: string, secret: string): Promise<{ url: string; child: ChildProcess }> {

@@ -3,10 +3,17 @@
 // a recording. Trials are made per test, seeded to the state it needs.
 import type { ChildProcess } from "node:child_process";
 import { createAccount } from "../../src/server/auth/accounts";
-import { createDatabase } from "../../src/data/client";
-import { experimentVersions, experiments, mediaRecordings, studies, studyMembers, trials } from "../../src/data/schema";
-import { appendEvents } from "../../src/data/event-store";
-import { signSocketToken } from "../../src/data/socket-token";
+import { createDatabase } from "../../src/store/client";
+import {
+  experimentVersions,
+  experiments,
+  mediaRecordings,
+  studies,
+  studyMembers,
+  trials,
+} from "../../src/store/schema";
+import { appendEvents } from "../../src/store/event-store";
+import { signSocketToken } from "../../src/store/socket-token";
 import type { EngineEvent } from "../../src/core/trial";
 import { freshDatabaseUrl } from "./db";
 import { startRuntime } from "./runtime";

@@ -1,8 +1,8 @@
 // The check that an input names rows of one study only.
 import { TRPCError } from "@trpc/server";
 import { namedIn } from "@/core/access/input";
-import type { Database } from "@/data/client";
-import { studyAccessOf } from "@/data/study-access";
+import type { Database } from "@/store/client";
+import { studyAccessOf } from "@/store/study-access";
 import { loadResource, nameOf, REFERENCES, type ReferenceKey } from "./resources";
 
 type Db = Pick<Database, "select">;

@@ -1,7 +1,7 @@
 // The rows a procedure can act on, each loaded with the study it belongs to.
 // The study is always read from the row, never taken from the caller's input.
 import { eq, getTableColumns } from "drizzle-orm";
-import type { Database } from "@/data/client";
+import type { Database } from "@/store/client";
 import {
   annotations,
   conditions,
@@ -13,7 +13,7 @@ import {
   sessions,
   studies,
   trials,
-} from "@/data/schema";
+} from "@/store/schema";
 
 type Db = Pick<Database, "select">;
 

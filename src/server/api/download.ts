@@ -6,7 +6,7 @@
 import { TRPCError } from "@trpc/server";
 import { getHTTPStatusCodeFromError } from "@trpc/server/http";
 import { contextFromHeaders } from "../context";
-import { unexpectedResponse } from "@/data/error-reference";
+import { unexpectedResponse } from "@/store/error-reference";
 import type { Context } from "./trpc";
 import { appRouter } from "./root";
 

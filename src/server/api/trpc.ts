@@ -11,12 +11,12 @@ import {
   type SystemRole,
 } from "@/core/access/policy";
 import type { Blinding } from "@/core/studies/blinding";
-import type { Database } from "@/data/client";
+import type { Database } from "@/store/client";
 import { assertOneStudy } from "../access/membership";
-import { studyAccessOf } from "@/data/study-access";
+import { studyAccessOf } from "@/store/study-access";
 import { keyOf, loadResource, nameOf, type Resource, type ResourceRow } from "../access/resources";
 import type { MediaStorage } from "../media/storage";
-import { logUnexpected, unexpectedMessage } from "@/data/error-reference";
+import { logUnexpected, unexpectedMessage } from "@/store/error-reference";
 import { describeIssues, fieldIssues, type FieldIssue } from "./errors";
 
 export interface SessionUser {

@@ -3,8 +3,8 @@
 // account each see their own count.
 import { and, eq, gt, lt, sql } from "drizzle-orm";
 import { accountKey, windowCutoff, type AccountCount, type AccountLimit } from "@/core/access/sign-in-throttle";
-import type { Database } from "@/data/client";
-import { signInThrottle } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { signInThrottle } from "@/store/schema";
 
 /** Counts one attempt on the account (a new window if the last one is over) and returns the counter. */
 export async function countAttempt(db: Database, email: string, limit: AccountLimit, now: Date): Promise<AccountCount> {

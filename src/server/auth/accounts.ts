@@ -1,8 +1,8 @@
 // Accounts are made by administrators (and the demo seed), not by sign-up.
 import { hashPassword } from "better-auth/crypto";
 import type { SystemRole } from "@/core/access/policy";
-import type { Database } from "@/data/client";
-import { account, user } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { account, user } from "@/store/schema";
 
 export interface NewAccount {
   name: string;

@@ -4,8 +4,8 @@ import { APIError, createAuthMiddleware, isAPIError } from "better-auth/api";
 import { nextCookies } from "better-auth/next-js";
 import { CLIENT_ADDRESS_HEADER } from "@/core/network/client-address";
 import { accountRefusal, type AccountLimit } from "@/core/access/sign-in-throttle";
-import type { Database } from "@/data/client";
-import * as schema from "@/data/schema";
+import type { Database } from "@/store/client";
+import * as schema from "@/store/schema";
 import { countAttempt, forgiveAttempt } from "./account-throttle";
 
 export interface AuthSettings {

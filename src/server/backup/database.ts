@@ -4,9 +4,9 @@
 // The one file here that uses the database layer, so a move of it touches only this.
 import { existsSync, readFileSync } from "node:fs";
 import { join } from "node:path";
-import { startEmbeddedPostgres } from "@/data/embedded";
-import { migrateDatabase, MIGRATIONS_DIR } from "@/data/migrate";
-import { connectionUrl } from "@/data/url";
+import { startEmbeddedPostgres } from "@/store/embedded";
+import { migrateDatabase, MIGRATIONS_DIR } from "@/store/migrate";
+import { connectionUrl } from "@/store/url";
 
 export { migrateDatabase, MIGRATIONS_DIR };
 

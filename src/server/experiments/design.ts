@@ -2,8 +2,8 @@
 // draft revision, so a save based on an older draft can be refused.
 import { TRPCError } from "@trpc/server";
 import { asc, eq, inArray, sql } from "drizzle-orm";
-import type { Database } from "@/data/client";
-import { actions, experiments, steps } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { actions, experiments, steps } from "@/store/schema";
 import type { DesignInput } from "../api/routers/design-input";
 
 export type Tx = Parameters<Parameters<Database["transaction"]>[0]>[0];

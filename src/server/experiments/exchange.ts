@@ -3,8 +3,8 @@
 import { TRPCError } from "@trpc/server";
 import { exportExperiment, importExperiment } from "@/core/designer/exchange";
 import { draftFrom } from "@/core/designer/model";
-import type { Database } from "@/data/client";
-import { actions, experiments, steps } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { actions, experiments, steps } from "@/store/schema";
 import { loadDesign } from "./design";
 
 export async function exportFile(db: Database, experimentId: string) {

@@ -5,8 +5,8 @@ import { draftFrom } from "@/core/designer/model";
 import { validateDesign } from "@/core/designer/validate";
 import { hashCanonical } from "@/core/protocol/canonical";
 import { snapshotOf } from "@/core/protocol/snapshot";
-import type { Database } from "@/data/client";
-import { experimentVersions, experiments, pluginDocuments } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { experimentVersions, experiments, pluginDocuments } from "@/store/schema";
 import { knownPlugin } from "@/robots/catalog";
 import { loadDesign } from "./design";
 

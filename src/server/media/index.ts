@@ -1,6 +1,6 @@
 // The media store this server uses, chosen once from its configuration.
 import { join, resolve } from "node:path";
-import type { Config } from "@/data/config";
+import type { Config } from "@/store/config";
 import { LocalStorage } from "./local-storage";
 import { S3Storage } from "./s3-storage";
 import type { MediaStorage } from "./storage";

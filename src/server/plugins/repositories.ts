@@ -16,8 +16,8 @@ import {
 } from "@/core/plugins";
 import { fetchRepository } from "@/robots/repository-sync";
 import { audit } from "../audit";
-import type { Database } from "@/data/client";
-import { installedPlugins, pluginRepositories } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { installedPlugins, pluginRepositories } from "@/store/schema";
 import { pluginCatalog } from "@/robots/catalog";
 
 export async function syncRepository(

@@ -6,7 +6,7 @@ import { TRPCError } from "@trpc/server";
 import { and, eq } from "drizzle-orm";
 import { presentedOrder, type Answers } from "@/core/questionnaires/answers";
 import type { Definition } from "@/core/questionnaires/definition";
-import type { Database } from "@/data/client";
+import type { Database } from "@/store/client";
 import {
   participants,
   questionnaireLinks,
@@ -14,7 +14,7 @@ import {
   questionnaireVersions,
   questionnaires,
   studies,
-} from "@/data/schema";
+} from "@/store/schema";
 
 export const hashToken = (token: string) => createHash("sha256").update(token).digest("hex");
 

@@ -1,14 +1,14 @@
 // Submitted answers with everything needed to read them: the version shown,
 // the participant, the trial. A withdrawn participant's answers are left out.
 import { and, asc, eq, ne } from "drizzle-orm";
-import type { Database } from "@/data/client";
+import type { Database } from "@/store/client";
 import {
   participants,
   questionnaireLinks,
   questionnaireResponses,
   questionnaireVersions,
   questionnaires,
-} from "@/data/schema";
+} from "@/store/schema";
 
 export async function submitted(db: Database, where: ReturnType<typeof eq>) {
   return db

@@ -1,7 +1,7 @@
 import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { freshDatabase } from "../../../tests/support/db";
-import { actions, experiments, steps, studyMembers } from "@/data/schema";
+import { actions, experiments, steps, studyMembers } from "@/store/schema";
 import { seedDemo } from "./demo";
 
 describe("the demo seed", async () => {

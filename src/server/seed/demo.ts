@@ -4,8 +4,8 @@ import { randomBytes } from "node:crypto";
 import { sql } from "drizzle-orm";
 import type { SystemRole, StudyRole } from "@/core/access/policy";
 import { createAccount } from "../auth/accounts";
-import type { Database } from "@/data/client";
-import { actions, experiments, participants, steps, studies, studyMembers, user } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { actions, experiments, participants, steps, studies, studyMembers, user } from "@/store/schema";
 import { STORYTELLER, storytellerDraft } from "./storyteller";
 
 export interface DemoAccount {

@@ -3,7 +3,7 @@
 // with a paper. Withdrawn participants' data is left out.
 import { strToU8, zipSync } from "fflate";
 import { and, asc, eq, inArray, ne } from "drizzle-orm";
-import type { Database } from "@/data/client";
+import type { Database } from "@/store/client";
 import {
   conditions,
   experimentVersions,
@@ -13,7 +13,7 @@ import {
   sessions,
   studies,
   trials,
-} from "@/data/schema";
+} from "@/store/schema";
 import { answersCsv } from "@/core/questionnaires/export";
 import { submitted } from "../questionnaires/responses";
 import { trialFiles } from "../trials/files";

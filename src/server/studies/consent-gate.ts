@@ -3,8 +3,8 @@
 import { TRPCError } from "@trpc/server";
 import { and, eq } from "drizzle-orm";
 import { readSettings } from "@/core/studies/settings";
-import type { Database } from "@/data/client";
-import { participants, studies } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { participants, studies } from "@/store/schema";
 
 export async function assertMayTakePart(db: Database, participantId: string, studyId: string) {
   const [p] = await db

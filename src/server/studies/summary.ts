@@ -4,9 +4,9 @@ import { and, asc, eq, inArray, ne } from "drizzle-orm";
 import { fidelityReport } from "@/core/analysis/fidelity";
 import { studySummary } from "@/core/analysis/study-summary";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
-import type { Database } from "@/data/client";
-import { conditions, experimentVersions, participants, trials } from "@/data/schema";
-import { eventsSince } from "@/data/event-store";
+import type { Database } from "@/store/client";
+import { conditions, experimentVersions, participants, trials } from "@/store/schema";
+import { eventsSince } from "@/store/event-store";
 
 export async function studyFigures(db: Database, studyId: string) {
   const rows = await db

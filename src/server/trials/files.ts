@@ -7,11 +7,11 @@ import { elanDocument } from "@/core/analysis/elan";
 import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
 import type { TrialEvent } from "@/core/trial";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
-import type { Database } from "@/data/client";
-import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/store/schema";
 import { recordingFileName } from "../media/recordings";
 import { submitted } from "../questionnaires/responses";
-import { eventsSince } from "@/data/event-store";
+import { eventsSince } from "@/store/event-store";
 
 export type TrialFormat = "csv" | "json" | "eaf";
 

@@ -6,7 +6,7 @@ import { AUDIT_AREA_VALUES } from "@/core/access/audit";
 import { SYSTEM_ROLES } from "@/core/access/policy";
 import { audit } from "../../audit";
 import { createAccount } from "../../auth/accounts";
-import { auditLog, participants, pluginRepositories, session, studies, user } from "@/data/schema";
+import { auditLog, participants, pluginRepositories, session, studies, user } from "@/store/schema";
 import { guarded, router } from "../trpc";
 import { id, text } from "../validation";
 

@@ -4,8 +4,8 @@ import { z } from "zod";
 import { assign, type Strategy } from "@/core/studies/assignment";
 import { readSettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
-import { conditions, experiments, participants, studies } from "@/data/schema";
-import { qualified } from "@/data/qualified";
+import { conditions, experiments, participants, studies } from "@/store/schema";
+import { qualified } from "@/store/qualified";
 import { router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 

@@ -1,9 +1,9 @@
 import { asc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
-import { experimentVersions, experiments, steps } from "@/data/schema";
+import { experimentVersions, experiments, steps } from "@/store/schema";
 import { exportFile, importFile } from "../../experiments/exchange";
 import { loadDesign, saveDesign } from "../../experiments/design";
-import { qualified } from "@/data/qualified";
+import { qualified } from "@/store/qualified";
 import { router, studyProcedure } from "../trpc";
 import { id } from "../validation";
 import { designInput, experimentDetails } from "./design-input";

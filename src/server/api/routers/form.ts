@@ -6,7 +6,7 @@ import { and, eq, isNull, ne } from "drizzle-orm";
 import { z } from "zod";
 import { answerProblems, consentGiven, scoreAnswers, type Answers } from "@/core/questionnaires/answers";
 import { audit } from "../../audit";
-import { participants, questionnaireLinks, questionnaireResponses } from "@/data/schema";
+import { participants, questionnaireLinks, questionnaireResponses } from "@/store/schema";
 import { openLink } from "../../questionnaires/links";
 import { publicProcedure, router } from "../trpc";
 

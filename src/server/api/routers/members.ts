@@ -3,8 +3,8 @@ import { and, asc, eq } from "drizzle-orm";
 import { z } from "zod";
 import { STUDY_ROLES } from "@/core/access/policy";
 import { audit } from "../../audit";
-import type { Database } from "@/data/client";
-import { studies, studyMembers, user } from "@/data/schema";
+import type { Database } from "@/store/client";
+import { studies, studyMembers, user } from "@/store/schema";
 import { router, studyProcedure } from "../trpc";
 import { id } from "../validation";
 

@@ -4,9 +4,9 @@ import { z } from "zod";
 import { audit } from "../../audit";
 import { demographicProblems, type Answers } from "@/core/studies/demographics";
 import { readSettings } from "@/core/studies/settings";
-import type { Database } from "@/data/client";
-import { participants, studies, trials } from "@/data/schema";
-import { qualified } from "@/data/qualified";
+import type { Database } from "@/store/client";
+import { participants, studies, trials } from "@/store/schema";
+import { qualified } from "@/store/qualified";
 import { router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 

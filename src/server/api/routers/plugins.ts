@@ -3,7 +3,7 @@ import { asc, eq } from "drizzle-orm";
 import { z } from "zod";
 import { FIRST_PARTY } from "@/core/plugins";
 import { audit } from "../../audit";
-import { pluginRepositories } from "@/data/schema";
+import { pluginRepositories } from "@/store/schema";
 import { findPlugin, pluginCatalog } from "@/robots/catalog";
 import { syncRepository } from "../../plugins/repositories";
 import { guarded, router } from "../trpc";

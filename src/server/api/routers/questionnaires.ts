@@ -9,10 +9,10 @@ import { blankQuestionnaire } from "@/core/questionnaires/builder";
 import { definitionSchema, INSTRUMENTS, items, type Definition } from "@/core/questionnaires/definition";
 import { instrumentDefinition } from "@/core/questionnaires/instruments";
 import { answersCsv } from "@/core/questionnaires/export";
-import { participants, questionnaireLinks, questionnaireVersions, questionnaires, trials } from "@/data/schema";
+import { participants, questionnaireLinks, questionnaireVersions, questionnaires, trials } from "@/store/schema";
 import { hashToken, newToken } from "../../questionnaires/links";
 import { submitted } from "../../questionnaires/responses";
-import { qualified } from "@/data/qualified";
+import { qualified } from "@/store/qualified";
 import { router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 

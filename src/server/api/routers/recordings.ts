@@ -4,7 +4,7 @@
 import { TRPCError } from "@trpc/server";
 import { and, asc, eq } from "drizzle-orm";
 import { z } from "zod";
-import { mediaRecordings } from "@/data/schema";
+import { mediaRecordings } from "@/store/schema";
 import { CHUNK_LIMIT_BYTES, fileKey, joinChunks, playable, RECORDING_TYPES } from "../../media/recordings";
 import { router, studyProcedure } from "../trpc";
 import { id } from "../validation";

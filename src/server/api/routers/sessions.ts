@@ -6,7 +6,7 @@ import { and, asc, desc, eq, inArray, isNull, or, sql } from "drizzle-orm";
 import { z } from "zod";
 import { blindingFor } from "@/core/studies/blinding";
 import { readSettings } from "@/core/studies/settings";
-import type { Database } from "@/data/client";
+import type { Database } from "@/store/client";
 import {
   conditions,
   experimentVersions,
@@ -16,7 +16,7 @@ import {
   studyMembers,
   trials,
   user,
-} from "@/data/schema";
+} from "@/store/schema";
 import { assertMayTakePart } from "../../studies/consent-gate";
 import { guarded, router, studyProcedure } from "../trpc";
 import { id } from "../validation";

@@ -7,8 +7,8 @@ import { changedSettings, readSettings, studySettingsChangeSchema, type StudySet
 import { audit } from "../../audit";
 import { studyArchive } from "../../studies/archive";
 import { studyFigures } from "../../studies/summary";
-import { experiments, participants, studies, studyMembers, trials } from "@/data/schema";
-import { qualified } from "@/data/qualified";
+import { experiments, participants, studies, studyMembers, trials } from "@/store/schema";
+import { qualified } from "@/store/qualified";
 import { guarded, router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 

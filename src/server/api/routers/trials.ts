@@ -4,7 +4,7 @@ import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
 import { blindTrial } from "@/core/studies/blinding";
-import type { Database } from "@/data/client";
+import type { Database } from "@/store/client";
 import {
   annotations,
   experimentVersions,
@@ -14,14 +14,14 @@ import {
   trialSamples,
   trials,
   user,
-} from "@/data/schema";
+} from "@/store/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "@/core/protocol/snapshot";
-import { eventsSince } from "@/data/event-store";
+import { eventsSince } from "@/store/event-store";
 import { trialFile } from "../../trials/files";
 import { assertMayTakePart } from "../../studies/consent-gate";
-import { signSocketToken } from "@/data/socket-token";
-import { qualified } from "@/data/qualified";
+import { signSocketToken } from "@/store/socket-token";
+import { qualified } from "@/store/qualified";
 import { router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 

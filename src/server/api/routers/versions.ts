@@ -3,7 +3,7 @@ import { desc, eq } from "drizzle-orm";
 import { diffProtocols } from "@/core/designer/diff";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
-import { experimentVersions, user } from "@/data/schema";
+import { experimentVersions, user } from "@/store/schema";
 import { publish } from "../../experiments/publish";
 import { router, studyProcedure } from "../trpc";
 import { id } from "../validation";

@@ -1,5 +1,5 @@
 import { server } from "@/server/context";
-import { unexpectedResponse } from "@/data/error-reference";
+import { unexpectedResponse } from "@/store/error-reference";
 import { LIMITS } from "@/core/network/limits";
 import { withinLimit } from "@/server/http/body-limit";
 

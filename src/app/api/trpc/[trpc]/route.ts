@@ -1,7 +1,7 @@
 import { fetchRequestHandler } from "@trpc/server/adapters/fetch";
 import { appRouter } from "@/server/api/root";
 import { contextFromHeaders } from "@/server/context";
-import { unexpectedResponse } from "@/data/error-reference";
+import { unexpectedResponse } from "@/store/error-reference";
 import { LIMITS } from "@/core/network/limits";
 import { withinLimit } from "@/server/http/body-limit";
 
