@@ -111,12 +111,17 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
       await wizard.getByRole("link", { name: "My sessions" }).click();
       await wizard.waitForURL(/\/sessions$/);
     }
-    // Every session is finished: the page, loaded afresh, has none left.
-    await expect
-      .poll(async () => (await wizard.reload(), await wizard.getByText("No sessions are planned for you.").count()), {
-        timeout: 30_000,
-      })
-      .toBe(1);
+    // Every session is finished: the page, loaded afresh, has none left. Each look waits for the list to
+    // load (a count taken at once, on a loaded machine, saw the page before its data and reloaded again).
+    const emptyAfterReload = async () => {
+      await wizard.reload();
+      const empty = wizard.getByText("No sessions are planned for you.");
+      return empty.waitFor({ timeout: 10_000 }).then(
+        () => 1,
+        () => 0,
+      );
+    };
+    await expect.poll(emptyAfterReload, { timeout: 60_000 }).toBe(1);
     const everything = seen.join("\n");
     expect(
       [...CONDITIONS, "Interactive Storyteller", "voice only"].filter((name) => everything.includes(name)),
