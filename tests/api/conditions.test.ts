@@ -1,6 +1,6 @@
 // Conditions and their assignment: made on the server, balanced, and
 // reproducible from the seed and position it records.
-import { TRPCError } from "@trpc/server";
+import type { TRPCError } from "@trpc/server";
 import { afterAll, describe, expect, it } from "vitest";
 import { assign } from "../../src/core/studies/assignment";
 import { freshDatabase } from "../support/db";

@@ -1,6 +1,6 @@
 // A trial needs a participant with recorded consent, unless the study turns
 // that check off; consent changes are logged.
-import { TRPCError } from "@trpc/server";
+import type { TRPCError } from "@trpc/server";
 import { afterAll, describe, expect, it } from "vitest";
 import { freshDatabase } from "../support/db";
 import { buildFixture } from "./fixture";

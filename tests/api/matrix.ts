@@ -16,9 +16,7 @@ export type Base = Awaited<ReturnType<typeof baseData>>;
 
 export async function baseData(f: Fixture) {
   const study = await f.newStudy();
-  const experiment = await f
-    .api("owner")
-    .experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
+  const experiment = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
   await f.api("owner").experiments.saveDesign({
     experimentId: experiment.id,
     baseRevision: 0,
