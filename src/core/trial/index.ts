@@ -5,3 +5,4 @@ export { simulate, type Simulation } from "./simulate";
 export * from "./types";
 export { type Rehearsal, type RehearsedStep, rehearse } from "./rehearse";
 export { type FlowEdge, flowEdges } from "./graph";
+export { pathTaken, type Upcoming, upcoming } from "./path";
