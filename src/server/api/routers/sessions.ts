@@ -18,6 +18,7 @@ import {
   user,
 } from "@/store/schema";
 import { assertMayTakePart } from "../../studies/consent-gate";
+import { assertRunsTrials } from "../../studies/status-gate";
 import { guarded, router, studyProcedure } from "../trpc";
 import { id } from "../validation";
 
@@ -150,6 +151,7 @@ export const sessionsRouter = router({
       throw new TRPCError({ code: "FORBIDDEN", message: "This session is planned for another wizard." });
     }
     if (s.trialId) return { trialId: s.trialId };
+    await assertRunsTrials(ctx.db, s.studyId);
     await assertMayTakePart(ctx.db, s.participantId, s.studyId);
     const [condition] = await ctx.db.select().from(conditions).where(eq(conditions.id, s.conditionId));
     const [version] = await ctx.db

@@ -20,6 +20,7 @@ import { snapshotOf } from "@/core/protocol/snapshot";
 import { eventsSince } from "@/store/event-store";
 import { trialFile } from "../../trials/files";
 import { assertMayTakePart } from "../../studies/consent-gate";
+import { assertRunsTrials } from "../../studies/status-gate";
 import { signSocketToken } from "@/store/socket-token";
 import { qualified } from "@/store/qualified";
 import { router, studyProcedure } from "../trpc";
@@ -75,6 +76,7 @@ export const trialsRouter = router({
     z.object({ versionId: id, participantId: id.nullable().default(null), wizardId: id.nullable().optional() }),
   ).mutation(async ({ ctx, input }) => {
     const { studyId, row: version } = ctx;
+    await assertRunsTrials(ctx.db, studyId);
     if (input.participantId) await assertMayTakePart(ctx.db, input.participantId, studyId);
     const wizardId = input.wizardId === undefined ? ctx.user.id : input.wizardId;
     if (wizardId !== null) {
