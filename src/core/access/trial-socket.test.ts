@@ -46,8 +46,26 @@ describe("who may command a trial over its socket", () => {
     ["an owner on a wizard's trial", access({ studyRole: "owner", wizardId: "u-other" }), "jump", "allow"],
     ["a researcher on a wizard's trial", access({ studyRole: "researcher", wizardId: "u-other" }), "abort", "allow"],
     [
-      "a researcher starting an unassigned trial does not claim it",
+      "a researcher starting an unassigned trial claims it too",
       access({ studyRole: "researcher", wizardId: null, status: "scheduled" }),
+      "start",
+      "claim",
+    ],
+    [
+      "an owner starting an unassigned trial claims it",
+      access({ studyRole: "owner", wizardId: null, status: "scheduled" }),
+      "start",
+      "claim",
+    ],
+    [
+      "a researcher's next on an unassigned trial claims nothing",
+      access({ studyRole: "researcher", wizardId: null }),
+      "next",
+      "allow",
+    ],
+    [
+      "an owner starting another wizard's trial runs it without taking it over",
+      access({ studyRole: "owner", wizardId: "u-other", status: "scheduled" }),
       "start",
       "allow",
     ],

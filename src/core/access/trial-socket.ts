@@ -39,10 +39,11 @@ export function commandVerdict(access: TrialAccess, kind: string): SocketVerdict
   // Safety before procedure: whoever may run trials in this study may stop the
   // robot of any of them, the trial's own wizard or not.
   if (kind === "emergency_stop") return { allow: true, claim: false };
-  // Owners and researchers run any trial of their study; a wizard runs the
-  // trials assigned to them, or an unassigned one, which starting claims.
-  if (role !== "wizard" || access.trial.wizardId === access.userId) return { allow: true, claim: false };
+  // Whoever starts an unassigned trial runs it: starting records them as its
+  // wizard, so the trial is credited to who ran it, not to who created it.
   if (access.trial.wizardId === null) return { allow: true, claim: kind === "start" };
+  // Owners and researchers run any trial of their study; a wizard runs the trials assigned to them.
+  if (role !== "wizard" || access.trial.wizardId === access.userId) return { allow: true, claim: false };
   return refuse("This trial is assigned to another wizard: you may watch it but not run it.");
 }
 

@@ -120,7 +120,8 @@ function NewTrial({
   const participants = useQuery(trpc.participants.list.queryOptions({ studyId }));
   const [experimentId, setExperimentId] = useState("");
   const [participantId, setParticipantId] = useState("");
-  const [wizard, setWizard] = useState<WizardChoiceValue>("me");
+  // Unassigned by default: whoever starts the trial is recorded as its wizard, so it is credited to who ran it.
+  const [wizard, setWizard] = useState<WizardChoiceValue>("any");
   const versions = useQuery({ ...trpc.versions.list.queryOptions({ experimentId }), enabled: Boolean(experimentId) });
   const create = useMutation(trpc.trials.create.mutationOptions({ onSuccess: onCreated }));
   const latest = versions.data?.[0];

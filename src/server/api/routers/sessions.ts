@@ -174,8 +174,9 @@ export const sessionsRouter = router({
             experimentId: condition!.experimentId,
             versionId: version.id,
             participantId: s.participantId,
+            // Run by whoever starts it; created by whoever planned the session.
             wizardId: ctx.user.id,
-            createdBy: ctx.user.id,
+            createdBy: s.createdBy ?? ctx.user.id,
           })
           .returning({ id: trials.id });
         // Only one start wins: a second click reopens the first's trial.

@@ -1,5 +1,6 @@
 import { TRPCError } from "@trpc/server";
 import { and, asc, desc, eq, sql } from "drizzle-orm";
+import { alias } from "drizzle-orm/pg-core";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
@@ -26,6 +27,9 @@ import { qualified } from "@/store/qualified";
 import { router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 
+/** Who created the trial, kept apart from who runs it (its wizard). */
+const creator = alias(user, "creator");
+
 const columns = {
   id: trials.id,
   status: trials.status,
@@ -41,6 +45,8 @@ const columns = {
   participantCode: participants.code,
   wizardId: trials.wizardId,
   wizardName: user.name,
+  createdBy: trials.createdBy,
+  createdByName: creator.name,
   participantWithdrawn: sql<boolean>`coalesce(${participants.consentStatus} = 'withdrawn', false)`,
 };
 
@@ -135,6 +141,7 @@ export const trialsRouter = router({
       .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
       .leftJoin(participants, eq(participants.id, trials.participantId))
       .leftJoin(user, eq(user.id, trials.wizardId))
+      .leftJoin(creator, eq(creator.id, trials.createdBy))
       .where(eq(trials.studyId, ctx.studyId))
       .orderBy(desc(trials.createdAt));
     // Scores are results: only for those who may read the data, and not under a results blind.
@@ -276,6 +283,7 @@ export const trialsRouter = router({
       .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
       .leftJoin(participants, eq(participants.id, trials.participantId))
       .leftJoin(user, eq(user.id, trials.wizardId))
+      .leftJoin(creator, eq(creator.id, trials.createdBy))
       .where(eq(trials.id, ctx.row.id));
     const trial = { ...row!, myRole: ctx.studyRole };
     return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
