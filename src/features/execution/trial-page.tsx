@@ -74,7 +74,9 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
         <Badge tone={STATUS_TONE[live.state.status]}>
           <span data-testid="trial-status">{live.state.status.replace("_", " ")}</span>
         </Badge>
-        {live.state.emergencyStopped && <Badge tone="red">emergency stop</Badge>}
+        {/* Red only while it holds a live trial; once the trial has ended it is history. */}
+        {live.state.emergencyStopped &&
+          (ended ? <Badge>emergency stop used</Badge> : <Badge tone="red">emergency stop</Badge>)}
         <span className="ml-auto flex items-center gap-4">
           {live.robot && (
             <Badge tone={live.robot.connected ? "green" : "red"}>
