@@ -206,7 +206,7 @@ describe.sequential("a live trial in two browsers", () => {
       .getByText("done")
       .waitFor();
     await wizard.keyboard.press("Escape");
-    await wizard.getByText("emergency stop", { exact: true }).waitFor();
+    await expect.poll(() => wizard.getByTestId("emergency-stop").textContent()).toBe("emergency stop");
     // N while stopped is refused; the refusal lasts while its cause does, and no longer (below).
     const refused = wizard.getByRole("alert").filter({ hasText: "The trial is paused: resume it first." });
     await wizard.keyboard.press("n");
@@ -216,9 +216,10 @@ describe.sequential("a live trial in two browsers", () => {
     await expect.poll(() => wizard.getByTestId("trial-status").textContent()).toBe("aborted");
     // Ended, the trial's emergency stop is disarmed: no longer red, its button off, and the page says why.
     await wizard.getByText(/^This trial was aborted: nothing more can be sent to it or to its robot/).waitFor();
-    await wizard.getByText("emergency stop used", { exact: true }).waitFor();
-    expect(await wizard.getByText("emergency stop", { exact: true }).count()).toBe(0);
-    expect(await wizard.getByRole("button", { name: "Emergency stop (Esc)" }).isDisabled()).toBe(true);
+    expect(await wizard.getByTestId("emergency-stop").textContent()).toBe("emergency stop used");
+    const stop = wizard.getByRole("button", { name: "Emergency stop (Esc)" });
+    expect(await stop.isDisabled()).toBe(true);
+    expect(await stop.getAttribute("class")).not.toMatch(/bg-red/);
     expect(await wizard.getByRole("button", { name: /Trial ended/ }).isDisabled()).toBe(true);
     expect(await refused.count()).toBe(0);
 

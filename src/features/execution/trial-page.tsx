@@ -76,7 +76,15 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
         </Badge>
         {/* Red only while it holds a live trial; once the trial has ended it is history. */}
         {live.state.emergencyStopped &&
-          (ended ? <Badge>emergency stop used</Badge> : <Badge tone="red">emergency stop</Badge>)}
+          (ended ? (
+            <Badge>
+              <span data-testid="emergency-stop">emergency stop used</span>
+            </Badge>
+          ) : (
+            <Badge tone="red">
+              <span data-testid="emergency-stop">emergency stop</span>
+            </Badge>
+          ))}
         <span className="ml-auto flex items-center gap-4">
           {live.robot && (
             <Badge tone={live.robot.connected ? "green" : "red"}>
