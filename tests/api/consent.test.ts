@@ -12,7 +12,7 @@ afterAll(close);
 
 async function setUp() {
   const study = await f.newStudy();
-  const experiment = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+  const experiment = await owner.experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
   await owner.experiments.saveDesign({
     experimentId: experiment.id,
     baseRevision: 0,

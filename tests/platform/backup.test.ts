@@ -91,7 +91,7 @@ async function studyData(url: string, mediaDir: string) {
     });
     const study = await api.studies.create({ title: `Backups: ${TRICKY}` });
     await api.studies.update({ studyId: study.id, status: "active" });
-    const e = await api.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+    const e = await api.experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
     await api.experiments.saveDesign({
       experimentId: e.id,
       baseRevision: 0,

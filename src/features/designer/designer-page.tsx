@@ -57,8 +57,8 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   });
   const robots = useQuery(trpc.plugins.list.queryOptions());
   const pluginQuery = useQuery({
-    ...trpc.plugins.get.queryOptions({ robotId: draft?.robotPluginId ?? "" }),
-    enabled: Boolean(draft?.robotPluginId),
+    ...trpc.plugins.get.queryOptions({ robotId: draft?.robotId ?? "" }),
+    enabled: Boolean(draft?.robotId),
   });
   const plugin = (pluginQuery.data ?? null) as Plugin | null;
   const [selection, setSelection] = useState<Selection>(null);
@@ -208,7 +208,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
 
   if (designer.loaded.isPending || (!draft && !designer.loaded.error)) return <Spinner label="Opening the designer…" />;
   if (designer.loaded.error || !draft) return <Problem error={designer.loaded.error} />;
-  const robotName = robots.data?.robots.find((r) => r.robotId === draft.robotPluginId)?.name ?? draft.robotPluginId;
+  const robotName = robots.data?.robots.find((r) => r.robotId === draft.robotId)?.name ?? draft.robotId;
   const errors = hasErrors(issues);
 
   return (
@@ -234,7 +234,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
           <NativeSelect
             aria-label="Robot"
             className="h-9 w-auto py-0"
-            value={draft.robotPluginId}
+            value={draft.robotId}
             disabled={!canEdit}
             onChange={(e) => run(commands.setRobot(e.target.value))}
           >

@@ -1,7 +1,6 @@
 import { TRPCError } from "@trpc/server";
 import { and, asc, desc, eq, sql } from "drizzle-orm";
 import { alias } from "drizzle-orm/pg-core";
-import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
 import { blindTrial } from "@/core/studies/blinding";
@@ -276,7 +275,9 @@ export const trialsRouter = router({
       .select({
         ...columns,
         studyId: trials.studyId,
-        protocol: sql<ProtocolSnapshot>`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})`,
+        protocol: sql`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})`.mapWith(
+          trials.rehearsalSnapshot,
+        ),
       })
       .from(trials)
       .innerJoin(experiments, eq(experiments.id, trials.experimentId))
