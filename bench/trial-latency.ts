@@ -61,7 +61,7 @@ const observerUser = await createAccount(db, {
   password: "bench-password",
   role: "observer",
 });
-const [study] = await db.insert(studies).values({ title: "Bench" }).returning();
+const [study] = await db.insert(studies).values({ title: "Bench", status: "active" }).returning();
 // The runtime looks each caller's role up in the study at hello.
 await db.insert(studyMembers).values([
   { studyId: study!.id, userId: wizardUser.id, role: "wizard" },

@@ -27,6 +27,7 @@ async function victimStudy() {
   const victim = await newPerson(db, "victim");
   const api = f.apiAs(victim);
   const study = await api.studies.create({ title: "Victim study" });
+  await api.studies.update({ studyId: study.id, status: "active" });
   const experiment = await api.experiments.create({
     studyId: study.id,
     name: "Secret protocol",

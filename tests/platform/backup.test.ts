@@ -90,6 +90,7 @@ async function studyData(url: string, mediaDir: string) {
       media: { storage, maxBytes: 8 * 1024 * 1024 },
     });
     const study = await api.studies.create({ title: `Backups: ${TRICKY}` });
+    await api.studies.update({ studyId: study.id, status: "active" });
     const e = await api.experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
     await api.experiments.saveDesign({
       experimentId: e.id,

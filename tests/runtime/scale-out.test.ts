@@ -45,7 +45,7 @@ describe.sequential("several runtime processes", () => {
           role: "researcher",
         })
       ).id;
-    const [study] = await db.insert(studies).values({ title: "S" }).returning();
+    const [study] = await db.insert(studies).values({ title: "S", status: "active" }).returning();
     await db.insert(studyMembers).values(
       ["wizard", "observer"].map((role) => ({
         studyId: study!.id,
