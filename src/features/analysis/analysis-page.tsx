@@ -143,7 +143,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
               {item.kind === "moment" ? (
                 <span>
                   <Badge tone="violet">marked</Badge> <strong>{item.m.label}</strong> {item.m.note}{" "}
-                  <span className="text-xs text-slate-400">by {item.m.authorName}</span>
+                  <span className="text-xs text-slate-500">by {item.m.authorName}</span>
                 </span>
               ) : (
                 <span>

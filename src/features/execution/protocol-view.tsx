@@ -40,7 +40,7 @@ export function StepList({
             aria-current={current ? "step" : undefined}
             className={cn(
               "rounded-md px-3 py-2 text-sm",
-              current ? "bg-brand-600 font-semibold text-white" : done ? "text-slate-400" : "text-slate-700",
+              current ? "bg-brand-600 font-semibold text-white" : done ? "text-slate-500" : "text-slate-700",
             )}
           >
             {i + 1}. {step.name}
@@ -93,7 +93,7 @@ export function StepActions({
                 ) : (
                   describeAction(a)
                 )}
-                {a.parallelGroup && <span className="ml-2 text-xs text-slate-400">together</span>}
+                {a.parallelGroup && <span className="ml-2 text-xs text-slate-500">together</span>}
               </span>
               <span className="text-xs tabular-nums text-slate-500">{took}</span>
               {onTrigger &&
@@ -103,10 +103,10 @@ export function StepActions({
                   <button
                     type="button"
                     className="text-xs text-brand-600 hover:underline"
-                    aria-label={`Run ${describeAction(a)} now`}
                     onClick={() => onTrigger(a.id)}
                   >
-                    run now
+                    {/* The action's name is heard, not shown: its row already shows it. */}
+                    run<span className="sr-only"> {describeAction(a)}</span> now
                   </button>
                 )}
             </li>

@@ -46,7 +46,7 @@ export function SessionsTab({ studyId, role }: { studyId: string; role: StudyRol
           <tr key={s.id}>
             <Td>{new Date(s.plannedAt).toLocaleString()}</Td>
             <Td className="font-mono">{s.participantCode}</Td>
-            <Td>{s.conditionName ?? <span className="text-slate-400">hidden</span>}</Td>
+            <Td>{s.conditionName ?? <span className="text-slate-500">hidden</span>}</Td>
             <Td>{s.wizardName ?? "—"}</Td>
             <Td>
               {s.trialStatus ? (
