@@ -118,7 +118,7 @@ const StepCard = memo(
             type="button"
             className="flex-1 text-left"
             onClick={() => onSelect({ kind: "step", id: step.id })}
-            aria-label={`Step ${index + 1}: ${step.name}`}
+            aria-label={`Step ${index + 1}: ${step.name}${step.description ? ` ${step.description}` : ""}`}
           >
             <span className="text-xs font-semibold text-slate-500">Step {index + 1}</span>{" "}
             <span className="font-semibold">{step.name}</span>

@@ -59,7 +59,7 @@ export function SessionsTab({ studyId, role }: { studyId: string; role: StudyRol
               {run && s.trialStatus !== "completed" && s.trialStatus !== "aborted" && (
                 <Button
                   size="sm"
-                  aria-label={`Start the session of ${s.participantCode}`}
+                  aria-label={`${s.trialId ? "Continue" : "Start"} the session of ${s.participantCode}`}
                   disabled={start.isPending}
                   onClick={() => start.mutate({ sessionId: s.id })}
                 >
