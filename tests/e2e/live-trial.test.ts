@@ -4,6 +4,7 @@
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { childPid, DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { expectAccessible } from "../support/accessibility";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
 import { connectTrial } from "../support/socket";
@@ -189,6 +190,7 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.getByLabel("Action").selectOption({ label: "Nod" });
     await wizard.getByRole("button", { name: /Send “Nod”/ }).click();
     await wizard.getByRole("region", { name: "Off script" }).getByText(/^done/).waitFor();
+    await expectAccessible(wizard, "the unscripted action form");
 
     // Off the designed path, by hand: each is allowed and logged with its kind.
     await wizard.getByRole("button", { name: "Jump to Recall question" }).click();
@@ -200,6 +202,7 @@ describe.sequential("a live trial in two browsers", () => {
       .getByText("done")
       .waitFor();
     await wizard.getByRole("button", { name: "Abort trial…" }).click();
+    await expectAccessible(wizard, "asked to confirm the abort");
     await wizard.getByRole("button", { name: "Confirm: abort this trial" }).click();
     await expect.poll(() => wizard.getByTestId("trial-status").textContent()).toBe("aborted");
 
