@@ -125,11 +125,11 @@ export function PluginsPage() {
                   <Button
                     size="sm"
                     variant="secondary"
+                    aria-label={`Sync now: ${r.name}`}
                     disabled={sync.isPending}
                     onClick={() => sync.mutate({ repositoryId: r.id })}
                   >
-                    {/* The repository's name is heard, not shown: its row already shows it. */}
-                    Sync<span className="sr-only"> {r.name}</span> now
+                    Sync now
                   </Button>
                 </Td>
               </tr>
