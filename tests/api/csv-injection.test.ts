@@ -65,7 +65,7 @@ describe("the questionnaire answers CSV", () => {
 describe("the trial events CSV", () => {
   it("keeps a note, a step's name and speech text from running, in the trial's download and the study archive", async () => {
     const { study, p } = await studyWithAnswers();
-    const e = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+    const e = await owner.experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
     await owner.experiments.saveDesign({
       experimentId: e.id,
       baseRevision: 0,

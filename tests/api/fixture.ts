@@ -91,7 +91,7 @@ type Api = ReturnType<typeof callerFactory>;
 
 /** A published one-step experiment (the robot waves) in the study: what most tests need to start a trial. */
 export async function publishedVersion(api: Api, studyId: string) {
-  const experiment = await api.experiments.create({ studyId, name: "E", robotPluginId: "nao6-ros2" });
+  const experiment = await api.experiments.create({ studyId, name: "E", robotId: "nao6-ros2" });
   await api.experiments.saveDesign({
     experimentId: experiment.id,
     baseRevision: 0,

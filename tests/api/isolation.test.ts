@@ -30,7 +30,7 @@ async function victimStudy() {
   const experiment = await api.experiments.create({
     studyId: study.id,
     name: "Secret protocol",
-    robotPluginId: "nao6-ros2",
+    robotId: "nao6-ros2",
   });
   await api.experiments.saveDesign({
     experimentId: experiment.id,

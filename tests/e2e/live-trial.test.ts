@@ -127,7 +127,7 @@ describe.sequential("a live trial in two browsers", () => {
       trialId,
     );
     expect(record).toMatchObject({
-      schemaVersion: 1,
+      schemaVersion: 2,
       protocol: { experiment: { name: "Interactive Storyteller" } },
       annotations: [{ label: "Participant hesitated" }],
     });

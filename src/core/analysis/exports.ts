@@ -4,7 +4,8 @@ import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { csvDocument } from "@/core/csv/csv";
 import type { StoredEvent } from "@/core/trial";
 
-export const TRIAL_RECORD_SCHEMA_VERSION = 1;
+// 2: the protocol is snapshot schema 2 (robotId; steps say where they lead), the version names its robotId.
+export const TRIAL_RECORD_SCHEMA_VERSION = 2;
 
 export const EVENT_COLUMNS = [
   "trial_id",

@@ -43,6 +43,7 @@ export function StudyPage({ studyId }: { studyId: string }) {
         </div>
       </div>
       <Tabs
+        label="Study sections"
         value={tab}
         onValueChange={setTab}
         tabs={[

@@ -6,7 +6,6 @@ import { asc, eq } from "drizzle-orm";
 import { elanDocument } from "@/core/analysis/elan";
 import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
 import type { TrialEvent } from "@/core/trial";
-import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import type { Database } from "@/store/client";
 import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/store/schema";
 import { recordingFileName } from "../media/recordings";
@@ -50,7 +49,9 @@ function fileOf(
       contentType: "text/csv; charset=utf-8",
       body: eventsCsv(trial.id, events),
     };
-  const protocol = (version?.snapshot ?? trial.rehearsalSnapshot) as ProtocolSnapshot;
+  const protocol = version?.snapshot ?? trial.rehearsalSnapshot;
+  // Every trial runs a published version or, for a rehearsal, the draft frozen when it began.
+  if (!protocol) throw new Error(`Trial ${trial.id} has neither a version nor a rehearsal snapshot`);
   if (format === "eaf") {
     const video = recordings.find((r) => r.status === "complete" && r.kind === "video");
     const media = video
@@ -78,7 +79,7 @@ function fileOf(
             id: version.id,
             number: version.version,
             hash: version.hash,
-            pluginId: version.pluginId,
+            robotId: version.robotId,
             pluginVersion: version.pluginVersion,
           }
         : null,

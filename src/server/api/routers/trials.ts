@@ -1,6 +1,5 @@
 import { TRPCError } from "@trpc/server";
 import { and, asc, desc, eq, sql } from "drizzle-orm";
-import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
 import { blindTrial } from "@/core/studies/blinding";
@@ -267,7 +266,9 @@ export const trialsRouter = router({
       .select({
         ...columns,
         studyId: trials.studyId,
-        protocol: sql<ProtocolSnapshot>`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})`,
+        protocol: sql`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})`.mapWith(
+          trials.rehearsalSnapshot,
+        ),
       })
       .from(trials)
       .innerJoin(experiments, eq(experiments.id, trials.experimentId))
