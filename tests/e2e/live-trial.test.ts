@@ -4,6 +4,7 @@
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { childPid, DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { expectAccessible } from "../support/accessibility";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
 import { connectTrial } from "../support/socket";
@@ -195,6 +196,7 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.getByLabel("Action").selectOption({ label: "Nod" });
     await wizard.getByRole("button", { name: /Send “Nod”/ }).click();
     await wizard.getByRole("region", { name: "Off script" }).getByText(/^done/).waitFor();
+    await expectAccessible(wizard, "the unscripted action form");
 
     // Off the designed path, by hand: each is allowed and logged with its kind.
     await wizard.getByText("Jump to another step (a deviation)").click();
@@ -213,6 +215,7 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.keyboard.press("n");
     await refused.waitFor();
     await wizard.getByRole("button", { name: "Abort trial…" }).click();
+    await expectAccessible(wizard, "asked to confirm the abort");
     await wizard.getByRole("button", { name: "Confirm: abort this trial" }).click();
     await expect.poll(() => wizard.getByTestId("trial-status").textContent()).toBe("aborted");
     // Ended, the trial's emergency stop is disarmed: no longer red, its button off, and the page says why.

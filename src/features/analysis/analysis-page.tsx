@@ -145,17 +145,17 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
               }
               className={`flex w-full gap-3 px-4 py-1.5 text-left enabled:hover:bg-slate-50 ${current === i ? "bg-brand-50" : ""}`}
             >
-              <span className="w-16 shrink-0 font-mono text-xs text-slate-500">{seconds(item.at)}</span>
+              <span className="w-16 shrink-0 font-mono text-xs text-slate-600">{seconds(item.at)}</span>
               {item.kind === "moment" ? (
                 <span>
                   <Badge tone="violet">marked</Badge> <strong>{item.m.label}</strong> {item.m.note}{" "}
-                  <span className="text-xs text-slate-400">by {item.m.authorName}</span>
+                  <span className="text-xs text-slate-600">by {item.m.authorName}</span>
                 </span>
               ) : (
                 <span>
                   {item.e.type}
                   {"actionId" in item.e && item.e.actionId ? (
-                    <span className="text-slate-500"> · {item.e.actionId.slice(0, 8)}</span>
+                    <span className="text-slate-600"> · {item.e.actionId.slice(0, 8)}</span>
                   ) : null}
                   {item.e.deviation && <Badge tone="amber">{item.e.deviation.replace("_", " ")}</Badge>}
                 </span>

@@ -122,9 +122,9 @@ const StepCard = memo(
             type="button"
             className="flex-1 text-left"
             onClick={() => onSelect({ kind: "step", id: step.id })}
-            aria-label={`Step ${index + 1}: ${step.name}`}
+            aria-label={`Step ${index + 1}: ${step.name}${step.description ? ` ${step.description}` : ""}`}
           >
-            <span className="text-xs font-semibold text-slate-400">Step {index + 1}</span>{" "}
+            <span className="text-xs font-semibold text-slate-500">Step {index + 1}</span>{" "}
             <span className="font-semibold">{step.name}</span>
             {step.description && <span className="ml-2 text-xs text-slate-500">{step.description}</span>}
           </button>
@@ -158,7 +158,7 @@ const StepCard = memo(
           data-drop-zone={step.name}
           className={cn(
             "mx-2 mb-2 rounded-md border border-dashed px-3 py-2 text-center text-xs",
-            drop.isOver ? "border-brand-500 bg-brand-50 text-brand-700" : "border-slate-300 text-slate-400",
+            drop.isOver ? "border-brand-500 bg-brand-50 text-brand-700" : "border-slate-300 text-slate-500",
           )}
         >
           {step.actions.length ? "Drop a block here to add it at the end" : "Empty step: drop a block here"}
@@ -229,7 +229,6 @@ const ActionCard = memo(function ActionCard({
         tabIndex={0}
         data-action={action.name || label}
         aria-pressed={selected}
-        aria-label={`${label}${action.name ? `: ${action.name}` : ""}`}
         onClick={() => onSelect({ kind: "action", id: action.id })}
         onKeyDown={(e) => {
           if (e.key === "Enter" || e.key === " ") {

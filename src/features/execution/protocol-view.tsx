@@ -79,16 +79,15 @@ export function StepList({
         <details>
           <summary className="cursor-pointer text-xs text-brand-700">Jump to another step (a deviation)</summary>
           <ul className="mt-1 space-y-1">
-            {protocol.steps.map((step, i) =>
+            {protocol.steps.map((step) =>
               step.id === state.currentStepId ? null : (
                 <li key={step.id}>
                   <button
                     type="button"
                     className="text-left text-xs text-brand-700 underline-offset-2 hover:underline"
-                    aria-label={`Jump to ${step.name}`}
                     onClick={() => onJump(step.id)}
                   >
-                    {i + 1}. {step.name}
+                    Jump to {step.name}
                   </button>
                 </li>
               ),
@@ -132,7 +131,7 @@ export function StepActions({
                 ) : (
                   describeAction(a)
                 )}
-                {a.parallelGroup && <span className="ml-2 text-xs text-slate-400">together</span>}
+                {a.parallelGroup && <span className="ml-2 text-xs text-slate-500">together</span>}
               </span>
               <span className="text-xs tabular-nums text-slate-500">{took}</span>
               {onTrigger &&
@@ -142,10 +141,10 @@ export function StepActions({
                   <button
                     type="button"
                     className="text-xs text-brand-600 hover:underline"
-                    aria-label={`Run ${describeAction(a)} now`}
                     onClick={() => onTrigger(a.id)}
                   >
-                    run now
+                    {/* The action's name is heard, not shown: its row already shows it. */}
+                    run<span className="sr-only"> {describeAction(a)}</span> now
                   </button>
                 )}
             </li>

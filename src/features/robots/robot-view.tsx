@@ -63,7 +63,7 @@ export function RobotView({ url }: { url: string }) {
           {state?.speaking ? (
             `“${state.speaking}”`
           ) : (
-            <span className="text-slate-400">{state?.lastSaid ? `Last said: “${state.lastSaid}”` : "…"}</span>
+            <span className="text-slate-500">{state?.lastSaid ? `Last said: “${state.lastSaid}”` : "…"}</span>
           )}
         </div>
         <RobotFigure state={state} />
