@@ -2,7 +2,7 @@
 // researcher can fix in the designer, placed on its step and action and said
 // without the engine's vocabulary. The flow checks walk the draft the way the
 // trial engine does (../trial/decide.ts).
-import { parseActionType, portability, validateParameters, type Plugin } from "../plugins";
+import { parseActionType, portability, validateParameters, type Channels, type Plugin } from "../plugins";
 import { blockFor, type Block } from "./blocks";
 import type { DesignAction, DesignDraft, DesignStep } from "./types";
 
@@ -34,7 +34,8 @@ interface Option {
 /** Where each answer of a branch leads: a step index, or why it leads nowhere. */
 type Route = { option: Option; to: number } | { option: Option; to: null; why: "unset" | "gone" };
 
-export function validateDesign(draft: DesignDraft, plugin: Plugin | null): DesignIssue[] {
+/** With `channels` (this server's ways to the robot), an action none of them carries is said not to run here. */
+export function validateDesign(draft: DesignDraft, plugin: Plugin | null, channels?: Channels): DesignIssue[] {
   if (draft.steps.length === 0) {
     return [
       {
@@ -125,7 +126,7 @@ export function validateDesign(draft: DesignDraft, plugin: Plugin | null): Desig
     });
   });
   placed.push(...flowIssues(draft, indexById));
-  if (plugin) placed.push(...robotIssues(draft, plugin, reported));
+  if (plugin) placed.push(...robotIssues(draft, plugin, reported, channels));
   return placed.sort((x, y) => x.step - y.step || x.action - y.action).map((p) => p.issue);
 }
 
@@ -197,11 +198,11 @@ function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[
   return issues;
 }
 
-function robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>): Placed[] {
+function robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>, channels?: Channels): Placed[] {
   const position = new Map(
     draft.steps.flatMap((step, s) => step.actions.map((action, a) => [action.id, { step, s, action, a }] as const)),
   );
-  return portability(draft, plugin).actions.flatMap((result): Placed[] => {
+  return portability(draft, plugin, channels).actions.flatMap((result): Placed[] => {
     const { step, s, action, a } = position.get(result.actionId)!;
     const block = blockFor(action.type, plugin);
     if (!block) return []; // already an unknown block
