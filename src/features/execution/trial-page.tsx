@@ -1,9 +1,9 @@
 "use client";
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
-import { useCallback } from "react";
+import { useCallback, useMemo } from "react";
 import { studyRoleMay } from "@/core/access/policy";
-import type { TrialProtocol } from "@/core/trial";
+import { actionProblems, type TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
@@ -39,6 +39,7 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
   // The runtime decides (a wizard runs only the trials assigned to them); until it has said, the study role guides.
   const wizard = live.mayRun ?? studyRoleMay(trial.myRole, "trial.run");
   const started = live.events.find((e) => e.type === "trial.started");
+  const problems = useMemo(() => actionProblems(live.events), [live.events]);
   const ended = live.state.status === "completed" || live.state.status === "aborted";
   const { command } = live;
   const logRecording = useCallback(
@@ -91,9 +92,10 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
           <StepActions
             protocol={protocol}
             state={live.state}
+            problems={problems}
             onTrigger={wizard ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined}
           />
-          <OffScript events={live.events} state={live.state} />
+          <OffScript events={live.events} state={live.state} problems={problems} />
           {wizard && <WizardControls protocol={protocol} state={live.state} send={live.command} />}
         </div>
         <div className="space-y-4">
