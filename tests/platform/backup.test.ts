@@ -92,7 +92,8 @@ async function studyData(url: string, mediaDir: string) {
       robotChannels: DEMO_CHANNELS,
     });
     const study = await api.studies.create({ title: `Backups: ${TRICKY}` });
-    const e = await api.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+    await api.studies.update({ studyId: study.id, status: "active" });
+    const e = await api.experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
     await api.experiments.saveDesign({
       experimentId: e.id,
       baseRevision: 0,

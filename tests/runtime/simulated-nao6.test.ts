@@ -39,7 +39,7 @@ async function rehearseEveryAction(app: RunningApp) {
   const experiment = await researcher.experiments.create.mutate({
     studyId: study!.id,
     name: "Every NAO6 action",
-    robotPluginId: ROBOT,
+    robotId: ROBOT,
   });
   const actions = nao.actions.map((a) => {
     const required = (a.parameterSchema.required ?? []).filter((key) => EXAMPLES[key]);
@@ -105,9 +105,7 @@ describe.sequential("every action of the NAO6 plugin on the default simulated NA
   });
 
   it("completes each of them in a rehearsal through the runtime, and the robot shows the postures", async () => {
-    const url = /speaks rosbridge at (ws:\/\/[\d.:]+)/.exec(app.output())?.[1];
-    expect(url).toBeDefined();
-    const robotPage = new RosbridgeTransport({ url: url! });
+    const robotPage = new RosbridgeTransport({ url: app.simulatorUrl });
     const shown: RobotState[] = [];
     robotPage.subscribe(ROBOT_STATE_TOPIC, "std_msgs/msg/String", (m) =>
       shown.push(JSON.parse((m as { data: string }).data) as RobotState),
@@ -127,8 +125,7 @@ describe.sequential("every action of the NAO6 plugin on the default simulated NA
   });
 
   it("named as a real robot with no SSH address, the designer and the runtime agree on what cannot run, and why", async () => {
-    const simulatorUrl = /speaks rosbridge at (ws:\/\/[\d.:]+)/.exec(app.output())![1]!;
-    const real = await startApp({ env: { HRI_ROSBRIDGE_URL: simulatorUrl } });
+    const real = await startApp({ env: { HRI_ROSBRIDGE_URL: app.simulatorUrl } });
     try {
       const r = await rehearseEveryAction(real);
       expect(r.channels).toEqual({ rosbridge: true, simulator: true, ssh: false, http: false });

@@ -30,9 +30,11 @@ const events: StoredEvent[] = [
 
 describe("the events CSV", () => {
   it("parses back to the same events, quotes, commas, newlines and all", () => {
-    const [header, ...rows] = parseCsv(eventsCsv("t1", events));
+    const [header, ...rows] = parseCsv(eventsCsv("t1", events, { wizard: "Wim Wizard", createdBy: "Rita Researcher" }));
     expect(header).toEqual([
       "trial_id",
+      "wizard",
+      "created_by",
       "seq",
       "type",
       "step_id",
@@ -44,9 +46,11 @@ describe("the events CSV", () => {
       "actor_id",
       "payload",
     ]);
-    expect(rows.map((r) => JSON.parse(r[10]!))).toEqual(JSON.parse(JSON.stringify(events)));
-    expect(rows[1]!.slice(0, 10)).toEqual([
+    expect(rows.map((r) => JSON.parse(r[12]!))).toEqual(JSON.parse(JSON.stringify(events)));
+    expect(rows[1]!.slice(0, 12)).toEqual([
       "t1",
+      "Wim Wizard",
+      "Rita Researcher",
       "2",
       "action.requested",
       "s1",
@@ -57,5 +61,12 @@ describe("the events CSV", () => {
       "2026-01-01T10:00:00.012Z",
       "u1",
     ]);
+  });
+});
+
+describe("the events CSV of a trial nobody ran yet", () => {
+  it("leaves the wizard empty and still names who created it", () => {
+    const [, row] = parseCsv(eventsCsv("t1", events.slice(0, 1), { wizard: null, createdBy: "Rita Researcher" }));
+    expect(row!.slice(0, 3)).toEqual(["t1", "", "Rita Researcher"]);
   });
 });

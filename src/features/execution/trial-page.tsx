@@ -1,7 +1,7 @@
 "use client";
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
-import { useCallback, useMemo } from "react";
+import { useCallback, useEffect, useMemo } from "react";
 import { studyRoleMay } from "@/core/access/policy";
 import { actionProblems, type TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
@@ -12,6 +12,7 @@ import { OffScript, StepActions, StepList } from "./protocol-view";
 import { TrialQuestionnaires } from "@/features/questionnaires/trial-questionnaires";
 import { RecordingPanel } from "@/features/recording/recording-panel";
 import { TrialClock } from "./trial-clock";
+import { TrialPeople } from "./trial-people";
 import { useTrialSocket } from "./use-trial-socket";
 import { SHORTCUTS, WizardControls } from "./wizard-controls";
 
@@ -20,7 +21,13 @@ export function TrialPage({ trialId }: { trialId: string }) {
   const trial = useQuery(trpc.trials.get.queryOptions({ trialId }));
   if (trial.isPending) return <Spinner />;
   if (trial.error) return <Problem error={trial.error} />;
-  return <LiveTrial trial={trial.data} protocol={trial.data.protocol as TrialProtocol} />;
+  return (
+    <LiveTrial
+      trial={trial.data}
+      protocol={trial.data.protocol as TrialProtocol}
+      refresh={() => void trial.refetch()}
+    />
+  );
 }
 
 type Trial = {
@@ -31,10 +38,13 @@ type Trial = {
   participantCode: string | null;
   isRehearsal: boolean;
   version: number | null;
+  wizardId: string | null;
+  wizardName: string | null;
+  createdByName: string | null;
   myRole: "owner" | "researcher" | "wizard" | "observer";
 };
 
-function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol }) {
+function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: TrialProtocol; refresh: () => void }) {
   const live = useTrialSocket(trial.id, protocol);
   // The runtime decides (a wizard runs only the trials assigned to them); until it has said, the study role guides.
   const wizard = live.mayRun ?? studyRoleMay(trial.myRole, "trial.run");
@@ -42,6 +52,12 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
   const problems = useMemo(() => actionProblems(live.events), [live.events]);
   const ended = live.state.status === "completed" || live.state.status === "aborted";
   const { command } = live;
+  // Starting an unassigned trial records its starter as the wizard: read who that was.
+  const claimed = Boolean(started) && trial.wizardId === null;
+  // biome-ignore lint/correctness/useExhaustiveDependencies: refresh is a new function on every render; once per start is enough
+  useEffect(() => {
+    if (claimed) refresh();
+  }, [claimed]);
   const logRecording = useCallback(
     (recordingId: string, offsetMs: number) => void command({ kind: "recording", recordingId, offsetMs }),
     [command],
@@ -59,7 +75,17 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
         <Badge tone={STATUS_TONE[live.state.status]}>
           <span data-testid="trial-status">{live.state.status.replace("_", " ")}</span>
         </Badge>
-        {live.state.emergencyStopped && <Badge tone="red">emergency stop</Badge>}
+        {/* Red only while it holds a live trial; once the trial has ended it is history. */}
+        {live.state.emergencyStopped &&
+          (ended ? (
+            <Badge>
+              <span data-testid="emergency-stop">emergency stop used</span>
+            </Badge>
+          ) : (
+            <Badge tone="red">
+              <span data-testid="emergency-stop">emergency stop</span>
+            </Badge>
+          ))}
         <span className="ml-auto flex items-center gap-4">
           {live.robot && (
             <Badge tone={live.robot.connected ? "green" : "red"}>
@@ -74,6 +100,7 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
           <TrialClock startedAt={started?.serverTime ?? null} stopped={ended} />
         </span>
       </div>
+      <TrialPeople wizardName={trial.wizardName} createdByName={trial.createdByName} started={Boolean(started)} />
       {live.notice && <Problem error={{ message: live.notice }} />}
       {ended && (
         <Link href={`/trials/${trial.id}/analysis`} className="inline-block font-medium text-brand-600 hover:underline">

@@ -6,7 +6,6 @@ import { asc, eq } from "drizzle-orm";
 import { elanDocument } from "@/core/analysis/elan";
 import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
 import type { TrialEvent } from "@/core/trial";
-import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import type { Database } from "@/store/client";
 import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/store/schema";
 import { recordingFileName } from "../media/recordings";
@@ -15,6 +14,13 @@ import { eventsSince } from "@/store/event-store";
 
 export type TrialFormat = "csv" | "json" | "eaf";
 
+/** The name of an account, or null (none given, or the account was deleted). */
+async function nameOf(db: Database, userId: string | null) {
+  if (!userId) return null;
+  const [person] = await db.select({ name: user.name }).from(user).where(eq(user.id, userId));
+  return person?.name ?? null;
+}
+
 async function readTrial(db: Database, trialId: string) {
   const [trial] = await db.select().from(trials).where(eq(trials.id, trialId));
   const [version] = trial!.versionId
@@ -22,6 +28,8 @@ async function readTrial(db: Database, trialId: string) {
     : [];
   return {
     trial: trial!,
+    // Who ran it and who created it: two named fields, as the trial page shows them.
+    people: { wizard: await nameOf(db, trial!.wizardId), createdBy: await nameOf(db, trial!.createdBy) },
     version,
     events: await eventsSince(db, trialId),
     marked: await db
@@ -40,7 +48,7 @@ async function readTrial(db: Database, trialId: string) {
 }
 
 function fileOf(
-  { trial, version, events, marked, recordings, questionnaires }: Awaited<ReturnType<typeof readTrial>>,
+  { trial, people, version, events, marked, recordings, questionnaires }: Awaited<ReturnType<typeof readTrial>>,
   format: TrialFormat,
 ) {
   const name = `trial-${trial.id}`;
@@ -48,9 +56,11 @@ function fileOf(
     return {
       filename: `${name}-events.csv`,
       contentType: "text/csv; charset=utf-8",
-      body: eventsCsv(trial.id, events),
+      body: eventsCsv(trial.id, events, people),
     };
-  const protocol = (version?.snapshot ?? trial.rehearsalSnapshot) as ProtocolSnapshot;
+  const protocol = version?.snapshot ?? trial.rehearsalSnapshot;
+  // Every trial runs a published version or, for a rehearsal, the draft frozen when it began.
+  if (!protocol) throw new Error(`Trial ${trial.id} has neither a version nor a rehearsal snapshot`);
   if (format === "eaf") {
     const video = recordings.find((r) => r.status === "complete" && r.kind === "video");
     const media = video
@@ -72,13 +82,15 @@ function fileOf(
   const record = trialRecordJson({
     trial: {
       ...trial,
+      wizardName: people.wizard,
+      createdByName: people.createdBy,
       rehearsalSnapshot: undefined,
       version: version
         ? {
             id: version.id,
             number: version.version,
             hash: version.hash,
-            pluginId: version.pluginId,
+            robotId: version.robotId,
             pluginVersion: version.pluginVersion,
           }
         : null,
