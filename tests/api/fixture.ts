@@ -26,6 +26,8 @@ const SYSTEM_ROLE: Record<Exclude<Caller, "anonymous">, SystemRole> = {
 
 const callerFactory = createCallerFactory(appRouter);
 export const TEST_SECRET = "test-secret-".padEnd(40, "x");
+/** The ways to the robot `npm start` opens with no robot settings: the simulated NAO6's rosbridge and SSH. */
+export const DEMO_CHANNELS = { rosbridge: true, simulator: true, ssh: true, http: false };
 
 export async function newPerson(db: Database, label: string, role: SystemRole = "researcher"): Promise<SessionUser> {
   const email = `${label}-${crypto.randomUUID().slice(0, 8)}@example.org`;
@@ -50,6 +52,7 @@ export async function buildFixture(db: Database) {
     secret: TEST_SECRET,
     runtimeUrl: "ws://127.0.0.1:1",
     media,
+    robotChannels: DEMO_CHANNELS,
   });
   const context = (caller: Caller) => contextOf(caller === "anonymous" ? null : people[caller]);
   const api = (caller: Caller) => callerFactory(context(caller));

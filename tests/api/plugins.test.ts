@@ -7,7 +7,7 @@ import { appRouter } from "../../src/server/api/root";
 import { createCallerFactory } from "../../src/server/api/trpc";
 import { seedDemo } from "../../src/server/seed/demo";
 import { freshDatabase } from "../support/db";
-import { buildFixture, TEST_SECRET, testMedia } from "./fixture";
+import { buildFixture, DEMO_CHANNELS, TEST_SECRET, testMedia } from "./fixture";
 
 const { db, close } = await freshDatabase();
 await seedDemo(db);
@@ -45,6 +45,7 @@ describe("robot plugins on the server", () => {
       secret: TEST_SECRET,
       runtimeUrl: "ws://127.0.0.1:1",
       media: testMedia(),
+      robotChannels: DEMO_CHANNELS,
     });
     const [study] = await asOwner.studies.mine();
     const [storyteller] = await asOwner.experiments.list({ studyId: study!.id });

@@ -197,6 +197,21 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.getByRole("button", { name: /Send “Nod”/ }).click();
     await wizard.getByRole("region", { name: "Off script" }).getByText(/^done/).waitFor();
     await expectAccessible(wizard, "the unscripted action form");
+    // One the robot cannot do (sent past the form, as another client could): the reason, in words, beside its badge.
+    const socket = await wizardApi.trials.socketToken
+      .mutate({ trialId: wizard.url().split("/").pop()! })
+      .then(({ url, token }) => connectTrial(url, token));
+    await socket.command("cartwheel", {
+      kind: "unscripted",
+      actionType: "posture",
+      parameters: { posture: "cartwheel" },
+    });
+    socket.close();
+    const offScript = wizard.getByRole("region", { name: "Off script" });
+    await offScript.getByText(/^failed/).waitFor();
+    expect(await offScript.getByRole("alert").textContent()).toBe(
+      'Posture: "posture" must be one of "stand", "sit", "crouch", "rest".',
+    );
 
     // Off the designed path, by hand: each is allowed and logged with its kind.
     await wizard.getByText("Jump to another step (a deviation)").click();
@@ -232,6 +247,7 @@ describe.sequential("a live trial in two browsers", () => {
     const seqs = log.map((e) => e.seq);
     expect(seqs).toEqual(seqs.map((_, i) => i + 1));
     expect(log.filter((e) => e.deviation).map((e) => e.deviation)).toEqual([
+      "unscripted",
       "unscripted",
       "manual_jump",
       "out_of_order",

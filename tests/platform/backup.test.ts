@@ -8,6 +8,7 @@ import { mkdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 import postgres from "postgres";
 import { afterAll, describe, expect, it } from "vitest";
+import { DEMO_CHANNELS } from "../api/fixture";
 import { appRouter } from "../../src/server/api/root";
 import { readJournal, migrateTo } from "../../src/server/backup/migrations";
 import { createDatabase } from "../../src/store/client";
@@ -88,6 +89,7 @@ async function studyData(url: string, mediaDir: string) {
       secret: TEST_SECRET,
       runtimeUrl: "ws://127.0.0.1:1",
       media: { storage, maxBytes: 8 * 1024 * 1024 },
+      robotChannels: DEMO_CHANNELS,
     });
     const study = await api.studies.create({ title: `Backups: ${TRICKY}` });
     await api.studies.update({ studyId: study.id, status: "active" });

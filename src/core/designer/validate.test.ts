@@ -296,3 +296,27 @@ describe("the Interactive Storyteller", () => {
     expect(hasErrors(issues)).toBe(false);
   });
 });
+
+describe("on this server's ways to the robot", () => {
+  const nao = loadPlugin("nao6-ros2.json", readFileSync("plugins/nao6-ros2.json", "utf8"));
+  if (!nao.ok) throw new Error(JSON.stringify(nao.errors));
+  const postures = draft([{ type: "posture", parameters: { posture: "sit" } }, { type: "nao6-ros2.rest" }, say()]);
+  const rosbridgeOnly = { rosbridge: true, simulator: true, ssh: false, http: false };
+
+  it("says which actions cannot run here, and why, as a warning", () => {
+    const issues = validateDesign(postures, nao.value, rosbridgeOnly);
+    expect(issues.map((i) => [i.severity, i.code, i.actionId, i.message])).toEqual(
+      ["s1a1", "s1a2"].map((id, n) => [
+        "warning",
+        "unsupported_on_robot",
+        id,
+        `"${["Posture", "Rest"][n]}" cannot run on NAO6 Robot (ROS2 Integration): it needs SSH to the robot, and this server has no SSH address for it: set HRI_ROBOT_SSH_HOST (see docs/robot-setup.md)`,
+      ]),
+    );
+  });
+
+  it("says nothing when the server reaches the robot every way, or is not asked", () => {
+    expect(validateDesign(postures, nao.value, { ...rosbridgeOnly, ssh: true })).toEqual([]);
+    expect(validateDesign(postures, nao.value)).toEqual([]);
+  });
+});

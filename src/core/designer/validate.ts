@@ -2,7 +2,7 @@
 // researcher can fix in the designer, placed on its step and action and said
 // without the engine's vocabulary. The flow checks walk the draft the way the
 // trial engine does (../trial/decide.ts).
-import { parseActionType, portability, validateParameters, type Plugin } from "../plugins";
+import { parseActionType, portability, validateParameters, type Channels, type Plugin } from "../plugins";
 import { exitOf } from "../protocol/flow";
 import { blockFor, type Block } from "./blocks";
 import type { DesignAction, DesignDraft, DesignStep } from "./types";
@@ -35,7 +35,8 @@ interface Option {
 /** Where each answer of a branch leads: a step index, or why it leads nowhere. */
 type Route = { option: Option; to: number } | { option: Option; to: null; why: "unset" | "gone" };
 
-export function validateDesign(draft: DesignDraft, plugin: Plugin | null): DesignIssue[] {
+/** With `channels` (this server's ways to the robot), an action none of them carries is said not to run here. */
+export function validateDesign(draft: DesignDraft, plugin: Plugin | null, channels?: Channels): DesignIssue[] {
   if (draft.steps.length === 0) {
     return [
       {
@@ -126,7 +127,7 @@ export function validateDesign(draft: DesignDraft, plugin: Plugin | null): Desig
     });
   });
   placed.push(...flowIssues(draft, indexById));
-  if (plugin) placed.push(...robotIssues(draft, plugin, reported));
+  if (plugin) placed.push(...robotIssues(draft, plugin, reported, channels));
   return placed.sort((x, y) => x.step - y.step || x.action - y.action).map((p) => p.issue);
 }
 
@@ -255,11 +256,11 @@ function runsInto(draft: DesignDraft, from: number, answers: Map<number, string>
   return null;
 }
 
-function robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>): Placed[] {
+function robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>, channels?: Channels): Placed[] {
   const position = new Map(
     draft.steps.flatMap((step, s) => step.actions.map((action, a) => [action.id, { step, s, action, a }] as const)),
   );
-  return portability(draft, plugin).actions.flatMap((result): Placed[] => {
+  return portability(draft, plugin, channels).actions.flatMap((result): Placed[] => {
     const { step, s, action, a } = position.get(result.actionId)!;
     const block = blockFor(action.type, plugin);
     if (!block) return []; // already an unknown block

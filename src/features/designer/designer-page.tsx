@@ -73,7 +73,9 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
 
   // Checks run a beat behind typing: the timeline stays responsive on big protocols.
   const checked = useDeferredValue(draft);
-  const issues = useMemo(() => (checked ? validateDesign(checked, plugin) : []), [checked, plugin]);
+  // Checked against this server's ways to the robot too: what it calls runnable, the runtime runs.
+  const channels = robots.data?.channels;
+  const issues = useMemo(() => (checked ? validateDesign(checked, plugin, channels) : []), [checked, plugin, channels]);
   const marks = useMemo(() => {
     const map = new Map<string, Marks>();
     for (const issue of issues) {

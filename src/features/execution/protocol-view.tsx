@@ -1,7 +1,7 @@
 "use client";
 // The protocol as both the wizard and observers see it: the way taken, the
 // current step, what comes next, and each action's status and timing from
-// the event log.
+// the event log; an action that was not done says why beside its badge.
 import { type ActionState, pathTaken, type TrialProtocol, type TrialState, upcoming } from "@/core/trial";
 import { cn } from "@/ui/cn";
 import { Badge, type Tone } from "@/ui/surface";
@@ -102,10 +102,13 @@ export function StepList({
 export function StepActions({
   protocol,
   state,
+  problems,
   onTrigger,
 }: {
   protocol: TrialProtocol;
   state: TrialState;
+  /** Why actions were not done, by id (actionProblems). */
+  problems: Record<string, string>;
   onTrigger?: (actionId: string) => void;
 }) {
   const step = protocol.steps.find((s) => s.id === state.currentStepId);
@@ -123,7 +126,11 @@ export function StepActions({
               ? `${((s.finishedAt - s.requestedAt) / 1000).toFixed(1)} s`
               : "";
           return (
-            <li key={a.id} className="flex items-center gap-3 px-4 py-2 text-sm" data-testid={`action-${a.id}`}>
+            <li
+              key={a.id}
+              className="flex flex-wrap items-center gap-3 px-4 py-2 text-sm"
+              data-testid={`action-${a.id}`}
+            >
               <Badge tone={STATUS[s.status].tone}>{STATUS[s.status].label}</Badge>
               <span className="flex-1">
                 {a.type === "wizard_instruction" ? (
@@ -147,6 +154,7 @@ export function StepActions({
                     run<span className="sr-only"> {describeAction(a)}</span> now
                   </button>
                 )}
+              <WhyNotDone text={problems[a.id]} />
             </li>
           );
         })}
@@ -159,6 +167,7 @@ export function StepActions({
 export function OffScript({
   events,
   state,
+  problems,
 }: {
   events: Array<{
     type: string;
@@ -168,6 +177,7 @@ export function OffScript({
     parameters?: Record<string, unknown>;
   }>;
   state: TrialState;
+  problems: Record<string, string>;
 }) {
   const unscripted = events.filter((e) => e.type === "action.requested" && e.scripted === false);
   if (!unscripted.length) return null;
@@ -178,13 +188,24 @@ export function OffScript({
         {unscripted.map((e) => {
           const s = state.actions[e.actionId!];
           return (
-            <li key={e.actionId} className="flex items-center gap-3 px-4 py-2 text-sm">
+            <li key={e.actionId} className="flex flex-wrap items-center gap-3 px-4 py-2 text-sm">
               {s && <Badge tone={STATUS[s.status].tone}>{STATUS[s.status].label}</Badge>}
               <span>{describeAction({ type: e.actionType ?? "", parameters: e.parameters ?? {} })}</span>
+              <WhyNotDone text={problems[e.actionId!]} />
             </li>
           );
         })}
       </ul>
     </section>
+  );
+}
+
+/** The reason, on its own line under the action; announced when it appears. */
+function WhyNotDone({ text }: { text: string | undefined }) {
+  if (!text) return null;
+  return (
+    <p role="alert" className="basis-full text-xs text-red-700" data-testid="action-problem">
+      {text}
+    </p>
   );
 }

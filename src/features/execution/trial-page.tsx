@@ -1,9 +1,9 @@
 "use client";
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
-import { useCallback, useEffect } from "react";
+import { useCallback, useEffect, useMemo } from "react";
 import { studyRoleMay } from "@/core/access/policy";
-import type { TrialProtocol } from "@/core/trial";
+import { actionProblems, type TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
@@ -49,6 +49,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
   // The runtime decides (a wizard runs only the trials assigned to them); until it has said, the study role guides.
   const wizard = live.mayRun ?? studyRoleMay(trial.myRole, "trial.run");
   const started = live.events.find((e) => e.type === "trial.started");
+  const problems = useMemo(() => actionProblems(live.events), [live.events]);
   const ended = live.state.status === "completed" || live.state.status === "aborted";
   const { command } = live;
   // Starting an unassigned trial records its starter as the wizard: read who that was.
@@ -118,9 +119,10 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           <StepActions
             protocol={protocol}
             state={live.state}
+            problems={problems}
             onTrigger={wizard ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined}
           />
-          <OffScript events={live.events} state={live.state} />
+          <OffScript events={live.events} state={live.state} problems={problems} />
           {wizard && <WizardControls protocol={protocol} state={live.state} send={live.command} />}
         </div>
         <div className="space-y-4">

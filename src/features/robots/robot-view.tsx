@@ -69,7 +69,7 @@ export function RobotView({ url }: { url: string }) {
         <RobotFigure state={state} />
         <dl className="grid grid-cols-2 gap-x-8 gap-y-1 text-sm sm:grid-cols-4">
           <Fact label="Gesture" value={state?.gesture ?? state?.animation ?? "none"} />
-          <Fact label="Posture" value={state?.posture ?? "—"} />
+          <Fact label="Posture" value={state ? `${state.posture}${state.awake ? "" : " (motors off)"}` : "—"} />
           <Fact
             label="Moving"
             value={
@@ -103,6 +103,8 @@ function Fact({ label, value }: { label: string; value: string }) {
 function RobotFigure({ state }: { state: RobotState | null }) {
   const tilt = ((state?.headPitch ?? 0) * 180) / Math.PI;
   const waving = Boolean(state?.gesture ?? state?.animation);
+  // Seated, crouched or at rest, the legs fold (NAOqi's Sit, SitRelax, Crouch; rest is crouched).
+  const legs = /^(sit|crouch|rest)/.test(state?.posture ?? "") ? 24 : 44;
   return (
     <svg viewBox="0 0 120 160" className="h-56" aria-hidden>
       <g transform={`rotate(${tilt} 60 40)`}>
@@ -122,24 +124,8 @@ function RobotFigure({ state }: { state: RobotState | null }) {
         transform={waving ? "rotate(-30 22 50)" : undefined}
       />
       <rect x="92" y="58" width="12" height="40" rx="6" fill="#f8fafc" stroke="#475569" />
-      <rect
-        x="42"
-        y="108"
-        width="14"
-        height={state?.posture === "sit" ? 24 : 44}
-        rx="6"
-        fill="#f8fafc"
-        stroke="#475569"
-      />
-      <rect
-        x="64"
-        y="108"
-        width="14"
-        height={state?.posture === "sit" ? 24 : 44}
-        rx="6"
-        fill="#f8fafc"
-        stroke="#475569"
-      />
+      <rect x="42" y="108" width="14" height={legs} rx="6" fill="#f8fafc" stroke="#475569" />
+      <rect x="64" y="108" width="14" height={legs} rx="6" fill="#f8fafc" stroke="#475569" />
     </svg>
   );
 }
