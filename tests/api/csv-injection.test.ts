@@ -100,7 +100,7 @@ describe("the trial events CSV", () => {
     expect(rows.find((r) => r[2] === "step.entered")![3]).toBe("'=cmd|' /C calc'!A0");
     expect(rows.find((r) => r[2] === "action.requested")![5]).toBe("'@say");
     // Speech text, notes and names sit inside the payload's JSON, a cell that starts with "{".
-    expect(rows.find((r) => r[2] === "note.added")![10]).toMatch(/^\{.*HYPERLINK/);
+    expect(rows.find((r) => r[2] === "note.added")![12]).toMatch(/^\{.*HYPERLINK/);
 
     const archive = unzipSync((await owner.studies.exportArchive({ studyId: study.id })).body as Uint8Array);
     const files = Object.entries(archive).filter(([name]) => name.endsWith(".csv"));

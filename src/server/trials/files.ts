@@ -5,6 +5,7 @@
 import { asc, eq } from "drizzle-orm";
 import { elanDocument } from "@/core/analysis/elan";
 import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
+import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent } from "@/core/trial";
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import type { Database } from "@/store/client";
@@ -12,6 +13,7 @@ import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, t
 import { recordingFileName } from "../media/recordings";
 import { submitted } from "../questionnaires/responses";
 import { eventsSince } from "@/store/event-store";
+import { trialActionNames } from "./action-names";
 
 export type TrialFormat = "csv" | "json" | "eaf";
 
@@ -36,21 +38,23 @@ async function readTrial(db: Database, trialId: string) {
       .where(eq(mediaRecordings.trialId, trialId))
       .orderBy(asc(mediaRecordings.createdAt)),
     questionnaires: await submitted(db, eq(questionnaireLinks.trialId, trialId)),
+    names: await trialActionNames(db, trialId),
   };
 }
 
 function fileOf(
-  { trial, version, events, marked, recordings, questionnaires }: Awaited<ReturnType<typeof readTrial>>,
+  { trial, version, events, marked, recordings, questionnaires, names }: Awaited<ReturnType<typeof readTrial>>,
   format: TrialFormat,
 ) {
   const name = `trial-${trial.id}`;
+  const protocol = (version?.snapshot ?? trial.rehearsalSnapshot) as ProtocolSnapshot;
+  const named = trialNames(protocol, events, names);
   if (format === "csv")
     return {
       filename: `${name}-events.csv`,
       contentType: "text/csv; charset=utf-8",
-      body: eventsCsv(trial.id, events),
+      body: eventsCsv(trial.id, events, named),
     };
-  const protocol = (version?.snapshot ?? trial.rehearsalSnapshot) as ProtocolSnapshot;
   if (format === "eaf") {
     const video = recordings.find((r) => r.status === "complete" && r.kind === "video");
     const media = video
@@ -66,38 +70,42 @@ function fileOf(
       annotations: marked,
       date: (trial.t0 ?? trial.createdAt).toISOString(),
       media,
+      names,
     });
     return { filename: `${name}.eaf`, contentType: "application/xml; charset=utf-8", body };
   }
-  const record = trialRecordJson({
-    trial: {
-      ...trial,
-      rehearsalSnapshot: undefined,
-      version: version
-        ? {
-            id: version.id,
-            number: version.version,
-            hash: version.hash,
-            pluginId: version.pluginId,
-            pluginVersion: version.pluginVersion,
-          }
-        : null,
+  const record = trialRecordJson(
+    {
+      trial: {
+        ...trial,
+        rehearsalSnapshot: undefined,
+        version: version
+          ? {
+              id: version.id,
+              number: version.version,
+              hash: version.hash,
+              pluginId: version.pluginId,
+              pluginVersion: version.pluginVersion,
+            }
+          : null,
+      },
+      protocol,
+      events,
+      annotations: marked,
+      questionnaires,
+      recordings: recordings.map((m) => ({
+        id: m.id,
+        kind: m.kind,
+        mimeType: m.mimeType,
+        status: m.status,
+        sizeBytes: m.sizeBytes,
+        offsetMs: m.offsetMs,
+        durationMs: m.durationMs,
+        url: `/api/recordings/${m.id}/media`,
+      })),
     },
-    protocol,
-    events,
-    annotations: marked,
-    questionnaires,
-    recordings: recordings.map((m) => ({
-      id: m.id,
-      kind: m.kind,
-      mimeType: m.mimeType,
-      status: m.status,
-      sizeBytes: m.sizeBytes,
-      offsetMs: m.offsetMs,
-      durationMs: m.durationMs,
-      url: `/api/recordings/${m.id}/media`,
-    })),
-  });
+    named,
+  );
   return { filename: `${name}.json`, contentType: "application/json", body: record };
 }
 

@@ -19,6 +19,7 @@ import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "@/core/protocol/snapshot";
 import { eventsSince } from "@/store/event-store";
 import { trialFile } from "../../trials/files";
+import { trialActionNames } from "../../trials/action-names";
 import { assertMayTakePart } from "../../studies/consent-gate";
 import { signSocketToken } from "@/store/socket-token";
 import { qualified } from "@/store/qualified";
@@ -275,7 +276,8 @@ export const trialsRouter = router({
       .leftJoin(participants, eq(participants.id, trials.participantId))
       .leftJoin(user, eq(user.id, trials.wizardId))
       .where(eq(trials.id, ctx.row.id));
-    const trial = { ...row!, myRole: ctx.studyRole };
+    // The library's names of the robot's own actions, for actions without a label.
+    const trial = { ...row!, actionNames: await trialActionNames(ctx.db, ctx.row.id), myRole: ctx.studyRole };
     return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
   }),
 });
