@@ -1,6 +1,7 @@
 "use client";
 // The protocol as both the wizard and observers see it: steps, the current
 // one highlighted, and each action's status and timing from the event log.
+import { actionName, type ActionNames } from "@/core/designer/action-name";
 import type { ActionState, TrialProtocol, TrialState } from "@/core/trial";
 import { cn } from "@/ui/cn";
 import { Badge, type Tone } from "@/ui/surface";
@@ -14,11 +15,6 @@ const STATUS: Record<ActionState["status"], { label: string; tone: Tone }> = {
   timed_out: { label: "timed out", tone: "red" },
   skipped: { label: "skipped", tone: "amber" },
 };
-
-export function describeAction(a: { type: string; name?: string; parameters: Record<string, unknown> }) {
-  const text = typeof a.parameters.text === "string" ? `“${a.parameters.text}”` : "";
-  return a.name || text || a.type.replaceAll("_", " ");
-}
 
 export function StepList({
   protocol,
@@ -63,10 +59,12 @@ export function StepList({
 
 export function StepActions({
   protocol,
+  names,
   state,
   onTrigger,
 }: {
   protocol: TrialProtocol;
+  names: ActionNames;
   state: TrialState;
   onTrigger?: (actionId: string) => void;
 }) {
@@ -87,11 +85,12 @@ export function StepActions({
           return (
             <li key={a.id} className="flex items-center gap-3 px-4 py-2 text-sm" data-testid={`action-${a.id}`}>
               <Badge tone={STATUS[s.status].tone}>{STATUS[s.status].label}</Badge>
-              <span className="flex-1">
+              {/* A long speech is cut in its name; the whole text is a hover away. */}
+              <span className="flex-1" title={typeof a.parameters.text === "string" ? a.parameters.text : undefined}>
                 {a.type === "wizard_instruction" ? (
                   <strong>Instruction: {String(a.parameters.text ?? a.name)}</strong>
                 ) : (
-                  describeAction(a)
+                  actionName(a, names)
                 )}
                 {a.parallelGroup && <span className="ml-2 text-xs text-slate-400">together</span>}
               </span>
@@ -103,7 +102,7 @@ export function StepActions({
                   <button
                     type="button"
                     className="text-xs text-brand-600 hover:underline"
-                    aria-label={`Run ${describeAction(a)} now`}
+                    aria-label={`Run ${actionName(a, names)} now`}
                     onClick={() => onTrigger(a.id)}
                   >
                     run now
@@ -120,6 +119,7 @@ export function StepActions({
 /** Actions the wizard sent off script, with their status: deviations, visible as they happen. */
 export function OffScript({
   events,
+  names,
   state,
 }: {
   events: Array<{
@@ -129,6 +129,7 @@ export function OffScript({
     scripted?: boolean;
     parameters?: Record<string, unknown>;
   }>;
+  names: ActionNames;
   state: TrialState;
 }) {
   const unscripted = events.filter((e) => e.type === "action.requested" && e.scripted === false);
@@ -142,7 +143,7 @@ export function OffScript({
           return (
             <li key={e.actionId} className="flex items-center gap-3 px-4 py-2 text-sm">
               {s && <Badge tone={STATUS[s.status].tone}>{STATUS[s.status].label}</Badge>}
-              <span>{describeAction({ type: e.actionType ?? "", parameters: e.parameters ?? {} })}</span>
+              <span>{actionName({ type: e.actionType ?? "", parameters: e.parameters }, names)}</span>
             </li>
           );
         })}

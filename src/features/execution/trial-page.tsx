@@ -3,6 +3,7 @@ import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
 import { useCallback } from "react";
 import { studyRoleMay } from "@/core/access/policy";
+import type { ActionNames } from "@/core/designer/action-name";
 import type { TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
@@ -32,6 +33,7 @@ type Trial = {
   isRehearsal: boolean;
   version: number | null;
   myRole: "owner" | "researcher" | "wizard" | "observer";
+  actionNames: ActionNames;
 };
 
 function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol }) {
@@ -90,11 +92,14 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
         <div className="space-y-6">
           <StepActions
             protocol={protocol}
+            names={trial.actionNames}
             state={live.state}
             onTrigger={wizard ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined}
           />
-          <OffScript events={live.events} state={live.state} />
-          {wizard && <WizardControls protocol={protocol} state={live.state} send={live.command} />}
+          <OffScript events={live.events} names={trial.actionNames} state={live.state} />
+          {wizard && (
+            <WizardControls protocol={protocol} names={trial.actionNames} state={live.state} send={live.command} />
+          )}
         </div>
         <div className="space-y-4">
           <Watching viewers={live.viewers} />
