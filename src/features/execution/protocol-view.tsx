@@ -92,6 +92,10 @@ export function StepActions({
                 ) : (
                   actionName(a, names)
                 )}
+                {/* A labelled pause names itself ("Hold still"); the wizard still needs its length. */}
+                {a.type === "pause" && a.name?.trim() && (
+                  <span className="ml-2 text-xs text-slate-500">{Number(a.parameters.seconds ?? 0)} s</span>
+                )}
                 {a.parallelGroup && <span className="ml-2 text-xs text-slate-400">together</span>}
               </span>
               <span className="text-xs tabular-nums text-slate-500">{took}</span>
