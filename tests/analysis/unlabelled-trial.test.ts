@@ -88,7 +88,7 @@ describe("a trial whose actions have no labels", () => {
   let protocol: TrialProtocol;
   beforeAll(async () => {
     const study = await f.newStudy();
-    const experiment = await owner.experiments.create({ studyId: study.id, name: "Quiz", robotPluginId: "nao6-ros2" });
+    const experiment = await owner.experiments.create({ studyId: study.id, name: "Quiz", robotId: "nao6-ros2" });
     await owner.experiments.saveDesign({ experimentId: experiment.id, baseRevision: 0, steps: STEPS });
     const version = await owner.versions.publish({ experimentId: experiment.id });
     trialId = (await owner.trials.create({ versionId: version.id })).id;

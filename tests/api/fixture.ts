@@ -9,7 +9,8 @@ import { createCallerFactory, type Context, type SessionUser } from "../../src/s
 import { appRouter } from "../../src/server/api/root";
 import { createAccount } from "../../src/server/auth/accounts";
 import type { Database } from "../../src/store/client";
-import { studyMembers } from "../../src/store/schema";
+import { eq } from "drizzle-orm";
+import { studies, studyMembers } from "../../src/store/schema";
 
 export const CALLERS = ["owner", "researcher", "wizard", "observer", "outsider", "admin", "anonymous"] as const;
 export type Caller = (typeof CALLERS)[number];
@@ -54,17 +55,18 @@ export async function buildFixture(db: Database) {
   const api = (caller: Caller) => callerFactory(context(caller));
   /** The API as anyone else, e.g. the owner of a second study. */
   const apiAs = (user: SessionUser) => callerFactory(contextOf(user));
-  /** A study whose members are the four study-role callers. */
+  /** An active study (it runs trials) whose members are the four study-role callers. */
   async function newStudy(title = "Fixture study") {
-    const study = await api("owner").studies.create({ title });
+    const created = await api("owner").studies.create({ title });
+    const [study] = await db.update(studies).set({ status: "active" }).where(eq(studies.id, created.id)).returning();
     await db.insert(studyMembers).values(
       (["researcher", "wizard", "observer"] as const).map((role) => ({
-        studyId: study.id,
+        studyId: created.id,
         userId: people[role].id,
         role,
       })),
     );
-    return study;
+    return study!;
   }
   /** The error a browser would receive for a mutation: the formatted shape, as JSON. */
   async function httpError(caller: Caller, path: string, input: unknown) {
@@ -91,7 +93,7 @@ type Api = ReturnType<typeof callerFactory>;
 
 /** A published one-step experiment (the robot waves) in the study: what most tests need to start a trial. */
 export async function publishedVersion(api: Api, studyId: string) {
-  const experiment = await api.experiments.create({ studyId, name: "E", robotPluginId: "nao6-ros2" });
+  const experiment = await api.experiments.create({ studyId, name: "E", robotId: "nao6-ros2" });
   await api.experiments.saveDesign({
     experimentId: experiment.id,
     baseRevision: 0,

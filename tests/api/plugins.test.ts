@@ -24,14 +24,14 @@ describe("robot plugins on the server", () => {
 
   it("records the exact plugin version in a published version", async () => {
     const study = await f.newStudy();
-    const e = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+    const e = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
     await f.api("owner").experiments.saveDesign({
       experimentId: e.id,
       baseRevision: 0,
       steps: [{ name: "S", actions: [{ type: "wave" }] }],
     });
     expect(await f.api("owner").versions.publish({ experimentId: e.id })).toMatchObject({
-      pluginId: "nao6-ros2",
+      robotId: "nao6-ros2",
       pluginVersion: "3.0.0",
     });
   });

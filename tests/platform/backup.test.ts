@@ -90,7 +90,8 @@ async function studyData(url: string, mediaDir: string) {
       media: { storage, maxBytes: 8 * 1024 * 1024 },
     });
     const study = await api.studies.create({ title: `Backups: ${TRICKY}` });
-    const e = await api.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+    await api.studies.update({ studyId: study.id, status: "active" });
+    const e = await api.experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
     await api.experiments.saveDesign({
       experimentId: e.id,
       baseRevision: 0,

@@ -30,12 +30,15 @@ const events: StoredEvent[] = [
 ];
 
 const names = trialNames({ steps: [{ id: "s1", name: "Welcome", actions: [] }] }, events);
+const people = { wizard: "Wim Wizard", createdBy: "Rita Researcher" };
 
 describe("the events CSV", () => {
   it("parses back to the same events, quotes, commas, newlines and all", () => {
-    const [header, ...rows] = parseCsv(eventsCsv("t1", events, names));
+    const [header, ...rows] = parseCsv(eventsCsv("t1", events, people, names));
     expect(header).toEqual([
       "trial_id",
+      "wizard",
+      "created_by",
       "seq",
       "type",
       "step_id",
@@ -49,9 +52,11 @@ describe("the events CSV", () => {
       "actor_id",
       "payload",
     ]);
-    expect(rows.map((r) => JSON.parse(r[12]!))).toEqual(JSON.parse(JSON.stringify(events)));
-    expect(rows[1]!.slice(0, 12)).toEqual([
+    expect(rows.map((r) => JSON.parse(r[14]!))).toEqual(JSON.parse(JSON.stringify(events)));
+    expect(rows[1]!.slice(0, 14)).toEqual([
       "t1",
+      "Wim Wizard",
+      "Rita Researcher",
       "2",
       "action.requested",
       "s1",
@@ -67,13 +72,22 @@ describe("the events CSV", () => {
   });
 });
 
+describe("the events CSV of a trial nobody ran yet", () => {
+  it("leaves the wizard empty and still names who created it", () => {
+    const [, row] = parseCsv(
+      eventsCsv("t1", events.slice(0, 1), { wizard: null, createdBy: "Rita Researcher" }, names),
+    );
+    expect(row!.slice(0, 3)).toEqual(["t1", "", "Rita Researcher"]);
+  });
+});
+
 describe("the trial record", () => {
   it("names the step and the action each event is about", () => {
     const record = JSON.parse(
       trialRecordJson(
         {
           trial: {},
-          protocol: { schemaVersion: 1, experiment: {} as never, steps: [] },
+          protocol: { schemaVersion: 2, experiment: {} as never, steps: [] },
           events,
           annotations: [],
           questionnaires: [],

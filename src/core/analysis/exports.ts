@@ -7,10 +7,13 @@ import { csvDocument } from "@/core/csv/csv";
 import type { StoredEvent } from "@/core/trial";
 import type { TrialNames } from "./names";
 
-export const TRIAL_RECORD_SCHEMA_VERSION = 1;
+// 2: the protocol is snapshot schema 2 (robotId; steps say where they lead), the version names its robotId.
+export const TRIAL_RECORD_SCHEMA_VERSION = 2;
 
 export const EVENT_COLUMNS = [
   "trial_id",
+  "wizard",
+  "created_by",
   "seq",
   "type",
   "step_id",
@@ -25,13 +28,21 @@ export const EVENT_COLUMNS = [
   "payload",
 ] as const;
 
-export function eventsCsv(trialId: string, events: StoredEvent[], names: TrialNames): string {
+/** Who ran the trial (its wizard) and who created it, by name: two people, often not the same. */
+export interface TrialPeople {
+  wizard: string | null;
+  createdBy: string | null;
+}
+
+export function eventsCsv(trialId: string, events: StoredEvent[], people: TrialPeople, names: TrialNames): string {
   const rows = events.map((e) => {
     // Columns for the fields some kinds of event have; the payload column holds all of it.
     const { stepId, actionId, actionType } = e as { stepId?: string | null; actionId?: string; actionType?: string };
     const { stepName, actionName } = names.of(e);
     return [
       trialId,
+      people.wizard ?? "",
+      people.createdBy ?? "",
       e.seq,
       e.type,
       stepId ?? "",

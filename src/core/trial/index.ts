@@ -3,3 +3,6 @@ export { apply, fold, initialState } from "./fold";
 export { answerOptions, nextUnit } from "./protocol";
 export { simulate, type Simulation } from "./simulate";
 export * from "./types";
+export { type Rehearsal, type RehearsedStep, rehearse } from "./rehearse";
+export { type FlowEdge, flowEdges } from "./graph";
+export { pathTaken, type Upcoming, upcoming } from "./path";

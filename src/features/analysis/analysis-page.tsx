@@ -17,6 +17,7 @@ import { Badge, Card, Spinner, type Tone } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
 import { seconds } from "@/ui/format";
 import { JointAngles } from "./joint-angles";
+import { TrialPeople } from "@/features/execution/trial-people";
 
 const OUTCOME_TONE: Record<string, Tone> = {
   executed: "green",
@@ -94,6 +95,11 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           </a>
         </span>
       </div>
+      <TrialPeople
+        wizardName={t.wizardName}
+        createdByName={t.createdByName}
+        started={events.data.some((e) => e.type === "trial.started")}
+      />
       <div className="grid gap-4 sm:grid-cols-4">
         <Figure label="Execution fidelity" value={`${r.executionFidelity} %`} />
         <Figure label="Executed / planned" value={`${r.totals.executed} / ${r.totals.planned}`} />

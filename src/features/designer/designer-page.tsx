@@ -30,10 +30,13 @@ import { Button } from "@/ui/button";
 import { Input, NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
 import { Spinner } from "@/ui/surface";
+import { Tabs } from "@/ui/tabs";
+import { FlowMap } from "./flow-map";
 import { IssuesPanel } from "./issues-panel";
 import { LibraryPanel } from "./library-panel";
 import { PropertiesPanel } from "./properties-panel";
 import { ProtocolTimeline, type Marks, type Selection } from "./protocol-timeline";
+import { RehearsalPreview } from "./rehearsal-preview";
 import { useDesigner, type SaveState } from "./use-designer";
 import { VersionsPanel } from "./versions-panel";
 
@@ -57,11 +60,12 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   });
   const robots = useQuery(trpc.plugins.list.queryOptions());
   const pluginQuery = useQuery({
-    ...trpc.plugins.get.queryOptions({ robotId: draft?.robotPluginId ?? "" }),
-    enabled: Boolean(draft?.robotPluginId),
+    ...trpc.plugins.get.queryOptions({ robotId: draft?.robotId ?? "" }),
+    enabled: Boolean(draft?.robotId),
   });
   const plugin = (pluginQuery.data ?? null) as Plugin | null;
   const [selection, setSelection] = useState<Selection>(null);
+  const [view, setView] = useState("steps");
 
   const blocks = useMemo(() => library(plugin), [plugin]);
   const blockFor = useCallback((type: string) => findBlock(type, plugin), [plugin]);
@@ -208,7 +212,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
 
   if (designer.loaded.isPending || (!draft && !designer.loaded.error)) return <Spinner label="Opening the designer…" />;
   if (designer.loaded.error || !draft) return <Problem error={designer.loaded.error} />;
-  const robotName = robots.data?.robots.find((r) => r.robotId === draft.robotPluginId)?.name ?? draft.robotPluginId;
+  const robotName = robots.data?.robots.find((r) => r.robotId === draft.robotId)?.name ?? draft.robotId;
   const errors = hasErrors(issues);
 
   return (
@@ -234,7 +238,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
           <NativeSelect
             aria-label="Robot"
             className="h-9 w-auto py-0"
-            value={draft.robotPluginId}
+            value={draft.robotId}
             disabled={!canEdit}
             onChange={(e) => run(commands.setRobot(e.target.value))}
           >
@@ -300,19 +304,54 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
               You can read this experiment; only its owner and researchers edit it.
             </p>
           )}
-          <main className="min-h-0 space-y-3 overflow-y-auto pr-1">
-            <ProtocolTimeline
-              steps={draft.steps}
-              selection={selection}
-              marks={marks}
-              blockName={blockName}
-              onSelect={setSelection}
+          <main className="min-h-0 overflow-y-auto pr-1">
+            <Tabs
+              label="Designer views"
+              value={view}
+              onValueChange={setView}
+              tabs={[
+                {
+                  id: "steps",
+                  label: "Steps",
+                  content: (
+                    <div className="space-y-3">
+                      <ProtocolTimeline
+                        steps={draft.steps}
+                        selection={selection}
+                        marks={marks}
+                        blockName={blockName}
+                        onSelect={setSelection}
+                      />
+                      {canEdit && (
+                        <Button variant="secondary" onClick={addStep}>
+                          <Plus className="h-4 w-4" aria-hidden /> Add step
+                        </Button>
+                      )}
+                    </div>
+                  ),
+                },
+                {
+                  id: "flow",
+                  label: "Flow map",
+                  content: <FlowMap draft={draft} onSelect={(id) => setSelection({ kind: "step", id })} />,
+                },
+                {
+                  id: "rehearse",
+                  label: "Rehearse",
+                  content: (
+                    <RehearsalPreview
+                      draft={draft}
+                      actionName={(a) => a.name.trim() || blockName(a.type)}
+                      blocked={
+                        errors
+                          ? "Fix the problems listed on the right first: the preview walks the experiment as a trial would."
+                          : null
+                      }
+                    />
+                  ),
+                },
+              ]}
             />
-            {canEdit && (
-              <Button variant="secondary" onClick={addStep}>
-                <Plus className="h-4 w-4" aria-hidden /> Add step
-              </Button>
-            )}
           </main>
           <div className="min-h-0 space-y-3 overflow-y-auto">
             <fieldset disabled={!canEdit} className="min-w-0">

@@ -5,9 +5,10 @@
 import { useDroppable } from "@dnd-kit/core";
 import { SortableContext, useSortable, verticalListSortingStrategy } from "@dnd-kit/sortable";
 import { CSS } from "@dnd-kit/utilities";
-import { AlertCircle, AlertTriangle, GripVertical, Link2 } from "lucide-react";
+import { AlertCircle, AlertTriangle, CornerDownRight, GripVertical, Link2 } from "lucide-react";
 import { memo, useRef } from "react";
 import type { DesignAction, DesignStep } from "@/core/designer/types";
+import { describeExit } from "@/core/protocol/flow";
 import { cn } from "@/ui/cn";
 
 export type Selection = { kind: "step" | "action"; id: string } | null;
@@ -50,6 +51,7 @@ export function ProtocolTimeline({
               step={step}
               index={index}
               selected={selected}
+              leadsTo={describeExit(steps, index)}
               marksKey={marksKey(step, marks)}
               marks={marks}
               blockName={blockName}
@@ -79,6 +81,8 @@ function marksKey(step: DesignStep, marks: Map<string, Marks>) {
 
 interface StepProps {
   step: DesignStep;
+  /** Where the step leads after its actions, in words. */
+  leadsTo: string;
   index: number;
   selected: string | null;
   marksKey: string;
@@ -88,7 +92,7 @@ interface StepProps {
 }
 
 const StepCard = memo(
-  function StepCard({ step, index, selected, marks, blockName, onSelect }: StepProps) {
+  function StepCard({ step, index, leadsTo, selected, marks, blockName, onSelect }: StepProps) {
     const sortable = useSortable({ id: stepDragId(step.id), data: { stepId: step.id } });
     const drop = useDroppable({ id: dropZoneId(step.id), data: { stepId: step.id } });
     const stepMarks = marks.get(step.id);
@@ -159,12 +163,23 @@ const StepCard = memo(
         >
           {step.actions.length ? "Drop a block here to add it at the end" : "Empty step: drop a block here"}
         </div>
+        <p
+          data-leads-to={leadsTo}
+          className={cn(
+            "flex items-center gap-1 border-t border-slate-100 px-3 py-1.5 text-xs",
+            // A chosen way on stands out; the plain "next step" stays quiet.
+            step.after && step.after.to !== "next" ? "font-medium text-brand-800" : "text-slate-600",
+          )}
+        >
+          <CornerDownRight className="h-3.5 w-3.5" aria-hidden /> Then {leadsTo}
+        </p>
       </li>
     );
   },
   (a, b) =>
     a.step === b.step &&
     a.index === b.index &&
+    a.leadsTo === b.leadsTo &&
     a.selected === b.selected &&
     a.marksKey === b.marksKey &&
     a.blockName === b.blockName &&

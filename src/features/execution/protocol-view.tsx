@@ -1,8 +1,9 @@
 "use client";
-// The protocol as both the wizard and observers see it: steps, the current
-// one highlighted, and each action's status and timing from the event log.
+// The protocol as both the wizard and observers see it: the way taken, the
+// current step, what comes next, and each action's status and timing from
+// the event log.
 import { actionName, type ActionNames } from "@/core/designer/action-name";
-import type { ActionState, TrialProtocol, TrialState } from "@/core/trial";
+import { type ActionState, pathTaken, type TrialProtocol, type TrialState, upcoming } from "@/core/trial";
 import { cn } from "@/ui/cn";
 import { Badge, type Tone } from "@/ui/surface";
 
@@ -16,6 +17,11 @@ const STATUS: Record<ActionState["status"], { label: string; tone: Tone }> = {
   skipped: { label: "skipped", tone: "amber" },
 };
 
+/**
+ * The way through: the steps this trial has taken, the current one
+ * highlighted, and what comes next — not every step of every branch. A jump
+ * elsewhere (a deviation) is one disclosure away for the wizard.
+ */
 export function StepList({
   protocol,
   state,
@@ -25,35 +31,68 @@ export function StepList({
   state: TrialState;
   onJump?: (stepId: string) => void;
 }) {
+  const taken = pathTaken(protocol, state);
+  const next = upcoming(protocol, state);
+  const number = (id: string) => protocol.steps.findIndex((s) => s.id === id) + 1;
   return (
-    <ol className="space-y-1" aria-label="Steps">
-      {protocol.steps.map((step, i) => {
-        const current = step.id === state.currentStepId;
-        const done = step.actions.length > 0 && step.actions.every((a) => state.actions[a.id]?.status !== "waiting");
-        return (
-          <li
-            key={step.id}
-            aria-current={current ? "step" : undefined}
-            className={cn(
-              "rounded-md px-3 py-2 text-sm",
-              current ? "bg-brand-600 font-semibold text-white" : done ? "text-slate-400" : "text-slate-700",
+    <div className="space-y-3 text-sm">
+      <ol className="space-y-1" aria-label="Steps taken">
+        {taken.map((step, i) => {
+          const current = i === taken.length - 1 && step.id === state.currentStepId;
+          return (
+            <li
+              key={`${step.id}-${i}`}
+              aria-current={current ? "step" : undefined}
+              className={cn(
+                "rounded-md px-3 py-2",
+                current ? "bg-brand-600 font-semibold text-white" : "text-slate-600",
+              )}
+            >
+              {number(step.id)}. {step.name}
+            </li>
+          );
+        })}
+      </ol>
+      <div aria-label="Next step" role="note" className="rounded-md border border-dashed border-slate-300 px-3 py-2">
+        <span className="text-xs font-semibold uppercase tracking-wide text-slate-600">Next</span>
+        {next.kind === "step" && (
+          <p>
+            {number(next.step.id)}. {next.step.name}
+          </p>
+        )}
+        {next.kind === "end" && <p>End of the trial</p>}
+        {next.kind === "answer" && (
+          <ul>
+            {next.routes.map((r) => (
+              <li key={r.label}>
+                “{r.label}” → {r.step ? `${number(r.step.id)}. ${r.step.name}` : "not set"}
+              </li>
+            ))}
+          </ul>
+        )}
+      </div>
+      {onJump && state.status === "in_progress" && (
+        <details>
+          <summary className="cursor-pointer text-xs text-brand-700">Jump to another step (a deviation)</summary>
+          <ul className="mt-1 space-y-1">
+            {protocol.steps.map((step, i) =>
+              step.id === state.currentStepId ? null : (
+                <li key={step.id}>
+                  <button
+                    type="button"
+                    className="text-left text-xs text-brand-700 underline-offset-2 hover:underline"
+                    aria-label={`Jump to ${step.name}`}
+                    onClick={() => onJump(step.id)}
+                  >
+                    {i + 1}. {step.name}
+                  </button>
+                </li>
+              ),
             )}
-          >
-            {i + 1}. {step.name}
-            {onJump && !current && state.status === "in_progress" && (
-              <button
-                type="button"
-                className="ml-2 text-xs text-brand-600 underline-offset-2 hover:underline"
-                aria-label={`Jump to ${step.name}`}
-                onClick={() => onJump(step.id)}
-              >
-                jump
-              </button>
-            )}
-          </li>
-        );
-      })}
-    </ol>
+          </ul>
+        </details>
+      )}
+    </div>
   );
 }
 

@@ -1,7 +1,7 @@
 "use client";
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
-import { useCallback } from "react";
+import { useCallback, useEffect } from "react";
 import { studyRoleMay } from "@/core/access/policy";
 import type { ActionNames } from "@/core/designer/action-name";
 import type { TrialProtocol } from "@/core/trial";
@@ -13,6 +13,7 @@ import { OffScript, StepActions, StepList } from "./protocol-view";
 import { TrialQuestionnaires } from "@/features/questionnaires/trial-questionnaires";
 import { RecordingPanel } from "@/features/recording/recording-panel";
 import { TrialClock } from "./trial-clock";
+import { TrialPeople } from "./trial-people";
 import { useTrialSocket } from "./use-trial-socket";
 import { SHORTCUTS, WizardControls } from "./wizard-controls";
 
@@ -21,7 +22,13 @@ export function TrialPage({ trialId }: { trialId: string }) {
   const trial = useQuery(trpc.trials.get.queryOptions({ trialId }));
   if (trial.isPending) return <Spinner />;
   if (trial.error) return <Problem error={trial.error} />;
-  return <LiveTrial trial={trial.data} protocol={trial.data.protocol as TrialProtocol} />;
+  return (
+    <LiveTrial
+      trial={trial.data}
+      protocol={trial.data.protocol as TrialProtocol}
+      refresh={() => void trial.refetch()}
+    />
+  );
 }
 
 type Trial = {
@@ -32,17 +39,26 @@ type Trial = {
   participantCode: string | null;
   isRehearsal: boolean;
   version: number | null;
+  wizardId: string | null;
+  wizardName: string | null;
+  createdByName: string | null;
   myRole: "owner" | "researcher" | "wizard" | "observer";
   actionNames: ActionNames;
 };
 
-function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol }) {
+function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: TrialProtocol; refresh: () => void }) {
   const live = useTrialSocket(trial.id, protocol);
   // The runtime decides (a wizard runs only the trials assigned to them); until it has said, the study role guides.
   const wizard = live.mayRun ?? studyRoleMay(trial.myRole, "trial.run");
   const started = live.events.find((e) => e.type === "trial.started");
   const ended = live.state.status === "completed" || live.state.status === "aborted";
   const { command } = live;
+  // Starting an unassigned trial records its starter as the wizard: read who that was.
+  const claimed = Boolean(started) && trial.wizardId === null;
+  // biome-ignore lint/correctness/useExhaustiveDependencies: refresh is a new function on every render; once per start is enough
+  useEffect(() => {
+    if (claimed) refresh();
+  }, [claimed]);
   const logRecording = useCallback(
     (recordingId: string, offsetMs: number) => void command({ kind: "recording", recordingId, offsetMs }),
     [command],
@@ -60,7 +76,17 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
         <Badge tone={STATUS_TONE[live.state.status]}>
           <span data-testid="trial-status">{live.state.status.replace("_", " ")}</span>
         </Badge>
-        {live.state.emergencyStopped && <Badge tone="red">emergency stop</Badge>}
+        {/* Red only while it holds a live trial; once the trial has ended it is history. */}
+        {live.state.emergencyStopped &&
+          (ended ? (
+            <Badge>
+              <span data-testid="emergency-stop">emergency stop used</span>
+            </Badge>
+          ) : (
+            <Badge tone="red">
+              <span data-testid="emergency-stop">emergency stop</span>
+            </Badge>
+          ))}
         <span className="ml-auto flex items-center gap-4">
           {live.robot && (
             <Badge tone={live.robot.connected ? "green" : "red"}>
@@ -75,6 +101,7 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
           <TrialClock startedAt={started?.serverTime ?? null} stopped={ended} />
         </span>
       </div>
+      <TrialPeople wizardName={trial.wizardName} createdByName={trial.createdByName} started={Boolean(started)} />
       {live.notice && <Problem error={{ message: live.notice }} />}
       {ended && (
         <Link href={`/trials/${trial.id}/analysis`} className="inline-block font-medium text-brand-600 hover:underline">
