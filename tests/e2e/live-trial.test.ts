@@ -196,6 +196,8 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.getByLabel("Action").selectOption({ label: "Nod" });
     await wizard.getByRole("button", { name: /Send “Nod”/ }).click();
     await wizard.getByRole("region", { name: "Off script" }).getByText(/^done/).waitFor();
+    // Named as the library names it, not by its type.
+    await wizard.getByRole("region", { name: "Off script" }).getByText("Nod", { exact: true }).waitFor();
     await expectAccessible(wizard, "the unscripted action form");
     // One the robot cannot do (sent past the form, as another client could): the reason, in words, beside its badge.
     const socket = await wizardApi.trials.socketToken
@@ -277,6 +279,9 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.command("w", { kind: "unscripted", actionType: "wave", parameters: {} });
     await page.getByRole("status", { name: "Robot speech" }).getByText('“She said "hi" {{name}} & left.”').waitFor();
     await expect.poll(() => page.getByTestId("robot-gesture").textContent()).not.toBe("none");
+    // The NAO's wave is an animation path on the wire; the page names it, and shows no Markdown.
+    expect(await page.getByTestId("robot-gesture").textContent()).not.toContain("/");
+    expect(await page.getByRole("main").textContent()).not.toContain("`");
     await screenshot(page, "robot-view");
     wizard.close();
     await page.context().close();

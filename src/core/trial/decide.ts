@@ -1,5 +1,6 @@
 // The trial engine: (state, command) → the events it causes, or a rejection
 // the wizard can read. Pure: the runtime supplies ids, clock and robot.
+import { actionName } from "../designer/action-name";
 import { exitOf } from "../protocol/flow";
 import { answerOptions, branchTarget, findAction, findStep, nextUnit } from "./protocol";
 import type { Command, Decision, DeviationKind, EngineEvent, ProtocolAction, TrialProtocol, TrialState } from "./types";
@@ -94,11 +95,8 @@ function trigger(protocol: TrialProtocol, state: TrialState, actionId: string): 
   const found = findAction(protocol, actionId);
   if (!found) return no("That action is not in this protocol; use an unscripted action instead.");
   if (found.step.id !== state.currentStepId)
-    return no(
-      `"${found.action.name ?? found.action.type}" belongs to another step: jump to "${found.step.name}" first.`,
-    );
-  if (state.actions[actionId]?.status !== "waiting")
-    return no(`"${found.action.name ?? found.action.type}" has already run.`);
+    return no(`"${actionName(found.action)}" belongs to another step: jump to "${found.step.name}" first.`);
+  if (state.actions[actionId]?.status !== "waiting") return no(`"${actionName(found.action)}" has already run.`);
   const inTurn = nextUnit(protocol, state).some((a) => a.id === actionId);
   return request(protocol, state, [found.action], inTurn ? undefined : "out_of_order");
 }
@@ -145,7 +143,7 @@ function skip(protocol: TrialProtocol, state: TrialState, actionId: string | und
   for (const action of targets) {
     if (!action || findAction(protocol, action.id)!.step.id !== stepId)
       return no("Only actions of the current step can be skipped.");
-    if (state.actions[action.id]?.status !== "waiting") return no(`"${action.name ?? action.type}" has already run.`);
+    if (state.actions[action.id]?.status !== "waiting") return no(`"${actionName(action)}" has already run.`);
     events.push({ type: "action.skipped", stepId, actionId: action.id, deviation: "skipped" });
   }
   if (events.length === 0) return no("Nothing is left to skip in this step.");

@@ -5,6 +5,7 @@ import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
 import { useMemo, useRef, useState } from "react";
 import { fidelityReport } from "@/core/analysis/fidelity";
+import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { QuestionnaireAnswers } from "./questionnaire-answers";
@@ -42,7 +43,18 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   const report = useMemo(
     () =>
       trial.data && events.data
-        ? fidelityReport(trial.data.protocol as TrialProtocol, events.data as unknown as TrialEvent[])
+        ? fidelityReport(
+            trial.data.protocol as TrialProtocol,
+            events.data as unknown as TrialEvent[],
+            trial.data.actionNames,
+          )
+        : null,
+    [trial.data, events.data],
+  );
+  const named = useMemo(
+    () =>
+      trial.data && events.data
+        ? trialNames(trial.data.protocol as TrialProtocol, events.data, trial.data.actionNames)
         : null,
     [trial.data, events.data],
   );
@@ -50,6 +62,11 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   if (trial.error || events.error) return <Problem error={trial.error ?? events.error} />;
   const t = trial.data;
   const r = report!;
+  // What an event in the list is about: its action, else its step.
+  const about = (e: object) => {
+    const { stepName, actionName } = named!.of(e);
+    return actionName ?? stepName;
+  };
   const timeline = [
     ...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })),
     ...(moments.data ?? []).map((m) => ({ at: m.relMs, kind: "moment" as const, m })),
@@ -154,9 +171,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
               ) : (
                 <span>
                   {item.e.type}
-                  {"actionId" in item.e && item.e.actionId ? (
-                    <span className="text-slate-600"> · {item.e.actionId.slice(0, 8)}</span>
-                  ) : null}
+                  {about(item.e) && <span className="text-slate-500"> · {about(item.e)}</span>}
                   {item.e.deviation && <Badge tone="amber">{item.e.deviation.replace("_", " ")}</Badge>}
                 </span>
               )}

@@ -19,6 +19,7 @@ import { ArrowLeft, Plus, Redo2, Undo2 } from "lucide-react";
 import Link from "next/link";
 import { useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from "react";
 import { studyRoleMay } from "@/core/access/policy";
+import { actionName, actionNamesOf } from "@/core/designer/action-name";
 import { blockFor as findBlock, initialParameters, library, RUN_TOGETHER, type Block } from "@/core/designer/blocks";
 import { commands, locateAction, locateStep } from "@/core/designer/model";
 import type { DesignDraft } from "@/core/designer/types";
@@ -70,6 +71,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const blocks = useMemo(() => library(plugin), [plugin]);
   const blockFor = useCallback((type: string) => findBlock(type, plugin), [plugin]);
   const blockName = useCallback((type: string) => findBlock(type, plugin)?.name ?? type, [plugin]);
+  const names = useMemo(() => actionNamesOf(plugin), [plugin]);
 
   // Checks run a beat behind typing: the timeline stays responsive on big protocols.
   const checked = useDeferredValue(draft);
@@ -343,7 +345,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
                   content: (
                     <RehearsalPreview
                       draft={draft}
-                      actionName={(a) => a.name.trim() || blockName(a.type)}
+                      actionName={(a) => actionName(a, names)}
                       blocked={
                         errors
                           ? "Fix the problems listed on the right first: the preview walks the experiment as a trial would."

@@ -2,6 +2,7 @@
 // The protocol as both the wizard and observers see it: the way taken, the
 // current step, what comes next, and each action's status and timing from
 // the event log; an action that was not done says why beside its badge.
+import { actionName, type ActionNames } from "@/core/designer/action-name";
 import { type ActionState, pathTaken, type TrialProtocol, type TrialState, upcoming } from "@/core/trial";
 import { cn } from "@/ui/cn";
 import { Badge, type Tone } from "@/ui/surface";
@@ -15,11 +16,6 @@ const STATUS: Record<ActionState["status"], { label: string; tone: Tone }> = {
   timed_out: { label: "timed out", tone: "red" },
   skipped: { label: "skipped", tone: "amber" },
 };
-
-export function describeAction(a: { type: string; name?: string; parameters: Record<string, unknown> }) {
-  const text = typeof a.parameters.text === "string" ? `“${a.parameters.text}”` : "";
-  return a.name || text || a.type.replaceAll("_", " ");
-}
 
 /**
  * The way through: the steps this trial has taken, the current one
@@ -101,11 +97,13 @@ export function StepList({
 
 export function StepActions({
   protocol,
+  names,
   state,
   problems,
   onTrigger,
 }: {
   protocol: TrialProtocol;
+  names: ActionNames;
   state: TrialState;
   /** Why actions were not done, by id (actionProblems). */
   problems: Record<string, string>;
@@ -132,11 +130,16 @@ export function StepActions({
               data-testid={`action-${a.id}`}
             >
               <Badge tone={STATUS[s.status].tone}>{STATUS[s.status].label}</Badge>
-              <span className="flex-1">
+              {/* A long speech is cut in its name; the whole text is a hover away. */}
+              <span className="flex-1" title={typeof a.parameters.text === "string" ? a.parameters.text : undefined}>
                 {a.type === "wizard_instruction" ? (
                   <strong>Instruction: {String(a.parameters.text ?? a.name)}</strong>
                 ) : (
-                  describeAction(a)
+                  actionName(a, names)
+                )}
+                {/* A labelled pause names itself ("Hold still"); the wizard still needs its length. */}
+                {a.type === "pause" && a.name?.trim() && (
+                  <span className="ml-2 text-xs text-slate-500">{Number(a.parameters.seconds ?? 0)} s</span>
                 )}
                 {a.parallelGroup && <span className="ml-2 text-xs text-slate-500">together</span>}
               </span>
@@ -151,7 +154,7 @@ export function StepActions({
                     onClick={() => onTrigger(a.id)}
                   >
                     {/* The action's name is heard, not shown: its row already shows it. */}
-                    run<span className="sr-only"> {describeAction(a)}</span> now
+                    run<span className="sr-only"> {actionName(a, names)}</span> now
                   </button>
                 )}
               <WhyNotDone text={problems[a.id]} />
@@ -166,6 +169,7 @@ export function StepActions({
 /** Actions the wizard sent off script, with their status: deviations, visible as they happen. */
 export function OffScript({
   events,
+  names,
   state,
   problems,
 }: {
@@ -176,6 +180,7 @@ export function OffScript({
     scripted?: boolean;
     parameters?: Record<string, unknown>;
   }>;
+  names: ActionNames;
   state: TrialState;
   problems: Record<string, string>;
 }) {
@@ -190,7 +195,7 @@ export function OffScript({
           return (
             <li key={e.actionId} className="flex flex-wrap items-center gap-3 px-4 py-2 text-sm">
               {s && <Badge tone={STATUS[s.status].tone}>{STATUS[s.status].label}</Badge>}
-              <span>{describeAction({ type: e.actionType ?? "", parameters: e.parameters ?? {} })}</span>
+              <span>{actionName({ type: e.actionType ?? "", parameters: e.parameters }, names)}</span>
               <WhyNotDone text={problems[e.actionId!]} />
             </li>
           );

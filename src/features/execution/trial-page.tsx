@@ -3,6 +3,7 @@ import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
 import { useCallback, useEffect, useMemo } from "react";
 import { studyRoleMay } from "@/core/access/policy";
+import type { ActionNames } from "@/core/designer/action-name";
 import { actionProblems, type TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
@@ -42,6 +43,7 @@ type Trial = {
   wizardName: string | null;
   createdByName: string | null;
   myRole: "owner" | "researcher" | "wizard" | "observer";
+  actionNames: ActionNames;
 };
 
 function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: TrialProtocol; refresh: () => void }) {
@@ -118,12 +120,15 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
         <div className="space-y-6">
           <StepActions
             protocol={protocol}
+            names={trial.actionNames}
             state={live.state}
             problems={problems}
             onTrigger={wizard ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined}
           />
-          <OffScript events={live.events} state={live.state} problems={problems} />
-          {wizard && <WizardControls protocol={protocol} state={live.state} send={live.command} />}
+          <OffScript events={live.events} names={trial.actionNames} state={live.state} problems={problems} />
+          {wizard && (
+            <WizardControls protocol={protocol} names={trial.actionNames} state={live.state} send={live.command} />
+          )}
         </div>
         <div className="space-y-4">
           <Watching viewers={live.viewers} />

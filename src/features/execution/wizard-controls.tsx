@@ -2,12 +2,12 @@
 // The wizard's controls: the next scripted action as the big button, answer
 // choices by number, and everything off script one key away.
 import { useEffect, useId, useRef, useState } from "react";
+import { actionName, type ActionNames } from "@/core/designer/action-name";
 import { answerOptions, nextUnit, type TrialProtocol, type TrialState } from "@/core/trial";
 import { controlsOffBecause } from "@/core/trial/refusals";
 import type { WizardCommand } from "@/core/socket/messages";
 import { Button } from "@/ui/button";
 import { Input } from "@/ui/field";
-import { describeAction } from "./protocol-view";
 import { UnscriptedAction } from "./unscripted-action";
 
 type Send = (c: WizardCommand) => Promise<{ ok: boolean }>;
@@ -21,16 +21,26 @@ export const SHORTCUTS = [
   ["Esc", "emergency stop"],
 ] as const;
 
-export function nextLabel(protocol: TrialProtocol, state: TrialState): string {
+export function nextLabel(protocol: TrialProtocol, state: TrialState, names: ActionNames): string {
   if (state.status === "scheduled") return "Start trial";
   const unit = nextUnit(protocol, state);
-  if (unit.length) return unit.map(describeAction).join(" + ");
+  if (unit.length) return unit.map((a) => actionName(a, names)).join(" + ");
   const index = protocol.steps.findIndex((s) => s.id === state.currentStepId);
   const following = protocol.steps[index + 1];
   return following ? `Go to “${following.name}”` : "Finish trial";
 }
 
-export function WizardControls({ protocol, state, send }: { protocol: TrialProtocol; state: TrialState; send: Send }) {
+export function WizardControls({
+  protocol,
+  names,
+  state,
+  send,
+}: {
+  protocol: TrialProtocol;
+  names: ActionNames;
+  state: TrialState;
+  send: Send;
+}) {
   const speech = useRef<HTMLInputElement>(null);
   const [text, setText] = useState("");
   const [note, setNote] = useState("");
@@ -116,7 +126,7 @@ export function WizardControls({ protocol, state, send }: { protocol: TrialProto
             onClick={next}
           >
             <kbd className="rounded bg-white/20 px-1.5 text-xs">N</kbd>{" "}
-            {ended ? "Trial ended" : nextLabel(protocol, state)}
+            {ended ? "Trial ended" : nextLabel(protocol, state, names)}
           </Button>
         )}
         <div className="flex flex-wrap gap-2">

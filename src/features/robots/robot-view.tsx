@@ -4,6 +4,7 @@
 // the browser's speech synthesis when asked.
 import { useEffect, useRef, useState } from "react";
 import * as ROSLIB from "roslib";
+import { readableValue } from "@/core/designer/action-name";
 import { ROBOT_STATE_TOPIC, type RobotState } from "@/core/robots/robot-state";
 import { Button } from "@/ui/button";
 import { Badge, Card } from "@/ui/surface";
@@ -68,8 +69,12 @@ export function RobotView({ url }: { url: string }) {
         </div>
         <RobotFigure state={state} />
         <dl className="grid grid-cols-2 gap-x-8 gap-y-1 text-sm sm:grid-cols-4">
-          <Fact label="Gesture" value={state?.gesture ?? state?.animation ?? "none"} />
-          <Fact label="Posture" value={state ? `${state.posture}${state.awake ? "" : " (motors off)"}` : "—"} />
+          {/* An animation arrives as the robot's path to it (animations/Stand/Gestures/Hey_1): shown by its name. */}
+          <Fact label="Gesture" value={readable(state?.gesture ?? state?.animation) ?? "none"} />
+          <Fact
+            label="Posture"
+            value={state ? `${readable(state.posture) ?? "—"}${state.awake ? "" : " (motors off)"}` : "—"}
+          />
           <Fact
             label="Moving"
             value={
@@ -82,11 +87,14 @@ export function RobotView({ url }: { url: string }) {
         </dl>
       </Card>
       <p className="text-sm text-slate-500">
-        This page shows the built-in simulated robot that `npm start` runs when no real robot is configured.
+        This page shows the built-in simulated robot that <code className="font-mono">npm start</code> runs when no real
+        robot is configured.
       </p>
     </div>
   );
 }
+
+const readable = (value: string | null | undefined) => (value ? readableValue(value) : undefined);
 
 function Fact({ label, value }: { label: string; value: string }) {
   return (
