@@ -6,9 +6,10 @@ import { useDroppable } from "@dnd-kit/core";
 import { SortableContext, useSortable, verticalListSortingStrategy } from "@dnd-kit/sortable";
 import { CSS } from "@dnd-kit/utilities";
 import { AlertCircle, AlertTriangle, CornerDownRight, GripVertical, Link2 } from "lucide-react";
-import { memo, useRef } from "react";
+import { memo, useMemo, useRef } from "react";
 import type { DesignAction, DesignStep } from "@/core/designer/types";
 import { describeExit } from "@/core/protocol/flow";
+import { type FlowEdge, flowEdges } from "@/core/trial";
 import { cn } from "@/ui/cn";
 
 export type Selection = { kind: "step" | "action"; id: string } | null;
@@ -37,6 +38,7 @@ export function ProtocolTimeline({
   onSelect: (s: Selection) => void;
 }) {
   const items = useSameList(steps.map((s) => stepDragId(s.id)));
+  const edges = useMemo(() => flowEdges({ steps }), [steps]);
   return (
     <SortableContext items={items} strategy={verticalListSortingStrategy}>
       <ol aria-label="Protocol" className="space-y-3">
@@ -51,7 +53,7 @@ export function ProtocolTimeline({
               step={step}
               index={index}
               selected={selected}
-              leadsTo={describeExit(steps, index)}
+              leadsTo={leadsTo(steps, index, edges)}
               marksKey={marksKey(step, marks)}
               marks={marks}
               blockName={blockName}
@@ -62,6 +64,13 @@ export function ProtocolTimeline({
       </ol>
     </SortableContext>
   );
+}
+
+/** Where a step leads, in words; a step whose question routes every answer leads where the answer says. */
+function leadsTo(steps: DesignStep[], index: number, edges: FlowEdge[]): string {
+  const own = edges.filter((e) => e.from === index);
+  if (own.length > 0 && own.every((e) => e.kind === "answer")) return "where the answer leads";
+  return describeExit(steps, index);
 }
 
 /**
