@@ -69,7 +69,7 @@ describe.sequential("branches that rejoin, in the browser", () => {
     }
     await expect.poll(() => checks.textContent()).toContain("Ready to publish");
     await expect
-      .poll(() => page.locator("[data-leads-to]").evaluateAll((ps) => ps.map((p) => p.textContent)))
+      .poll(() => page.locator("[data-leads-to]").evaluateAll((ps) => ps.map((p) => p.textContent?.trim())))
       .toEqual([
         "Then where the answer leads",
         'Then "Goodbye"',
@@ -80,7 +80,7 @@ describe.sequential("branches that rejoin, in the browser", () => {
     await screenshot(page, "designer-rejoin");
 
     await r.click(page.getByRole("tab", { name: "Flow map" }));
-    const map = page.getByRole("img", { name: "Flow map of the experiment" });
+    const map = page.getByRole("group", { name: "Flow map of the experiment" });
     await map.waitFor();
     await screenshot(page, "designer-flow-map");
 
@@ -130,7 +130,7 @@ async function rehearse(page: Page, studyUrl: string, key: number) {
   await page.keyboard.press("n");
   await expect.poll(step).toBe("Question");
   await spoken(QUESTION);
-  await page.getByText("What did the participant answer?").waitFor();
+  await page.getByText("What did the participant answer?").first().waitFor();
   await page.keyboard.press(String(key));
   const [answer, response] = ANSWERS[key - 1]!;
   await expect.poll(step).toBe(`Response — ${answer}`);

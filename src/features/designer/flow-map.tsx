@@ -25,7 +25,8 @@ export function FlowMap({ draft, onSelect }: { draft: DesignDraft; onSelect: (st
   return (
     <figure className="space-y-2">
       <svg
-        role="img"
+        // A group, not an image: its steps are buttons.
+        role="group"
         aria-labelledby="flow-map-title"
         viewBox={`0 0 ${width} ${height}`}
         className="w-full max-w-2xl"
