@@ -19,7 +19,8 @@ import { ArrowLeft, Plus, Redo2, Undo2 } from "lucide-react";
 import Link from "next/link";
 import { useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from "react";
 import { studyRoleMay } from "@/core/access/policy";
-import { blockFor as findBlock, initialParameters, library, RUN_TOGETHER, type Block } from "@/core/designer/blocks";
+import { blockFor as findBlock, initialParameters, RUN_TOGETHER, type Block } from "@/core/designer/blocks";
+import { libraryEntries } from "@/core/designer/library";
 import { commands, locateAction, locateStep } from "@/core/designer/model";
 import type { DesignDraft } from "@/core/designer/types";
 import { hasErrors, validateDesign } from "@/core/designer/validate";
@@ -63,7 +64,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const plugin = (pluginQuery.data ?? null) as Plugin | null;
   const [selection, setSelection] = useState<Selection>(null);
 
-  const blocks = useMemo(() => library(plugin), [plugin]);
+  const entries = useMemo(() => libraryEntries(plugin), [plugin]);
   const blockFor = useCallback((type: string) => findBlock(type, plugin), [plugin]);
   const blockName = useCallback((type: string) => findBlock(type, plugin)?.name ?? type, [plugin]);
 
@@ -82,8 +83,8 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
     return map;
   }, [issues]);
   const unsupported = useMemo(
-    () => new Set(blocks.filter((b) => plugin && isUnsupported(plugin, b.type)).map((b) => b.type)),
-    [blocks, plugin],
+    () => new Set(entries.filter((e) => plugin && isUnsupported(plugin, e.block.type)).map((e) => e.block.type)),
+    [entries, plugin],
   );
 
   const role = study.data?.myRole;
@@ -294,7 +295,12 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
       >
         <div className="grid min-h-0 flex-1 grid-cols-[16rem_minmax(0,1fr)_24rem] gap-4">
           {canEdit ? (
-            <LibraryPanel blocks={blocks} unsupported={unsupported} onAdd={addFromLibrary} />
+            <LibraryPanel
+              entries={entries}
+              robotName={plugin?.name ?? "This robot"}
+              unsupported={unsupported}
+              onAdd={addFromLibrary}
+            />
           ) : (
             <p className="text-sm text-slate-500">
               You can read this experiment; only its owner and researchers edit it.
