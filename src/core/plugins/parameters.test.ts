@@ -10,7 +10,7 @@ const SCHEMA_WORDING = [/\bNOT\b/, /must NOT/, /\bshould\b/i, /\/parameters\//, 
 
 const schemaOf = (property: Record<string, unknown>, required: string[] = []): ParameterSchema => ({
   type: "object",
-  properties: { value: { title: "Value", ...property } as ParameterSchema["properties"][string] },
+  properties: { value: { title: "Value", ...property } as unknown as ParameterSchema["properties"][string] },
   required,
   additionalProperties: false,
 });
