@@ -6,11 +6,8 @@ import {
   DndContext,
   DragOverlay,
   PointerSensor,
-  pointerWithin,
-  rectIntersection,
   useSensor,
   useSensors,
-  type CollisionDetection,
   type DragEndEvent,
   type DragStartEvent,
 } from "@dnd-kit/core";
@@ -35,14 +32,9 @@ import { IssuesPanel } from "./issues-panel";
 import { LibraryPanel } from "./library-panel";
 import { PropertiesPanel } from "./properties-panel";
 import { ProtocolTimeline, type Marks, type Selection } from "./protocol-timeline";
+import { collision, TIMELINE_END, TimelineEnd } from "./timeline-end";
 import { useDesigner, type SaveState } from "./use-designer";
 import { VersionsPanel } from "./versions-panel";
-
-// The pointer decides where a block lands; near no target, the closest overlap does.
-const collision: CollisionDetection = (args) => {
-  const within = pointerWithin(args);
-  return within.length ? within : rectIntersection(args);
-};
 
 // A click is not a drag: the pointer must travel a little first. A constant,
 // because new options would make dnd-kit re-render every block on each edit.
@@ -153,6 +145,11 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
     run(commands.addStep(`Step ${(draft?.steps.length ?? 0) + 1}`, undefined, id));
     setSelection({ kind: "step", id });
   };
+  const firstStep = () => {
+    const stepId = newId();
+    run(commands.addStep("Step 1", undefined, stepId));
+    return { stepId, index: 0 };
+  };
 
   const moveSelected = useCallback(
     (delta: -1 | 1) => {
@@ -189,9 +186,12 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const onDragEnd = (e: DragEndEvent) => {
     setDragging(null);
     if (!draft || !e.over) return;
-    const drop = dropTarget(draft, String(e.over.id));
-    if (!drop) return;
     const [kind, id] = splitId(String(e.active.id));
+    // Below an empty timeline, a block starts the first step.
+    const drop =
+      dropTarget(draft, String(e.over.id)) ??
+      (e.over.id === TIMELINE_END && kind === "lib" && id !== RUN_TOGETHER.type ? firstStep() : null);
+    if (!drop) return;
     if (kind === "lib" && id === RUN_TOGETHER.type) {
       // Onto an action: that one; onto a step's drop zone: its last action.
       const { step } = locateStep(draft, drop.stepId);
@@ -306,7 +306,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
               You can read this experiment; only its owner and researchers edit it.
             </p>
           )}
-          <main className="min-h-0 space-y-3 overflow-y-auto pr-1">
+          <main className="flex min-h-0 flex-col gap-3 overflow-y-auto pr-1">
             <ProtocolTimeline
               steps={draft.steps}
               selection={selection}
@@ -314,11 +314,13 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
               blockName={blockName}
               onSelect={setSelection}
             />
-            {canEdit && (
-              <Button variant="secondary" onClick={addStep}>
-                <Plus className="h-4 w-4" aria-hidden /> Add step
-              </Button>
-            )}
+            <TimelineEnd lastStep={draft.steps.at(-1)?.name ?? null}>
+              {canEdit && (
+                <Button variant="secondary" className="self-start" onClick={addStep}>
+                  <Plus className="h-4 w-4" aria-hidden /> Add step
+                </Button>
+              )}
+            </TimelineEnd>
           </main>
           <div className="min-h-0 space-y-3 overflow-y-auto">
             <fieldset disabled={!canEdit} className="min-w-0">
@@ -335,6 +337,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
             <IssuesPanel draft={draft} issues={issues} robotName={robotName} onSelect={setSelection} />
             <VersionsPanel
               experimentId={experimentId}
+              draft={draft}
               canPublish={canPublish}
               blocked={
                 errors
@@ -371,6 +374,10 @@ function dropTarget(draft: DesignDraft, overId: string): { stepId: string; index
       return { stepId: found.step.id, index: found.index };
     }
     if (kind === "step" || kind === "drop") return { stepId: id, index: locateStep(draft, id).step.actions.length };
+    if (kind === "end") {
+      const last = draft.steps.at(-1);
+      return last ? { stepId: last.id, index: last.actions.length } : null;
+    }
   } catch {
     return null;
   }
