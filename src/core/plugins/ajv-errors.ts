@@ -16,9 +16,9 @@ const PATTERN_HINTS: Record<string, string> = {
 const ARTICLE: Record<string, string> = {
   integer: "a whole number",
   number: "a number",
-  string: "text",
-  boolean: "yes or no",
-  object: "a group of named values",
+  string: "a piece of text",
+  boolean: "true or false",
+  object: "an object",
   array: "a list",
   null: "empty",
 };

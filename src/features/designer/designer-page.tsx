@@ -295,12 +295,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
       >
         <div className="grid min-h-0 flex-1 grid-cols-[16rem_minmax(0,1fr)_24rem] gap-4">
           {canEdit ? (
-            <LibraryPanel
-              entries={entries}
-              robotName={plugin?.name ?? "This robot"}
-              unsupported={unsupported}
-              onAdd={addFromLibrary}
-            />
+            <LibraryPanel entries={entries} robotName={robotName} unsupported={unsupported} onAdd={addFromLibrary} />
           ) : (
             <p className="text-sm text-slate-500">
               You can read this experiment; only its owner and researchers edit it.
