@@ -104,8 +104,8 @@ function LibraryEntryItem({
           <button
             type="button"
             aria-expanded={shown}
-            aria-label={`${robotName}'s own versions of ${block.name}`}
-            title={`${robotName}'s own versions of ${block.name}`}
+            aria-label={`Versions of ${block.name} on ${robotName}`}
+            title={`Versions of ${block.name} on ${robotName}`}
             onClick={() => setExpanded(!shown)}
             className="flex shrink-0 items-center gap-0.5 rounded-md border border-slate-200 bg-white px-1.5 text-xs text-slate-600 hover:border-brand-500 focus:outline-none focus:ring-2 focus:ring-brand-500/40"
           >
@@ -116,8 +116,8 @@ function LibraryEntryItem({
       </div>
       {shown && variants.length > 0 && (
         <div className="ml-3 mt-1 border-l-2 border-slate-200 pl-2">
-          <p className="text-[11px] text-slate-600">{robotName}'s own:</p>
-          <ul aria-label={`${robotName}'s own versions of ${block.name}`} className="space-y-1">
+          <p className="text-[11px] text-slate-600">On {robotName}:</p>
+          <ul aria-label={`Versions of ${block.name} on ${robotName}`} className="space-y-1">
             {variants.map((v) => (
               <li key={v.type}>
                 <LibraryBlock block={v} unsupported={false} onAdd={onAdd} />
