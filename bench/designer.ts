@@ -19,7 +19,7 @@ try {
   const experiment = await api.experiments.create.mutate({
     studyId: study!.id,
     name: "Large protocol",
-    robotPluginId: "nao6-ros2",
+    robotId: "nao6-ros2",
   });
   await api.experiments.saveDesign.mutate({
     experimentId: experiment.id,

@@ -61,7 +61,7 @@ const observerUser = await createAccount(db, {
   password: "bench-password",
   role: "observer",
 });
-const [study] = await db.insert(studies).values({ title: "Bench" }).returning();
+const [study] = await db.insert(studies).values({ title: "Bench", status: "active" }).returning();
 // The runtime looks each caller's role up in the study at hello.
 await db.insert(studyMembers).values([
   { studyId: study!.id, userId: wizardUser.id, role: "wizard" },
@@ -69,16 +69,16 @@ await db.insert(studyMembers).values([
 ]);
 const [experiment] = await db
   .insert(experiments)
-  .values({ studyId: study!.id, name: "Bench", robotPluginId: "nao6-ros2" })
+  .values({ studyId: study!.id, name: "Bench", robotId: "nao6-ros2" })
   .returning();
 const snapshot = {
-  schemaVersion: 1,
-  experiment: { id: experiment!.id, name: "Bench", description: "", robotPluginId: "nao6-ros2" },
+  schemaVersion: 2 as const,
+  experiment: { id: experiment!.id, name: "Bench", description: "", robotId: "nao6-ros2" },
   steps: [{ id: "s", name: "S", description: "", actions: [] }],
 };
 const [version] = await db
   .insert(experimentVersions)
-  .values({ experimentId: experiment!.id, version: 1, snapshot, hash: "bench", pluginId: "nao6-ros2" })
+  .values({ experimentId: experiment!.id, version: 1, snapshot, hash: "bench", robotId: "nao6-ros2" })
   .returning();
 
 async function socket(

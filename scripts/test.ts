@@ -1,5 +1,5 @@
 // `npm test`: the whole suite in one vitest run, against a real PostgreSQL,
-// Debian's Chromium and a real sshd. Installs those first when it can (root + apt).
+// Debian's Chromium, a real sshd and Python. Installs those first when it can (root + apt).
 import { spawnSync } from "node:child_process";
 import { existsSync, mkdirSync, readFileSync } from "node:fs";
 import { join, resolve } from "node:path";
@@ -9,10 +9,19 @@ import { findChromium } from "../tests/support/chromium";
 const root = resolve(import.meta.dirname, "..");
 const log = (line: string) => console.log(`[test] ${line}`);
 
-/** The Debian packages the tests drive for real: Chromium, and an sshd for the SSH transport. */
+/**
+ * The Debian packages the tests drive for real: Chromium, an sshd for the SSH
+ * transport, and Python with venv (Debian keeps ensurepip in python3-venv) for
+ * the reference tools of tests/python.
+ */
 const NEEDS = [
   { package: "chromium", present: () => Boolean(findChromium()), hint: "or set HRI_CHROMIUM to a Chromium binary" },
   { package: "openssh-server", present: () => existsSync("/usr/sbin/sshd"), hint: "for the SSH transport's tests" },
+  {
+    package: "python3-venv",
+    present: () => spawnSync("python3", ["-c", "import ensurepip, venv"]).status === 0,
+    hint: "for the tests that read exports back with Python tools",
+  },
 ];
 
 function ensurePackages() {

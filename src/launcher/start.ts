@@ -1,6 +1,7 @@
 // `npm start`: the whole platform on one machine. PostgreSQL (embedded unless
 // DATABASE_URL is set), migrations, the demo seed, then the web app.
 import { spawn, type ChildProcess } from "node:child_process";
+import { randomBytes } from "node:crypto";
 import { mkdirSync, writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { readConfig } from "../store/config";
@@ -81,19 +82,36 @@ async function main() {
     });
   };
 
-  let rosbridgeUrl = config.HRI_ROSBRIDGE_URL;
+  // The robot settings both servers read: the runtime reaches the robot with
+  // them, the web app's designer says which actions they let run.
+  let robot: Record<string, string> = {};
   let simulatorUrl: string | undefined;
-  if (!rosbridgeUrl) {
+  if (!config.HRI_ROSBRIDGE_URL) {
     const simulatorPort = await firstFreePort(config.HRI_SIMULATOR_PORT);
-    rosbridgeUrl = simulatorUrl = `ws://127.0.0.1:${simulatorPort}`;
+    const sshPort = await freePort();
+    // A fresh password per start, known only to the simulated robot and the two servers.
+    const password = randomBytes(24).toString("base64url");
+    simulatorUrl = `ws://127.0.0.1:${simulatorPort}`;
     supervise("simulated robot", "src/robots/simulator/main.ts", {
       SIM_PORT: String(simulatorPort),
       SIM_HOST: "127.0.0.1",
+      SIM_SSH_PORT: String(sshPort),
+      SIM_SSH_USER: "nao",
+      SIM_SSH_PASSWORD: password,
     });
-    await listening(simulatorPort);
-    log(`The simulated NAO6 robot speaks rosbridge at ${rosbridgeUrl}.`);
+    await Promise.all([listening(simulatorPort), listening(sshPort)]);
+    // Both of its ways, whatever HRI_ROBOT_SSH_* say: those name a real robot, and none is set.
+    robot = {
+      HRI_ROSBRIDGE_URL: simulatorUrl,
+      HRI_ROBOT_SSH_HOST: "127.0.0.1",
+      HRI_ROBOT_SSH_PORT: String(sshPort),
+      HRI_ROBOT_SSH_USER: "nao",
+      HRI_ROBOT_SSH_PASSWORD: password,
+      HRI_ROBOT_SSH_KEY_FILE: "",
+    };
+    log(`The simulated NAO6 robot speaks rosbridge at ${simulatorUrl} and NAOqi over SSH at 127.0.0.1:${sshPort}.`);
   }
-  supervise("trial runtime", "src/runtime/main.ts", { ...shared, HRI_ROSBRIDGE_URL: rosbridgeUrl });
+  supervise("trial runtime", "src/runtime/main.ts", { ...shared, ...robot });
   await listening(runtimePort);
 
   const webServer = await bundleWebServer(root);
@@ -108,6 +126,7 @@ async function main() {
       NODE_ENV: dev ? "development" : "production",
       BETTER_AUTH_URL: baseURL,
       NEXT_TELEMETRY_DISABLED: "1",
+      ...robot,
       ...(simulatorUrl ? { HRI_SIMULATOR_URL: simulatorUrl } : {}),
     },
   });

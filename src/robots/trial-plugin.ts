@@ -17,8 +17,8 @@ export type TrialPlugin =
 export async function trialPlugin(db: Pick<Database, "select">, trialId: string): Promise<TrialPlugin> {
   const [row] = await db
     .select({
-      draftRobotId: experiments.robotPluginId,
-      versionRobotId: experimentVersions.pluginId,
+      draftRobotId: experiments.robotId,
+      versionRobotId: experimentVersions.robotId,
       version: experimentVersions.version,
       pinnedHash: experimentVersions.pluginHash,
     })

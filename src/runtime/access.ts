@@ -11,7 +11,12 @@ import type { SocketClaims } from "@/store/socket-token";
 /** The caller's access to a trial now; null when the trial no longer exists. */
 export async function loadTrialAccess(db: Database, trialId: string, userId: string): Promise<TrialAccess | null> {
   const [trial] = await db
-    .select({ studyId: trials.studyId, wizardId: trials.wizardId, status: trials.status })
+    .select({
+      studyId: trials.studyId,
+      wizardId: trials.wizardId,
+      status: trials.status,
+      isRehearsal: trials.isRehearsal,
+    })
     .from(trials)
     .where(eq(trials.id, trialId));
   if (!trial) return null;
@@ -26,8 +31,9 @@ export async function loadTrialAccess(db: Database, trialId: string, userId: str
     active: person !== undefined && !person.disabled,
     studyId: trial.studyId,
     studyRole: study.role,
+    studyStatus: study.status,
     blinding: study.blinding,
-    trial: { wizardId: trial.wizardId, status: trial.status },
+    trial: { wizardId: trial.wizardId, status: trial.status, isRehearsal: trial.isRehearsal },
   };
 }
 

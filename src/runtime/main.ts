@@ -4,7 +4,7 @@ import { readConfig } from "@/store/config";
 import { createDatabase } from "@/store/client";
 import type { Plugin } from "@/core/plugins";
 import { pluginCatalog } from "@/robots/catalog";
-import { transportFor } from "@/robots/transports";
+import { transportConfig, transportFor } from "@/robots/transports";
 import { pluginRobot, unavailableRobot } from "./robot-link";
 import { purgeSpentTokens, watchAccess } from "./access";
 import { eventRelay } from "./relay";
@@ -19,25 +19,12 @@ if (!config.DATABASE_URL || !config.BETTER_AUTH_SECRET) {
 const { db, sql, close } = createDatabase(config.DATABASE_URL);
 const lockConnection = await sql.reserve();
 for (const problem of (await pluginCatalog(db)).problems) console.error(`[runtime] plugin not loaded: ${problem}`);
+const robotSettings = transportConfig(config);
 // The plugin document is the trial's own (pinned by its version), chosen in trialHosts.
 const robotFor = (plugin: Plugin | null, robotId: string) => {
   if (!plugin) return unavailableRobot(`no robot plugin "${robotId}" is installed`);
-  const ssh = config.HRI_ROBOT_SSH_HOST
-    ? {
-        host: config.HRI_ROBOT_SSH_HOST,
-        port: config.HRI_ROBOT_SSH_PORT,
-        username: config.HRI_ROBOT_SSH_USER,
-        password: config.HRI_ROBOT_SSH_PASSWORD,
-        privateKeyFile: config.HRI_ROBOT_SSH_KEY_FILE,
-      }
-    : undefined;
-  const choice = transportFor(plugin, {
-    rosbridgeUrl: config.HRI_ROSBRIDGE_URL,
-    simulatorUrl: config.HRI_ROSBRIDGE_URL,
-    ssh,
-    httpBaseUrl: config.HRI_ROBOT_HTTP_URL,
-  });
-  return choice.ok ? pluginRobot(plugin, choice.transport) : unavailableRobot(`${plugin.name}: ${choice.reason}`);
+  const choice = transportFor(plugin, robotSettings);
+  return choice.ok ? pluginRobot(plugin, choice.transport) : unavailableRobot(choice.reason);
 };
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
 const hosts = trialHosts(db, lockConnection, robotFor, (...args) => announceRobot(...args));

@@ -3,7 +3,6 @@
 import { eq } from "drizzle-orm";
 import type postgres from "postgres";
 import type { Plugin } from "@/core/plugins";
-import type { TrialProtocol } from "@/core/trial";
 import type { Database } from "@/store/client";
 import { experimentVersions, trials } from "@/store/schema";
 import { trialPlugin } from "@/robots/trial-plugin";
@@ -33,7 +32,7 @@ export function trialHosts(
       .from(trials)
       .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
       .where(eq(trials.id, trialId));
-    const protocol = (row?.snapshot ?? row?.rehearsal) as TrialProtocol | null;
+    const protocol = row?.snapshot ?? row?.rehearsal;
     if (!protocol) throw new Error("This trial has no protocol to run.");
     const chosen = await trialPlugin(db, trialId);
     if (!chosen.ok) {

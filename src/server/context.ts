@@ -6,6 +6,7 @@ import { mediaStorage } from "./media";
 import { browserRuntimeUrl } from "./runtime-url";
 import type { Context, SessionUser } from "./api/trpc";
 import { SYSTEM_ROLES, type SystemRole } from "@/core/access/policy";
+import { channelsOf, transportConfig } from "@/robots/transports/settings";
 
 interface Server {
   db: Database;
@@ -13,6 +14,7 @@ interface Server {
   secret: string;
   runtimeUrl: string;
   media: Context["media"];
+  robotChannels: Context["robotChannels"];
 }
 
 const globalForServer = globalThis as unknown as { hriServer?: Server };
@@ -36,7 +38,9 @@ export function server(): Server {
   });
   const runtimeUrl = browserRuntimeUrl(config);
   const media = { storage: mediaStorage(config), maxBytes: config.HRI_MEDIA_MAX_MB * 1024 * 1024 };
-  globalForServer.hriServer = { db, auth, secret: config.BETTER_AUTH_SECRET, runtimeUrl, media };
+  // The runtime reaches the robot with the same settings (src/runtime/main.ts).
+  const robotChannels = channelsOf(transportConfig(config));
+  globalForServer.hriServer = { db, auth, secret: config.BETTER_AUTH_SECRET, runtimeUrl, media, robotChannels };
   return globalForServer.hriServer;
 }
 
@@ -53,7 +57,7 @@ export function toSessionUser(u: {
 }
 
 export async function contextFromHeaders(headers: Headers): Promise<Context> {
-  const { db, auth, secret, runtimeUrl, media } = server();
+  const { db, auth, secret, runtimeUrl, media, robotChannels } = server();
   const session = await auth.api.getSession({ headers });
-  return { db, user: session ? toSessionUser(session.user) : null, secret, runtimeUrl, media };
+  return { db, user: session ? toSessionUser(session.user) : null, secret, runtimeUrl, media, robotChannels };
 }

@@ -17,7 +17,8 @@ const schema = z.object({
   HRI_RUNTIME_URL: z.string().url().optional(),
   // The robot's rosbridge WebSocket; unset, the launcher starts the simulated robot and uses it.
   HRI_ROSBRIDGE_URL: z.string().url().optional(),
-  // SSH to the robot for NAOqi (qicli) commands such as postures; unset, those actions fail with a clear reason.
+  // SSH to the robot for NAOqi (qicli) commands such as postures; npm start sets them for the simulated robot.
+  // Unset with a real robot, the designer calls those actions not runnable here and trials fail them, with one reason.
   HRI_ROBOT_SSH_HOST: z.string().optional(),
   HRI_ROBOT_SSH_PORT: z.coerce.number().int().min(1).max(65535).default(22),
   HRI_ROBOT_SSH_USER: z.string().default("nao"),

@@ -3,7 +3,7 @@
 import { and, asc, eq, gt } from "drizzle-orm";
 import type { EngineEvent, StoredEvent } from "@/core/trial";
 import type { Database } from "./client";
-import { trialEvents, trials } from "./schema";
+import { trialEvents, type trials } from "./schema";
 
 export const NOTIFY_CHANNEL = "hri_trial_events";
 

@@ -3,17 +3,20 @@ import * as RadixTabs from "@radix-ui/react-tabs";
 import type { ReactNode } from "react";
 
 export function Tabs({
+  label,
   tabs,
   value,
   onValueChange,
 }: {
+  /** What the row of tabs switches between, for screen readers: "Study sections". */
+  label: string;
   tabs: Array<{ id: string; label: string; content: ReactNode }>;
   value: string;
   onValueChange: (v: string) => void;
 }) {
   return (
     <RadixTabs.Root value={value} onValueChange={onValueChange}>
-      <RadixTabs.List className="flex gap-1 border-b border-slate-200" aria-label="Study sections">
+      <RadixTabs.List className="flex gap-1 border-b border-slate-200" aria-label={label}>
         {tabs.map((t) => (
           <RadixTabs.Trigger
             key={t.id}

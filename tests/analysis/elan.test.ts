@@ -1,13 +1,13 @@
 // The ELAN export read back by pympi, the reference Python library for ELAN
-// files: what a video coder's tools will see. pympi is installed from PyPI
-// into .tmp/python (pinned), never into the machine's Python.
+// files: what a video coder's tools will see. pympi comes from the tests'
+// own Python environment (tests/support/python.ts), never the machine's.
 import { writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { beforeAll, describe, expect, it } from "vitest";
 import { elanDocument } from "../../src/core/analysis/elan";
 import { simulate, type Command, type TrialProtocol } from "../../src/core/trial";
 import { storytellerDraft } from "../../src/server/seed/storyteller";
-import { ensurePython, python } from "../support/python";
+import { pythonEnvironment, runPython } from "../support/python";
 
 const root = resolve(import.meta.dirname, "..", "..");
 
@@ -41,7 +41,7 @@ const run: Command[] = [
 ];
 
 describe("the ELAN export", () => {
-  beforeAll(() => ensurePython("pympi", "pympi-ling==1.71"), 300_000);
+  beforeAll(() => void pythonEnvironment(), 900_000);
 
   it("opens in pympi with the trial's steps, actions, deviations and marked moments on their times", () => {
     const log = simulate(protocol, run, (i) => i * 250).log;
@@ -53,18 +53,14 @@ describe("the ELAN export", () => {
     });
     const file = join(root, ".tmp", "storyteller.eaf");
     writeFileSync(file, eaf);
-    const read = python([
-      "-c",
-      "import json,sys,pympi\neaf=pympi.Elan.Eaf(sys.argv[1])\nprint(json.dumps({t: sorted(eaf.get_annotation_data_for_tier(t)) for t in eaf.get_tier_names()}))",
-      file,
-    ]);
-    expect(read.stderr).toBe("");
-    const tiers = JSON.parse(read.stdout) as Record<string, Array<[number, number, string]>>;
+    const { tiers } = JSON.parse(runPython("read_eaf.py", [file])) as {
+      tiers: Record<string, Array<[number, number, string]>>;
+    };
     expect(Object.keys(tiers).sort()).toEqual(["Action", "Deviation", "Marked moment", "Step"]);
     expect(tiers.Step!.map((s) => s[2])).toEqual(["Introduction", "Story", "Recall question", "Response — correct"]);
     expect(tiers.Step!.every(([start, end]) => end > start)).toBe(true);
     expect(tiers.Action!.map((a) => a[2])).toContain("Question: What color was the rock Kai found?");
-    expect(tiers.Deviation).toEqual([[expect.any(Number), expect.any(Number), "skipped: action.skipped"]]);
+    expect(tiers.Deviation).toEqual([[expect.any(Number), expect.any(Number), "skipped: Look down at the crater"]]);
     expect(tiers["Marked moment"]).toEqual([[1200, 2200, `She said "wow" <laughs> & smiles`]]);
   });
 
@@ -80,16 +76,11 @@ describe("the ELAN export", () => {
     });
     const file = join(root, ".tmp", "storyteller-recorded.eaf");
     writeFileSync(file, eaf);
-    const read = python([
-      "-c",
-      "import json,sys,pympi\neaf=pympi.Elan.Eaf(sys.argv[1])\nprint(json.dumps({'media': eaf.media_descriptors, 'moments': eaf.get_annotation_data_for_tier('Marked moment')}))",
-      file,
-    ]);
-    expect(read.stderr).toBe("");
-    const { media, moments } = JSON.parse(read.stdout) as {
+    const { media, tiers } = JSON.parse(runPython("read_eaf.py", [file])) as {
       media: Array<Record<string, string>>;
-      moments: Array<[number, number, string]>;
+      tiers: Record<string, Array<[number, number, string]>>;
     };
+    const moments = tiers["Marked moment"];
     expect(media).toEqual([
       expect.objectContaining({
         MEDIA_URL: "file:///recording-r1.webm",

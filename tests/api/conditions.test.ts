@@ -1,6 +1,6 @@
 // Conditions and their assignment: made on the server, balanced, and
 // reproducible from the seed and position it records.
-import { TRPCError } from "@trpc/server";
+import type { TRPCError } from "@trpc/server";
 import { afterAll, describe, expect, it } from "vitest";
 import { assign } from "../../src/core/studies/assignment";
 import { freshDatabase } from "../support/db";
@@ -16,12 +16,12 @@ async function studyWithConditions(strategy: "fixed" | "random" | "balanced" | "
   const nao = await owner.experiments.create({
     studyId: study.id,
     name: "Storyteller on NAO",
-    robotPluginId: "nao6-ros2",
+    robotId: "nao6-ros2",
   });
   const bot = await owner.experiments.create({
     studyId: study.id,
     name: "Storyteller on TurtleBot",
-    robotPluginId: "turtlebot3-burger",
+    robotId: "turtlebot3-burger",
   });
   const gestures = await owner.conditions.create({
     studyId: study.id,

@@ -1,6 +1,6 @@
 // A trial needs a participant with recorded consent, unless the study turns
 // that check off; consent changes are logged.
-import { TRPCError } from "@trpc/server";
+import type { TRPCError } from "@trpc/server";
 import { afterAll, describe, expect, it } from "vitest";
 import { freshDatabase } from "../support/db";
 import { buildFixture } from "./fixture";
@@ -12,7 +12,7 @@ afterAll(close);
 
 async function setUp() {
   const study = await f.newStudy();
-  const experiment = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+  const experiment = await owner.experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
   await owner.experiments.saveDesign({
     experimentId: experiment.id,
     baseRevision: 0,

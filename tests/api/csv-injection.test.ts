@@ -65,7 +65,7 @@ describe("the questionnaire answers CSV", () => {
 describe("the trial events CSV", () => {
   it("keeps a note, a step's name and speech text from running, in the trial's download and the study archive", async () => {
     const { study, p } = await studyWithAnswers();
-    const e = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+    const e = await owner.experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
     await owner.experiments.saveDesign({
       experimentId: e.id,
       baseRevision: 0,
@@ -96,11 +96,14 @@ describe("the trial events CSV", () => {
     );
     const csv = (await owner.trials.export({ trialId: trial.id, format: "csv" })).body as string;
     expect(inert(csv)).toEqual([]);
-    const rows = parseCsv(csv);
-    expect(rows.find((r) => r[2] === "step.entered")![3]).toBe("'=cmd|' /C calc'!A0");
-    expect(rows.find((r) => r[2] === "action.requested")![5]).toBe("'@say");
+    const [header, ...rows] = parseCsv(csv);
+    // Cells by column name: the columns grow as the exports learn more.
+    const cell = (type: string, column: string) =>
+      rows.find((r) => r[header!.indexOf("type")] === type)![header!.indexOf(column)];
+    expect(cell("step.entered", "step_id")).toBe("'=cmd|' /C calc'!A0");
+    expect(cell("action.requested", "action_type")).toBe("'@say");
     // Speech text, notes and names sit inside the payload's JSON, a cell that starts with "{".
-    expect(rows.find((r) => r[2] === "note.added")![10]).toMatch(/^\{.*HYPERLINK/);
+    expect(cell("note.added", "payload")).toMatch(/^\{.*HYPERLINK/);
 
     const archive = unzipSync((await owner.studies.exportArchive({ studyId: study.id })).body as Uint8Array);
     const files = Object.entries(archive).filter(([name]) => name.endsWith(".csv"));

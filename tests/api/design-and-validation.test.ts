@@ -12,7 +12,7 @@ afterAll(close);
 
 async function newExperiment() {
   const study = await f.newStudy();
-  return owner.experiments.create({ studyId: study.id, name: "Design", robotPluginId: "nao6-ros2" });
+  return owner.experiments.create({ studyId: study.id, name: "Design", robotId: "nao6-ros2" });
 }
 
 async function failure(promise: Promise<unknown>) {
@@ -99,8 +99,7 @@ describe("saving a design", () => {
     expect([v1.version, again.version]).toEqual([1, 2]);
     expect(again.hash).toBe(v1.hash);
     expect(v1.hash).toMatch(/^[0-9a-f]{64}$/);
-    const snapshot = v1.snapshot as { steps: Array<{ actions: Array<{ parameters: { text: string } }> }> };
-    expect(snapshot.steps[0]!.actions[0]!.parameters.text).toBe('He said "{{hi}}" $(rm -rf /)');
+    expect(v1.snapshot.steps[0]!.actions[0]!.parameters.text).toBe('He said "{{hi}}" $(rm -rf /)');
     const draft = await owner.experiments.get({ experimentId: e.id });
     await owner.experiments.saveDesign({
       experimentId: e.id,

@@ -9,7 +9,8 @@ import { createCallerFactory, type Context, type SessionUser } from "../../src/s
 import { appRouter } from "../../src/server/api/root";
 import { createAccount } from "../../src/server/auth/accounts";
 import type { Database } from "../../src/store/client";
-import { studyMembers } from "../../src/store/schema";
+import { eq } from "drizzle-orm";
+import { studies, studyMembers } from "../../src/store/schema";
 
 export const CALLERS = ["owner", "researcher", "wizard", "observer", "outsider", "admin", "anonymous"] as const;
 export type Caller = (typeof CALLERS)[number];
@@ -25,6 +26,8 @@ const SYSTEM_ROLE: Record<Exclude<Caller, "anonymous">, SystemRole> = {
 
 const callerFactory = createCallerFactory(appRouter);
 export const TEST_SECRET = "test-secret-".padEnd(40, "x");
+/** The ways to the robot `npm start` opens with no robot settings: the simulated NAO6's rosbridge and SSH. */
+export const DEMO_CHANNELS = { rosbridge: true, simulator: true, ssh: true, http: false };
 
 export async function newPerson(db: Database, label: string, role: SystemRole = "researcher"): Promise<SessionUser> {
   const email = `${label}-${crypto.randomUUID().slice(0, 8)}@example.org`;
@@ -49,22 +52,24 @@ export async function buildFixture(db: Database) {
     secret: TEST_SECRET,
     runtimeUrl: "ws://127.0.0.1:1",
     media,
+    robotChannels: DEMO_CHANNELS,
   });
   const context = (caller: Caller) => contextOf(caller === "anonymous" ? null : people[caller]);
   const api = (caller: Caller) => callerFactory(context(caller));
   /** The API as anyone else, e.g. the owner of a second study. */
   const apiAs = (user: SessionUser) => callerFactory(contextOf(user));
-  /** A study whose members are the four study-role callers. */
+  /** An active study (it runs trials) whose members are the four study-role callers. */
   async function newStudy(title = "Fixture study") {
-    const study = await api("owner").studies.create({ title });
+    const created = await api("owner").studies.create({ title });
+    const [study] = await db.update(studies).set({ status: "active" }).where(eq(studies.id, created.id)).returning();
     await db.insert(studyMembers).values(
       (["researcher", "wizard", "observer"] as const).map((role) => ({
-        studyId: study.id,
+        studyId: created.id,
         userId: people[role].id,
         role,
       })),
     );
-    return study;
+    return study!;
   }
   /** The error a browser would receive for a mutation: the formatted shape, as JSON. */
   async function httpError(caller: Caller, path: string, input: unknown) {
@@ -91,7 +96,7 @@ type Api = ReturnType<typeof callerFactory>;
 
 /** A published one-step experiment (the robot waves) in the study: what most tests need to start a trial. */
 export async function publishedVersion(api: Api, studyId: string) {
-  const experiment = await api.experiments.create({ studyId, name: "E", robotPluginId: "nao6-ros2" });
+  const experiment = await api.experiments.create({ studyId, name: "E", robotId: "nao6-ros2" });
   await api.experiments.saveDesign({
     experimentId: experiment.id,
     baseRevision: 0,

@@ -27,10 +27,11 @@ async function victimStudy() {
   const victim = await newPerson(db, "victim");
   const api = f.apiAs(victim);
   const study = await api.studies.create({ title: "Victim study" });
+  await api.studies.update({ studyId: study.id, status: "active" });
   const experiment = await api.experiments.create({
     studyId: study.id,
     name: "Secret protocol",
-    robotPluginId: "nao6-ros2",
+    robotId: "nao6-ros2",
   });
   await api.experiments.saveDesign({
     experimentId: experiment.id,

@@ -16,9 +16,7 @@ export type Base = Awaited<ReturnType<typeof baseData>>;
 
 export async function baseData(f: Fixture) {
   const study = await f.newStudy();
-  const experiment = await f
-    .api("owner")
-    .experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+  const experiment = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
   await f.api("owner").experiments.saveDesign({
     experimentId: experiment.id,
     baseRevision: 0,
@@ -51,7 +49,7 @@ const freshSession = async (f: Fixture, b: Base) => {
 
 /** Each publish gets an experiment of its own, so the base experiment keeps the one version the other rows use. */
 const publishable = async (f: Fixture, b: Base) => {
-  const e = await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotPluginId: "nao6-ros2" });
+  const e = await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotId: "nao6-ros2" });
   await f.api("owner").experiments.saveDesign({
     experimentId: e.id,
     baseRevision: 0,
@@ -109,11 +107,11 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "members.remove": [OWNER, async (f, b) => ({ studyId: b.study.id, userId: (await freshMember(f, b)).id })],
   "experiments.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
   "experiments.get": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
-  "experiments.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, name: "E2", robotPluginId: "nao6-ros2" })],
+  "experiments.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, name: "E2", robotId: "nao6-ros2" })],
   "experiments.saveDesign": [
     EDITORS,
     async (f, b) => {
-      const e = await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotPluginId: "x" });
+      const e = await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotId: "x" });
       return { experimentId: e.id, baseRevision: 0, steps: [{ name: "Only", actions: [] }] };
     },
   ],

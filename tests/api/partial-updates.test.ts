@@ -134,14 +134,14 @@ describe("the designer's save changes only the experiment details it names", () 
   it.each<[string, Record<string, string>]>([
     ["name", { name: "Renamed" }],
     ["description", { description: "Changed" }],
-    ["robot", { robotPluginId: "pepper-ros2" }],
+    ["robot", { robotId: "pepper-ros2" }],
   ])("%s", async (_, details) => {
     const studyId = await fullStudy();
     const e = await owner.experiments.create({
       studyId,
       name: "Full",
       description: "Every field set",
-      robotPluginId: "nao6-ros2",
+      robotId: "nao6-ros2",
     });
     const before = await owner.experiments.saveDesign({
       experimentId: e.id,

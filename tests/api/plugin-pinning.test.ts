@@ -60,7 +60,7 @@ const topicOf = (plugin: Plugin | null) =>
 
 describe("a published version pins its plugin document", async () => {
   const study = await f.newStudy();
-  const experiment = await owner.experiments.create({ studyId: study.id, name: "Greeting", robotPluginId: "lab-bot" });
+  const experiment = await owner.experiments.create({ studyId: study.id, name: "Greeting", robotId: "lab-bot" });
   await owner.experiments.saveDesign({
     experimentId: experiment.id,
     baseRevision: 0,
@@ -74,7 +74,7 @@ describe("a published version pins its plugin document", async () => {
     const hash = hashCanonical(v1);
     expect(version.pluginHash).toBe(hash);
     expect((await owner.versions.list({ experimentId: experiment.id }))[0]).toMatchObject({
-      pluginId: "lab-bot",
+      robotId: "lab-bot",
       pluginVersion: "1.0.0",
       pluginHash: hash,
     });

@@ -7,7 +7,7 @@ import { appRouter } from "../../src/server/api/root";
 import { createCallerFactory } from "../../src/server/api/trpc";
 import { seedDemo } from "../../src/server/seed/demo";
 import { freshDatabase } from "../support/db";
-import { buildFixture, TEST_SECRET, testMedia } from "./fixture";
+import { buildFixture, DEMO_CHANNELS, TEST_SECRET, testMedia } from "./fixture";
 
 const { db, close } = await freshDatabase();
 await seedDemo(db);
@@ -24,14 +24,14 @@ describe("robot plugins on the server", () => {
 
   it("records the exact plugin version in a published version", async () => {
     const study = await f.newStudy();
-    const e = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+    const e = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
     await f.api("owner").experiments.saveDesign({
       experimentId: e.id,
       baseRevision: 0,
       steps: [{ name: "S", actions: [{ type: "wave" }] }],
     });
     expect(await f.api("owner").versions.publish({ experimentId: e.id })).toMatchObject({
-      pluginId: "nao6-ros2",
+      robotId: "nao6-ros2",
       pluginVersion: "3.0.0",
     });
   });
@@ -45,6 +45,7 @@ describe("robot plugins on the server", () => {
       secret: TEST_SECRET,
       runtimeUrl: "ws://127.0.0.1:1",
       media: testMedia(),
+      robotChannels: DEMO_CHANNELS,
     });
     const [study] = await asOwner.studies.mine();
     const [storyteller] = await asOwner.experiments.list({ studyId: study!.id });

@@ -29,7 +29,8 @@ const routes = routeFiles(API).filter((r) => !OWN_TESTS.has(r));
 
 /** A study with a finished recording and a recording still taking parts, built by `api`. */
 async function studyWithRows(api: Awaited<ReturnType<typeof s.apiAs>>, studyId: string, code: string) {
-  const e = await api.experiments.create({ studyId, name: `Experiment ${code}`, robotPluginId: "nao6-ros2" });
+  await api.studies.update({ studyId, status: "active" });
+  const e = await api.experiments.create({ studyId, name: `Experiment ${code}`, robotId: "nao6-ros2" });
   await api.experiments.saveDesign({
     experimentId: e.id,
     baseRevision: 0,

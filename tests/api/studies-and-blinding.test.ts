@@ -16,7 +16,7 @@ afterAll(close);
 /** A study with a published experiment, a condition on it, and a consenting participant with a trial. */
 async function runningStudy() {
   const study = await f.newStudy();
-  const experiment = await owner.experiments.create({ studyId: study.id, name: "Story", robotPluginId: "nao6-ros2" });
+  const experiment = await owner.experiments.create({ studyId: study.id, name: "Story", robotId: "nao6-ros2" });
   await owner.experiments.saveDesign({
     experimentId: experiment.id,
     baseRevision: 0,

@@ -109,7 +109,7 @@ describe("allocation concealment", () => {
 describe("errors a client sees", () => {
   it("refuses a NUL character with where it is, and stores nothing", async () => {
     const study = await f.newStudy();
-    const experiment = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+    const experiment = await owner.experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
     const error = await f.httpError("owner", "experiments.saveDesign", {
       experimentId: experiment.id,
       baseRevision: 0,
@@ -129,7 +129,7 @@ describe("errors a client sees", () => {
     // A real failure of the real database: the table the procedure reads is gone for a moment.
     await db.execute("alter table annotations rename to annotations_away");
     try {
-      const experiment = await owner.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+      const experiment = await owner.experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
       await owner.experiments.saveDesign({
         experimentId: experiment.id,
         baseRevision: 0,

@@ -6,6 +6,7 @@ import { readFileSync } from "node:fs";
 import type { Browser, Locator, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { expectAccessible } from "../support/accessibility";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { scoreDesign } from "../support/storyteller-design-checklist";
 import { STORYTELLER_TEXT as TEXT } from "../support/storyteller-run-checklist";
@@ -90,6 +91,7 @@ describe.sequential("the experiment designer, in the browser", () => {
     await r.click(page.getByRole("tab", { name: "Experiments" }));
     await r.click(page.getByRole("button", { name: "New experiment" }));
     await r.fill(page.getByLabel("Name"), "Storyteller, built by hand");
+    await expectAccessible(page, "the New experiment dialog");
     const traffic: string[] = [];
     page.on("request", (req) => void traffic.push(`sent ${req.method()} ${req.url().slice(0, 120)}`));
     page.on(
@@ -202,9 +204,9 @@ describe.sequential("the experiment designer, in the browser", () => {
     await page.locator('[data-step="Introduction"] [data-action]').nth(1).focus();
     await page.keyboard.press("Enter");
     await page.keyboard.press("Alt+ArrowUp");
-    await expect.poll(() => intro.first().getAttribute("aria-label")).toBe("Wave");
+    await expect.poll(() => intro.first().getAttribute("data-action")).toBe("Wave");
     await page.keyboard.press("Control+z");
-    await expect.poll(() => intro.first().getAttribute("aria-label")).toMatch(/^Say/);
+    await expect.poll(() => intro.first().getAttribute("data-action")).toBe("Say");
     await page.locator('[data-block="nod"]').focus();
     await page.keyboard.press("Enter");
     await expect.poll(() => intro.count()).toBe(3);
@@ -302,7 +304,7 @@ describe.sequential("the experiment designer, in the browser", () => {
     expect(await shown("stop")).toBe(1);
     expect(await shown("look down")).toBe(1);
     expect(await shown("yes (nod)")).toBe(0);
-    await library.getByRole("button", { name: /^Versions of Nod on NAO6/ }).click();
+    await library.getByRole("button", { name: /^1 version of Nod on NAO6/ }).click();
     expect(await shown("yes (nod)")).toBe(1);
     const lastStep = (await page.locator("[data-step]").last().getAttribute("data-step"))!;
     const inLast = page.locator(`[data-step="${lastStep}"] [data-action]`);

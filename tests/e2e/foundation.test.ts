@@ -7,6 +7,7 @@ import { join, normalize } from "node:path";
 import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { expectAccessible } from "../support/accessibility";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 
 describe.sequential("the platform foundation, in the browser", () => {
@@ -87,6 +88,7 @@ describe.sequential("the platform foundation, in the browser", () => {
     await page.getByRole("button", { name: "New study" }).click();
     await page.getByLabel("Title").fill("Gesture and recall");
     await page.getByLabel("Description").fill("Do a robot's gestures help listeners remember?");
+    await expectAccessible(page, "the New study dialog");
     await page.getByRole("button", { name: "Create study" }).click();
     await page.waitForURL(/\/studies\/[\w-]+$/);
     await page.getByRole("heading", { name: "Gesture and recall", level: 1 }).waitFor();

@@ -4,6 +4,7 @@
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { childPid, DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { expectAccessible } from "../support/accessibility";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
 import { connectTrial } from "../support/socket";
@@ -92,6 +93,8 @@ describe.sequential("a live trial in two browsers", () => {
         timeout: 5000,
       })
       .toMatch(/^done/);
+    // Its cause over, the refusal leaves the page by itself.
+    await expect.poll(() => wizard.getByText("Wait: the 2 s pause is still running.").count()).toBe(0);
     await press("n", () => wizard.getByText("What did the participant answer?").waitFor());
 
     await observer.getByLabel("Label").fill("Participant hesitated");
@@ -103,6 +106,10 @@ describe.sequential("a live trial in two browsers", () => {
     await stepIs(observer, "Response — correct");
     await press("n", () => wizard.getByRole("button", { name: /End$/ }).waitFor());
     await press("n", () => expect.poll(() => observer.getByTestId("trial-status").textContent()).toBe("completed"));
+    // A completed trial takes nothing more: its controls are off, emergency stop included, and the page says why.
+    await wizard.getByText(/^This trial is completed: nothing more can be sent to it or to its robot/).waitFor();
+    for (const name of ["Emergency stop (Esc)", "Abort trial…", "Pause (P)", "Add note"])
+      expect(await wizard.getByRole("button", { name }).isDisabled(), name).toBe(true);
 
     // The log, checked against the protocol document's "run" checklist.
     const trialId = trialPath.split("/").pop()!;
@@ -126,7 +133,7 @@ describe.sequential("a live trial in two browsers", () => {
       trialId,
     );
     expect(record).toMatchObject({
-      schemaVersion: 1,
+      schemaVersion: 2,
       protocol: { experiment: { name: "Interactive Storyteller" } },
       annotations: [{ label: "Participant hesitated" }],
     });
@@ -189,8 +196,27 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.getByLabel("Action").selectOption({ label: "Nod" });
     await wizard.getByRole("button", { name: /Send “Nod”/ }).click();
     await wizard.getByRole("region", { name: "Off script" }).getByText(/^done/).waitFor();
+    // Named as the library names it, not by its type.
+    await wizard.getByRole("region", { name: "Off script" }).getByText("Nod", { exact: true }).waitFor();
+    await expectAccessible(wizard, "the unscripted action form");
+    // One the robot cannot do (sent past the form, as another client could): the reason, in words, beside its badge.
+    const socket = await wizardApi.trials.socketToken
+      .mutate({ trialId: wizard.url().split("/").pop()! })
+      .then(({ url, token }) => connectTrial(url, token));
+    await socket.command("cartwheel", {
+      kind: "unscripted",
+      actionType: "posture",
+      parameters: { posture: "cartwheel" },
+    });
+    socket.close();
+    const offScript = wizard.getByRole("region", { name: "Off script" });
+    await offScript.getByText(/^failed/).waitFor();
+    expect(await offScript.getByRole("alert").textContent()).toBe(
+      'Posture: "posture" must be one of "stand", "sit", "crouch", "rest".',
+    );
 
     // Off the designed path, by hand: each is allowed and logged with its kind.
+    await wizard.getByText("Jump to another step (a deviation)").click();
     await wizard.getByRole("button", { name: "Jump to Recall question" }).click();
     await expect.poll(() => currentStep(wizard)).toBe("Recall question");
     await wizard.getByRole("button", { name: "Run Question now" }).click();
@@ -199,15 +225,31 @@ describe.sequential("a live trial in two browsers", () => {
       .filter({ hasText: "Question" })
       .getByText("done")
       .waitFor();
+    await wizard.keyboard.press("Escape");
+    await expect.poll(() => wizard.getByTestId("emergency-stop").textContent()).toBe("emergency stop");
+    // N while stopped is refused; the refusal lasts while its cause does, and no longer (below).
+    const refused = wizard.getByRole("alert").filter({ hasText: "The trial is paused: resume it first." });
+    await wizard.keyboard.press("n");
+    await refused.waitFor();
     await wizard.getByRole("button", { name: "Abort trial…" }).click();
+    await expectAccessible(wizard, "asked to confirm the abort");
     await wizard.getByRole("button", { name: "Confirm: abort this trial" }).click();
     await expect.poll(() => wizard.getByTestId("trial-status").textContent()).toBe("aborted");
+    // Ended, the trial's emergency stop is disarmed: no longer red, its button off, and the page says why.
+    await wizard.getByText(/^This trial was aborted: nothing more can be sent to it or to its robot/).waitFor();
+    expect(await wizard.getByTestId("emergency-stop").textContent()).toBe("emergency stop used");
+    const stop = wizard.getByRole("button", { name: "Emergency stop (Esc)" });
+    expect(await stop.isDisabled()).toBe(true);
+    expect(await stop.getAttribute("class")).not.toMatch(/bg-red/);
+    expect(await wizard.getByRole("button", { name: /Trial ended/ }).isDisabled()).toBe(true);
+    expect(await refused.count()).toBe(0);
 
     const trialId = wizard.url().split("/").pop()!;
     const log = await researcherApi.trials.events.query({ trialId });
     const seqs = log.map((e) => e.seq);
     expect(seqs).toEqual(seqs.map((_, i) => i + 1));
     expect(log.filter((e) => e.deviation).map((e) => e.deviation)).toEqual([
+      "unscripted",
       "unscripted",
       "manual_jump",
       "out_of_order",
@@ -237,6 +279,9 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.command("w", { kind: "unscripted", actionType: "wave", parameters: {} });
     await page.getByRole("status", { name: "Robot speech" }).getByText('“She said "hi" {{name}} & left.”').waitFor();
     await expect.poll(() => page.getByTestId("robot-gesture").textContent()).not.toBe("none");
+    // The NAO's wave is an animation path on the wire; the page names it, and shows no Markdown.
+    expect(await page.getByTestId("robot-gesture").textContent()).not.toContain("/");
+    expect(await page.getByRole("main").textContent()).not.toContain("`");
     await screenshot(page, "robot-view");
     wizard.close();
     await page.context().close();

@@ -7,6 +7,7 @@ import { strFromU8, unzipSync } from "fflate";
 import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { expectAccessible } from "../support/accessibility";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
 import { runWholeTrial } from "../support/run-trial";
@@ -51,10 +52,11 @@ describe.sequential("questionnaires in the browser", () => {
     await wizard.goto(`/trials/${trial.id}`);
     await wizard.getByRole("button", { name: "Open System Usability Scale (SUS) for the participant" }).click();
     const link = (await wizard.getByTestId("questionnaire-link-System Usability Scale (SUS)").getAttribute("href"))!;
+    await expectAccessible(wizard, "the questionnaire opened for the participant");
     expect(link).toMatch(/\/q\/[\w-]{20,}$/);
 
     // The participant's device: no account.
-    const tablet = await (await browser.newContext({ viewport: { width: 1024, height: 1366 } })).newPage();
+    const tablet = await (await newContext(browser, app.url, { width: 1024, height: 1366 })).newPage();
     await tablet.goto(link);
     const items = tablet.locator("fieldset");
     await expect.poll(() => items.count()).toBe(10);
@@ -75,8 +77,11 @@ describe.sequential("questionnaires in the browser", () => {
     await screenshot(tablet, "questionnaire-participant");
     await tablet.getByRole("button", { name: "Submit answers" }).click();
     await tablet.getByRole("heading", { name: "Thank you!" }).waitFor();
+    await expectAccessible(tablet, "thanked for the answers");
     await tablet.goto(link);
     await tablet.getByText(/already been submitted with this link/).waitFor();
+    await tablet.context().close();
+    await wizard.context().close();
 
     await researcher.goto(`/trials/${trial.id}/analysis`);
     await expect.poll(() => researcher.getByTestId("questionnaire-score").textContent()).toBe("Score 60");
@@ -97,6 +102,7 @@ describe.sequential("questionnaires in the browser", () => {
     expect(record.questionnaires).toMatchObject([
       { questionnaire: "System Usability Scale (SUS)", score: { score: 60 } },
     ]);
+    await researcher.context().close();
   }, 180_000);
 
   it("builds a consent form, sends its link ahead, and the participant's agreement is their consent record", async () => {
@@ -135,9 +141,10 @@ describe.sequential("questionnaires in the browser", () => {
     await researcher.getByLabel("Questionnaire", { exact: true }).selectOption({ label: "Consent form" });
     await researcher.getByRole("button", { name: "Make the link" }).click();
     const link = (await researcher.getByTestId("sent-link").textContent())!.trim();
+    await expectAccessible(researcher, "the questionnaire link dialog");
     await researcher.keyboard.press("Escape");
 
-    const phone = await (await browser.newContext({ viewport: { width: 390, height: 844 } })).newPage();
+    const phone = await (await newContext(browser, app.url, { width: 390, height: 844 })).newPage();
     await phone.goto(link);
     await phone.getByText("A robot will tell you a short story").waitFor();
     await phone.getByRole("button", { name: "Submit answers" }).click();
@@ -147,10 +154,12 @@ describe.sequential("questionnaires in the browser", () => {
     await screenshot(phone, "questionnaire-consent");
     await phone.getByRole("button", { name: "Submit answers" }).click();
     await phone.getByRole("heading", { name: "Thank you!" }).waitFor();
+    await phone.context().close();
 
     await researcher.reload();
     await researcher.getByRole("tab", { name: "Participants" }).click();
     await expect.poll(() => researcher.getByLabel("Consent of C900").inputValue()).toBe("given");
     await researcher.getByRole("cell", { name: "Consent form v1" }).waitFor();
+    await researcher.context().close();
   }, 180_000);
 });

@@ -156,8 +156,8 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
     await signInAs(researcher, "researcher@demo.hristudio", DEMO_PASSWORD);
     await researcher.getByRole("link", { name: /Storytelling and memory/ }).click();
     await researcher.getByRole("tab", { name: "Trials" }).click();
-    // Me by default: the wizard select starts there.
-    expect(await researcher.getByLabel("Wizard", { exact: true }).inputValue()).toBe("me");
+    // Unassigned by default: whoever starts it is recorded as its wizard.
+    expect(await researcher.getByLabel("Wizard", { exact: true }).inputValue()).toBe("any");
     for (const [code, wizard] of [
       ["P001", "Wim Wizard (wizard)"],
       ["P002", "Any wizard (the first to start it)"],

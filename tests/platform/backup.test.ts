@@ -8,6 +8,7 @@ import { mkdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 import postgres from "postgres";
 import { afterAll, describe, expect, it } from "vitest";
+import { DEMO_CHANNELS } from "../api/fixture";
 import { appRouter } from "../../src/server/api/root";
 import { readJournal, migrateTo } from "../../src/server/backup/migrations";
 import { createDatabase } from "../../src/store/client";
@@ -88,9 +89,11 @@ async function studyData(url: string, mediaDir: string) {
       secret: TEST_SECRET,
       runtimeUrl: "ws://127.0.0.1:1",
       media: { storage, maxBytes: 8 * 1024 * 1024 },
+      robotChannels: DEMO_CHANNELS,
     });
     const study = await api.studies.create({ title: `Backups: ${TRICKY}` });
-    const e = await api.experiments.create({ studyId: study.id, name: "E", robotPluginId: "nao6-ros2" });
+    await api.studies.update({ studyId: study.id, status: "active" });
+    const e = await api.experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });
     await api.experiments.saveDesign({
       experimentId: e.id,
       baseRevision: 0,

@@ -1,8 +1,8 @@
 import { readFileSync } from "node:fs";
 import { afterAll, describe, expect, it } from "vitest";
-import { loadPlugin, type Plugin } from "../../src/core/plugins";
+import { loadPlugin, unreachable, type Plugin } from "../../src/core/plugins";
 import { startDefaultSimulator } from "../../src/robots/simulator/main";
-import { transportFor } from "../../src/robots/transports";
+import { channelsOf, transportFor } from "../../src/robots/transports";
 
 const plugin = (file: string) => (loadPlugin(file, readFileSync(`plugins/${file}`, "utf8")) as { value: Plugin }).value;
 
@@ -25,9 +25,32 @@ describe("choosing a transport from the plugin", () => {
   });
 
   it.each([
-    ["turtlebot3-burger.json", {}, "no rosbridge address configured for turtlebot3-burger"],
-    ["simulated.json", {}, "the simulated robot is not running"],
+    [
+      "turtlebot3-burger.json",
+      {},
+      "TurtleBot3 Burger cannot be reached: it needs the robot's rosbridge, and this server has no address for it: set HRI_ROSBRIDGE_URL (see docs/robot-setup.md)",
+    ],
+    [
+      "simulated.json",
+      {},
+      "Simulated robot cannot be reached: it needs the simulated robot, which this server is not running (npm start runs it when HRI_ROSBRIDGE_URL is not set)",
+    ],
   ])("%s with %j: %s", (file, config, reason) => {
     expect(transportFor(plugin(file), config)).toEqual({ ok: false, reason });
+  });
+
+  it("fails a NAOqi action at once when no SSH address is set, with the designer's reason", async () => {
+    const sim = await simulator;
+    const nao = plugin("nao6-ros2.json");
+    const choice = transportFor(nao, { rosbridgeUrl: sim.url });
+    if (!choice.ok) throw new Error(choice.reason);
+    const sit = nao.actions.find((a) => a.id === "sit")!;
+    const why = unreachable(nao, sit, channelsOf({ rosbridgeUrl: sim.url }));
+    expect(why).toMatch(/^it needs SSH to the robot/);
+    expect(await choice.transport.dispatch(sit, {})).toEqual({
+      status: "failed",
+      reason: `"Sit" cannot run on ${nao.name}: ${why}`,
+    });
+    await choice.transport.close();
   });
 });

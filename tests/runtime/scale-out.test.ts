@@ -13,8 +13,8 @@ import { connectTrial } from "../support/socket";
 
 const SECRET = "scale-out-test-secret".padEnd(40, "x");
 const protocol = {
-  schemaVersion: 1,
-  experiment: { id: "e", name: "E", description: "", robotPluginId: "no-robot" },
+  schemaVersion: 2 as const,
+  experiment: { id: "e", name: "E", description: "", robotId: "no-robot" },
   steps: [
     {
       id: "s1",
@@ -45,7 +45,7 @@ describe.sequential("several runtime processes", () => {
           role: "researcher",
         })
       ).id;
-    const [study] = await db.insert(studies).values({ title: "S" }).returning();
+    const [study] = await db.insert(studies).values({ title: "S", status: "active" }).returning();
     await db.insert(studyMembers).values(
       ["wizard", "observer"].map((role) => ({
         studyId: study!.id,
@@ -55,11 +55,11 @@ describe.sequential("several runtime processes", () => {
     );
     const [experiment] = await db
       .insert(experiments)
-      .values({ studyId: study!.id, name: "E", robotPluginId: "no-robot" })
+      .values({ studyId: study!.id, name: "E", robotId: "no-robot" })
       .returning();
     const [version] = await db
       .insert(experimentVersions)
-      .values({ experimentId: experiment!.id, version: 1, snapshot: protocol, hash: "h", pluginId: "no-robot" })
+      .values({ experimentId: experiment!.id, version: 1, snapshot: protocol, hash: "h", robotId: "no-robot" })
       .returning();
     trialId = (
       await db

@@ -190,6 +190,42 @@ describe.sequential("the trial socket's access", () => {
     second.close();
   });
 
+  it("records the researcher who starts an unassigned trial as its wizard, its creator kept apart", async () => {
+    const trialId = await f.a.trial(null, "scheduled");
+    await f.db.update(trials).set({ createdBy: f.a.people.owner }).where(eq(trials.id, trialId));
+    const researcher = await f.open("researcher", trialId);
+    const wizard = await f.open("wizard", trialId);
+    expect(await researcher.command("s", { kind: "start" })).toMatchObject({ type: "ack" });
+    const [row] = await f.db
+      .select({ wizardId: trials.wizardId, createdBy: trials.createdBy })
+      .from(trials)
+      .where(eq(trials.id, trialId));
+    expect(row).toEqual({ wizardId: f.a.people.researcher, createdBy: f.a.people.owner });
+    expect(await wizard.next((m) => m.type === "access")).toEqual({ type: "access", role: "wizard", mayRun: false });
+    researcher.close();
+    wizard.close();
+  });
+
+  it("starts no trial of a study set back to draft, and starts it once the study is active again", async () => {
+    const trialId = await f.a.trial(null, "scheduled");
+    await f.db.update(studies).set({ status: "draft" }).where(eq(studies.id, f.a.studyId));
+    try {
+      const early = await f.open("researcher", trialId);
+      expect(await early.command("s", { kind: "start" })).toMatchObject({
+        type: "rejected",
+        reason: expect.stringMatching(/^This study is still a draft: rehearse its experiments from the designer/),
+      });
+      early.close();
+      const [row] = await f.db.select({ wizardId: trials.wizardId }).from(trials).where(eq(trials.id, trialId));
+      expect(row!.wizardId).toBeNull();
+    } finally {
+      await f.db.update(studies).set({ status: "active" }).where(eq(studies.id, f.a.studyId));
+    }
+    const later = await f.open("researcher", trialId);
+    expect(await later.command("s", { kind: "start" })).toMatchObject({ type: "ack" });
+    later.close();
+  });
+
   it("logs a recording only on its own trial", async () => {
     const trialId = await f.a.trial(f.a.people.wizard!, "live");
     const mine = await f.recording(trialId);

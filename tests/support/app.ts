@@ -13,6 +13,8 @@ export const DEMO_PASSWORD = "demo-password-for-tests";
 export interface RunningApp {
   url: string;
   runtimeUrl: string;
+  /** The simulated robot's rosbridge socket, for a test that listens as the robot hears. */
+  simulatorUrl: string;
   dataDir: string;
   process: ChildProcess;
   output: () => string;
@@ -73,6 +75,7 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
   return {
     url,
     runtimeUrl: `ws://127.0.0.1:${runtimePort}`,
+    simulatorUrl: `ws://127.0.0.1:${simulatorPort}`,
     dataDir,
     process: child,
     output: () => output,

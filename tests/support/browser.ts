@@ -1,7 +1,10 @@
-// Debian's Chromium driven by playwright-core, for end-to-end tests.
+// Debian's Chromium driven by playwright-core, for end-to-end tests. Every
+// page they reach is checked against WCAG 2.1 AA (./accessibility): the
+// sign-in form, each screenshot, and each page as a test leaves it.
 import { chromium, type Browser, type BrowserContext, type Page } from "playwright-core";
 import { mkdirSync } from "node:fs";
 import { join, resolve } from "node:path";
+import { checkPagesOnClose, expectAccessible } from "./accessibility";
 import { CHROMIUM_ARGS, findChromium } from "./chromium";
 
 const root = resolve(import.meta.dirname, "..", "..");
@@ -12,22 +15,37 @@ export async function launchBrowser(): Promise<Browser> {
   return chromium.launch({ executablePath, args: CHROMIUM_ARGS, headless: true });
 }
 
-export async function newContext(browser: Browser, baseURL: string): Promise<BrowserContext> {
-  const context = await browser.newContext({ baseURL, viewport: { width: 1366, height: 800 } });
+/** A browser context of its own (a person, a device); the default viewport is a laptop's. */
+export async function newContext(
+  browser: Browser,
+  baseURL: string,
+  viewport = { width: 1366, height: 800 },
+): Promise<BrowserContext> {
+  const context = await browser.newContext({ baseURL, viewport });
   context.setDefaultTimeout(15_000);
+  checkPagesOnClose(context);
   return context;
 }
 
+// The sign-in form is the same page every time: checked once per test file.
+let signInChecked = false;
+
 export async function signInAs(page: Page, email: string, password: string) {
   await page.goto("/sign-in");
+  if (!signInChecked) {
+    await page.getByLabel("Email").waitFor();
+    await expectAccessible(page, "the sign-in form");
+    signInChecked = true;
+  }
   await page.getByLabel("Email").fill(email);
   await page.getByLabel("Password").fill(password);
   await page.getByRole("button", { name: "Sign in" }).click();
   await page.waitForURL((url) => !url.pathname.startsWith("/sign-in"));
 }
 
-/** Screenshots the docs use: docs/screenshots/<name>.png. */
+/** Screenshots the docs use: docs/screenshots/<name>.png. What they show is checked first. */
 export async function screenshot(page: Page, name: string) {
+  await expectAccessible(page, `screenshot ${name}`);
   const dir = join(root, "docs", "screenshots");
   mkdirSync(dir, { recursive: true });
   await page.screenshot({ path: join(dir, `${name}.png`) });

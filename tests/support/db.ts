@@ -33,7 +33,7 @@ export async function bareTrial(db: Database): Promise<string> {
   const [study] = await db.insert(studies).values({ title: "S" }).returning();
   const [experiment] = await db
     .insert(experiments)
-    .values({ studyId: study!.id, name: "E", robotPluginId: "sim" })
+    .values({ studyId: study!.id, name: "E", robotId: "sim" })
     .returning();
   const [trial] = await db
     .insert(trials)

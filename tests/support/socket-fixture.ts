@@ -22,8 +22,8 @@ import { connectTrial } from "./socket";
 export const SECRET = "socket-access-test-secret".padEnd(40, "x");
 
 const protocolOf = (tag: string) => ({
-  schemaVersion: 1,
-  experiment: { id: `${tag}-experiment`, name: `${tag} experiment`, description: "", robotPluginId: "no-robot" },
+  schemaVersion: 2 as const,
+  experiment: { id: `${tag}-experiment`, name: `${tag} experiment`, description: "", robotId: "no-robot" },
   steps: [
     {
       id: `${tag}-step-1`,
@@ -79,11 +79,11 @@ export async function socketFixture() {
     }
     const [experiment] = await db
       .insert(experiments)
-      .values({ studyId: study!.id, name: `${tag} experiment`, robotPluginId: "no-robot" })
+      .values({ studyId: study!.id, name: `${tag} experiment`, robotId: "no-robot" })
       .returning();
     const [version] = await db
       .insert(experimentVersions)
-      .values({ experimentId: experiment!.id, version: 1, snapshot: protocolOf(tag), hash: tag, pluginId: "no-robot" })
+      .values({ experimentId: experiment!.id, version: 1, snapshot: protocolOf(tag), hash: tag, robotId: "no-robot" })
       .returning();
     /** A trial of this study, its events stored before the runtime first opens it. */
     const trial = async (wizardId: string | null, state: "scheduled" | "live" | "completed" = "scheduled") => {

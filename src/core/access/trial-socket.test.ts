@@ -14,8 +14,9 @@ const access = (
     active: true,
     studyId: "s1",
     studyRole: "wizard",
+    studyStatus: "active",
     blinding: NOT_BLINDED,
-    trial: { wizardId, status },
+    trial: { wizardId, status, isRehearsal: false },
     ...rest,
   };
 };
@@ -46,8 +47,26 @@ describe("who may command a trial over its socket", () => {
     ["an owner on a wizard's trial", access({ studyRole: "owner", wizardId: "u-other" }), "jump", "allow"],
     ["a researcher on a wizard's trial", access({ studyRole: "researcher", wizardId: "u-other" }), "abort", "allow"],
     [
-      "a researcher starting an unassigned trial does not claim it",
+      "a researcher starting an unassigned trial claims it too",
       access({ studyRole: "researcher", wizardId: null, status: "scheduled" }),
+      "start",
+      "claim",
+    ],
+    [
+      "an owner starting an unassigned trial claims it",
+      access({ studyRole: "owner", wizardId: null, status: "scheduled" }),
+      "start",
+      "claim",
+    ],
+    [
+      "a researcher's next on an unassigned trial claims nothing",
+      access({ studyRole: "researcher", wizardId: null }),
+      "next",
+      "allow",
+    ],
+    [
+      "an owner starting another wizard's trial runs it without taking it over",
+      access({ studyRole: "owner", wizardId: "u-other", status: "scheduled" }),
       "start",
       "allow",
     ],
@@ -58,6 +77,34 @@ describe("who may command a trial over its socket", () => {
       /^As observer you may watch this trial but not run it\.$/,
     ],
     ["an observer's emergency stop", access({ studyRole: "observer" }), "emergency_stop", /As observer/],
+    [
+      "starting a trial in a draft study",
+      access({ studyRole: "owner", studyStatus: "draft", status: "scheduled" }),
+      "start",
+      /still a draft: rehearse its experiments/,
+    ],
+    [
+      "starting an unassigned trial in a completed study claims nothing",
+      access({ studyStatus: "completed", wizardId: null, status: "scheduled" }),
+      "start",
+      /completed: its data is kept read-only/,
+    ],
+    [
+      "starting a rehearsal in a draft study",
+      access({
+        studyStatus: "draft",
+        status: "scheduled",
+        trial: { wizardId: me, status: "scheduled", isRehearsal: true },
+      }),
+      "start",
+      "allow",
+    ],
+    [
+      "carrying on with a running trial once the study is completed",
+      access({ studyStatus: "completed" }),
+      "next",
+      "allow",
+    ],
     ["a removed member", access({ studyRole: null }), "next", /no longer a member/],
     ["a removed member's emergency stop", access({ studyRole: null }), "emergency_stop", /no longer a member/],
     ["a disabled account", access({ active: false, studyRole: "owner" }), "next", /no longer active/],

@@ -3,6 +3,7 @@
 // PostgreSQL announces) and asks here on every message, so a decision never
 // waits on the database and never rests on what the client claims.
 import type { Blinding } from "../studies/blinding";
+import { type StudyStatus, trialRefusal } from "../studies/status";
 import type { TrialState } from "../trial/types";
 import { decide, studyRoleMay, type StudyRole, type SystemRole } from "./policy";
 
@@ -15,8 +16,10 @@ export interface TrialAccess {
   studyId: string;
   /** The caller's role in the trial's study; null once they are no longer a member. */
   studyRole: StudyRole | null;
+  /** Only an active study starts trials with participants (a draft rehearses). */
+  studyStatus: StudyStatus;
   blinding: Blinding;
-  trial: { wizardId: string | null; status: TrialState["status"] };
+  trial: { wizardId: string | null; status: TrialState["status"]; isRehearsal: boolean };
 }
 
 export type SocketVerdict = { allow: true; claim: boolean } | { allow: false; reason: string };
@@ -39,10 +42,15 @@ export function commandVerdict(access: TrialAccess, kind: string): SocketVerdict
   // Safety before procedure: whoever may run trials in this study may stop the
   // robot of any of them, the trial's own wizard or not.
   if (kind === "emergency_stop") return { allow: true, claim: false };
-  // Owners and researchers run any trial of their study; a wizard runs the
-  // trials assigned to them, or an unassigned one, which starting claims.
-  if (role !== "wizard" || access.trial.wizardId === access.userId) return { allow: true, claim: false };
+  // A trial made while the study was active does not start once it is a draft again, or completed;
+  // one already running carries on, so no participant is left mid-protocol.
+  const notNow = kind === "start" && !access.trial.isRehearsal ? trialRefusal(access.studyStatus) : null;
+  if (notNow) return refuse(notNow);
+  // Whoever starts an unassigned trial runs it: starting records them as its
+  // wizard, so the trial is credited to who ran it, not to who created it.
   if (access.trial.wizardId === null) return { allow: true, claim: kind === "start" };
+  // Owners and researchers run any trial of their study; a wizard runs the trials assigned to them.
+  if (role !== "wizard" || access.trial.wizardId === access.userId) return { allow: true, claim: false };
   return refuse("This trial is assigned to another wizard: you may watch it but not run it.");
 }
 

@@ -2,8 +2,10 @@
 // the trial's steps, actions, deviations and marked moments beside the video
 // in the tool they already use. Times are milliseconds from the trial's t0,
 // or, when the trial was recorded, from the start of the linked recording.
+import { blockName, type ActionNames } from "../designer/action-name";
 import type { TrialEvent, TrialProtocol } from "../trial";
 import { fidelityReport } from "./fidelity";
+import { trialNames } from "./names";
 
 export interface ElanInput {
   protocol: TrialProtocol;
@@ -13,6 +15,8 @@ export interface ElanInput {
   media?: { fileName: string; mimeType: string; offsetMs: number };
   /** When the trial ran (ISO 8601): the document's date. */
   date: string;
+  /** The robot plugin's names of its own actions (see actionNamesOf). */
+  names?: ActionNames;
 }
 
 type Span = { start: number; end: number; value: string };
@@ -29,28 +33,48 @@ const span = (start: number, end: number | null, value: string): Span => ({
   value,
 });
 
+/**
+ * A coder reads what was said in full: speech and instructions carry their
+ * whole text after the label (or the block's name); anything else is its
+ * display name.
+ */
+function spoken(
+  action: { type: string; name?: string; parameters: Record<string, unknown> },
+  shown: string,
+  names?: ActionNames,
+) {
+  const text = action.parameters.text;
+  return typeof text === "string" ? `${action.name?.trim() || blockName(action.type, names)}: ${text}` : shown;
+}
+
 function tiers(input: ElanInput): Record<string, Span[]> {
-  const report = fidelityReport(input.protocol, input.events);
+  const report = fidelityReport(input.protocol, input.events, input.names);
+  const planned = new Map(input.protocol.steps.flatMap((s) => s.actions.map((a) => [a.id, a])));
   const lastMs = Math.max(0, ...input.events.map((e) => e.relMs ?? 0));
   const steps = report.steps
     .filter((s) => s.enteredMs !== null)
     .map((s) => span(s.enteredMs!, s.leftMs ?? lastMs, s.name));
   const actions = report.actions
     .filter((a) => a.requestedMs !== null)
-    .map((a) => {
-      const text = input.protocol.steps.flatMap((s) => s.actions).find((x) => x.id === a.actionId)?.parameters.text;
-      return span(
-        a.requestedMs!,
-        a.requestedMs! + (a.durationMs ?? 0),
-        typeof text === "string" ? `${a.name}: ${text}` : a.name,
-      );
-    });
+    .map((a) =>
+      span(a.requestedMs!, a.requestedMs! + (a.durationMs ?? 0), spoken(planned.get(a.actionId)!, a.name, input.names)),
+    );
   const unscripted = report.unscripted
     .filter((u) => u.requestedMs !== null)
-    .map((u) => span(u.requestedMs!, null, `unscripted ${u.type}`));
+    .map((u) =>
+      span(
+        u.requestedMs!,
+        null,
+        `${spoken({ type: u.type, parameters: u.parameters }, u.name, input.names)} (unscripted)`,
+      ),
+    );
+  const named = trialNames(input.protocol, input.events, input.names);
   const deviations = input.events
     .filter((e) => e.deviation && e.relMs !== null)
-    .map((e) => span(e.relMs!, null, `${e.deviation!.replace("_", " ")}: ${e.type}`));
+    .map((e) => {
+      const { stepName, actionName } = named.of(e);
+      return span(e.relMs!, null, `${e.deviation!.replace("_", " ")}: ${actionName ?? stepName ?? e.type}`);
+    });
   const moments = input.annotations.map((m) =>
     span(m.relMs, m.relMs + MOMENT_MS, m.note ? `${m.label}: ${m.note}` : m.label),
   );

@@ -1,7 +1,8 @@
 import { describe, expect, it } from "vitest";
 import { parseCsv } from "../../../tests/support/csv";
 import type { StoredEvent } from "@/core/trial";
-import { eventsCsv } from "./exports";
+import { eventsCsv, trialRecordJson } from "./exports";
+import { trialNames } from "./names";
 
 const events: StoredEvent[] = [
   {
@@ -28,34 +29,76 @@ const events: StoredEvent[] = [
   },
 ];
 
+const names = trialNames({ steps: [{ id: "s1", name: "Welcome", actions: [] }] }, events);
+const people = { wizard: "Wim Wizard", createdBy: "Rita Researcher" };
+
 describe("the events CSV", () => {
   it("parses back to the same events, quotes, commas, newlines and all", () => {
-    const [header, ...rows] = parseCsv(eventsCsv("t1", events));
+    const [header, ...rows] = parseCsv(eventsCsv("t1", events, people, names));
     expect(header).toEqual([
       "trial_id",
+      "wizard",
+      "created_by",
       "seq",
       "type",
       "step_id",
       "action_id",
       "action_type",
+      "step_name",
+      "action_name",
       "deviation",
       "rel_ms",
       "server_time",
       "actor_id",
       "payload",
     ]);
-    expect(rows.map((r) => JSON.parse(r[10]!))).toEqual(JSON.parse(JSON.stringify(events)));
-    expect(rows[1]!.slice(0, 10)).toEqual([
+    expect(rows.map((r) => JSON.parse(r[14]!))).toEqual(JSON.parse(JSON.stringify(events)));
+    expect(rows[1]!.slice(0, 14)).toEqual([
       "t1",
+      "Wim Wizard",
+      "Rita Researcher",
       "2",
       "action.requested",
       "s1",
       "a1",
       "say",
+      "Welcome",
+      'Say: She said "hi", then left; {{x}}…',
       "unscripted",
       "12.5",
       "2026-01-01T10:00:00.012Z",
       "u1",
+    ]);
+  });
+});
+
+describe("the events CSV of a trial nobody ran yet", () => {
+  it("leaves the wizard empty and still names who created it", () => {
+    const [, row] = parseCsv(
+      eventsCsv("t1", events.slice(0, 1), { wizard: null, createdBy: "Rita Researcher" }, names),
+    );
+    expect(row!.slice(0, 3)).toEqual(["t1", "", "Rita Researcher"]);
+  });
+});
+
+describe("the trial record", () => {
+  it("names the step and the action each event is about", () => {
+    const record = JSON.parse(
+      trialRecordJson(
+        {
+          trial: {},
+          protocol: { schemaVersion: 2, experiment: {} as never, steps: [] },
+          events,
+          annotations: [],
+          questionnaires: [],
+          recordings: [],
+        },
+        names,
+      ),
+    ) as { events: Array<Record<string, unknown>> };
+    expect(record.events.map(({ stepName, actionName }) => ({ stepName, actionName }))).toEqual([
+      { stepName: undefined, actionName: undefined },
+      { stepName: "Welcome", actionName: 'Say: She said "hi", then left; {{x}}…' },
     ]);
   });
 });

@@ -1,18 +1,26 @@
 // Exports of a trial: tidy CSV of its events (one row per event) and the full
-// record as JSON. Pure string builders; the server only streams them.
+// record as JSON. Pure string builders; the server only streams them. Both
+// name the step and the action an event is about (see names.ts), so a reader
+// never has to look ids up in the protocol.
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { csvDocument } from "@/core/csv/csv";
 import type { StoredEvent } from "@/core/trial";
+import type { TrialNames } from "./names";
 
-export const TRIAL_RECORD_SCHEMA_VERSION = 1;
+// 2: the protocol is snapshot schema 2 (robotId; steps say where they lead), the version names its robotId.
+export const TRIAL_RECORD_SCHEMA_VERSION = 2;
 
 export const EVENT_COLUMNS = [
   "trial_id",
+  "wizard",
+  "created_by",
   "seq",
   "type",
   "step_id",
   "action_id",
   "action_type",
+  "step_name",
+  "action_name",
   "deviation",
   "rel_ms",
   "server_time",
@@ -20,17 +28,28 @@ export const EVENT_COLUMNS = [
   "payload",
 ] as const;
 
-export function eventsCsv(trialId: string, events: StoredEvent[]): string {
+/** Who ran the trial (its wizard) and who created it, by name: two people, often not the same. */
+export interface TrialPeople {
+  wizard: string | null;
+  createdBy: string | null;
+}
+
+export function eventsCsv(trialId: string, events: StoredEvent[], people: TrialPeople, names: TrialNames): string {
   const rows = events.map((e) => {
     // Columns for the fields some kinds of event have; the payload column holds all of it.
     const { stepId, actionId, actionType } = e as { stepId?: string | null; actionId?: string; actionType?: string };
+    const { stepName, actionName } = names.of(e);
     return [
       trialId,
+      people.wizard ?? "",
+      people.createdBy ?? "",
       e.seq,
       e.type,
       stepId ?? "",
       actionId ?? "",
       actionType ?? "",
+      stepName ?? "",
+      actionName ?? "",
       e.deviation ?? "",
       e.relMs ?? "",
       e.serverTime.toISOString(),
@@ -45,7 +64,8 @@ export interface TrialRecord {
   schemaVersion: number;
   trial: Record<string, unknown>;
   protocol: ProtocolSnapshot;
-  events: StoredEvent[];
+  /** Each with `stepName` and `actionName` when it is about a step or an action. */
+  events: Array<StoredEvent & { stepName?: string; actionName?: string }>;
   annotations: Array<{ relMs: number; label: string; note: string; authorName: string | null }>;
   /** Submitted questionnaires of the trial, each with the version shown, the answers and the score. */
   questionnaires: unknown[];
@@ -53,6 +73,10 @@ export interface TrialRecord {
   recordings: unknown[];
 }
 
-export function trialRecordJson(record: Omit<TrialRecord, "schemaVersion">): string {
-  return JSON.stringify({ schemaVersion: TRIAL_RECORD_SCHEMA_VERSION, ...record }, null, 2);
+export function trialRecordJson(
+  record: Omit<TrialRecord, "schemaVersion" | "events"> & { events: StoredEvent[] },
+  names: TrialNames,
+): string {
+  const events = record.events.map((e) => ({ ...e, ...names.of(e) }));
+  return JSON.stringify({ schemaVersion: TRIAL_RECORD_SCHEMA_VERSION, ...record, events }, null, 2);
 }

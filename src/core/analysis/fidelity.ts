@@ -1,6 +1,7 @@
 // The fidelity report of one trial: what was planned (the protocol version)
 // against what happened (its events). Pure, so the analysis page, exports and
 // study tables all compute the same figures.
+import { actionName, type ActionNames } from "@/core/designer/action-name";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
 import { CONTROL_TYPES } from "@/core/trial/types";
 
@@ -35,6 +36,7 @@ export interface FidelityReport {
   unscripted: Array<{
     actionId: string;
     type: string;
+    name: string;
     requestedMs: number | null;
     parameters: Record<string, unknown>;
   }>;
@@ -67,7 +69,8 @@ type E = TrialEvent & {
   parameters?: Record<string, unknown>;
 };
 
-export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[]): FidelityReport {
+/** `names`: the robot plugin's names of its own actions, so unlabelled actions read as the library shows them. */
+export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], names?: ActionNames): FidelityReport {
   const log = events as E[];
   const first = (type: string, actionId: string) => log.find((e) => e.type === type && e.actionId === actionId);
   const entries = log.filter((e) => e.type === "step.entered");
@@ -116,7 +119,7 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[]): F
         stepId: step.id,
         actionId: a.id,
         type: a.type,
-        name: a.name ?? a.type,
+        name: actionName(a, names),
         outcome,
         outOfOrder: log.some((e) => e.actionId === a.id && e.deviation === "out_of_order"),
         requestedMs: at(requested),
@@ -134,7 +137,13 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[]): F
 
   const unscripted = log
     .filter((e) => e.type === "action.requested" && e.scripted === false)
-    .map((e) => ({ actionId: e.actionId!, type: e.actionType!, requestedMs: e.relMs, parameters: e.parameters ?? {} }));
+    .map((e) => ({
+      actionId: e.actionId!,
+      type: e.actionType!,
+      name: actionName({ type: e.actionType!, parameters: e.parameters }, names),
+      requestedMs: e.relMs,
+      parameters: e.parameters ?? {},
+    }));
   const deviations: Record<string, number> = {};
   for (const e of log) if (e.deviation) deviations[e.deviation] = (deviations[e.deviation] ?? 0) + 1;
   const count = (o: ActionOutcome) => actions.filter((a) => a.outcome === o).length;

@@ -12,8 +12,8 @@ const act = (
 ) => ({ id, type, name, parameters, parallelGroup });
 
 const base: Snapshot = {
-  schemaVersion: 1,
-  experiment: { id: "exp", name: "Storyteller", description: "Kai on Mars", robotPluginId: "nao6-ros2" },
+  schemaVersion: 2 as const,
+  experiment: { id: "exp", name: "Storyteller", description: "Kai on Mars", robotId: "nao6-ros2" },
   steps: [
     {
       id: "intro",
@@ -75,7 +75,7 @@ describe("diffProtocols", () => {
     ],
     [
       "experiment details",
-      (s) => (s.experiment = { ...s.experiment, name: "Storyteller 2", description: "", robotPluginId: "pepper-ros2" }),
+      (s) => (s.experiment = { ...s.experiment, name: "Storyteller 2", description: "", robotId: "pepper-ros2" }),
       [
         'changed experiment: Experiment renamed from "Storyteller" to "Storyteller 2"',
         'changed experiment: Experiment description changed from "Kai on Mars" to ""',
@@ -92,6 +92,14 @@ describe("diffProtocols", () => {
           actions: [act("p", "pause", "Hold", { seconds: 2 })],
         }),
       ['added step: Step "Pause" added at position 2', 'added action: Action "Hold" added to "Pause" at position 1'],
+    ],
+    [
+      "where a step leads, set and changed",
+      (s) => {
+        s.steps[0]!.after = { to: "end" };
+        s.steps[1]!.after = { to: "next" };
+      },
+      ['changed step: Step "Intro" now leads to the end of the trial (it led to "Story")'],
     ],
     [
       "a step removed with its actions",

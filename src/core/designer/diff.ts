@@ -1,6 +1,7 @@
 // What changed between two published versions of an experiment, as lines a
 // researcher can read in the version history. Steps and actions are matched
 // by id, which publishing keeps stable; everything is named, never shown by id.
+import { describeExit } from "../protocol/flow";
 import type { ProtocolSnapshot } from "../protocol/snapshot";
 
 export interface DiffLine {
@@ -26,8 +27,8 @@ export function diffProtocols(before: ProtocolSnapshot, after: ProtocolSnapshot)
       "experiment",
       `Experiment description changed from ${show(was.description)} to ${show(now.description)}`,
     );
-  if (was.robotPluginId !== now.robotPluginId)
-    line("changed", "experiment", `Robot changed from ${show(was.robotPluginId)} to ${show(now.robotPluginId)}`);
+  if (was.robotId !== now.robotId)
+    line("changed", "experiment", `Robot changed from ${show(was.robotId)} to ${show(now.robotId)}`);
 
   const oldSteps = new Map(before.steps.map((step, index) => [step.id, { step, index }]));
   const newSteps = new Map(after.steps.map((step, index) => [step.id, { step, index }]));
@@ -65,6 +66,15 @@ export function diffProtocols(before: ProtocolSnapshot, after: ProtocolSnapshot)
           "step",
           `Step ${where}: description changed from ${show(old.step.description)} to ${show(step.description)}`,
         );
+      // "Next" stays "next" when steps move around it: only a changed choice is a change.
+      const [chose, chooses] = [old.step.after ?? NEXT, step.after ?? NEXT];
+      if (
+        chose.to !== chooses.to ||
+        (chose.to === "step" && chooses.to === "step" && chose.stepId !== chooses.stepId)
+      ) {
+        const [led, leads] = [describeExit(before.steps, old.index), describeExit(after.steps, index)];
+        line("changed", "step", `Step ${where} now leads to ${leads} (it led to ${led})`);
+      }
       removedActions(old.step);
     }
     const stayed = (s: Step) =>
@@ -109,6 +119,8 @@ export function diffProtocols(before: ProtocolSnapshot, after: ProtocolSnapshot)
   });
   return lines;
 }
+
+const NEXT = { to: "next" } as const;
 
 function actionsById(snapshot: ProtocolSnapshot) {
   return new Map(

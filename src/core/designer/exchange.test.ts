@@ -14,7 +14,7 @@ const storyteller = storytellerDraft((key) => `db-${key}`);
 const awkward: DesignDraft = {
   name: 'Quotes " and \\ backslashes {braces}',
   description: "Line one\nLine two\ttabbed\r\n— ünïcødé 🤖 עברית \u0000 end",
-  robotPluginId: "nao6-ros2",
+  robotId: "nao6-ros2",
   steps: [
     {
       id: "a",
@@ -82,6 +82,7 @@ function normalized(draft: DesignDraft) {
       steps: draft.steps.map((s) => ({
         ...s,
         id: name(s.id),
+        after: s.after?.to === "step" ? { to: "step", stepId: name(s.after.stepId) } : (s.after ?? { to: "next" }),
         actions: s.actions.map((a) => ({
           ...a,
           id: name(a.id),
@@ -117,11 +118,33 @@ describe("exporting and importing an experiment", () => {
     expect(normalized(again)).toEqual(normalized(draft));
   });
 
+  it("keeps where each step leads: a rejoin, an end, and the next step left out", () => {
+    const draft: DesignDraft = {
+      name: "Quiz",
+      description: "",
+      robotId: "nao6-ros2",
+      steps: [
+        { id: "u1", name: "Right", description: "", after: { to: "step", stepId: "u3" }, actions: [] },
+        { id: "u2", name: "Wrong", description: "", after: { to: "end" }, actions: [] },
+        { id: "u3", name: "Bye", description: "", after: { to: "next" }, actions: [] },
+      ],
+    };
+    const text = exportExperiment(draft);
+    expect(JSON.parse(text).steps.map((s: { after?: string }) => s.after)).toEqual(["@step-3", "end", undefined]);
+    expect(normalized(imported(text))).toEqual(normalized(draft));
+  });
+
+  it("reads a version 1 file, whose steps each go on to the next", () => {
+    const file = JSON.parse(exportExperiment(storyteller));
+    file.formatVersion = 1;
+    expect(normalized(imported(JSON.stringify(file)))).toEqual(normalized(storyteller));
+  });
+
   it("writes a stable, readable file with no database ids in it", () => {
     const draft: DesignDraft = {
       name: "Tiny",
       description: "",
-      robotPluginId: "nao6-ros2",
+      robotId: "nao6-ros2",
       steps: [
         {
           id: "uuid-ask",
@@ -156,7 +179,7 @@ describe("exporting and importing an experiment", () => {
       [
         "{",
         '  "format": "hristudio.experiment",',
-        '  "formatVersion": 1,',
+        '  "formatVersion": 2,',
         '  "experiment": {',
         '    "name": "Tiny",',
         '    "description": "",',
@@ -261,10 +284,10 @@ describe("importing a bad file", () => {
     ],
     [
       "a newer format",
-      edit((f) => (f.formatVersion = 2)),
-      [["$.formatVersion", "is 2: the file comes from a newer HRIStudio"]],
+      edit((f) => (f.formatVersion = 3)),
+      [["$.formatVersion", "is 3: the file comes from a newer HRIStudio"]],
     ],
-    ["a version as text", edit((f) => (f.formatVersion = "1")), [["$.formatVersion", "must be 1"]]],
+    ["a version as text", edit((f) => (f.formatVersion = "1")), [["$.formatVersion", "must be 1 or 2"]]],
     ["no steps", edit((f) => delete f.steps), [["$.steps", "must be a list"]]],
     ["no experiment", edit((f) => delete f.experiment), [["$.experiment", "must be an object"]]],
     ["a blank robot", edit((f) => (f.experiment.robot = " ")), [["$.experiment.robot", "must be a non-empty string"]]],
@@ -303,6 +326,24 @@ describe("importing a bad file", () => {
       "an empty group name",
       edit((f) => (f.steps[0].actions[0].runTogether = "")),
       [["$.steps[0].actions[0].runTogether", "must be a non-empty string, or left out"]],
+    ],
+    [
+      "an after to a missing step",
+      edit((f) => (f.steps[1].after = "@step-9")),
+      [["$.steps[1].after", '"@step-9" names no step of this file']],
+    ],
+    [
+      "an after that is no step",
+      edit((f) => (f.steps[1].after = "next")),
+      [["$.steps[1].after", 'must be "end" or name a step']],
+    ],
+    [
+      "an after in a version 1 file, which had none",
+      edit((f) => {
+        f.formatVersion = 1;
+        f.steps[1].after = "end";
+      }),
+      [["$.steps[1].after", "is not part of an experiment file"]],
     ],
     [
       "a branch to a missing step",

@@ -1,15 +1,16 @@
 // The experiment file: how a protocol leaves one HRIStudio and enters another
-// (a lab sharing its study with another lab). Format version 1:
+// (a lab sharing its study with another lab). Format version 2:
 //
 //   {
 //     "format": "hristudio.experiment",
-//     "formatVersion": 1,
+//     "formatVersion": 2,
 //     "experiment": { "name": "…", "description": "…", "robot": "nao6-ros2" },
 //     "steps": [
 //       {
 //         "key": "step-1",
 //         "name": "…",
 //         "description": "…",
+//         "after": "@step-5",
 //         "actions": [
 //           { "type": "say", "name": "…", "parameters": { "text": "…" }, "runTogether": "group-1" }
 //         ]
@@ -18,7 +19,8 @@
 //   }
 //
 // Database ids never leave: steps are keyed by position ("step-1"…), a branch
-// names its targets by key ("@step-3"), and run-together groups are renamed
+// names its targets by key ("@step-3"), a step's "after" is a key or "end" (left
+// out for "the next step"; version 1 files have none), and run-together groups are renamed
 // "group-1", "group-2"… in order of first appearance ("runTogether" is left out
 // for an action that runs alone). The writer is deterministic (fixed key order,
 // parameters sorted, 2-space indent, final newline) so an exported file diffs
@@ -27,10 +29,12 @@
 // Import checks the file's shape, not its actions: the imported draft goes
 // through validateDesign like any other, against whatever robot is at hand.
 import { parseJsonText } from "../plugins/json-text";
-import type { DesignDraft, NewId } from "./types";
+import type { DesignDraft, NewId, After } from "./types";
 
 const FORMAT = "hristudio.experiment";
-const FORMAT_VERSION = 1;
+const FORMAT_VERSION = 2;
+/** Versions this reader understands: 1 is 2 without "after". */
+const READABLE = [1, 2];
 const MAX_BYTES = 2 * 1024 * 1024;
 const MAX_STEPS = 500;
 const MAX_ACTIONS = 500;
@@ -49,6 +53,8 @@ interface FileStep {
   key: string;
   name: string;
   description?: string;
+  /** "@step-K" or "end"; absent: the next step. */
+  after?: string;
   actions: FileAction[];
 }
 
@@ -74,11 +80,12 @@ export function exportExperiment(draft: DesignDraft): string {
   const file: ExperimentFile = {
     format: FORMAT,
     formatVersion: FORMAT_VERSION,
-    experiment: { name: draft.name, description: draft.description, robot: draft.robotPluginId },
+    experiment: { name: draft.name, description: draft.description, robot: draft.robotId },
     steps: draft.steps.map((step, i) => ({
       key: `step-${i + 1}`,
       name: step.name,
       description: step.description,
+      after: fileAfter(step.after, keys),
       actions: step.actions.map((action) => ({
         type: action.type,
         name: action.name,
@@ -125,11 +132,12 @@ function build(file: ExperimentFile, newId: NewId): DesignDraft {
   return {
     name: file.experiment.name,
     description: file.experiment.description ?? "",
-    robotPluginId: file.experiment.robot,
+    robotId: file.experiment.robot,
     steps: file.steps.map((step) => ({
       id: ids.get(`@${step.key}`)!,
       name: step.name,
       description: step.description ?? "",
+      after: draftAfter(step.after, ids),
       actions: step.actions.map((action) => ({
         id: newId(),
         type: action.type,
@@ -142,6 +150,18 @@ function build(file: ExperimentFile, newId: NewId): DesignDraft {
       })),
     })),
   };
+}
+
+function fileAfter(after: After | undefined, keys: Map<string, string>): string | undefined {
+  if (after?.to === "end") return "end";
+  // An after to a step that is gone is already an error in the designer; like a branch target, it is left out.
+  return after?.to === "step" ? keys.get(after.stepId) : undefined;
+}
+
+function draftAfter(after: string | undefined, ids: Map<string, string>): After {
+  if (after === "end") return { to: "end" };
+  const stepId = after === undefined ? undefined : ids.get(after);
+  return stepId ? { to: "step", stepId } : { to: "next" };
 }
 
 /** A branch's targets renamed one by one; a target with no new name is dropped. */
@@ -180,7 +200,7 @@ function write(value: unknown, indent: string, sorted: boolean): string {
 
 const ENVELOPE = ["format", "formatVersion", "experiment", "steps"];
 const EXPERIMENT = ["name", "description", "robot"];
-const STEP = ["key", "name", "description", "actions"];
+const STEP = ["key", "name", "description", "after", "actions"];
 const ACTION = ["type", "name", "parameters", "runTogether"];
 
 function check(file: unknown): ImportProblem[] {
@@ -230,11 +250,11 @@ function check(file: unknown): ImportProblem[] {
     return [{ path: "$", message: "must be an object ({ … }): an experiment file holds one experiment" }];
   if (file.format !== FORMAT)
     return [{ path: "$.format", message: `must be "${FORMAT}": this is not an HRIStudio experiment file` }];
-  if (file.formatVersion !== FORMAT_VERSION) {
+  if (!READABLE.includes(file.formatVersion as number)) {
     const newer = typeof file.formatVersion === "number" && file.formatVersion > FORMAT_VERSION;
     const message = newer
       ? `is ${file.formatVersion}: the file comes from a newer HRIStudio, and this one reads version ${FORMAT_VERSION}`
-      : `must be ${FORMAT_VERSION}`;
+      : `must be ${READABLE.join(" or ")}`;
     return [{ path: "$.formatVersion", message }];
   }
   object(file, "$", ENVELOPE);
@@ -247,7 +267,7 @@ function check(file: unknown): ImportProblem[] {
   const keys = new Map<string, number>();
   file.steps.forEach((step, s) => {
     const path = `$.steps[${s}]`;
-    if (!object(step, path, STEP)) return;
+    if (!object(step, path, file.formatVersion === 1 ? STEP.filter((k) => k !== "after") : STEP)) return;
     text(step, "key", path, MAX_NAME, "required");
     if (typeof step.key === "string" && step.key.trim()) {
       if (keys.has(step.key))
@@ -256,6 +276,15 @@ function check(file: unknown): ImportProblem[] {
     }
     text(step, "name", path, MAX_NAME, "required");
     text(step, "description", path, MAX_TEXT, "optional");
+  });
+  // Keys are all known only now: a step may lead to one further down.
+  file.steps.forEach((step, s) => {
+    if (!isObject(step) || step.after === undefined) return;
+    const at = `$.steps[${s}].after`;
+    if (step.after === "end") return;
+    if (typeof step.after !== "string" || !step.after.startsWith("@"))
+      flag(at, 'must be "end" or name a step by "@" and its key, such as "@step-2"');
+    else if (!keys.has(step.after.slice(1))) flag(at, `"${step.after}" names no step of this file`);
   });
   file.steps.forEach((step, s) => {
     if (!isObject(step) || !list(step.actions, `$.steps[${s}].actions`, MAX_ACTIONS, "actions", "a step")) return;

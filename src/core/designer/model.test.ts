@@ -13,7 +13,7 @@ function draft(): DesignDraft {
   return {
     name: "Storyteller",
     description: "",
-    robotPluginId: "nao6-ros2",
+    robotId: "nao6-ros2",
     steps: [
       {
         id: "intro",
@@ -120,7 +120,14 @@ describe("designer commands", () => {
       shape,
       ["intro: hello wave bow", "story: tale", "end: "],
     ],
-    ["change robot", commands.setRobot("pepper"), (d) => d.robotPluginId, "pepper"],
+    ["change robot", commands.setRobot("pepper"), (d) => d.robotId, "pepper"],
+    [
+      "lead a step to another",
+      commands.setAfter("intro", { to: "step", stepId: "end" }),
+      (d) => d.steps[0]!.after,
+      { to: "step", stepId: "end" },
+    ],
+    ["lead a step to the end", commands.setAfter("story", { to: "end" }), (d) => d.steps[1]!.after, { to: "end" }],
     ["rename experiment", commands.setDetails({ name: "Storyteller v2" }), (d) => d.name, "Storyteller v2"],
   ];
 
@@ -170,6 +177,8 @@ describe("designer commands", () => {
       commands.setParameter("nope", "text", "x"),
       commands.setBranchTarget("bow", "a", "nope"),
       commands.setRunTogether("hello", true),
+      commands.setAfter("intro", { to: "step", stepId: "nope" }),
+      commands.setAfter("nope", { to: "end" }),
     ];
     for (const c of refusals) expect(() => execute(h, c, ids())).toThrow(DesignerError);
     expect(h.present).toEqual(draft());

@@ -1,7 +1,7 @@
 // The designer as a headless model: named commands over a draft, with undo
 // and redo. The page only renders a draft and sends commands, so every edit a
 // researcher can make is tested here without a browser.
-import type { DesignAction, DesignDraft, DesignStep, NewId } from "./types";
+import type { DesignAction, DesignDraft, DesignStep, NewId, After } from "./types";
 
 export class DesignerError extends Error {}
 
@@ -60,11 +60,12 @@ export function draftFrom(design: DesignDraft): DesignDraft {
   return {
     name: design.name,
     description: design.description,
-    robotPluginId: design.robotPluginId,
+    robotId: design.robotId,
     steps: design.steps.map((s) => ({
       id: s.id,
       name: s.name,
       description: s.description,
+      after: s.after ?? { to: "next" },
       actions: s.actions.map((a) => ({
         id: a.id,
         type: a.type,
@@ -150,9 +151,9 @@ export const commands = {
     apply: (d) => ({ ...d, ...changes }),
   }),
 
-  setRobot: (robotPluginId: string): Command => ({
+  setRobot: (robotId: string): Command => ({
     label: "change robot",
-    apply: (d) => (d.robotPluginId === robotPluginId ? d : { ...d, robotPluginId }),
+    apply: (d) => (d.robotId === robotId ? d : { ...d, robotId }),
   }),
 
   addStep: (name: string, index?: number, id?: string): Command => ({
@@ -163,6 +164,7 @@ export const commands = {
         id: id ?? newId(),
         name,
         description: "",
+        after: { to: "next" },
         actions: [],
       });
       return { ...d, steps };
@@ -173,6 +175,16 @@ export const commands = {
     label: "edit step",
     mergeKey: `step:${stepId}:${Object.keys(changes).join()}`,
     apply: (d) => (locateStep(d, stepId), replaceStep(d, stepId, (s) => ({ ...s, ...changes }))),
+  }),
+
+  /** Where the step leads once its actions are done: the next step, a named step, or the end. */
+  setAfter: (stepId: string, after: After): Command => ({
+    label: "set where the step leads",
+    apply: (d) => {
+      locateStep(d, stepId);
+      if (after.to === "step") locateStep(d, after.stepId);
+      return replaceStep(d, stepId, (s) => ({ ...s, after }));
+    },
   }),
 
   removeStep: (stepId: string): Command => ({

@@ -6,7 +6,7 @@ import type { DesignDraft } from "./types";
 const draft: DesignDraft = {
   name: "Quiz",
   description: "",
-  robotPluginId: "nao6-ros2",
+  robotId: "nao6-ros2",
   steps: [
     { id: "s1", name: "Welcome", description: "", actions: [] },
     {

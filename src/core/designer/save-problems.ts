@@ -14,7 +14,8 @@ export interface FieldIssue {
 const LABELS: Record<string, string> = {
   name: "Name",
   description: "Description",
-  robotPluginId: "Robot",
+  robotId: "Robot",
+  after: "Then",
   type: "Kind of action",
   parameters: "Settings",
   parallelGroup: "Run together",

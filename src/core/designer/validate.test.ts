@@ -2,7 +2,7 @@ import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { storytellerDraft } from "../../server/seed/storyteller";
 import { loadPlugin, type Plugin } from "../plugins";
-import type { DesignAction, DesignDraft } from "./types";
+import type { DesignAction, DesignDraft, After } from "./types";
 import { hasErrors, validateDesign, type DesignIssue } from "./validate";
 
 type ActionSpec = Partial<DesignAction> & { type: string };
@@ -12,7 +12,7 @@ function draft(...steps: ActionSpec[][]): DesignDraft {
   return {
     name: "Test",
     description: "",
-    robotPluginId: "toy",
+    robotId: "toy",
     steps: steps.map((actions, s) => ({
       id: `s${s + 1}`,
       name: `Step ${s + 1}`,
@@ -200,13 +200,79 @@ describe("validateDesign", () => {
     expect(
       validateDesign(draft([say()], [question("Again", "More"), branch({ o1: "s1", o2: "s1" })]), null)[0]!.message,
     ).toBe(
-      'The trial can never end from step "Step 1": every way on loops back without reaching an "End trial" block or the last step.',
+      'The trial can never end from step "Step 1": every way on loops back without reaching an "End trial" block or a step that leads to the end.',
     );
   });
 
   it("tells errors from warnings", () => {
     expect(hasErrors(validateDesign(draft([say(), end, wave()]), null))).toBe(false);
     expect(hasErrors(validateDesign(draft([say("")]), null))).toBe(true);
+  });
+});
+
+describe("where steps lead (after)", () => {
+  // s1 asks with three answers; s2–s4 are the answers' steps; s5 is where they meet.
+  const quiz = (afters: Array<After | undefined>) => {
+    const d = draft(
+      [question("Mars", "Venus", "Silent"), branch({ o1: "s2", o2: "s3", o3: "s4" })],
+      [say("Right")],
+      [say("Not quite")],
+      [say("Take your time")],
+      [say("Bye")],
+    );
+    afters.forEach((after, i) => {
+      if (after) d.steps[i]!.after = after;
+    });
+    return d;
+  };
+  const toGoodbye: After = { to: "step", stepId: "s5" };
+
+  it.each<[string, DesignDraft, string[]]>([
+    ["answers that rejoin a shared step", quiz([undefined, toGoodbye, toGoodbye, toGoodbye]), []],
+    [
+      "answers that fall through into each other (the natural build, each going on to the next)",
+      quiz([]),
+      ["warning answer_falls_through s2", "warning answer_falls_through s3"],
+    ],
+    ["the last answer's step may fall through to the shared step", quiz([undefined, toGoodbye, toGoodbye]), []],
+    ["an answer's step that ends the trial", quiz([undefined, { to: "end" }, toGoodbye, toGoodbye]), []],
+    [
+      "an after to a step that is gone",
+      quiz([undefined, { to: "step", stepId: "gone" }, toGoodbye, toGoodbye]),
+      ["error after_target_missing s2"],
+    ],
+    [
+      "a step after one that ends the trial, reached by nothing",
+      (() => {
+        const d = draft([say()], [say()]);
+        d.steps[0]!.after = { to: "end" };
+        return d;
+      })(),
+      ["error unreachable_step s2"],
+    ],
+    [
+      "a loop with a way out (a wrong answer asks again)",
+      quiz([undefined, toGoodbye, { to: "step", stepId: "s1" }, toGoodbye]),
+      [],
+    ],
+    [
+      "a loop with no way out",
+      (() => {
+        const d = draft([say()], [say()]);
+        d.steps[1]!.after = { to: "step", stepId: "s1" };
+        return d;
+      })(),
+      ["error no_end s1"],
+    ],
+  ])("%s", (_name, design, expected) => {
+    expect(summary(validateDesign(design, null))).toEqual(expected);
+  });
+
+  it("says which answer's response would follow, in the researcher's words", () => {
+    const [first] = validateDesign(quiz([]), null);
+    expect(first!.message).toBe(
+      'After step "Step 2" (the answer "Mars"), the trial goes on to step "Step 3", the step for the answer "Venus", so both responses are given. Set where step "Step 2" leads, for example to the step where the answers meet.',
+    );
   });
 });
 
@@ -228,5 +294,29 @@ describe("the Interactive Storyteller", () => {
     expect(issues.length).toBe(9);
     expect(issues.every((i) => i.code === "unsupported_on_robot")).toBe(true);
     expect(hasErrors(issues)).toBe(false);
+  });
+});
+
+describe("on this server's ways to the robot", () => {
+  const nao = loadPlugin("nao6-ros2.json", readFileSync("plugins/nao6-ros2.json", "utf8"));
+  if (!nao.ok) throw new Error(JSON.stringify(nao.errors));
+  const postures = draft([{ type: "posture", parameters: { posture: "sit" } }, { type: "nao6-ros2.rest" }, say()]);
+  const rosbridgeOnly = { rosbridge: true, simulator: true, ssh: false, http: false };
+
+  it("says which actions cannot run here, and why, as a warning", () => {
+    const issues = validateDesign(postures, nao.value, rosbridgeOnly);
+    expect(issues.map((i) => [i.severity, i.code, i.actionId, i.message])).toEqual(
+      ["s1a1", "s1a2"].map((id, n) => [
+        "warning",
+        "unsupported_on_robot",
+        id,
+        `"${["Posture", "Rest"][n]}" cannot run on NAO6 Robot (ROS2 Integration): it needs SSH to the robot, and this server has no SSH address for it: set HRI_ROBOT_SSH_HOST (see docs/robot-setup.md)`,
+      ]),
+    );
+  });
+
+  it("says nothing when the server reaches the robot every way, or is not asked", () => {
+    expect(validateDesign(postures, nao.value, { ...rosbridgeOnly, ssh: true })).toEqual([]);
+    expect(validateDesign(postures, nao.value)).toEqual([]);
   });
 });

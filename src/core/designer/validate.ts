@@ -2,7 +2,8 @@
 // researcher can fix in the designer, placed on its step and action and said
 // without the engine's vocabulary. The flow checks walk the draft the way the
 // trial engine does (../trial/decide.ts).
-import { parseActionType, portability, validateParameters, type Plugin } from "../plugins";
+import { parseActionType, portability, validateParameters, type Channels, type Plugin } from "../plugins";
+import { exitOf } from "../protocol/flow";
 import { blockFor, type Block } from "./blocks";
 import type { DesignAction, DesignDraft, DesignStep } from "./types";
 
@@ -34,7 +35,8 @@ interface Option {
 /** Where each answer of a branch leads: a step index, or why it leads nowhere. */
 type Route = { option: Option; to: number } | { option: Option; to: null; why: "unset" | "gone" };
 
-export function validateDesign(draft: DesignDraft, plugin: Plugin | null): DesignIssue[] {
+/** With `channels` (this server's ways to the robot), an action none of them carries is said not to run here. */
+export function validateDesign(draft: DesignDraft, plugin: Plugin | null, channels?: Channels): DesignIssue[] {
   if (draft.steps.length === 0) {
     return [
       {
@@ -125,7 +127,7 @@ export function validateDesign(draft: DesignDraft, plugin: Plugin | null): Desig
     });
   });
   placed.push(...flowIssues(draft, indexById));
-  if (plugin) placed.push(...robotIssues(draft, plugin, reported));
+  if (plugin) placed.push(...robotIssues(draft, plugin, reported, channels));
   return placed.sort((x, y) => x.step - y.step || x.action - y.action).map((p) => p.issue);
 }
 
@@ -156,7 +158,7 @@ function optionsOf(action: DesignAction): Option[] {
 // and also falling through, so one mistake does not surface again as
 // unreachable steps or an endless trial.
 function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[] {
-  const count = draft.steps.length;
+  const issues: Placed[] = [];
   const flow = draft.steps.map((step, s) => {
     const exits: number[] = [];
     for (const [a, action] of step.actions.entries()) {
@@ -165,8 +167,18 @@ function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[
       for (const route of routes ?? []) if (route.to !== null) exits.push(route.to);
       if (routes?.length && routes.every((r) => r.to !== null)) return { exits, ends: false };
     }
-    return s + 1 < count ? { exits: [...exits, s + 1], ends: false } : { exits, ends: true };
+    const exit = exitOf(draft.steps, s);
+    if (exit.to === "missing") {
+      const message = `${upper(stepLabel(step, s))} leads to a step that is no longer in the experiment. Choose where it leads in the step's properties.`;
+      issues.push({
+        step: s,
+        action: -1,
+        issue: { severity: "error", code: "after_target_missing", message, stepId: step.id },
+      });
+    }
+    return exit.to === "step" ? { exits: [...exits, exit.index], ends: false } : { exits, ends: true };
   });
+  issues.push(...fallThroughIssues(draft, indexById));
   const reached = new Set([0]);
   for (const s of reached) for (const next of flow[s]!.exits) reached.add(next);
   const canEnd = flow.map((f) => f.ends);
@@ -178,7 +190,6 @@ function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[
       changed = true;
     });
   }
-  const issues: Placed[] = [];
   draft.steps.forEach((step, s) => {
     if (reached.has(s)) return;
     const message = `${upper(stepLabel(step, s))} can never be reached: the steps before it end the trial or branch elsewhere, and no branch leads to it.`;
@@ -191,17 +202,65 @@ function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[
   const stuck = draft.steps.findIndex((_, s) => reached.has(s) && !canEnd[s]);
   if (stuck >= 0) {
     const step = draft.steps[stuck]!;
-    const message = `The trial can never end from ${stepLabel(step, stuck)}: every way on loops back without reaching an "End trial" block or the last step.`;
+    const message = `The trial can never end from ${stepLabel(step, stuck)}: every way on loops back without reaching an "End trial" block or a step that leads to the end.`;
     issues.push({ step: stuck, action: -1, issue: { severity: "error", code: "no_end", message, stepId: step.id } });
   }
   return issues;
 }
 
-function robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>): Placed[] {
+/**
+ * An answer's step that runs on into the step of another answer of the same
+ * question: the participant who gave one answer hears the response to the
+ * other too. Each answer's path is followed through steps without a branch
+ * (where each leads after its actions), as the engine would.
+ */
+function fallThroughIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[] {
+  const issues: Placed[] = [];
+  const reported = new Set<number>();
+  draft.steps.forEach((step, s) => {
+    step.actions.forEach((action, a) => {
+      if (action.type !== "branch") return;
+      const routes = (routesOf(step, a, indexById) ?? []).filter((r) => r.to !== null && r.to !== s);
+      const answerOf = new Map(routes.map((r) => [r.to!, r.option.label]));
+      for (const route of routes) {
+        const from = route.to!;
+        if (reported.has(from)) continue;
+        const into = runsInto(draft, from, answerOf);
+        if (into === null) continue;
+        reported.add(from);
+        const fromStep = draft.steps[from]!;
+        const message = `After ${stepLabel(fromStep, from)} (the answer "${route.option.label}"), the trial goes on to ${stepLabel(draft.steps[into]!, into)}, the step for the answer "${answerOf.get(into)}", so both responses are given. Set where ${stepLabel(fromStep, from)} leads, for example to the step where the answers meet.`;
+        issues.push({
+          step: from,
+          action: -1,
+          issue: { severity: "warning", code: "answer_falls_through", message, stepId: fromStep.id },
+        });
+      }
+    });
+  });
+  return issues;
+}
+
+/** The first step of another answer that `from` runs into without a branch in between, if any. */
+function runsInto(draft: DesignDraft, from: number, answers: Map<number, string>): number | null {
+  const seen = new Set<number>();
+  for (let at = from; !seen.has(at); ) {
+    seen.add(at);
+    const step = draft.steps[at]!;
+    if (step.actions.some((a) => a.type === "branch" || a.type === "end_trial")) return null;
+    const exit = exitOf(draft.steps, at);
+    if (exit.to !== "step") return null;
+    if (answers.has(exit.index) && answers.get(exit.index) !== answers.get(from)) return exit.index;
+    at = exit.index;
+  }
+  return null;
+}
+
+function robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>, channels?: Channels): Placed[] {
   const position = new Map(
     draft.steps.flatMap((step, s) => step.actions.map((action, a) => [action.id, { step, s, action, a }] as const)),
   );
-  return portability(draft, plugin).actions.flatMap((result): Placed[] => {
+  return portability(draft, plugin, channels).actions.flatMap((result): Placed[] => {
     const { step, s, action, a } = position.get(result.actionId)!;
     const block = blockFor(action.type, plugin);
     if (!block) return []; // already an unknown block

@@ -79,7 +79,7 @@ describe("parameter problems in the researcher's words", () => {
       {
         name: "Quiz",
         description: "",
-        robotPluginId: "none",
+        robotId: "none",
         steps: [
           {
             id: "s1",

@@ -1,7 +1,9 @@
 // The portability report: before a trial, every action of an experiment
 // against one plugin: supported, unsupported (with the reason), or supported
-// with parameter problems (each naming the parameter).
+// with parameter problems (each naming the parameter). Given this server's
+// ways to the robot, an action none of them carries is unsupported here too.
 import type { ParameterProblem } from "./parameters";
+import { unreachable, type Channels } from "./reach";
 import { resolveAction } from "./resolve";
 import type { Plugin } from "./types";
 
@@ -36,7 +38,7 @@ export interface PortabilityReport {
   actions: ActionPortability[];
 }
 
-export function portability(experiment: PortableExperiment, plugin: Plugin): PortabilityReport {
+export function portability(experiment: PortableExperiment, plugin: Plugin, channels?: Channels): PortabilityReport {
   const actions = experiment.steps.flatMap((step, stepIndex) =>
     step.actions.map((action): ActionPortability => {
       const base = { stepIndex, actionId: action.id, type: action.type, problems: [] as ParameterProblem[] };
@@ -44,8 +46,12 @@ export function portability(experiment: PortableExperiment, plugin: Plugin): Por
       switch (resolution.status) {
         case "runtime":
           return { ...base, status: "supported", by: "runtime" };
-        case "supported":
-          return { ...base, status: "supported", by: "robot", pluginAction: resolution.action.id };
+        case "supported": {
+          const pluginAction = resolution.action.id;
+          const reason = channels && unreachable(plugin, resolution.action, channels);
+          if (reason) return { ...base, status: "unsupported", by: "robot", pluginAction, reason };
+          return { ...base, status: "supported", by: "robot", pluginAction };
+        }
         case "unsupported":
           return { ...base, status: "unsupported", by: "robot", reason: resolution.reason };
         case "parameter_problems":

@@ -1,6 +1,6 @@
 import { spawnSync } from "node:child_process";
 import { describe, expect, it } from "vitest";
-import { shellCommand } from "./shell";
+import { shellCommand, shellWords } from "./shell";
 
 /** What sh actually passes to the program, one argument per line of JSON. */
 function argvAfterShell(command: string): string[] {
@@ -38,6 +38,7 @@ describe("SSH command templates", () => {
     if (!built.ok) throw new Error(built.reason);
     expect(built.argv).toEqual(argv);
     expect(argvAfterShell(built.command)).toEqual(argv);
+    expect(shellWords(built.command)).toEqual({ ok: true, words: argv });
   });
 
   it.each<[string, Record<string, unknown>, string]>([
@@ -46,5 +47,41 @@ describe("SSH command templates", () => {
     ["   ", {}, "the command template is empty"],
   ])("refuses %j with %j", (template, parameters, reason) => {
     expect(shellCommand(template, parameters)).toEqual({ ok: false, reason });
+  });
+});
+
+describe("reading a command back into its arguments, as sh would", () => {
+  it.each<[string, string[]]>([
+    ["qicli call ALMotion.wakeUp", ["qicli", "call", "ALMotion.wakeUp"]],
+    ["  qicli   call\tALMotion.rest  ", ["qicli", "call", "ALMotion.rest"]],
+    [
+      "'qicli' 'call' 'ALRobotPosture.goToPosture' 'Sit' '0.5'",
+      ["qicli", "call", "ALRobotPosture.goToPosture", "Sit", "0.5"],
+    ],
+    [`say "it's \\"fine\\"" a\\ b`, ["say", `it's "fine"`, "a b"]],
+    ["say 'don'\\''t' ''", ["say", "don't", ""]],
+    ['say "two\\\nlines" one\\\ntwo', ["say", "twolines", "onetwo"]],
+    ["say a#b x~", ["say", "a#b", "x~"]],
+    ["", []],
+  ])("%j", (command, argv) => {
+    expect(argvAfterShell(command)).toEqual(argv);
+    expect(shellWords(command)).toEqual({ ok: true, words: argv });
+  });
+
+  it.each<[string, string]>([
+    ["qicli call 'x", "a single quote is not closed"],
+    ['qicli call "x', "a double quote is not closed"],
+    ["qicli call x\\", "the command ends with a backslash"],
+    ["qicli call x; reboot", '";" asks the shell for more than one plain command'],
+    ["qicli call x && reboot", '"&" asks the shell for more than one plain command'],
+    ["qicli call $(reboot)", '"$" asks the shell for more than one plain command'],
+    ['qicli call "$HOME"', '"$" asks the shell to substitute'],
+    ["qicli call `id`", '"`" asks the shell for more than one plain command'],
+    ["qicli call x > /etc/passwd", '">" asks the shell for more than one plain command'],
+    ["qicli call *", '"*" asks the shell to expand it'],
+    ["qicli call ~/x", '"~" asks the shell to expand it'],
+    ["qicli call #x", '"#" asks the shell to expand it'],
+  ])("refuses %j: %s", (command, reason) => {
+    expect(shellWords(command)).toEqual({ ok: false, reason });
   });
 });

@@ -1,7 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { storytellerDraft } from "../../server/seed/storyteller";
 import { hashCanonical } from "./canonical";
-import { snapshotOf } from "./snapshot";
+import { readSnapshot, snapshotOf } from "./snapshot";
 
 describe("the snapshot of a design", () => {
   const design = { ...storytellerDraft(), id: "exp-1" };
@@ -18,10 +18,40 @@ describe("the snapshot of a design", () => {
       })),
     };
     expect(snapshotOf(stored)).toEqual(snapshotOf(design));
-    expect(Object.keys(snapshotOf(stored).experiment).sort()).toEqual(["description", "id", "name", "robotPluginId"]);
+    expect(Object.keys(snapshotOf(stored).experiment).sort()).toEqual(["description", "id", "name", "robotId"]);
   });
 
-  it("hashes as versions published before it was shared with the designer did", () => {
-    expect(hashCanonical(snapshotOf(design))).toBe("2a28dd2b9d6ea00691c948ffcb5e9b09ebbf6fc281b8170e4adbc8a10a8ac61e");
+  it("says where every step leads, so a published version never depends on a default", () => {
+    const { steps } = snapshotOf({ ...design, steps: design.steps.map(({ after: _, ...s }) => s) });
+    expect(steps.every((s) => s.after?.to === "next")).toBe(true);
+  });
+
+  it("hashes the same design the same way", () => {
+    expect(hashCanonical(snapshotOf(design))).toBe(hashCanonical(snapshotOf(structuredClone(design))));
+  });
+});
+
+describe("reading a stored snapshot", () => {
+  it("upgrades schema version 1 (robotPluginId, no after) and leaves its stored bytes alone", () => {
+    const v1 = {
+      schemaVersion: 1,
+      experiment: { id: "e", name: "E", description: "", robotPluginId: "nao6-ros2" },
+      steps: [{ id: "s", name: "S", description: "", actions: [] }],
+    };
+    const before = JSON.stringify(v1);
+    const read = readSnapshot(v1);
+    expect(read.schemaVersion).toBe(2);
+    expect(read.experiment).toEqual({ id: "e", name: "E", description: "", robotId: "nao6-ros2" });
+    expect(read.steps[0]!.after).toBeUndefined();
+    expect(JSON.stringify(v1)).toBe(before);
+  });
+
+  it("reads today's version as it is", () => {
+    const today = snapshotOf({ ...storytellerDraft(), id: "e" });
+    expect(readSnapshot(today)).toBe(today);
+  });
+
+  it("refuses a version it does not know, rather than guessing", () => {
+    expect(() => readSnapshot({ schemaVersion: 9, experiment: {}, steps: [] })).toThrow(/schema version 9/);
   });
 });

@@ -14,6 +14,8 @@ export interface RobotState {
   animation: string | null;
   gesture: string | null;
   posture: string;
+  /** Motors on (woken up) or off (at rest). */
+  awake: boolean;
   velocity: { linear: number; angular: number };
   headPitch: number;
   battery: number;
@@ -26,6 +28,7 @@ export function initialState(): RobotState {
     animation: null,
     gesture: null,
     posture: "stand",
+    awake: true,
     velocity: { linear: 0, angular: 0 },
     headPitch: 0,
     battery: 100,

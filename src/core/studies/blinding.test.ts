@@ -62,7 +62,7 @@ describe("who a blind hides what from", () => {
       participantCode: "P001",
       protocol: {
         schemaVersion: 1,
-        experiment: { id: "e1", name: "NAO with gestures", description: "gestures", robotPluginId: "nao6-ros2" },
+        experiment: { id: "e1", name: "NAO with gestures", description: "gestures", robotId: "nao6-ros2" },
         steps: [],
       },
     };
@@ -72,7 +72,7 @@ describe("who a blind hides what from", () => {
       id: "t1",
       participantCode: "P001",
       experimentName: BLINDED_NAME,
-      protocol: { experiment: { robotPluginId: "nao6-ros2" }, steps: [] },
+      protocol: { experiment: { robotId: "nao6-ros2" }, steps: [] },
     });
   });
 });

@@ -48,7 +48,7 @@ export function blindTrial<
               id: "",
               name: BLINDED_NAME,
               description: "",
-              robotPluginId: protocol.experiment.robotPluginId,
+              robotId: protocol.experiment.robotId,
             },
           },
         }

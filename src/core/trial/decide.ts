@@ -1,5 +1,7 @@
 // The trial engine: (state, command) → the events it causes, or a rejection
 // the wizard can read. Pure: the runtime supplies ids, clock and robot.
+import { actionName } from "../designer/action-name";
+import { exitOf } from "../protocol/flow";
 import { answerOptions, branchTarget, findAction, findStep, nextUnit } from "./protocol";
 import type { Command, Decision, DeviationKind, EngineEvent, ProtocolAction, TrialProtocol, TrialState } from "./types";
 
@@ -83,21 +85,18 @@ function next(protocol: TrialProtocol, state: TrialState): Decision {
   if (holding) return no(`Wait: the ${Number(holding.parameters.seconds ?? 0)} s pause is still running.`);
   const unit = nextUnit(protocol, state);
   if (unit.length > 0) return request(protocol, state, unit, undefined);
-  const current = findStep(protocol, state.currentStepId)!;
-  const following = protocol.steps[current.index + 1];
-  if (!following) return ok({ type: "trial.completed" });
-  return ok({ type: "step.entered", stepId: following.id, via: "next" });
+  const exit = exitOf(protocol.steps, findStep(protocol, state.currentStepId)!.index);
+  // An "after" to a step that is gone cannot be published; in a rehearsal it ends the trial.
+  if (exit.to !== "step") return ok({ type: "trial.completed" });
+  return ok({ type: "step.entered", stepId: protocol.steps[exit.index]!.id, via: "next" });
 }
 
 function trigger(protocol: TrialProtocol, state: TrialState, actionId: string): Decision {
   const found = findAction(protocol, actionId);
   if (!found) return no("That action is not in this protocol; use an unscripted action instead.");
   if (found.step.id !== state.currentStepId)
-    return no(
-      `"${found.action.name ?? found.action.type}" belongs to another step: jump to "${found.step.name}" first.`,
-    );
-  if (state.actions[actionId]?.status !== "waiting")
-    return no(`"${found.action.name ?? found.action.type}" has already run.`);
+    return no(`"${actionName(found.action)}" belongs to another step: jump to "${found.step.name}" first.`);
+  if (state.actions[actionId]?.status !== "waiting") return no(`"${actionName(found.action)}" has already run.`);
   const inTurn = nextUnit(protocol, state).some((a) => a.id === actionId);
   return request(protocol, state, [found.action], inTurn ? undefined : "out_of_order");
 }
@@ -144,7 +143,7 @@ function skip(protocol: TrialProtocol, state: TrialState, actionId: string | und
   for (const action of targets) {
     if (!action || findAction(protocol, action.id)!.step.id !== stepId)
       return no("Only actions of the current step can be skipped.");
-    if (state.actions[action.id]?.status !== "waiting") return no(`"${action.name ?? action.type}" has already run.`);
+    if (state.actions[action.id]?.status !== "waiting") return no(`"${actionName(action)}" has already run.`);
     events.push({ type: "action.skipped", stepId, actionId: action.id, deviation: "skipped" });
   }
   if (events.length === 0) return no("Nothing is left to skip in this step.");
@@ -214,9 +213,9 @@ function robotReport(
   }
 }
 
-/** The protocol's end: the last step with nothing left waiting. */
+/** The protocol's end: a step that leads to the end, with nothing left waiting. */
 function reachedEnd(protocol: TrialProtocol, state: TrialState): boolean {
   const current = findStep(protocol, state.currentStepId);
-  if (!current || current.index !== protocol.steps.length - 1) return false;
+  if (!current || exitOf(protocol.steps, current.index).to === "step") return false;
   return current.step.actions.every((a) => state.actions[a.id]?.status !== "waiting");
 }

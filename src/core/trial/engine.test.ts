@@ -176,7 +176,7 @@ describe("the trial engine", () => {
     [
       "an action of another step needs a jump first",
       [...start, { kind: "trigger", actionId: "nod" }],
-      '"nod" belongs to another step: jump to "Correct" first.',
+      '"Nod" belongs to another step: jump to "Correct" first.',
     ],
     [
       "a manual jump is a deviation",

@@ -1,20 +1,9 @@
 // The trial engine's vocabulary: the protocol it runs, the events it writes,
 // the commands it accepts, and the state it folds events into.
 
-/** What the engine needs of a published protocol version (or a rehearsal's draft). */
-export interface TrialProtocol {
-  steps: Array<{
-    id: string;
-    name: string;
-    actions: Array<{
-      id: string;
-      type: string;
-      name?: string;
-      parameters: Record<string, unknown>;
-      parallelGroup?: string | null;
-    }>;
-  }>;
-}
+import type { TrialProtocol } from "../protocol/document";
+
+export type { TrialProtocol };
 
 export type ProtocolAction = TrialProtocol["steps"][number]["actions"][number];
 
@@ -103,6 +92,10 @@ export interface TrialState {
   /** Scripted and unscripted actions by id. */
   actions: Record<string, ActionState>;
   answers: Record<string, string>;
+  /** The steps entered so far, in order: the path this trial took. */
+  path: string[];
+  /** Each step's actions, so a step entered again runs them again. */
+  stepActions: Record<string, string[]>;
   lastSeq: number;
 }
 

@@ -72,7 +72,7 @@ export function PluginsPage() {
       <Problem error={repositories.error ?? sync.error} />
       {sync.isPending && <Spinner label="Syncing: fetching and checking every plugin file…" />}
       {sync.data && (
-        <Card className="p-5 text-sm" aria-label="What the last sync changed">
+        <Card role="region" className="p-5 text-sm" aria-label="What the last sync changed">
           <h2 className="mb-2 font-semibold">What the last sync changed</h2>
           <ul className="space-y-1">
             {sync.data.changes.map((c) => (
@@ -125,7 +125,7 @@ export function PluginsPage() {
                   <Button
                     size="sm"
                     variant="secondary"
-                    aria-label={`Sync ${r.name}`}
+                    aria-label={`Sync now: ${r.name}`}
                     disabled={sync.isPending}
                     onClick={() => sync.mutate({ repositoryId: r.id })}
                   >

@@ -5,6 +5,7 @@ import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
 import { useMemo, useRef, useState } from "react";
 import { fidelityReport } from "@/core/analysis/fidelity";
+import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { QuestionnaireAnswers } from "./questionnaire-answers";
@@ -16,6 +17,7 @@ import { Badge, Card, Spinner, type Tone } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
 import { seconds } from "@/ui/format";
 import { JointAngles } from "./joint-angles";
+import { TrialPeople } from "@/features/execution/trial-people";
 
 const OUTCOME_TONE: Record<string, Tone> = {
   executed: "green",
@@ -41,7 +43,18 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   const report = useMemo(
     () =>
       trial.data && events.data
-        ? fidelityReport(trial.data.protocol as TrialProtocol, events.data as unknown as TrialEvent[])
+        ? fidelityReport(
+            trial.data.protocol as TrialProtocol,
+            events.data as unknown as TrialEvent[],
+            trial.data.actionNames,
+          )
+        : null,
+    [trial.data, events.data],
+  );
+  const named = useMemo(
+    () =>
+      trial.data && events.data
+        ? trialNames(trial.data.protocol as TrialProtocol, events.data, trial.data.actionNames)
         : null,
     [trial.data, events.data],
   );
@@ -49,6 +62,11 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   if (trial.error || events.error) return <Problem error={trial.error ?? events.error} />;
   const t = trial.data;
   const r = report!;
+  // What an event in the list is about: its action, else its step.
+  const about = (e: object) => {
+    const { stepName, actionName } = named!.of(e);
+    return actionName ?? stepName;
+  };
   const timeline = [
     ...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })),
     ...(moments.data ?? []).map((m) => ({ at: m.relMs, kind: "moment" as const, m })),
@@ -77,6 +95,11 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           </a>
         </span>
       </div>
+      <TrialPeople
+        wizardName={t.wizardName}
+        createdByName={t.createdByName}
+        started={events.data.some((e) => e.type === "trial.started")}
+      />
       <div className="grid gap-4 sm:grid-cols-4">
         <Figure label="Execution fidelity" value={`${r.executionFidelity} %`} />
         <Figure label="Executed / planned" value={`${r.totals.executed} / ${r.totals.planned}`} />
@@ -139,18 +162,16 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
               }
               className={`flex w-full gap-3 px-4 py-1.5 text-left enabled:hover:bg-slate-50 ${current === i ? "bg-brand-50" : ""}`}
             >
-              <span className="w-16 shrink-0 font-mono text-xs text-slate-500">{seconds(item.at)}</span>
+              <span className="w-16 shrink-0 font-mono text-xs text-slate-600">{seconds(item.at)}</span>
               {item.kind === "moment" ? (
                 <span>
                   <Badge tone="violet">marked</Badge> <strong>{item.m.label}</strong> {item.m.note}{" "}
-                  <span className="text-xs text-slate-400">by {item.m.authorName}</span>
+                  <span className="text-xs text-slate-600">by {item.m.authorName}</span>
                 </span>
               ) : (
                 <span>
                   {item.e.type}
-                  {"actionId" in item.e && item.e.actionId ? (
-                    <span className="text-slate-500"> · {item.e.actionId.slice(0, 8)}</span>
-                  ) : null}
+                  {about(item.e) && <span className="text-slate-500"> · {about(item.e)}</span>}
                   {item.e.deviation && <Badge tone="amber">{item.e.deviation.replace("_", " ")}</Badge>}
                 </span>
               )}

@@ -2,7 +2,8 @@
 // The robot's joint angles over the trial, one line per joint.
 import { Card } from "@/ui/surface";
 
-const COLOURS = ["#2458b8", "#d97706", "#059669", "#b91c1c", "#7c3aed"];
+// Dark enough for the legend's text on white (WCAG AA, 4.5:1).
+const COLOURS = ["#2458b8", "#b45309", "#047857", "#b91c1c", "#7c3aed"];
 
 export function JointAngles({ samples }: { samples: Array<{ relMs: number; data: unknown }> }) {
   const rows = samples.map((s) => ({ t: s.relMs, ...(s.data as { name: string[]; position: number[] }) }));

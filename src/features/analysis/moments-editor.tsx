@@ -110,7 +110,7 @@ export function MomentsEditor({
               ) : (
                 <>
                   <strong>{m.label}</strong> <span className="text-slate-600">{m.note}</span>{" "}
-                  <span className="text-xs text-slate-400">by {m.authorName ?? "someone"}</span>
+                  <span className="text-xs text-slate-500">by {m.authorName ?? "someone"}</span>
                   <Button
                     size="sm"
                     variant="ghost"

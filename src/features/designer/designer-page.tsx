@@ -16,6 +16,7 @@ import { ArrowLeft, Plus, Redo2, Undo2 } from "lucide-react";
 import Link from "next/link";
 import { useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from "react";
 import { studyRoleMay } from "@/core/access/policy";
+import { actionName, actionNamesOf } from "@/core/designer/action-name";
 import { blockFor as findBlock, initialParameters, RUN_TOGETHER, type Block } from "@/core/designer/blocks";
 import { libraryEntries } from "@/core/designer/library";
 import { commands, locateAction, locateStep } from "@/core/designer/model";
@@ -28,10 +29,13 @@ import { Button } from "@/ui/button";
 import { Input, NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
 import { Spinner } from "@/ui/surface";
+import { Tabs } from "@/ui/tabs";
+import { FlowMap } from "./flow-map";
 import { IssuesPanel } from "./issues-panel";
 import { LibraryPanel } from "./library-panel";
 import { PropertiesPanel } from "./properties-panel";
 import { ProtocolTimeline, type Marks, type Selection } from "./protocol-timeline";
+import { RehearsalPreview } from "./rehearsal-preview";
 import { collision, TIMELINE_END, TimelineEnd } from "./timeline-end";
 import { useDesigner, type SaveState } from "./use-designer";
 import { VersionsPanel } from "./versions-panel";
@@ -50,19 +54,23 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   });
   const robots = useQuery(trpc.plugins.list.queryOptions());
   const pluginQuery = useQuery({
-    ...trpc.plugins.get.queryOptions({ robotId: draft?.robotPluginId ?? "" }),
-    enabled: Boolean(draft?.robotPluginId),
+    ...trpc.plugins.get.queryOptions({ robotId: draft?.robotId ?? "" }),
+    enabled: Boolean(draft?.robotId),
   });
   const plugin = (pluginQuery.data ?? null) as Plugin | null;
   const [selection, setSelection] = useState<Selection>(null);
+  const [view, setView] = useState("steps");
 
   const entries = useMemo(() => libraryEntries(plugin), [plugin]);
   const blockFor = useCallback((type: string) => findBlock(type, plugin), [plugin]);
   const blockName = useCallback((type: string) => findBlock(type, plugin)?.name ?? type, [plugin]);
+  const names = useMemo(() => actionNamesOf(plugin), [plugin]);
 
   // Checks run a beat behind typing: the timeline stays responsive on big protocols.
   const checked = useDeferredValue(draft);
-  const issues = useMemo(() => (checked ? validateDesign(checked, plugin) : []), [checked, plugin]);
+  // Checked against this server's ways to the robot too: what it calls runnable, the runtime runs.
+  const channels = robots.data?.channels;
+  const issues = useMemo(() => (checked ? validateDesign(checked, plugin, channels) : []), [checked, plugin, channels]);
   const marks = useMemo(() => {
     const map = new Map<string, Marks>();
     for (const issue of issues) {
@@ -209,7 +217,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
 
   if (designer.loaded.isPending || (!draft && !designer.loaded.error)) return <Spinner label="Opening the designer…" />;
   if (designer.loaded.error || !draft) return <Problem error={designer.loaded.error} />;
-  const robotName = robots.data?.robots.find((r) => r.robotId === draft.robotPluginId)?.name ?? draft.robotPluginId;
+  const robotName = robots.data?.robots.find((r) => r.robotId === draft.robotId)?.name ?? draft.robotId;
   const errors = hasErrors(issues);
 
   return (
@@ -235,7 +243,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
           <NativeSelect
             aria-label="Robot"
             className="h-9 w-auto py-0"
-            value={draft.robotPluginId}
+            value={draft.robotId}
             disabled={!canEdit}
             onChange={(e) => run(commands.setRobot(e.target.value))}
           >
@@ -301,21 +309,56 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
               You can read this experiment; only its owner and researchers edit it.
             </p>
           )}
-          <main className="flex min-h-0 flex-col gap-3 overflow-y-auto pr-1">
-            <ProtocolTimeline
-              steps={draft.steps}
-              selection={selection}
-              marks={marks}
-              blockName={blockName}
-              onSelect={setSelection}
+          <main className="min-h-0 overflow-y-auto pr-1">
+            <Tabs
+              label="Designer views"
+              value={view}
+              onValueChange={setView}
+              tabs={[
+                {
+                  id: "steps",
+                  label: "Steps",
+                  content: (
+                    <div className="space-y-3">
+                      <ProtocolTimeline
+                        steps={draft.steps}
+                        selection={selection}
+                        marks={marks}
+                        blockName={blockName}
+                        onSelect={setSelection}
+                      />
+                      <TimelineEnd lastStep={draft.steps.at(-1)?.name ?? null}>
+                        {canEdit && (
+                          <Button variant="secondary" className="self-start" onClick={addStep}>
+                            <Plus className="h-4 w-4" aria-hidden /> Add step
+                          </Button>
+                        )}
+                      </TimelineEnd>
+                    </div>
+                  ),
+                },
+                {
+                  id: "flow",
+                  label: "Flow map",
+                  content: <FlowMap draft={draft} onSelect={(id) => setSelection({ kind: "step", id })} />,
+                },
+                {
+                  id: "rehearse",
+                  label: "Rehearse",
+                  content: (
+                    <RehearsalPreview
+                      draft={draft}
+                      actionName={(a) => actionName(a, names)}
+                      blocked={
+                        errors
+                          ? "Fix the problems listed on the right first: the preview walks the experiment as a trial would."
+                          : null
+                      }
+                    />
+                  ),
+                },
+              ]}
             />
-            <TimelineEnd lastStep={draft.steps.at(-1)?.name ?? null}>
-              {canEdit && (
-                <Button variant="secondary" className="self-start" onClick={addStep}>
-                  <Plus className="h-4 w-4" aria-hidden /> Add step
-                </Button>
-              )}
-            </TimelineEnd>
           </main>
           <div className="min-h-0 space-y-3 overflow-y-auto">
             <fieldset disabled={!canEdit} className="min-w-0">

@@ -104,8 +104,9 @@ function LibraryEntryItem({
           <button
             type="button"
             aria-expanded={shown}
-            aria-label={`Versions of ${block.name} on ${robotName}`}
-            title={`Versions of ${block.name} on ${robotName}`}
+            // Its name starts with the number it shows, so the two never disagree (WCAG 2.5.3).
+            aria-label={`${variants.length} ${variants.length === 1 ? "version" : "versions"} of ${block.name} on ${robotName}`}
+            title={`${robotName}'s own versions of ${block.name}`}
             onClick={() => setExpanded(!shown)}
             className="flex shrink-0 items-center gap-0.5 rounded-md border border-slate-200 bg-white px-1.5 text-xs text-slate-600 hover:border-brand-500 focus:outline-none focus:ring-2 focus:ring-brand-500/40"
           >

@@ -96,9 +96,46 @@ function StepProperties({ draft, stepId, issues, run, onMove, onDelete }: Props 
           />
         )}
       </Field>
+      <AfterStep draft={draft} stepId={stepId} run={run} />
       <IssueList issues={own} />
       <Toolbar what="step" onMove={onMove} onDelete={onDelete} />
     </div>
+  );
+}
+
+/** Where the step leads once its actions are done: how answers' steps rejoin a shared step. */
+function AfterStep({ draft, stepId, run }: Pick<Props, "draft" | "run"> & { stepId: string }) {
+  const { step, index } = locateStep(draft, stepId);
+  const following = draft.steps[index + 1];
+  const value = !step.after || step.after.to === "next" ? "next" : step.after.to === "end" ? "end" : step.after.stepId;
+  const choose = (v: string) =>
+    run(commands.setAfter(stepId, v === "next" || v === "end" ? { to: v } : { to: "step", stepId: v }));
+  return (
+    <Field
+      label="Then"
+      hint="Where the trial goes once this step's actions are done. Steps for different answers usually go to the step where the answers meet."
+    >
+      {(p) => (
+        <NativeSelect {...p} value={value} onChange={(e) => choose(e.target.value)}>
+          <option value="next">
+            {following
+              ? `Go on to the next step (${following.name || `step ${index + 2}`})`
+              : "End the trial (last step)"}
+          </option>
+          {draft.steps.map((s, i) =>
+            s.id === stepId ? null : (
+              <option key={s.id} value={s.id}>
+                Go to step {i + 1}: {s.name}
+              </option>
+            ),
+          )}
+          <option value="end">End the trial</option>
+          {value !== "next" && value !== "end" && !draft.steps.some((s) => s.id === value) && (
+            <option value={value}>A step that is no longer in the experiment</option>
+          )}
+        </NativeSelect>
+      )}
+    </Field>
   );
 }
 

@@ -5,9 +5,10 @@
 import { useDroppable } from "@dnd-kit/core";
 import { SortableContext, useSortable, verticalListSortingStrategy } from "@dnd-kit/sortable";
 import { CSS } from "@dnd-kit/utilities";
-import { AlertCircle, AlertTriangle, GripVertical, Link2 } from "lucide-react";
+import { AlertCircle, AlertTriangle, CornerDownRight, GripVertical, Link2 } from "lucide-react";
 import { memo, useRef } from "react";
 import type { DesignAction, DesignStep } from "@/core/designer/types";
+import { describeExit } from "@/core/protocol/flow";
 import { cn } from "@/ui/cn";
 
 export type Selection = { kind: "step" | "action"; id: string } | null;
@@ -50,6 +51,7 @@ export function ProtocolTimeline({
               step={step}
               index={index}
               selected={selected}
+              leadsTo={describeExit(steps, index)}
               marksKey={marksKey(step, marks)}
               marks={marks}
               blockName={blockName}
@@ -79,6 +81,8 @@ function marksKey(step: DesignStep, marks: Map<string, Marks>) {
 
 interface StepProps {
   step: DesignStep;
+  /** Where the step leads after its actions, in words. */
+  leadsTo: string;
   index: number;
   selected: string | null;
   marksKey: string;
@@ -88,7 +92,7 @@ interface StepProps {
 }
 
 const StepCard = memo(
-  function StepCard({ step, index, selected, marks, blockName, onSelect }: StepProps) {
+  function StepCard({ step, index, leadsTo, selected, marks, blockName, onSelect }: StepProps) {
     const sortable = useSortable({ id: stepDragId(step.id), data: { stepId: step.id } });
     const drop = useDroppable({ id: dropZoneId(step.id), data: { stepId: step.id } });
     const stepMarks = marks.get(step.id);
@@ -118,9 +122,9 @@ const StepCard = memo(
             type="button"
             className="flex-1 text-left"
             onClick={() => onSelect({ kind: "step", id: step.id })}
-            aria-label={`Step ${index + 1}: ${step.name}`}
+            aria-label={`Step ${index + 1}: ${step.name}${step.description ? ` ${step.description}` : ""}`}
           >
-            <span className="text-xs font-semibold text-slate-400">Step {index + 1}</span>{" "}
+            <span className="text-xs font-semibold text-slate-500">Step {index + 1}</span>{" "}
             <span className="font-semibold">{step.name}</span>
             {step.description && <span className="ml-2 text-xs text-slate-500">{step.description}</span>}
           </button>
@@ -154,17 +158,28 @@ const StepCard = memo(
           data-drop-zone={step.name}
           className={cn(
             "mx-2 mb-2 rounded-md border border-dashed px-3 py-2 text-center text-xs",
-            drop.isOver ? "border-brand-500 bg-brand-50 text-brand-700" : "border-slate-300 text-slate-400",
+            drop.isOver ? "border-brand-500 bg-brand-50 text-brand-700" : "border-slate-300 text-slate-500",
           )}
         >
           {step.actions.length ? "Drop a block here to add it at the end" : "Empty step: drop a block here"}
         </div>
+        <p
+          data-leads-to={leadsTo}
+          className={cn(
+            "flex items-center gap-1 border-t border-slate-100 px-3 py-1.5 text-xs",
+            // A chosen way on stands out; the plain "next step" stays quiet.
+            step.after && step.after.to !== "next" ? "font-medium text-brand-800" : "text-slate-600",
+          )}
+        >
+          <CornerDownRight className="h-3.5 w-3.5" aria-hidden /> Then {leadsTo}
+        </p>
       </li>
     );
   },
   (a, b) =>
     a.step === b.step &&
     a.index === b.index &&
+    a.leadsTo === b.leadsTo &&
     a.selected === b.selected &&
     a.marksKey === b.marksKey &&
     a.blockName === b.blockName &&
@@ -214,7 +229,6 @@ const ActionCard = memo(function ActionCard({
         tabIndex={0}
         data-action={action.name || label}
         aria-pressed={selected}
-        aria-label={`${label}${action.name ? `: ${action.name}` : ""}`}
         onClick={() => onSelect({ kind: "action", id: action.id })}
         onKeyDown={(e) => {
           if (e.key === "Enter" || e.key === " ") {

@@ -58,7 +58,7 @@ export function useDesigner(experimentId: string) {
       const result = await saveDesign.mutateAsync({
         experimentId,
         baseRevision: revision.current,
-        details: { name: draft.name, description: draft.description, robotPluginId: draft.robotPluginId },
+        details: { name: draft.name, description: draft.description, robotId: draft.robotId },
         steps: draft.steps.map((s) => ({ ...s, actions: s.actions.map((a) => ({ ...a })) })),
       });
       revision.current = result.draftRevision;

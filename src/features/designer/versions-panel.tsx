@@ -95,7 +95,7 @@ export function VersionsPanel({
               <span className="text-slate-600">
                 {new Date(v.publishedAt).toLocaleString()} · {v.publishedBy ?? "someone"}
               </span>
-              <code className="ml-auto text-xs text-slate-400" title={v.hash}>
+              <code className="ml-auto text-xs text-slate-500" title={v.hash}>
                 {v.hash.slice(0, 8)}
               </code>
             </li>

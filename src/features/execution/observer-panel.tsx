@@ -50,7 +50,7 @@ export function Moments({ annotations }: { annotations: Annotation[] }) {
             <span className="font-mono text-xs text-slate-500">{(a.relMs / 1000).toFixed(1)} s</span>{" "}
             <strong>{a.label}</strong>
             {a.note && <span className="text-slate-600"> — {a.note}</span>}{" "}
-            <span className="text-xs text-slate-400">by {a.authorName}</span>
+            <span className="text-xs text-slate-500">by {a.authorName}</span>
           </li>
         ))}
       </ul>

@@ -1,7 +1,9 @@
 "use client";
-// The protocol as both the wizard and observers see it: steps, the current
-// one highlighted, and each action's status and timing from the event log.
-import type { ActionState, TrialProtocol, TrialState } from "@/core/trial";
+// The protocol as both the wizard and observers see it: the way taken, the
+// current step, what comes next, and each action's status and timing from
+// the event log; an action that was not done says why beside its badge.
+import { actionName, type ActionNames } from "@/core/designer/action-name";
+import { type ActionState, pathTaken, type TrialProtocol, type TrialState, upcoming } from "@/core/trial";
 import { cn } from "@/ui/cn";
 import { Badge, type Tone } from "@/ui/surface";
 
@@ -15,11 +17,11 @@ const STATUS: Record<ActionState["status"], { label: string; tone: Tone }> = {
   skipped: { label: "skipped", tone: "amber" },
 };
 
-export function describeAction(a: { type: string; name?: string; parameters: Record<string, unknown> }) {
-  const text = typeof a.parameters.text === "string" ? `“${a.parameters.text}”` : "";
-  return a.name || text || a.type.replaceAll("_", " ");
-}
-
+/**
+ * The way through: the steps this trial has taken, the current one
+ * highlighted, and what comes next — not every step of every branch. A jump
+ * elsewhere (a deviation) is one disclosure away for the wizard.
+ */
 export function StepList({
   protocol,
   state,
@@ -29,45 +31,82 @@ export function StepList({
   state: TrialState;
   onJump?: (stepId: string) => void;
 }) {
+  const taken = pathTaken(protocol, state);
+  const next = upcoming(protocol, state);
+  const number = (id: string) => protocol.steps.findIndex((s) => s.id === id) + 1;
   return (
-    <ol className="space-y-1" aria-label="Steps">
-      {protocol.steps.map((step, i) => {
-        const current = step.id === state.currentStepId;
-        const done = step.actions.length > 0 && step.actions.every((a) => state.actions[a.id]?.status !== "waiting");
-        return (
-          <li
-            key={step.id}
-            aria-current={current ? "step" : undefined}
-            className={cn(
-              "rounded-md px-3 py-2 text-sm",
-              current ? "bg-brand-600 font-semibold text-white" : done ? "text-slate-400" : "text-slate-700",
+    <div className="space-y-3 text-sm">
+      <ol className="space-y-1" aria-label="Steps taken">
+        {taken.map((step, i) => {
+          const current = i === taken.length - 1 && step.id === state.currentStepId;
+          return (
+            <li
+              key={`${step.id}-${i}`}
+              aria-current={current ? "step" : undefined}
+              className={cn(
+                "rounded-md px-3 py-2",
+                current ? "bg-brand-600 font-semibold text-white" : "text-slate-600",
+              )}
+            >
+              {number(step.id)}. {step.name}
+            </li>
+          );
+        })}
+      </ol>
+      <div aria-label="Next step" role="note" className="rounded-md border border-dashed border-slate-300 px-3 py-2">
+        <span className="text-xs font-semibold uppercase tracking-wide text-slate-600">Next</span>
+        {next.kind === "step" && (
+          <p>
+            {number(next.step.id)}. {next.step.name}
+          </p>
+        )}
+        {next.kind === "end" && <p>End of the trial</p>}
+        {next.kind === "answer" && (
+          <ul>
+            {next.routes.map((r) => (
+              <li key={r.label}>
+                “{r.label}” → {r.step ? `${number(r.step.id)}. ${r.step.name}` : "not set"}
+              </li>
+            ))}
+          </ul>
+        )}
+      </div>
+      {onJump && state.status === "in_progress" && (
+        <details>
+          <summary className="cursor-pointer text-xs text-brand-700">Jump to another step (a deviation)</summary>
+          <ul className="mt-1 space-y-1">
+            {protocol.steps.map((step) =>
+              step.id === state.currentStepId ? null : (
+                <li key={step.id}>
+                  <button
+                    type="button"
+                    className="text-left text-xs text-brand-700 underline-offset-2 hover:underline"
+                    onClick={() => onJump(step.id)}
+                  >
+                    Jump to {step.name}
+                  </button>
+                </li>
+              ),
             )}
-          >
-            {i + 1}. {step.name}
-            {onJump && !current && state.status === "in_progress" && (
-              <button
-                type="button"
-                className="ml-2 text-xs text-brand-600 underline-offset-2 hover:underline"
-                aria-label={`Jump to ${step.name}`}
-                onClick={() => onJump(step.id)}
-              >
-                jump
-              </button>
-            )}
-          </li>
-        );
-      })}
-    </ol>
+          </ul>
+        </details>
+      )}
+    </div>
   );
 }
 
 export function StepActions({
   protocol,
+  names,
   state,
+  problems,
   onTrigger,
 }: {
   protocol: TrialProtocol;
+  names: ActionNames;
   state: TrialState;
+  /** Why actions were not done, by id (actionProblems). */
+  problems: Record<string, string>;
   onTrigger?: (actionId: string) => void;
 }) {
   const step = protocol.steps.find((s) => s.id === state.currentStepId);
@@ -85,15 +124,24 @@ export function StepActions({
               ? `${((s.finishedAt - s.requestedAt) / 1000).toFixed(1)} s`
               : "";
           return (
-            <li key={a.id} className="flex items-center gap-3 px-4 py-2 text-sm" data-testid={`action-${a.id}`}>
+            <li
+              key={a.id}
+              className="flex flex-wrap items-center gap-3 px-4 py-2 text-sm"
+              data-testid={`action-${a.id}`}
+            >
               <Badge tone={STATUS[s.status].tone}>{STATUS[s.status].label}</Badge>
-              <span className="flex-1">
+              {/* A long speech is cut in its name; the whole text is a hover away. */}
+              <span className="flex-1" title={typeof a.parameters.text === "string" ? a.parameters.text : undefined}>
                 {a.type === "wizard_instruction" ? (
                   <strong>Instruction: {String(a.parameters.text ?? a.name)}</strong>
                 ) : (
-                  describeAction(a)
+                  actionName(a, names)
                 )}
-                {a.parallelGroup && <span className="ml-2 text-xs text-slate-400">together</span>}
+                {/* A labelled pause names itself ("Hold still"); the wizard still needs its length. */}
+                {a.type === "pause" && a.name?.trim() && (
+                  <span className="ml-2 text-xs text-slate-500">{Number(a.parameters.seconds ?? 0)} s</span>
+                )}
+                {a.parallelGroup && <span className="ml-2 text-xs text-slate-500">together</span>}
               </span>
               <span className="text-xs tabular-nums text-slate-500">{took}</span>
               {onTrigger &&
@@ -103,12 +151,13 @@ export function StepActions({
                   <button
                     type="button"
                     className="text-xs text-brand-600 hover:underline"
-                    aria-label={`Run ${describeAction(a)} now`}
                     onClick={() => onTrigger(a.id)}
                   >
-                    run now
+                    {/* The action's name is heard, not shown: its row already shows it. */}
+                    run<span className="sr-only"> {actionName(a, names)}</span> now
                   </button>
                 )}
+              <WhyNotDone text={problems[a.id]} />
             </li>
           );
         })}
@@ -120,7 +169,9 @@ export function StepActions({
 /** Actions the wizard sent off script, with their status: deviations, visible as they happen. */
 export function OffScript({
   events,
+  names,
   state,
+  problems,
 }: {
   events: Array<{
     type: string;
@@ -129,7 +180,9 @@ export function OffScript({
     scripted?: boolean;
     parameters?: Record<string, unknown>;
   }>;
+  names: ActionNames;
   state: TrialState;
+  problems: Record<string, string>;
 }) {
   const unscripted = events.filter((e) => e.type === "action.requested" && e.scripted === false);
   if (!unscripted.length) return null;
@@ -140,13 +193,24 @@ export function OffScript({
         {unscripted.map((e) => {
           const s = state.actions[e.actionId!];
           return (
-            <li key={e.actionId} className="flex items-center gap-3 px-4 py-2 text-sm">
+            <li key={e.actionId} className="flex flex-wrap items-center gap-3 px-4 py-2 text-sm">
               {s && <Badge tone={STATUS[s.status].tone}>{STATUS[s.status].label}</Badge>}
-              <span>{describeAction({ type: e.actionType ?? "", parameters: e.parameters ?? {} })}</span>
+              <span>{actionName({ type: e.actionType ?? "", parameters: e.parameters }, names)}</span>
+              <WhyNotDone text={problems[e.actionId!]} />
             </li>
           );
         })}
       </ul>
     </section>
+  );
+}
+
+/** The reason, on its own line under the action; announced when it appears. */
+function WhyNotDone({ text }: { text: string | undefined }) {
+  if (!text) return null;
+  return (
+    <p role="alert" className="basis-full text-xs text-red-700" data-testid="action-problem">
+      {text}
+    </p>
   );
 }

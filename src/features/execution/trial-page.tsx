@@ -1,9 +1,10 @@
 "use client";
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
-import { useCallback } from "react";
+import { useCallback, useEffect, useMemo } from "react";
 import { studyRoleMay } from "@/core/access/policy";
-import type { TrialProtocol } from "@/core/trial";
+import type { ActionNames } from "@/core/designer/action-name";
+import { actionProblems, type TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
@@ -12,6 +13,7 @@ import { OffScript, StepActions, StepList } from "./protocol-view";
 import { TrialQuestionnaires } from "@/features/questionnaires/trial-questionnaires";
 import { RecordingPanel } from "@/features/recording/recording-panel";
 import { TrialClock } from "./trial-clock";
+import { TrialPeople } from "./trial-people";
 import { useTrialSocket } from "./use-trial-socket";
 import { SHORTCUTS, WizardControls } from "./wizard-controls";
 
@@ -20,7 +22,13 @@ export function TrialPage({ trialId }: { trialId: string }) {
   const trial = useQuery(trpc.trials.get.queryOptions({ trialId }));
   if (trial.isPending) return <Spinner />;
   if (trial.error) return <Problem error={trial.error} />;
-  return <LiveTrial trial={trial.data} protocol={trial.data.protocol as TrialProtocol} />;
+  return (
+    <LiveTrial
+      trial={trial.data}
+      protocol={trial.data.protocol as TrialProtocol}
+      refresh={() => void trial.refetch()}
+    />
+  );
 }
 
 type Trial = {
@@ -31,16 +39,27 @@ type Trial = {
   participantCode: string | null;
   isRehearsal: boolean;
   version: number | null;
+  wizardId: string | null;
+  wizardName: string | null;
+  createdByName: string | null;
   myRole: "owner" | "researcher" | "wizard" | "observer";
+  actionNames: ActionNames;
 };
 
-function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol }) {
+function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: TrialProtocol; refresh: () => void }) {
   const live = useTrialSocket(trial.id, protocol);
   // The runtime decides (a wizard runs only the trials assigned to them); until it has said, the study role guides.
   const wizard = live.mayRun ?? studyRoleMay(trial.myRole, "trial.run");
   const started = live.events.find((e) => e.type === "trial.started");
+  const problems = useMemo(() => actionProblems(live.events), [live.events]);
   const ended = live.state.status === "completed" || live.state.status === "aborted";
   const { command } = live;
+  // Starting an unassigned trial records its starter as the wizard: read who that was.
+  const claimed = Boolean(started) && trial.wizardId === null;
+  // biome-ignore lint/correctness/useExhaustiveDependencies: refresh is a new function on every render; once per start is enough
+  useEffect(() => {
+    if (claimed) refresh();
+  }, [claimed]);
   const logRecording = useCallback(
     (recordingId: string, offsetMs: number) => void command({ kind: "recording", recordingId, offsetMs }),
     [command],
@@ -58,7 +77,17 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
         <Badge tone={STATUS_TONE[live.state.status]}>
           <span data-testid="trial-status">{live.state.status.replace("_", " ")}</span>
         </Badge>
-        {live.state.emergencyStopped && <Badge tone="red">emergency stop</Badge>}
+        {/* Red only while it holds a live trial; once the trial has ended it is history. */}
+        {live.state.emergencyStopped &&
+          (ended ? (
+            <Badge>
+              <span data-testid="emergency-stop">emergency stop used</span>
+            </Badge>
+          ) : (
+            <Badge tone="red">
+              <span data-testid="emergency-stop">emergency stop</span>
+            </Badge>
+          ))}
         <span className="ml-auto flex items-center gap-4">
           {live.robot && (
             <Badge tone={live.robot.connected ? "green" : "red"}>
@@ -73,6 +102,7 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
           <TrialClock startedAt={started?.serverTime ?? null} stopped={ended} />
         </span>
       </div>
+      <TrialPeople wizardName={trial.wizardName} createdByName={trial.createdByName} started={Boolean(started)} />
       {live.notice && <Problem error={{ message: live.notice }} />}
       {ended && (
         <Link href={`/trials/${trial.id}/analysis`} className="inline-block font-medium text-brand-600 hover:underline">
@@ -90,11 +120,15 @@ function LiveTrial({ trial, protocol }: { trial: Trial; protocol: TrialProtocol 
         <div className="space-y-6">
           <StepActions
             protocol={protocol}
+            names={trial.actionNames}
             state={live.state}
+            problems={problems}
             onTrigger={wizard ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined}
           />
-          <OffScript events={live.events} state={live.state} />
-          {wizard && <WizardControls protocol={protocol} state={live.state} send={live.command} />}
+          <OffScript events={live.events} names={trial.actionNames} state={live.state} problems={problems} />
+          {wizard && (
+            <WizardControls protocol={protocol} names={trial.actionNames} state={live.state} send={live.command} />
+          )}
         </div>
         <div className="space-y-4">
           <Watching viewers={live.viewers} />

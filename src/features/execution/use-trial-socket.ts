@@ -5,7 +5,8 @@
 // with the same engine the server uses.
 import { useMutation } from "@tanstack/react-query";
 import { useCallback, useEffect, useMemo, useRef, useState } from "react";
-import { fold, type TrialProtocol } from "@/core/trial";
+import { type Command, fold, type TrialProtocol } from "@/core/trial";
+import { type Refusal, refusalInForce } from "@/core/trial/refusals";
 import {
   parseServerMessage,
   SOCKET_PROTOCOL_VERSION,
@@ -28,12 +29,17 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const [annotations, setAnnotations] = useState<Annotation[]>([]);
   const [connected, setConnected] = useState(false);
   const [robot, setRobot] = useState<{ connected: boolean; detail?: string } | null>(null);
+  // About the connection (lost, shut out, another version): stays until the connection changes.
   const [notice, setNotice] = useState<string | null>(null);
+  // About the trial (a command refused): stays only while the trial is as it was when refused.
+  const [refusal, setRefusal] = useState<Refusal | null>(null);
   // Whether the server lets me command this trial (role, assigned wizard), as it last said.
   const [mayRun, setMayRun] = useState<boolean | null>(null);
   const socket = useRef<WebSocket | null>(null);
   const lastSeq = useRef(0);
   const pending = useRef(new Map<string, (o: Outcome) => void>());
+  // The command each request carries, so that a refusal can be checked against the trial as it moves on.
+  const sent = useRef(new Map<string, Command>());
 
   const receive = useCallback((incoming: WireEvent[]) => {
     const fresh = incoming.filter((e) => e.seq > lastSeq.current);
@@ -85,8 +91,12 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
         else if (m.type === "ack" || m.type === "rejected") {
           const settle = m.requestId ? pending.current.get(m.requestId) : undefined;
-          if (m.requestId) pending.current.delete(m.requestId);
-          if (m.type === "rejected") setNotice(m.reason);
+          const command = m.requestId ? (sent.current.get(m.requestId) ?? null) : null;
+          if (m.requestId) {
+            pending.current.delete(m.requestId);
+            sent.current.delete(m.requestId);
+          }
+          if (m.type === "rejected") setRefusal({ reason: m.reason, command, atSeq: lastSeq.current });
           settle?.(m.type === "ack" ? { ok: true } : { ok: false, reason: m.reason });
         }
       };
@@ -95,6 +105,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         for (const settle of pending.current.values())
           settle({ ok: false, reason: "The connection dropped before the server confirmed this." });
         pending.current.clear();
+        sent.current.clear();
         if (stopped) return;
         // Shut out (no longer a member, account disabled): say why and stay disconnected.
         if (event.code === 4403) {
@@ -117,28 +128,35 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [trialId]);
 
-  const request = useCallback((message: (requestId: string) => ClientMessage): Promise<Outcome> => {
+  const request = useCallback((message: (requestId: string) => ClientMessage, command?: Command): Promise<Outcome> => {
     const ws = socket.current;
     if (!ws || ws.readyState !== WebSocket.OPEN)
       return Promise.resolve({ ok: false, reason: "Not connected to the trial yet." });
     const requestId = crypto.randomUUID();
     return new Promise((settle) => {
       pending.current.set(requestId, settle);
+      if (command) sent.current.set(requestId, command);
       ws.send(JSON.stringify(message(requestId)));
     });
   }, []);
 
   const state = useMemo(() => fold(protocol, events), [protocol, events]);
   return {
+    /** What the page must say now: the connection's trouble first, else a refusal that still applies. */
+    notice: notice ?? refusalInForce(refusal, protocol, state)?.reason ?? null,
     state,
     events,
     viewers,
     annotations,
     connected,
     robot,
-    notice,
     mayRun,
-    command: (command: WizardCommand) => request((requestId) => ({ type: "command", requestId, command })),
+    command: (command: WizardCommand) =>
+      request(
+        (requestId) => ({ type: "command", requestId, command }),
+        // The engine's form of it: the server gives an unscripted action its id.
+        command.kind === "unscripted" ? { ...command, actionId: crypto.randomUUID() } : command,
+      ),
     annotate: (label: string, note = "") => request((requestId) => ({ type: "annotate", requestId, label, note })),
   };
 }

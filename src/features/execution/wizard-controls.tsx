@@ -1,12 +1,13 @@
 "use client";
 // The wizard's controls: the next scripted action as the big button, answer
 // choices by number, and everything off script one key away.
-import { useEffect, useRef, useState } from "react";
+import { useEffect, useId, useRef, useState } from "react";
+import { actionName, type ActionNames } from "@/core/designer/action-name";
 import { answerOptions, nextUnit, type TrialProtocol, type TrialState } from "@/core/trial";
+import { controlsOffBecause } from "@/core/trial/refusals";
 import type { WizardCommand } from "@/core/socket/messages";
 import { Button } from "@/ui/button";
 import { Input } from "@/ui/field";
-import { describeAction } from "./protocol-view";
 import { UnscriptedAction } from "./unscripted-action";
 
 type Send = (c: WizardCommand) => Promise<{ ok: boolean }>;
@@ -20,16 +21,26 @@ export const SHORTCUTS = [
   ["Esc", "emergency stop"],
 ] as const;
 
-export function nextLabel(protocol: TrialProtocol, state: TrialState): string {
+export function nextLabel(protocol: TrialProtocol, state: TrialState, names: ActionNames): string {
   if (state.status === "scheduled") return "Start trial";
   const unit = nextUnit(protocol, state);
-  if (unit.length) return unit.map(describeAction).join(" + ");
+  if (unit.length) return unit.map((a) => actionName(a, names)).join(" + ");
   const index = protocol.steps.findIndex((s) => s.id === state.currentStepId);
   const following = protocol.steps[index + 1];
   return following ? `Go to “${following.name}”` : "Finish trial";
 }
 
-export function WizardControls({ protocol, state, send }: { protocol: TrialProtocol; state: TrialState; send: Send }) {
+export function WizardControls({
+  protocol,
+  names,
+  state,
+  send,
+}: {
+  protocol: TrialProtocol;
+  names: ActionNames;
+  state: TrialState;
+  send: Send;
+}) {
   const speech = useRef<HTMLInputElement>(null);
   const [text, setText] = useState("");
   const [note, setNote] = useState("");
@@ -38,7 +49,10 @@ export function WizardControls({ protocol, state, send }: { protocol: TrialProto
   const question = unit[0]?.type === "record_answer" ? unit[0] : null;
   const options = question ? answerOptions(question) : [];
   const running = state.status === "in_progress";
-  const ended = state.status === "completed" || state.status === "aborted";
+  // An ended trial takes no command, emergency stop included: every control is off, and the page says why.
+  const offBecause = controlsOffBecause(state);
+  const ended = offBecause !== null;
+  const offId = useId();
   const next = () => void send(state.status === "scheduled" ? { kind: "start" } : { kind: "next" });
 
   useEffect(() => {
@@ -78,109 +92,127 @@ export function WizardControls({ protocol, state, send }: { protocol: TrialProto
 
   return (
     <div className="space-y-4">
-      {question ? (
-        <div className="rounded-lg border-2 border-brand-500 bg-brand-50 p-4">
-          <p className="font-medium">{String(question.parameters.prompt ?? "Record the participant's answer")}</p>
-          <div className="mt-3 flex flex-wrap gap-2">
-            {options.map((o, i) => (
-              <Button
-                key={o.id}
-                size="lg"
-                onClick={() => void send({ kind: "answer", actionId: question.id, optionId: o.id })}
-              >
-                <kbd className="rounded bg-white/20 px-1.5 text-xs">{i + 1}</kbd> {o.label}
-              </Button>
-            ))}
-          </div>
-        </div>
-      ) : (
-        <Button size="lg" className="h-16 w-full text-lg" disabled={ended || state.status === "paused"} onClick={next}>
-          <kbd className="rounded bg-white/20 px-1.5 text-xs">N</kbd>{" "}
-          {ended ? "Trial ended" : nextLabel(protocol, state)}
-        </Button>
+      {offBecause && (
+        <p
+          id={offId}
+          role="status"
+          className="rounded-md border border-slate-300 bg-slate-50 p-3 text-sm text-slate-700"
+        >
+          {offBecause}
+        </p>
       )}
-      <div className="flex flex-wrap gap-2">
-        <Button
-          variant="secondary"
-          disabled={!running || unit.length === 0}
-          onClick={() => void send({ kind: "skip" })}
-        >
-          Skip (S)
-        </Button>
-        <Button
-          variant="secondary"
-          disabled={ended || state.status === "scheduled"}
-          onClick={() => void send({ kind: state.status === "paused" ? "resume" : "pause" })}
-        >
-          {state.status === "paused" ? "Resume (P)" : "Pause (P)"}
-        </Button>
-        <Button
-          variant="secondary"
-          disabled={ended || state.status === "scheduled"}
-          onClick={() => void send({ kind: "complete" })}
-        >
-          Complete trial
-        </Button>
-        <Button
-          variant="danger"
-          disabled={ended || state.status === "scheduled"}
-          onClick={() => void send({ kind: "emergency_stop" })}
-        >
-          Emergency stop (Esc)
-        </Button>
-        {confirmAbort ? (
-          <Button
-            variant="danger"
-            onClick={() =>
-              void send({ kind: "abort", reason: "Aborted by the wizard" }).then(() => setConfirmAbort(false))
-            }
-          >
-            Confirm: abort this trial
-          </Button>
+      <fieldset disabled={ended} aria-describedby={ended ? offId : undefined} className="min-w-0 space-y-4">
+        <legend className="sr-only">Wizard controls</legend>
+        {question ? (
+          <div className="rounded-lg border-2 border-brand-500 bg-brand-50 p-4">
+            <p className="font-medium">{String(question.parameters.prompt ?? "Record the participant's answer")}</p>
+            <div className="mt-3 flex flex-wrap gap-2">
+              {options.map((o, i) => (
+                <Button
+                  key={o.id}
+                  size="lg"
+                  onClick={() => void send({ kind: "answer", actionId: question.id, optionId: o.id })}
+                >
+                  <kbd className="rounded bg-white/20 px-1.5 text-xs">{i + 1}</kbd> {o.label}
+                </Button>
+              ))}
+            </div>
+          </div>
         ) : (
-          <Button variant="ghost" disabled={ended} onClick={() => setConfirmAbort(true)}>
-            Abort trial…
+          <Button
+            size="lg"
+            className="h-16 w-full text-lg"
+            disabled={ended || state.status === "paused"}
+            onClick={next}
+          >
+            <kbd className="rounded bg-white/20 px-1.5 text-xs">N</kbd>{" "}
+            {ended ? "Trial ended" : nextLabel(protocol, state, names)}
           </Button>
         )}
-      </div>
-      <form
-        className="flex gap-2"
-        onSubmit={(e) => {
-          e.preventDefault();
-          void say();
-        }}
-      >
-        <Input
-          ref={speech}
-          aria-label="Unscripted speech"
-          placeholder="Say something off script (U)…"
-          value={text}
-          onChange={(e) => setText(e.target.value)}
-          disabled={!running}
-        />
-        <Button type="submit" variant="secondary" disabled={!running}>
-          Say
-        </Button>
-      </form>
-      <UnscriptedAction send={send} disabled={!running} />
-      <form
-        className="flex gap-2"
-        onSubmit={(e) => {
-          e.preventDefault();
-          void addNote();
-        }}
-      >
-        <Input
-          aria-label="Wizard note"
-          placeholder="Note for the log (not said by the robot)…"
-          value={note}
-          onChange={(e) => setNote(e.target.value)}
-          disabled={ended}
-        />
-        <Button type="submit" variant="ghost" disabled={ended}>
-          Add note
-        </Button>
-      </form>
+        <div className="flex flex-wrap gap-2">
+          <Button
+            variant="secondary"
+            disabled={!running || unit.length === 0}
+            onClick={() => void send({ kind: "skip" })}
+          >
+            Skip (S)
+          </Button>
+          <Button
+            variant="secondary"
+            disabled={ended || state.status === "scheduled"}
+            onClick={() => void send({ kind: state.status === "paused" ? "resume" : "pause" })}
+          >
+            {state.status === "paused" ? "Resume (P)" : "Pause (P)"}
+          </Button>
+          <Button
+            variant="secondary"
+            disabled={ended || state.status === "scheduled"}
+            onClick={() => void send({ kind: "complete" })}
+          >
+            Complete trial
+          </Button>
+          {/* Disarmed once the trial has ended: no longer red, and Esc does nothing. */}
+          <Button
+            variant={ended ? "secondary" : "danger"}
+            disabled={ended || state.status === "scheduled"}
+            onClick={() => void send({ kind: "emergency_stop" })}
+          >
+            Emergency stop (Esc)
+          </Button>
+          {confirmAbort && !ended ? (
+            <Button
+              variant="danger"
+              onClick={() =>
+                void send({ kind: "abort", reason: "Aborted by the wizard" }).then(() => setConfirmAbort(false))
+              }
+            >
+              Confirm: abort this trial
+            </Button>
+          ) : (
+            <Button variant="ghost" disabled={ended} onClick={() => setConfirmAbort(true)}>
+              Abort trial…
+            </Button>
+          )}
+        </div>
+        <form
+          className="flex gap-2"
+          onSubmit={(e) => {
+            e.preventDefault();
+            void say();
+          }}
+        >
+          <Input
+            ref={speech}
+            aria-label="Unscripted speech"
+            placeholder="Say something off script (U)…"
+            value={text}
+            onChange={(e) => setText(e.target.value)}
+            disabled={!running}
+          />
+          <Button type="submit" variant="secondary" disabled={!running}>
+            Say
+          </Button>
+        </form>
+        <UnscriptedAction send={send} disabled={!running} />
+        <form
+          className="flex gap-2"
+          onSubmit={(e) => {
+            e.preventDefault();
+            void addNote();
+          }}
+        >
+          <Input
+            aria-label="Wizard note"
+            placeholder="Note for the log (not said by the robot)…"
+            value={note}
+            onChange={(e) => setNote(e.target.value)}
+            disabled={ended}
+          />
+          <Button type="submit" variant="ghost" disabled={ended}>
+            Add note
+          </Button>
+        </form>
+      </fieldset>
     </div>
   );
 }

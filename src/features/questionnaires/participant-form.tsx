@@ -115,7 +115,7 @@ function ItemField({
 }) {
   const label = (
     <legend className="mb-3 font-medium">
-      <span className="mr-1 text-slate-400">{number}.</span>
+      <span className="mr-1 text-slate-500">{number}.</span>
       {item.kind === "consent" ? "Consent" : item.text}
       {item.required && (
         <span className="ml-0.5 text-red-600" aria-hidden>

@@ -49,14 +49,9 @@ export function TrialQuestionnaires({
               <ExternalLink className="h-3.5 w-3.5 shrink-0" aria-hidden /> {links[q.id]}
             </a>
           ) : (
-            <Button
-              size="sm"
-              variant="secondary"
-              disabled={createLink.isPending}
-              onClick={() => void open(q.id)}
-              aria-label={`Open ${q.name} for the participant`}
-            >
-              Open for the participant
+            <Button size="sm" variant="secondary" disabled={createLink.isPending} onClick={() => void open(q.id)}>
+              {/* The questionnaire's name is heard, not shown: the row already shows it. */}
+              Open<span className="sr-only"> {q.name}</span> for the participant
             </Button>
           )}
         </div>

@@ -4,6 +4,7 @@
 // the browser's speech synthesis when asked.
 import { useEffect, useRef, useState } from "react";
 import * as ROSLIB from "roslib";
+import { readableValue } from "@/core/designer/action-name";
 import { ROBOT_STATE_TOPIC, type RobotState } from "@/core/robots/robot-state";
 import { Button } from "@/ui/button";
 import { Badge, Card } from "@/ui/surface";
@@ -63,13 +64,17 @@ export function RobotView({ url }: { url: string }) {
           {state?.speaking ? (
             `“${state.speaking}”`
           ) : (
-            <span className="text-slate-400">{state?.lastSaid ? `Last said: “${state.lastSaid}”` : "…"}</span>
+            <span className="text-slate-500">{state?.lastSaid ? `Last said: “${state.lastSaid}”` : "…"}</span>
           )}
         </div>
         <RobotFigure state={state} />
         <dl className="grid grid-cols-2 gap-x-8 gap-y-1 text-sm sm:grid-cols-4">
-          <Fact label="Gesture" value={state?.gesture ?? state?.animation ?? "none"} />
-          <Fact label="Posture" value={state?.posture ?? "—"} />
+          {/* An animation arrives as the robot's path to it (animations/Stand/Gestures/Hey_1): shown by its name. */}
+          <Fact label="Gesture" value={readable(state?.gesture ?? state?.animation) ?? "none"} />
+          <Fact
+            label="Posture"
+            value={state ? `${readable(state.posture) ?? "—"}${state.awake ? "" : " (motors off)"}` : "—"}
+          />
           <Fact
             label="Moving"
             value={
@@ -82,11 +87,14 @@ export function RobotView({ url }: { url: string }) {
         </dl>
       </Card>
       <p className="text-sm text-slate-500">
-        This page shows the built-in simulated robot that `npm start` runs when no real robot is configured.
+        This page shows the built-in simulated robot that <code className="font-mono">npm start</code> runs when no real
+        robot is configured.
       </p>
     </div>
   );
 }
+
+const readable = (value: string | null | undefined) => (value ? readableValue(value) : undefined);
 
 function Fact({ label, value }: { label: string; value: string }) {
   return (
@@ -103,6 +111,8 @@ function Fact({ label, value }: { label: string; value: string }) {
 function RobotFigure({ state }: { state: RobotState | null }) {
   const tilt = ((state?.headPitch ?? 0) * 180) / Math.PI;
   const waving = Boolean(state?.gesture ?? state?.animation);
+  // Seated, crouched or at rest, the legs fold (NAOqi's Sit, SitRelax, Crouch; rest is crouched).
+  const legs = /^(sit|crouch|rest)/.test(state?.posture ?? "") ? 24 : 44;
   return (
     <svg viewBox="0 0 120 160" className="h-56" aria-hidden>
       <g transform={`rotate(${tilt} 60 40)`}>
@@ -122,24 +132,8 @@ function RobotFigure({ state }: { state: RobotState | null }) {
         transform={waving ? "rotate(-30 22 50)" : undefined}
       />
       <rect x="92" y="58" width="12" height="40" rx="6" fill="#f8fafc" stroke="#475569" />
-      <rect
-        x="42"
-        y="108"
-        width="14"
-        height={state?.posture === "sit" ? 24 : 44}
-        rx="6"
-        fill="#f8fafc"
-        stroke="#475569"
-      />
-      <rect
-        x="64"
-        y="108"
-        width="14"
-        height={state?.posture === "sit" ? 24 : 44}
-        rx="6"
-        fill="#f8fafc"
-        stroke="#475569"
-      />
+      <rect x="42" y="108" width="14" height={legs} rx="6" fill="#f8fafc" stroke="#475569" />
+      <rect x="64" y="108" width="14" height={legs} rx="6" fill="#f8fafc" stroke="#475569" />
     </svg>
   );
 }

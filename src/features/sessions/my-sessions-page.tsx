@@ -39,12 +39,9 @@ export function MySessionsPage() {
                 </div>
               </div>
               {s.trialStatus && <Badge tone={STATUS_TONE[s.trialStatus]}>{s.trialStatus.replace("_", " ")}</Badge>}
-              <Button
-                aria-label={`Start the session of ${s.participantCode}`}
-                disabled={start.isPending}
-                onClick={() => start.mutate({ sessionId: s.id })}
-              >
+              <Button disabled={start.isPending} onClick={() => start.mutate({ sessionId: s.id })}>
                 <Play className="h-4 w-4" aria-hidden /> {s.trialId ? "Continue" : "Start"}
+                <span className="sr-only"> the session of {s.participantCode}</span>
               </Button>
             </Card>
           </li>

@@ -104,7 +104,7 @@ export function ConditionsTab({
                     <option value="">Choose…</option>
                     {experiments.data?.map((x) => (
                       <option key={x.id} value={x.id}>
-                        {x.name} ({x.robotPluginId})
+                        {x.name} ({x.robotId})
                       </option>
                     ))}
                   </NativeSelect>
@@ -135,7 +135,7 @@ export function ConditionsTab({
             <Td className="font-medium">{c.name}</Td>
             <Td>{c.experimentName}</Td>
             <Td>
-              <code className="text-xs">{c.robotPluginId}</code>
+              <code className="text-xs">{c.robotId}</code>
             </Td>
             <Td>{c.participantCount}</Td>
           </tr>

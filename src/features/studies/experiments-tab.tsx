@@ -55,7 +55,7 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
               <div className="text-xs text-slate-500">{e.description}</div>
             </Td>
             <Td>
-              <code className="text-xs">{e.robotPluginId}</code>
+              <code className="text-xs">{e.robotId}</code>
             </Td>
             <Td>{e.stepCount}</Td>
             <Td>
@@ -115,7 +115,7 @@ function NewExperimentDialog({ studyId, onCreated }: { studyId: string; onCreate
   );
   const submit = (e: FormEvent) => {
     e.preventDefault();
-    create.mutate({ studyId, name, description, robotPluginId: robot });
+    create.mutate({ studyId, name, description, robotId: robot });
   };
   return (
     <Dialog title="New experiment" open={open} onOpenChange={setOpen} trigger={<Button>New experiment</Button>}>

@@ -9,13 +9,14 @@ import { Field, Input, NativeSelect, Textarea } from "@/ui/field";
 import { fieldError, Problem } from "@/ui/problem";
 import { Card } from "@/ui/surface";
 import type { StudySettings } from "@/core/studies/settings";
+import { STUDY_STATUS_HINT, STUDY_STATUSES, type StudyStatus } from "@/core/studies/status";
 import { DemographicsEditor } from "./demographics-editor";
 
 type Study = {
   id: string;
   title: string;
   description: string;
-  status: "draft" | "active" | "completed" | "archived";
+  status: StudyStatus;
   settings: StudySettings;
   myRole: StudyRole;
 };
@@ -63,10 +64,10 @@ export function OverviewTab({ study }: { study: Study }) {
         <Field label="Description">
           {(p) => <Textarea {...p} value={description} onChange={(e) => setDescription(e.target.value)} />}
         </Field>
-        <Field label="Status" hint="Active studies run trials; completed ones keep their data read-only.">
+        <Field label="Status" hint={STUDY_STATUS_HINT}>
           {(p) => (
-            <NativeSelect {...p} value={status} onChange={(e) => setStatus(e.target.value as Study["status"])}>
-              {["draft", "active", "completed", "archived"].map((s) => (
+            <NativeSelect {...p} value={status} onChange={(e) => setStatus(e.target.value as StudyStatus)}>
+              {STUDY_STATUSES.map((s) => (
                 <option key={s} value={s}>
                   {s}
                 </option>

@@ -110,7 +110,7 @@ export function ParticipantsTab({
             )}
             <Td>
               {blinded ? (
-                <span className="text-slate-400">hidden</span>
+                <span className="text-slate-500">hidden</span>
               ) : p.conditionId ? (
                 conditionName(p.conditionId)
               ) : manage && conditions.data?.length && strategy === "fixed" ? (

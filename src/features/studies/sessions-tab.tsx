@@ -46,7 +46,7 @@ export function SessionsTab({ studyId, role }: { studyId: string; role: StudyRol
           <tr key={s.id}>
             <Td>{new Date(s.plannedAt).toLocaleString()}</Td>
             <Td className="font-mono">{s.participantCode}</Td>
-            <Td>{s.conditionName ?? <span className="text-slate-400">hidden</span>}</Td>
+            <Td>{s.conditionName ?? <span className="text-slate-500">hidden</span>}</Td>
             <Td>{s.wizardName ?? "—"}</Td>
             <Td>
               {s.trialStatus ? (
@@ -59,7 +59,7 @@ export function SessionsTab({ studyId, role }: { studyId: string; role: StudyRol
               {run && s.trialStatus !== "completed" && s.trialStatus !== "aborted" && (
                 <Button
                   size="sm"
-                  aria-label={`Start the session of ${s.participantCode}`}
+                  aria-label={`${s.trialId ? "Continue" : "Start"} the session of ${s.participantCode}`}
                   disabled={start.isPending}
                   onClick={() => start.mutate({ sessionId: s.id })}
                 >

@@ -43,6 +43,7 @@ export function StudyPage({ studyId }: { studyId: string }) {
         </div>
       </div>
       <Tabs
+        label="Study sections"
         value={tab}
         onValueChange={setTab}
         tabs={[
@@ -72,7 +73,11 @@ export function StudyPage({ studyId }: { studyId: string }) {
           ...(studyRoleMay(role, "data.read")
             ? [{ id: "results", label: "Results", content: <ResultsTab studyId={studyId} /> }]
             : []),
-          { id: "trials", label: "Trials", content: <TrialsTab studyId={studyId} role={role} blinded={blinded} /> },
+          {
+            id: "trials",
+            label: "Trials",
+            content: <TrialsTab studyId={studyId} role={role} blinded={blinded} studyStatus={s.status} />,
+          },
         ]}
       />
     </div>

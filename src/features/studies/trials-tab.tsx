@@ -3,6 +3,7 @@ import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
 import Link from "next/link";
 import { useState, type FormEvent } from "react";
 import { studyRoleMay, type StudyRole } from "@/core/access/policy";
+import { type StudyStatus, trialRefusal } from "@/core/studies/status";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { DownloadLink } from "@/ui/download-link";
@@ -13,7 +14,17 @@ import { ListView } from "@/ui/list-view";
 import { Td, Th } from "@/ui/table";
 import { WizardChoice, wizardIdOf, type WizardChoiceValue } from "./wizard-choice";
 
-export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: StudyRole; blinded: boolean }) {
+export function TrialsTab({
+  studyId,
+  role,
+  blinded,
+  studyStatus,
+}: {
+  studyId: string;
+  role: StudyRole;
+  blinded: boolean;
+  studyStatus: StudyStatus;
+}) {
   const trpc = useTRPC();
   const queryClient = useQueryClient();
   const trials = useQuery(trpc.trials.list.queryOptions({ studyId }));
@@ -21,7 +32,9 @@ export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: S
   return (
     <div className="space-y-6">
       {/* A blinded wizard starts trials from their sessions: choosing an experiment would reveal the condition. */}
-      {studyRoleMay(role, "trial.create") && !blinded && <NewTrial studyId={studyId} onCreated={refresh} />}
+      {studyRoleMay(role, "trial.create") && !blinded && (
+        <NewTrial studyId={studyId} refusal={trialRefusal(studyStatus)} onCreated={refresh} />
+      )}
       {studyRoleMay(role, "data.read") && (
         <DownloadLink href={`/api/studies/${studyId}/export`}>
           Download the whole study (zip: design, every trial's record, events and ELAN file, questionnaire answers)
@@ -92,13 +105,23 @@ export function TrialsTab({ studyId, role, blinded }: { studyId: string; role: S
 }
 
 /** Trials run only published versions, for a participant of this study. */
-function NewTrial({ studyId, onCreated }: { studyId: string; onCreated: () => void }) {
+function NewTrial({
+  studyId,
+  refusal,
+  onCreated,
+}: {
+  studyId: string;
+  /** Why this study runs no trials now (its status), shown instead of letting the form be sent. */
+  refusal: string | null;
+  onCreated: () => void;
+}) {
   const trpc = useTRPC();
   const experiments = useQuery(trpc.experiments.list.queryOptions({ studyId }));
   const participants = useQuery(trpc.participants.list.queryOptions({ studyId }));
   const [experimentId, setExperimentId] = useState("");
   const [participantId, setParticipantId] = useState("");
-  const [wizard, setWizard] = useState<WizardChoiceValue>("me");
+  // Unassigned by default: whoever starts the trial is recorded as its wizard, so it is credited to who ran it.
+  const [wizard, setWizard] = useState<WizardChoiceValue>("any");
   const versions = useQuery({ ...trpc.versions.list.queryOptions({ experimentId }), enabled: Boolean(experimentId) });
   const create = useMutation(trpc.trials.create.mutationOptions({ onSuccess: onCreated }));
   const latest = versions.data?.[0];
@@ -152,10 +175,11 @@ function NewTrial({ studyId, onCreated }: { studyId: string; onCreated: () => vo
         <div className="w-64">
           <WizardChoice studyId={studyId} value={wizard} onChange={setWizard} />
         </div>
-        <Button type="submit" disabled={!latest || !participantId || create.isPending} className="mb-5">
+        <Button type="submit" disabled={!latest || !participantId || create.isPending || !!refusal} className="mb-5">
           Create trial
         </Button>
       </form>
+      {refusal && <p className="text-sm text-amber-800">{refusal}</p>}
       <Problem error={create.error} />
     </Card>
   );

@@ -1,6 +1,7 @@
 "use client";
-// Who runs a new trial: the researcher themself, any of the study's wizards
-// (the first to start it claims it), or one named member who may run trials.
+// Who runs a new trial: whoever starts it first (the default: they are then
+// recorded as its wizard), the researcher themself, or one named member who
+// may run trials.
 import { useQuery } from "@tanstack/react-query";
 import { studyRoleMay } from "@/core/access/policy";
 import { useTRPC } from "@/lib/trpc";
@@ -24,16 +25,16 @@ export function WizardChoice({
   const trpc = useTRPC();
   const me = useQuery(trpc.account.me.queryOptions());
   const members = useQuery(trpc.members.list.queryOptions({ studyId }));
-  // Wizards first: they run most trials. "Me" is already the first choice.
+  // Wizards first: they run most trials. "Me" is already a choice of its own.
   const others = (members.data ?? [])
     .filter((m) => studyRoleMay(m.role, "trial.run") && m.userId !== me.data?.id)
     .sort((a, b) => Number(b.role === "wizard") - Number(a.role === "wizard"));
   return (
-    <Field label="Wizard" hint={value === "any" ? "Any wizard of the study may start it." : undefined}>
+    <Field label="Wizard" hint={value === "any" ? "Whoever starts it is recorded as its wizard." : undefined}>
       {(p) => (
         <NativeSelect {...p} value={value} onChange={(e) => onChange(e.target.value)}>
-          <option value="me">Me</option>
           <option value="any">Any wizard (the first to start it)</option>
+          <option value="me">Me</option>
           {others.map((m) => (
             <option key={m.userId} value={m.userId}>
               {m.name} ({m.role})

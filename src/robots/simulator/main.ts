@@ -1,6 +1,8 @@
 // Runs the simulated robot on its own: `node --import tsx src/robots/simulator/main.ts`
 // or from the launcher. SIM_PORT (default 9090), SIM_HOST (default 127.0.0.1)
-// and SIM_PLUGIN (default plugins/nao6-ros2.json) choose where and as what.
+// and SIM_PLUGIN (default plugins/nao6-ros2.json) choose where and as what;
+// SIM_SSH_PORT with SIM_SSH_PASSWORD (and SIM_SSH_USER, default nao) also
+// opens its SSH side for the plugin's NAOqi commands.
 import { readFile } from "node:fs/promises";
 import { loadPlugin, formatPluginError } from "../../core/plugins";
 import { simulatedRobot, startSimulator, type Simulator } from "./index";
@@ -13,12 +15,16 @@ export async function startDefaultSimulator(env: Record<string, string | undefin
     host: env.SIM_HOST ?? "127.0.0.1",
     port: Number(env.SIM_PORT ?? 9090),
     nodes: simulatedRobot(loaded.value),
+    ssh:
+      env.SIM_SSH_PORT && env.SIM_SSH_PASSWORD
+        ? { port: Number(env.SIM_SSH_PORT), username: env.SIM_SSH_USER ?? "nao", password: env.SIM_SSH_PASSWORD }
+        : undefined,
   });
 }
 
 if (import.meta.url === `file://${process.argv[1]}`) {
   const sim = await startDefaultSimulator();
-  console.log(`simulated robot: rosbridge on ${sim.url}`);
+  console.log(`simulated robot: rosbridge on ${sim.url}${sim.ssh ? `, SSH on port ${sim.ssh.port}` : ""}`);
   const stop = () => void sim.close().then(() => process.exit(0));
   process.on("SIGINT", stop).on("SIGTERM", stop);
 }

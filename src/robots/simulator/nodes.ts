@@ -118,7 +118,10 @@ export function pluginTopics(plugin: Plugin): RobotNode {
     const stops = [
       graph.listen("/animation", (m) => void (state.animation = String(m.data))),
       graph.listen("/gesture", (m) => void (state.gesture = String(m.data))),
-      graph.listen("/posture", (m) => void (state.posture = String(m.data))),
+      graph.listen("/posture", (m) => {
+        state.posture = String(m.data);
+        state.awake = state.posture !== "rest";
+      }),
       graph.listen("/cmd_vel", (m) => {
         const { linear, angular } = m as { linear: { x: number }; angular: { z: number } };
         state.velocity = { linear: linear.x, angular: angular.z };
@@ -141,7 +144,7 @@ export function testServices({ slowMs = 3000 } = {}): RobotNode {
       message: `led=${r.data ? "True" : "False"}`,
     }));
     graph.offer("/wake_up", "std_srvs/srv/Trigger", () => {
-      state.posture = "stand";
+      Object.assign(state, { posture: "stand", awake: true });
       return { success: true, message: "awake" };
     });
     graph.offer(

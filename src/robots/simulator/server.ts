@@ -7,12 +7,15 @@ import { Connection } from "./connection";
 import { RosGraph } from "./graph";
 import { initialState, type RobotState } from "../../core/robots/robot-state";
 import type { RobotNode } from "./nodes";
+import { startSimulatedSsh, type SimulatedSsh, type SimulatedSshOptions } from "./ssh";
 
 export interface SimulatorOptions {
   host?: string;
   /** 0 picks a free port. */
   port?: number;
   nodes: RobotNode[];
+  /** Also answer the plugin's NAOqi commands over SSH, on the same robot state. */
+  ssh?: Omit<SimulatedSshOptions, "host">;
 }
 
 export interface Received {
@@ -27,6 +30,8 @@ export interface Simulator {
   port: number;
   graph: RosGraph;
   state: RobotState;
+  /** The SSH side, when asked for. */
+  ssh: SimulatedSsh | null;
   /** Every message clients sent, parsed, in arrival order. */
   received: Received[];
   /** What the real server would only have written to its log. */
@@ -53,11 +58,15 @@ export async function startSimulator(options: SimulatorOptions): Promise<Simulat
   });
   await new Promise<void>((resolve, reject) => server.once("listening", resolve).once("error", reject));
   const port = (server.address() as { port: number }).port;
+  const ssh = options.ssh
+    ? await startSimulatedSsh({ host: options.host ?? "127.0.0.1", ...options.ssh }, state)
+    : null;
   const sim: Simulator = {
     url: `ws://${options.host ?? "127.0.0.1"}:${port}`,
     port,
     graph,
     state,
+    ssh,
     received: [],
     log: [],
     faults: {
@@ -68,7 +77,7 @@ export async function startSimulator(options: SimulatorOptions): Promise<Simulat
     close: async () => {
       stops.forEach((stop) => stop());
       sockets.forEach((s) => s.terminate());
-      await new Promise<void>((resolve) => server.close(() => resolve()));
+      await Promise.all([new Promise<void>((resolve) => server.close(() => resolve())), ssh?.close()]);
     },
   };
   server.on("connection", (socket) => {

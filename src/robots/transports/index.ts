@@ -1,13 +1,17 @@
 // Transports are chosen here and nowhere else, from the plugin's `transport`.
-// "simulated" is rosbridge to the built-in simulated robot.
-import type { Plugin } from "../../core/plugins";
+// "simulated" is rosbridge to the built-in simulated robot. Whether a way to
+// the robot is open is decided by the pure `unreachable`, the same function
+// the designer's "can run" check uses.
+import { isSshCommand, unreachable, type Plugin } from "../../core/plugins";
 import { HttpTransport } from "./http";
+import { channelsOf } from "./settings";
 import { RosbridgeTransport } from "./rosbridge";
 import { RoutedTransport } from "./routed";
 import { SshTransport, type SshOptions } from "./ssh";
 import type { Transport } from "./transport";
 
 export type { DispatchOutcome, Health, Transport } from "./transport";
+export { channelsOf, transportConfig } from "./settings";
 
 export interface TransportConfig {
   /** The robot's rosbridge, e.g. ws://nao.local:9090. */
@@ -23,22 +27,16 @@ export interface TransportConfig {
 export type TransportChoice = { ok: true; transport: Transport } | { ok: false; reason: string };
 
 export function transportFor(plugin: Plugin, config: TransportConfig): TransportChoice {
+  const channels = channelsOf(config);
+  const closed = unreachable(plugin, undefined, channels);
+  if (closed) return { ok: false, reason: `${plugin.name} cannot be reached: ${closed}` };
   const kind = plugin.transport ?? "rosbridge";
-  if (kind === "simulated") {
-    if (!config.simulatorUrl) return { ok: false, reason: "the simulated robot is not running" };
-    return { ok: true, transport: new RosbridgeTransport({ url: config.simulatorUrl }) };
-  }
-  if (kind === "rosbridge") {
-    if (!config.rosbridgeUrl) return { ok: false, reason: `no rosbridge address configured for ${plugin.robotId}` };
-    const rosbridge = new RosbridgeTransport({ url: config.rosbridgeUrl });
-    return { ok: true, transport: new RoutedTransport(rosbridge, config.ssh ? new SshTransport(config.ssh) : null) };
-  }
-  if (kind === "ssh") {
-    if (!config.ssh)
-      return { ok: false, reason: `no SSH address configured for ${plugin.robotId} (HRI_ROBOT_SSH_HOST)` };
-    return { ok: true, transport: new SshTransport(config.ssh) };
-  }
-  const base = config.httpBaseUrl ?? (typeof plugin.httpBaseUrl === "string" ? plugin.httpBaseUrl : undefined);
-  if (!base) return { ok: false, reason: `no REST address configured for ${plugin.robotId}` };
-  return { ok: true, transport: new HttpTransport({ baseUrl: base }) };
+  // No SSH connection to hold open for a robot that has no SSH commands.
+  const ssh = config.ssh && (kind === "ssh" || plugin.actions.some(isSshCommand)) ? new SshTransport(config.ssh) : null;
+  if (kind === "ssh") return { ok: true, transport: ssh! };
+  const primary =
+    kind === "http"
+      ? new HttpTransport({ baseUrl: config.httpBaseUrl ?? String(plugin.httpBaseUrl) })
+      : new RosbridgeTransport({ url: (kind === "simulated" ? config.simulatorUrl : config.rosbridgeUrl)! });
+  return { ok: true, transport: new RoutedTransport(plugin, channels, primary, ssh) };
 }

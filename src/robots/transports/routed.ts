@@ -1,31 +1,32 @@
-// One robot, two channels: rosbridge for topics and services, SSH for the
-// plugin's NAOqi commands. The trial runtime sees one transport.
-import type { PluginAction } from "../../core/plugins";
+// One robot, two channels: its own transport (rosbridge or HTTP) and SSH for
+// the plugin's NAOqi commands. The trial runtime sees one transport. An action
+// whose way this server has no address for fails at once, with the reason the
+// designer gave for calling it not runnable.
+import { isSshCommand, unreachable, type Channels, type Plugin, type PluginAction } from "../../core/plugins";
 import type { DispatchOutcome, Health, Transport } from "./transport";
-
-const overSsh = (action: PluginAction) =>
-  !!action.ros2 && "payloadMapping" in action.ros2 && action.ros2.payloadMapping.type === "ssh";
 
 export class RoutedTransport implements Transport {
   constructor(
+    private readonly plugin: Plugin,
+    private readonly channels: Channels,
     private readonly primary: Transport,
     private readonly ssh: Transport | null,
   ) {}
 
   async connect() {
-    // SSH may come later (the robot's password set after start); rosbridge decides.
+    // SSH may come later (the robot's password set after start); the robot's own transport decides.
     void this.ssh?.connect().catch(() => undefined);
     await this.primary.connect();
   }
 
   dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome> {
-    if (!overSsh(action)) return this.primary.dispatch(action, parameters);
-    if (!this.ssh)
+    const closed = unreachable(this.plugin, action, this.channels);
+    if (closed)
       return Promise.resolve({
         status: "failed",
-        reason: `"${action.name}" needs SSH to the robot: set HRI_ROBOT_SSH_HOST (see docs/robot-setup.md)`,
+        reason: `"${action.name}" cannot run on ${this.plugin.name}: ${closed}`,
       });
-    return this.ssh.dispatch(action, parameters);
+    return (isSshCommand(action) ? this.ssh! : this.primary).dispatch(action, parameters);
   }
 
   subscribe(...args: Parameters<Transport["subscribe"]>) {

@@ -10,6 +10,7 @@ import {
   type SystemOperation,
   type SystemRole,
 } from "@/core/access/policy";
+import type { Channels } from "@/core/plugins";
 import type { Blinding } from "@/core/studies/blinding";
 import type { Database } from "@/store/client";
 import { assertOneStudy } from "../access/membership";
@@ -35,6 +36,8 @@ export interface Context {
   runtimeUrl: string;
   /** Where recordings are kept, and the largest one accepted. */
   media: { storage: MediaStorage; maxBytes: number };
+  /** The ways to the robot this server's settings open: what the designer may call runnable. */
+  robotChannels: Channels;
 }
 
 export interface Meta {

@@ -78,6 +78,7 @@ export async function saveDesign(db: Database, input: DesignInput, userId: strin
         position,
         name: s.name,
         description: s.description,
+        after: s.after,
       };
     });
     const actionRows = input.steps.flatMap((s, i) =>

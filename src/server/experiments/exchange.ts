@@ -33,7 +33,7 @@ export async function importFile(db: Database, studyId: string, text: string, us
         studyId,
         name: draft.name,
         description: draft.description,
-        robotPluginId: draft.robotPluginId,
+        robotId: draft.robotId,
         updatedBy: userId,
       })
       .returning();

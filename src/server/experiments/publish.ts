@@ -22,7 +22,7 @@ export async function publish(db: Database, experimentId: string, userId: string
       });
     }
     // The exact plugin document the design was published against: its trials run with it, whatever is installed later.
-    const known = await knownPlugin(tx, design.robotPluginId);
+    const known = await knownPlugin(tx, design.robotId);
     const plugin = known?.plugin;
     const problems = validateDesign(draftFrom(design), plugin ?? null).filter((i) => i.severity === "error");
     if (problems.length) {
@@ -59,7 +59,7 @@ export async function publish(db: Database, experimentId: string, userId: string
         version: next,
         snapshot,
         hash: hashCanonical(snapshot),
-        pluginId: design.robotPluginId,
+        robotId: design.robotId,
         pluginVersion: plugin?.version ?? null,
         pluginHash: known?.hash ?? null,
         publishedBy: userId,

@@ -20,7 +20,7 @@ export const STORYTELLER = {
   name: "Interactive Storyteller",
   description:
     "Does the way a robot tells a story change what a listener remembers? The robot tells a short story about Kai on Mars, asks a recall question, and responds to the answer.",
-  robotPluginId: "nao6-ros2",
+  robotId: "nao6-ros2",
 };
 
 // Branch targets name steps by key; the seed swaps keys for the stored step ids.

@@ -108,7 +108,7 @@ export async function studyArchive(db: Database, studyId: string) {
           withdrawnParticipants: people.length - kept.length,
           experiments: experimentRows.map((e) => ({
             name: e.name,
-            robot: e.robotPluginId,
+            robot: e.robotId,
             versions: versions
               .filter((v) => v.experimentId === e.id)
               .map((v) => ({

@@ -3,7 +3,7 @@
 import { and, asc, eq, inArray, ne } from "drizzle-orm";
 import { fidelityReport } from "@/core/analysis/fidelity";
 import { studySummary } from "@/core/analysis/study-summary";
-import type { TrialEvent, TrialProtocol } from "@/core/trial";
+import type { TrialEvent } from "@/core/trial";
 import type { Database } from "@/store/client";
 import { conditions, experimentVersions, participants, trials } from "@/store/schema";
 import { eventsSince } from "@/store/event-store";
@@ -34,7 +34,7 @@ export async function studyFigures(db: Database, studyId: string) {
       trialId: r.id,
       participantCode: r.code,
       condition: r.condition,
-      report: fidelityReport(r.protocol as TrialProtocol, (await eventsSince(db, r.id)) as unknown as TrialEvent[]),
+      report: fidelityReport(r.protocol, (await eventsSince(db, r.id)) as unknown as TrialEvent[]),
     })),
   );
   return studySummary(figures);

@@ -5,15 +5,23 @@
 import { asc, eq } from "drizzle-orm";
 import { elanDocument } from "@/core/analysis/elan";
 import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
+import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent } from "@/core/trial";
-import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import type { Database } from "@/store/client";
 import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/store/schema";
 import { recordingFileName } from "../media/recordings";
 import { submitted } from "../questionnaires/responses";
 import { eventsSince } from "@/store/event-store";
+import { trialActionNames } from "./action-names";
 
 export type TrialFormat = "csv" | "json" | "eaf";
+
+/** The name of an account, or null (none given, or the account was deleted). */
+async function nameOf(db: Database, userId: string | null) {
+  if (!userId) return null;
+  const [person] = await db.select({ name: user.name }).from(user).where(eq(user.id, userId));
+  return person?.name ?? null;
+}
 
 async function readTrial(db: Database, trialId: string) {
   const [trial] = await db.select().from(trials).where(eq(trials.id, trialId));
@@ -22,6 +30,8 @@ async function readTrial(db: Database, trialId: string) {
     : [];
   return {
     trial: trial!,
+    // Who ran it and who created it: two named fields, as the trial page shows them.
+    people: { wizard: await nameOf(db, trial!.wizardId), createdBy: await nameOf(db, trial!.createdBy) },
     version,
     events: await eventsSince(db, trialId),
     marked: await db
@@ -36,21 +46,25 @@ async function readTrial(db: Database, trialId: string) {
       .where(eq(mediaRecordings.trialId, trialId))
       .orderBy(asc(mediaRecordings.createdAt)),
     questionnaires: await submitted(db, eq(questionnaireLinks.trialId, trialId)),
+    names: await trialActionNames(db, trialId),
   };
 }
 
 function fileOf(
-  { trial, version, events, marked, recordings, questionnaires }: Awaited<ReturnType<typeof readTrial>>,
+  { trial, people, version, events, marked, recordings, questionnaires, names }: Awaited<ReturnType<typeof readTrial>>,
   format: TrialFormat,
 ) {
   const name = `trial-${trial.id}`;
+  const protocol = version?.snapshot ?? trial.rehearsalSnapshot;
+  // Every trial runs a published version or, for a rehearsal, the draft frozen when it began.
+  if (!protocol) throw new Error(`Trial ${trial.id} has neither a version nor a rehearsal snapshot`);
+  const named = trialNames(protocol, events, names);
   if (format === "csv")
     return {
       filename: `${name}-events.csv`,
       contentType: "text/csv; charset=utf-8",
-      body: eventsCsv(trial.id, events),
+      body: eventsCsv(trial.id, events, people, named),
     };
-  const protocol = (version?.snapshot ?? trial.rehearsalSnapshot) as ProtocolSnapshot;
   if (format === "eaf") {
     const video = recordings.find((r) => r.status === "complete" && r.kind === "video");
     const media = video
@@ -66,38 +80,44 @@ function fileOf(
       annotations: marked,
       date: (trial.t0 ?? trial.createdAt).toISOString(),
       media,
+      names,
     });
     return { filename: `${name}.eaf`, contentType: "application/xml; charset=utf-8", body };
   }
-  const record = trialRecordJson({
-    trial: {
-      ...trial,
-      rehearsalSnapshot: undefined,
-      version: version
-        ? {
-            id: version.id,
-            number: version.version,
-            hash: version.hash,
-            pluginId: version.pluginId,
-            pluginVersion: version.pluginVersion,
-          }
-        : null,
+  const record = trialRecordJson(
+    {
+      trial: {
+        ...trial,
+        wizardName: people.wizard,
+        createdByName: people.createdBy,
+        rehearsalSnapshot: undefined,
+        version: version
+          ? {
+              id: version.id,
+              number: version.version,
+              hash: version.hash,
+              robotId: version.robotId,
+              pluginVersion: version.pluginVersion,
+            }
+          : null,
+      },
+      protocol,
+      events,
+      annotations: marked,
+      questionnaires,
+      recordings: recordings.map((m) => ({
+        id: m.id,
+        kind: m.kind,
+        mimeType: m.mimeType,
+        status: m.status,
+        sizeBytes: m.sizeBytes,
+        offsetMs: m.offsetMs,
+        durationMs: m.durationMs,
+        url: `/api/recordings/${m.id}/media`,
+      })),
     },
-    protocol,
-    events,
-    annotations: marked,
-    questionnaires,
-    recordings: recordings.map((m) => ({
-      id: m.id,
-      kind: m.kind,
-      mimeType: m.mimeType,
-      status: m.status,
-      sizeBytes: m.sizeBytes,
-      offsetMs: m.offsetMs,
-      durationMs: m.durationMs,
-      url: `/api/recordings/${m.id}/media`,
-    })),
-  });
+    named,
+  );
   return { filename: `${name}.json`, contentType: "application/json", body: record };
 }
 

@@ -1,7 +1,8 @@
 import { sql } from "drizzle-orm";
 import { index, integer, jsonb, pgTable, text, timestamp, uniqueIndex } from "drizzle-orm/pg-core";
+import type { After } from "../../core/protocol/document";
 import { user } from "./auth";
-import { createdAt, id } from "./columns";
+import { createdAt, id, snapshot } from "./columns";
 import { studies } from "./studies";
 
 export const experiments = pgTable(
@@ -14,7 +15,7 @@ export const experiments = pgTable(
     name: text("name").notNull(),
     description: text("description").notNull().default(""),
     // The robot plugin the experiment targets, by the plugin's robotId.
-    robotPluginId: text("robot_plugin_id").notNull(),
+    robotId: text("robot_id").notNull(),
     // Bumped by every saved design, so a save based on an older draft is refused.
     draftRevision: integer("draft_revision").notNull().default(0),
     createdAt: createdAt(),
@@ -34,6 +35,8 @@ export const steps = pgTable(
     position: integer("position").notNull(),
     name: text("name").notNull(),
     description: text("description").notNull().default(""),
+    // Where the step leads once its actions are done (see core/protocol/document.ts).
+    after: jsonb("after").$type<After>().notNull().default({ to: "next" }),
   },
   (t) => [index("steps_experiment_idx").on(t.experimentId, t.position)],
 );
@@ -64,10 +67,11 @@ export const experimentVersions = pgTable(
       .notNull()
       .references(() => experiments.id, { onDelete: "cascade" }),
     version: integer("version").notNull(),
-    snapshot: jsonb("snapshot").notNull(),
+    snapshot: snapshot("snapshot").notNull(),
     // SHA-256 over the canonical JSON of the snapshot.
     hash: text("hash").notNull(),
-    pluginId: text("plugin_id").notNull(),
+    // The robot it was published for (its plugin's robotId).
+    robotId: text("robot_id").notNull(),
     pluginVersion: text("plugin_version"),
     // The exact plugin document (plugin_documents.hash) this version was published against.
     pluginHash: text("plugin_hash"),

@@ -14,7 +14,7 @@ import {
 } from "drizzle-orm/pg-core";
 import { user } from "./auth";
 import { experimentVersions, experiments } from "./experiments";
-import { createdAt, id } from "./columns";
+import { createdAt, id, snapshot } from "./columns";
 import { participants, studies } from "./studies";
 
 export const trials = pgTable(
@@ -29,7 +29,7 @@ export const trials = pgTable(
       .references(() => experiments.id, { onDelete: "cascade" }),
     // Null only for a rehearsal, which runs the snapshot of the draft below.
     versionId: text("version_id").references(() => experimentVersions.id, { onDelete: "restrict" }),
-    rehearsalSnapshot: jsonb("rehearsal_snapshot"),
+    rehearsalSnapshot: snapshot("rehearsal_snapshot"),
     participantId: text("participant_id").references(() => participants.id, { onDelete: "restrict" }),
     wizardId: text("wizard_id").references(() => user.id, { onDelete: "set null" }),
     status: text("status", { enum: ["scheduled", "in_progress", "paused", "completed", "aborted"] })

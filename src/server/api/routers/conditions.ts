@@ -18,7 +18,7 @@ export const conditionsRouter = router({
         description: conditions.description,
         experimentId: conditions.experimentId,
         experimentName: experiments.name,
-        robotPluginId: experiments.robotPluginId,
+        robotId: experiments.robotId,
         participantCount: sql<number>`(select count(*)::int from ${participants} where ${participants.conditionId} = ${qualified(conditions.id)})`,
       })
       .from(conditions)

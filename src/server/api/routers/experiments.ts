@@ -15,7 +15,7 @@ export const experimentsRouter = router({
         id: experiments.id,
         name: experiments.name,
         description: experiments.description,
-        robotPluginId: experiments.robotPluginId,
+        robotId: experiments.robotId,
         updatedAt: experiments.updatedAt,
         stepCount: sql<number>`(select count(*)::int from ${steps} where ${steps.experimentId} = ${qualified(experiments.id)})`,
         latestVersion: sql<

@@ -17,7 +17,10 @@ const repositoryUrl = z
   .max(2000, "must be at most 2000 characters");
 
 export const pluginsRouter = router({
-  /** The robots an experiment can target, and the plugin files that could not be loaded, with why. */
+  /**
+   * The robots an experiment can target, the plugin files that could not be
+   * loaded (with why), and the ways to a robot this server's settings open.
+   */
   list: guarded("plugin.read").query(async ({ ctx }) => {
     const { plugins, problems } = await pluginCatalog(ctx.db);
     return {
@@ -33,6 +36,7 @@ export const pluginsRouter = router({
         capabilities: p.capabilities ?? [],
       })),
       problems,
+      channels: ctx.robotChannels,
     };
   }),
 

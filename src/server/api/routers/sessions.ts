@@ -18,6 +18,7 @@ import {
   user,
 } from "@/store/schema";
 import { assertMayTakePart } from "../../studies/consent-gate";
+import { assertRunsTrials } from "../../studies/status-gate";
 import { guarded, router, studyProcedure } from "../trpc";
 import { id } from "../validation";
 
@@ -150,6 +151,7 @@ export const sessionsRouter = router({
       throw new TRPCError({ code: "FORBIDDEN", message: "This session is planned for another wizard." });
     }
     if (s.trialId) return { trialId: s.trialId };
+    await assertRunsTrials(ctx.db, s.studyId);
     await assertMayTakePart(ctx.db, s.participantId, s.studyId);
     const [condition] = await ctx.db.select().from(conditions).where(eq(conditions.id, s.conditionId));
     const [version] = await ctx.db
@@ -172,8 +174,9 @@ export const sessionsRouter = router({
             experimentId: condition!.experimentId,
             versionId: version.id,
             participantId: s.participantId,
+            // Run by whoever starts it; created by whoever planned the session.
             wizardId: ctx.user.id,
-            createdBy: ctx.user.id,
+            createdBy: s.createdBy ?? ctx.user.id,
           })
           .returning({ id: trials.id });
         // Only one start wins: a second click reopens the first's trial.

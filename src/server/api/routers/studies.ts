@@ -3,6 +3,7 @@ import { TRPCError } from "@trpc/server";
 import { and, desc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
+import { STUDY_STATUSES } from "@/core/studies/status";
 import { changedSettings, readSettings, studySettingsChangeSchema, type StudySettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { studyArchive } from "../../studies/archive";
@@ -11,8 +12,6 @@ import { experiments, participants, studies, studyMembers, trials } from "@/stor
 import { qualified } from "@/store/qualified";
 import { guarded, router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
-
-const STATUS = ["draft", "active", "completed", "archived"] as const;
 
 /** Which blinds this change lifts: turned off, or (results) ended by completing the study. */
 function liftedBlinds(before: StudySettings, after: StudySettings, statusBefore: string, statusAfter: string) {
@@ -78,7 +77,7 @@ export const studiesRouter = router({
       studyId: id,
       title: text("Title", 200).optional(),
       description: z.string().max(5000).optional(),
-      status: z.enum(STATUS).optional(),
+      status: z.enum(STUDY_STATUSES).optional(),
       settings: studySettingsChangeSchema.optional(),
     }),
   ).mutation(async ({ ctx, input }) => {

@@ -1,6 +1,6 @@
 import { TRPCError } from "@trpc/server";
 import { and, asc, desc, eq, sql } from "drizzle-orm";
-import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
+import { alias } from "drizzle-orm/pg-core";
 import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
 import { blindTrial } from "@/core/studies/blinding";
@@ -19,11 +19,16 @@ import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "@/core/protocol/snapshot";
 import { eventsSince } from "@/store/event-store";
 import { trialFile } from "../../trials/files";
+import { trialActionNames } from "../../trials/action-names";
 import { assertMayTakePart } from "../../studies/consent-gate";
+import { assertRunsTrials } from "../../studies/status-gate";
 import { signSocketToken } from "@/store/socket-token";
 import { qualified } from "@/store/qualified";
 import { router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
+
+/** Who created the trial, kept apart from who runs it (its wizard). */
+const creator = alias(user, "creator");
 
 const columns = {
   id: trials.id,
@@ -40,6 +45,8 @@ const columns = {
   participantCode: participants.code,
   wizardId: trials.wizardId,
   wizardName: user.name,
+  createdBy: trials.createdBy,
+  createdByName: creator.name,
   participantWithdrawn: sql<boolean>`coalesce(${participants.consentStatus} = 'withdrawn', false)`,
 };
 
@@ -75,6 +82,7 @@ export const trialsRouter = router({
     z.object({ versionId: id, participantId: id.nullable().default(null), wizardId: id.nullable().optional() }),
   ).mutation(async ({ ctx, input }) => {
     const { studyId, row: version } = ctx;
+    await assertRunsTrials(ctx.db, studyId);
     if (input.participantId) await assertMayTakePart(ctx.db, input.participantId, studyId);
     const wizardId = input.wizardId === undefined ? ctx.user.id : input.wizardId;
     if (wizardId !== null) {
@@ -133,6 +141,7 @@ export const trialsRouter = router({
       .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
       .leftJoin(participants, eq(participants.id, trials.participantId))
       .leftJoin(user, eq(user.id, trials.wizardId))
+      .leftJoin(creator, eq(creator.id, trials.createdBy))
       .where(eq(trials.studyId, ctx.studyId))
       .orderBy(desc(trials.createdAt));
     // Scores are results: only for those who may read the data, and not under a results blind.
@@ -267,15 +276,19 @@ export const trialsRouter = router({
       .select({
         ...columns,
         studyId: trials.studyId,
-        protocol: sql<ProtocolSnapshot>`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})`,
+        protocol: sql`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})`.mapWith(
+          trials.rehearsalSnapshot,
+        ),
       })
       .from(trials)
       .innerJoin(experiments, eq(experiments.id, trials.experimentId))
       .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
       .leftJoin(participants, eq(participants.id, trials.participantId))
       .leftJoin(user, eq(user.id, trials.wizardId))
+      .leftJoin(creator, eq(creator.id, trials.createdBy))
       .where(eq(trials.id, ctx.row.id));
-    const trial = { ...row!, myRole: ctx.studyRole };
+    // The library's names of the robot's own actions, for actions without a label.
+    const trial = { ...row!, actionNames: await trialActionNames(ctx.db, ctx.row.id), myRole: ctx.studyRole };
     return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
   }),
 });

@@ -1,7 +1,6 @@
 import { TRPCError } from "@trpc/server";
 import { desc, eq } from "drizzle-orm";
 import { diffProtocols } from "@/core/designer/diff";
-import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { z } from "zod";
 import { experimentVersions, user } from "@/store/schema";
 import { publish } from "../../experiments/publish";
@@ -19,7 +18,7 @@ export const versionsRouter = router({
         id: experimentVersions.id,
         version: experimentVersions.version,
         hash: experimentVersions.hash,
-        pluginId: experimentVersions.pluginId,
+        robotId: experimentVersions.robotId,
         pluginVersion: experimentVersions.pluginVersion,
         pluginHash: experimentVersions.pluginHash,
         publishedAt: experimentVersions.publishedAt,
@@ -53,7 +52,7 @@ export const versionsRouter = router({
     const pick = (n: number) => {
       const row = rows.find((r) => r.version === n);
       if (!row) throw new TRPCError({ code: "NOT_FOUND", message: `This experiment has no version ${n}.` });
-      return row.snapshot as ProtocolSnapshot;
+      return row.snapshot;
     };
     return diffProtocols(pick(input.from), pick(input.to));
   }),

@@ -1,0 +1,34 @@
+// The names a trial's events are about, for every place that shows or exports
+// them: a step by its name, an action by its display name (scripted ones from
+// the protocol, unscripted ones from the request that sent them).
+import { actionName, type ActionNames } from "@/core/designer/action-name";
+import type { TrialEvent, TrialProtocol } from "@/core/trial";
+
+export interface TrialNames {
+  step(stepId: string | null | undefined): string | undefined;
+  action(actionId: string | null | undefined): string | undefined;
+  /** The step's and the action's names an event carries ids of. */
+  of(event: object): { stepName?: string; actionName?: string };
+}
+
+type Named = { stepId?: string | null; actionId?: string; actionType?: string; parameters?: Record<string, unknown> };
+
+export function trialNames(protocol: TrialProtocol, events: readonly object[], names?: ActionNames): TrialNames {
+  const steps = new Map(protocol.steps.map((s) => [s.id, s.name]));
+  const actions = new Map(protocol.steps.flatMap((s) => s.actions.map((a) => [a.id, actionName(a, names)])));
+  for (const e of events as Array<TrialEvent & Named>)
+    if (e.type === "action.requested" && e.actionId && !actions.has(e.actionId))
+      actions.set(e.actionId, actionName({ type: e.actionType ?? "", parameters: e.parameters }, names));
+  const step = (id: string | null | undefined) => (id ? steps.get(id) : undefined);
+  const action = (id: string | null | undefined) => (id ? actions.get(id) : undefined);
+  return {
+    step,
+    action,
+    of: (event) => {
+      const { stepId, actionId } = event as Named;
+      const stepName = step(stepId);
+      const actionName = action(actionId);
+      return { ...(stepName !== undefined && { stepName }), ...(actionName !== undefined && { actionName }) };
+    },
+  };
+}

@@ -1,0 +1,97 @@
+// The experiment document, declared once. The designer's draft, the published
+// snapshot, the design procedure's input and the trial engine's protocol are
+// all this shape or a part of it; their types are derived here, never
+// written again. Messages are in the researcher's words: they reach the
+// designer as they are.
+import { z } from "zod";
+
+const LIMIT = 500;
+const plain = (label: string, max: number) =>
+  z
+    .string({ error: `${label} must be text` })
+    .trim()
+    .max(max, `${label} must be at most ${max} characters`);
+const named = (label: string, max: number) => plain(label, max).min(1, `${label} must not be empty`);
+const key = z.string({ error: "is required" }).min(1, "is required").max(100, "is not a valid id");
+
+/**
+ * Where a step leads once its actions are done and no branch took the trial
+ * elsewhere: the next step in the list (the last step's "next" ends the
+ * trial), a named step (answers rejoin this way), or the trial's end.
+ */
+export const afterSchema = z.discriminatedUnion(
+  "to",
+  [
+    z.object({ to: z.literal("next") }),
+    z.object({ to: z.literal("step"), stepId: key }),
+    z.object({ to: z.literal("end") }),
+  ],
+  { error: 'must say where the step leads: "next", a step, or "end"' },
+);
+
+const MAX_PARAMETERS_BYTES = 64 * 1024;
+
+export const actionSchema = z.object({
+  id: key,
+  type: named("Action type", 200),
+  name: plain("Action name", 200).default(""),
+  parameters: z
+    .record(z.string(), z.unknown(), { error: "must be an object of named values" })
+    .refine(
+      (p) => JSON.stringify(p).length <= MAX_PARAMETERS_BYTES,
+      `must be smaller than ${MAX_PARAMETERS_BYTES / 1024} KB`,
+    )
+    .default({}),
+  // Actions that share a group and sit next to each other start together.
+  parallelGroup: z.string().trim().min(1).max(100).nullable().default(null),
+});
+
+export const stepSchema = z.object({
+  id: key,
+  name: named("Step name", 200),
+  description: z.string().max(5000, "must be at most 5000 characters").default(""),
+  /** Absent in documents written before steps said where they lead: the next step. */
+  after: afterSchema.optional(),
+  actions: z.array(actionSchema).max(LIMIT, `A step can hold at most ${LIMIT} actions`),
+});
+
+export const experimentFields = z.object({
+  name: named("Name", 200),
+  description: z.string().max(5000, "must be at most 5000 characters").default(""),
+  /** The robot the experiment is designed for: its plugin's robotId. */
+  robotId: named("Robot", 200),
+});
+
+export const draftSchema = experimentFields.extend({
+  steps: z.array(stepSchema).max(LIMIT, `An experiment can hold at most ${LIMIT} steps`),
+});
+
+export type After = z.infer<typeof afterSchema>;
+export type DesignAction = z.infer<typeof actionSchema>;
+export type DesignStep = z.infer<typeof stepSchema>;
+/** What a researcher edits before publishing. Branch targets are step ids (parameters.targets[optionId]). */
+export type DesignDraft = z.infer<typeof draftSchema>;
+
+export const SNAPSHOT_SCHEMA_VERSION = 2;
+
+/** The published form: the draft under the experiment's id and the schema version, frozen. */
+export interface ProtocolSnapshot {
+  schemaVersion: typeof SNAPSHOT_SCHEMA_VERSION;
+  experiment: Omit<DesignDraft, "steps"> & { id: string };
+  steps: DesignStep[];
+}
+
+/**
+ * What the trial engine needs of a protocol (a published snapshot or a
+ * rehearsal's draft): the same steps and actions, of which only ids, types
+ * and parameters are required.
+ */
+export interface TrialProtocol {
+  steps: Array<
+    Pick<DesignStep, "id" | "name" | "after"> & {
+      actions: Array<
+        Pick<DesignAction, "id" | "type" | "parameters"> & Partial<Pick<DesignAction, "name" | "parallelGroup">>
+      >;
+    }
+  >;
+}

@@ -1,0 +1,57 @@
+import { describe, expect, it } from "vitest";
+import { flowEdges } from "./graph";
+import type { TrialProtocol } from "./types";
+
+const step = (
+  id: string,
+  actions: TrialProtocol["steps"][number]["actions"] = [],
+  after?: TrialProtocol["steps"][number]["after"],
+) => ({
+  id,
+  name: id,
+  actions,
+  ...(after ? { after } : {}),
+});
+const question = {
+  id: "q",
+  type: "record_answer",
+  parameters: {
+    options: [
+      { id: "y", label: "Yes" },
+      { id: "n", label: "No" },
+    ],
+  },
+};
+const branch = (targets: Record<string, string>) => ({ id: "b", type: "branch", parameters: { targets } });
+const brief = (p: TrialProtocol) => flowEdges(p).map((e) => `${e.from}→${e.to}${e.label ? ` ${e.label}` : ""}`);
+
+describe("the flow map's edges", () => {
+  it.each<[string, TrialProtocol, string[]]>([
+    ["a straight protocol", { steps: [step("a"), step("b")] }, ["0→1", "1→end"]],
+    [
+      "answers that rejoin",
+      {
+        steps: [
+          step("ask", [question, branch({ y: "yes", n: "no" })]),
+          step("yes", [], { to: "step", stepId: "bye" }),
+          step("no", [], { to: "step", stepId: "bye" }),
+          step("bye"),
+        ],
+      },
+      ["0→1 Yes", "0→2 No", "1→3", "2→3", "3→end"],
+    ],
+    [
+      "an answer left unrouted keeps the step's own way on",
+      { steps: [step("ask", [question, branch({ y: "yes" })]), step("yes")] },
+      ["0→1 Yes", "0→1", "1→end"],
+    ],
+    [
+      "End trial ends, whatever the step's after says",
+      { steps: [step("a", [{ id: "e", type: "end_trial", parameters: {} }], { to: "step", stepId: "b" }), step("b")] },
+      ["0→end", "1→end"],
+    ],
+    ["an after that ends the trial early", { steps: [step("a", [], { to: "end" }), step("b")] }, ["0→end", "1→end"]],
+  ])("%s", (_name, protocol, expected) => {
+    expect(brief(protocol)).toEqual(expected);
+  });
+});

@@ -1,0 +1,91 @@
+"use client";
+// A rehearsal without a trial: choose an answer for each question and read
+// the exact sequence the robot would perform, walked by the trial engine
+// itself, so what is shown here is what a trial of this draft would do.
+import { useMemo, useState } from "react";
+import type { DesignAction, DesignDraft } from "@/core/designer/types";
+import { answerOptions, rehearse } from "@/core/trial";
+import { Field, NativeSelect } from "@/ui/field";
+
+export function RehearsalPreview({
+  draft,
+  actionName,
+  blocked,
+}: {
+  draft: DesignDraft;
+  actionName: (action: DesignAction) => string;
+  /** Why the draft cannot be walked yet (its errors), if so. */
+  blocked: string | null;
+}) {
+  const questions = useMemo(
+    () =>
+      draft.steps.flatMap((step) =>
+        step.actions.filter((a) => a.type === "record_answer").map((action) => ({ step, action })),
+      ),
+    [draft],
+  );
+  const [answers, setAnswers] = useState<Record<string, string>>({});
+  const result = useMemo(() => {
+    if (blocked) return null;
+    try {
+      return { ok: true as const, rehearsal: rehearse(draft, answers) };
+    } catch (e) {
+      return { ok: false as const, reason: (e as Error).message };
+    }
+  }, [draft, answers, blocked]);
+
+  return (
+    <section aria-label="Rehearsal preview" className="space-y-4">
+      <p className="text-sm text-slate-700">
+        Choose an answer to each question to see what the robot would do, step by step. Nothing is sent to a robot.
+      </p>
+      {questions.length > 0 && (
+        <div className="grid gap-3 sm:grid-cols-2">
+          {questions.map(({ step, action }) => (
+            <Field key={action.id} label={`${step.name}: ${actionName(action)}`}>
+              {(p) => (
+                <NativeSelect
+                  {...p}
+                  value={answers[action.id] ?? answerOptions(action)[0]?.id ?? ""}
+                  onChange={(e) => setAnswers({ ...answers, [action.id]: e.target.value })}
+                >
+                  {answerOptions(action).map((o) => (
+                    <option key={o.id} value={o.id}>
+                      {o.label}
+                    </option>
+                  ))}
+                </NativeSelect>
+              )}
+            </Field>
+          ))}
+        </div>
+      )}
+      {blocked && <p className="text-sm text-amber-900">{blocked}</p>}
+      {result && !result.ok && <p className="text-sm text-amber-900">The preview stopped: {result.reason}</p>}
+      {result?.ok && (
+        <ol aria-label="What the robot would do" className="space-y-2">
+          {result.rehearsal.steps.map((step, i) => (
+            <li key={`${step.stepId}-${i}`} className="rounded-md border border-slate-200 bg-white p-3">
+              <p className="text-sm font-semibold">
+                {i + 1}. {step.name}
+              </p>
+              <ol className="mt-1 list-inside list-decimal text-sm text-slate-800">
+                {step.units.map((unit) => (
+                  <li key={unit.map((a) => a.id).join()} data-rehearsed={unit.map((a) => a.id).join(" ")}>
+                    {unit.map((a) => actionName(a as DesignAction)).join(" + together: ")}
+                  </li>
+                ))}
+              </ol>
+              {step.answer && <p className="mt-1 text-xs text-brand-800">Answer: {step.answer.label}</p>}
+            </li>
+          ))}
+          <li className="text-sm text-slate-700">
+            {result.rehearsal.ending === "completed"
+              ? "The trial ends."
+              : "These answers keep the trial in a loop: it never ends. Choose another answer, or change where a step leads."}
+          </li>
+        </ol>
+      )}
+    </section>
+  );
+}
