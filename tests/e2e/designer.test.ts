@@ -287,7 +287,8 @@ describe.sequential("the experiment designer, in the browser", () => {
     await library.waitFor();
     const r = new Researcher(page);
     const actions = page.getByRole("list", { name: "Protocol" }).locator("[data-action]");
-    const timeline = page.getByRole("list", { name: "Protocol" }).locator("xpath=..");
+    // The designer's own <main> (inside the app's), the column that scrolls.
+    const timeline = page.locator("main", { has: page.getByRole("list", { name: "Protocol" }) }).last();
     await expect.poll(() => actions.count()).toBeGreaterThan(0);
 
     // The draft was changed since version 1: publishing is offered, then refused as a copy.
