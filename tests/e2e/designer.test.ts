@@ -188,4 +188,72 @@ describe.sequential("the experiment designer, in the browser", () => {
       .toContain("Introduction (first)");
     await Promise.all(pages.map((p) => p.context().close()));
   }, 60_000);
+  it("offers each capability once, takes drops below the last step and at the window's edge, and publishes only a changed draft", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await page.goto(designerUrl);
+    const library = page.getByRole("region", { name: "Block library" });
+    await library.waitFor();
+    const r = new Researcher(page);
+    const actions = page.getByRole("list", { name: "Protocol" }).locator("[data-action]");
+    // The designer's own <main> (inside the app's), the column that scrolls.
+    const timeline = page.locator("main", { has: page.getByRole("list", { name: "Protocol" }) }).last();
+    await expect.poll(() => actions.count()).toBeGreaterThan(0);
+
+    // The draft was changed since version 1: publishing is offered, then refused as a copy.
+    const publish = page.getByRole("button", { name: "Publish" });
+    await expect.poll(() => publish.isEnabled()).toBe(true);
+    await publish.click();
+    await page.getByText(/Published version 2/).waitFor();
+    await expect.poll(() => publish.isDisabled()).toBe(true);
+    await page.getByText("Published as version 2; change the draft to publish again.").waitFor();
+
+    // One "Stop", one "Nod": NAO6's own "Yes (Nod)" is a variant shown under Nod.
+    const shown = async (name: string) =>
+      (await library.locator("[data-block]").allTextContents()).filter((t) => t.toLowerCase() === name).length;
+    expect(await shown("stop")).toBe(1);
+    expect(await shown("look down")).toBe(1);
+    expect(await shown("yes (nod)")).toBe(0);
+    await library.getByRole("button", { name: /^1 version of Nod on NAO6/ }).click();
+    expect(await shown("yes (nod)")).toBe(1);
+    const lastStep = (await page.locator("[data-step]").last().getAttribute("data-step"))!;
+    const inLast = page.locator(`[data-step="${lastStep}"] [data-action]`);
+    const before = await inLast.count();
+    await r.drag("nao6-ros2.play_animation_yes", lastStep);
+    await expect.poll(() => inLast.last().getAttribute("aria-label")).toBe("Yes (Nod)");
+    await expect.poll(() => publish.isEnabled()).toBe(true);
+
+    // Below the last step, on no step at all: the block goes at the end of the last step.
+    const end = page.locator('[data-drop-zone="(end of the timeline)"]');
+    const nod = library.locator('[data-block="nod"]');
+    await nod.evaluate((el) => el.scrollIntoView({ block: "center" }));
+    await end.evaluate((el) => el.scrollIntoView({ block: "end" }));
+    let s = (await nod.boundingBox())!;
+    const e = (await end.boundingBox())!;
+    await page.mouse.move(s.x + s.width / 2, s.y + s.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(s.x + s.width / 2 + 12, s.y + s.height / 2, { steps: 3 });
+    await page.mouse.move(e.x + e.width / 2, e.y + e.height - 8, { steps: 12 });
+    await page.mouse.up();
+    await expect.poll(() => inLast.count()).toBe(before + 2);
+    await expect.poll(() => inLast.last().getAttribute("aria-label")).toBe("Nod");
+    await page.waitForTimeout(100);
+
+    // At the window's bottom edge, under the timeline scrolled to its top: the
+    // timeline scrolls while the block is held there, and the drop adds it.
+    await timeline.evaluate((el) => el.scrollTo(0, 0));
+    const total = await actions.count();
+    const column = (await timeline.boundingBox())!;
+    const height = await page.evaluate(() => window.innerHeight);
+    s = (await nod.boundingBox())!;
+    await page.mouse.move(s.x + s.width / 2, s.y + s.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(s.x + s.width / 2 + 12, s.y + s.height / 2, { steps: 3 });
+    await page.mouse.move(column.x + column.width / 2, height - 4, { steps: 12 });
+    await expect.poll(() => timeline.evaluate((el) => el.scrollTop)).toBeGreaterThan(0);
+    await page.mouse.up();
+    await expect.poll(() => actions.count()).toBe(total + 1);
+    await screenshot(page, "designer-library-variants");
+    await page.context().close();
+  }, 90_000);
 });

@@ -117,7 +117,7 @@ describe("every action of the fixture NAO6 plugin through roslib", () => {
     const walk = fixture.actions.find((a) => a.id === "walk_forward")!;
     expect(await transport.dispatch(walk, { speed: 3 })).toEqual({
       status: "failed",
-      reason: '"speed" must be <= 0.55',
+      reason: '"Speed" must be at most 0.55',
     });
     expect(sim.received).toEqual([]);
   });

@@ -231,7 +231,7 @@ function own(record: Record<string, unknown>, key: string): unknown {
 }
 
 /** Deep equality that ignores key order, as stored JSON does. */
-function same(a: unknown, b: unknown): boolean {
+export function same(a: unknown, b: unknown): boolean {
   if (a === b) return true;
   if (!a || !b || typeof a !== "object" || typeof b !== "object" || Array.isArray(a) !== Array.isArray(b)) return false;
   const [x, y] = [a as Record<string, unknown>, b as Record<string, unknown>];

@@ -29,7 +29,7 @@ describe("bad repository files", () => {
     [
       "plugins/index.json",
       '["a.json", "a.json"]',
-      [{ path: "", reason: "must NOT have duplicate items (items ## 1 and 0 are identical)" }],
+      [{ path: "", reason: "lists the same value twice (numbers 1 and 2)" }],
     ],
     ["plugins/index.json", '{"plugins": []}', [{ path: "", reason: "must be a list" }]],
     ["repository.json", '{"name": "x"}', [{ path: "/id", reason: "is required but missing" }]],

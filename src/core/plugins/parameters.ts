@@ -2,12 +2,12 @@
 // messages that name the parameter. Compiled validators are cached per schema
 // object, so a plugin's schemas compile once when it loads.
 import Ajv, { type ErrorObject, type ValidateFunction } from "ajv";
+import { plainReason } from "./ajv-errors";
 import type { ParameterSchema } from "./types";
 
 // Not strict: HRIStudio files may carry UI hints (placeholder, step...) in
 // their parameter schemas; the plugin schema already checks the keywords we use.
 const ajv = new Ajv({ allErrors: true, strict: false });
-const ARTICLE: Record<string, string> = { integer: "an integer", object: "an object", array: "a list" };
 const compiled = new WeakMap<object, ValidateFunction>();
 
 export interface ParameterProblem {
@@ -29,7 +29,7 @@ export function compileParameterSchema(schema: ParameterSchema | object): Valida
 export function checkValue(propertySchema: object, value: unknown): string | null {
   const validate = ajv.compile(propertySchema);
   if (validate(value)) return null;
-  return ajv.errorsText(validate.errors, { dataVar: "value" }).replace(/^value /, "");
+  return (validate.errors ?? []).map(plainReason).join(", and ");
 }
 
 export function validateParameters(schema: ParameterSchema, parameters: unknown): ParameterProblem[] {
@@ -46,34 +46,45 @@ export function validateParameters(schema: ParameterSchema, parameters: unknown)
   const validate = compileParameterSchema(schema);
   if (!validate(parameters)) {
     for (const error of validate.errors ?? []) {
-      if (error.keyword === "additionalProperties") continue; // reported above
+      if (error.keyword === "additionalProperties" && error.instancePath === "") continue; // reported above
       const params = error.params as Record<string, unknown>;
       const name =
-        error.keyword === "required" ? String(params.missingProperty) : (error.instancePath.split("/")[1] ?? "");
-      problems.push({ parameter: name, message: describe(error, name) });
+        error.keyword === "required" && error.instancePath === ""
+          ? String(params.missingProperty)
+          : (error.instancePath.split("/")[1] ?? "");
+      problems.push({ parameter: name, message: describe(error, name, schema) });
     }
   }
   return problems;
 }
 
-function describe(error: ErrorObject, name: string): string {
-  const params = error.params as Record<string, unknown>;
-  switch (error.keyword) {
-    case "required":
-      return `"${name}" is required`;
-    case "type":
-      return `"${name}" must be ${ARTICLE[String(params.type)] ?? `a ${String(params.type)}`}`;
-    case "enum":
-      return `"${name}" must be one of ${(params.allowedValues as unknown[]).map((v) => JSON.stringify(v)).join(", ")}`;
-    case "minLength":
-      if (params.limit === 1) return `"${name}" must not be empty`;
+// The form shows a parameter by its title, so a problem names it that way:
+// "Seconds" must be at most 3600; inside a list, "Answer" (number 2 in "Answers").
+function describe(error: ErrorObject, name: string, schema: ParameterSchema): string {
+  if (error.keyword === "required" && error.instancePath === "")
+    return `${quoted(name, schema.properties[name])} is required`;
+  const [, , ...inside] = error.instancePath.split("/");
+  let property: unknown = schema.properties[name];
+  let subject = quoted(name, property);
+  for (const segment of inside) {
+    const number = /^\d+$/.test(segment);
+    const within = subject;
+    property = field(property, number ? "items" : "properties", segment);
+    subject = number ? `number ${Number(segment) + 1} in ${within}` : `${quoted(segment, property)} (${within})`;
   }
-  const inside = error.instancePath
-    .split("/")
-    .slice(2)
-    .map((s) => `[${s}]`)
-    .join("");
-  return `"${name}"${inside} ${error.message}`;
+  if (error.keyword !== "required") return `${subject} ${plainReason(error)}`;
+  const missing = String((error.params as { missingProperty: unknown }).missingProperty);
+  return `${subject} needs ${quoted(missing, field(property, "properties", missing))}`;
+}
+
+function field(schema: unknown, kind: "items" | "properties", key: string): unknown {
+  const s = schema as { items?: unknown; properties?: Record<string, unknown> } | undefined;
+  return kind === "items" ? s?.items : s?.properties?.[key];
+}
+
+function quoted(name: string, property: unknown): string {
+  const title = (property as { title?: unknown } | undefined)?.title;
+  return `"${typeof title === "string" && title ? title : name}"`;
 }
 
 /** The parameters with schema defaults filled in where a value is absent. */

@@ -98,7 +98,7 @@ describe("portability of other actions", () => {
 
   it("names the parameter a robot cannot meet", () => {
     expect(one("turtlebot3-burger.json", "move", { direction: "forward", speed: 0.3 })?.problems).toEqual([
-      { parameter: "speed", message: '"speed" must be <= 0.22' },
+      { parameter: "speed", message: '"Speed (m/s)" must be at most 0.22' },
     ]);
     expect(one("pepper-ros2.json", "posture", { posture: "sit" })?.problems).toEqual([
       { parameter: "posture", message: '"posture" "sit" is not supported by this robot (supported: "stand", "rest")' },

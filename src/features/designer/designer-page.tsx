@@ -6,11 +6,8 @@ import {
   DndContext,
   DragOverlay,
   PointerSensor,
-  pointerWithin,
-  rectIntersection,
   useSensor,
   useSensors,
-  type CollisionDetection,
   type DragEndEvent,
   type DragStartEvent,
 } from "@dnd-kit/core";
@@ -20,7 +17,8 @@ import Link from "next/link";
 import { useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from "react";
 import { studyRoleMay } from "@/core/access/policy";
 import { actionName, actionNamesOf } from "@/core/designer/action-name";
-import { blockFor as findBlock, initialParameters, library, RUN_TOGETHER, type Block } from "@/core/designer/blocks";
+import { blockFor as findBlock, initialParameters, RUN_TOGETHER, type Block } from "@/core/designer/blocks";
+import { libraryEntries } from "@/core/designer/library";
 import { commands, locateAction, locateStep } from "@/core/designer/model";
 import type { DesignDraft } from "@/core/designer/types";
 import { hasErrors, validateDesign } from "@/core/designer/validate";
@@ -38,14 +36,9 @@ import { LibraryPanel } from "./library-panel";
 import { PropertiesPanel } from "./properties-panel";
 import { ProtocolTimeline, type Marks, type Selection } from "./protocol-timeline";
 import { RehearsalPreview } from "./rehearsal-preview";
+import { collision, TIMELINE_END, TimelineEnd } from "./timeline-end";
 import { useDesigner, type SaveState } from "./use-designer";
 import { VersionsPanel } from "./versions-panel";
-
-// The pointer decides where a block lands; near no target, the closest overlap does.
-const collision: CollisionDetection = (args) => {
-  const within = pointerWithin(args);
-  return within.length ? within : rectIntersection(args);
-};
 
 // A click is not a drag: the pointer must travel a little first. A constant,
 // because new options would make dnd-kit re-render every block on each edit.
@@ -68,7 +61,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const [selection, setSelection] = useState<Selection>(null);
   const [view, setView] = useState("steps");
 
-  const blocks = useMemo(() => library(plugin), [plugin]);
+  const entries = useMemo(() => libraryEntries(plugin), [plugin]);
   const blockFor = useCallback((type: string) => findBlock(type, plugin), [plugin]);
   const blockName = useCallback((type: string) => findBlock(type, plugin)?.name ?? type, [plugin]);
   const names = useMemo(() => actionNamesOf(plugin), [plugin]);
@@ -90,8 +83,8 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
     return map;
   }, [issues]);
   const unsupported = useMemo(
-    () => new Set(blocks.filter((b) => plugin && isUnsupported(plugin, b.type)).map((b) => b.type)),
-    [blocks, plugin],
+    () => new Set(entries.filter((e) => plugin && isUnsupported(plugin, e.block.type)).map((e) => e.block.type)),
+    [entries, plugin],
   );
 
   const role = study.data?.myRole;
@@ -160,6 +153,11 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
     run(commands.addStep(`Step ${(draft?.steps.length ?? 0) + 1}`, undefined, id));
     setSelection({ kind: "step", id });
   };
+  const firstStep = () => {
+    const stepId = newId();
+    run(commands.addStep("Step 1", undefined, stepId));
+    return { stepId, index: 0 };
+  };
 
   const moveSelected = useCallback(
     (delta: -1 | 1) => {
@@ -196,9 +194,12 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const onDragEnd = (e: DragEndEvent) => {
     setDragging(null);
     if (!draft || !e.over) return;
-    const drop = dropTarget(draft, String(e.over.id));
-    if (!drop) return;
     const [kind, id] = splitId(String(e.active.id));
+    // Below an empty timeline, a block starts the first step.
+    const drop =
+      dropTarget(draft, String(e.over.id)) ??
+      (e.over.id === TIMELINE_END && kind === "lib" && id !== RUN_TOGETHER.type ? firstStep() : null);
+    if (!drop) return;
     if (kind === "lib" && id === RUN_TOGETHER.type) {
       // Onto an action: that one; onto a step's drop zone: its last action.
       const { step } = locateStep(draft, drop.stepId);
@@ -302,7 +303,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
       >
         <div className="grid min-h-0 flex-1 grid-cols-[16rem_minmax(0,1fr)_24rem] gap-4">
           {canEdit ? (
-            <LibraryPanel blocks={blocks} unsupported={unsupported} onAdd={addFromLibrary} />
+            <LibraryPanel entries={entries} robotName={robotName} unsupported={unsupported} onAdd={addFromLibrary} />
           ) : (
             <p className="text-sm text-slate-500">
               You can read this experiment; only its owner and researchers edit it.
@@ -326,11 +327,13 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
                         blockName={blockName}
                         onSelect={setSelection}
                       />
-                      {canEdit && (
-                        <Button variant="secondary" onClick={addStep}>
-                          <Plus className="h-4 w-4" aria-hidden /> Add step
-                        </Button>
-                      )}
+                      <TimelineEnd lastStep={draft.steps.at(-1)?.name ?? null}>
+                        {canEdit && (
+                          <Button variant="secondary" className="self-start" onClick={addStep}>
+                            <Plus className="h-4 w-4" aria-hidden /> Add step
+                          </Button>
+                        )}
+                      </TimelineEnd>
                     </div>
                   ),
                 },
@@ -372,6 +375,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
             <IssuesPanel draft={draft} issues={issues} robotName={robotName} onSelect={setSelection} />
             <VersionsPanel
               experimentId={experimentId}
+              draft={draft}
               canPublish={canPublish}
               blocked={
                 errors
@@ -408,6 +412,10 @@ function dropTarget(draft: DesignDraft, overId: string): { stepId: string; index
       return { stepId: found.step.id, index: found.index };
     }
     if (kind === "step" || kind === "drop") return { stepId: id, index: locateStep(draft, id).step.actions.length };
+    if (kind === "end") {
+      const last = draft.steps.at(-1);
+      return last ? { stepId: last.id, index: last.actions.length } : null;
+    }
   } catch {
     return null;
   }

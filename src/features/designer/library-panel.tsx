@@ -1,10 +1,12 @@
 "use client";
 // The block library: searchable, grouped, each block dragged into a step or
-// added to the selected step with Enter (the keyboard way).
+// added to the selected step with Enter (the keyboard way). A block the robot
+// carries out with its own actions lists them under it, as its variants.
 import { useDraggable } from "@dnd-kit/core";
-import { Search } from "lucide-react";
+import { ChevronDown, ChevronRight, Search } from "lucide-react";
 import { memo, useMemo, useState } from "react";
 import type { Block, BlockCategory } from "@/core/designer/blocks";
+import { searchLibrary, type LibraryEntry } from "@/core/designer/library";
 import { Input } from "@/ui/field";
 
 const CATEGORY_NAMES: Record<BlockCategory, string> = {
@@ -19,28 +21,23 @@ const CATEGORY_NAMES: Record<BlockCategory, string> = {
 export const libraryDragId = (type: string) => `lib:${type}`;
 
 export const LibraryPanel = memo(function LibraryPanel({
-  blocks,
+  entries,
+  robotName,
   unsupported,
   onAdd,
 }: {
-  blocks: Block[];
+  entries: LibraryEntry[];
+  robotName: string;
   unsupported: Set<string>;
   onAdd: (block: Block) => void;
 }) {
   const [query, setQuery] = useState("");
   const groups = useMemo(() => {
-    const q = query.trim().toLowerCase();
-    const shown = blocks.filter(
-      (b) =>
-        !q ||
-        b.name.toLowerCase().includes(q) ||
-        b.type.toLowerCase().includes(q) ||
-        b.description.toLowerCase().includes(q),
-    );
+    const shown = searchLibrary(entries, query);
     return (Object.keys(CATEGORY_NAMES) as BlockCategory[])
-      .map((c) => ({ category: c, blocks: shown.filter((b) => b.category === c) }))
-      .filter((g) => g.blocks.length);
-  }, [blocks, query]);
+      .map((c) => ({ category: c, entries: shown.filter((e) => e.block.category === c) }))
+      .filter((g) => g.entries.length);
+  }, [entries, query]);
   return (
     <section aria-label="Block library" className="flex min-h-0 flex-col gap-3">
       <div className="relative">
@@ -61,8 +58,15 @@ export const LibraryPanel = memo(function LibraryPanel({
               {CATEGORY_NAMES[g.category]}
             </h3>
             <ul className="space-y-1">
-              {g.blocks.map((b) => (
-                <LibraryBlock key={b.type} block={b} unsupported={unsupported.has(b.type)} onAdd={onAdd} />
+              {g.entries.map((e) => (
+                <LibraryEntryItem
+                  key={e.block.type}
+                  entry={e}
+                  open={e.open}
+                  robotName={robotName}
+                  unsupported={unsupported.has(e.block.type)}
+                  onAdd={onAdd}
+                />
               ))}
             </ul>
           </section>
@@ -72,6 +76,60 @@ export const LibraryPanel = memo(function LibraryPanel({
     </section>
   );
 });
+
+/** A block and, behind a disclosure, the robot's own actions that do the same. */
+function LibraryEntryItem({
+  entry,
+  open,
+  robotName,
+  unsupported,
+  onAdd,
+}: {
+  entry: LibraryEntry;
+  /** A search found one of the variants: shown without asking. */
+  open: boolean;
+  robotName: string;
+  unsupported: boolean;
+  onAdd: (block: Block) => void;
+}) {
+  const [expanded, setExpanded] = useState(false);
+  const { block, variants } = entry;
+  const shown = open || expanded;
+  const Chevron = shown ? ChevronDown : ChevronRight;
+  return (
+    <li>
+      <div className="flex items-stretch gap-1">
+        <LibraryBlock block={block} unsupported={unsupported} onAdd={onAdd} />
+        {variants.length > 0 && (
+          <button
+            type="button"
+            aria-expanded={shown}
+            // Its name starts with the number it shows, so the two never disagree (WCAG 2.5.3).
+            aria-label={`${variants.length} ${variants.length === 1 ? "version" : "versions"} of ${block.name} on ${robotName}`}
+            title={`${robotName}'s own versions of ${block.name}`}
+            onClick={() => setExpanded(!shown)}
+            className="flex shrink-0 items-center gap-0.5 rounded-md border border-slate-200 bg-white px-1.5 text-xs text-slate-600 hover:border-brand-500 focus:outline-none focus:ring-2 focus:ring-brand-500/40"
+          >
+            <Chevron className="h-3.5 w-3.5" aria-hidden />
+            {variants.length}
+          </button>
+        )}
+      </div>
+      {shown && variants.length > 0 && (
+        <div className="ml-3 mt-1 border-l-2 border-slate-200 pl-2">
+          <p className="text-[11px] text-slate-600">On {robotName}:</p>
+          <ul aria-label={`Versions of ${block.name} on ${robotName}`} className="space-y-1">
+            {variants.map((v) => (
+              <li key={v.type}>
+                <LibraryBlock block={v} unsupported={false} onAdd={onAdd} />
+              </li>
+            ))}
+          </ul>
+        </div>
+      )}
+    </li>
+  );
+}
 
 const LibraryBlock = memo(function LibraryBlock({
   block,
@@ -87,26 +145,24 @@ const LibraryBlock = memo(function LibraryBlock({
     data: { block },
   });
   return (
-    <li>
-      <button
-        ref={setNodeRef}
-        {...attributes}
-        {...listeners}
-        type="button"
-        data-block={block.type}
-        title={block.description}
-        onClick={() => onAdd(block)}
-        onKeyDown={(e) => {
-          if (e.key === "Enter" || e.key === " ") {
-            e.preventDefault();
-            onAdd(block);
-          }
-        }}
-        className={`w-full cursor-grab rounded-md border bg-white px-2.5 py-1.5 text-left text-sm shadow-sm hover:border-brand-500 focus:outline-none focus:ring-2 focus:ring-brand-500/40 ${isDragging ? "opacity-50" : ""} ${unsupported ? "border-dashed border-amber-400 text-slate-500" : "border-slate-200"}`}
-      >
-        <span className="font-medium">{block.name}</span>
-        {unsupported && <span className="ml-1 text-xs text-amber-700">(not on this robot)</span>}
-      </button>
-    </li>
+    <button
+      ref={setNodeRef}
+      {...attributes}
+      {...listeners}
+      type="button"
+      data-block={block.type}
+      title={block.description}
+      onClick={() => onAdd(block)}
+      onKeyDown={(e) => {
+        if (e.key === "Enter" || e.key === " ") {
+          e.preventDefault();
+          onAdd(block);
+        }
+      }}
+      className={`w-full min-w-0 cursor-grab rounded-md border bg-white px-2.5 py-1.5 text-left text-sm shadow-sm hover:border-brand-500 focus:outline-none focus:ring-2 focus:ring-brand-500/40 ${isDragging ? "opacity-50" : ""} ${unsupported ? "border-dashed border-amber-400 text-slate-500" : "border-slate-200"}`}
+    >
+      <span className="font-medium">{block.name}</span>
+      {unsupported && <span className="ml-1 text-xs text-amber-700">(not on this robot)</span>}
+    </button>
   );
 });

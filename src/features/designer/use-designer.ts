@@ -5,6 +5,7 @@
 import { useMutation, useQuery } from "@tanstack/react-query";
 import { useCallback, useEffect, useRef, useState } from "react";
 import { draftFrom, execute, redo, startHistory, undo, type Command, type History } from "@/core/designer/model";
+import { describeSaveIssues, type FieldIssue } from "@/core/designer/save-problems";
 import type { DesignDraft } from "@/core/designer/types";
 import { newId } from "@/lib/new-id";
 import { useTRPC } from "@/lib/trpc";
@@ -64,8 +65,10 @@ export function useDesigner(experimentId: string) {
       savedDraft.current = draft;
       setSave(current.current?.present === draft ? { kind: "saved" } : { kind: "unsaved" });
     } catch (error) {
-      const code = (error as { data?: { code?: string } }).data?.code;
-      setSave(code === "CONFLICT" ? { kind: "conflict" } : { kind: "failed", message: messageOf(error) });
+      const data = (error as { data?: { code?: string; issues?: FieldIssue[] | null } }).data;
+      // A refused field is named by its step and action, never by the input's path.
+      const message = data?.issues?.length ? describeSaveIssues(draft, data.issues) : messageOf(error);
+      setSave(data?.code === "CONFLICT" ? { kind: "conflict" } : { kind: "failed", message });
     } finally {
       inFlight.current = false;
     }

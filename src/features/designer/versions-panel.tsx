@@ -4,6 +4,8 @@
 import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
 import { Download, Upload } from "lucide-react";
 import { useState } from "react";
+import { unchangedSince, type PublishedVersion } from "@/core/designer/published";
+import type { DesignDraft } from "@/core/designer/types";
 import { useTRPC, useTRPCClient } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { NativeSelect } from "@/ui/field";
@@ -12,11 +14,13 @@ import { Badge } from "@/ui/surface";
 
 export function VersionsPanel({
   experimentId,
+  draft,
   canPublish,
-  blocked,
+  blocked: problems,
   beforePublish,
 }: {
   experimentId: string;
+  draft: DesignDraft;
   canPublish: boolean;
   blocked: string | null;
   beforePublish: () => Promise<void>;
@@ -45,6 +49,14 @@ export function VersionsPanel({
     }
   };
   const list = versions.data ?? [];
+  // The newest version's content, to tell whether publishing would only copy it.
+  const latest = useQuery({
+    ...trpc.versions.get.queryOptions({ versionId: list[0]?.id ?? "" }),
+    enabled: Boolean(list[0]),
+  });
+  const unchanged = latest.data && list[0] ? unchangedSince(draft, latest.data as PublishedVersion) : null;
+  const blocked =
+    problems ?? (unchanged === null ? null : `Published as version ${unchanged}; change the draft to publish again.`);
   return (
     <section aria-label="Versions" className="space-y-3 rounded-lg border border-slate-200 bg-white p-4 shadow-sm">
       <div className="flex flex-wrap items-center gap-2">
