@@ -24,8 +24,8 @@ export function FlowMap({ draft, onSelect }: { draft: DesignDraft; onSelect: (st
   const name = (i: number) => draft.steps[i]?.name || `Step ${i + 1}`;
   return (
     <figure className="space-y-2">
+      {/* biome-ignore lint/a11y/useSemanticElements: an SVG cannot be a fieldset; its steps are buttons, so it is a group, not an image */}
       <svg
-        // A group, not an image: its steps are buttons.
         role="group"
         aria-labelledby="flow-map-title"
         viewBox={`0 0 ${width} ${height}`}
