@@ -123,7 +123,8 @@ async function rehearse(page: Page, studyUrl: string, key: number) {
     await page.keyboard.press("n");
     await page
       .getByTestId(/action-/)
-      .filter({ hasText: text })
+      // The wizard sees speech by its first words ("Say: Not quite: Venus is the…").
+      .filter({ hasText: text.slice(0, 20) })
       .getByText(/^done/)
       .waitFor();
   };
