@@ -69,7 +69,15 @@ export function FlowMap({ draft, onSelect }: { draft: DesignDraft; onSelect: (st
                 markerEnd="url(#flow-arrow)"
               />
               {e.label && (
-                <text x={out - 4} y={y1 - 9} textAnchor="end" className="fill-brand-800 text-[10px]">
+                // At the arrow's head, where each answer has a row of its own; the halo keeps it legible over lanes.
+                <text
+                  x={edge - 6}
+                  y={y2 + 2}
+                  textAnchor="end"
+                  paintOrder="stroke"
+                  strokeWidth={3}
+                  className="fill-brand-800 stroke-white text-[10px]"
+                >
                   {e.label}
                 </text>
               )}

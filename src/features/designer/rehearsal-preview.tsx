@@ -73,6 +73,15 @@ export function RehearsalPreview({
                 {step.units.map((unit) => (
                   <li key={unit.map((a) => a.id).join()} data-rehearsed={unit.map((a) => a.id).join(" ")}>
                     {unit.map((a) => actionName(a as DesignAction)).join(" + together: ")}
+                    {/* Names shorten speech; the preview shows what the robot would say, word for word. */}
+                    {unit.map((a) =>
+                      typeof a.parameters.text === "string" &&
+                      !actionName(a as DesignAction).includes(a.parameters.text) ? (
+                        <span key={a.id} className="block pl-4 text-slate-600">
+                          “{a.parameters.text}”
+                        </span>
+                      ) : null,
+                    )}
                   </li>
                 ))}
               </ol>
