@@ -104,3 +104,12 @@ export async function publishedVersion(api: Api, studyId: string) {
   });
   return { experiment, version: await api.versions.publish({ experimentId: experiment.id }) };
 }
+
+/** A consenting participant in a condition running `experimentId`, with a session planned for `wizardId`. */
+export async function plannedSession(api: Api, studyId: string, experimentId: string, code: string, wizardId: string) {
+  const participant = await api.participants.create({ studyId, code, consentStatus: "given", consentDate: new Date() });
+  const condition = await api.conditions.create({ studyId, name: "C", experimentId });
+  await api.conditions.assign({ participantId: participant.id, conditionId: condition.id });
+  const session = await api.sessions.schedule({ participantId: participant.id, plannedAt: new Date(), wizardId });
+  return { participant, session };
+}

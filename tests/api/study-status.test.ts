@@ -2,7 +2,7 @@
 // a draft rehearses, a completed or archived study keeps its data as it is.
 import { afterAll, expect, it } from "vitest";
 import { freshDatabase } from "../support/db";
-import { buildFixture, publishedVersion } from "./fixture";
+import { buildFixture, plannedSession, publishedVersion } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -13,19 +13,7 @@ afterAll(close);
 async function studyWithSession() {
   const study = await f.newStudy();
   const { experiment, version } = await publishedVersion(owner, study.id);
-  const participant = await owner.participants.create({
-    studyId: study.id,
-    code: "P1",
-    consentStatus: "given",
-    consentDate: new Date(),
-  });
-  const condition = await owner.conditions.create({ studyId: study.id, name: "C", experimentId: experiment.id });
-  await owner.conditions.assign({ participantId: participant.id, conditionId: condition.id });
-  const session = await owner.sessions.schedule({
-    participantId: participant.id,
-    plannedAt: new Date(),
-    wizardId: f.people.wizard.id,
-  });
+  const { participant, session } = await plannedSession(owner, study.id, experiment.id, "P1", f.people.wizard.id);
   return { study, experiment, version, participant, session };
 }
 

@@ -7,7 +7,7 @@ import { afterAll, describe, expect, it } from "vitest";
 import { appendEvents } from "../../src/store/event-store";
 import { parseCsv } from "../support/csv";
 import { freshDatabase } from "../support/db";
-import { buildFixture, publishedVersion } from "./fixture";
+import { buildFixture, plannedSession, publishedVersion } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -72,19 +72,7 @@ describe("the wizard and the creator, two named fields wherever the trial is sho
     const study = await f.newStudy();
     const { experiment } = await publishedVersion(owner, study.id);
     const researcher = f.api("researcher");
-    const participant = await researcher.participants.create({
-      studyId: study.id,
-      code: "P2",
-      consentStatus: "given",
-      consentDate: new Date(),
-    });
-    const condition = await researcher.conditions.create({ studyId: study.id, name: "C", experimentId: experiment.id });
-    await researcher.conditions.assign({ participantId: participant.id, conditionId: condition.id });
-    const session = await researcher.sessions.schedule({
-      participantId: participant.id,
-      plannedAt: new Date(),
-      wizardId: f.people.wizard.id,
-    });
+    const { session } = await plannedSession(researcher, study.id, experiment.id, "P2", f.people.wizard.id);
     const { trialId } = await f.api("wizard").sessions.start({ sessionId: session.id });
     expect(await owner.trials.get({ trialId })).toMatchObject({
       wizardId: f.people.wizard.id,

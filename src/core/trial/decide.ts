@@ -84,7 +84,7 @@ function next(protocol: TrialProtocol, state: TrialState): Decision {
   );
   if (holding) return no(`Wait: the ${Number(holding.parameters.seconds ?? 0)} s pause is still running.`);
   const unit = nextUnit(protocol, state);
-  if (unit.length > 0) return request(protocol, state, unit, undefined);
+  if (unit.length > 0) return request(state, unit, undefined);
   const exit = exitOf(protocol.steps, findStep(protocol, state.currentStepId)!.index);
   // An "after" to a step that is gone cannot be published; in a rehearsal it ends the trial.
   if (exit.to !== "step") return ok({ type: "trial.completed" });
@@ -98,15 +98,10 @@ function trigger(protocol: TrialProtocol, state: TrialState, actionId: string): 
     return no(`"${actionName(found.action)}" belongs to another step: jump to "${found.step.name}" first.`);
   if (state.actions[actionId]?.status !== "waiting") return no(`"${actionName(found.action)}" has already run.`);
   const inTurn = nextUnit(protocol, state).some((a) => a.id === actionId);
-  return request(protocol, state, [found.action], inTurn ? undefined : "out_of_order");
+  return request(state, [found.action], inTurn ? undefined : "out_of_order");
 }
 
-function request(
-  protocol: TrialProtocol,
-  state: TrialState,
-  unit: ProtocolAction[],
-  deviation: DeviationKind | undefined,
-): Decision {
+function request(state: TrialState, unit: ProtocolAction[], deviation: DeviationKind | undefined): Decision {
   const stepId = state.currentStepId!;
   const events: EngineEvent[] = [];
   for (const action of unit) {

@@ -40,6 +40,17 @@ function quiz(afters: Partial<Record<string, After>> = {}): TrialProtocol {
   };
 }
 
+/** The wizard's commands through the question to the end of Venus's step, the robot finishing each action. */
+const answeredVenus: Command[] = [
+  { kind: "start" },
+  { kind: "next" },
+  { kind: "completed", actionId: "which-planet" },
+  { kind: "answer", actionId: "answer", optionId: "venus" },
+  { kind: "next" },
+  { kind: "completed", actionId: "not-quite" },
+  { kind: "next" },
+];
+
 const said = (protocol: TrialProtocol, answer: string) =>
   rehearse(protocol, { answer })
     .steps.flatMap((s) => s.units.flat())
@@ -68,15 +79,7 @@ describe("where a step leads after its actions", () => {
   it("ends the trial where a step says so, marking no early end", () => {
     const protocol = quiz({ wrong: { to: "end" } });
     expect(said(protocol, "venus")).toEqual(["which-planet", "not-quite"]);
-    const { log } = simulate(protocol, [
-      { kind: "start" },
-      { kind: "next" },
-      { kind: "completed", actionId: "which-planet" },
-      { kind: "answer", actionId: "answer", optionId: "venus" },
-      { kind: "next" },
-      { kind: "completed", actionId: "not-quite" },
-      { kind: "next" },
-    ]);
+    const { log } = simulate(protocol, answeredVenus);
     expect(log.at(-1)).toMatchObject({ type: "trial.completed" });
     expect(log.at(-1)).not.toHaveProperty("deviation");
   });
@@ -90,13 +93,7 @@ describe("where a step leads after its actions", () => {
     // Wrong asks again; Correct goes on.
     const protocol = quiz({ wrong: { to: "step", stepId: "ask" } });
     const commands: Command[] = [
-      { kind: "start" },
-      { kind: "next" },
-      { kind: "completed", actionId: "which-planet" },
-      { kind: "answer", actionId: "answer", optionId: "venus" },
-      { kind: "next" },
-      { kind: "completed", actionId: "not-quite" },
-      { kind: "next" },
+      ...answeredVenus,
       { kind: "next" },
       { kind: "completed", actionId: "which-planet" },
       { kind: "answer", actionId: "answer", optionId: "mars" },
