@@ -220,7 +220,7 @@ describe.sequential("the experiment designer, in the browser", () => {
     const inLast = page.locator(`[data-step="${lastStep}"] [data-action]`);
     const before = await inLast.count();
     await r.drag("nao6-ros2.play_animation_yes", lastStep);
-    await expect.poll(() => inLast.last().getAttribute("aria-label")).toBe("Yes (Nod)");
+    await expect.poll(() => inLast.last().getAttribute("data-action")).toBe("Yes (Nod)");
     await expect.poll(() => publish.isEnabled()).toBe(true);
 
     // Below the last step, on no step at all: the block goes at the end of the last step.
@@ -236,7 +236,7 @@ describe.sequential("the experiment designer, in the browser", () => {
     await page.mouse.move(e.x + e.width / 2, e.y + e.height - 8, { steps: 12 });
     await page.mouse.up();
     await expect.poll(() => inLast.count()).toBe(before + 2);
-    await expect.poll(() => inLast.last().getAttribute("aria-label")).toBe("Nod");
+    await expect.poll(() => inLast.last().getAttribute("data-action")).toBe("Nod");
     await page.waitForTimeout(100);
 
     // At the window's bottom edge, under the timeline scrolled to its top: the

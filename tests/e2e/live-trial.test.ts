@@ -212,7 +212,7 @@ describe.sequential("a live trial in two browsers", () => {
     const offScript = wizard.getByRole("region", { name: "Off script" });
     await offScript.getByText(/^failed/).waitFor();
     expect(await offScript.getByRole("alert").textContent()).toBe(
-      'Posture: "posture" must be one of "stand", "sit", "crouch", "rest".',
+      'Posture: "Posture" must be one of: "stand", "sit", "crouch", "rest".',
     );
 
     // Off the designed path, by hand: each is allowed and logged with its kind.
