@@ -2,7 +2,7 @@ import { eq } from "drizzle-orm";
 import type { Database } from "@/store/client";
 import { annotations, trials } from "@/store/schema";
 
-/** A marked moment, timed on the trial's clock (0 before the trial starts). */
+/** A annotation, timed on the trial's clock (0 before the trial starts). */
 export async function annotate(
   db: Database,
   by: { trialId: string; userId: string; name: string },

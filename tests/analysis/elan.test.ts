@@ -43,7 +43,7 @@ const run: Command[] = [
 describe("the ELAN export", () => {
   beforeAll(() => void pythonEnvironment(), 900_000);
 
-  it("opens in pympi with the trial's steps, actions, deviations and marked moments on their times", () => {
+  it("opens in pympi with the trial's steps, actions, deviations and annotations on their times", () => {
     const log = simulate(protocol, run, (i) => i * 250).log;
     const eaf = elanDocument({
       protocol,
@@ -56,12 +56,12 @@ describe("the ELAN export", () => {
     const { tiers } = JSON.parse(runPython("read_eaf.py", [file])) as {
       tiers: Record<string, Array<[number, number, string]>>;
     };
-    expect(Object.keys(tiers).sort()).toEqual(["Action", "Deviation", "Marked moment", "Step"]);
+    expect(Object.keys(tiers).sort()).toEqual(["Action", "Annotation", "Deviation", "Step"]);
     expect(tiers.Step!.map((s) => s[2])).toEqual(["Introduction", "Story", "Recall question", "Response — correct"]);
     expect(tiers.Step!.every(([start, end]) => end > start)).toBe(true);
     expect(tiers.Action!.map((a) => a[2])).toContain("Question: What color was the rock Kai found?");
     expect(tiers.Deviation).toEqual([[expect.any(Number), expect.any(Number), "skipped: Look down at the crater"]]);
-    expect(tiers["Marked moment"]).toEqual([[1200, 2200, `She said "wow" <laughs> & smiles`]]);
+    expect(tiers["Annotation"]).toEqual([[1200, 2200, `She said "wow" <laughs> & smiles`]]);
   });
 
   it("links the recording, with every time moved to where it falls in the recording", () => {
@@ -80,7 +80,7 @@ describe("the ELAN export", () => {
       media: Array<Record<string, string>>;
       tiers: Record<string, Array<[number, number, string]>>;
     };
-    const moments = tiers["Marked moment"];
+    const annotated = tiers.Annotation;
     expect(media).toEqual([
       expect.objectContaining({
         MEDIA_URL: "file:///recording-r1.webm",
@@ -89,6 +89,6 @@ describe("the ELAN export", () => {
       }),
     ]);
     // The recording began 1.5 s before t0: a moment 1.2 s into the trial is 2.7 s into the recording.
-    expect(moments).toEqual([[2700, 3700, "Look"]]);
+    expect(annotated).toEqual([[2700, 3700, "Look"]]);
   });
 });

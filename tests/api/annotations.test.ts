@@ -1,4 +1,4 @@
-// Moments marked afterwards on the analysis page: any member may mark one;
+// Annotations made afterwards on the analysis page: any member may add one;
 // its author may edit it, and so may the study's owner and researchers.
 import { afterAll, expect, it } from "vitest";
 import { freshDatabase } from "../support/db";
@@ -8,7 +8,7 @@ const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
 afterAll(close);
 
-it("lets the author and the researchers edit a marked moment, and nobody else", async () => {
+it("lets the author and the researchers edit a annotation, and nobody else", async () => {
   const owner = f.api("owner");
   const study = await f.newStudy();
   const { version } = await publishedVersion(owner, study.id);
@@ -17,7 +17,7 @@ it("lets the author and the researchers edit a marked moment, and nobody else", 
     .api("observer")
     .trials.annotate({ trialId: trial.id, relMs: 61_500, label: "Looks away", note: "" });
   await expect(f.api("wizard").trials.editAnnotation({ annotationId: id, label: "x", note: "" })).rejects.toMatchObject(
-    { code: "FORBIDDEN", message: expect.stringMatching(/^Only the person who marked this moment/) },
+    { code: "FORBIDDEN", message: expect.stringMatching(/^Only the person who wrote this annotation/) },
   );
   await f.api("observer").trials.editAnnotation({ annotationId: id, label: "Looks away from the robot", note: "" });
   await f

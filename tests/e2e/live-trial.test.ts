@@ -1,6 +1,6 @@
 // A wizard runs the whole Interactive Storyteller with the keyboard only,
 // while an observer in another browser watches each step change and marks a
-// moment the wizard sees.
+// annotation the wizard sees.
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { childPid, DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
@@ -98,8 +98,8 @@ describe.sequential("a live trial in two browsers", () => {
     await press("n", () => wizard.getByText("What did the participant answer?").waitFor());
 
     await observer.getByLabel("Label").fill("Participant hesitated");
-    await observer.getByRole("button", { name: "Mark moment" }).click();
-    await wizard.getByRole("list", { name: "Marked moments" }).getByText("Participant hesitated").waitFor();
+    await observer.getByRole("button", { name: "Annotate" }).click();
+    await wizard.getByRole("list", { name: "Annotations" }).getByText("Participant hesitated").waitFor();
     await screenshot(observer, "observer-view");
 
     await press("1", () => stepIs(wizard, "Response — correct"));
@@ -117,7 +117,7 @@ describe.sequential("a live trial in two browsers", () => {
     const events = await researcherApi.trials.events.query({ trialId });
     expect(scoreRun(trial.protocol, events)).toEqual({ score: 100, failed: [] });
 
-    // Afterwards: planned against executed, the timeline with the marked moment, the joint angles.
+    // Afterwards: planned against executed, the timeline with the annotation, the joint angles.
     await observer.getByRole("link", { name: /Open the analysis/ }).click();
     await expect.poll(() => observer.getByTestId("figure-Execution fidelity").textContent()).toBe("100 %");
     await observer.getByRole("region", { name: "Timeline" }).getByText("Participant hesitated").waitFor();

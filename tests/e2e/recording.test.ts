@@ -104,10 +104,10 @@ describe.sequential("recording a trial", () => {
       .poll(() => video.evaluate((v: HTMLVideoElement) => v.currentTime))
       .toBeCloseTo(-recording!.offsetMs! / 1000, 0);
     await analysis.getByTestId("playhead").waitFor();
-    // A moment marked afterwards, at the playhead, then edited.
-    const marked = analysis.getByRole("region", { name: "Marked moments" });
+    // An annotation made afterwards, at the playhead, then edited.
+    const marked = analysis.getByRole("region", { name: "Annotations" });
     await marked.getByLabel("What happened").fill("Participant leans in");
-    await marked.getByRole("button", { name: /^Mark at / }).click();
+    await marked.getByRole("button", { name: /^Annotate at / }).click();
     await marked.getByRole("button", { name: "Edit “Participant leans in”" }).click();
     await marked.getByLabel("Edit the note").fill("towards the robot");
     await marked.getByRole("button", { name: "Save" }).click();

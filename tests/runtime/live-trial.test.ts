@@ -56,7 +56,7 @@ describe.sequential("a live trial through the runtime", () => {
     observer.close();
   });
 
-  it("never lets an observer command, but lets them mark a moment everyone sees", async () => {
+  it("never lets an observer command, but lets them annotate everyone sees", async () => {
     const wizard = await open(wizardApi);
     const observer = await open(observerApi);
     expect(await observer.command("o1", { kind: "next" })).toMatchObject({

@@ -119,7 +119,7 @@ describe("who may command a trial over its socket", () => {
     ["an observer", access({ studyRole: "observer" }), true],
     ["a wizard of another trial", access({ wizardId: "u-other" }), true],
     ["a removed member", access({ studyRole: null }), false],
-  ])("marking a moment: %s → %s", (_name, who, allowed) => {
+  ])("annotating: %s → %s", (_name, who, allowed) => {
     expect(annotateVerdict(who).allow).toBe(allowed);
   });
 });

@@ -54,13 +54,13 @@ export function commandVerdict(access: TrialAccess, kind: string): SocketVerdict
   return refuse("This trial is assigned to another wizard: you may watch it but not run it.");
 }
 
-/** May the caller mark a moment in this trial? */
+/** May the caller annotate in this trial? */
 export function annotateVerdict(access: TrialAccess): SocketVerdict {
   const lost = lostAccess(access);
   if (lost) return refuse(lost);
   return studyRoleMay(access.studyRole!, "annotation.create")
     ? { allow: true, claim: false }
-    : refuse(`As ${access.studyRole} you may not mark moments in this trial.`);
+    : refuse(`As ${access.studyRole} you may not annotate in this trial.`);
 }
 
 /**

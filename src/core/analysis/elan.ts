@@ -1,5 +1,5 @@
 // A trial as an ELAN annotation document (EAF 3.0), so video coders can open
-// the trial's steps, actions, deviations and marked moments beside the video
+// the trial's steps, actions, deviations and annotations beside the video
 // in the tool they already use. Times are milliseconds from the trial's t0,
 // or, when the trial was recorded, from the start of the linked recording.
 import { blockName, type ActionNames } from "../designer/action-name";
@@ -75,14 +75,14 @@ function tiers(input: ElanInput): Record<string, Span[]> {
       const { stepName, actionName } = named.of(e);
       return span(e.relMs!, null, `${e.deviation!.replace("_", " ")}: ${actionName ?? stepName ?? e.type}`);
     });
-  const moments = input.annotations.map((m) =>
+  const annotations = input.annotations.map((m) =>
     span(m.relMs, m.relMs + MOMENT_MS, m.note ? `${m.label}: ${m.note}` : m.label),
   );
   return {
     Step: steps,
     Action: [...actions, ...unscripted].sort((a, b) => a.start - b.start),
     Deviation: deviations,
-    "Marked moment": moments,
+    Annotation: annotations,
   };
 }
 

@@ -1,6 +1,6 @@
 "use client";
 // A trial after the fact: planned against executed, the event timeline with
-// deviations and marked moments, and the robot's logged joint angles.
+// deviations and annotations, and the robot's logged joint angles.
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
 import { useMemo, useRef, useState } from "react";
@@ -9,7 +9,7 @@ import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { QuestionnaireAnswers } from "./questionnaire-answers";
-import { MomentsEditor } from "./moments-editor";
+import { AnnotationsEditor } from "./annotations-editor";
 import { TimelineChart } from "./timeline-chart";
 import { RecordingPlayer, useTrialRecording, videoSeconds } from "./recording-player";
 import { Problem } from "@/ui/problem";
@@ -32,7 +32,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   const trpc = useTRPC();
   const trial = useQuery(trpc.trials.get.queryOptions({ trialId }));
   const events = useQuery(trpc.trials.events.queryOptions({ trialId }));
-  const moments = useQuery(trpc.trials.annotations.queryOptions({ trialId }));
+  const annotations = useQuery(trpc.trials.annotations.queryOptions({ trialId }));
   const recording = useTrialRecording(trialId, trial.data?.myRole !== "wizard");
   const video = useRef<HTMLVideoElement>(null);
   const [playheadMs, setPlayheadMs] = useState<number | null>(null);
@@ -69,7 +69,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   };
   const timeline = [
     ...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })),
-    ...(moments.data ?? []).map((m) => ({ at: m.relMs, kind: "moment" as const, m })),
+    ...(annotations.data ?? []).map((m) => ({ at: m.relMs, kind: "annotation" as const, m })),
   ].sort((a, b) => a.at - b.at);
   // The row the playhead is in: the last one at or before it.
   const current = playheadMs === null ? -1 : timeline.findLastIndex((item) => item.at <= playheadMs);
@@ -145,7 +145,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           deviations={events.data
             .filter((e) => e.deviation && e.relMs !== null)
             .map((e) => ({ at: e.relMs!, kind: String(e.deviation) }))}
-          moments={(moments.data ?? []).map((m) => ({ at: m.relMs, label: m.label }))}
+          annotations={(annotations.data ?? []).map((m) => ({ at: m.relMs, label: m.label }))}
           endMs={timeline.at(-1)?.at ?? 0}
           playheadMs={playheadMs}
           onSeek={recording ? (ms) => video.current && (video.current.currentTime = videoSeconds(recording, ms)) : null}
@@ -163,7 +163,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
               className={`flex w-full gap-3 px-4 py-1.5 text-left enabled:hover:bg-slate-50 ${current === i ? "bg-brand-50" : ""}`}
             >
               <span className="w-16 shrink-0 font-mono text-xs text-slate-600">{seconds(item.at)}</span>
-              {item.kind === "moment" ? (
+              {item.kind === "annotation" ? (
                 <span>
                   <Badge tone="violet">marked</Badge> <strong>{item.m.label}</strong> {item.m.note}{" "}
                   <span className="text-xs text-slate-600">by {item.m.authorName}</span>
@@ -179,7 +179,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           ))}
         </Card>
       </section>
-      <MomentsEditor trialId={trialId} moments={moments.data ?? []} playheadMs={playheadMs} />
+      <AnnotationsEditor trialId={trialId} annotations={annotations.data ?? []} playheadMs={playheadMs} />
       {samples.data && samples.data.length > 0 && (
         <JointAngles samples={samples.data as Array<{ relMs: number; data: unknown }>} />
       )}

@@ -1,6 +1,6 @@
 "use client";
 // The trial at a glance, on one time axis under the video: step bands, action
-// bars from requested to finished, deviations and marked moments. Clicking
+// bars from requested to finished, deviations and annotations. Clicking
 // anything seeks the recording there; the playhead shows where it is.
 import type { FidelityReport } from "@/core/analysis/fidelity";
 import { cn } from "@/ui/cn";
@@ -10,7 +10,7 @@ import { Card } from "@/ui/surface";
 interface Props {
   report: FidelityReport;
   deviations: Array<{ at: number; kind: string }>;
-  moments: Array<{ at: number; label: string }>;
+  annotations: Array<{ at: number; label: string }>;
   endMs: number;
   playheadMs: number | null;
   onSeek: ((ms: number) => void) | null;
@@ -18,7 +18,7 @@ interface Props {
 
 const BAND = ["bg-sky-100 text-sky-900", "bg-indigo-100 text-indigo-900"];
 
-export function TimelineChart({ report, deviations, moments, endMs, playheadMs, onSeek }: Props) {
+export function TimelineChart({ report, deviations, annotations, endMs, playheadMs, onSeek }: Props) {
   const total = Math.max(1, endMs);
   const left = (ms: number) => `${Math.min(100, Math.max(0, (ms / total) * 100))}%`;
   const width = (from: number, to: number) => `max(3px, ${Math.min(100, ((to - from) / total) * 100)}%)`;
@@ -99,13 +99,13 @@ export function TimelineChart({ report, deviations, moments, endMs, playheadMs, 
         )),
       )}
       {lane(
-        "Marked",
-        moments.map((m, i) => (
+        "Annotations",
+        annotations.map((m, i) => (
           <button
             key={i}
             type="button"
             title={m.label}
-            aria-label={`Marked: ${m.label}`}
+            aria-label={`Annotation: ${m.label}`}
             className="absolute top-1 h-4 w-4 -translate-x-1/2 rotate-45 rounded-sm bg-violet-500"
             style={{ left: left(m.at) }}
             onClick={() => seek(m.at)}

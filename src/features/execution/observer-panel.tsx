@@ -1,5 +1,5 @@
 "use client";
-// Observers watch and mark moments; every mark reaches everyone at once.
+// Observers watch and annotate; every mark reaches everyone at once.
 import { useState, type FormEvent } from "react";
 import type { Viewer } from "@/core/socket/messages";
 import { Button } from "@/ui/button";
@@ -7,7 +7,7 @@ import { Field, Input } from "@/ui/field";
 import { Badge, Card, ROLE_TONE } from "@/ui/surface";
 import type { Annotation } from "./use-trial-socket";
 
-export function MarkMoment({ annotate }: { annotate: (label: string, note: string) => Promise<{ ok: boolean }> }) {
+export function AnnotateForm({ annotate }: { annotate: (label: string, note: string) => Promise<{ ok: boolean }> }) {
   const [label, setLabel] = useState("");
   const [note, setNote] = useState("");
   const submit = async (e: FormEvent) => {
@@ -20,7 +20,7 @@ export function MarkMoment({ annotate }: { annotate: (label: string, note: strin
   };
   return (
     <Card className="p-4">
-      <h2 className="mb-2 font-semibold">Mark a moment</h2>
+      <h2 className="mb-2 font-semibold">Add an annotation</h2>
       <form onSubmit={submit} className="space-y-2">
         <Field label="Label" required>
           {(p) => (
@@ -33,18 +33,18 @@ export function MarkMoment({ annotate }: { annotate: (label: string, note: strin
           )}
         </Field>
         <Field label="Note">{(p) => <Input {...p} value={note} onChange={(e) => setNote(e.target.value)} />}</Field>
-        <Button type="submit">Mark moment</Button>
+        <Button type="submit">Annotate</Button>
       </form>
     </Card>
   );
 }
 
-export function Moments({ annotations }: { annotations: Annotation[] }) {
+export function AnnotationList({ annotations }: { annotations: Annotation[] }) {
   if (!annotations.length) return null;
   return (
     <Card className="p-4">
-      <h2 className="mb-2 font-semibold">Marked moments</h2>
-      <ul className="space-y-1 text-sm" aria-label="Marked moments">
+      <h2 className="mb-2 font-semibold">Annotations</h2>
+      <ul className="space-y-1 text-sm" aria-label="Annotations">
         {annotations.map((a) => (
           <li key={a.id}>
             <span className="font-mono text-xs text-slate-500">{(a.relMs / 1000).toFixed(1)} s</span>{" "}

@@ -8,7 +8,7 @@ import { actionProblems, type TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
-import { MarkMoment, Moments, Watching } from "./observer-panel";
+import { AnnotateForm, AnnotationList, Watching } from "./observer-panel";
 import { OffScript, StepActions, StepList } from "./protocol-view";
 import { TrialQuestionnaires } from "@/features/questionnaires/trial-questionnaires";
 import { RecordingPanel } from "@/features/recording/recording-panel";
@@ -143,8 +143,8 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           {wizard && trial.participantId && !trial.isRehearsal && (
             <TrialQuestionnaires studyId={trial.studyId} trialId={trial.id} participantId={trial.participantId} />
           )}
-          {!wizard && <MarkMoment annotate={live.annotate} />}
-          <Moments annotations={live.annotations} />
+          {!wizard && <AnnotateForm annotate={live.annotate} />}
+          <AnnotationList annotations={live.annotations} />
           {wizard && (
             <Card className="p-4 text-sm">
               <h2 className="mb-2 font-semibold">Keyboard</h2>

@@ -71,7 +71,7 @@ const NAMES: Record<Resource, string> = {
   condition: "condition",
   recording: "recording",
   session: "session",
-  annotation: "marked moment",
+  annotation: "annotation",
   questionnaire: "questionnaire",
 };
 

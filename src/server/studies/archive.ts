@@ -24,9 +24,9 @@ study.json                  the study, its settings (assignment seed included), 
                             participants (codes, consent, demographics, assignment),
                             experiments with every published version, and sessions
 trials/<id>.json            each trial's full record: protocol version, events, marked
-                            moments, questionnaires
+                            annotations, questionnaires
 trials/<id>-events.csv      each trial's events, one row per event (RFC 4180)
-trials/<id>.eaf             each trial as an ELAN document: steps, actions, deviations, marked moments
+trials/<id>.eaf             each trial as an ELAN document: steps, actions, deviations, annotations
 questionnaire-answers.csv   every submitted answer: one row per participant x item, then scores
 
 Rehearsals are not included. Participants who withdrew are left out, as are their trials

@@ -1,5 +1,5 @@
 // A trial as files: its events as tidy CSV, its full record as JSON (the
-// protocol version embedded, events, marked moments, questionnaires,
+// protocol version embedded, events, annotations, questionnaires,
 // recordings), or an ELAN document for video coding. The trial's download
 // and the study's archive both take them from here, reading the trial once.
 import { asc, eq } from "drizzle-orm";

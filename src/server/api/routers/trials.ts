@@ -160,7 +160,7 @@ export const trialsRouter = router({
     return eventsSince(ctx.db, ctx.row.id, input.afterSeq);
   }),
 
-  /** Moments observers and wizards marked, on the trial's clock. */
+  /** Annotations observers and wizards made, on the trial's clock. */
   annotations: studyProcedure("trial.read", "trial", z.object({ trialId: id })).query(({ ctx }) =>
     ctx.db
       .select({
@@ -177,7 +177,7 @@ export const trialsRouter = router({
       .orderBy(asc(annotations.relMs)),
   ),
 
-  /** A moment marked afterwards, while watching the recording: at any time of the trial. */
+  /** An annotation made afterwards, while watching the recording: at any time of the trial. */
   annotate: studyProcedure(
     "annotation.create",
     "trial",
@@ -195,7 +195,7 @@ export const trialsRouter = router({
     return row!;
   }),
 
-  /** Its author may edit a marked moment; so may the study's owner and researchers. */
+  /** Its author may edit a annotation; so may the study's owner and researchers. */
   editAnnotation: studyProcedure(
     "annotation.create",
     "annotation",
@@ -204,7 +204,7 @@ export const trialsRouter = router({
     if (ctx.row.authorId !== ctx.user.id && !studyRoleMay(ctx.studyRole, "experiment.edit")) {
       throw new TRPCError({
         code: "FORBIDDEN",
-        message: "Only the person who marked this moment, or the study's owner and researchers, may change it.",
+        message: "Only the person who wrote this annotation, or the study's owner and researchers, may change it.",
       });
     }
     await ctx.db

@@ -1,5 +1,5 @@
 "use client";
-// Marking moments afterwards, while watching the recording: at the playhead
+// Annotating afterwards, while watching the recording: at the playhead
 // (or a typed time), and editing them later. The server decides who may edit.
 import { useMutation, useQueryClient } from "@tanstack/react-query";
 import { useState, type FormEvent } from "react";
@@ -9,7 +9,7 @@ import { Input } from "@/ui/field";
 import { Problem } from "@/ui/problem";
 import { Card } from "@/ui/surface";
 
-interface Moment {
+interface Annotation {
   id: string;
   relMs: number;
   label: string;
@@ -17,13 +17,13 @@ interface Moment {
   authorName: string | null;
 }
 
-export function MomentsEditor({
+export function AnnotationsEditor({
   trialId,
-  moments,
+  annotations,
   playheadMs,
 }: {
   trialId: string;
-  moments: Moment[];
+  annotations: Annotation[];
   playheadMs: number | null;
 }) {
   const trpc = useTRPC();
@@ -46,8 +46,8 @@ export function MomentsEditor({
     );
   };
   return (
-    <section aria-label="Marked moments" className="space-y-2">
-      <h2 className="text-lg font-semibold">Marked moments</h2>
+    <section aria-label="Annotations" className="space-y-2">
+      <h2 className="text-lg font-semibold">Annotations</h2>
       <Card className="space-y-3 p-4 text-sm">
         <form onSubmit={submit} className="flex flex-wrap items-end gap-2">
           <Input
@@ -75,12 +75,12 @@ export function MomentsEditor({
             onChange={(e) => setSeconds(e.target.value)}
           />
           <Button type="submit" size="sm" disabled={!label.trim() || annotate.isPending}>
-            Mark at {(at / 1000).toFixed(1)} s
+            Annotate at {(at / 1000).toFixed(1)} s
           </Button>
         </form>
         <Problem error={annotate.error ?? edit.error} />
         <ul className="divide-y divide-slate-100">
-          {moments.map((m) => (
+          {annotations.map((m) => (
             <li key={m.id} className="flex flex-wrap items-center gap-2 py-1.5">
               <span className="w-16 font-mono text-xs text-slate-500">{(m.relMs / 1000).toFixed(1)} s</span>
               {editing?.id === m.id ? (
