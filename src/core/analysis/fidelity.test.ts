@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { simulate, type Command } from "@/core/trial";
+import { simulate, type Command, type TrialProtocol } from "@/core/trial";
 import { done, perfect, protocol } from "./test-trial";
 import { fidelityReport } from "./fidelity";
 
@@ -111,5 +111,58 @@ describe("the fidelity report", () => {
       durationMs: 30,
     });
     expect(r.completed).toBe(true);
+  });
+});
+
+describe("the fidelity report of answers that rejoin", () => {
+  const say = (id: string) => ({ id, type: "say", parameters: { text: id } });
+  const rejoin = { to: "step" as const, stepId: "bye" };
+  const quiz: TrialProtocol = {
+    steps: [
+      {
+        id: "ask",
+        name: "Question",
+        actions: [
+          {
+            id: "q",
+            type: "record_answer",
+            parameters: {
+              options: [
+                { id: "y", label: "Yes" },
+                { id: "n", label: "No" },
+              ],
+            },
+          },
+          { id: "b", type: "branch", parameters: { targets: { y: "yes", n: "no" } } },
+        ],
+      },
+      { id: "yes", name: "Yes", after: rejoin, actions: [say("glad")] },
+      { id: "no", name: "No", after: rejoin, actions: [say("sorry")] },
+      { id: "bye", name: "Goodbye", actions: [say("bye")] },
+    ],
+  };
+
+  it("counts only the path taken: the other answer's step is not reached, and the shared step is", () => {
+    const { log } = simulate(quiz, [
+      { kind: "start" },
+      { kind: "answer", actionId: "q", optionId: "n" },
+      { kind: "next" },
+      { kind: "completed", actionId: "sorry" },
+      { kind: "next" },
+      { kind: "next" },
+      { kind: "completed", actionId: "bye" },
+      { kind: "next" },
+    ]);
+    const r = fidelityReport(quiz, log);
+    expect(r.steps.map((s) => [s.name, s.reached])).toEqual([
+      ["Question", true],
+      ["Yes", false],
+      ["No", true],
+      ["Goodbye", true],
+    ]);
+    expect(r.executionFidelity).toBe(100);
+    expect(r.completed).toBe(true);
+    expect(r.deviations).toEqual({});
+    expect(r.branches).toEqual({ byLogic: 1, byHand: 0 });
   });
 });
