@@ -4,7 +4,7 @@ import { createAuth, type Auth } from "./auth/auth";
 import { createDatabase, type Database } from "@/store/client";
 import { mediaStorage } from "./media";
 import { browserRuntimeUrl } from "./runtime-url";
-import type { Context, SessionUser } from "./api/trpc";
+import type { Context, SignedInUser } from "./api/trpc";
 import { SYSTEM_ROLES, type SystemRole } from "@/core/access/policy";
 import { channelsOf, transportConfig } from "@/robots/transports/settings";
 
@@ -44,13 +44,13 @@ export function server(): Server {
   return globalForServer.hriServer;
 }
 
-export function toSessionUser(u: {
+export function toSignedInUser(u: {
   id: string;
   name: string;
   email: string;
   role?: unknown;
   disabled?: unknown;
-}): SessionUser | null {
+}): SignedInUser | null {
   if (u.disabled === true) return null;
   const role = SYSTEM_ROLES.includes(u.role as SystemRole) ? (u.role as SystemRole) : "observer";
   return { id: u.id, name: u.name, email: u.email, role };
@@ -58,6 +58,6 @@ export function toSessionUser(u: {
 
 export async function contextFromHeaders(headers: Headers): Promise<Context> {
   const { db, auth, secret, runtimeUrl, media, robotChannels } = server();
-  const session = await auth.api.getSession({ headers });
-  return { db, user: session ? toSessionUser(session.user) : null, secret, runtimeUrl, media, robotChannels };
+  const signedIn = await auth.api.getSession({ headers });
+  return { db, user: signedIn ? toSignedInUser(signedIn.user) : null, secret, runtimeUrl, media, robotChannels };
 }

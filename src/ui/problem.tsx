@@ -18,7 +18,7 @@ export function Problem({ error }: { error: unknown }) {
 
 export function messageOf(error: unknown): string {
   const e = error as ApiError;
-  if (e?.data?.code === "UNAUTHORIZED") return "Your session has ended. Please sign in again.";
+  if (e?.data?.code === "UNAUTHORIZED") return "You are signed out. Please sign in again.";
   return e?.message ?? "Something went wrong. Please try again.";
 }
 

@@ -5,7 +5,7 @@ import { join } from "node:path";
 import { LocalStorage } from "../../src/server/media/local-storage";
 import { fetchRequestHandler } from "@trpc/server/adapters/fetch";
 import type { SystemRole } from "../../src/core/access/policy";
-import { createCallerFactory, type Context, type SessionUser } from "../../src/server/api/trpc";
+import { createCallerFactory, type Context, type SignedInUser } from "../../src/server/api/trpc";
 import { appRouter } from "../../src/server/api/root";
 import { createAccount } from "../../src/server/auth/accounts";
 import type { Database } from "../../src/store/client";
@@ -29,7 +29,7 @@ export const TEST_SECRET = "test-secret-".padEnd(40, "x");
 /** The ways to the robot `npm start` opens with no robot settings: the simulated NAO6's rosbridge and SSH. */
 export const DEMO_CHANNELS = { rosbridge: true, simulator: true, ssh: true, http: false };
 
-export async function newPerson(db: Database, label: string, role: SystemRole = "researcher"): Promise<SessionUser> {
+export async function newPerson(db: Database, label: string, role: SystemRole = "researcher"): Promise<SignedInUser> {
   const email = `${label}-${crypto.randomUUID().slice(0, 8)}@example.org`;
   const created = await createAccount(db, { name: label, email, password: "password-123", role });
   return { id: created.id, name: created.name, email: created.email, role };
@@ -41,12 +41,12 @@ export function testMedia(maxBytes = 8 * 1024 * 1024): Context["media"] {
 }
 
 export async function buildFixture(db: Database) {
-  const people = {} as Record<Exclude<Caller, "anonymous">, SessionUser>;
+  const people = {} as Record<Exclude<Caller, "anonymous">, SignedInUser>;
   for (const caller of Object.keys(SYSTEM_ROLE) as Array<keyof typeof SYSTEM_ROLE>) {
     people[caller] = await newPerson(db, caller, SYSTEM_ROLE[caller]);
   }
   const media = testMedia();
-  const contextOf = (user: SessionUser | null) => ({
+  const contextOf = (user: SignedInUser | null) => ({
     db,
     user,
     secret: TEST_SECRET,
@@ -57,7 +57,7 @@ export async function buildFixture(db: Database) {
   const context = (caller: Caller) => contextOf(caller === "anonymous" ? null : people[caller]);
   const api = (caller: Caller) => callerFactory(context(caller));
   /** The API as anyone else, e.g. the owner of a second study. */
-  const apiAs = (user: SessionUser) => callerFactory(contextOf(user));
+  const apiAs = (user: SignedInUser) => callerFactory(contextOf(user));
   /** An active study (it runs trials) whose members are the four study-role callers. */
   async function newStudy(title = "Fixture study") {
     const created = await api("owner").studies.create({ title });

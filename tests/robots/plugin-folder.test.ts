@@ -43,7 +43,7 @@ describe("a folder with a bad file (fail soft)", () => {
     const folder = await loadPluginFolder(dir);
     expect(folder.plugins.map((p) => p.robotId)).toEqual(["nao6-ros2"]);
     expect(folder.errors).toEqual([
-      { file: "b-broken.json", path: "/actions/2/timeout", code: "schema", reason: "must be an integer" },
+      { file: "b-broken.json", path: "/actions/2/timeout", code: "schema", reason: "must be a whole number" },
       {
         file: "c-same-robot.json",
         path: "/robotId",

@@ -1,12 +1,12 @@
 "use client";
 import Link from "next/link";
 import { useRouter } from "next/navigation";
-import type { SessionUser } from "@/server/api/trpc";
+import type { SignedInUser } from "@/server/api/trpc";
 import { authClient } from "@/lib/auth-client";
 import { Button } from "@/ui/button";
 import { Badge, ROLE_TONE } from "@/ui/surface";
 
-export function TopBar({ user }: { user: SessionUser }) {
+export function TopBar({ user }: { user: SignedInUser }) {
   const router = useRouter();
   return (
     <header className="border-b border-slate-200 bg-white">

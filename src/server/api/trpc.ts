@@ -20,7 +20,7 @@ import type { MediaStorage } from "../media/storage";
 import { logUnexpected, unexpectedMessage } from "@/store/error-reference";
 import { describeIssues, fieldIssues, type FieldIssue } from "./errors";
 
-export interface SessionUser {
+export interface SignedInUser {
   id: string;
   name: string;
   email: string;
@@ -29,7 +29,7 @@ export interface SessionUser {
 
 export interface Context {
   db: Database;
-  user: SessionUser | null;
+  user: SignedInUser | null;
   /** Signs the trial runtime's socket tokens. */
   secret: string;
   /** Where browsers reach the trial runtime. */

@@ -31,7 +31,7 @@ export function createAuth(settings: AuthSettings) {
       provider: "pg",
       schema: {
         user: schema.user,
-        session: schema.session,
+        session: schema.login,
         account: schema.account,
         verification: schema.verification,
         rateLimit: schema.rateLimit,

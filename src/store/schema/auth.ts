@@ -16,7 +16,8 @@ export const user = pgTable("user", {
   updatedAt: timestamp("updated_at", { withTimezone: true }).notNull().defaultNow(),
 });
 
-export const session = pgTable(
+// better-auth's sign-ins (its "session"); a study session is a participant's appointment (./sessions.ts).
+export const login = pgTable(
   "session",
   {
     id: text("id").primaryKey(),

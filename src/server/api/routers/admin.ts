@@ -6,7 +6,7 @@ import { AUDIT_AREA_VALUES } from "@/core/access/audit";
 import { SYSTEM_ROLES } from "@/core/access/policy";
 import { audit } from "../../audit";
 import { createAccount } from "../../auth/accounts";
-import { auditLog, participants, pluginRepositories, session, studies, user } from "@/store/schema";
+import { auditLog, participants, login, pluginRepositories, studies, user } from "@/store/schema";
 import { guarded, router } from "../trpc";
 import { id, text } from "../validation";
 
@@ -97,7 +97,7 @@ export const adminRouter = router({
             .returning();
           if (!row) throw new TRPCError({ code: "NOT_FOUND", message: "No such account." });
           // A disabled account is signed out everywhere at once.
-          if (input.disabled) await tx.delete(session).where(eq(session.userId, input.userId));
+          if (input.disabled) await tx.delete(login).where(eq(login.userId, input.userId));
           await audit(tx, {
             actorId: ctx.user.id,
             action: input.disabled ? "user.disable" : "user.enable",
