@@ -1,12 +1,12 @@
 // A study's sessions: participant, condition, planned time and wizard. The
 // wizard's "My sessions" lists theirs and starts the right trial with one
 // click; under a blind, nothing here names the condition to a wizard.
+import { assertWizardOf } from "../../studies/wizard-gate";
 import { TRPCError } from "@trpc/server";
 import { and, asc, desc, eq, inArray, isNull, or, sql } from "drizzle-orm";
 import { z } from "zod";
 import { blindingFor } from "@/core/studies/blinding";
 import { readSettings } from "@/core/studies/settings";
-import type { Database } from "@/store/client";
 import {
   conditions,
   experimentVersions,
@@ -37,18 +37,6 @@ function columns(hideConditions: boolean) {
     trialId: sessions.trialId,
     trialStatus: trials.status,
   };
-}
-
-async function assertWizardOf(db: Database, studyId: string, wizardId: string) {
-  const [m] = await db
-    .select()
-    .from(studyMembers)
-    .where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
-  if (!m || m.role === "observer")
-    throw new TRPCError({
-      code: "BAD_REQUEST",
-      message: "Please correct: wizardId: the wizard must be an owner, researcher or wizard of this study",
-    });
 }
 
 export const sessionsRouter = router({

@@ -1,3 +1,4 @@
+import { assertWizardOf } from "../../studies/wizard-gate";
 import { TRPCError } from "@trpc/server";
 import { and, asc, desc, eq, sql } from "drizzle-orm";
 import { alias } from "drizzle-orm/pg-core";
@@ -5,16 +6,7 @@ import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
 import { blindTrial } from "@/core/studies/blinding";
 import type { Database } from "@/store/client";
-import {
-  annotations,
-  experimentVersions,
-  experiments,
-  participants,
-  studyMembers,
-  trialSamples,
-  trials,
-  user,
-} from "@/store/schema";
+import { annotations, experimentVersions, experiments, participants, trialSamples, trials, user } from "@/store/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "@/core/protocol/snapshot";
 import { eventsSince } from "@/store/event-store";
@@ -85,18 +77,7 @@ export const trialsRouter = router({
     await assertRunsTrials(ctx.db, studyId);
     if (input.participantId) await assertMayTakePart(ctx.db, input.participantId, studyId);
     const wizardId = input.wizardId === undefined ? ctx.user.id : input.wizardId;
-    if (wizardId !== null) {
-      const [m] = await ctx.db
-        .select()
-        .from(studyMembers)
-        .where(and(eq(studyMembers.studyId, studyId), eq(studyMembers.userId, wizardId)));
-      if (!m || m.role === "observer") {
-        throw new TRPCError({
-          code: "BAD_REQUEST",
-          message: "Please correct: wizardId: the wizard must be an owner, researcher or wizard of this study",
-        });
-      }
-    }
+    if (wizardId !== null) await assertWizardOf(ctx.db, studyId, wizardId);
     const [row] = await ctx.db
       .insert(trials)
       .values({
