@@ -22,6 +22,17 @@ describe("robot plugins on the server", () => {
     expect(problems).toEqual([]);
   });
 
+  it("removes a repository from the list, and adding it again brings it back with the trust chosen then", async () => {
+    const admin = f.api("admin");
+    const url = `http://127.0.0.1:9/${crypto.randomUUID()}/`;
+    const added = await admin.plugins.repositories.add({ url, trust: "community" });
+    await admin.plugins.repositories.remove({ repositoryId: added.id });
+    expect((await admin.plugins.repositories.list()).map((r) => r.url)).not.toContain(url);
+    const again = await admin.plugins.repositories.add({ url, trust: "verified" });
+    expect(again).toMatchObject({ id: added.id, trust: "verified", enabled: true });
+    await expect(admin.plugins.repositories.add({ url })).rejects.toMatchObject({ code: "CONFLICT" });
+  });
+
   it("records the exact plugin version in a published version", async () => {
     const study = await f.newStudy();
     const e = await f.api("owner").experiments.create({ studyId: study.id, name: "E", robotId: "nao6-ros2" });

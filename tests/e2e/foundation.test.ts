@@ -65,6 +65,10 @@ describe.sequential("the platform foundation, in the browser", () => {
       .getByText("verified")
       .waitFor();
     await screenshot(page, "admin-plugins");
+    // Removed, it leaves the list (robots already published with it keep their pinned files).
+    page.once("dialog", (dialog) => void dialog.accept());
+    await page.getByRole("button", { name: "Remove: HRIStudio Official Robot Plugins" }).click();
+    await page.getByText("No repositories yet.").waitFor();
     await page.context().close();
     repo.close();
   });
@@ -200,6 +204,24 @@ describe.sequential("the platform foundation, in the browser", () => {
     expect(
       await log.getByRole("row").filter({ hasText: "created an account" }).filter({ hasText: "Tia Temp" }).count(),
     ).toBe(1);
+    await page.context().close();
+  });
+
+  it("lets the owner delete a study only by typing its title", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await page.goto(studyUrl);
+    await page.getByRole("button", { name: "Delete study…" }).click();
+    const dialog = page.getByRole("dialog", { name: "Delete this study?" });
+    const confirm = dialog.getByRole("button", { name: "Delete the study and all its data" });
+    await dialog.getByLabel(/Type the study's title/).fill("Gesture and");
+    expect(await confirm.isDisabled()).toBe(true);
+    await dialog.getByLabel(/Type the study's title/).fill("Gesture and recall");
+    await expectAccessible(page, "the Delete study dialog");
+    await confirm.click();
+    await page.waitForURL(/\/studies$/);
+    await page.getByRole("link", { name: /Storytelling and memory/ }).waitFor();
+    expect(await page.getByRole("link", { name: /Gesture and recall/ }).count()).toBe(0);
     await page.context().close();
   });
 

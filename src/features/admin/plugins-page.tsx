@@ -37,6 +37,7 @@ export function PluginsPage() {
     trpc.plugins.repositories.add.mutationOptions({ onSuccess: () => (setUrl(""), setTrust("community"), refresh()) }),
   );
   const sync = useMutation(trpc.plugins.repositories.sync.mutationOptions({ onSuccess: refresh }));
+  const remove = useMutation(trpc.plugins.repositories.remove.mutationOptions({ onSuccess: refresh }));
   const submit = (e: FormEvent) => {
     e.preventDefault();
     add.mutate({ url, trust });
@@ -69,7 +70,7 @@ export function PluginsPage() {
         {add.error && !fieldError(add.error, "url") && <Problem error={add.error} />}
       </Card>
 
-      <Problem error={repositories.error ?? sync.error} />
+      <Problem error={repositories.error ?? sync.error ?? remove.error} />
       {sync.isPending && <Spinner label="Syncing: fetching and checking every plugin file…" />}
       {sync.data && (
         <Card role="region" className="p-5 text-sm" aria-label="What the last sync changed">
@@ -130,6 +131,23 @@ export function PluginsPage() {
                     onClick={() => sync.mutate({ repositoryId: r.id })}
                   >
                     Sync now
+                  </Button>
+                  <Button
+                    size="sm"
+                    variant="ghost"
+                    className="ml-2 text-red-800"
+                    aria-label={`Remove: ${r.name}`}
+                    disabled={remove.isPending}
+                    onClick={() => {
+                      if (
+                        window.confirm(
+                          `Remove ${r.name}? Its robots stay available to experiments already published with them.`,
+                        )
+                      )
+                        remove.mutate({ repositoryId: r.id });
+                    }}
+                  >
+                    Remove
                   </Button>
                 </Td>
               </tr>

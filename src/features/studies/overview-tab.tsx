@@ -10,6 +10,7 @@ import { fieldError, Problem } from "@/ui/problem";
 import { Card } from "@/ui/surface";
 import type { StudySettings } from "@/core/studies/settings";
 import { STUDY_STATUS_HINT, STUDY_STATUSES, type StudyStatus } from "@/core/studies/status";
+import { DeleteStudy } from "./delete-study";
 import { DemographicsEditor } from "./demographics-editor";
 
 type Study = {
@@ -56,82 +57,89 @@ export function OverviewTab({ study }: { study: Study }) {
     });
   };
   return (
-    <Card className="max-w-2xl p-6">
-      <form onSubmit={submit} className="space-y-4">
-        <Field label="Title" required error={fieldError(update.error, "title")}>
-          {(p) => <Input {...p} value={title} onChange={(e) => setTitle(e.target.value)} />}
-        </Field>
-        <Field label="Description">
-          {(p) => <Textarea {...p} value={description} onChange={(e) => setDescription(e.target.value)} />}
-        </Field>
-        <Field label="Status" hint={STUDY_STATUS_HINT}>
-          {(p) => (
-            <NativeSelect {...p} value={status} onChange={(e) => setStatus(e.target.value as StudyStatus)}>
-              {STUDY_STATUSES.map((s) => (
-                <option key={s} value={s}>
-                  {s}
-                </option>
-              ))}
-            </NativeSelect>
-          )}
-        </Field>
-        <label className="flex items-center gap-2 text-sm">
-          <input
-            type="checkbox"
-            className="h-4 w-4"
-            checked={requireConsent}
-            onChange={(e) => setRequireConsent(e.target.checked)}
-          />
-          Trials need a participant whose consent is recorded
-        </label>
-        <Field
-          label="Consent document version"
-          hint="Recorded with each consent, so you know which text a participant agreed to."
-        >
-          {(p) => (
-            <Input {...p} value={consentDocumentVersion} onChange={(e) => setConsentDocumentVersion(e.target.value)} />
-          )}
-        </Field>
-        <fieldset className="space-y-2 rounded-md border border-slate-200 p-3">
-          <legend className="px-1 text-sm font-medium text-slate-700">Blinding</legend>
-          <label className="flex items-start gap-2 text-sm">
+    <div className="space-y-6">
+      <Card className="max-w-2xl p-6">
+        <form onSubmit={submit} className="space-y-4">
+          <Field label="Title" required error={fieldError(update.error, "title")}>
+            {(p) => <Input {...p} value={title} onChange={(e) => setTitle(e.target.value)} />}
+          </Field>
+          <Field label="Description">
+            {(p) => <Textarea {...p} value={description} onChange={(e) => setDescription(e.target.value)} />}
+          </Field>
+          <Field label="Status" hint={STUDY_STATUS_HINT}>
+            {(p) => (
+              <NativeSelect {...p} value={status} onChange={(e) => setStatus(e.target.value as StudyStatus)}>
+                {STUDY_STATUSES.map((s) => (
+                  <option key={s} value={s}>
+                    {s}
+                  </option>
+                ))}
+              </NativeSelect>
+            )}
+          </Field>
+          <label className="flex items-center gap-2 text-sm">
             <input
               type="checkbox"
-              className="mt-0.5 h-4 w-4"
-              checked={blinding.conditionsFromWizards}
-              onChange={(e) => setBlinding({ ...blinding, conditionsFromWizards: e.target.checked })}
+              className="h-4 w-4"
+              checked={requireConsent}
+              onChange={(e) => setRequireConsent(e.target.checked)}
             />
-            <span>
-              Hide each session's condition from wizards
-              <span className="block text-xs text-slate-500">
-                Wizards run sessions from “My sessions” and never see condition or experiment names.
-              </span>
-            </span>
+            Trials need a participant whose consent is recorded
           </label>
-          <label className="flex items-start gap-2 text-sm">
-            <input
-              type="checkbox"
-              className="mt-0.5 h-4 w-4"
-              checked={blinding.resultsUntilComplete}
-              onChange={(e) => setBlinding({ ...blinding, resultsUntilComplete: e.target.checked })}
-            />
-            <span>
-              Hide results from researchers and observers until the study is completed
-              <span className="block text-xs text-slate-500">
-                Analysis and exports open when the status is set to completed. Lifting a blind is logged.
+          <Field
+            label="Consent document version"
+            hint="Recorded with each consent, so you know which text a participant agreed to."
+          >
+            {(p) => (
+              <Input
+                {...p}
+                value={consentDocumentVersion}
+                onChange={(e) => setConsentDocumentVersion(e.target.value)}
+              />
+            )}
+          </Field>
+          <fieldset className="space-y-2 rounded-md border border-slate-200 p-3">
+            <legend className="px-1 text-sm font-medium text-slate-700">Blinding</legend>
+            <label className="flex items-start gap-2 text-sm">
+              <input
+                type="checkbox"
+                className="mt-0.5 h-4 w-4"
+                checked={blinding.conditionsFromWizards}
+                onChange={(e) => setBlinding({ ...blinding, conditionsFromWizards: e.target.checked })}
+              />
+              <span>
+                Hide each session's condition from wizards
+                <span className="block text-xs text-slate-500">
+                  Wizards run sessions from “My sessions” and never see condition or experiment names.
+                </span>
               </span>
-            </span>
-          </label>
-        </fieldset>
-        <DemographicsEditor fields={demographics} onChange={setDemographics} />
-        {update.error && !fieldError(update.error, "title") && <Problem error={update.error} />}
-        <div className="flex items-center gap-3">
-          <Button type="submit" disabled={update.isPending}>
-            Save changes
-          </Button>
-          {update.isSuccess && <span className="text-sm text-emerald-700">Saved.</span>}
-        </div>
-      </form>
-    </Card>
+            </label>
+            <label className="flex items-start gap-2 text-sm">
+              <input
+                type="checkbox"
+                className="mt-0.5 h-4 w-4"
+                checked={blinding.resultsUntilComplete}
+                onChange={(e) => setBlinding({ ...blinding, resultsUntilComplete: e.target.checked })}
+              />
+              <span>
+                Hide results from researchers and observers until the study is completed
+                <span className="block text-xs text-slate-500">
+                  Analysis and exports open when the status is set to completed. Lifting a blind is logged.
+                </span>
+              </span>
+            </label>
+          </fieldset>
+          <DemographicsEditor fields={demographics} onChange={setDemographics} />
+          {update.error && !fieldError(update.error, "title") && <Problem error={update.error} />}
+          <div className="flex items-center gap-3">
+            <Button type="submit" disabled={update.isPending}>
+              Save changes
+            </Button>
+            {update.isSuccess && <span className="text-sm text-emerald-700">Saved.</span>}
+          </div>
+        </form>
+      </Card>
+      {studyRoleMay(study.myRole, "study.delete") && <DeleteStudy study={study} />}
+    </div>
   );
 }

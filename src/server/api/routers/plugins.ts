@@ -52,7 +52,12 @@ export const pluginsRouter = router({
 
   repositories: router({
     list: guarded("admin.plugins").query(({ ctx }) =>
-      ctx.db.select().from(pluginRepositories).orderBy(asc(pluginRepositories.name)),
+      // A removed repository is kept (published experiments point at its plugins) but no longer listed.
+      ctx.db
+        .select()
+        .from(pluginRepositories)
+        .where(eq(pluginRepositories.enabled, true))
+        .orderBy(asc(pluginRepositories.name)),
     ),
 
     add: guarded("admin.plugins")
@@ -61,7 +66,12 @@ export const pluginsRouter = router({
         const [row] = await ctx.db
           .insert(pluginRepositories)
           .values({ url: input.url, name: input.url, trust: input.trust, createdBy: ctx.user.id })
-          .onConflictDoNothing()
+          // Adding a removed repository again brings it back, with the trust chosen now.
+          .onConflictDoUpdate({
+            target: pluginRepositories.url,
+            set: { enabled: true, trust: input.trust },
+            setWhere: eq(pluginRepositories.enabled, false),
+          })
           .returning();
         if (!row) throw new TRPCError({ code: "CONFLICT", message: "That repository is already added." });
         await audit(ctx.db, {
