@@ -6,7 +6,7 @@
 import { spawn } from "node:child_process";
 import { join } from "node:path";
 import { startDefaultSimulator } from "../src/robots/simulator/main";
-import { SOCKET_PROTOCOL_VERSION } from "../src/core/socket/messages";
+import { SOCKET_MESSAGES_VERSION } from "../src/core/socket/messages";
 import { freePort } from "../src/store/embedded";
 import { createAccount } from "../src/server/auth/accounts";
 import { createDatabase } from "../src/store/client";
@@ -100,7 +100,7 @@ async function socket(
   ws.send(
     JSON.stringify({
       type: "hello",
-      version: SOCKET_PROTOCOL_VERSION,
+      version: SOCKET_MESSAGES_VERSION,
       token: signSocketToken({ userId, trialId }, SECRET),
       lastSeq: 0,
     }),

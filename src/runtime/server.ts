@@ -1,6 +1,6 @@
 // The trial runtime's WebSocket server (Bun). Every message is parsed against
-// the protocol file and decided against the socket's access, which the
-// runtime keeps fresh from the database: loaded at hello, reloaded whenever
+// the socket messages (src/core/socket/messages.ts) and decided against the
+// socket's access, which the runtime keeps fresh from the database: loaded at hello, reloaded whenever
 // PostgreSQL announces a change (see access.ts), never trusted from the client.
 import {
   annotateVerdict,
@@ -17,7 +17,7 @@ import type { StoredEvent } from "@/core/trial";
 import { eventsSince, STATUS_AFTER } from "@/store/event-store";
 import {
   parseClientMessage,
-  SOCKET_PROTOCOL_VERSION,
+  SOCKET_MESSAGES_VERSION,
   toWire,
   type ClientMessage,
   type ServerMessage,
@@ -136,7 +136,7 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
     const now = ws.data.access;
     send(ws, {
       type: "welcome",
-      version: SOCKET_PROTOCOL_VERSION,
+      version: SOCKET_MESSAGES_VERSION,
       trialId,
       role: now.studyRole!,
       mayRun: mayRun(now),

@@ -5,7 +5,7 @@
 import { and, eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { studies, studyMembers, trials, user } from "../../src/store/schema";
-import { SOCKET_PROTOCOL_VERSION } from "../../src/core/socket/messages";
+import { SOCKET_MESSAGES_VERSION } from "../../src/core/socket/messages";
 import { socketFixture } from "../support/socket-fixture";
 import { connectTrial, type TrialSocket } from "../support/socket";
 
@@ -44,7 +44,7 @@ describe.sequential("the trial socket's access", () => {
     for (let i = 0; i < 5; i++) {
       observer.send({
         type: "hello",
-        version: SOCKET_PROTOCOL_VERSION,
+        version: SOCKET_MESSAGES_VERSION,
         token: f.token(f.a.people.observer!, trialId),
         lastSeq: 0,
       });
@@ -52,7 +52,7 @@ describe.sequential("the trial socket's access", () => {
     // Not even a valid token for another study's trial changes what this connection follows.
     observer.send({
       type: "hello",
-      version: SOCKET_PROTOCOL_VERSION,
+      version: SOCKET_MESSAGES_VERSION,
       token: f.token(f.b.people.owner!, otherStudysTrial),
       lastSeq: 0,
     });

@@ -1,7 +1,7 @@
 // A trial-runtime client for tests: a real WebSocket speaking the socket
 // protocol, checking every message the runtime sends as the browser does.
 import WebSocket from "ws";
-import { parseServerMessage, SOCKET_PROTOCOL_VERSION } from "../../src/core/socket/messages";
+import { parseServerMessage, SOCKET_MESSAGES_VERSION } from "../../src/core/socket/messages";
 
 export interface TrialSocket {
   messages: Array<Record<string, unknown>>;
@@ -64,7 +64,7 @@ export async function connectTrial(url: string, token: string, lastSeq = 0): Pro
       ok();
     }),
   );
-  socket.send({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token, lastSeq });
+  socket.send({ type: "hello", version: SOCKET_MESSAGES_VERSION, token, lastSeq });
   await Promise.race([socket.next((m) => m.type === "welcome" || m.type === "rejected"), closed]);
   return socket;
 }

@@ -33,7 +33,7 @@ export function lostAccess(access: TrialAccess): string | null {
   return null;
 }
 
-/** May the caller send this command (a kind from the socket protocol) to the trial? */
+/** May the caller send this command (a kind from the socket messages) to the trial? */
 export function commandVerdict(access: TrialAccess, kind: string): SocketVerdict {
   const lost = lostAccess(access);
   if (lost) return refuse(lost);

@@ -1,10 +1,10 @@
 import { describe, expect, it } from "vitest";
 import type { StoredEvent } from "@/core/trial";
-import { parseClientMessage, parseServerMessage, SOCKET_PROTOCOL_VERSION, toWire } from "./messages";
+import { parseClientMessage, parseServerMessage, SOCKET_MESSAGES_VERSION, toWire } from "./messages";
 
-describe("the socket protocol", () => {
+describe("the socket messages", () => {
   it.each<[string, string, string | null]>([
-    ["a hello", JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: "t", lastSeq: 0 }), null],
+    ["a hello", JSON.stringify({ type: "hello", version: SOCKET_MESSAGES_VERSION, token: "t", lastSeq: 0 }), null],
     [
       "a command",
       JSON.stringify({ type: "command", requestId: "r1", command: { kind: "answer", actionId: "a", optionId: "o" } }),
@@ -13,8 +13,8 @@ describe("the socket protocol", () => {
     ["not JSON", "{nope", "The message is not valid JSON."],
     ["an unknown type", JSON.stringify({ type: "shout" }), "The message is not understood: type: "],
     [
-      "an old protocol version",
-      JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION - 1, token: "t", lastSeq: 0 }),
+      "an old socket messages version",
+      JSON.stringify({ type: "hello", version: SOCKET_MESSAGES_VERSION - 1, token: "t", lastSeq: 0 }),
       "The message is not understood: version: ",
     ],
     [
@@ -24,7 +24,7 @@ describe("the socket protocol", () => {
     ],
     [
       "a negative lastSeq",
-      JSON.stringify({ type: "hello", version: SOCKET_PROTOCOL_VERSION, token: "t", lastSeq: -1 }),
+      JSON.stringify({ type: "hello", version: SOCKET_MESSAGES_VERSION, token: "t", lastSeq: -1 }),
       "The message is not understood: lastSeq: ",
     ],
   ])("%s", (_name, raw, reasonStart) => {
@@ -42,7 +42,7 @@ const stored: StoredEvent = {
   serverTime: new Date("2026-01-01T10:00:00.000Z"),
   actorId: "u1",
 };
-const welcome = (events: unknown[], version: number = SOCKET_PROTOCOL_VERSION) =>
+const welcome = (events: unknown[], version: number = SOCKET_MESSAGES_VERSION) =>
   JSON.stringify({ type: "welcome", version, trialId: "t1", role: "wizard", mayRun: true, events, viewers: [] });
 
 describe("the browser's check of what the runtime sends", () => {
@@ -55,8 +55,8 @@ describe("the browser's check of what the runtime sends", () => {
     ["not JSON", "{nope", "The message is not valid JSON."],
     ["an unknown type", JSON.stringify({ type: "shout" }), "The message is not understood: type: "],
     [
-      "a welcome from another protocol version",
-      welcome([], SOCKET_PROTOCOL_VERSION + 1),
+      "a welcome from another socket messages version",
+      welcome([], SOCKET_MESSAGES_VERSION + 1),
       "The message is not understood: version: ",
     ],
     [

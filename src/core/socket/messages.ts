@@ -6,7 +6,7 @@ import type { StoredEvent } from "@/core/trial";
 
 // 2: tokens are single use and carry no role; one hello per connection; the
 // server sends "access" when the caller's role or rights change.
-export const SOCKET_PROTOCOL_VERSION = 2;
+export const SOCKET_MESSAGES_VERSION = 2;
 
 /** Every id a message carries is declared with this, so tests can find them all. */
 export const id = z.string().min(1).max(100);
@@ -39,7 +39,7 @@ export const clientMessageSchema = z.discriminatedUnion("type", [
   // First and only once on a connection (the token works once); `lastSeq` asks for exactly what was missed.
   z.object({
     type: z.literal("hello"),
-    version: z.literal(SOCKET_PROTOCOL_VERSION),
+    version: z.literal(SOCKET_MESSAGES_VERSION),
     token: z.string().min(1).max(4000),
     lastSeq: z.number().int().min(0),
   }),
@@ -79,7 +79,7 @@ export const serverMessageSchema = z.discriminatedUnion("type", [
   // `mayRun`: whether this caller may command this trial now.
   z.object({
     type: z.literal("welcome"),
-    version: z.literal(SOCKET_PROTOCOL_VERSION),
+    version: z.literal(SOCKET_MESSAGES_VERSION),
     trialId: id,
     role: z.string(),
     mayRun: z.boolean(),

@@ -9,7 +9,7 @@ import { type Command, fold, type TrialProtocol } from "@/core/trial";
 import { type Refusal, refusalInForce } from "@/core/trial/refusals";
 import {
   parseServerMessage,
-  SOCKET_PROTOCOL_VERSION,
+  SOCKET_MESSAGES_VERSION,
   type ClientMessage,
   type ServerMessage,
   type Viewer,
@@ -67,7 +67,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         ws.send(
           JSON.stringify({
             type: "hello",
-            version: SOCKET_PROTOCOL_VERSION,
+            version: SOCKET_MESSAGES_VERSION,
             token: ticket.token,
             lastSeq: lastSeq.current,
           } satisfies ClientMessage),

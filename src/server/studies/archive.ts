@@ -23,7 +23,7 @@ const README = `HRIStudio study archive
 study.json                  the study, its settings (assignment seed included), conditions,
                             participants (codes, consent, demographics, assignment),
                             experiments with every published version, and sessions
-trials/<id>.json            each trial's full record: protocol version, events, marked
+trials/<id>.json            each trial's full record: protocol version, events,
                             annotations, questionnaires
 trials/<id>-events.csv      each trial's events, one row per event (RFC 4180)
 trials/<id>.eaf             each trial as an ELAN document: steps, actions, deviations, annotations
