@@ -118,6 +118,7 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "versions.publish": [EDITORS, async (f, b) => ({ experimentId: (await publishable(f, b)).id })],
   "versions.diff": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id, from: 1, to: 1 })],
   "experiments.exportFile": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "experiments.duplicate": [EDITORS, (_f, b) => ({ experimentId: b.experiment.id })],
   "experiments.importFile": [
     EDITORS,
     async (f, b) => ({

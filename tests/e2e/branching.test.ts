@@ -107,6 +107,22 @@ describe.sequential("branches that rejoin, in the browser", () => {
     } finally {
       ears.close();
     }
+
+    // A copy to vary without touching the original: the same steps, rejoining the same way.
+    await page.goto(studyUrl);
+    await page.getByRole("tab", { name: "Experiments" }).click();
+    await page.getByRole("button", { name: "Duplicate Planet quiz" }).click();
+    await page.waitForURL(/\/experiments\//);
+    await expect.poll(() => page.getByLabel("Experiment name").inputValue()).toBe("Planet quiz (copy)");
+    await expect
+      .poll(() => page.locator("[data-leads-to]").evaluateAll((ps) => ps.map((p) => p.textContent?.trim())))
+      .toEqual([
+        "Then where the answer leads",
+        'Then "Goodbye"',
+        'Then "Goodbye"',
+        'Then "Goodbye"',
+        "Then the end of the trial",
+      ]);
     await page.context().close();
   }, 300_000);
 });

@@ -25,6 +25,9 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
     trpc.trials.rehearse.mutationOptions({ onSuccess: (trial) => router.push(`/trials/${trial.id}`) }),
   );
   const canRehearse = studyRoleMay(role, "trial.create");
+  const duplicate = useMutation(
+    trpc.experiments.duplicate.mutationOptions({ onSuccess: (copy) => router.push(`/experiments/${copy.id}`) }),
+  );
   return (
     <div className="space-y-4">
       {edit && (
@@ -35,7 +38,7 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
       )}
       <ListView
         query={experiments}
-        problem={publish.error ?? rehearse.error}
+        problem={publish.error ?? rehearse.error ?? duplicate.error}
         empty={<EmptyState title="No experiments yet." />}
         columns={
           <>
@@ -76,6 +79,18 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
                   onClick={() => rehearse.mutate({ experimentId: e.id })}
                 >
                   Rehearse
+                </Button>
+              )}
+              {edit && (
+                <Button
+                  variant="ghost"
+                  size="sm"
+                  aria-label={`Duplicate ${e.name}`}
+                  title="A copy of the design in this study, to change without touching the original"
+                  disabled={duplicate.isPending}
+                  onClick={() => duplicate.mutate({ experimentId: e.id })}
+                >
+                  Duplicate
                 </Button>
               )}
               {edit && (

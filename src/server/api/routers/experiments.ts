@@ -1,7 +1,7 @@
 import { asc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
 import { experimentVersions, experiments, steps } from "@/store/schema";
-import { exportFile, importFile } from "../../experiments/exchange";
+import { duplicate, exportFile, importFile } from "../../experiments/exchange";
 import { loadDesign, saveDesign } from "../../experiments/design";
 import { qualified } from "@/store/qualified";
 import { router, studyProcedure } from "../trpc";
@@ -53,6 +53,11 @@ export const experimentsRouter = router({
     "study",
     z.object({ studyId: id, text: z.string().max(2_000_000, "the file must be smaller than 2 MB") }),
   ).mutation(({ ctx, input }) => importFile(ctx.db, ctx.studyId, input.text, ctx.user.id)),
+
+  /** A copy of the draft in the same study, "… (copy)": the design only, never its versions or trials. */
+  duplicate: studyProcedure("experiment.edit", "experiment", z.object({ experimentId: id })).mutation(({ ctx }) =>
+    duplicate(ctx.db, ctx.row.id, ctx.user.id),
+  ),
 
   /** The whole design in one transaction; refused if someone saved since `baseRevision`. */
   saveDesign: studyProcedure("experiment.edit", "experiment", designInput).mutation(({ ctx, input }) =>
