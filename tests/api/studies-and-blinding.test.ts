@@ -141,6 +141,29 @@ describe("withdrawal", () => {
   });
 });
 
+describe("the methods text", () => {
+  it("describes a published version with the study's robot, conditions, assignment and questionnaires", async () => {
+    const { study, version } = await runningStudy();
+    await owner.studies.update({ studyId: study.id, settings: { assignment: { strategy: "random" } } });
+    const sus = await owner.questionnaires.create({ studyId: study.id, instrument: "sus" });
+    await owner.questionnaires.save({ questionnaireId: sus.id, timing: "after" });
+    await owner.questionnaires.create({ studyId: study.id, name: "Not attached" });
+    const { markdown, text } = await owner.versions.methods({ versionId: version.id });
+    for (const fact of [
+      "## Methods: Story, version 1",
+      "1. **Hello.** The robot performed “Wave”.",
+      "After the trial, participants completed “System Usability Scale (SUS)” (10 items).",
+      "The study had 1 condition: “Waving” (experiment “Story”).",
+      "at random, from a seed stored with the study",
+      `The version's SHA-256 hash is \`${version.hash}\`.`,
+    ])
+      expect(markdown).toContain(fact);
+    expect(markdown).not.toContain("Not attached");
+    expect(text).toContain(`The version's SHA-256 hash is ${version.hash}.`);
+    expect(text).not.toContain("**");
+  });
+});
+
 describe("the study archive", () => {
   it("holds the design, every trial's record and events, and the answers, without withdrawn participants", async () => {
     const { study, version, trial } = await runningStudy();
@@ -157,6 +180,7 @@ describe("the study archive", () => {
     const files = unzipSync(archive.body);
     expect(Object.keys(files).sort()).toEqual([
       "README.txt",
+      "experiments/story-v1-methods.md",
       "questionnaire-answers.csv",
       "study.json",
       `trials/${trial.id}-events.csv`,
@@ -170,6 +194,11 @@ describe("the study archive", () => {
       experiments: [{ name: "Story", versions: [{ version: 1 }] }],
     });
     expect(JSON.stringify(content)).not.toContain("P002");
+    // The methods text of each published version, as the designer previews it, and listed in the README.
+    expect(strFromU8(files["experiments/story-v1-methods.md"]!)).toBe(
+      (await owner.versions.methods({ versionId: version.id })).markdown,
+    );
+    expect(strFromU8(files["README.txt"]!)).toContain("experiments/<name>-v<N>-methods.md");
     expect(Object.keys(files).join()).not.toContain(withdrawnTrial.id);
     expect(JSON.parse(strFromU8(files[`trials/${trial.id}.json`]!))).toMatchObject({
       protocol: { steps: [{ name: "Hello" }] },
