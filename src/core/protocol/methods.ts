@@ -214,7 +214,7 @@ function questionSentences(
   if (!branch)
     return { text: [`${asked} as one of ${options.map((o) => quote(s, o.label)).join(", ")}.`], ended: false };
   const arms = options.map((o, i) => {
-    const to = targets[i];
+    const to = targets[i] ?? null;
     return `${quote(s, o.label)} led to ${to === null ? "the rest of this step" : stepName(s, steps, to)}`;
   });
   const text = [`${asked}: ${arms.join("; ")}.`];
