@@ -166,6 +166,8 @@ describe.sequential("the experiment designer, in the browser", () => {
     await screenshot(page, "designer-portability");
     await page.getByRole("button", { name: "Undo" }).click();
     await expect.poll(() => checks.textContent()).toContain("can run on NAO6");
+    // The undone robot is saved before the page closes: the later tests read this draft on NAO6.
+    await expect.poll(() => page.locator("[data-save-state]").getAttribute("data-save-state")).toBe("saved");
     await page.context().close();
 
     const observer = await (await newContext(browser, app.url)).newPage();

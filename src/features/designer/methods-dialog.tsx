@@ -44,10 +44,13 @@ export function MethodsDialog({ versionId, version }: { versionId: string; versi
       {methods.isPending && <p className="text-sm text-slate-500">Writing the description…</p>}
       {methods.data && (
         <div className="space-y-3">
-          <section aria-label="Methods text">
-            <pre className="max-h-[60vh] overflow-y-auto whitespace-pre-wrap rounded border border-slate-200 bg-slate-50 p-3 font-sans text-sm text-slate-800">
-              {methods.data.text}
-            </pre>
+          <section
+            aria-label="Methods text"
+            // biome-ignore lint/a11y/noNoninteractiveTabindex: a scrollable region must take focus so the keyboard can scroll it (WCAG 2.1.1, axe's scrollable-region-focusable)
+            tabIndex={0}
+            className="max-h-[60vh] overflow-y-auto rounded border border-slate-200 bg-slate-50 p-3 focus:outline-none focus-visible:ring-2 focus-visible:ring-brand-600"
+          >
+            <pre className="whitespace-pre-wrap font-sans text-sm text-slate-800">{methods.data.text}</pre>
           </section>
           <div className="flex flex-wrap items-center gap-2">
             <Button size="sm" onClick={() => void copy("Markdown", methods.data.markdown)}>
