@@ -175,11 +175,20 @@ describe("the study archive", () => {
     });
     const withdrawnTrial = await owner.trials.create({ versionId: version.id, participantId: other.id });
     await owner.participants.update({ participantId: other.id, consentStatus: "withdrawn" });
+    // A second experiment of the same name: its methods text gets a file of its own.
+    const twin = await owner.experiments.create({ studyId: study.id, name: "Story", robotId: "nao6-ros2" });
+    await owner.experiments.saveDesign({
+      experimentId: twin.id,
+      baseRevision: 0,
+      steps: [{ name: "Hi", actions: [{ type: "nod" }] }],
+    });
+    const twinVersion = await owner.versions.publish({ experimentId: twin.id });
     const archive = await owner.studies.exportArchive({ studyId: study.id });
     expect(archive).toMatchObject({ filename: "fixture-study.zip", contentType: "application/zip" });
     const files = unzipSync(archive.body);
     expect(Object.keys(files).sort()).toEqual([
       "README.txt",
+      expect.stringMatching(/^experiments\/story-v1-[0-9a-f-]{8}-methods\.md$/),
       "experiments/story-v1-methods.md",
       "questionnaire-answers.csv",
       "study.json",
@@ -191,12 +200,22 @@ describe("the study archive", () => {
     expect(content).toMatchObject({
       participants: [{ code: "P001" }],
       withdrawnParticipants: 1,
-      experiments: [{ name: "Story", versions: [{ version: 1 }] }],
+      // The experiment and its namesake.
+      experiments: [
+        { name: "Story", versions: [{ version: 1 }] },
+        { name: "Story", versions: [{ version: 1 }] },
+      ],
     });
     expect(JSON.stringify(content)).not.toContain("P002");
     // The methods text of each published version, as the designer previews it, and listed in the README.
-    expect(strFromU8(files["experiments/story-v1-methods.md"]!)).toBe(
-      (await owner.versions.methods({ versionId: version.id })).markdown,
+    const methodsFiles = Object.keys(files)
+      .filter((name) => name.startsWith("experiments/"))
+      .map((name) => strFromU8(files[name]!))
+      .sort();
+    expect(methodsFiles).toEqual(
+      (await Promise.all([version, twinVersion].map((v) => owner.versions.methods({ versionId: v.id }))))
+        .map((m) => m.markdown)
+        .sort(),
     );
     expect(strFromU8(files["README.txt"]!)).toContain("experiments/<name>-v<N>-methods.md");
     expect(Object.keys(files).join()).not.toContain(withdrawnTrial.id);

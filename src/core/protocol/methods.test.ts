@@ -76,7 +76,8 @@ const rejoining: MethodsInput = {
           stepId: "bye",
         },
       ),
-      step("bye", "Goodbye", [say("s3", "Goodbye *friend*!")]),
+      step("bye", "Goodbye", [say("s3", "Goodbye *friend*!")], { to: "end" }),
+      step("never", "Never reached?", []),
     ],
   }),
   conditions: [],
@@ -151,6 +152,7 @@ describe("the methods text", () => {
       "3. **Banana.** The robot said “Bananas are yellow.” The trial then continued to “Goodbye”.",
     ],
     ["speech escaped for Markdown", "“Goodbye \\*friend\\*!” The trial then ended."],
+    ["a step's name ending its own sentence", "6. **Never reached?** The trial then ended."],
     ["no conditions", "The study had no separate conditions: every participant followed this protocol."],
     ["no questionnaires", "No questionnaires were given with the trial."],
   ])("a rejoining branch: %s", (_fact, text) => {

@@ -55,8 +55,8 @@ export function methodsPlainText(input: MethodsInput): string {
 }
 
 const quote = (s: Style, words: string) => `“${s.text(words.replace(/\s+/g, " ").trim())}”`;
-// A sentence ending on quoted speech that ends its own sentence takes no second full stop.
-const stop = (t: string) => (/[.!?…]”$/.test(t) ? t : `${t}.`);
+// A sentence (or a step's name) that already ends on a full stop, or on quoted speech that does, takes no second one.
+const stop = (t: string) => (/[.!?…]”?$/.test(t) ? t : `${t}.`);
 const capital = (t: string) => t.charAt(0).toUpperCase() + t.slice(1);
 const plural = (n: number, one: string, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;
 const seconds = (n: number) => (n === 1 ? "1 second" : `${n} seconds`);
@@ -130,7 +130,7 @@ function procedure(input: MethodsInput, s: Style): string {
     }
     const description = step.description.trim() ? ` ${s.text(step.description.trim())}` : "";
     const body = sentences.text.length ? sentences.text.join(" ") : "Nothing was carried out in this step.";
-    return `${index + 1}. ${s.strong(`${step.name.trim()}.`)}${description} ${body}`;
+    return `${index + 1}. ${s.strong(stop(step.name.trim()))}${description} ${body}`;
   });
   return [`The protocol had ${plural(steps.length, "step")}.`, lines.join("\n")].join("\n\n");
 }

@@ -146,7 +146,11 @@ export async function studyArchive(db: Database, studyId: string) {
   };
   for (const version of versions) {
     const methods = await methodsText(db, version, studyId);
-    files[`experiments/${methods.filename}`] = strToU8(methods.markdown);
+    // Two experiments of a study may share a name; their files may not.
+    const name = `experiments/${methods.filename}`;
+    files[name in files ? name.replace(/-methods\.md$/, `-${version.id.slice(0, 8)}-methods.md`) : name] = strToU8(
+      methods.markdown,
+    );
   }
   for (const { id } of trialRows) {
     for (const file of await trialFiles(db, id, ["json", "csv", "eaf"]))
