@@ -128,6 +128,7 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   ],
   "versions.list": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
   "versions.get": [MEMBERS, (_f, b) => ({ versionId: b.version.id })],
+  "versions.methods": [MEMBERS, (_f, b) => ({ versionId: b.version.id })],
   "participants.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
   "participants.create": [EDITORS, (_f, b) => ({ studyId: b.study.id, code: `P-${crypto.randomUUID().slice(0, 6)}` })],
   "participants.update": [EDITORS, (_f, b) => ({ participantId: b.participant.id, notes: "seen" })],

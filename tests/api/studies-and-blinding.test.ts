@@ -141,6 +141,29 @@ describe("withdrawal", () => {
   });
 });
 
+describe("the methods text", () => {
+  it("describes a published version with the study's robot, conditions, assignment and questionnaires", async () => {
+    const { study, version } = await runningStudy();
+    await owner.studies.update({ studyId: study.id, settings: { assignment: { strategy: "random" } } });
+    const sus = await owner.questionnaires.create({ studyId: study.id, instrument: "sus" });
+    await owner.questionnaires.save({ questionnaireId: sus.id, timing: "after" });
+    await owner.questionnaires.create({ studyId: study.id, name: "Not attached" });
+    const { markdown, text } = await owner.versions.methods({ versionId: version.id });
+    for (const fact of [
+      "## Methods: Story, version 1",
+      "1. **Hello.** The robot performed “Wave”.",
+      "After the trial, participants completed “System Usability Scale (SUS)” (10 items).",
+      "The study had 1 condition: “Waving” (experiment “Story”).",
+      "at random, from a seed stored with the study",
+      `The version's SHA-256 hash is \`${version.hash}\`.`,
+    ])
+      expect(markdown).toContain(fact);
+    expect(markdown).not.toContain("Not attached");
+    expect(text).toContain(`The version's SHA-256 hash is ${version.hash}.`);
+    expect(text).not.toContain("**");
+  });
+});
+
 describe("the study archive", () => {
   it("holds the design, every trial's record and events, and the answers, without withdrawn participants", async () => {
     const { study, version, trial } = await runningStudy();
@@ -152,11 +175,21 @@ describe("the study archive", () => {
     });
     const withdrawnTrial = await owner.trials.create({ versionId: version.id, participantId: other.id });
     await owner.participants.update({ participantId: other.id, consentStatus: "withdrawn" });
+    // A second experiment of the same name: its methods text gets a file of its own.
+    const twin = await owner.experiments.create({ studyId: study.id, name: "Story", robotId: "nao6-ros2" });
+    await owner.experiments.saveDesign({
+      experimentId: twin.id,
+      baseRevision: 0,
+      steps: [{ name: "Hi", actions: [{ type: "nod" }] }],
+    });
+    const twinVersion = await owner.versions.publish({ experimentId: twin.id });
     const archive = await owner.studies.exportArchive({ studyId: study.id });
     expect(archive).toMatchObject({ filename: "fixture-study.zip", contentType: "application/zip" });
     const files = unzipSync(archive.body);
     expect(Object.keys(files).sort()).toEqual([
       "README.txt",
+      expect.stringMatching(/^experiments\/story-v1-[0-9a-f-]{8}-methods\.md$/),
+      "experiments/story-v1-methods.md",
       "questionnaire-answers.csv",
       "study.json",
       `trials/${trial.id}-events.csv`,
@@ -167,9 +200,24 @@ describe("the study archive", () => {
     expect(content).toMatchObject({
       participants: [{ code: "P001" }],
       withdrawnParticipants: 1,
-      experiments: [{ name: "Story", versions: [{ version: 1 }] }],
+      // The experiment and its namesake.
+      experiments: [
+        { name: "Story", versions: [{ version: 1 }] },
+        { name: "Story", versions: [{ version: 1 }] },
+      ],
     });
     expect(JSON.stringify(content)).not.toContain("P002");
+    // The methods text of each published version, as the designer previews it, and listed in the README.
+    const methodsFiles = Object.keys(files)
+      .filter((name) => name.startsWith("experiments/"))
+      .map((name) => strFromU8(files[name]!))
+      .sort();
+    expect(methodsFiles).toEqual(
+      (await Promise.all([version, twinVersion].map((v) => owner.versions.methods({ versionId: v.id }))))
+        .map((m) => m.markdown)
+        .sort(),
+    );
+    expect(strFromU8(files["README.txt"]!)).toContain("experiments/<name>-v<N>-methods.md");
     expect(Object.keys(files).join()).not.toContain(withdrawnTrial.id);
     expect(JSON.parse(strFromU8(files[`trials/${trial.id}.json`]!))).toMatchObject({
       protocol: { steps: [{ name: "Hello" }] },

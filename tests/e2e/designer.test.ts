@@ -86,6 +86,26 @@ describe.sequential("the experiment designer, in the browser", () => {
     const file = readFileSync((await (await download).path())!, "utf8");
     await screenshot(page, "designer-published");
 
+    // The methods text of the published version: every fact a paper needs, copied exactly as shown.
+    await context.grantPermissions(["clipboard-read", "clipboard-write"]);
+    await page.getByRole("button", { name: "Methods text", exact: true }).click();
+    const methods = page.getByRole("region", { name: "Methods text" });
+    await methods.waitFor();
+    const shown = (await methods.textContent())!;
+    for (const fact of [
+      `The robot said “${TEXT.intro}” at the same time as it performed`,
+      "There was a pause of 2 seconds.",
+      "“correct (red)” led to “Response — correct (red)”",
+      "The trial ended here.",
+      "The version's SHA-256 hash is ",
+    ])
+      expect(shown).toContain(fact);
+    await screenshot(page, "designer-methods-text");
+    await page.getByRole("button", { name: "Copy as plain text" }).click();
+    await page.getByText("Copied as plain text.").waitFor();
+    expect(await page.evaluate(() => navigator.clipboard.readText())).toBe(shown);
+    await page.keyboard.press("Escape");
+
     // Speech and gesture start together in every step that has both.
     const steps = JSON.parse(file).steps as Array<{ actions: Array<{ type: string; runTogether?: string }> }>;
     for (const i of [0, 1, 3, 4]) {
@@ -146,6 +166,8 @@ describe.sequential("the experiment designer, in the browser", () => {
     await screenshot(page, "designer-portability");
     await page.getByRole("button", { name: "Undo" }).click();
     await expect.poll(() => checks.textContent()).toContain("can run on NAO6");
+    // The undone robot is saved before the page closes: the later tests read this draft on NAO6.
+    await expect.poll(() => page.locator("[data-save-state]").getAttribute("data-save-state")).toBe("saved");
     await page.context().close();
 
     const observer = await (await newContext(browser, app.url)).newPage();

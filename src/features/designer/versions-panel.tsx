@@ -11,6 +11,7 @@ import { Button } from "@/ui/button";
 import { NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
 import { Badge } from "@/ui/surface";
+import { MethodsDialog } from "./methods-dialog";
 
 export function VersionsPanel({
   experimentId,
@@ -61,6 +62,7 @@ export function VersionsPanel({
     <section aria-label="Versions" className="space-y-3 rounded-lg border border-slate-200 bg-white p-4 shadow-sm">
       <div className="flex flex-wrap items-center gap-2">
         <h2 className="mr-auto font-semibold">Versions</h2>
+        {list[0] && <MethodsDialog versionId={list[0].id} version={list[0].version} />}
         <Button variant="secondary" size="sm" onClick={download}>
           <Download className="h-4 w-4" aria-hidden /> Export file
         </Button>

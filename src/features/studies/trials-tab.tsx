@@ -37,7 +37,8 @@ export function TrialsTab({
       )}
       {studyRoleMay(role, "data.read") && (
         <DownloadLink href={`/api/studies/${studyId}/export`}>
-          Download the whole study (zip: design, every trial's record, events and ELAN file, questionnaire answers)
+          Download the whole study (zip: design and its methods text, every trial's record, events and ELAN file,
+          questionnaire answers)
         </DownloadLink>
       )}
       <ListView

@@ -7,16 +7,15 @@ import { draftFrom } from "@/core/designer/model";
 import type { DesignDraft } from "@/core/designer/types";
 import type { Database } from "@/store/client";
 import { actions, experiments, steps } from "@/store/schema";
+import { fileSlug } from "../file-slug";
 import { loadDesign } from "./design";
 
 export async function exportFile(db: Database, experimentId: string) {
   const design = await loadDesign(db, experimentId);
-  const slug =
-    design.name
-      .toLowerCase()
-      .replace(/[^a-z0-9]+/g, "-")
-      .replace(/^-|-$/g, "") || "experiment";
-  return { fileName: `${slug}.hristudio-experiment.json`, text: exportExperiment(draftFrom(design)) };
+  return {
+    fileName: `${fileSlug(design.name, "experiment")}.hristudio-experiment.json`,
+    text: exportExperiment(draftFrom(design)),
+  };
 }
 
 /** A new experiment in the study from a file; a bad file changes nothing and says where it is wrong. */

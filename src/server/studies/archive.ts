@@ -15,6 +15,8 @@ import {
   trials,
 } from "@/store/schema";
 import { answersCsv } from "@/core/questionnaires/export";
+import { methodsText } from "../experiments/methods";
+import { fileSlug } from "../file-slug";
 import { submitted } from "../questionnaires/responses";
 import { trialFiles } from "../trials/files";
 
@@ -23,6 +25,10 @@ const README = `HRIStudio study archive
 study.json                  the study, its settings (assignment seed included), conditions,
                             participants (codes, consent, demographics, assignment),
                             experiments with every published version, and sessions
+experiments/<name>-v<N>-methods.md
+                            each published version described for a paper's methods section:
+                            robot and plugin version, steps, exact speech, branches, pauses,
+                            questionnaires, conditions and assignment, the version's hash
 trials/<id>.json            each trial's full record: protocol version, events,
                             annotations, questionnaires
 trials/<id>-events.csv      each trial's events, one row per event (RFC 4180)
@@ -138,14 +144,21 @@ export async function studyArchive(db: Database, studyId: string) {
     ),
     "questionnaire-answers.csv": strToU8(answersCsv(await submitted(db, eq(questionnaireLinks.studyId, studyId)))),
   };
+  for (const version of versions) {
+    const methods = await methodsText(db, version, studyId);
+    // Two experiments of a study may share a name; their files may not.
+    const name = `experiments/${methods.filename}`;
+    files[name in files ? name.replace(/-methods\.md$/, `-${version.id.slice(0, 8)}-methods.md`) : name] = strToU8(
+      methods.markdown,
+    );
+  }
   for (const { id } of trialRows) {
     for (const file of await trialFiles(db, id, ["json", "csv", "eaf"]))
       files[`trials/${file.filename.replace(/^trial-/, "")}`] = strToU8(file.body);
   }
-  const slug =
-    study!.title
-      .toLowerCase()
-      .replace(/[^a-z0-9]+/g, "-")
-      .replace(/^-|-$/g, "") || "study";
-  return { filename: `${slug}.zip`, contentType: "application/zip", body: zipSync(files, { level: 6 }) };
+  return {
+    filename: `${fileSlug(study!.title, "study")}.zip`,
+    contentType: "application/zip",
+    body: zipSync(files, { level: 6 }),
+  };
 }

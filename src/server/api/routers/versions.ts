@@ -3,6 +3,7 @@ import { desc, eq } from "drizzle-orm";
 import { diffProtocols } from "@/core/designer/diff";
 import { z } from "zod";
 import { experimentVersions, user } from "@/store/schema";
+import { methodsText } from "../../experiments/methods";
 import { publish } from "../../experiments/publish";
 import { router, studyProcedure } from "../trpc";
 import { id } from "../validation";
@@ -33,6 +34,12 @@ export const versionsRouter = router({
   get: studyProcedure("experiment.read", "version", z.object({ versionId: id })).query(({ ctx }) => {
     const { studyId: _, ...version } = ctx.row;
     return version;
+  }),
+
+  /** The version described for a paper's methods section, as Markdown and as plain text. */
+  methods: studyProcedure("experiment.read", "version", z.object({ versionId: id })).query(({ ctx }) => {
+    const { studyId, ...version } = ctx.row;
+    return methodsText(ctx.db, version, studyId);
   }),
 
   /** What changed from one version to another, in sentences. */
