@@ -44,7 +44,9 @@ const MARKDOWN: Style = {
   text: escapeMarkdown,
 };
 
-const PLAIN: Style = { heading: (t) => t.toUpperCase(), strong: (t) => t, code: (t) => t, text: (t) => t };
+// Plain text is the same words: a heading keeps its own line and the
+// researcher's capitals, to be styled where it is pasted.
+const PLAIN: Style = { heading: (t) => t, strong: (t) => t, code: (t) => t, text: (t) => t };
 
 export function methodsMarkdown(input: MethodsInput): string {
   return methods(input, MARKDOWN);
