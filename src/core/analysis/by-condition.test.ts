@@ -29,7 +29,7 @@ function trial(
     steps: timings,
     unscripted: [],
     branches: { byLogic: 0, byHand: 0 },
-    deviations: deviations ? { skipped: deviations } : {},
+    deviations: Object.fromEntries(deviations ? [["skipped", deviations]] : []),
     totals: {
       planned: 0,
       executed: 0,
