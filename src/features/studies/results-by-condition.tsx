@@ -114,7 +114,7 @@ function ConditionPlot({ measure }: { measure: Measure }) {
                   width={x(stats.mean) - LABEL}
                   height={14}
                   rx={2}
-                  className="fill-brand-200"
+                  className="fill-brand-100 stroke-brand-500"
                 />
                 <line
                   x1={x(stats.min)}
