@@ -148,6 +148,22 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
       .getByText("Introduction")
       .waitFor();
     await screenshot(results, "study-results");
+
+    // The two conditions compared: two trials each, every measure plotted and tabled, and the tidy CSV.
+    const byCondition = results.getByRole("region", { name: "By condition" });
+    for (const name of CONDITIONS) await byCondition.getByText(`${name}: 2 trials`, { exact: false }).waitFor();
+    const fidelityPlot = byCondition.getByRole("img", { name: /^Execution fidelity: mean per condition/ });
+    for (const name of CONDITIONS) await fidelityPlot.getByText(name).waitFor();
+    for (const name of CONDITIONS)
+      expect(await byCondition.getByRole("row", { name: new RegExp(`^${name} 2 `) }).count()).toBeGreaterThan(3);
+    const csv = await results.evaluate(
+      async (href) => (await fetch(href)).text(),
+      results.url().replace(/\/studies\/([^/?#]+).*/, "/api/studies/$1/results-by-condition"),
+    );
+    expect(csv.split("\r\n")[0]).toBe("condition,measure,n,mean,sd,median,min,max");
+    for (const name of CONDITIONS) expect(csv).toContain(`${name},Execution fidelity (%),2,`);
+    await byCondition.getByRole("heading", { name: "By condition" }).scrollIntoViewIfNeeded();
+    await screenshot(results, "study-results-by-condition");
     await results.context().close();
   }, 300_000);
 

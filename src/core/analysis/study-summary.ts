@@ -56,6 +56,21 @@ export function spread(values: number[]): Spread | null {
 
 const sum = (values: number[]) => values.reduce((a, b) => a + b, 0);
 
+export interface Description extends Spread {
+  mean: number;
+  /** The sample SD (n − 1); null for a single value. */
+  sd: number | null;
+}
+
+/** What a paper reports of a measure: n, mean, sample SD, median and range. */
+export function describe(values: number[]): Description | null {
+  const s = spread(values);
+  if (!s) return null;
+  const mean = sum(values) / values.length;
+  const sd = values.length < 2 ? null : Math.sqrt(sum(values.map((v) => (v - mean) ** 2)) / (values.length - 1));
+  return { ...s, mean, sd };
+}
+
 export function studySummary(trials: TrialFigures[]): StudySummary {
   const rows = trials.map(({ trialId, participantCode, condition, report }) => {
     const timed = report.steps.filter((s) => s.enteredMs !== null);
@@ -86,8 +101,7 @@ export function studySummary(trials: TrialFigures[]): StudySummary {
       durationMs: spread(timings.flatMap((s) => (s.durationMs === null ? [] : [s.durationMs]))),
     };
   });
-  const fidelity = rows.map((r) => r.executionFidelity);
-  const mean = fidelity.length ? sum(fidelity) / fidelity.length : null;
+  const fidelity = describe(rows.map((r) => r.executionFidelity));
   const deviationsByKind: Record<string, number> = {};
   for (const { report } of trials)
     for (const [kind, n] of Object.entries(report.deviations))
@@ -98,11 +112,8 @@ export function studySummary(trials: TrialFigures[]): StudySummary {
     consistency: {
       trials: rows.length,
       completed: rows.filter((r) => r.completed).length,
-      meanFidelity: mean,
-      sdFidelity:
-        mean === null || fidelity.length < 2
-          ? null
-          : Math.sqrt(sum(fidelity.map((f) => (f - mean) ** 2)) / (fidelity.length - 1)),
+      meanFidelity: fidelity?.mean ?? null,
+      sdFidelity: fidelity?.sd ?? null,
       withoutDeviation: rows.filter((r) => r.deviations === 0).length,
       deviationsByKind,
     },

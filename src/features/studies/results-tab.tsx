@@ -1,7 +1,7 @@
 "use client";
 // The study's results at a glance: how consistently the wizard(s) ran the
 // protocol, every finished trial's fidelity, and each step's timing across
-// participants (median with its range).
+// participants (median with its range); then the conditions compared.
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
 import type { StudySummary } from "@/core/analysis/study-summary";
@@ -10,6 +10,7 @@ import { Problem } from "@/ui/problem";
 import { Card, EmptyState, Spinner } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
 import { seconds } from "@/ui/format";
+import { ResultsByCondition } from "./results-by-condition";
 
 export function ResultsTab({ studyId }: { studyId: string }) {
   const trpc = useTRPC();
@@ -46,6 +47,7 @@ export function ResultsTab({ studyId }: { studyId: string }) {
         <h2 className="mb-2 text-lg font-semibold">Time in each step</h2>
         <StepTimingPlot steps={s.steps} />
       </section>
+      <ResultsByCondition studyId={studyId} />
       <section aria-label="Trials">
         <h2 className="mb-2 text-lg font-semibold">Trials</h2>
         <Table>

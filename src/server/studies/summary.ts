@@ -1,14 +1,17 @@
 // The study-level figures: every finished, non-rehearsal trial of a
-// participant who has not withdrawn, folded into its fidelity report.
+// participant who has not withdrawn, folded into its fidelity report; and
+// the same trials with the questionnaire scores, compared by condition.
 import { and, asc, eq, inArray, ne } from "drizzle-orm";
+import { resultsByCondition } from "@/core/analysis/by-condition";
 import { fidelityReport } from "@/core/analysis/fidelity";
-import { studySummary } from "@/core/analysis/study-summary";
+import { studySummary, type TrialFigures } from "@/core/analysis/study-summary";
 import type { TrialEvent } from "@/core/trial";
 import type { Database } from "@/store/client";
-import { conditions, experimentVersions, participants, trials } from "@/store/schema";
+import { conditions, experimentVersions, participants, questionnaireLinks, trials } from "@/store/schema";
 import { eventsSince } from "@/store/event-store";
+import { submitted } from "../questionnaires/responses";
 
-export async function studyFigures(db: Database, studyId: string) {
+async function finishedTrials(db: Database, studyId: string): Promise<TrialFigures[]> {
   const rows = await db
     .select({
       id: trials.id,
@@ -29,7 +32,7 @@ export async function studyFigures(db: Database, studyId: string) {
       ),
     )
     .orderBy(asc(trials.createdAt));
-  const figures = await Promise.all(
+  return Promise.all(
     rows.map(async (r) => ({
       trialId: r.id,
       participantCode: r.code,
@@ -37,5 +40,30 @@ export async function studyFigures(db: Database, studyId: string) {
       report: fidelityReport(r.protocol, (await eventsSince(db, r.id)) as unknown as TrialEvent[]),
     })),
   );
-  return studySummary(figures);
+}
+
+export async function studyFigures(db: Database, studyId: string) {
+  return studySummary(await finishedTrials(db, studyId));
+}
+
+/** Each measure per condition; a questionnaire's score counts in its participant's condition. */
+export async function studyResultsByCondition(db: Database, studyId: string) {
+  const [figures, answers, assigned] = await Promise.all([
+    finishedTrials(db, studyId),
+    submitted(db, eq(questionnaireLinks.studyId, studyId)),
+    db
+      .select({ code: participants.code, condition: conditions.name })
+      .from(participants)
+      .leftJoin(conditions, eq(conditions.id, participants.conditionId))
+      .where(eq(participants.studyId, studyId)),
+  ]);
+  const conditionOf = new Map(assigned.map((p) => [p.code, p.condition]));
+  return resultsByCondition(
+    figures,
+    answers.map((a) => ({
+      condition: conditionOf.get(a.participantCode) ?? null,
+      questionnaire: a.questionnaire,
+      score: a.score,
+    })),
+  );
 }

@@ -3,11 +3,12 @@ import { TRPCError } from "@trpc/server";
 import { and, desc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
+import { byConditionCsv } from "@/core/analysis/by-condition";
 import { STUDY_STATUSES } from "@/core/studies/status";
 import { changedSettings, readSettings, studySettingsChangeSchema, type StudySettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { studyArchive } from "../../studies/archive";
-import { studyFigures } from "../../studies/summary";
+import { studyFigures, studyResultsByCondition } from "../../studies/summary";
 import { experiments, participants, studies, studyMembers, trials } from "@/store/schema";
 import { qualified } from "@/store/qualified";
 import { guarded, router, studyProcedure } from "../trpc";
@@ -106,6 +107,18 @@ export const studiesRouter = router({
   figures: studyProcedure("data.read", "study", z.object({ studyId: id })).query(({ ctx }) =>
     studyFigures(ctx.db, ctx.studyId),
   ),
+
+  /** Each measure compared across conditions: n, mean, SD, median and range. */
+  resultsByCondition: studyProcedure("data.read", "study", z.object({ studyId: id })).query(({ ctx }) =>
+    studyResultsByCondition(ctx.db, ctx.studyId),
+  ),
+
+  /** The same as a tidy CSV (one row per condition and measure), for R or a spreadsheet. */
+  resultsByConditionCsv: studyProcedure("data.read", "study", z.object({ studyId: id })).query(async ({ ctx }) => ({
+    filename: "results-by-condition.csv",
+    contentType: "text/csv; charset=utf-8",
+    body: byConditionCsv(await studyResultsByCondition(ctx.db, ctx.studyId)),
+  })),
 
   /** Everything of the study as one zip, for the lab's archive or a paper's data. */
   exportArchive: studyProcedure("data.read", "study", z.object({ studyId: id })).query(({ ctx }) =>

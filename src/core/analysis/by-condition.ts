@@ -1,0 +1,113 @@
+// Results by condition: the comparison most studies exist for. Each measure
+// (execution fidelity, deviations, time in each step, the whole trial's
+// duration, each questionnaire's score) described per condition with n, mean,
+// sample SD, median and range, as a paper's table reports them.
+import { csvDocument } from "../csv/csv";
+import { describe, studySummary, type Description, type TrialFigures } from "./study-summary";
+
+export type Unit = "%" | "count" | "ms" | "score";
+
+export interface Measure {
+  measure: string;
+  unit: Unit;
+  /** One entry per condition, in the order of `ByCondition.conditions`; null where it has no value. */
+  byCondition: Array<{ condition: string | null; stats: Description | null }>;
+}
+
+export interface ByCondition {
+  conditions: Array<{ condition: string | null; trials: number }>;
+  measures: Measure[];
+}
+
+/** A submitted questionnaire's stored score ({ score, subscales } for a standard instrument), with the participant's condition. */
+export interface ConditionScore {
+  condition: string | null;
+  questionnaire: string;
+  score: unknown;
+}
+
+type Scored = { score?: number; subscales?: Record<string, number> } | null;
+
+/** Named conditions alphabetically; trials of participants without a condition last. */
+function conditionOrder(a: string | null, b: string | null) {
+  if (a === b) return 0;
+  if (a === null) return 1;
+  if (b === null) return -1;
+  return a.localeCompare(b);
+}
+
+export function resultsByCondition(trials: TrialFigures[], scores: ConditionScore[]): ByCondition {
+  const names = [...new Set([...trials.map((t) => t.condition), ...scores.map((s) => s.condition)])].sort(
+    conditionOrder,
+  );
+  const groups = names.map((condition) => {
+    const group = trials.filter((t) => t.condition === condition);
+    return { condition, group, rows: studySummary(group).trials };
+  });
+  const measure = (name: string, unit: Unit, values: (g: (typeof groups)[number]) => number[]): Measure => ({
+    measure: name,
+    unit,
+    byCondition: groups.map((g) => ({ condition: g.condition, stats: describe(values(g)) })),
+  });
+
+  // Steps by name, in protocol order as the trials met them (conditions may run different experiments).
+  const stepNames = [...new Set(trials.flatMap((t) => t.report.steps.map((s) => s.name)))];
+  const stepMeasures = stepNames.map((name) =>
+    measure(`Time in step: ${name}`, "ms", ({ group }) =>
+      group.flatMap(({ report }) =>
+        report.steps.flatMap((s) => (s.name === name && s.durationMs !== null ? [s.durationMs] : [])),
+      ),
+    ),
+  );
+
+  // Each score measure's values, with the condition they came from, in the order first met.
+  const scoreValues = new Map<string, Array<[string | null, number]>>();
+  for (const s of scores) {
+    const scored = s.score as Scored;
+    const entries: Array<[string, number | undefined]> = [
+      [`Questionnaire score: ${s.questionnaire}`, scored?.score],
+      ...Object.entries(scored?.subscales ?? {}).map(([sub, v]): [string, number] => [
+        `Questionnaire score: ${s.questionnaire} (${sub})`,
+        v,
+      ]),
+    ];
+    for (const [name, value] of entries) {
+      if (typeof value !== "number") continue;
+      scoreValues.set(name, [...(scoreValues.get(name) ?? []), [s.condition, value]]);
+    }
+  }
+  const scoreMeasures = [...scoreValues].map(([name, values]) =>
+    measure(name, "score", ({ condition }) => values.flatMap(([c, v]) => (c === condition ? [v] : []))),
+  );
+
+  return {
+    conditions: groups.map(({ condition, group }) => ({ condition, trials: group.length })),
+    measures: [
+      measure("Execution fidelity", "%", ({ rows }) => rows.map((r) => r.executionFidelity)),
+      measure("Deviations per trial", "count", ({ rows }) => rows.map((r) => r.deviations)),
+      measure("Trial duration", "ms", ({ rows }) => rows.flatMap((r) => (r.durationMs === null ? [] : [r.durationMs]))),
+      ...stepMeasures,
+      ...scoreMeasures,
+    ],
+  };
+}
+
+/** The tidy table: one row per condition × measure, the unit in the measure's name, durations in ms. */
+export function byConditionCsv({ measures }: ByCondition): string {
+  const label = (m: Measure) => (m.unit === "ms" || m.unit === "%" ? `${m.measure} (${m.unit})` : m.measure);
+  return csvDocument(
+    ["condition", "measure", "n", "mean", "sd", "median", "min", "max"],
+    measures.flatMap((m) =>
+      m.byCondition.map(({ condition, stats }) => [
+        condition,
+        label(m),
+        stats?.n ?? 0,
+        stats?.mean,
+        stats?.sd,
+        stats?.median,
+        stats?.min,
+        stats?.max,
+      ]),
+    ),
+  );
+}
