@@ -27,6 +27,8 @@ export default defineConfig({
           name: "browser",
           include: ["tests/e2e/**/*.test.ts"],
           fileParallelism: false,
+          // A page catches up with the robot and the server in its own time; a loaded machine needs more than 1 s.
+          expect: { poll: { timeout: 10_000 } },
           sequence: { groupOrder: 1 },
         },
       },

@@ -170,9 +170,12 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.keyboard.press("n");
     await expect.poll(() => currentStep(wizard)).toBe("Introduction");
     await wizard.keyboard.press("n");
+    // The robot takes its time to speak and wave; a loaded machine takes longer than poll's default second.
     await expect
-      .poll(async () =>
-        (await wizard.locator('[data-testid^="action-"]').allTextContents()).every((t) => t.startsWith("done")),
+      .poll(
+        async () =>
+          (await wizard.locator('[data-testid^="action-"]').allTextContents()).every((t) => t.startsWith("done")),
+        { timeout: 15_000 },
       )
       .toBe(true);
 

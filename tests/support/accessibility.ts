@@ -35,6 +35,9 @@ async function axeViolations(page: Page): Promise<Violations> {
   if (!(await page.evaluate(() => "axe" in window))) await page.evaluate(AXE_SOURCE);
   return page.evaluate(async (tags) => {
     const axe = (window as unknown as { axe: typeof import("axe-core") }).axe;
+    // Colours are judged as they settle: a control changing state mid-transition shows neither its old nor its new look.
+    for (const animation of document.getAnimations())
+      if (animation.effect?.getTiming().iterations !== Infinity) animation.finish();
     const results = await axe.run(document, { runOnly: { type: "tag", values: tags }, resultTypes: ["violations"] });
     return results.violations;
   }, WCAG_21_AA);
