@@ -135,16 +135,24 @@ async function rehearse(page: Page, studyUrl: string, key: number) {
   await page.waitForURL(/\/trials\//);
   await page.getByText("live", { exact: true }).waitFor();
   const step = () => page.getByTestId("current-step").textContent();
-  const spoken = async (text: string) => {
+  // N does what the big button says: each press waits until the page shows it, so no key meets a page still catching up.
+  const next = async (label: string) => {
+    await page
+      .locator("button", { has: page.locator("kbd", { hasText: "N" }) })
+      .filter({ hasText: label })
+      .waitFor();
     await page.keyboard.press("n");
+  };
+  const spoken = async (text: string) => {
+    // The wizard sees speech by its first words ("Say: Not quite: Venus is the…").
+    await next(text.slice(0, 20));
     await page
       .getByTestId(/action-/)
-      // The wizard sees speech by its first words ("Say: Not quite: Venus is the…").
       .filter({ hasText: text.slice(0, 20) })
       .getByText(/^done/)
       .waitFor();
   };
-  await page.keyboard.press("n");
+  await next("Start trial");
   await expect.poll(step).toBe("Question");
   await spoken(QUESTION);
   await page.getByText("What did the participant answer?").first().waitFor();
@@ -152,9 +160,10 @@ async function rehearse(page: Page, studyUrl: string, key: number) {
   const [answer, response] = ANSWERS[key - 1]!;
   await expect.poll(step).toBe(`Response — ${answer}`);
   await spoken(response);
-  await page.keyboard.press("n");
+  // Not the answer's sibling below it: the step where the answers meet.
+  await next("Go to “Goodbye”");
   await expect.poll(step).toBe("Goodbye");
   await spoken(GOODBYE);
-  await page.keyboard.press("n");
+  await next("Finish trial");
   await expect.poll(() => page.getByTestId("trial-status").textContent()).toBe("completed");
 }

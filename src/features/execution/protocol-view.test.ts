@@ -54,3 +54,29 @@ describe("the wizard's view of the current step", () => {
     expect(text(off)).toContain(" Nod ");
   });
 });
+
+describe("the big button, once a step's actions are done", () => {
+  const step = (id: string, after?: TrialProtocol["steps"][number]["after"]) => ({
+    id,
+    name: id,
+    actions: [],
+    ...(after ? { after } : {}),
+  });
+  const at = (p: TrialProtocol, stepId: string) =>
+    fold(p, [
+      { type: "trial.started", seq: 1, relMs: 0 },
+      { type: "step.entered", stepId, via: "start", seq: 2, relMs: 0 },
+    ]);
+
+  it.each<[string, TrialProtocol, string]>([
+    ["the next step in the list", { steps: [step("Mars"), step("Venus")] }, "Go to “Venus”"],
+    [
+      "the step where the answers meet, not the sibling below",
+      { steps: [step("Mars", { to: "step", stepId: "Goodbye" }), step("Venus"), step("Goodbye")] },
+      "Go to “Goodbye”",
+    ],
+    ["the end, when the step leads there", { steps: [step("Mars", { to: "end" }), step("Venus")] }, "Finish trial"],
+  ])("names %s", (_name, p, expected) => {
+    expect(nextLabel(p, at(p, "Mars"), names)).toBe(expected);
+  });
+});

@@ -1,6 +1,7 @@
 "use client";
 // The wizard's controls: the next scripted action as the big button, answer
 // choices by number, and everything off script one key away.
+import { exitOf } from "@/core/protocol/flow";
 import { useEffect, useId, useRef, useState } from "react";
 import { actionName, type ActionNames } from "@/core/designer/action-name";
 import { answerOptions, nextUnit, type TrialProtocol, type TrialState } from "@/core/trial";
@@ -25,9 +26,12 @@ export function nextLabel(protocol: TrialProtocol, state: TrialState, names: Act
   if (state.status === "scheduled") return "Start trial";
   const unit = nextUnit(protocol, state);
   if (unit.length) return unit.map((a) => actionName(a, names)).join(" + ");
-  const index = protocol.steps.findIndex((s) => s.id === state.currentStepId);
-  const following = protocol.steps[index + 1];
-  return following ? `Go to “${following.name}”` : "Finish trial";
+  // Where this step leads, as the engine will go: answers' steps rejoin, a step may end the trial.
+  const exit = exitOf(
+    protocol.steps,
+    protocol.steps.findIndex((s) => s.id === state.currentStepId),
+  );
+  return exit.to === "step" ? `Go to “${protocol.steps[exit.index]!.name}”` : "Finish trial";
 }
 
 export function WizardControls({
