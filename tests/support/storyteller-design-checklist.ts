@@ -1,4 +1,4 @@
-// The "design" checklist of ../shared/protocols/interactive-storyteller.md,
+// The "design" checklist of the project brief's protocol document (interactive-storyteller.md),
 // scored by code from an exported experiment file (src/core/designer/exchange.ts).
 import { STORYTELLER_TEXT as TEXT } from "./storyteller-run-checklist";
 

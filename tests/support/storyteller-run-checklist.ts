@@ -1,4 +1,4 @@
-// The "run" checklist of ../shared/protocols/interactive-storyteller.md,
+// The "run" checklist of the project brief's protocol document (interactive-storyteller.md),
 // scored by code from a trial's protocol version and event log.
 import type { ProtocolSnapshot } from "../../src/core/protocol/snapshot";
 

@@ -1,5 +1,5 @@
-// The Interactive Storyteller (../shared/protocols/interactive-storyteller.md),
-// the demo experiment. Speech is the protocol's exact text.
+// The Interactive Storyteller (the project brief's protocol document,
+// interactive-storyteller.md, which nothing here reads), the demo experiment. Speech is the protocol's exact text.
 import type { DesignDraft } from "@/core/designer/types";
 
 export interface SeedAction {
