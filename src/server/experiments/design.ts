@@ -4,6 +4,7 @@ import { TRPCError } from "@trpc/server";
 import { asc, eq, inArray, sql } from "drizzle-orm";
 import type { Database } from "@/store/client";
 import { actions, experiments, steps } from "@/store/schema";
+import type { DesignStep } from "@/core/designer/types";
 import type { DesignInput } from "../api/routers/design-input";
 
 export type Tx = Parameters<Parameters<Database["transaction"]>[0]>[0];
@@ -71,35 +72,41 @@ export async function saveDesign(db: Database, input: DesignInput, userId: strin
       if (given !== undefined && !own.has(given)) assertFreshId(given);
       return given ?? crypto.randomUUID();
     };
-    const stepRows = input.steps.map((s, position) => {
-      return {
-        id: checkId(s.id, ownStepIds),
-        experimentId: input.experimentId,
-        position,
-        name: s.name,
-        description: s.description,
-        after: s.after,
-      };
-    });
-    const actionRows = input.steps.flatMap((s, i) =>
-      s.actions.map((a, position) => {
-        return {
-          id: checkId(a.id, ownActionIds),
-          stepId: stepRows[i]!.id,
-          position,
-          type: a.type,
-          name: a.name,
-          parameters: a.parameters,
-          parallelGroup: a.parallelGroup,
-        };
-      }),
-    );
+    const draftSteps = input.steps.map((s) => ({
+      ...s,
+      id: checkId(s.id, ownStepIds),
+      actions: s.actions.map((a) => ({ ...a, id: checkId(a.id, ownActionIds) })),
+    }));
     // Delete and re-insert under the same ids: references from branches stay valid.
     if (current.steps.length) await tx.delete(steps).where(eq(steps.experimentId, input.experimentId));
-    if (stepRows.length) await tx.insert(steps).values(stepRows);
-    if (actionRows.length) await tx.insert(actions).values(actionRows);
+    await insertSteps(tx, input.experimentId, draftSteps);
     return loadDesign(tx, input.experimentId);
   });
+}
+
+/** Stores a draft's steps and actions, in order, under the ids they carry. */
+export async function insertSteps(tx: Tx, experimentId: string, draftSteps: DesignStep[]) {
+  const stepRows = draftSteps.map((s, position) => ({
+    id: s.id,
+    experimentId,
+    position,
+    name: s.name,
+    description: s.description,
+    after: s.after ?? { to: "next" as const },
+  }));
+  const actionRows = draftSteps.flatMap((s) =>
+    s.actions.map((a, position) => ({
+      id: a.id,
+      stepId: s.id,
+      position,
+      type: a.type,
+      name: a.name,
+      parameters: a.parameters,
+      parallelGroup: a.parallelGroup,
+    })),
+  );
+  if (stepRows.length) await tx.insert(steps).values(stepRows);
+  if (actionRows.length) await tx.insert(actions).values(actionRows);
 }
 
 /** A client may name a new block's id itself (so branches can point at it), but only a fresh UUID. */

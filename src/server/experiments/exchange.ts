@@ -6,9 +6,9 @@ import { exportExperiment, importExperiment } from "@/core/designer/exchange";
 import { draftFrom } from "@/core/designer/model";
 import type { DesignDraft } from "@/core/designer/types";
 import type { Database } from "@/store/client";
-import { actions, experiments, steps } from "@/store/schema";
+import { experiments } from "@/store/schema";
 import { fileSlug } from "../file-slug";
-import { loadDesign } from "./design";
+import { insertSteps, loadDesign } from "./design";
 
 export async function exportFile(db: Database, experimentId: string) {
   const design = await loadDesign(db, experimentId);
@@ -49,27 +49,7 @@ async function storeNew(db: Database, studyId: string, draft: DesignDraft, userI
       .insert(experiments)
       .values({ studyId, name: draft.name, description: draft.description, robotId: draft.robotId, updatedBy: userId })
       .returning();
-    const stepRows = draft.steps.map((s, position) => ({
-      id: s.id,
-      experimentId: experiment!.id,
-      position,
-      name: s.name,
-      description: s.description,
-      after: s.after ?? { to: "next" as const },
-    }));
-    const actionRows = draft.steps.flatMap((s) =>
-      s.actions.map((a, position) => ({
-        id: a.id,
-        stepId: s.id,
-        position,
-        type: a.type,
-        name: a.name,
-        parameters: a.parameters,
-        parallelGroup: a.parallelGroup,
-      })),
-    );
-    if (stepRows.length) await tx.insert(steps).values(stepRows);
-    if (actionRows.length) await tx.insert(actions).values(actionRows);
+    await insertSteps(tx, experiment!.id, draft.steps);
     return loadDesign(tx, experiment!.id);
   });
 }
