@@ -18,6 +18,16 @@ const ANSWERS = [
   ["No answer", "Take your time. It is Mars."],
 ] as const;
 const GOODBYE = "Thank you for playing. Goodbye!";
+/** What the timeline says under each step once the answers rejoin Goodbye. */
+const REJOINED = [
+  "Then where the answer leads",
+  'Then "Goodbye"',
+  'Then "Goodbye"',
+  'Then "Goodbye"',
+  "Then the end of the trial",
+];
+const leadsTo = (page: Page) =>
+  page.locator("[data-leads-to]").evaluateAll((ps) => ps.map((p) => p.textContent?.trim()));
 
 describe.sequential("branches that rejoin, in the browser", () => {
   let app: RunningApp;
@@ -68,15 +78,7 @@ describe.sequential("branches that rejoin, in the browser", () => {
       await r.selectOption(r.properties.getByLabel("Then"), "Go to step 5: Goodbye");
     }
     await expect.poll(() => checks.textContent()).toContain("Ready to publish");
-    await expect
-      .poll(() => page.locator("[data-leads-to]").evaluateAll((ps) => ps.map((p) => p.textContent?.trim())))
-      .toEqual([
-        "Then where the answer leads",
-        'Then "Goodbye"',
-        'Then "Goodbye"',
-        'Then "Goodbye"',
-        "Then the end of the trial",
-      ]);
+    await expect.poll(() => leadsTo(page)).toEqual(REJOINED);
     await screenshot(page, "designer-rejoin");
 
     await r.click(page.getByRole("tab", { name: "Flow map" }));
@@ -114,15 +116,7 @@ describe.sequential("branches that rejoin, in the browser", () => {
     await page.getByRole("button", { name: "Duplicate Planet quiz" }).click();
     await page.waitForURL(/\/experiments\//);
     await expect.poll(() => page.getByLabel("Experiment name").inputValue()).toBe("Planet quiz (copy)");
-    await expect
-      .poll(() => page.locator("[data-leads-to]").evaluateAll((ps) => ps.map((p) => p.textContent?.trim())))
-      .toEqual([
-        "Then where the answer leads",
-        'Then "Goodbye"',
-        'Then "Goodbye"',
-        'Then "Goodbye"',
-        "Then the end of the trial",
-      ]);
+    await expect.poll(() => leadsTo(page)).toEqual(REJOINED);
     await page.context().close();
   }, 300_000);
 });
