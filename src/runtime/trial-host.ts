@@ -2,7 +2,7 @@
 // run one at a time: decide (pure engine) → append (committed) → apply →
 // tell every client. Robot and clock reports come back as commands too.
 import {
-  apply,
+  applyAll,
   decide,
   fold,
   type Command,
@@ -99,7 +99,7 @@ export class TrialHost {
     if (!decision.ok) return decision;
     const cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
     const stored = await appendEvents(this.db, cursor, decision.events, actorId);
-    for (const event of stored) this.state = apply(this.state, event);
+    this.state = applyAll(this.state, stored);
     this.t0 ??= startedAt(stored);
     for (const listener of this.listeners) listener(stored);
     this.carryOut(decision.events);
