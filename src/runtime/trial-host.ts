@@ -30,7 +30,7 @@ export class TrialHost {
   private state: TrialState;
   private queue: Promise<unknown> = Promise.resolve();
   private readonly listeners = new Set<(events: StoredEvent[]) => void>();
-  private closed = false;
+  private shut = false;
   /** Told when the trial ends, and when its last client leaves. */
   private readonly lifecycle = { ended: () => {}, unwatched: () => {} };
   private readonly timers = new Set<ReturnType<typeof setTimeout>>();
@@ -97,12 +97,19 @@ export class TrialHost {
     Object.assign(this.lifecycle, handlers);
   }
 
-  /** Whether the host can close without cutting anything off: no client, and no action under way. */
-  get idle(): boolean {
-    return (
-      this.listeners.size === 0 &&
-      Object.values(this.state.actions).every((a) => a.status !== "requested" && a.status !== "running")
-    );
+  /** Whether the host has closed: it runs nothing any more. */
+  get closed(): boolean {
+    return this.shut;
+  }
+
+  /** Whether any client follows the trial. */
+  get watched(): boolean {
+    return this.listeners.size > 0;
+  }
+
+  /** Whether an action is under way: closing now would cut it off. */
+  get busy(): boolean {
+    return Object.values(this.state.actions).some((a) => a.status === "requested" || a.status === "running");
   }
 
   /** Runs after every earlier command has finished, so the log never forks. */
@@ -114,7 +121,7 @@ export class TrialHost {
 
   private async execute(command: Command, actorId: string | null): Promise<CommandResult> {
     // A robot's late report, or a clock, after the host closed: the trial is no longer run from here.
-    if (this.closed) return { ok: false, reason: "This trial is no longer open here. Reload the page." };
+    if (this.shut) return { ok: false, reason: "This trial is no longer open here. Reload the page." };
     const decision = decide(this.protocol, this.state, command);
     if (!decision.ok) return decision;
     const cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
@@ -153,7 +160,7 @@ export class TrialHost {
   }
 
   async close() {
-    this.closed = true;
+    this.shut = true;
     for (const t of this.timers) clearTimeout(t);
     this.stopWatching();
     await this.queue;

@@ -63,8 +63,13 @@ export function trialHosts(
     const robot = ended ? unavailableRobot("the trial has ended") : await robotFor(chosen.plugin, chosen.robotId);
     const host = await TrialHost.open(db, trialId, protocol, robot);
     host.onRobotStatus((connected, detail) => onRobotStatus(trialId, connected, detail));
+    // Unwatched for idleMs: closes, unless an action is still under way (then looks again later).
     const retireIfIdle = () => {
-      const timer = setTimeout(() => host.idle && void retire(trialId, host).catch(retireFailed), idleMs);
+      const timer = setTimeout(() => {
+        if (host.closed || host.watched) return; // a client that came back starts the clock again as it leaves
+        if (host.busy) return retireIfIdle();
+        void retire(trialId, host).catch(retireFailed);
+      }, idleMs);
       timer.unref?.();
     };
     host.onLifecycle({ ended: () => void retire(trialId, host).catch(retireFailed), unwatched: retireIfIdle });

@@ -30,6 +30,12 @@ const protocol: ProtocolSnapshot = {
       description: "",
       actions: [{ id: "hi", type: "say", name: "", parameters: { text: "Hi" }, parallelGroup: null }],
     },
+    {
+      id: "s2",
+      name: "Wait",
+      description: "",
+      actions: [{ id: "hold", type: "pause", name: "", parameters: { seconds: 3 }, parallelGroup: null }],
+    },
   ],
 };
 
@@ -150,6 +156,21 @@ describe.sequential("the trials a runtime holds open", () => {
     });
     expect((await again.command({ kind: "complete" }, null)).ok).toBe(true);
     await until(async () => hosts.size === 0 && (await trialLocks()) === 0, "the ended trial to close");
+  });
+
+  it("keeps an unfollowed trial open while an action is under way, and closes it after", async () => {
+    const [trialId] = await newTrials(1);
+    const host = (await hosts.get(trialId!))!;
+    await host.command({ kind: "start" }, null);
+    await host.command({ kind: "next" }, null);
+    await until(() => host.current.actions.hi?.status === "done", "the greeting");
+    await host.command({ kind: "next" }, null);
+    await host.command({ kind: "next" }, null);
+    await until(() => host.current.actions.hold?.status === "running", "the pause to start");
+    await new Promise((r) => setTimeout(r, IDLE_MS * 3));
+    expect(hosts.size).toBe(1);
+    await until(() => hosts.size === 0 && sim.connections() === 0, "the trial to close once the pause is over");
+    expect(host.current.actions.hold?.status).toBe("done");
   });
 
   it("opens a finished trial without connecting to its robot", async () => {
