@@ -218,7 +218,20 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
         return reject("Another wizard has just claimed this trial: you may watch it but not run it.");
       ws.data.access = { ...ws.data.access!, trial: { ...ws.data.access!.trial, wizardId: access.userId } };
     }
-    const result = await host.command(command, access.userId);
+    // Safety before logging: the robot stops now, whatever the database is doing.
+    const halting = command.kind === "emergency_stop" || command.kind === "abort";
+    if (halting) {
+      host.halt();
+      send(ws, { type: "halted", requestId: message.requestId });
+    }
+    const result = await host.command(command, access.userId).catch((error: unknown) => {
+      if (!halting) throw error;
+      const ref = logUnexpected(error, "logging a stop");
+      return {
+        ok: false as const,
+        reason: `The robot was stopped, but the stop could not be logged (reference ${ref}).`,
+      };
+    });
     if (result.ok) send(ws, { type: "ack", requestId: message.requestId, seqs: result.events.map((e) => e.seq) });
     else reject(result.reason);
   }

@@ -26,11 +26,24 @@ export type CommandResult = { ok: true; events: StoredEvent[] } | { ok: false; r
 
 const BLOCKS_WITHOUT_ROBOT = new Set<string>(CONTROL_TYPES);
 
+/** The wizard's commands that can set the robot going: after a stop, one asked for before it is stale. */
+const MOVES_THE_ROBOT = new Set<Command["kind"]>([
+  "start",
+  "next",
+  "trigger",
+  "answer",
+  "jump",
+  "unscripted",
+  "resume",
+]);
+
 export class TrialHost {
   private state: TrialState;
   private queue: Promise<unknown> = Promise.resolve();
   private readonly listeners = new Set<(events: StoredEvent[]) => void>();
   private shut = false;
+  /** How many times the robot was stopped outside the queue: commands asked for before a stop are dropped. */
+  private halts = 0;
   /** Told when the trial ends, and when its last client leaves. */
   private readonly lifecycle = { ended: () => {}, unwatched: () => {} };
   private readonly timers = new Set<ReturnType<typeof setTimeout>>();
@@ -112,16 +125,30 @@ export class TrialHost {
     return Object.values(this.state.actions).some((a) => a.status === "requested" || a.status === "running");
   }
 
+  /**
+   * Stops the robot now, ahead of every command waiting to be logged: safety
+   * before logging. The stop's own command is logged after, in turn; what
+   * the wizard asked for before the stop and is still waiting is dropped
+   * (see `execute`), never sent to the robot after it.
+   */
+  halt() {
+    this.halts++;
+    this.robot.halt();
+  }
+
   /** Runs after every earlier command has finished, so the log never forks. */
   command(command: Command, actorId: string | null): Promise<CommandResult> {
-    const run = this.queue.then(() => this.execute(command, actorId));
+    const halts = this.halts;
+    const run = this.queue.then(() => this.execute(command, actorId, halts));
     this.queue = run.catch(() => undefined);
     return run;
   }
 
-  private async execute(command: Command, actorId: string | null): Promise<CommandResult> {
+  private async execute(command: Command, actorId: string | null, halts: number): Promise<CommandResult> {
     // A robot's late report, or a clock, after the host closed: the trial is no longer run from here.
     if (this.shut) return { ok: false, reason: "This trial is no longer open here. Reload the page." };
+    if (halts !== this.halts && MOVES_THE_ROBOT.has(command.kind))
+      return { ok: false, reason: "Not carried out: the robot was stopped after you asked for this." };
     const decision = decide(this.protocol, this.state, command);
     if (!decision.ok) return decision;
     const cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
@@ -129,9 +156,25 @@ export class TrialHost {
     this.state = applyAll(this.state, stored);
     this.t0 ??= startedAt(stored);
     for (const listener of this.listeners) listener(stored);
-    this.carryOut(decision.events);
+    // Stopped while this was being logged: it is in the log as asked for, and goes no further.
+    if (halts !== this.halts) this.dropAfterHalt(decision.events);
+    else this.carryOut(decision.events);
     if (this.state.status === "completed" || this.state.status === "aborted") this.lifecycle.ended();
     return { ok: true, events: stored };
+  }
+
+  /** Each action the stop overtook is logged as failed, so the log says it never reached the robot. */
+  private dropAfterHalt(events: EngineEvent[]) {
+    for (const event of events)
+      if (event.type === "action.requested")
+        void this.command(
+          {
+            kind: "failed",
+            actionId: event.actionId,
+            reason: "Not sent: the robot was stopped before this reached it.",
+          },
+          null,
+        );
   }
 
   /** What happens in the world once the events are committed. */

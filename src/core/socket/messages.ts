@@ -6,7 +6,8 @@ import type { StoredEvent } from "@/core/trial";
 
 // 2: tokens are single use and carry no role; one hello per connection; the
 // server sends "access" when the caller's role or rights change.
-export const SOCKET_MESSAGES_VERSION = 2;
+// 3: "halted": the robot was stopped, ahead of the stop being logged.
+export const SOCKET_MESSAGES_VERSION = 3;
 
 /** Every id a message carries is declared with this, so tests can find them all. */
 export const id = z.string().min(1).max(100);
@@ -42,7 +43,11 @@ export const clientMessageSchema = z.discriminatedUnion("type", [
     version: z.literal(SOCKET_MESSAGES_VERSION),
     token: z.string().min(1).max(4000),
     // Sequence numbers are stored as 32-bit integers; anything larger cannot be a trial's.
-    lastSeq: z.number().int().min(0).max(2 ** 31 - 1),
+    lastSeq: z
+      .number()
+      .int()
+      .min(0)
+      .max(2 ** 31 - 1),
   }),
   z.object({ type: z.literal("command"), requestId: id, command: commandSchema }),
   z.object({
@@ -91,6 +96,8 @@ export const serverMessageSchema = z.discriminatedUnion("type", [
   z.object({ type: z.literal("access"), role: z.string(), mayRun: z.boolean() }),
   z.object({ type: z.literal("events"), events: z.array(wireEvent) }),
   z.object({ type: z.literal("ack"), requestId: z.string(), seqs: z.array(z.number().int()) }),
+  // An emergency stop or abort reached the robot; its "ack" follows once it is logged.
+  z.object({ type: z.literal("halted"), requestId: z.string() }),
   z.object({ type: z.literal("rejected"), requestId: z.string().nullable(), reason: z.string() }),
   z.object({ type: z.literal("presence"), viewers: z.array(viewer) }),
   z.object({

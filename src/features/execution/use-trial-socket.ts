@@ -33,6 +33,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const [notice, setNotice] = useState<string | null>(null);
   // About the trial (a command refused): stays only while the trial is as it was when refused.
   const [refusal, setRefusal] = useState<Refusal | null>(null);
+  // A stop that reached the robot but is not logged yet, a second after: the page says the log is behind.
+  const [logBehind, setLogBehind] = useState<string | null>(null);
   // Whether the server lets me command this trial (role, assigned wizard), as it last said.
   const [mayRun, setMayRun] = useState<boolean | null>(null);
   const socket = useRef<WebSocket | null>(null);
@@ -89,7 +91,16 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         else if (m.type === "presence") setViewers(m.viewers);
         else if (m.type === "robot") setRobot({ connected: m.connected, detail: m.detail });
         else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
-        else if (m.type === "ack" || m.type === "rejected") {
+        else if (m.type === "halted") {
+          const requestId = m.requestId;
+          setTimeout(() => {
+            if (pending.current.has(requestId))
+              setLogBehind(
+                "The robot was stopped, but the stop is not in the log yet: the database is not answering. It is written as soon as the database is back.",
+              );
+          }, 1000);
+        } else if (m.type === "ack" || m.type === "rejected") {
+          setLogBehind(null);
           const settle = m.requestId ? pending.current.get(m.requestId) : undefined;
           const command = m.requestId ? (sent.current.get(m.requestId) ?? null) : null;
           if (m.requestId) {
@@ -153,7 +164,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   }, [protocol, events]);
   return {
     /** What the page must say now: the connection's trouble first, else a refusal that still applies. */
-    notice: notice ?? refusalInForce(refusal, protocol, state)?.reason ?? null,
+    notice: notice ?? logBehind ?? refusalInForce(refusal, protocol, state)?.reason ?? null,
     state,
     events,
     viewers,
