@@ -208,7 +208,8 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
     await researcher.getByLabel("Title").fill("Storytelling, replication");
     await screenshot(researcher, "study-from-template");
     await researcher.getByRole("button", { name: "Create study" }).click();
-    await researcher.getByRole("heading", { name: "Storytelling, replication" }).waitFor();
+    await researcher.waitForURL(/\/studies\/[^/?#]+$/);
+    await researcher.getByRole("heading", { name: "Storytelling, replication", level: 1 }).waitFor();
     const replicationId = researcher.url().replace(/.*\/studies\/([^/?#]+).*/, "$1");
 
     // The design came along as drafts; the four participants and their trials did not.
