@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { readSettings, type StudySettings } from "./settings";
+import { readSettings, settingsProblems, type StudySettings } from "./settings";
 import { templateSettings } from "./template";
 
 // A source with every setting away from its default, so what is reset shows.
@@ -30,6 +30,21 @@ describe("a study from a template", () => {
     copied.blinding.conditionsFromWizards = false;
     expect(source.demographics[0]!.options).toEqual(["none", "some"]);
     expect(source.blinding.conditionsFromWizards).toBe(true);
+  });
+
+  it("keeps stratified assignment with the demographic question it stratifies by", () => {
+    const stratified = readSettings({
+      assignment: { strategy: "stratified", perCondition: 1, stratifyBy: "experience", seed: "source-seed" },
+      demographics: source.demographics,
+    });
+    const made = templateSettings(stratified, () => "new-seed");
+    expect(made.assignment).toEqual({
+      strategy: "stratified",
+      perCondition: 1,
+      stratifyBy: "experience",
+      seed: "new-seed",
+    });
+    expect(settingsProblems(made)).toEqual([]);
   });
 
   it("gives a source with default settings a seed all the same", () => {
