@@ -91,9 +91,11 @@ it("imports a file with its Thens", async () => {
 
 it("is refused to wizards and observers, and for another study's experiment", async () => {
   const { experiment } = await quiz();
-  await expect(f.api("wizard").experiments.duplicate({ experimentId: experiment.id })).rejects.toMatchObject({
-    code: "FORBIDDEN",
-  });
+  for (const caller of ["wizard", "observer"] as const)
+    await expect(f.api(caller).experiments.duplicate({ experimentId: experiment.id })).rejects.toMatchObject({
+      code: "FORBIDDEN",
+      message: `As ${caller === "observer" ? "an" : "a"} ${caller} of this study you may not do this.`,
+    });
   await expect(f.api("outsider").experiments.duplicate({ experimentId: experiment.id })).rejects.toMatchObject({
     code: expect.stringMatching(/FORBIDDEN|NOT_FOUND/),
   });
