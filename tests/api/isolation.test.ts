@@ -7,15 +7,17 @@
 // Every one must be
 // refused, and study B's rows must come out of it byte for byte unchanged.
 import { TRPCError } from "@trpc/server";
-import { sql } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { isStudyOperation, type Operation } from "../../src/core/access/policy";
-import { REFERENCES, type ReferenceKey } from "../../src/server/access/resources";
+import { ACROSS_STUDIES, REFERENCES, type ReferenceKey } from "../../src/server/access/resources";
 import { appRouter } from "../../src/server/api/root";
 import type { Meta } from "../../src/server/api/trpc";
 import { freshDatabase } from "../support/db";
+import { studyFingerprint } from "../support/study-rows";
 import { buildFixture, CALLERS, newPerson, type Caller } from "./fixture";
 import { baseData, MATRIX } from "./matrix";
+
+type Key = ReferenceKey | keyof typeof ACROSS_STUDIES;
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -66,8 +68,9 @@ async function victimStudy() {
     participantId: participant.id,
     trialId: trial.id,
   });
-  const ids: Record<ReferenceKey, string | string[]> = {
+  const ids: Record<Key, string | string[]> = {
     studyId: study.id,
+    intoStudyId: study.id,
     experimentId: experiment.id,
     versionId: version.id,
     participantId: participant.id,
@@ -86,7 +89,7 @@ async function victimStudy() {
 const b = await victimStudy();
 
 /** Study A's row of every kind, for smuggling the other way: B's row named, A's id beside it. */
-async function ownIds(): Promise<Record<ReferenceKey, string | string[]>> {
+async function ownIds(): Promise<Record<Key, string | string[]>> {
   const owner = f.api("owner");
   const session = await owner.sessions.schedule({
     participantId: (
@@ -110,6 +113,7 @@ async function ownIds(): Promise<Record<ReferenceKey, string | string[]>> {
   const questionnaire = await owner.questionnaires.create({ studyId: a.study.id, instrument: "sus" });
   return {
     studyId: a.study.id,
+    intoStudyId: a.study.id,
     experimentId: a.experiment.id,
     versionId: a.version.id,
     participantId: a.participant.id,
@@ -125,29 +129,7 @@ async function ownIds(): Promise<Record<ReferenceKey, string | string[]>> {
 }
 const aIds = await ownIds();
 
-/** Every row of study B, as text, in a fixed order: equal before and after means nothing was written. */
-async function fingerprint(studyId: string): Promise<string> {
-  const rows = await db.execute(sql`
-    select 'study' as t, to_jsonb(s)::text as r from studies s where s.id = ${studyId}
-    union all select 'member', to_jsonb(m)::text from study_members m where m.study_id = ${studyId}
-    union all select 'experiment', to_jsonb(e)::text from experiments e where e.study_id = ${studyId}
-    union all select 'step', to_jsonb(st)::text from steps st join experiments e on e.id = st.experiment_id where e.study_id = ${studyId}
-    union all select 'action', to_jsonb(ac)::text from actions ac join steps st on st.id = ac.step_id join experiments e on e.id = st.experiment_id where e.study_id = ${studyId}
-    union all select 'version', to_jsonb(v)::text from experiment_versions v join experiments e on e.id = v.experiment_id where e.study_id = ${studyId}
-    union all select 'participant', to_jsonb(p)::text from participants p where p.study_id = ${studyId}
-    union all select 'condition', to_jsonb(c)::text from conditions c where c.study_id = ${studyId}
-    union all select 'session', to_jsonb(se)::text from sessions se where se.study_id = ${studyId}
-    union all select 'trial', to_jsonb(tr)::text from trials tr where tr.study_id = ${studyId}
-    union all select 'event', to_jsonb(ev)::text from trial_events ev join trials tr on tr.id = ev.trial_id where tr.study_id = ${studyId}
-    union all select 'annotation', to_jsonb(an)::text from annotations an join trials tr on tr.id = an.trial_id where tr.study_id = ${studyId}
-    union all select 'recording', to_jsonb(mr)::text from media_recordings mr join trials tr on tr.id = mr.trial_id where tr.study_id = ${studyId}
-    union all select 'questionnaire', to_jsonb(q)::text from questionnaires q where q.study_id = ${studyId}
-    union all select 'link', to_jsonb(l)::text from questionnaire_links l where l.study_id = ${studyId}
-    union all select 'audit', to_jsonb(au)::text from audit_log au where au.study_id = ${studyId}
-    order by 1, 2`);
-  return JSON.stringify(rows);
-}
-const before = await fingerprint(b.id);
+const before = await studyFingerprint(db, b.id);
 
 interface ProcedureDef {
   _def: { meta?: Meta; inputs: Array<{ shape?: Record<string, unknown> }> };
@@ -159,6 +141,13 @@ const isStudyProcedure = (path: string) => {
   return op !== "public" && isStudyOperation(op);
 };
 const KEYS = Object.keys(REFERENCES) as ReferenceKey[];
+/**
+ * Keys naming a row of another study on purpose (where a copy goes): swapped
+ * for B's like every id where a procedure takes one. Never added as extras:
+ * a procedure that takes none drops them unread.
+ */
+const ACROSS = Object.keys(ACROSS_STUDIES) as Array<keyof typeof ACROSS_STUDIES>;
+const ALL_KEYS: Key[] = [...KEYS, ...ACROSS];
 
 /** A copy of the input with every value under `keys` (at any depth) replaced by study B's row of that kind. */
 function swapped(input: unknown, keys: ReadonlySet<string>): unknown {
@@ -167,16 +156,16 @@ function swapped(input: unknown, keys: ReadonlySet<string>): unknown {
   return Object.fromEntries(
     Object.entries(input).map(([k, v]) => [
       k,
-      keys.has(k) && v !== null && v !== undefined ? b.ids[k as ReferenceKey] : swapped(v, keys),
+      keys.has(k) && v !== null && v !== undefined ? b.ids[k as Key] : swapped(v, keys),
     ]),
   );
 }
 
 /** The reference keys an input carries, at any depth. */
-function keysIn(input: unknown, found = new Set<ReferenceKey>()): Set<ReferenceKey> {
+function keysIn(input: unknown, found = new Set<Key>()): Set<Key> {
   if (input === null || typeof input !== "object" || input instanceof Date) return found;
   for (const [k, v] of Object.entries(input)) {
-    if ((KEYS as string[]).includes(k) && v !== null && v !== undefined) found.add(k as ReferenceKey);
+    if ((ALL_KEYS as string[]).includes(k) && v !== null && v !== undefined) found.add(k as Key);
     keysIn(v, found);
   }
   return found;
@@ -186,7 +175,7 @@ function keysIn(input: unknown, found = new Set<ReferenceKey>()): Set<ReferenceK
 function variants(input: unknown): Array<[string, unknown]> {
   const own = keysIn(input);
   const base = input && typeof input === "object" ? (input as Record<string, unknown>) : {};
-  const allB = swapped(input, new Set(KEYS)) as Record<string, unknown>;
+  const allB = swapped(input, new Set(ALL_KEYS)) as Record<string, unknown>;
   return [
     ["every id of study B", allB],
     ...KEYS.filter((k) => !own.has(k)).map((k): [string, unknown] => [
@@ -248,6 +237,6 @@ describe("study isolation", () => {
   });
 
   it("left every row of study B as it was", async () => {
-    expect(await fingerprint(b.id)).toBe(before);
+    expect(await studyFingerprint(db, b.id)).toBe(before);
   });
 });

@@ -91,6 +91,8 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "studies.mine": [SIGNED_IN, () => undefined],
   "studies.get": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
   "studies.create": [CREATORS, () => ({ title: "New" })],
+  // Reading the template's design in it, and creating studies by the account (system role researcher or administrator).
+  "studies.createFromTemplate": [EDITORS, (_f, b) => ({ studyId: b.study.id, title: "From a template" })],
   "studies.update": [OWNER, (_f, b) => ({ studyId: b.study.id, description: "changed" })],
   "studies.figures": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
   "studies.exportArchive": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
@@ -120,7 +122,11 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "versions.publish": [EDITORS, async (f, b) => ({ experimentId: (await publishable(f, b)).id })],
   "versions.diff": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id, from: 1, to: 1 })],
   "experiments.exportFile": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],
-  "experiments.duplicate": [EDITORS, (_f, b) => ({ experimentId: b.experiment.id })],
+  // Into another study where every study-role caller has the same role: reading the source, designing there.
+  "experiments.duplicate": [
+    EDITORS,
+    async (f, b) => ({ experimentId: b.experiment.id, intoStudyId: (await f.newStudy("Into")).id }),
+  ],
   "experiments.importFile": [
     EDITORS,
     async (f, b) => ({

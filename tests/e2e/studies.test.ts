@@ -1,7 +1,8 @@
 // Running a whole study in Chromium: a researcher sets up two conditions with
 // balanced assignment, registers four consenting participants and plans their
 // sessions; a blinded wizard runs all four from "My sessions" and never sees
-// which condition a session was.
+// which condition a session was. Then a new study starts from this one as a
+// template, and an experiment is copied back into it.
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
@@ -197,6 +198,43 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
       .filter({ hasText: "P002" })
       .getByRole("cell", { name: "any wizard", exact: true })
       .waitFor();
+    await researcher.context().close();
+  }, 120_000);
+  it("lets a researcher start a new study from this one, without its data, and copy an experiment back", async () => {
+    const researcher = await (await newContext(browser, app.url)).newPage();
+    await signInAs(researcher, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await researcher.getByRole("button", { name: "New study from…" }).click();
+    await researcher.getByLabel("Start from").selectOption({ label: "Storytelling and memory (demo)" });
+    await researcher.getByLabel("Title").fill("Storytelling, replication");
+    await screenshot(researcher, "study-from-template");
+    await researcher.getByRole("button", { name: "Create study" }).click();
+    await researcher.waitForURL(/\/studies\/[^/?#]+$/);
+    await researcher.getByRole("heading", { name: "Storytelling, replication", level: 1 }).waitFor();
+    const replicationId = researcher.url().replace(/.*\/studies\/([^/?#]+).*/, "$1");
+
+    // The design came along as drafts; the four participants and their trials did not.
+    const api = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const copied = await api.experiments.list.query({ studyId: replicationId });
+    expect(copied.map((e) => [e.name, e.latestVersion])).toEqual([
+      ["Interactive Storyteller", null],
+      ["Storyteller, voice only", null],
+    ]);
+    expect((await api.conditions.list.query({ studyId: replicationId })).map((c) => c.name).sort()).toEqual(
+      [...CONDITIONS].sort(),
+    );
+    expect(await api.participants.list.query({ studyId: replicationId })).toEqual([]);
+    expect(await api.trials.list.query({ studyId: replicationId })).toEqual([]);
+
+    // An experiment of the new study, copied back into the demo study.
+    await researcher.getByRole("tab", { name: "Experiments" }).click();
+    await researcher.getByRole("button", { name: "Duplicate Storyteller, voice only" }).click();
+    await researcher.getByLabel("Copy into").selectOption({ label: "Storytelling and memory (demo)" });
+    await screenshot(researcher, "experiment-duplicate-into");
+    await researcher.getByRole("button", { name: "Duplicate", exact: true }).click();
+    await researcher.waitForURL(/\/experiments\//);
+    const [demo] = (await api.studies.mine.query()).filter((st) => st.title === "Storytelling and memory (demo)");
+    const names = (await api.experiments.list.query({ studyId: demo!.id })).map((e) => e.name);
+    expect(names.filter((n) => n === "Storyteller, voice only")).toHaveLength(2);
     await researcher.context().close();
   }, 120_000);
 });

@@ -135,7 +135,8 @@ const StepCard = memo(
           >
             <span className="text-xs font-semibold text-slate-500">Step {index + 1}</span>{" "}
             <span className="font-semibold">{step.name}</span>
-            {step.description && <span className="ml-2 text-xs text-slate-500">{step.description}</span>}
+            {/* A space, not only a margin: the visible words must read as the button's name does (WCAG 2.5.3). */}
+            {step.description && <span className="ml-1 text-xs text-slate-500"> {step.description}</span>}
           </button>
           <MarkIcons marks={stepMarks} />
         </div>

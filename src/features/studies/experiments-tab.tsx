@@ -12,6 +12,7 @@ import { fieldError, Problem } from "@/ui/problem";
 import { Badge, EmptyState, Spinner } from "@/ui/surface";
 import { ListView } from "@/ui/list-view";
 import { Td, Th } from "@/ui/table";
+import { DuplicateExperimentDialog } from "./duplicate-experiment-dialog";
 
 export function ExperimentsTab({ studyId, role }: { studyId: string; role: StudyRole }) {
   const trpc = useTRPC();
@@ -25,9 +26,6 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
     trpc.trials.rehearse.mutationOptions({ onSuccess: (trial) => router.push(`/trials/${trial.id}`) }),
   );
   const canRehearse = studyRoleMay(role, "trial.create");
-  const duplicate = useMutation(
-    trpc.experiments.duplicate.mutationOptions({ onSuccess: (copy) => router.push(`/experiments/${copy.id}`) }),
-  );
   return (
     <div className="space-y-4">
       {edit && (
@@ -38,7 +36,7 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
       )}
       <ListView
         query={experiments}
-        problem={publish.error ?? rehearse.error ?? duplicate.error}
+        problem={publish.error ?? rehearse.error}
         empty={<EmptyState title="No experiments yet." />}
         columns={
           <>
@@ -81,18 +79,7 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
                   Rehearse
                 </Button>
               )}
-              {edit && (
-                <Button
-                  variant="ghost"
-                  size="sm"
-                  aria-label={`Duplicate ${e.name}`}
-                  title="A copy of the design in this study, to change without touching the original"
-                  disabled={duplicate.isPending}
-                  onClick={() => duplicate.mutate({ experimentId: e.id })}
-                >
-                  Duplicate
-                </Button>
-              )}
+              {edit && <DuplicateExperimentDialog studyId={studyId} experiment={e} />}
               {edit && (
                 <Button
                   variant="secondary"

@@ -6,6 +6,7 @@ import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, EmptyState, ROLE_TONE, Spinner, STATUS_TONE } from "@/ui/surface";
 import { NewStudyDialog } from "./new-study-dialog";
+import { StudyFromTemplateDialog } from "./study-from-template-dialog";
 
 export function StudyList({ systemRole }: { systemRole: SystemRole }) {
   const trpc = useTRPC();
@@ -15,7 +16,12 @@ export function StudyList({ systemRole }: { systemRole: SystemRole }) {
     <section>
       <div className="mb-6 flex items-center justify-between">
         <h1 className="text-2xl font-semibold">My studies</h1>
-        {canCreate && <NewStudyDialog />}
+        {canCreate && (
+          <div className="flex gap-2">
+            {studies.data && studies.data.length > 0 && <StudyFromTemplateDialog />}
+            <NewStudyDialog />
+          </div>
+        )}
       </div>
       {studies.isPending && <Spinner />}
       <Problem error={studies.error} />

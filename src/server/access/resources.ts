@@ -98,6 +98,14 @@ export const REFERENCES = {
 
 export type ReferenceKey = keyof typeof REFERENCES;
 
+/**
+ * Input keys that name a row of another study on purpose: the study a copy
+ * goes into. The check above leaves them alone; the procedure authorizes each
+ * itself, for what it does there (`authorize` in api/trpc.ts), and the
+ * isolation test swaps them for another study's rows like every reference.
+ */
+export const ACROSS_STUDIES = { intoStudyId: "study" } as const satisfies Record<string, Resource>;
+
 /** The input key a procedure acting on this kind of row carries its id in. */
 export function keyOf(resource: Resource): ReferenceKey {
   return `${resource}Id` as ReferenceKey;

@@ -118,6 +118,34 @@ export interface StudyContext<R extends Resource> {
 }
 
 /**
+ * The caller's access to one row of a study, for `op`: the row is loaded, the
+ * study is the row's own, and the policy decides with the caller's role
+ * there. An unknown id reads exactly like a row of a study the caller may not
+ * see. A procedure that reaches a second study (a copy into another study)
+ * asks this again for the row there.
+ */
+export async function authorize<R extends Resource>(
+  db: Database,
+  user: SignedInUser,
+  op: StudyOperation,
+  resource: R,
+  id: string,
+): Promise<StudyContext<R>> {
+  const row = await loadResource(db, resource, id);
+  const notFound = () =>
+    new TRPCError({
+      code: "NOT_FOUND",
+      message: `No such ${nameOf(resource)}, or it belongs to a study you are not a member of.`,
+    });
+  if (!row) throw notFound();
+  const { role, blinding } = await studyAccessOf(db, row.studyId, user.id);
+  const decision = decide({ systemRole: user.role, studyRole: role, blinding }, op);
+  if (!decision.allow)
+    throw decision.hidden ? notFound() : new TRPCError({ code: "FORBIDDEN", message: decision.reason });
+  return { studyId: row.studyId, studyRole: role!, blinding, row };
+}
+
+/**
  * A procedure that acts on one row of a study. After its input is validated,
  * the row named by `<resource>Id` is loaded, the study is the row's own, the
  * policy decides with the caller's role there, and any other id in the input
@@ -136,19 +164,8 @@ export function studyProcedure<R extends Resource, I extends z.ZodObject>(op: St
           code: "INTERNAL_SERVER_ERROR",
           message: `A procedure on a ${resource} needs ${key} in its input.`,
         });
-      const row = await loadResource(ctx.db, resource, id);
-      // An unknown id reads exactly like a row of a study the caller may not see.
-      const notFound = () =>
-        new TRPCError({
-          code: "NOT_FOUND",
-          message: `No such ${nameOf(resource)}, or it belongs to a study you are not a member of.`,
-        });
-      if (!row) throw notFound();
-      const { role, blinding } = await studyAccessOf(ctx.db, row.studyId, ctx.user.id);
-      const decision = decide({ systemRole: ctx.user.role, studyRole: role, blinding }, op);
-      if (!decision.allow)
-        throw decision.hidden ? notFound() : new TRPCError({ code: "FORBIDDEN", message: decision.reason });
-      await assertOneStudy(ctx.db, row.studyId, await getRawInput(), { kind: resource, id });
-      return next({ ctx: { studyId: row.studyId, studyRole: role!, blinding, row } satisfies StudyContext<R> });
+      const access = await authorize(ctx.db, ctx.user, op, resource, id);
+      await assertOneStudy(ctx.db, access.studyId, await getRawInput(), { kind: resource, id });
+      return next({ ctx: access });
     });
 }

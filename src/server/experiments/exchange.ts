@@ -8,7 +8,8 @@ import type { DesignDraft } from "@/core/designer/types";
 import type { Database } from "@/store/client";
 import { experiments } from "@/store/schema";
 import { fileSlug } from "../file-slug";
-import { insertSteps, loadDesign } from "./design";
+import { findPlugin } from "@/robots/catalog";
+import { insertSteps, loadDesign, type Tx } from "./design";
 
 export async function exportFile(db: Database, experimentId: string) {
   const design = await loadDesign(db, experimentId);
@@ -30,20 +31,38 @@ export async function importFile(db: Database, studyId: string, text: string, us
 }
 
 /**
- * A copy of an experiment's draft in the same study, named "… (copy)". It is
- * made the way another lab would receive it, through the experiment file, so
- * it gets fresh ids with its branches and "Then"s pointing at its own steps,
- * and nothing but the design: no versions, trials or data.
+ * A copy of an experiment's draft, in its own study ("… (copy)") or, under its
+ * own name, in another. It is made the way another lab would receive it,
+ * through the experiment file, so it gets fresh ids with its branches and
+ * "Then"s pointing at its own steps, and nothing but the design: no versions,
+ * trials or data. Who may copy from where to where is the caller's to check.
  */
-export async function duplicate(db: Database, experimentId: string, userId: string) {
+export async function duplicate(db: Database | Tx, experimentId: string, userId: string, intoStudyId?: string) {
   const design = await loadDesign(db, experimentId);
+  const sameStudy = intoStudyId === undefined || intoStudyId === design.studyId;
+  if (!sameStudy) await assertRobotInstalled(db, design);
   const copied = importExperiment(exportExperiment(draftFrom(design)), () => crypto.randomUUID());
   // An exported draft always imports: the round trip is tested byte for byte in the core.
   if (!copied.ok) throw new Error(`The experiment ${experimentId} did not survive its own export`);
-  return storeNew(db, design.studyId, { ...copied.draft, name: `${design.name} (copy)`.slice(0, 200) }, userId);
+  const name = sameStudy ? `${design.name} (copy)`.slice(0, 200) : design.name;
+  return storeNew(db, intoStudyId ?? design.studyId, { ...copied.draft, name }, userId);
 }
 
-async function storeNew(db: Database, studyId: string, draft: DesignDraft, userId: string) {
+/**
+ * Robot plugins are installed for the whole server, not per study: a copy
+ * into another study is refused when the robot it is for has no plugin here
+ * (a repository removed since), rather than leaving a design nobody can run.
+ */
+async function assertRobotInstalled(db: Database | Tx, design: { name: string; robotId: string }) {
+  if (await findPlugin(db, design.robotId)) return;
+  throw new TRPCError({
+    code: "PRECONDITION_FAILED",
+    message: `“${design.name}” is for the robot “${design.robotId}”, whose plugin is not installed on this server: an administrator can install it under Administration → Robot plugins before it is copied.`,
+  });
+}
+
+async function storeNew(db: Database | Tx, studyId: string, draft: DesignDraft, userId: string) {
+  // Inside a larger transaction (a study from a template) this is a savepoint of it.
   return db.transaction(async (tx) => {
     const [experiment] = await tx
       .insert(experiments)

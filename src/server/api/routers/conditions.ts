@@ -4,6 +4,7 @@ import { z } from "zod";
 import { assign, strategyFor } from "@/core/studies/assignment";
 import { readSettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
+import { insertCondition } from "../../studies/conditions";
 import { conditions, experiments, participants, studies } from "@/store/schema";
 import { qualified } from "@/store/qualified";
 import { router, studyProcedure } from "../trpc";
@@ -37,21 +38,7 @@ export const conditionsRouter = router({
       description: z.string().max(2000).default(""),
       experimentId: id,
     }),
-  ).mutation(async ({ ctx, input }) => {
-    const [row] = await ctx.db
-      .insert(conditions)
-      .values({ ...input, studyId: ctx.studyId })
-      .returning()
-      .catch((e: { cause?: { code?: string } }) => {
-        if (e.cause?.code === "23505")
-          throw new TRPCError({
-            code: "CONFLICT",
-            message: `This study already has a condition called ${input.name}.`,
-          });
-        throw e;
-      });
-    return row!;
-  }),
+  ).mutation(({ ctx, input }) => insertCondition(ctx.db, ctx.studyId, input)),
 
   /** Assigns a participant by the study's strategy, on the server, recording seed and position. */
   assign: studyProcedure(

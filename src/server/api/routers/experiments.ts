@@ -1,10 +1,12 @@
 import { asc, eq, sql } from "drizzle-orm";
+import { TRPCError } from "@trpc/server";
 import { z } from "zod";
+import { studyAccessOf } from "@/store/study-access";
 import { experimentVersions, experiments, steps } from "@/store/schema";
 import { duplicate, exportFile, importFile } from "../../experiments/exchange";
 import { loadDesign, saveDesign } from "../../experiments/design";
 import { qualified } from "@/store/qualified";
-import { router, studyProcedure } from "../trpc";
+import { authorize, router, studyProcedure } from "../trpc";
 import { id } from "../validation";
 import { designInput, experimentDetails } from "./design-input";
 
@@ -54,10 +56,30 @@ export const experimentsRouter = router({
     z.object({ studyId: id, text: z.string().max(2_000_000, "the file must be smaller than 2 MB") }),
   ).mutation(({ ctx, input }) => importFile(ctx.db, ctx.studyId, input.text, ctx.user.id)),
 
-  /** A copy of the draft in the same study, "… (copy)": the design only, never its versions or trials. */
-  duplicate: studyProcedure("experiment.edit", "experiment", z.object({ experimentId: id })).mutation(({ ctx }) =>
-    duplicate(ctx.db, ctx.row.id, ctx.user.id),
-  ),
+  /**
+   * A copy of the draft, the design only (never its versions or trials): in
+   * its own study, or in `intoStudyId`. Reading the source is checked on the
+   * source experiment's own study (the middleware); designing on the study it
+   * goes into, which is the only id taken from the caller for that side.
+   */
+  duplicate: studyProcedure(
+    "experiment.read",
+    "experiment",
+    z.object({ experimentId: id, intoStudyId: id.optional() }),
+  ).mutation(async ({ ctx, input }) => {
+    const into = await authorize(ctx.db, ctx.user, "experiment.edit", "study", input.intoStudyId ?? ctx.studyId).catch(
+      async (error: unknown) => {
+        if (!(error instanceof TRPCError) || error.code !== "FORBIDDEN" || !input.intoStudyId) throw error;
+        // The policy's words say "this study": here there are two, so name which and why.
+        const { role } = await studyAccessOf(ctx.db, input.intoStudyId, ctx.user.id);
+        throw new TRPCError({
+          code: "FORBIDDEN",
+          message: `Not copied: in the study you chose to copy into you are ${role === "observer" ? "an" : "a"} ${role}, and only its owner and researchers design there.`,
+        });
+      },
+    );
+    return duplicate(ctx.db, ctx.row.id, ctx.user.id, into.studyId);
+  }),
 
   /** The whole design in one transaction; refused if someone saved since `baseRevision`. */
   saveDesign: studyProcedure("experiment.edit", "experiment", designInput).mutation(({ ctx, input }) =>

@@ -10,6 +10,7 @@ import { definitionSchema, INSTRUMENTS, items, type Definition } from "@/core/qu
 import { instrumentDefinition } from "@/core/questionnaires/instruments";
 import { answersCsv } from "@/core/questionnaires/export";
 import { participants, questionnaireLinks, questionnaireVersions, questionnaires, trials } from "@/store/schema";
+import { insertQuestionnaire } from "../../questionnaires/create";
 import { hashToken, newToken } from "../../questionnaires/links";
 import { submitted } from "../../questionnaires/responses";
 import { qualified } from "@/store/qualified";
@@ -60,11 +61,7 @@ export const questionnairesRouter = router({
     const draft = input.instrument
       ? instrumentDefinition(input.instrument)
       : blankQuestionnaire(input.name ?? "New questionnaire", () => crypto.randomUUID());
-    const [row] = await ctx.db
-      .insert(questionnaires)
-      .values({ studyId: ctx.studyId, name: input.name ?? draft.title, draft })
-      .returning({ id: questionnaires.id });
-    return row!;
+    return insertQuestionnaire(ctx.db, ctx.studyId, { name: input.name ?? draft.title, draft });
   }),
 
   save: studyProcedure(

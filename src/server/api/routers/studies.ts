@@ -2,7 +2,7 @@ import { randomBytes } from "node:crypto";
 import { TRPCError } from "@trpc/server";
 import { and, desc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
-import { studyRoleMay } from "@/core/access/policy";
+import { decide, studyRoleMay } from "@/core/access/policy";
 import { byConditionCsv } from "@/core/analysis/by-condition";
 import { STUDY_STATUSES } from "@/core/studies/status";
 import {
@@ -14,6 +14,8 @@ import {
 } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { studyArchive } from "../../studies/archive";
+import { createStudy } from "../../studies/create";
+import { studyFromTemplate } from "../../studies/template";
 import { studyFigures, studyResultsByCondition } from "../../studies/summary";
 import { experiments, participants, studies, studyMembers, trials } from "@/store/schema";
 import { qualified } from "@/store/qualified";
@@ -66,16 +68,25 @@ export const studiesRouter = router({
   create: guarded("study.create")
     .input(z.object({ title: text("Title", 200), description: z.string().max(5000).default("") }))
     .mutation(async ({ ctx, input }) => {
-      return ctx.db.transaction(async (tx) => {
-        const [study] = await tx
-          .insert(studies)
-          .values({ title: input.title, description: input.description, createdBy: ctx.user.id })
-          .returning();
-        await tx.insert(studyMembers).values({ studyId: study!.id, userId: ctx.user.id, role: "owner" });
-        await audit(tx, { actorId: ctx.user.id, studyId: study!.id, action: "study.create", target: study!.id });
-        return study!;
-      });
+      return ctx.db.transaction((tx) => createStudy(tx, ctx.user.id, input));
     }),
+
+  /**
+   * A new study from this one as a template: its design (settings that are
+   * design, experiments, conditions, questionnaires), never its participants
+   * or data; the caller becomes its owner and only member. Reading the
+   * template's design is checked on the template study (the middleware);
+   * creating a study, on the caller's account, as for a blank study.
+   */
+  createFromTemplate: studyProcedure(
+    "experiment.read",
+    "study",
+    z.object({ studyId: id, title: text("Title", 200), description: z.string().max(5000).optional() }),
+  ).mutation(({ ctx, input }) => {
+    const mayCreate = decide({ systemRole: ctx.user.role, studyRole: null }, "study.create");
+    if (!mayCreate.allow) throw new TRPCError({ code: "FORBIDDEN", message: mayCreate.reason });
+    return studyFromTemplate(ctx.db, ctx.row.id, ctx.user.id, { title: input.title, description: input.description });
+  }),
 
   update: studyProcedure(
     "study.update",
