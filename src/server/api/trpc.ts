@@ -38,6 +38,17 @@ export interface Context {
   media: { storage: MediaStorage; maxBytes: number };
   /** The ways to the robot this server's settings open: what the designer may call runnable. */
   robotChannels: Channels;
+  /**
+   * Set when the caller came with a personal access token (the analysis API)
+   * rather than a signed-in page: `user` is the token's owner as the account
+   * is now, and only the studies listed here can be reached.
+   */
+  token?: AccessTokenScope;
+}
+
+export interface AccessTokenScope {
+  id: string;
+  studyIds: readonly string[];
 }
 
 export interface Meta {
@@ -103,7 +114,7 @@ const signedIn = t.procedure.use(noNul).use(async ({ ctx, meta, next }) => {
 /** A procedure that touches no study: who may call it depends on the account's system role. */
 export const guarded = (op: SystemOperation) =>
   signedIn.meta({ op }).use(({ ctx, next }) => {
-    const decision = decide({ systemRole: ctx.user.role, studyRole: null }, op);
+    const decision = decide({ systemRole: ctx.user.role, studyRole: null, viaToken: !!ctx.token }, op);
     if (!decision.allow) throw new TRPCError({ code: "FORBIDDEN", message: decision.reason });
     return next();
   });
@@ -143,9 +154,10 @@ export function studyProcedure<R extends Resource, I extends z.ZodObject>(op: St
           code: "NOT_FOUND",
           message: `No such ${nameOf(resource)}, or it belongs to a study you are not a member of.`,
         });
-      if (!row) throw notFound();
+      // A study outside a token's scope reads like one the caller is not a member of.
+      if (!row || (ctx.token && !ctx.token.studyIds.includes(row.studyId))) throw notFound();
       const { role, blinding } = await studyAccessOf(ctx.db, row.studyId, ctx.user.id);
-      const decision = decide({ systemRole: ctx.user.role, studyRole: role, blinding }, op);
+      const decision = decide({ systemRole: ctx.user.role, studyRole: role, blinding, viaToken: !!ctx.token }, op);
       if (!decision.allow)
         throw decision.hidden ? notFound() : new TRPCError({ code: "FORBIDDEN", message: decision.reason });
       await assertOneStudy(ctx.db, row.studyId, await getRawInput(), { kind: resource, id });
