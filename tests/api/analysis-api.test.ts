@@ -5,7 +5,7 @@
 // and the audit log's record of tokens.
 import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
-import { hashTokenSecret } from "../../src/core/access/access-token";
+import { hashTokenSecret } from "../../src/core/access/token-secret";
 import { API_BASE, ENDPOINTS, STUDY_COLUMNS, TRIAL_COLUMNS } from "../../src/core/analysis/api";
 import { EVENT_COLUMNS } from "../../src/core/analysis/exports";
 import { accessTokens, annotations, auditLog, trialSamples } from "../../src/store/schema";

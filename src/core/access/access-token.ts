@@ -1,16 +1,10 @@
-// Personal access tokens: how a secret is made, stored (its hash only), read
-// from a request, and whether it still works. Pure but for the random bytes.
-import { createHash, randomBytes } from "node:crypto";
+// Personal access tokens: how a secret is read from a request, and whether
+// it still works (how one is made and stored: token-secret.ts). No node:
+// imports, so the Access tokens page can share the limits.
 
 /** Marks a string as ours, so a leaked one is recognisable (and secret scanners can match it). */
 export const TOKEN_PREFIX = "hri_";
 export const EXPIRY_DAYS = { min: 1, max: 365 } as const;
-
-/** 256 random bits: guessing one, or reversing its SHA-256, is out of reach; no slow hash is needed. */
-export const newTokenSecret = (bytes: Uint8Array = randomBytes(32)) =>
-  `${TOKEN_PREFIX}${Buffer.from(bytes).toString("base64url")}`;
-
-export const hashTokenSecret = (secret: string) => createHash("sha256").update(secret).digest("hex");
 
 /** The secret of `Authorization: Bearer <secret>`, or null when there is none of ours. */
 export function bearerSecret(authorization: string | null): string | null {

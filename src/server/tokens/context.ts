@@ -3,7 +3,8 @@
 // lost membership or a lowered role take effect at once), limited to the
 // token's studies and to reading. No sign-in cookie is ever looked at here.
 import { and, eq, isNull, ne, or } from "drizzle-orm";
-import { bearerSecret, hashTokenSecret, type TOKEN_REFUSALS, tokenState } from "@/core/access/access-token";
+import { bearerSecret, type TOKEN_REFUSALS, tokenState } from "@/core/access/access-token";
+import { hashTokenSecret } from "@/core/access/token-secret";
 import type { Database } from "@/store/client";
 import { accessTokenStudies, accessTokens, user } from "@/store/schema";
 import type { Context } from "../api/trpc";

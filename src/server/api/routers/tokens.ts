@@ -4,7 +4,8 @@
 import { TRPCError } from "@trpc/server";
 import { and, asc, desc, eq, inArray, isNull } from "drizzle-orm";
 import { z } from "zod";
-import { EXPIRY_DAYS, hashTokenSecret, newTokenSecret, tokenState } from "@/core/access/access-token";
+import { EXPIRY_DAYS, tokenState } from "@/core/access/access-token";
+import { hashTokenSecret, newTokenSecret } from "@/core/access/token-secret";
 import { studyRoleMay } from "@/core/access/policy";
 import type { Database } from "@/store/client";
 import { accessTokenStudies, accessTokens, studies, studyMembers } from "@/store/schema";
