@@ -27,7 +27,7 @@ const HANDLERS: Record<EndpointName, (api: Caller, p: Params) => Promise<Table>>
 
 const NO_STORE = { "cache-control": "no-store" };
 
-export const problem = (status: number, message: string, headers: Record<string, string> = {}) =>
+const problem = (status: number, message: string, headers: Record<string, string> = {}) =>
   Response.json({ error: message }, { status, headers: { ...NO_STORE, ...headers } });
 
 export async function v1Route(req: Request, name: EndpointName, params: Promise<Params>): Promise<Response> {
