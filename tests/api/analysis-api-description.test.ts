@@ -46,7 +46,8 @@ describe("the analysis API's description", () => {
         endpoint.path.match(/\{\w+\}/g) ?? [],
       );
       expect(get.responses["200"]!.content!["application/json"]!.schema.items!.required).toEqual([...endpoint.columns]);
-      expect(Object.keys(get.responses)).toEqual(["200", "400", "401", "403", "404"]);
+      const refusals = ["400", "401", "403", "404", ...(endpoint.path.includes("{trialId}") ? ["412"] : [])];
+      expect(Object.keys(get.responses)).toEqual(["200", ...refusals]);
     }
   });
 

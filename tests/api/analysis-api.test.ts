@@ -240,6 +240,21 @@ describe("what a token is refused", () => {
   });
 });
 
+describe("a participant who withdrew", () => {
+  it("is left out of the study's tables, and one trial of theirs is refused by name (412)", async () => {
+    const w = await studyWithTrial("Withdrawal study", "W-1");
+    const token = (await owner.tokens.create({ name: "W", studyIds: [w.studyId], expiresInDays: 5 })).secret;
+    await owner.participants.update({ participantId: w.participantId, consentStatus: "withdrawn" });
+    for (const table of ["trials", "events", "samples", "annotations", "answers"])
+      expect(await csvOf(await get(`/studies/${w.studyId}/${table}`, as(token)))).toHaveLength(1);
+    const one = await get(`/trials/${w.trialId}/events`, as(token));
+    expect([one.status, (await one.json()).error]).toEqual([
+      412,
+      "W-1 withdrew from the study: their data is excluded from analysis and exports.",
+    ]);
+  });
+});
+
 describe("the audit log", () => {
   it("records a token's creation, its revocation, and its first use of each day", async () => {
     const made = await owner.tokens.create({ name: "Audited", studyIds: [a.studyId], expiresInDays: 7 });

@@ -55,6 +55,10 @@ function operation(name: string, endpoint: Endpoint) {
         "401": error("No token, or a token that is unknown, expired or revoked, or whose owner's account is disabled."),
         "403": error("The token's owner may not read this study's data now (their role, or the study's blinding)."),
         "404": error("No such row, or it belongs to a study outside the token's scope or its owner's studies."),
+        // A study's tables leave a withdrawn participant out; one trial of theirs is refused by name.
+        ...(pathParameters(endpoint.path).includes("trialId")
+          ? { "412": error("The trial's participant withdrew from the study: their data is excluded.") }
+          : {}),
       },
     },
   };
