@@ -13,6 +13,8 @@ import { appendEvents } from "../../src/store/event-store";
 import { parseCsv } from "../support/csv";
 import { ORIGIN, routeServer } from "../support/routes";
 import { newPerson } from "./fixture";
+import { appRouter } from "../../src/server/api/root";
+import { contextFromToken } from "../../src/server/tokens/context";
 
 const s = await routeServer();
 afterAll(s.close);
@@ -237,6 +239,24 @@ describe("what a token is refused", () => {
     const other = s.f.apiAs(await newPerson(s.db, "someone else"));
     await expect(other.tokens.revoke({ tokenId: made.id })).rejects.toMatchObject({ code: "NOT_FOUND" });
     expect((await get("/studies", as(made.secret))).status).toBe(200);
+  });
+});
+
+describe("a token's caller in the API itself", () => {
+  it("may only read data: any other procedure, even one its owner may call, is refused", async () => {
+    const access = await contextFromToken(new Headers(as(tokenA)), "test");
+    if (!("context" in access)) throw new Error(`refused: ${access.refused}`);
+    const api = appRouter.createCaller(access.context);
+    await expect(api.analysis.trials({ studyId: a.studyId })).resolves.toMatchObject({ columns: TRIAL_COLUMNS });
+    const refused = { code: "FORBIDDEN", message: "An access token may only read analysis data." };
+    await expect(api.tokens.list()).rejects.toMatchObject(refused);
+    await expect(api.studies.mine()).rejects.toMatchObject(refused);
+    await expect(api.trials.list({ studyId: a.studyId })).rejects.toMatchObject(refused);
+    await expect(api.studies.update({ studyId: a.studyId, title: "Renamed" })).rejects.toMatchObject(refused);
+    // Outside its scope, even a study its owner owns reads as unknown.
+    await expect(api.studies.update({ studyId: b.studyId, title: "Renamed" })).rejects.toMatchObject({
+      code: "NOT_FOUND",
+    });
   });
 });
 
