@@ -4,11 +4,11 @@
 // mixed; an expired, revoked or unknown token; a session cookie), the formats,
 // and the audit log's record of tokens.
 import { eq } from "drizzle-orm";
-import { afterAll, describe, expect, it } from "vitest";
+import { afterAll, describe, expect, it, vi } from "vitest";
 import { hashTokenSecret } from "../../src/core/access/token-secret";
 import { API_BASE, ENDPOINTS, STUDY_COLUMNS, TRIAL_COLUMNS } from "../../src/core/analysis/api";
 import { EVENT_COLUMNS } from "../../src/core/analysis/exports";
-import { accessTokens, annotations, auditLog, trialSamples } from "../../src/store/schema";
+import { accessTokens, annotations, auditLog, trialSamples, trials } from "../../src/store/schema";
 import { appendEvents } from "../../src/store/event-store";
 import { parseCsv } from "../support/csv";
 import { ORIGIN, routeServer } from "../support/routes";
@@ -257,6 +257,27 @@ describe("a token's caller in the API itself", () => {
     await expect(api.studies.update({ studyId: b.studyId, title: "Renamed" })).rejects.toMatchObject({
       code: "NOT_FOUND",
     });
+  });
+});
+
+describe("an unexpected failure", () => {
+  it("answers 500 in plain JSON with a reference, the details only in the server's log", async () => {
+    // A trial with no protocol at all cannot be read: the server's own fault, not the caller's.
+    const [trial] = await s.db.select().from(trials).where(eq(trials.id, a.trialId));
+    const [broken] = await s.db
+      .insert(trials)
+      .values({ studyId: a.studyId, experimentId: trial!.experimentId, participantId: a.participantId })
+      .returning();
+    const logged: string[] = [];
+    const spy = vi.spyOn(console, "error").mockImplementation((...args: unknown[]) => void logged.push(args.join(" ")));
+    const res = await get(`/trials/${broken!.id}/events`, as(tokenA));
+    spy.mockRestore();
+    await s.db.delete(trials).where(eq(trials.id, broken!.id));
+    const { error } = (await res.json()) as { error: string };
+    expect(res.status).toBe(500);
+    const ref = /reference ([0-9a-f]{8})\.$/.exec(error)![1]!;
+    expect(error).not.toMatch(/protocol|snapshot|select|at /);
+    expect(logged.join("\n")).toContain(`[hristudio] error ${ref}: GET ${API_BASE}/trials/${broken!.id}/events`);
   });
 });
 
