@@ -86,6 +86,21 @@ const freshMember = async (f: Fixture, b: Base) => {
   return person;
 };
 
+/** A study whose data the caller may read (the base study, or a new one they observe), for a token. */
+const readableStudyFor = async (f: Fixture, b: Base, caller: Caller) => {
+  if (caller === "owner" || caller === "researcher" || caller === "observer") return b.study.id;
+  const study = await f.api("owner").studies.create({ title: "Readable" });
+  if (caller !== "anonymous")
+    await f.api("owner").members.add({ studyId: study.id, email: f.people[caller].email, role: "observer" });
+  return study.id;
+};
+const tokenInput = async (f: Fixture, b: Base, caller: Caller) => ({
+  name: "Nightly analysis",
+  studyIds: [await readableStudyFor(f, b, caller)],
+  expiresInDays: 30,
+});
+const DATA_READERS: Caller[] = ["owner", "researcher", "observer"];
+
 export const MATRIX: Record<string, [Caller[], Input]> = {
   "account.me": [SIGNED_IN, () => undefined],
   "studies.mine": [SIGNED_IN, () => undefined],
@@ -280,4 +295,21 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "admin.users.setRole": [ADMIN, async (f) => ({ userId: (await newPerson(f.db, "promoted")).id, role: "wizard" })],
   "admin.users.setDisabled": [ADMIN, async (f) => ({ userId: (await newPerson(f.db, "disabled")).id, disabled: true })],
   "admin.auditLog": [ADMIN, () => ({ limit: 10 })],
+  "tokens.studies": [SIGNED_IN, () => undefined],
+  "tokens.list": [SIGNED_IN, () => undefined],
+  "tokens.create": [SIGNED_IN, tokenInput],
+  "tokens.revoke": [
+    SIGNED_IN,
+    async (f, b, caller) => {
+      const holder = caller === "anonymous" ? "owner" : caller;
+      return { tokenId: (await f.api(holder).tokens.create(await tokenInput(f, b, holder))).id };
+    },
+  ],
+  "analysis.studies": [SIGNED_IN, () => undefined],
+  "analysis.trials": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
+  "analysis.events": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
+  "analysis.samples": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
+  "analysis.answers": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
+  "analysis.annotations": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
+  "analysis.trialEvents": [DATA_READERS, (_f, b) => ({ trialId: b.trial.id })],
 };

@@ -15,8 +15,12 @@ const s = await routeServer();
 afterAll(s.close);
 
 const API = join(import.meta.dirname, "..", "..", "src", "app", "api");
-/** auth and trpc are the doors the other tests walk through; every other route is here. */
-const OWN_TESTS = new Set(["auth/[...all]", "trpc/[trpc]"]);
+/**
+ * auth and trpc are the doors the other tests walk through; the analysis API's
+ * two routes that take no id (its study list and its description) are
+ * tests/api/analysis-api.test.ts's; every other route is here.
+ */
+const OWN_TESTS = new Set(["auth/[...all]", "trpc/[trpc]", "v1/studies", "v1/openapi.json"]);
 
 function routeFiles(dir: string): string[] {
   return readdirSync(dir).flatMap((name) => {
@@ -79,10 +83,15 @@ async function call(route: string, method: string, ids: Ids, who: Headers | null
     [...route.matchAll(/\[(\w+)\]/g)].map(([, name]) => [name!, param(name!, ids, method)]),
   );
   const path = route.replace(/\[(\w+)\]/g, (_, name: string) => params[name]!);
-  const init: RequestInit = {
-    method,
-    headers: { ...(who ? { cookie: who.get("cookie")! } : {}), "content-type": "video/mp4" },
-  };
+  // The analysis API (v1) reads a personal access token, and nothing else, where the others read the session.
+  const credentials: Record<string, string> = route.startsWith("v1/")
+    ? who && bearer.has(who)
+      ? { authorization: `Bearer ${bearer.get(who)}` }
+      : {}
+    : who
+      ? { cookie: who.get("cookie")! }
+      : {};
+  const init: RequestInit = { method, headers: { ...credentials, "content-type": "video/mp4" } };
   if (method === "PUT" || method === "POST") init.body = new TextEncoder().encode("smuggled part");
   return handlers[method]!(new Request(`${ORIGIN}/api/${path}${query}`, init), { params: Promise.resolve(params) });
 }
@@ -97,6 +106,16 @@ const CALLERS: Caller[] = ["owner", "researcher", "wizard", "observer", "outside
 const signedIn: Partial<Record<Caller, Headers>> = { owner: ownerHeaders };
 for (const caller of CALLERS)
   if (caller !== "anonymous" && !signedIn[caller]) signedIn[caller] = await s.signIn(caller);
+/** Each caller who may read study A's data holds an access token for A, the others none. */
+const bearer = new Map<Headers, string>();
+for (const caller of ["owner", "researcher", "observer"] as const) {
+  const made = await (await s.apiAs(signedIn[caller]!)).tokens.create({
+    name: "route isolation",
+    studyIds: [a.studyId],
+    expiresInDays: 1,
+  });
+  bearer.set(signedIn[caller]!, made.secret);
+}
 
 describe("REST routes keep studies apart", () => {
   it("finds the routes", () => {

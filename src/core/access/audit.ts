@@ -7,6 +7,7 @@ export const AUDIT_AREAS = [
   { value: "participant", label: "Participants and consent" },
   { value: "user", label: "Accounts" },
   { value: "plugins", label: "Robot plugins" },
+  { value: "token", label: "Access tokens" },
 ] as const;
 
 export type AuditArea = (typeof AUDIT_AREAS)[number]["value"];
@@ -34,6 +35,9 @@ const ACTION_WORDS: Record<string, string> = {
   "plugins.repository.add": "added a plugin repository",
   "plugins.repository.remove": "removed a plugin repository",
   "plugins.sync": "synced a plugin repository",
+  "token.create": "created an access token",
+  "token.revoke": "revoked an access token",
+  "token.use": "used an access token (first use that day)",
 };
 
 export const actionWords = (action: string) => ACTION_WORDS[action] ?? action;

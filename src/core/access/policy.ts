@@ -13,6 +13,10 @@ export const SYSTEM_OPERATIONS = {
   "plugin.read": ["administrator", "researcher", "wizard", "observer"],
   "admin.users": ["administrator"],
   "admin.plugins": ["administrator"],
+  // Anyone may hold access tokens; each reaches only studies whose data its owner may read.
+  "token.manage": ["administrator", "researcher", "wizard", "observer"],
+  // The studies whose data I may read: the analysis API's list.
+  "data.studies": ["administrator", "researcher", "wizard", "observer"],
 } as const satisfies Record<string, readonly SystemRole[]>;
 
 /** Operations on one study: who may do them depends on the role in that study. */
@@ -40,6 +44,12 @@ export type SystemOperation = keyof typeof SYSTEM_OPERATIONS;
 export type StudyOperation = keyof typeof STUDY_OPERATIONS;
 export type Operation = SystemOperation | StudyOperation;
 
+/**
+ * All a personal access token may do: list and read analysis data. No
+ * writes, no token management, nothing a signed-in page needs.
+ */
+export const TOKEN_OPERATIONS: readonly Operation[] = ["data.studies", "data.read"];
+
 export type Decision =
   | { allow: true }
   // `hidden`: the caller may not even learn that the study exists.
@@ -51,6 +61,8 @@ export interface Subject {
   studyRole: StudyRole | null;
   /** What the study's blinds hide from this caller (none when absent). */
   blinding?: { conditionsHidden: boolean; resultsHidden: boolean };
+  /** The caller came with a personal access token: read-only, on top of everything else. */
+  viaToken?: boolean;
 }
 
 export function isStudyOperation(op: Operation): op is StudyOperation {
@@ -58,6 +70,8 @@ export function isStudyOperation(op: Operation): op is StudyOperation {
 }
 
 export function decide(subject: Subject, op: Operation): Decision {
+  if (subject.viaToken && !TOKEN_OPERATIONS.includes(op))
+    return { allow: false, hidden: false, reason: "An access token may only read analysis data." };
   if (!isStudyOperation(op)) {
     const allowed: readonly SystemRole[] = SYSTEM_OPERATIONS[op];
     return allowed.includes(subject.systemRole)

@@ -3,7 +3,7 @@
 // name the step and the action an event is about (see names.ts), so a reader
 // never has to look ids up in the protocol.
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
-import { csvDocument } from "@/core/csv/csv";
+import { csvDocument, type CsvValue } from "@/core/csv/csv";
 import type { StoredEvent } from "@/core/trial";
 import type { TrialNames } from "./names";
 
@@ -35,7 +35,17 @@ export interface TrialPeople {
 }
 
 export function eventsCsv(trialId: string, events: StoredEvent[], people: TrialPeople, names: TrialNames): string {
-  const rows = events.map((e) => {
+  return csvDocument(EVENT_COLUMNS, eventRows(trialId, events, people, names));
+}
+
+/** The cells of eventsCsv, one row per event: the analysis API returns them as CSV or JSON. */
+export function eventRows(
+  trialId: string,
+  events: StoredEvent[],
+  people: TrialPeople,
+  names: TrialNames,
+): CsvValue[][] {
+  return events.map((e) => {
     // Columns for the fields some kinds of event have; the payload column holds all of it.
     const { stepId, actionId, actionType } = e as { stepId?: string | null; actionId?: string; actionType?: string };
     const { stepName, actionName } = names.of(e);
@@ -57,7 +67,6 @@ export function eventsCsv(trialId: string, events: StoredEvent[], people: TrialP
       JSON.stringify(e),
     ];
   });
-  return csvDocument(EVENT_COLUMNS, rows);
 }
 
 export interface TrialRecord {

@@ -34,7 +34,12 @@ const answerCell = (value: unknown): CsvValue =>
         : String(value);
 
 export function answersCsv(responses: SubmittedResponse[]): string {
-  const rows = responses.flatMap((r): CsvValue[][] => {
+  return csvDocument(ANSWER_COLUMNS, answerRows(responses));
+}
+
+/** The cells of answersCsv: the analysis API returns them as CSV or JSON. */
+export function answerRows(responses: SubmittedResponse[]): CsvValue[][] {
+  return responses.flatMap((r): CsvValue[][] => {
     const answers = (r.answers ?? {}) as Record<string, unknown>;
     const base = [r.participantCode, r.trialId ?? "", r.questionnaire, r.version];
     const itemRows = items(r.definition as Definition).map((item) => [
@@ -53,5 +58,4 @@ export function answersCsv(responses: SubmittedResponse[]): string {
           ];
     return [...itemRows, ...scoreRows];
   });
-  return csvDocument(ANSWER_COLUMNS, rows);
 }

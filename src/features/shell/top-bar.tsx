@@ -33,6 +33,9 @@ export function TopBar({ user }: { user: SignedInUser }) {
         <div className="ml-auto flex items-center gap-3 text-sm">
           <span data-testid="current-user">{user.name}</span>
           <Badge tone={ROLE_TONE[user.role]}>{user.role}</Badge>
+          <Link href="/account/tokens" className="text-slate-700 hover:text-slate-950">
+            Access tokens
+          </Link>
           <Button
             variant="ghost"
             size="sm"

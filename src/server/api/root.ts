@@ -1,4 +1,5 @@
 import { accountRouter } from "./routers/account";
+import { analysisRouter } from "./routers/analysis";
 import { conditionsRouter } from "./routers/conditions";
 import { adminRouter } from "./routers/admin";
 import { experimentsRouter } from "./routers/experiments";
@@ -10,6 +11,7 @@ import { questionnairesRouter } from "./routers/questionnaires";
 import { recordingsRouter } from "./routers/recordings";
 import { sessionsRouter } from "./routers/sessions";
 import { studiesRouter } from "./routers/studies";
+import { tokensRouter } from "./routers/tokens";
 import { trialsRouter } from "./routers/trials";
 import { versionsRouter } from "./routers/versions";
 import { router } from "./trpc";
@@ -29,6 +31,8 @@ export const appRouter = router({
   plugins: pluginsRouter,
   trials: trialsRouter,
   admin: adminRouter,
+  tokens: tokensRouter,
+  analysis: analysisRouter,
 });
 
 export type AppRouter = typeof appRouter;

@@ -38,6 +38,17 @@ export interface Context {
   media: { storage: MediaStorage; maxBytes: number };
   /** The ways to the robot this server's settings open: what the designer may call runnable. */
   robotChannels: Channels;
+  /**
+   * Set when the caller came with a personal access token (the analysis API)
+   * rather than a signed-in page: `user` is the token's owner as the account
+   * is now, and only the studies listed here can be reached.
+   */
+  token?: AccessTokenScope;
+}
+
+export interface AccessTokenScope {
+  id: string;
+  studyIds: readonly string[];
 }
 
 export interface Meta {
@@ -103,7 +114,7 @@ const signedIn = t.procedure.use(noNul).use(async ({ ctx, meta, next }) => {
 /** A procedure that touches no study: who may call it depends on the account's system role. */
 export const guarded = (op: SystemOperation) =>
   signedIn.meta({ op }).use(({ ctx, next }) => {
-    const decision = decide({ systemRole: ctx.user.role, studyRole: null }, op);
+    const decision = decide({ systemRole: ctx.user.role, studyRole: null, viaToken: !!ctx.token }, op);
     if (!decision.allow) throw new TRPCError({ code: "FORBIDDEN", message: decision.reason });
     return next();
   });
@@ -130,16 +141,20 @@ export async function authorize<R extends Resource>(
   op: StudyOperation,
   resource: R,
   id: string,
+  /** A personal access token's scope, when the caller came with one. */
+  token?: AccessTokenScope | null,
 ): Promise<StudyContext<R>> {
   const row = await loadResource(db, resource, id);
+  // An unknown id reads exactly like a row of a study the caller may not see.
   const notFound = () =>
     new TRPCError({
       code: "NOT_FOUND",
       message: `No such ${nameOf(resource)}, or it belongs to a study you are not a member of.`,
     });
-  if (!row) throw notFound();
+  // A study outside a token's scope reads like one the caller is not a member of.
+  if (!row || (token && !token.studyIds.includes(row.studyId))) throw notFound();
   const { role, blinding } = await studyAccessOf(db, row.studyId, user.id);
-  const decision = decide({ systemRole: user.role, studyRole: role, blinding }, op);
+  const decision = decide({ systemRole: user.role, studyRole: role, blinding, viaToken: !!token }, op);
   if (!decision.allow)
     throw decision.hidden ? notFound() : new TRPCError({ code: "FORBIDDEN", message: decision.reason });
   return { studyId: row.studyId, studyRole: role!, blinding, row };
@@ -164,7 +179,7 @@ export function studyProcedure<R extends Resource, I extends z.ZodObject>(op: St
           code: "INTERNAL_SERVER_ERROR",
           message: `A procedure on a ${resource} needs ${key} in its input.`,
         });
-      const access = await authorize(ctx.db, ctx.user, op, resource, id);
+      const access = await authorize(ctx.db, ctx.user, op, resource, id, ctx.token);
       await assertOneStudy(ctx.db, access.studyId, await getRawInput(), { kind: resource, id });
       return next({ ctx: access });
     });

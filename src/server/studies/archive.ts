@@ -12,13 +12,13 @@ import {
   questionnaireLinks,
   sessions,
   studies,
-  trials,
 } from "@/store/schema";
 import { answersCsv } from "@/core/questionnaires/export";
 import { methodsText } from "../experiments/methods";
 import { fileSlug } from "../file-slug";
 import { submitted } from "../questionnaires/responses";
 import { trialFiles } from "../trials/files";
+import { analysedTrials } from "../analysis/tables";
 
 const README = `HRIStudio study archive
 
@@ -69,22 +69,7 @@ export async function studyArchive(db: Database, studyId: string) {
         )
         .orderBy(asc(experimentVersions.version))
     : [];
-  const trialRows = kept.length
-    ? await db
-        .select({ id: trials.id })
-        .from(trials)
-        .where(
-          and(
-            eq(trials.studyId, studyId),
-            eq(trials.isRehearsal, false),
-            inArray(
-              trials.participantId,
-              kept.map((p) => p.id),
-            ),
-          ),
-        )
-        .orderBy(asc(trials.createdAt))
-    : [];
+  const trialRows = await analysedTrials(db, studyId);
   const conditionName = (id: string | null) => conditionRows.find((c) => c.id === id)?.name ?? null;
   const files: Record<string, Uint8Array> = {
     "README.txt": strToU8(README),

@@ -23,17 +23,29 @@ async function nameOf(db: Database, userId: string | null) {
   return person?.name ?? null;
 }
 
-async function readTrial(db: Database, trialId: string) {
+/** What a trial's events need to be read: the trial, its people, its protocol and the names of its actions. */
+export async function trialEventsOf(db: Database, trialId: string) {
   const [trial] = await db.select().from(trials).where(eq(trials.id, trialId));
   const [version] = trial!.versionId
     ? await db.select().from(experimentVersions).where(eq(experimentVersions.id, trial!.versionId))
     : [];
+  const protocol = version?.snapshot ?? trial!.rehearsalSnapshot;
+  // Every trial runs a published version or, for a rehearsal, the draft frozen when it began.
+  if (!protocol) throw new Error(`Trial ${trial!.id} has neither a version nor a rehearsal snapshot`);
   return {
     trial: trial!,
     // Who ran it and who created it: two named fields, as the trial page shows them.
     people: { wizard: await nameOf(db, trial!.wizardId), createdBy: await nameOf(db, trial!.createdBy) },
     version,
+    protocol,
     events: await eventsSince(db, trialId),
+    names: await trialActionNames(db, trialId),
+  };
+}
+
+async function readTrial(db: Database, trialId: string) {
+  return {
+    ...(await trialEventsOf(db, trialId)),
     marked: await db
       .select({ relMs: annotations.relMs, label: annotations.label, note: annotations.note, authorName: user.name })
       .from(annotations)
@@ -46,18 +58,24 @@ async function readTrial(db: Database, trialId: string) {
       .where(eq(mediaRecordings.trialId, trialId))
       .orderBy(asc(mediaRecordings.createdAt)),
     questionnaires: await submitted(db, eq(questionnaireLinks.trialId, trialId)),
-    names: await trialActionNames(db, trialId),
   };
 }
 
 function fileOf(
-  { trial, people, version, events, marked, recordings, questionnaires, names }: Awaited<ReturnType<typeof readTrial>>,
+  {
+    trial,
+    people,
+    version,
+    protocol,
+    events,
+    marked,
+    recordings,
+    questionnaires,
+    names,
+  }: Awaited<ReturnType<typeof readTrial>>,
   format: TrialFormat,
 ) {
   const name = `trial-${trial.id}`;
-  const protocol = version?.snapshot ?? trial.rehearsalSnapshot;
-  // Every trial runs a published version or, for a rehearsal, the draft frozen when it began.
-  if (!protocol) throw new Error(`Trial ${trial.id} has neither a version nor a rehearsal snapshot`);
   const named = trialNames(protocol, events, names);
   if (format === "csv")
     return {

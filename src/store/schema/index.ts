@@ -6,3 +6,4 @@ export * from "./trials";
 export * from "./sessions";
 export * from "./questionnaires";
 export * from "./security";
+export * from "./access-tokens";

@@ -67,17 +67,22 @@ export const experimentsRouter = router({
     "experiment",
     z.object({ experimentId: id, intoStudyId: id.optional() }),
   ).mutation(async ({ ctx, input }) => {
-    const into = await authorize(ctx.db, ctx.user, "experiment.edit", "study", input.intoStudyId ?? ctx.studyId).catch(
-      async (error: unknown) => {
-        if (!(error instanceof TRPCError) || error.code !== "FORBIDDEN" || !input.intoStudyId) throw error;
-        // The policy's words say "this study": here there are two, so name which and why.
-        const { role } = await studyAccessOf(ctx.db, input.intoStudyId, ctx.user.id);
-        throw new TRPCError({
-          code: "FORBIDDEN",
-          message: `Not copied: in the study you chose to copy into you are ${role === "observer" ? "an" : "a"} ${role}, and only its owner and researchers design there.`,
-        });
-      },
-    );
+    const into = await authorize(
+      ctx.db,
+      ctx.user,
+      "experiment.edit",
+      "study",
+      input.intoStudyId ?? ctx.studyId,
+      ctx.token,
+    ).catch(async (error: unknown) => {
+      if (!(error instanceof TRPCError) || error.code !== "FORBIDDEN" || !input.intoStudyId) throw error;
+      // The policy's words say "this study": here there are two, so name which and why.
+      const { role } = await studyAccessOf(ctx.db, input.intoStudyId, ctx.user.id);
+      throw new TRPCError({
+        code: "FORBIDDEN",
+        message: `Not copied: in the study you chose to copy into you are ${role === "observer" ? "an" : "a"} ${role}, and only its owner and researchers design there.`,
+      });
+    });
     return duplicate(ctx.db, ctx.row.id, ctx.user.id, into.studyId);
   }),
 

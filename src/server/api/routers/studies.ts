@@ -83,7 +83,7 @@ export const studiesRouter = router({
     "study",
     z.object({ studyId: id, title: text("Title", 200), description: z.string().max(5000).optional() }),
   ).mutation(({ ctx, input }) => {
-    const mayCreate = decide({ systemRole: ctx.user.role, studyRole: null }, "study.create");
+    const mayCreate = decide({ systemRole: ctx.user.role, studyRole: null, viaToken: !!ctx.token }, "study.create");
     if (!mayCreate.allow) throw new TRPCError({ code: "FORBIDDEN", message: mayCreate.reason });
     return studyFromTemplate(ctx.db, ctx.row.id, ctx.user.id, { title: input.title, description: input.description });
   }),

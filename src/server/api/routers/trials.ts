@@ -5,7 +5,6 @@ import { alias } from "drizzle-orm/pg-core";
 import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
 import { blindTrial } from "@/core/studies/blinding";
-import type { Database } from "@/store/client";
 import { annotations, experimentVersions, experiments, participants, trialSamples, trials, user } from "@/store/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "@/core/protocol/snapshot";
@@ -13,6 +12,7 @@ import { eventsSince } from "@/store/event-store";
 import { trialFile } from "../../trials/files";
 import { trialActionNames } from "../../trials/action-names";
 import { assertMayTakePart } from "../../studies/consent-gate";
+import { assertNotWithdrawn } from "../../trials/withdrawn";
 import { assertRunsTrials } from "../../studies/status-gate";
 import { signSocketToken } from "@/store/socket-token";
 import { qualified } from "@/store/qualified";
@@ -50,21 +50,6 @@ const questionnaireScores = sql<Array<{ name: string; score: number }> | null>`(
   join questionnaire_versions v on v.id = l.version_id
   join questionnaires q on q.id = v.questionnaire_id
   where l.trial_id = ${qualified(trials.id)} and r.status = 'submitted' and r.score is not null)`;
-
-/** A withdrawn participant's data leaves analysis and exports; the withdrawal itself stays in the audit log. */
-async function assertNotWithdrawn(db: Database, trialId: string) {
-  const [row] = await db
-    .select({ code: participants.code, status: participants.consentStatus })
-    .from(trials)
-    .innerJoin(participants, eq(participants.id, trials.participantId))
-    .where(eq(trials.id, trialId));
-  if (row?.status === "withdrawn") {
-    throw new TRPCError({
-      code: "PRECONDITION_FAILED",
-      message: `${row.code} withdrew from the study: their data is excluded from analysis and exports.`,
-    });
-  }
-}
 
 export const trialsRouter = router({
   // wizardId: omitted → the creator runs it; null → unassigned, the first wizard to start it claims it.

@@ -1,0 +1,5 @@
+import { AccessTokensPage } from "@/features/account/access-tokens-page";
+
+export default function Page() {
+  return <AccessTokensPage />;
+}

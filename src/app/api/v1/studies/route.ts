@@ -1,0 +1,3 @@
+import { v1Route } from "@/server/analysis/v1";
+
+export const GET = (req: Request) => v1Route(req, "studies", Promise.resolve({}));

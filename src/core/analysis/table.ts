@@ -1,0 +1,24 @@
+// A tidy table (named columns, one row per observation), written as CSV with
+// the one CSV writer, or as JSON records: what the analysis API returns.
+import { csvDocument, type CsvValue } from "@/core/csv/csv";
+
+export interface Table {
+  columns: readonly string[];
+  rows: CsvValue[][];
+}
+
+/** A row named by its columns: the compiler checks every column is filled. */
+export type Row<C extends readonly string[]> = Record<C[number], CsvValue>;
+
+export function tableOf<C extends readonly string[]>(columns: C, rows: ReadonlyArray<Row<C>>): Table {
+  return { columns, rows: rows.map((row) => columns.map((c) => row[c as C[number]])) };
+}
+
+export const tableCsv = (table: Table) => csvDocument(table.columns, table.rows);
+
+/** One object per row, keyed by column (an empty cell is null), as pandas' and R's JSON readers expect. */
+export function tableJson(table: Table): string {
+  return JSON.stringify(
+    table.rows.map((row) => Object.fromEntries(table.columns.map((c, i) => [c, row[i] === undefined ? null : row[i]]))),
+  );
+}
