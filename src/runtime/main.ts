@@ -8,6 +8,7 @@ import { transportConfig, transportFor } from "@/robots/transports";
 import { pluginRobot, unavailableRobot } from "./robot-link";
 import { purgeSpentTokens, watchAccess } from "./access";
 import { eventRelay } from "./relay";
+import { simulatorReplays } from "./replay";
 import { startRuntimeServer } from "./server";
 import { trialHosts } from "./trial-hosts";
 
@@ -29,10 +30,13 @@ const robotFor = (plugin: Plugin | null, robotId: string) => {
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
 const hosts = trialHosts(db, lockConnection, robotFor, (...args) => announceRobot(...args));
 const relay = await eventRelay(db, sql);
+// Replays go to the simulated robot only (HRI_SIMULATOR_URL), never to the robot settings above.
+const replays = simulatorReplays(db, config.HRI_SIMULATOR_URL);
 const runtime = startRuntimeServer({
   db,
   hosts,
   relay,
+  replays,
   secret: config.BETTER_AUTH_SECRET,
   hostname: config.HOST,
   port: config.HRI_RUNTIME_PORT,
@@ -52,6 +56,7 @@ const stop = async () => {
   clearInterval(purge);
   server.stop(true);
   await hosts.closeAll();
+  await replays.close();
   await relay.close();
   await access.close();
   lockConnection.release();

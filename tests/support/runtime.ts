@@ -3,7 +3,12 @@ import { spawn, type ChildProcess } from "node:child_process";
 import { freePort } from "../../src/store/embedded";
 import { BUN } from "./app";
 
-export async function startRuntime(databaseUrl: string, secret: string): Promise<{ url: string; child: ChildProcess }> {
+export async function startRuntime(
+  databaseUrl: string,
+  secret: string,
+  /** More settings, e.g. the robot's and the simulated robot's addresses. */
+  env: Record<string, string> = {},
+): Promise<{ url: string; child: ChildProcess }> {
   const port = await freePort();
   const child = spawn(BUN, ["run", "src/runtime/main.ts"], {
     env: {
@@ -12,6 +17,7 @@ export async function startRuntime(databaseUrl: string, secret: string): Promise
       BETTER_AUTH_SECRET: secret,
       HRI_RUNTIME_PORT: String(port),
       HOST: "127.0.0.1",
+      ...env,
     },
     stdio: ["ignore", "pipe", "pipe"],
   });

@@ -16,6 +16,7 @@ import { assertMayTakePart } from "../../studies/consent-gate";
 import { assertRunsTrials } from "../../studies/status-gate";
 import { signSocketToken } from "@/store/socket-token";
 import { qualified } from "@/store/qualified";
+import { withdrawnFrom } from "@/store/withdrawn";
 import { router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 
@@ -51,19 +52,10 @@ const questionnaireScores = sql<Array<{ name: string; score: number }> | null>`(
   join questionnaires q on q.id = v.questionnaire_id
   where l.trial_id = ${qualified(trials.id)} and r.status = 'submitted' and r.score is not null)`;
 
-/** A withdrawn participant's data leaves analysis and exports; the withdrawal itself stays in the audit log. */
+/** A withdrawn participant's data leaves analysis and exports. */
 async function assertNotWithdrawn(db: Database, trialId: string) {
-  const [row] = await db
-    .select({ code: participants.code, status: participants.consentStatus })
-    .from(trials)
-    .innerJoin(participants, eq(participants.id, trials.participantId))
-    .where(eq(trials.id, trialId));
-  if (row?.status === "withdrawn") {
-    throw new TRPCError({
-      code: "PRECONDITION_FAILED",
-      message: `${row.code} withdrew from the study: their data is excluded from analysis and exports.`,
-    });
-  }
+  const withdrawn = await withdrawnFrom(db, trialId);
+  if (withdrawn) throw new TRPCError({ code: "PRECONDITION_FAILED", message: withdrawn });
 }
 
 export const trialsRouter = router({
