@@ -1,0 +1,134 @@
+"use client";
+// Replay on the simulated robot: the trial's robot commands sent again with
+// their timing, from the playhead, at ×1 or ×2. With a recording, the replay
+// follows it: playing the video starts the robot at the video's moment, and
+// pausing or seeking the video stops or moves the robot with it. R toggles it.
+import { type RefObject, useEffect, useRef, useState } from "react";
+import { Button } from "@/ui/button";
+import { seconds } from "@/ui/format";
+import { Card } from "@/ui/surface";
+import { type Recording, trialMs } from "./recording-player";
+import { useReplay } from "./use-replay";
+
+const SPEEDS = [1, 2] as const;
+
+export function ReplayControl({
+  trialId,
+  playheadMs,
+  recording,
+  video,
+}: {
+  trialId: string;
+  playheadMs: number | null;
+  recording: Recording | null;
+  video: RefObject<HTMLVideoElement | null>;
+}) {
+  const replay = useReplay(trialId);
+  const [speed, setSpeed] = useState<number>(1);
+  // On: the robot replays (and, with a recording, follows the video until turned off).
+  const [on, setOn] = useState(false);
+  const playing = replay.status?.playing ?? false;
+  const latest = useRef({ replay, speed, startedAt: 0 });
+  latest.current = { ...latest.current, replay, speed };
+
+  // Following the recording: the video's play, pause, seek and rate move the robot with it.
+  useEffect(() => {
+    const v = video.current;
+    if (!on || !recording || !v) return;
+    const fromVideo = () => {
+      const rate = SPEEDS.find((s) => s === v.playbackRate) ?? latest.current.speed;
+      void latest.current.replay.play(trialMs(recording, v.currentTime), rate);
+    };
+    const follow = () => !v.paused && fromVideo();
+    // The play that Replay itself asked for: the robot has already started there.
+    const played = () => (performance.now() - latest.current.startedAt < 500 ? undefined : fromVideo());
+    const pause = () => void latest.current.replay.stop();
+    v.addEventListener("play", played);
+    v.addEventListener("seeked", follow);
+    v.addEventListener("ratechange", follow);
+    v.addEventListener("pause", pause);
+    return () => {
+      v.removeEventListener("play", played);
+      v.removeEventListener("seeked", follow);
+      v.removeEventListener("ratechange", follow);
+      v.removeEventListener("pause", pause);
+    };
+  }, [on, recording, video]);
+
+  const start = () => {
+    setOn(true);
+    const v = video.current;
+    if (!recording || !v) return void replay.play(playheadMs ?? 0, speed);
+    // The video is the clock: the robot starts at its moment (the playhead follows it), and plays with it.
+    v.playbackRate = speed;
+    latest.current.startedAt = performance.now();
+    void replay.play(trialMs(recording, v.currentTime), speed);
+    if (v.paused) void v.play().catch(() => undefined);
+  };
+  const stop = () => {
+    setOn(false);
+    void replay.stop();
+  };
+  const toggle = () => (on && playing ? stop() : start());
+  const latestToggle = useRef(toggle);
+  latestToggle.current = toggle;
+
+  useEffect(() => {
+    const onKey = (e: KeyboardEvent) => {
+      const typing = e.target instanceof HTMLInputElement || e.target instanceof HTMLTextAreaElement;
+      if (typing || e.ctrlKey || e.metaKey || e.altKey || e.key.toLowerCase() !== "r") return;
+      latestToggle.current();
+    };
+    window.addEventListener("keydown", onKey);
+    return () => window.removeEventListener("keydown", onKey);
+  }, []);
+
+  const chooseSpeed = (s: number) => {
+    setSpeed(s);
+    if (video.current && recording) video.current.playbackRate = s;
+    else if (playing) void replay.play(replay.status!.positionMs, s);
+  };
+
+  const status = replay.status;
+  return (
+    <Card className="flex flex-wrap items-center gap-3 p-4" aria-label="Replay on the simulated robot">
+      <h2 className="text-sm font-semibold">Replay on the simulated robot</h2>
+      <fieldset aria-label="Replay speed" className="flex gap-1">
+        {SPEEDS.map((s) => (
+          <Button
+            key={s}
+            size="sm"
+            variant={speed === s ? "primary" : "secondary"}
+            aria-pressed={speed === s}
+            onClick={() => chooseSpeed(s)}
+          >
+            ×{s}
+          </Button>
+        ))}
+      </fieldset>
+      {on && playing ? (
+        <Button size="sm" variant="secondary" aria-keyshortcuts="R" onClick={stop}>
+          Stop replay
+        </Button>
+      ) : (
+        <Button size="sm" aria-keyshortcuts="R" onClick={start}>
+          Replay from {seconds(playheadMs ?? 0)}
+        </Button>
+      )}
+      <p className="text-sm text-slate-600" role="status">
+        {status?.playing
+          ? `Replaying from ${seconds(status.fromMs)} at ×${status.speed}: ${status.sent} of ${status.total} robot commands sent${recording ? ", following the recording" : ""}.`
+          : (status?.detail ??
+            `Sends this trial's robot commands again, with their timing, to the simulated robot (never a real one)${recording ? "; with the recording playing, the robot follows it" : ""}. Press R.`)}
+      </p>
+      {replay.problem && (
+        <p role="alert" className="w-full text-sm text-red-700">
+          {replay.problem}
+        </p>
+      )}
+      {status && status.skipped.length > 0 && (
+        <p className="w-full text-xs text-slate-500">Not replayed: {[...new Set(status.skipped)].join("; ")}.</p>
+      )}
+    </Card>
+  );
+}
