@@ -91,44 +91,46 @@ export function ReplayControl({
 
   const status = replay.status;
   return (
-    <Card className="flex flex-wrap items-center gap-3 p-4" aria-label="Replay on the simulated robot">
-      <h2 className="text-sm font-semibold">Replay on the simulated robot</h2>
-      <fieldset aria-label="Replay speed" className="flex gap-1">
-        {SPEEDS.map((s) => (
-          <Button
-            key={s}
-            size="sm"
-            variant={speed === s ? "primary" : "secondary"}
-            aria-pressed={speed === s}
-            onClick={() => chooseSpeed(s)}
-          >
-            ×{s}
+    <section aria-label="Replay on the simulated robot">
+      <Card className="flex flex-wrap items-center gap-3 p-4">
+        <h2 className="text-sm font-semibold">Replay on the simulated robot</h2>
+        <fieldset aria-label="Replay speed" className="flex gap-1">
+          {SPEEDS.map((s) => (
+            <Button
+              key={s}
+              size="sm"
+              variant={speed === s ? "primary" : "secondary"}
+              aria-pressed={speed === s}
+              onClick={() => chooseSpeed(s)}
+            >
+              ×{s}
+            </Button>
+          ))}
+        </fieldset>
+        {on && playing ? (
+          <Button size="sm" variant="secondary" aria-keyshortcuts="R" onClick={stop}>
+            Stop replay
           </Button>
-        ))}
-      </fieldset>
-      {on && playing ? (
-        <Button size="sm" variant="secondary" aria-keyshortcuts="R" onClick={stop}>
-          Stop replay
-        </Button>
-      ) : (
-        <Button size="sm" aria-keyshortcuts="R" onClick={start}>
-          Replay from {seconds(playheadMs ?? 0)}
-        </Button>
-      )}
-      <p className="text-sm text-slate-600" role="status">
-        {status?.playing
-          ? `Replaying from ${seconds(status.fromMs)} at ×${status.speed}: ${status.sent} of ${status.total} robot commands sent${recording ? ", following the recording" : ""}.`
-          : (status?.detail ??
-            `Sends this trial's robot commands again, with their timing, to the simulated robot (never a real one)${recording ? "; with the recording playing, the robot follows it" : ""}. Press R.`)}
-      </p>
-      {replay.problem && (
-        <p role="alert" className="w-full text-sm text-red-700">
-          {replay.problem}
+        ) : (
+          <Button size="sm" aria-keyshortcuts="R" onClick={start}>
+            Replay from {seconds(playheadMs ?? 0)}
+          </Button>
+        )}
+        <p className="text-sm text-slate-600" role="status">
+          {status?.playing
+            ? `Replaying from ${seconds(status.fromMs)} at ×${status.speed}: ${status.sent} of ${status.total} robot commands sent${recording ? ", following the recording" : ""}.`
+            : (status?.detail ??
+              `Sends this trial's robot commands again, with their timing, to the simulated robot (never a real one)${recording ? "; with the recording playing, the robot follows it" : ""}. Press R.`)}
         </p>
-      )}
-      {status && status.skipped.length > 0 && (
-        <p className="w-full text-xs text-slate-500">Not replayed: {[...new Set(status.skipped)].join("; ")}.</p>
-      )}
-    </Card>
+        {replay.problem && (
+          <p role="alert" className="w-full text-sm text-red-700">
+            {replay.problem}
+          </p>
+        )}
+        {status && status.skipped.length > 0 && (
+          <p className="w-full text-xs text-slate-500">Not replayed: {[...new Set(status.skipped)].join("; ")}.</p>
+        )}
+      </Card>
+    </section>
   );
 }
