@@ -7,9 +7,11 @@ import { type RefObject, useEffect, useRef, useState } from "react";
 import { Button } from "@/ui/button";
 import { seconds } from "@/ui/format";
 import { Card } from "@/ui/surface";
+import { followVideo, type VideoEvent } from "@/core/analysis/replay-follow";
 import { type Recording, trialMs } from "./recording-player";
 import { useReplay } from "./use-replay";
 
+// The speeds offered here; a video slowed to ×0.5 is followed too (REPLAY_SPEEDS).
 const SPEEDS = [1, 2] as const;
 
 export function ReplayControl({
@@ -27,36 +29,35 @@ export function ReplayControl({
   const [speed, setSpeed] = useState<number>(1);
   // On: the robot replays (and, with a recording, follows the video until turned off).
   const [on, setOn] = useState(false);
+  // Why the robot stopped following the video, when the video did something a replay cannot.
+  const [notice, setNotice] = useState<string | null>(null);
   const playing = replay.status?.playing ?? false;
   const latest = useRef({ replay, speed, startedAt: 0 });
   latest.current = { ...latest.current, replay, speed };
 
-  // Following the recording: the video's play, pause, seek and rate move the robot with it.
+  // Following the recording: the video's play, pause, seek and rate move the robot with it (followVideo).
   useEffect(() => {
     const v = video.current;
     if (!on || !recording || !v) return;
-    const fromVideo = () => {
-      const rate = SPEEDS.find((s) => s === v.playbackRate) ?? latest.current.speed;
-      void latest.current.replay.play(trialMs(recording, v.currentTime), rate);
+    const follow = (event: Event) => {
+      // The play that Replay itself asked for: the robot has already started there.
+      if (event.type === "play" && performance.now() - latest.current.startedAt < 500) return;
+      const at = { paused: v.paused, atMs: trialMs(recording, v.currentTime), rate: v.playbackRate };
+      const move = followVideo(event.type as VideoEvent, at);
+      setNotice(move.kind === "stop" ? (move.reason ?? null) : null);
+      if (move.kind === "play") void latest.current.replay.play(move.fromMs, move.speed);
+      else if (move.kind === "stop") void latest.current.replay.stop();
     };
-    const follow = () => !v.paused && fromVideo();
-    // The play that Replay itself asked for: the robot has already started there.
-    const played = () => (performance.now() - latest.current.startedAt < 500 ? undefined : fromVideo());
-    const pause = () => void latest.current.replay.stop();
-    v.addEventListener("play", played);
-    v.addEventListener("seeked", follow);
-    v.addEventListener("ratechange", follow);
-    v.addEventListener("pause", pause);
+    const events: VideoEvent[] = ["play", "pause", "seeked", "ratechange"];
+    for (const e of events) v.addEventListener(e, follow);
     return () => {
-      v.removeEventListener("play", played);
-      v.removeEventListener("seeked", follow);
-      v.removeEventListener("ratechange", follow);
-      v.removeEventListener("pause", pause);
+      for (const e of events) v.removeEventListener(e, follow);
     };
   }, [on, recording, video]);
 
   const start = () => {
     setOn(true);
+    setNotice(null);
     const v = video.current;
     if (!recording || !v) return void replay.play(playheadMs ?? 0, speed);
     // The video is the clock: the robot starts at its moment (the playhead follows it), and plays with it.
@@ -85,8 +86,10 @@ export function ReplayControl({
 
   const chooseSpeed = (s: number) => {
     setSpeed(s);
+    // With a recording the video changes speed, and the robot follows it; without, the replay
+    // goes on at the new speed just after the last command it sent (not sending that one again).
     if (video.current && recording) video.current.playbackRate = s;
-    else if (playing) void replay.play(replay.status!.positionMs, s);
+    else if (playing) void replay.play(replay.status!.positionMs + 1, s);
   };
 
   const status = replay.status;
@@ -122,9 +125,9 @@ export function ReplayControl({
             : (status?.detail ??
               `Sends this trial's robot commands again, with their timing, to the simulated robot (never a real one)${recording ? "; with the recording playing, the robot follows it" : ""}. Press R.`)}
         </p>
-        {replay.problem && (
+        {(replay.problem ?? notice) && (
           <p role="alert" className="w-full text-sm text-red-700">
-            {replay.problem}
+            {replay.problem ?? notice}
           </p>
         )}
         {status && status.skipped.length > 0 && (
