@@ -43,6 +43,8 @@ interface Connection {
   unsubscribe?: () => void;
   /** Stops this connection's replay, if one is playing. */
   stopReplay?: () => void;
+  /** The connection's replay messages, one after another. */
+  replayQueue?: Promise<unknown>;
 }
 
 type Socket = { data: Connection; send(text: string): unknown; close(code?: number, reason?: string): void };
@@ -163,6 +165,11 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
     if (lost || !access) return shut(ws, SHUT_OUT, lost ?? "");
     const before = ws.data.access!;
     ws.data.access = access;
+    // A replay is for those who may read the trial's analysis: one who no longer may, stops seeing it.
+    if (ws.data.stopReplay && !replayVerdict(access).allow) {
+      ws.data.stopReplay();
+      ws.data.stopReplay = undefined;
+    }
     if (before.studyRole !== access.studyRole || mayRun(before) !== mayRun(access)) {
       send(ws, { type: "access", role: access.studyRole!, mayRun: mayRun(access) });
     }
@@ -266,7 +273,12 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
         shut(ws, 1011, `The server could not open this trial (reference ${ref}). Reload the page.`);
       });
     }
-    if (message.type === "replay" || message.type === "replay_stop") return replay(ws, message);
+    if (message.type === "replay" || message.type === "replay_stop") {
+      // One at a time: a quick run of seeks ends with the last one playing, and held by this connection.
+      const run = (ws.data.replayQueue ?? Promise.resolve()).then(() => replay(ws, message));
+      ws.data.replayQueue = run.catch(() => undefined);
+      return run;
+    }
     return act(ws, message);
   }
 

@@ -237,6 +237,36 @@ describe.sequential("a finished trial replayed on the simulated robot", () => {
     socket.close();
   });
 
+  it("after a quick run of seeks plays only the last, and stops when the page closes", async () => {
+    const socket = await open(people.observer);
+    for (const id of ["a", "b", "c"]) socket.send({ type: "replay", requestId: id, fromMs: 0, speed: 1 });
+    for (const id of ["a", "b", "c"])
+      expect(await socket.next((m) => m.requestId === id)).toMatchObject({ type: "ack" });
+    // The first two were replaced: each said so before the next began.
+    expect(socket.messages.filter((m) => m.type === "replay" && m.detail === "Replay stopped.")).toHaveLength(2);
+    socket.close();
+    await new Promise((r) => setTimeout(r, 300));
+    const mark = sim.received.length;
+    // Longer than the whole trial: a replay left playing would have sent the rest by now.
+    await new Promise((r) => setTimeout(r, 3000));
+    expect(heardSince(sim, mark)).toEqual([]);
+  });
+
+  it("stops a replay as soon as its viewer may no longer read the trial's analysis", async () => {
+    const socket = await open(people.observer);
+    socket.send({ type: "replay", requestId: "r", fromMs: 0, speed: 1 });
+    await socket.next((m) => m.type === "replay" && m.sent === 1);
+    await db.update(studyMembers).set({ role: "wizard" }).where(eq(studyMembers.userId, people.observer));
+    try {
+      expect(await socket.next((m) => m.type === "replay" && m.playing === false)).toMatchObject({
+        detail: "Replay stopped.",
+      });
+    } finally {
+      await db.update(studyMembers).set({ role: "observer" }).where(eq(studyMembers.userId, people.observer));
+      socket.close();
+    }
+  });
+
   it("is refused to whoever may not read the trial's analysis (its wizard), with why", async () => {
     const socket = await open(people.wizard);
     socket.send({ type: "replay", requestId: "w", fromMs: 0, speed: 1 });
