@@ -36,12 +36,12 @@ export function simulatorReplays(db: Database, simulatorUrl: string | undefined)
 
   /** The trial's plugin with the simulated robot connected, or why a replay cannot start. */
   async function prepare(trialId: string, speed: number): Promise<Plugin | string> {
+    const withdrawn = await withdrawnFrom(db, trialId);
+    if (withdrawn) return withdrawn;
     if (!simulatorUrl)
       return "Replay needs the simulated robot; this server has none running (it drives a real robot, and a replay never moves one).";
     if (!(REPLAY_SPEEDS as readonly number[]).includes(speed))
       return `A replay plays at ${REPLAY_SPEEDS.map((s) => `×${s}`).join(", ")}, not ×${speed}.`;
-    const withdrawn = await withdrawnFrom(db, trialId);
-    if (withdrawn) return withdrawn;
     const chosen = await trialPlugin(db, trialId);
     if (!chosen.ok) return chosen.reason;
     if (!chosen.plugin)
