@@ -40,8 +40,9 @@ export function ReplayControl({
     const v = video.current;
     if (!on || !recording || !v) return;
     const follow = (event: Event) => {
-      // The play that Replay itself asked for: the robot has already started there.
-      if (event.type === "play" && performance.now() - latest.current.startedAt < 500) return;
+      // The play (and speed) that Replay itself set: the robot has already started there.
+      if (event.type !== "pause" && event.type !== "seeked" && performance.now() - latest.current.startedAt < 500)
+        return;
       const at = { paused: v.paused, atMs: trialMs(recording, v.currentTime), rate: v.playbackRate };
       const move = followVideo(event.type as VideoEvent, at);
       setNotice(move.kind === "stop" ? (move.reason ?? null) : null);
@@ -61,8 +62,8 @@ export function ReplayControl({
     const v = video.current;
     if (!recording || !v) return void replay.play(playheadMs ?? 0, speed);
     // The video is the clock: the robot starts at its moment (the playhead follows it), and plays with it.
-    v.playbackRate = speed;
     latest.current.startedAt = performance.now();
+    v.playbackRate = speed;
     void replay.play(trialMs(recording, v.currentTime), speed);
     if (v.paused) void v.play().catch(() => undefined);
   };
