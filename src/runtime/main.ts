@@ -28,7 +28,13 @@ const robotFor = (plugin: Plugin | null, robotId: string) => {
   return choice.ok ? pluginRobot(plugin, choice.transport) : unavailableRobot(choice.reason);
 };
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
-const hosts = trialHosts(db, lockConnection, robotFor, (...args) => announceRobot(...args));
+const hosts = trialHosts(
+  db,
+  lockConnection,
+  robotFor,
+  (...args) => announceRobot(...args),
+  config.HRI_TRIAL_IDLE_SECONDS * 1000,
+);
 const relay = await eventRelay(db, sql);
 // Replays go to the simulated robot only (HRI_SIMULATOR_URL), never to the robot settings above.
 const replays = simulatorReplays(db, config.HRI_SIMULATOR_URL);
