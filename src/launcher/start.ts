@@ -111,7 +111,8 @@ async function main() {
     };
     log(`The simulated NAO6 robot speaks rosbridge at ${simulatorUrl} and NAOqi over SSH at 127.0.0.1:${sshPort}.`);
   }
-  supervise("trial runtime", "src/runtime/main.ts", { ...shared, ...robot });
+  const simulator: Record<string, string> = simulatorUrl ? { HRI_SIMULATOR_URL: simulatorUrl } : {};
+  supervise("trial runtime", "src/runtime/main.ts", { ...shared, ...robot, ...simulator });
   await listening(runtimePort);
 
   const webServer = await bundleWebServer(root);
@@ -127,7 +128,7 @@ async function main() {
       BETTER_AUTH_URL: baseURL,
       NEXT_TELEMETRY_DISABLED: "1",
       ...robot,
-      ...(simulatorUrl ? { HRI_SIMULATOR_URL: simulatorUrl } : {}),
+      ...simulator,
     },
   });
   children.push(web);

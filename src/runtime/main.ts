@@ -8,6 +8,7 @@ import { transportConfig, transportFor } from "@/robots/transports";
 import { pluginRobot, unavailableRobot } from "./robot-link";
 import { purgeSpentTokens, watchAccess } from "./access";
 import { eventRelay } from "./relay";
+import { simulatorReplays } from "./replay";
 import { startRuntimeServer } from "./server";
 import { trialHosts } from "./trial-hosts";
 
@@ -35,10 +36,13 @@ const hosts = trialHosts(
   config.HRI_TRIAL_IDLE_SECONDS * 1000,
 );
 const relay = await eventRelay(db, sql);
+// Replays go to the simulated robot only (HRI_SIMULATOR_URL), never to the robot settings above.
+const replays = simulatorReplays(db, config.HRI_SIMULATOR_URL);
 const runtime = startRuntimeServer({
   db,
   hosts,
   relay,
+  replays,
   secret: config.BETTER_AUTH_SECRET,
   hostname: config.HOST,
   port: config.HRI_RUNTIME_PORT,
@@ -58,6 +62,7 @@ const stop = async () => {
   clearInterval(purge);
   server.stop(true);
   await hosts.closeAll();
+  await replays.close();
   await relay.close();
   await access.close();
   lockConnection.release();

@@ -7,6 +7,7 @@ import {
   commandVerdict,
   lostAccess,
   mayReadTrialLog,
+  replayVerdict,
   touches,
   type AccessChange,
   type TrialAccess,
@@ -27,6 +28,7 @@ import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access
 import { logUnexpected } from "@/store/error-reference";
 import { annotate } from "./annotations";
 import type { EventRelay } from "./relay";
+import type { Replays } from "./replay";
 import type { TrialHosts } from "./trial-hosts";
 
 interface Connection {
@@ -39,6 +41,10 @@ interface Connection {
   /** Counts reloads, so an older reload finishing late never overwrites a newer one. */
   reloads: number;
   unsubscribe?: () => void;
+  /** Stops this connection's replay, if one is playing. */
+  stopReplay?: () => void;
+  /** The connection's replay messages, one after another. */
+  replayQueue?: Promise<unknown>;
 }
 
 type Socket = { data: Connection; send(text: string): unknown; close(code?: number, reason?: string): void };
@@ -47,6 +53,7 @@ export interface RuntimeOptions {
   db: Database;
   hosts: TrialHosts;
   relay: EventRelay;
+  replays: Replays;
   secret: string;
   hostname: string;
   port: number;
@@ -70,7 +77,7 @@ function eventsMessage(events: StoredEvent[]): string {
 
 const mayRun = (access: TrialAccess) => commandVerdict(access, "next").allow;
 
-export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }: RuntimeOptions) {
+export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname, port }: RuntimeOptions) {
   /** Admitted sockets by trial: presence, annotations and access changes reach them. */
   const viewers = new Map<string, Set<Socket>>();
   const send = (ws: Socket, message: ServerMessage): void => void ws.send(JSON.stringify(message));
@@ -90,6 +97,7 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
     if (ws.data.closed) return;
     ws.data.closed = true;
     ws.data.unsubscribe?.();
+    ws.data.stopReplay?.();
     const trialId = ws.data.claims?.trialId;
     if (trialId && viewers.get(trialId)?.delete(ws)) presence(trialId);
   }
@@ -157,6 +165,11 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
     if (lost || !access) return shut(ws, SHUT_OUT, lost ?? "");
     const before = ws.data.access!;
     ws.data.access = access;
+    // A replay is for those who may read the trial's analysis: one who no longer may, stops seeing it.
+    if (ws.data.stopReplay && !replayVerdict(access).allow) {
+      ws.data.stopReplay();
+      ws.data.stopReplay = undefined;
+    }
     if (before.studyRole !== access.studyRole || mayRun(before) !== mayRun(access)) {
       send(ws, { type: "access", role: access.studyRole!, mayRun: mayRun(access) });
     }
@@ -236,6 +249,30 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
     else reject(result.reason);
   }
 
+  /** Starts or stops this connection's replay of its (finished) trial on the simulated robot. */
+  async function replay(
+    ws: Socket,
+    message: Extract<ClientMessage, { type: "replay" | "replay_stop" }>,
+  ): Promise<void> {
+    const { claims, access } = ws.data;
+    const reject = (reason: string) => send(ws, { type: "rejected", requestId: message.requestId, reason });
+    if (!claims || !access) return reject("Say hello with your trial link first.");
+    const verdict = replayVerdict(access);
+    if (!verdict.allow) return reject(verdict.reason);
+    ws.data.stopReplay?.();
+    ws.data.stopReplay = undefined;
+    if (message.type === "replay") {
+      const started = await replays.play(claims.trialId, message, (status) => {
+        if (!ws.data.closed) send(ws, status);
+      });
+      if (!started.ok) return reject(started.reason);
+      // Closed while it was starting: the replay goes with the connection.
+      if (ws.data.closed) return started.stop();
+      ws.data.stopReplay = started.stop;
+    }
+    send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
+  }
+
   async function onMessage(ws: Socket, text: string): Promise<void> {
     if (ws.data.closed) return;
     const parsed = parseClientMessage(text);
@@ -248,6 +285,12 @@ export function startRuntimeServer({ db, hosts, relay, secret, hostname, port }:
         const ref = logUnexpected(error, "trial socket hello");
         shut(ws, 1011, `The server could not open this trial (reference ${ref}). Reload the page.`);
       });
+    }
+    if (message.type === "replay" || message.type === "replay_stop") {
+      // One at a time: a quick run of seeks ends with the last one playing, and held by this connection.
+      const run = (ws.data.replayQueue ?? Promise.resolve()).then(() => replay(ws, message));
+      ws.data.replayQueue = run.catch(() => undefined);
+      return run;
     }
     return act(ws, message);
   }

@@ -36,6 +36,9 @@ const schema = z.object({
   HRI_MEDIA_S3_SECRET_KEY: z.string().optional(),
   // The largest recording accepted, in MB.
   HRI_MEDIA_MAX_MB: z.coerce.number().int().min(1).default(4096),
+  // The simulated robot's rosbridge, set by the launcher when it runs one: the robot page shows it, and
+  // replays go to it and nowhere else (never HRI_ROSBRIDGE_URL, which may be a real robot).
+  HRI_SIMULATOR_URL: z.string().url().optional(),
   HRI_SIMULATOR_PORT: z.coerce.number().int().min(0).max(65535).default(9090),
   BETTER_AUTH_SECRET: z.string().min(32, "must be at least 32 characters").optional(),
   BETTER_AUTH_URL: z.string().url().optional(),

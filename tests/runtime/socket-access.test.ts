@@ -4,7 +4,7 @@
 // only what the caller may read, and a wizard runs only their own trials.
 import { and, eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { studies, studyMembers, trials, user } from "../../src/store/schema";
+import { participants, studies, studyMembers, trialEvents, trials, user } from "../../src/store/schema";
 import { SOCKET_MESSAGES_VERSION } from "../../src/core/socket/messages";
 import { socketFixture } from "../support/socket-fixture";
 import { connectTrial, type TrialSocket } from "../support/socket";
@@ -239,6 +239,35 @@ describe.sequential("the trial socket's access", () => {
       type: "ack",
     });
     wizard.close();
+  });
+
+  it("replays only a finished trial, only for whoever may read its analysis, and says when there is no simulated robot", async () => {
+    const finished = await f.a.trial(f.a.people.wizard!, "completed");
+    const live = await f.a.trial(f.a.people.wizard!, "live");
+    const replay = async (who: "observer" | "wizard" | "owner", trialId: string) => {
+      const socket = await f.open(who, trialId);
+      socket.send({ type: "replay", requestId: "r", fromMs: 0, speed: 1 });
+      const reply = await socket.next((m) => m.requestId === "r");
+      socket.close();
+      return reply.reason;
+    };
+    // This runtime, like one driving a real robot, has no simulated robot to replay on.
+    expect(await replay("observer", finished)).toBe(
+      "Replay needs the simulated robot; this server has none running (it drives a real robot, and a replay never moves one).",
+    );
+    expect(await replay("wizard", finished)).toBe("As a wizard of this study you may not do this.");
+    expect(await replay("owner", live)).toBe("Only a finished trial can be replayed: this one has not ended yet.");
+    // A withdrawn participant's trial is no more replayed than it is analysed.
+    const [withdrawn] = await f.db
+      .insert(participants)
+      .values({ studyId: f.a.studyId, code: "P-GONE", consentStatus: "withdrawn" })
+      .returning();
+    await f.db.update(trials).set({ participantId: withdrawn!.id }).where(eq(trials.id, finished));
+    expect(await replay("observer", finished)).toBe(
+      "P-GONE withdrew from the study: their data is excluded from analysis and exports.",
+    );
+    const events = await f.db.select().from(trialEvents).where(eq(trialEvents.trialId, finished));
+    expect(events.map((e) => e.type)).toEqual(["trial.started", "step.entered", "trial.completed"]);
   });
 
   it("refuses someone who is not a member of the trial's study at hello", async () => {

@@ -133,6 +133,8 @@ describe.sequential("every socket message × every role × own, other and mixed 
         "hello",
         "ping",
         "annotate",
+        "replay",
+        "replay_stop",
         ...commandSchema.options.map((c) => `command ${String(c.shape.kind.value)}`),
       ]),
     );

@@ -5,7 +5,12 @@ import { expect } from "vitest";
 import type { apiClient } from "./http";
 import { connectTrial } from "./socket";
 
-export async function runWholeTrial(wizard: ReturnType<typeof apiClient>, trialId: string) {
+export async function runWholeTrial(
+  wizard: ReturnType<typeof apiClient>,
+  trialId: string,
+  /** A wizard's pause after each press, for a trial that must take a while (a replay to watch). */
+  { pauseMs = 0 } = {},
+) {
   const trial = await wizard.trials.get.query({ trialId });
   const { url, token } = await wizard.trials.socketToken.mutate({ trialId });
   const socket = await connectTrial(url, token);
@@ -18,6 +23,7 @@ export async function runWholeTrial(wizard: ReturnType<typeof apiClient>, trialI
     if (String(reply.reason ?? "").startsWith("Record the participant's answer"))
       await socket.command(`a${i}`, { kind: "answer", actionId: question.id, optionId: options[0]!.id });
     else if (reply.type === "rejected") await new Promise((r) => setTimeout(r, 150));
+    else if (pauseMs) await new Promise((r) => setTimeout(r, pauseMs));
     completed = socket.messages.some((m) =>
       ((m.events as Array<{ type: string }> | undefined) ?? []).some((e) => e.type === "trial.completed"),
     );

@@ -6,6 +6,7 @@ import { BUN } from "./app";
 export async function startRuntime(
   databaseUrl: string,
   secret: string,
+  /** More settings, e.g. the robot's and the simulated robot's addresses. */
   env: Record<string, string> = {},
 ): Promise<{ url: string; child: ChildProcess }> {
   const port = await freePort();

@@ -1,6 +1,13 @@
 import { describe, expect, it } from "vitest";
 import { NOT_BLINDED } from "../studies/blinding";
-import { annotateVerdict, commandVerdict, mayReadTrialLog, touches, type TrialAccess } from "./trial-socket";
+import {
+  annotateVerdict,
+  commandVerdict,
+  mayReadTrialLog,
+  replayVerdict,
+  touches,
+  type TrialAccess,
+} from "./trial-socket";
 
 const me = "u-me";
 const access = (
@@ -151,6 +158,43 @@ describe("who receives a trial's event log", () => {
     ["a disabled owner, live trial", access({ studyRole: "owner", active: false }), false],
   ])("%s → %s", (_name, who, readable) => {
     expect(mayReadTrialLog(who)).toBe(readable);
+  });
+});
+
+describe("who may replay a trial's robot commands on the simulated robot", () => {
+  const blind = { conditionsHidden: false, resultsHidden: true };
+  it.each<[string, TrialAccess, string | null]>([
+    ["an observer, finished trial", access({ studyRole: "observer", status: "completed" }), null],
+    ["a researcher, aborted trial", access({ studyRole: "researcher", status: "aborted" }), null],
+    ["an owner, finished trial", access({ studyRole: "owner", status: "completed" }), null],
+    [
+      "a wizard (no data.read), finished trial",
+      access({ status: "completed" }),
+      "As a wizard of this study you may not do this.",
+    ],
+    [
+      "a results-blinded researcher, finished trial",
+      access({ studyRole: "researcher", blinding: blind, status: "completed" }),
+      "This study hides results until it is marked completed (blinding).",
+    ],
+    [
+      "a researcher, live trial",
+      access({ studyRole: "researcher" }),
+      "Only a finished trial can be replayed: this one has not ended yet.",
+    ],
+    [
+      "a researcher, scheduled trial",
+      access({ studyRole: "researcher", status: "scheduled" }),
+      "Only a finished trial can be replayed: this one has not ended yet.",
+    ],
+    [
+      "a removed member, finished trial",
+      access({ studyRole: null, status: "completed" }),
+      "You are no longer a member of this study.",
+    ],
+  ])("%s → %s", (_name, who, refusal) => {
+    const verdict = replayVerdict(who);
+    expect(verdict.allow ? null : verdict.reason).toBe(refusal);
   });
 });
 

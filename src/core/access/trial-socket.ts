@@ -77,6 +77,23 @@ export function mayReadTrialLog(access: TrialAccess): boolean {
   return access.trial.status !== "completed" && access.trial.status !== "aborted";
 }
 
+/**
+ * May the caller replay the trial's robot commands on the simulated robot?
+ * Whoever may read its analysis (a replay shows its results), once it has ended.
+ */
+export function replayVerdict(access: TrialAccess): SocketVerdict {
+  const lost = lostAccess(access);
+  if (lost) return refuse(lost);
+  const reading = decide(
+    { systemRole: access.systemRole, studyRole: access.studyRole, blinding: access.blinding },
+    "data.read",
+  );
+  if (!reading.allow) return refuse(reading.reason);
+  if (access.trial.status !== "completed" && access.trial.status !== "aborted")
+    return refuse("Only a finished trial can be replayed: this one has not ended yet.");
+  return { allow: true, claim: false };
+}
+
 /** A change PostgreSQL announced on 'hri_access': the keys name what changed. */
 export interface AccessChange {
   studyId?: string;

@@ -34,3 +34,23 @@ export function initialState(): RobotState {
     battery: 100,
   };
 }
+
+/**
+ * Where a replay says what it is (ours, only on the simulator): published by
+ * the runtime when a replay starts, ends, and about every second between, so
+ * the robot page can say "replay of trial …" rather than pass it off as live.
+ * It names the trial by id only: the simulator is open to anyone who can
+ * reach it, and the robot page asks the server for the name, which tells only
+ * members of the trial's study.
+ */
+export const REPLAY_TOPIC = "/hristudio/replay";
+
+export interface ReplayAnnouncement {
+  trialId: string;
+  playing: boolean;
+  speed: number;
+  /** The trial's moment (ms from t0) the replay has reached. */
+  positionMs: number;
+  sent: number;
+  total: number;
+}

@@ -57,6 +57,17 @@ export const clientMessageSchema = z.discriminatedUnion("type", [
     note: z.string().max(5000).default(""),
   }),
   z.object({ type: z.literal("ping") }),
+  // Replays the finished trial's robot commands on the simulated robot, from a
+  // moment of the trial (ms from t0) at a speed (REPLAY_SPEEDS; checked by the
+  // runtime, which says which speeds there are). A connection has one replay:
+  // a new one replaces it, and it stops when the connection closes.
+  z.object({
+    type: z.literal("replay"),
+    requestId: id,
+    fromMs: z.number().finite().min(0).max(86_400_000),
+    speed: z.number().finite(),
+  }),
+  z.object({ type: z.literal("replay_stop"), requestId: id }),
 ]);
 
 export type ClientMessage = z.infer<typeof clientMessageSchema>;
@@ -106,6 +117,20 @@ export const serverMessageSchema = z.discriminatedUnion("type", [
   }),
   z.object({ type: z.literal("robot"), connected: z.boolean(), detail: z.string().optional() }),
   z.object({ type: z.literal("pong") }),
+  // This connection's replay as it goes: started, each command sent, ended or stopped (with why).
+  z.object({
+    type: z.literal("replay"),
+    playing: z.boolean(),
+    fromMs: z.number(),
+    speed: z.number(),
+    /** The trial's moment (ms from t0) the replay has reached. */
+    positionMs: z.number(),
+    sent: z.number().int(),
+    total: z.number().int(),
+    /** Commands a replay cannot send again (SSH postures), with why. */
+    skipped: z.array(z.string()),
+    detail: z.string().optional(),
+  }),
 ]);
 
 export type ServerMessage = z.infer<typeof serverMessageSchema>;

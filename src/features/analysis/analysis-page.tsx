@@ -17,6 +17,7 @@ import { Badge, Card, Spinner, type Tone } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
 import { seconds } from "@/ui/format";
 import { JointAngles } from "./joint-angles";
+import { ReplayControl } from "./replay-control";
 import { TrialPeople } from "@/features/execution/trial-people";
 
 const OUTCOME_TONE: Record<string, Tone> = {
@@ -71,6 +72,11 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
     ...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })),
     ...(annotations.data ?? []).map((m) => ({ at: m.relMs, kind: "annotation" as const, m })),
   ].sort((a, b) => a.at - b.at);
+  // A moment of the trial chosen on the timeline: the recording goes there, or (with none) the replay's playhead.
+  const seekTo = (ms: number) => {
+    if (recording && video.current) video.current.currentTime = videoSeconds(recording, ms);
+    else setPlayheadMs(ms);
+  };
   // The row the playhead is in: the last one at or before it.
   const current = playheadMs === null ? -1 : timeline.findLastIndex((item) => item.at <= playheadMs);
   return (
@@ -107,6 +113,9 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         <Figure label="Branches by answer / by hand" value={`${r.branches.byLogic} / ${r.branches.byHand}`} />
       </div>
       {recording && <RecordingPlayer recording={recording} video={video} onTime={setPlayheadMs} />}
+      {(t.status === "completed" || t.status === "aborted") && (
+        <ReplayControl trialId={trialId} playheadMs={playheadMs} recording={recording} video={video} />
+      )}
       <QuestionnaireAnswers trialId={trialId} studyId={t.studyId} />
       <section aria-label="Planned versus executed">
         <h2 className="mb-2 text-lg font-semibold">Planned versus executed</h2>
@@ -148,18 +157,15 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           annotations={(annotations.data ?? []).map((m) => ({ at: m.relMs, label: m.label }))}
           endMs={timeline.at(-1)?.at ?? 0}
           playheadMs={playheadMs}
-          onSeek={recording ? (ms) => video.current && (video.current.currentTime = videoSeconds(recording, ms)) : null}
+          onSeek={seekTo}
         />
         <Card className="divide-y divide-slate-100 text-sm">
           {timeline.map((item, i) => (
             <button
               key={i}
               type="button"
-              disabled={!recording}
               aria-current={current === i ? "time" : undefined}
-              onClick={() =>
-                recording && video.current && (video.current.currentTime = videoSeconds(recording, item.at))
-              }
+              onClick={() => seekTo(item.at)}
               className={`flex w-full gap-3 px-4 py-1.5 text-left enabled:hover:bg-slate-50 ${current === i ? "bg-brand-50" : ""}`}
             >
               <span className="w-16 shrink-0 font-mono text-xs text-slate-600">{seconds(item.at)}</span>

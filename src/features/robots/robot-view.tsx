@@ -5,14 +5,19 @@
 import { useEffect, useRef, useState } from "react";
 import * as ROSLIB from "roslib";
 import { readableValue } from "@/core/designer/action-name";
-import { ROBOT_STATE_TOPIC, type RobotState } from "@/core/robots/robot-state";
+import { REPLAY_TOPIC, ROBOT_STATE_TOPIC, type ReplayAnnouncement, type RobotState } from "@/core/robots/robot-state";
 import { Button } from "@/ui/button";
 import { Badge, Card } from "@/ui/surface";
+import { ReplayBanner } from "./replay-banner";
+
+// A replay announces itself every second while it plays: one unheard for longer has gone (its runtime stopped).
+const REPLAY_GONE_MS = 3000;
 
 export function RobotView({ url }: { url: string }) {
   const [state, setState] = useState<RobotState | null>(null);
   const [connected, setConnected] = useState(false);
   const [voice, setVoice] = useState(false);
+  const [replay, setReplay] = useState<(ReplayAnnouncement & { heardAt: number }) | null>(null);
   const spoken = useRef<string | null>(null);
 
   useEffect(() => {
@@ -31,6 +36,10 @@ export function RobotView({ url }: { url: string }) {
       void ros.connect(url).catch(() => undefined);
       const topic = new ROSLIB.Topic({ ros, name: ROBOT_STATE_TOPIC, messageType: "std_msgs/msg/String" });
       topic.subscribe((message) => setState(JSON.parse((message as { data: string }).data) as RobotState));
+      const replays = new ROSLIB.Topic({ ros, name: REPLAY_TOPIC, messageType: "std_msgs/msg/String" });
+      replays.subscribe((message) =>
+        setReplay({ ...(JSON.parse((message as { data: string }).data) as ReplayAnnouncement), heardAt: Date.now() }),
+      );
     };
     open();
     return () => {
@@ -38,6 +47,13 @@ export function RobotView({ url }: { url: string }) {
       ros?.close();
     };
   }, [url]);
+
+  // A replay that stopped announcing itself is over, whether or not its end was heard.
+  useEffect(() => {
+    if (!replay?.playing) return;
+    const timer = setTimeout(() => setReplay((r) => r && { ...r, playing: false }), REPLAY_GONE_MS);
+    return () => clearTimeout(timer);
+  }, [replay]);
 
   useEffect(() => {
     const text = state?.speaking;
@@ -55,6 +71,7 @@ export function RobotView({ url }: { url: string }) {
           {voice ? "Mute robot voice" : "Speak through this browser"}
         </Button>
       </div>
+      {replay && <ReplayBanner replay={replay} />}
       <Card className="flex flex-col items-center gap-6 p-10">
         <div
           role="status"

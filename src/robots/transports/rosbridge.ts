@@ -8,7 +8,7 @@
 // Server state belongs to one connection (transcript 09): after every
 // reconnect a fresh roslib.Ros is made and state subscriptions are re-sent.
 import * as ROSLIB from "roslib";
-import { outgoingFor, type PluginAction } from "../../core/plugins";
+import { outgoingFor, type JsonValue, type PluginAction } from "../../core/plugins";
 import {
   backoffDelay,
   checkedParameters,
@@ -80,6 +80,13 @@ export class RosbridgeTransport extends LinkedTransport {
       return { status: "completed", detail: { topic: outgoing.topic } };
     }
     return this.call(ros, outgoing.service, outgoing.serviceType, outgoing.args, started + timeoutMs);
+  }
+
+  /** A message of our own (not a plugin action's) on a topic, if connected now: false if not. */
+  publish(topic: string, messageType: string, message: JsonValue): boolean {
+    if (this.status.state !== "connected" || !this.ros) return false;
+    this.topic(this.ros, topic, messageType).publish(message);
+    return true;
   }
 
   override subscribe(
