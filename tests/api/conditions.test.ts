@@ -11,10 +11,7 @@ const f = await buildFixture(db);
 const owner = f.api("owner");
 afterAll(close);
 
-async function studyWithConditions(
-  strategy: "fixed" | "random" | "balanced" | "counterbalanced",
-  perCondition = 1,
-) {
+async function studyWithConditions(strategy: "fixed" | "random" | "balanced" | "counterbalanced", perCondition = 1) {
   const study = await f.newStudy();
   const nao = await owner.experiments.create({
     studyId: study.id,
