@@ -72,6 +72,7 @@ export function draftFrom(design: DesignDraft): DesignDraft {
         name: a.name,
         parameters: a.parameters,
         parallelGroup: a.parallelGroup,
+        ...(a.note ? { note: a.note } : {}),
       })),
     })),
   };

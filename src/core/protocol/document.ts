@@ -44,6 +44,11 @@ export const actionSchema = z.object({
     .default({}),
   // Actions that share a group and sit next to each other start together.
   parallelGroup: z.string().trim().min(1).max(100).nullable().default(null),
+  /**
+   * Guidance for the wizard, shown beside the action during a trial. Left
+   * out when empty, so a design without notes hashes as it always did.
+   */
+  note: plain("Note for the wizard", 2000).optional(),
 });
 
 export const stepSchema = z.object({
