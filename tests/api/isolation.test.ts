@@ -15,7 +15,7 @@ import { appRouter } from "../../src/server/api/root";
 import type { Meta } from "../../src/server/api/trpc";
 import { freshDatabase } from "../support/db";
 import { buildFixture, CALLERS, newPerson, type Caller } from "./fixture";
-import { baseData, MATRIX } from "./matrix";
+import { baseData, freshAudio, MATRIX } from "./matrix";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -77,6 +77,7 @@ async function victimStudy() {
     sessionId: session.id,
     annotationId: annotation.id,
     questionnaireId: questionnaire.id,
+    audioFileId: (await freshAudio(f, study.id, victim.id)).audioFileId,
     wizardId: victim.id,
     userId: victim.id,
   };
@@ -119,6 +120,7 @@ async function ownIds(): Promise<Record<ReferenceKey, string | string[]>> {
     sessionId: session.id,
     annotationId: annotation.id,
     questionnaireId: questionnaire.id,
+    audioFileId: (await freshAudio(f, a.study.id, f.people.owner.id)).audioFileId,
     wizardId: f.people.owner.id,
     userId: f.people.owner.id,
   };
