@@ -252,6 +252,14 @@ export const commands = {
     apply: (d) => replaceAction(d, actionId, (a) => ({ ...a, name })),
   }),
 
+  /** The note the wizard reads beside the action; an empty note is none. */
+  setNote: (actionId: string, note: string): Command => ({
+    label: "edit note for the wizard",
+    mergeKey: `note:${actionId}`,
+    apply: (d) =>
+      replaceAction(d, actionId, ({ note: _, ...a }) => (note.trim() ? { ...a, note } : a)),
+  }),
+
   /** `undefined` removes the parameter, so the block's default applies. */
   setParameter: (actionId: string, parameter: string, value: unknown): Command => ({
     label: `set ${parameter}`,

@@ -2,7 +2,8 @@
 // the media store under the study, one row each. A file a published version
 // plays stays: a published version must play the same sound every time.
 import { createHash } from "node:crypto";
-import { and, asc, eq, sql } from "drizzle-orm";
+import { and, asc, eq, inArray, sql } from "drizzle-orm";
+import type { DesignDraft } from "@/core/protocol/document";
 import { audioFacts } from "@/core/media/audio-file";
 import { MB } from "@/core/network/limits";
 import type { Database } from "@/store/client";
@@ -54,7 +55,7 @@ export async function addAudio(
 }
 
 /** "version 2 of “Storyteller”" for each published version of the study that plays the file. */
-export async function publishedUses(db: Database, studyId: string, audioId: string): Promise<string[]> {
+export async function publishedUses(db: Pick<Database, "select">, studyId: string, audioId: string): Promise<string[]> {
   const rows = await db
     .select({ version: experimentVersions.version, experiment: experiments.name })
     .from(experimentVersions)
@@ -67,4 +68,30 @@ export async function publishedUses(db: Database, studyId: string, audioId: stri
     )
     .orderBy(asc(experiments.name), asc(experimentVersions.version));
   return rows.map((r) => `version ${r.version} of “${r.experiment}”`);
+}
+
+/**
+ * Why the design's sounds cannot be published: a file that is not one of the
+ * study's, or whose bytes are not the ones chosen. The files are locked until
+ * the publish commits, so none is deleted from under the new version.
+ */
+export async function soundProblems(tx: Pick<Database, "select">, studyId: string, draft: DesignDraft) {
+  const plays = draft.steps.flatMap((step) =>
+    step.actions.filter((a) => a.type === "play_audio").map((action) => ({ step, action })),
+  );
+  const ids = [...new Set(plays.map((p) => String(p.action.parameters.fileId ?? "")))];
+  if (!ids.length) return [];
+  const files = await tx
+    .select({ id: studyAudio.id, sha256: studyAudio.sha256 })
+    .from(studyAudio)
+    .where(and(eq(studyAudio.studyId, studyId), inArray(studyAudio.id, ids)))
+    .for("share");
+  const byId = new Map(files.map((f) => [f.id, f.sha256]));
+  return plays.flatMap(({ step, action }) => {
+    const sha256 = byId.get(String(action.parameters.fileId ?? ""));
+    const sound = `the sound “${String(action.parameters.name ?? "")}” in step “${step.name}”`;
+    if (sha256 === undefined) return [`${sound} is not one of this study's sounds: choose it again.`];
+    if (sha256 !== action.parameters.sha256) return [`${sound} has changed since it was chosen: choose it again.`];
+    return [];
+  });
 }

@@ -38,13 +38,15 @@ export const audioRouter = router({
 
   remove: studyProcedure("experiment.edit", "audioFile", audioFileId).mutation(async ({ ctx }) => {
     const file = ctx.row;
-    const uses = await publishedUses(ctx.db, ctx.studyId, file.id);
-    if (uses.length)
-      throw new TRPCError({
-        code: "CONFLICT",
-        message: `“${file.name}” is played by ${uses.join(", ")}: a published version must play the same sound every time, so the file stays.`,
-      });
     await ctx.db.transaction(async (tx) => {
+      // Locked first: a publish that pins this file either commits before the check below or finds it gone.
+      await tx.select({ id: studyAudio.id }).from(studyAudio).where(eq(studyAudio.id, file.id)).for("update");
+      const uses = await publishedUses(tx, ctx.studyId, file.id);
+      if (uses.length)
+        throw new TRPCError({
+          code: "CONFLICT",
+          message: `“${file.name}” is played by ${uses.join(", ")}: a published version must play the same sound every time, so the file stays.`,
+        });
       await tx.delete(studyAudio).where(eq(studyAudio.id, file.id));
       await audit(tx, {
         actorId: ctx.user.id,
