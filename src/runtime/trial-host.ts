@@ -142,7 +142,7 @@ export class TrialHost {
    * not play it): logged as the action's end, by the wizard who heard it.
    * Only a sound handed to the browser ends this way, never a robot's action.
    */
-  browserPlayed(actionId: string, failed: string | undefined, actorId: string): Promise<CommandResult> {
+  browserPlayed(actionId: string, failed: string | undefined, actorId: string | null): Promise<CommandResult> {
     if (!this.browserPlays.delete(actionId))
       return Promise.resolve({ ok: false, reason: "No sound of this trial is waiting for the browser to play it." });
     return this.command(

@@ -256,8 +256,7 @@ export const commands = {
   setNote: (actionId: string, note: string): Command => ({
     label: "edit note for the wizard",
     mergeKey: `note:${actionId}`,
-    apply: (d) =>
-      replaceAction(d, actionId, ({ note: _, ...a }) => (note.trim() ? { ...a, note } : a)),
+    apply: (d) => replaceAction(d, actionId, ({ note: _, ...a }) => (note.trim() ? { ...a, note } : a)),
   }),
 
   /** `undefined` removes the parameter, so the block's default applies. */
