@@ -89,14 +89,16 @@ export interface ProtocolSnapshot {
 /**
  * What the trial engine needs of a protocol (a published snapshot or a
  * rehearsal's draft): the same steps and actions, of which only ids, types
- * and parameters are required.
+ * and parameters are required (the wizard's page also shows descriptions and notes).
  */
 export interface TrialProtocol {
   steps: Array<
-    Pick<DesignStep, "id" | "name" | "after"> & {
-      actions: Array<
-        Pick<DesignAction, "id" | "type" | "parameters"> & Partial<Pick<DesignAction, "name" | "parallelGroup">>
-      >;
-    }
+    Pick<DesignStep, "id" | "name" | "after"> &
+      Partial<Pick<DesignStep, "description">> & {
+        actions: Array<
+          Pick<DesignAction, "id" | "type" | "parameters"> &
+            Partial<Pick<DesignAction, "name" | "parallelGroup" | "note">>
+        >;
+      }
   >;
 }
