@@ -33,9 +33,9 @@ describe.sequential("Play audio through the wizard's browser", () => {
     await researcher.getByRole("tab", { name: "Sounds" }).click();
     await researcher
       .getByLabel("Add a sound file")
-      .setInputFiles({ name: "chime.wav", mimeType: "audio/wav", buffer: Buffer.from(silentWav(400)) });
-    await researcher.getByRole("cell", { name: /chime\.wav/ }).waitFor();
-    await expect.poll(() => researcher.getByText("0.4 s").count()).toBe(1);
+      .setInputFiles({ name: "chime.wav", mimeType: "audio/wav", buffer: Buffer.from(silentWav(3000)) });
+    await researcher.getByRole("cell", { name: /^chime\.wav [0-9a-f]{12}$/ }).waitFor();
+    await expect.poll(() => researcher.getByText("3.0 s").count()).toBe(1);
     await researcher
       .getByLabel("Add a sound file")
       .setInputFiles({ name: "notes.wav", mimeType: "audio/wav", buffer: Buffer.from("not a sound") });
@@ -78,10 +78,10 @@ describe.sequential("Play audio through the wizard's browser", () => {
     await wizard.getByTestId("action-note").getByText("Wait for the participant to look at the robot.").waitFor();
     await wizard.keyboard.press("n");
     await wizard.getByTestId("browser-sound").getByText("chime.wav").waitFor();
+    await screenshot(wizard, "wizard-play-audio");
     await expect
       .poll(() => wizard.locator('[data-testid^="action-"]').first().textContent(), { timeout: 10_000 })
       .toMatch(/^done/);
-    await screenshot(wizard, "wizard-play-audio");
     const log = await researcherApi.trials.events.query({ trialId: trial.id });
     const ends = log
       .filter((e) => "actionId" in e && e.type !== "action.requested")
