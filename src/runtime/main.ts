@@ -27,7 +27,13 @@ const robotFor = (plugin: Plugin | null, robotId: string) => {
   return choice.ok ? pluginRobot(plugin, choice.transport) : unavailableRobot(choice.reason);
 };
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
-const hosts = trialHosts(db, lockConnection, robotFor, (...args) => announceRobot(...args));
+const hosts = trialHosts(
+  db,
+  lockConnection,
+  robotFor,
+  (...args) => announceRobot(...args),
+  config.HRI_TRIAL_IDLE_SECONDS * 1000,
+);
 const relay = await eventRelay(db, sql);
 const runtime = startRuntimeServer({
   db,

@@ -2,7 +2,7 @@
 // run one at a time: decide (pure engine) → append (committed) → apply →
 // tell every client. Robot and clock reports come back as commands too.
 import {
-  apply,
+  applyAll,
   decide,
   fold,
   type Command,
@@ -30,6 +30,9 @@ export class TrialHost {
   private state: TrialState;
   private queue: Promise<unknown> = Promise.resolve();
   private readonly listeners = new Set<(events: StoredEvent[]) => void>();
+  private shut = false;
+  /** Told when the trial ends, and when its last client leaves. */
+  private readonly lifecycle = { ended: () => {}, unwatched: () => {} };
   private readonly timers = new Set<ReturnType<typeof setTimeout>>();
   /** Sounds handed to the wizard's browser to play, by action id, until it reports their end. */
   private readonly browserPlays = new Set<string>();
@@ -86,7 +89,29 @@ export class TrialHost {
 
   subscribe(listener: (events: StoredEvent[]) => void) {
     this.listeners.add(listener);
-    return () => this.listeners.delete(listener);
+    return () => {
+      if (this.listeners.delete(listener) && this.listeners.size === 0) this.lifecycle.unwatched();
+    };
+  }
+
+  /** `ended`: the trial completed or was aborted; `unwatched`: no client follows it any more. */
+  onLifecycle(handlers: { ended: () => void; unwatched: () => void }) {
+    Object.assign(this.lifecycle, handlers);
+  }
+
+  /** Whether the host has closed: it runs nothing any more. */
+  get closed(): boolean {
+    return this.shut;
+  }
+
+  /** Whether any client follows the trial. */
+  get watched(): boolean {
+    return this.listeners.size > 0;
+  }
+
+  /** Whether an action is under way: closing now would cut it off. */
+  get busy(): boolean {
+    return Object.values(this.state.actions).some((a) => a.status === "requested" || a.status === "running");
   }
 
   /** Runs after every earlier command has finished, so the log never forks. */
@@ -97,14 +122,17 @@ export class TrialHost {
   }
 
   private async execute(command: Command, actorId: string | null): Promise<CommandResult> {
+    // A robot's late report, or a clock, after the host closed: the trial is no longer run from here.
+    if (this.shut) return { ok: false, reason: "This trial is no longer open here. Reload the page." };
     const decision = decide(this.protocol, this.state, command);
     if (!decision.ok) return decision;
     const cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
     const stored = await appendEvents(this.db, cursor, decision.events, actorId);
-    for (const event of stored) this.state = apply(this.state, event);
+    this.state = applyAll(this.state, stored);
     this.t0 ??= startedAt(stored);
     for (const listener of this.listeners) listener(stored);
     this.carryOut(decision.events);
+    if (this.state.status === "completed" || this.state.status === "aborted") this.lifecycle.ended();
     return { ok: true, events: stored };
   }
 
@@ -154,6 +182,7 @@ export class TrialHost {
   }
 
   async close() {
+    this.shut = true;
     for (const t of this.timers) clearTimeout(t);
     this.stopWatching();
     await this.queue;

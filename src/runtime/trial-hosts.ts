@@ -1,5 +1,9 @@
 // The live trials this runtime process owns. A trial is owned by one process
-// at a time: the first to take its PostgreSQL advisory lock.
+// at a time: the first to take its PostgreSQL advisory lock. A host closes
+// (robot link, its subscriptions, the lock) when its trial ends, and when no
+// client has followed it for a while with nothing under way, so the robot
+// connections held are bounded by the trials being run, not by every trial
+// ever opened. A finished trial is opened without a robot at all.
 import { eq } from "drizzle-orm";
 import type postgres from "postgres";
 import type { Plugin } from "@/core/plugins";
@@ -7,12 +11,16 @@ import type { Database } from "@/store/client";
 import { experimentVersions, trials } from "@/store/schema";
 import { trialPlugin } from "@/robots/trial-plugin";
 import type { RobotLink } from "./robot";
+import { unavailableRobot } from "./robot-link";
+import { logUnexpected } from "@/store/error-reference";
 import { TrialHost } from "./trial-host";
 
 export interface TrialHosts {
   /** The trial's host in this process, or null while another process owns the trial. */
   get(trialId: string): Promise<TrialHost | null>;
   closeAll(): Promise<void>;
+  /** How many trials this process holds open now (with their robot links and locks). */
+  readonly size: number;
 }
 
 export function trialHosts(
@@ -21,14 +29,25 @@ export function trialHosts(
   /** The robot for a trial's plugin document; `plugin` is null when none is installed for `robotId`. */
   robotFor: (plugin: Plugin | null, robotId: string) => RobotLink | Promise<RobotLink>,
   onRobotStatus: (trialId: string, connected: boolean, detail?: string) => void,
+  /** How long a trial nobody follows stays open, for a wizard who reloads or reconnects. */
+  idleMs = 60_000,
 ): TrialHosts {
   const hosts = new Map<string, Promise<TrialHost | null>>();
+
+  async function retire(trialId: string, host: TrialHost) {
+    const current = hosts.get(trialId);
+    if (!current || (await current.catch(() => null)) !== host) return;
+    hosts.delete(trialId);
+    await host.close();
+    // Advisory locks count per session: this releases exactly the hold this host took.
+    await lockConnection`select pg_advisory_unlock(hashtextextended(${trialId}, 0))`;
+  }
 
   async function open(trialId: string) {
     const [owned] = await lockConnection`select pg_try_advisory_lock(hashtextextended(${trialId}, 0)) as ok`;
     if (!owned?.ok) return null;
     const [row] = await db
-      .select({ snapshot: experimentVersions.snapshot, rehearsal: trials.rehearsalSnapshot })
+      .select({ snapshot: experimentVersions.snapshot, rehearsal: trials.rehearsalSnapshot, status: trials.status })
       .from(trials)
       .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
       .where(eq(trials.id, trialId));
@@ -40,8 +59,22 @@ export function trialHosts(
       await lockConnection`select pg_advisory_unlock(hashtextextended(${trialId}, 0))`;
       throw new Error(chosen.reason);
     }
-    const host = await TrialHost.open(db, trialId, protocol, await robotFor(chosen.plugin, chosen.robotId));
+    const ended = row?.status === "completed" || row?.status === "aborted";
+    const robot = ended ? unavailableRobot("the trial has ended") : await robotFor(chosen.plugin, chosen.robotId);
+    const host = await TrialHost.open(db, trialId, protocol, robot);
     host.onRobotStatus((connected, detail) => onRobotStatus(trialId, connected, detail));
+    // Unwatched for idleMs: closes, unless an action is still under way (then looks again later).
+    const retireIfIdle = () => {
+      const timer = setTimeout(() => {
+        if (host.closed || host.watched) return; // a client that came back starts the clock again as it leaves
+        if (host.busy) return retireIfIdle();
+        void retire(trialId, host).catch(retireFailed);
+      }, idleMs);
+      timer.unref?.();
+    };
+    host.onLifecycle({ ended: () => void retire(trialId, host).catch(retireFailed), unwatched: retireIfIdle });
+    // Opened by a command or a hello that may never subscribe: it must not stay open for ever either.
+    retireIfIdle();
     return host;
   }
 
@@ -59,9 +92,14 @@ export function trialHosts(
       }
       return host;
     },
+    get size() {
+      return hosts.size;
+    },
     async closeAll() {
       for (const host of hosts.values()) await (await host.catch(() => null))?.close();
       hosts.clear();
     },
   };
 }
+
+const retireFailed = (error: unknown) => logUnexpected(error, "closing a trial");

@@ -13,6 +13,8 @@ const schema = z.object({
   HOST: z.string().default("127.0.0.1"),
   PORT: z.coerce.number().int().min(0).max(65535).optional(),
   HRI_RUNTIME_PORT: z.coerce.number().int().min(0).max(65535).default(3001),
+  // How long the runtime keeps a trial nobody follows open (its robot link and lock), for a wizard who reconnects.
+  HRI_TRIAL_IDLE_SECONDS: z.coerce.number().min(0).max(86_400).default(60),
   // Where browsers reach the trial runtime; defaults to HOST and HRI_RUNTIME_PORT.
   HRI_RUNTIME_URL: z.string().url().optional(),
   // The robot's rosbridge WebSocket; unset, the launcher starts the simulated robot and uses it.

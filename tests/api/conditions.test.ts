@@ -11,7 +11,10 @@ const f = await buildFixture(db);
 const owner = f.api("owner");
 afterAll(close);
 
-async function studyWithConditions(strategy: "fixed" | "random" | "balanced" | "counterbalanced", perCondition = 1) {
+async function studyWithConditions(
+  strategy: "fixed" | "random" | "balanced" | "counterbalanced",
+  perCondition = 1,
+) {
   const study = await f.newStudy();
   const nao = await owner.experiments.create({
     studyId: study.id,
@@ -91,5 +94,49 @@ describe("condition assignment", () => {
       code: "CONFLICT",
       message: "F1 is already assigned; assignments are never redrawn.",
     });
+  });
+
+  it("balances each stratum of a demographic question on its own, and says which it used", async () => {
+    const { study, gestures, participant } = await studyWithConditions("fixed");
+    const where = await owner.studies
+      .update({ studyId: study.id, settings: { assignment: { strategy: "stratified", stratifyBy: "experience" } } })
+      .catch((e: TRPCError) => e);
+    expect(where).toMatchObject({
+      code: "BAD_REQUEST",
+      message: 'Assignment: "experience" is not a demographic question of this study',
+    });
+    await owner.studies.update({
+      studyId: study.id,
+      settings: {
+        demographics: [
+          { key: "experience", label: "Programming experience", type: "choice", options: ["none", "some"] },
+        ],
+        assignment: { strategy: "stratified", stratifyBy: "experience", perCondition: 1 },
+      },
+    });
+    // Six novices first, then six with experience: a study-wide block would mix them, strata keep each even.
+    const codes = [...Array.from({ length: 6 }, (_, i) => `N${i}`), ...Array.from({ length: 6 }, (_, i) => `E${i}`)];
+    const assigned = [];
+    for (const code of codes) {
+      const p = await participant(code);
+      await owner.participants.update({
+        participantId: p.id,
+        demographics: { experience: code.startsWith("N") ? "none" : "some" },
+      });
+      assigned.push(await owner.conditions.assign({ participantId: p.id }));
+    }
+    for (const group of ["none", "some"]) {
+      const inGroup = assigned.filter((p) => (p.assignment as { stratum: string }).stratum === group);
+      expect(inGroup).toHaveLength(6);
+      expect(inGroup.filter((p) => p.conditionId === gestures.id)).toHaveLength(3);
+      expect(inGroup.map((p) => (p.assignment as { position: number }).position)).toEqual([0, 1, 2, 3, 4, 5]);
+    }
+    expect(assigned[0]!.assignment).toMatchObject({ strategy: "stratified", stratifyBy: "experience" });
+    const listed = await owner.participants.list({ studyId: study.id });
+    expect(listed.find((p) => p.code === "E0")?.stratum).toBe("some");
+    // The question cannot go while assignment stratifies by it.
+    await expect(owner.studies.update({ studyId: study.id, settings: { demographics: [] } })).rejects.toThrow(
+      '"experience" is not a demographic question of this study',
+    );
   });
 });

@@ -2,7 +2,7 @@ import Ajv from "ajv";
 import { describe, expect, it } from "vitest";
 import { validateDesign } from "../designer/validate";
 import { plainErrors } from "./ajv-errors";
-import { validateParameters } from "./parameters";
+import { compileParameterSchema, validateParameters } from "./parameters";
 import type { ParameterSchema, Plugin } from "./types";
 
 // Ajv's own words, and its paths shown raw: none may reach a researcher.
@@ -121,5 +121,13 @@ describe("plugin file errors: a JSON Pointer in its own field, the reason in pla
     const errors = plainErrors(validate.errors);
     expect(errors.map((e) => e.reason)).toEqual([reason]);
     for (const wording of SCHEMA_WORDING) expect(reason).not.toMatch(wording);
+  });
+});
+
+describe("compiling parameter schemas", () => {
+  it("compiles a schema once by its content, however often a plugin is read afresh", () => {
+    const read = () => ({ type: "object", properties: { seconds: { type: "number", maximum: 3600 } } });
+    expect(compileParameterSchema(read())).toBe(compileParameterSchema(read()));
+    expect(compileParameterSchema(read())).not.toBe(compileParameterSchema({ type: "object", properties: {} }));
   });
 });

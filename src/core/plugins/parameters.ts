@@ -1,6 +1,8 @@
 // Validating action parameters against an action's parameterSchema, with
-// messages that name the parameter. Compiled validators are cached per schema
-// object, so a plugin's schemas compile once when it loads.
+// messages that name the parameter. Compiled validators are cached by the
+// schema's content, not its object: plugins are read afresh for each
+// portability check or publish, and ajv keeps every schema object it ever
+// compiled, so a cache by object would compile (and hold) a copy per call.
 import Ajv, { type ErrorObject, type ValidateFunction } from "ajv";
 import { plainReason } from "./ajv-errors";
 import type { ParameterSchema } from "./types";
@@ -8,26 +10,27 @@ import type { ParameterSchema } from "./types";
 // Not strict: HRIStudio files may carry UI hints (placeholder, step...) in
 // their parameter schemas; the plugin schema already checks the keywords we use.
 const ajv = new Ajv({ allErrors: true, strict: false });
-const compiled = new WeakMap<object, ValidateFunction>();
+const compiled = new Map<string, ValidateFunction>();
 
 export interface ParameterProblem {
   parameter: string;
   message: string;
 }
 
-/** Compiles once; throws with ajv's reason if the schema is not usable. */
+/** Compiles each distinct schema once; throws with ajv's reason if the schema is not usable. */
 export function compileParameterSchema(schema: ParameterSchema | object): ValidateFunction {
-  let validate = compiled.get(schema);
+  const key = JSON.stringify(schema);
+  let validate = compiled.get(key);
   if (!validate) {
     validate = ajv.compile(schema);
-    compiled.set(schema, validate);
+    compiled.set(key, validate);
   }
   return validate;
 }
 
 /** Checks one value against one property's schema; for a parameter's default. */
 export function checkValue(propertySchema: object, value: unknown): string | null {
-  const validate = ajv.compile(propertySchema);
+  const validate = compileParameterSchema(propertySchema);
   if (validate(value)) return null;
   return (validate.errors ?? []).map(plainReason).join(", and ");
 }

@@ -130,6 +130,16 @@ describe("the methods text", () => {
     expect(md).toContain(text);
   });
 
+  it("names the question a stratified assignment balanced within", () => {
+    const stratified = methodsMarkdown({
+      ...storyteller,
+      assignment: { strategy: "stratified", perCondition: 1, stratifiedBy: "Programming experience" },
+    });
+    expect(stratified).toContain(
+      "HRIStudio assigned participants stratified by Programming experience: within each answer, in shuffled blocks holding each condition once",
+    );
+  });
+
   it("says nothing of a step leading to the next one in the list, but names where branch arms lead", () => {
     expect(md).not.toContain("continued to “Story”");
     // Each arm ends the trial itself, so neither says where it continues.

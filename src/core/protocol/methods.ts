@@ -19,7 +19,8 @@ export interface MethodsInput {
   robot: { name: string; pluginVersion: string | null };
   /** The study's conditions; `experiment` names the experiment each runs. */
   conditions: Array<{ name: string; description: string; experiment: string }>;
-  assignment: Pick<StudySettings["assignment"], "strategy" | "perCondition">;
+  /** `stratifiedBy` is the label of the question whose answers are the strata. */
+  assignment: Pick<StudySettings["assignment"], "strategy" | "perCondition"> & { stratifiedBy?: string };
   /** Questionnaires given around the trial (those not attached are left out by the caller). */
   questionnaires: Array<{ name: string; timing: "before" | "after"; items: number; instrument: Instrument | null }>;
   /** What to call action types: the robot's library (action-name.ts). */
@@ -271,12 +272,14 @@ function conditions(input: MethodsInput, s: Style): string {
       `${quote(s, c.name)} (experiment ${quote(s, c.experiment)}${c.description.trim() ? `: ${s.text(c.description.trim())}` : ""})`,
   );
   const intro = `The study had ${plural(list.length, "condition")}: ${joinAnd(named)}.`;
-  const { strategy, perCondition } = input.assignment;
+  const { strategy, perCondition, stratifiedBy } = input.assignment;
+  const blocks = `shuffled blocks holding each condition ${perCondition === 1 ? "once" : `${perCondition} times`}`;
   const how = {
     fixed: "The researcher assigned each participant to a condition.",
     random:
       "HRIStudio assigned each participant to a condition at random, from a seed stored with the study, so the assignment can be reproduced.",
-    balanced: `HRIStudio assigned participants in shuffled blocks holding each condition ${perCondition === 1 ? "once" : `${perCondition} times`}, so group sizes differed by at most one block; the shuffle's seed is stored with the study.`,
+    balanced: `HRIStudio assigned participants in ${blocks}, so group sizes differed by at most one block; the shuffle's seed is stored with the study.`,
+    stratified: `HRIStudio assigned participants stratified by ${s.text(stratifiedBy ?? "a demographic question")}: within each answer, in ${blocks}, so each group's sizes differed by at most one block; the shuffle's seed is stored with the study.`,
     counterbalanced:
       "Each participant took part in every condition, in an order given by a balanced Latin square (Williams design).",
   }[strategy];

@@ -27,6 +27,16 @@ describe("the socket messages", () => {
       JSON.stringify({ type: "hello", version: SOCKET_MESSAGES_VERSION, token: "t", lastSeq: -1 }),
       "The message is not understood: lastSeq: ",
     ],
+    [
+      "a lastSeq past any stored sequence number",
+      JSON.stringify({ type: "hello", version: SOCKET_MESSAGES_VERSION, token: "t", lastSeq: 2 ** 31 }),
+      "The message is not understood: lastSeq: ",
+    ],
+    [
+      "the largest lastSeq",
+      JSON.stringify({ type: "hello", version: SOCKET_MESSAGES_VERSION, token: "t", lastSeq: 2 ** 31 - 1 }),
+      null,
+    ],
   ])("%s", (_name, raw, reasonStart) => {
     const parsed = parseClientMessage(raw);
     if (reasonStart === null) expect(parsed.ok).toBe(true);

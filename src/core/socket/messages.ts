@@ -43,7 +43,8 @@ export const clientMessageSchema = z.discriminatedUnion("type", [
     type: z.literal("hello"),
     version: z.literal(SOCKET_MESSAGES_VERSION),
     token: z.string().min(1).max(4000),
-    lastSeq: z.number().int().min(0),
+    // Sequence numbers are stored as 32-bit integers; anything larger cannot be a trial's.
+    lastSeq: z.number().int().min(0).max(2 ** 31 - 1),
   }),
   z.object({ type: z.literal("command"), requestId: id, command: commandSchema }),
   z.object({

@@ -1,5 +1,13 @@
 import { describe, expect, it } from "vitest";
-import { assign, balancedLatinSquare, type Strategy } from "./assignment";
+import {
+  assign,
+  balancedLatinSquare,
+  NOT_GIVEN,
+  type Strategy,
+  strataCounts,
+  strategyFor,
+  stratumOf,
+} from "./assignment";
 
 const conditions = ["NAO with gestures", "TurtleBot voice only"];
 const conditionOf = (strategy: Strategy, seed: string, n: number, list = conditions) =>
@@ -63,5 +71,53 @@ describe("assigning conditions", () => {
   it("refuses a study without conditions and a negative position", () => {
     expect(() => assign({ kind: "random" }, [], "s", 0)).toThrow("The study has no conditions to assign.");
     expect(() => assign({ kind: "random" }, conditions, "s", -1)).toThrow("position must be a whole number from 0.");
+  });
+
+  it("stratified: each stratum is balanced on its own, whatever order the strata arrive in", () => {
+    const three = ["A", "B", "C"];
+    // Experience of 60 participants in an uneven, interleaved order.
+    const arrivals = Array.from({ length: 60 }, (_, i) => (i % 5 === 0 ? "none" : i % 2 ? "some" : "a lot"));
+    const seen: Record<string, number> = {};
+    const given = arrivals.map((stratum) => {
+      const position = seen[stratum] ?? 0;
+      seen[stratum] = position + 1;
+      const strategy: Strategy = { kind: "stratified", perCondition: 1, stratum };
+      return { stratum, condition: (assign(strategy, three, "seed", position) as { condition: string }).condition };
+    });
+    for (const { stratum, counts: c } of strataCounts(given)) {
+      const values = three.map((x) => c[x] ?? 0);
+      expect(Math.max(...values) - Math.min(...values), stratum).toBeLessThanOrEqual(1);
+      expect(values.reduce((a, b) => a + b)).toBe(seen[stratum]);
+    }
+  });
+
+  it("stratified: strata draw from their own shuffles, reproducibly", () => {
+    const run = (stratum: string) =>
+      Array.from({ length: 12 }, (_, i) =>
+        JSON.stringify(assign({ kind: "stratified", perCondition: 1, stratum }, ["A", "B", "C"], "seed", i)),
+      );
+    expect(run("none")).toEqual(run("none"));
+    expect(run("none")).not.toEqual(run("a lot"));
+  });
+
+  it.each<[string, Record<string, unknown>, string]>([
+    ["the answer", { experience: "some" }, "some"],
+    ["a number as text", { experience: 3 }, "3"],
+    ["no answer", {}, NOT_GIVEN],
+    ["an empty answer", { experience: "" }, NOT_GIVEN],
+  ])("a participant's stratum: %s", (_, demographics, stratum) => {
+    expect(stratumOf("experience", demographics)).toBe(stratum);
+  });
+
+  it.each<[string, Parameters<typeof strategyFor>[0], Strategy]>([
+    ["fixed", { strategy: "fixed", perCondition: 1 }, { kind: "fixed" }],
+    ["balanced", { strategy: "balanced", perCondition: 2 }, { kind: "balanced", perCondition: 2 }],
+    [
+      "stratified",
+      { strategy: "stratified", perCondition: 2, stratifyBy: "experience" },
+      { kind: "stratified", perCondition: 2, stratum: "some" },
+    ],
+  ])("the strategy settings give a participant: %s", (_, settings, strategy) => {
+    expect(strategyFor(settings, { experience: "some" })).toEqual(strategy);
   });
 });

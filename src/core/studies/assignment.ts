@@ -2,6 +2,7 @@
 // strategy is a pure function of the study's seed and the participant's
 // position in the assignment order, so the stored seed is the whole audit.
 import { seededRandom, shuffled } from "./random";
+import type { AssignmentSettings } from "./settings";
 
 export type Strategy =
   | { kind: "fixed" }
@@ -11,7 +12,12 @@ export type Strategy =
   | { kind: "balanced"; perCondition: number }
   // Within-subject: each participant gets every condition, in the order of a
   // balanced Latin square row.
-  | { kind: "counterbalanced" };
+  | { kind: "counterbalanced" }
+  // Balanced blocks kept separately for each answer to one demographic
+  // question (e.g. programming experience), so every condition gets its
+  // share of each group. `stratum` is this participant's group; the position
+  // counts only the participants assigned in it.
+  | { kind: "stratified"; perCondition: number; stratum: string };
 
 export type Assignment = { condition: string } | { order: string[] };
 
@@ -40,6 +46,13 @@ export function assign(
       );
       return { condition: order[position % size]! };
     }
+    case "stratified":
+      return assign(
+        { kind: "balanced", perCondition: strategy.perCondition },
+        conditions,
+        `${seed}:stratum:${strategy.stratum}`,
+        position,
+      );
     case "counterbalanced": {
       const rows = balancedLatinSquare(conditions.length);
       return { order: rows[position % rows.length]!.map((i) => conditions[i]!) };
@@ -60,4 +73,43 @@ export function balancedLatinSquare(n: number): number[][] {
   ];
   const rows = Array.from({ length: n }, (_, r) => base.map((c) => (c + r) % n));
   return n % 2 === 0 ? rows : [...rows, ...rows.map((row) => [...row].reverse())];
+}
+
+/** The group of a participant who left the stratifying question unanswered: a stratum of its own. */
+export const NOT_GIVEN = "(not given)";
+
+/** The stratum a participant's answers put them in. */
+export function stratumOf(field: string, demographics: Record<string, unknown>): string {
+  const answer = demographics[field];
+  return answer === undefined || answer === null || answer === "" ? NOT_GIVEN : String(answer);
+}
+
+/** The strategy the study's settings apply to one participant. */
+export function strategyFor(settings: AssignmentSettings, demographics: Record<string, unknown>): Strategy {
+  switch (settings.strategy) {
+    case "balanced":
+      return { kind: "balanced", perCondition: settings.perCondition };
+    case "stratified":
+      return {
+        kind: "stratified",
+        perCondition: settings.perCondition,
+        stratum: stratumOf(settings.stratifyBy ?? "", demographics),
+      };
+    default:
+      return { kind: settings.strategy };
+  }
+}
+
+/** How many participants of each stratum each condition holds: the balance a stratified study reports. */
+export function strataCounts(
+  assigned: ReadonlyArray<{ stratum: string | null; condition: string | null }>,
+): Array<{ stratum: string; counts: Record<string, number> }> {
+  const table = new Map<string, Record<string, number>>();
+  for (const { stratum, condition } of assigned) {
+    if (stratum === null || condition === null) continue;
+    const counts = table.get(stratum) ?? {};
+    counts[condition] = (counts[condition] ?? 0) + 1;
+    table.set(stratum, counts);
+  }
+  return [...table].sort(([a], [b]) => a.localeCompare(b)).map(([stratum, counts]) => ({ stratum, counts }));
 }

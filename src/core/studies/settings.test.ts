@@ -1,5 +1,12 @@
 import { describe, expect, it } from "vitest";
-import { changedSettings, readSettings, studySettingsChangeSchema, type StudySettings } from "./settings";
+import {
+  changedSettings,
+  readSettings,
+  settingsProblems,
+  studySettingsChangeSchema,
+  studySettingsSchema,
+  type StudySettings,
+} from "./settings";
 
 // A study with every setting away from its default, so a default filled in shows.
 const before: StudySettings = readSettings({
@@ -41,5 +48,39 @@ describe("a settings change touches only what it names", () => {
     ["the demographic fields", { demographics: [] }, { demographics: [] }],
   ])("%s", (_, change, changed) => {
     expect(apply(change)).toEqual({ ...before, ...changed });
+  });
+});
+
+describe("settings that do not fit together", () => {
+  const question = (type: "choice" | "text") => ({
+    key: "experience",
+    label: "Programming experience",
+    type,
+    options: type === "choice" ? ["none", "some", "a lot"] : [],
+  });
+  it.each<[string, Partial<StudySettings["assignment"]>, ReturnType<typeof question>[], string[]]>([
+    ["balanced needs nothing more", { strategy: "balanced" }, [], []],
+    ["stratified by a choice question", { strategy: "stratified", stratifyBy: "experience" }, [question("choice")], []],
+    [
+      "stratified by nothing",
+      { strategy: "stratified" },
+      [question("choice")],
+      ["Assignment: stratified assignment needs a demographic question to stratify by"],
+    ],
+    [
+      "stratified by a question the study does not ask",
+      { strategy: "stratified", stratifyBy: "age" },
+      [question("choice")],
+      ['Assignment: "age" is not a demographic question of this study'],
+    ],
+    [
+      "stratified by free text",
+      { strategy: "stratified", stratifyBy: "experience" },
+      [question("text")],
+      ["Assignment: Programming experience must be a choice question to stratify by (it is text)"],
+    ],
+  ])("%s", (_, assignment, demographics, problems) => {
+    const settings = studySettingsSchema.parse({ assignment: { perCondition: 1, ...assignment }, demographics });
+    expect(settingsProblems(settings)).toEqual(problems);
   });
 });

@@ -2,12 +2,17 @@
 // missing or older settings object always means the safe default.
 import { z } from "zod";
 
-export const ASSIGNMENT_STRATEGIES = ["fixed", "random", "balanced", "counterbalanced"] as const;
+export const ASSIGNMENT_STRATEGIES = ["fixed", "random", "balanced", "stratified", "counterbalanced"] as const;
 
 const assignmentFields = {
   strategy: z.enum(ASSIGNMENT_STRATEGIES, { error: `must be one of ${ASSIGNMENT_STRATEGIES.join(", ")}` }),
-  /** Balanced only: how often each condition appears in one block. */
+  /** Balanced and stratified: how often each condition appears in one block. */
   perCondition: z.number().int().min(1, "must be at least 1").max(20, "must be at most 20"),
+  /** Stratified only: the key of the demographic choice field whose answers are the strata. */
+  stratifyBy: z
+    .string()
+    .regex(/^[a-z][a-z0-9_]{0,39}$/, "must be the key of a demographic field")
+    .optional(),
   /** Made by the server when the strategy is chosen; with it, anyone can reproduce the assignments. */
   seed: z.string().min(1).max(200).optional(),
 };
@@ -96,6 +101,23 @@ export function changedSettings(
 }
 
 export type StudySettings = z.infer<typeof studySettingsSchema>;
+export type AssignmentSettings = StudySettings["assignment"];
+
+/**
+ * What is wrong with settings as a whole, as "where: reason". Strata need a
+ * question with a fixed set of answers, asked by the study: free text would
+ * make a group of one per spelling.
+ */
+export function settingsProblems(settings: StudySettings): string[] {
+  const { strategy, stratifyBy } = settings.assignment;
+  if (strategy !== "stratified") return [];
+  const field = settings.demographics.find((f) => f.key === stratifyBy);
+  if (!stratifyBy) return ["Assignment: stratified assignment needs a demographic question to stratify by"];
+  if (!field) return [`Assignment: "${stratifyBy}" is not a demographic question of this study`];
+  if (field.type !== "choice")
+    return [`Assignment: ${field.label} must be a choice question to stratify by (it is ${field.type})`];
+  return [];
+}
 
 export function readSettings(stored: unknown): StudySettings {
   const parsed = studySettingsSchema.safeParse(stored ?? {});

@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { apply, fold, simulate, type Command, type EngineEvent, type TrialProtocol } from "./index";
+import { apply, applyAll, fold, simulate, type Command, type EngineEvent, type TrialProtocol } from "./index";
 
 // A small Storyteller: speech and wave together, a pause, a question, a branch.
 const protocol: TrialProtocol = {
@@ -265,5 +265,40 @@ describe("the trial engine", () => {
       { kind: "completed", actionId: "hello" },
     ]);
     expect(state.actions.hello).toEqual({ status: "done", requestedAt: 20, finishedAt: 50 });
+  });
+});
+
+describe("applying events in batches", () => {
+  // A full trial with an unscripted line, a pause and a loop-free branch: every kind of event the fold reads.
+  const { log } = simulate(protocol, [
+    ...atQuestion,
+    { kind: "unscripted", actionId: "ad-lib", actionType: "say", parameters: { text: "Hm." } },
+    { kind: "dispatched", actionId: "ad-lib" },
+    { kind: "completed", actionId: "ad-lib" },
+    { kind: "pause" },
+    { kind: "resume" },
+    { kind: "answer", actionId: "answer", optionId: "correct" },
+    { kind: "next" },
+  ]);
+
+  it("covers the whole trial (the commands above were all accepted)", () => {
+    const state = fold(protocol, log);
+    expect(state.answers).toEqual({ answer: "correct" });
+    expect(state.actions["ad-lib"]?.status).toBe("done");
+    expect(state.path).toEqual(["intro", "recall", "yes"]);
+  });
+
+  it.each([1, 2, 3, 5, log.length])("gives the state of one fold whatever the batch size (%i)", (size) => {
+    let state = fold(protocol, []);
+    for (let i = 0; i < log.length; i += size) state = applyAll(state, log.slice(i, i + size));
+    expect(state).toEqual(fold(protocol, log));
+  });
+
+  it("leaves the state it started from as it was, so the page's earlier renders stay true", () => {
+    const half = fold(protocol, log.slice(0, 4));
+    const before = structuredClone(half);
+    applyAll(half, log.slice(4));
+    apply(half, log[4]!);
+    expect(half).toEqual(before);
   });
 });

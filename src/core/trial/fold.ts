@@ -1,5 +1,8 @@
 // Trial state is a fold over the trial's events: the live view, resume after
-// a crash, replay and reports all start here.
+// a crash, replay and reports all start here. Folding is linear in events:
+// a batch copies the state once and then changes the copy in place, so a
+// trial of 100k events (most of them unscripted lines, each its own action)
+// never copies its growing map of actions once per event.
 import type { ActionStatus, TrialEvent, TrialProtocol, TrialState } from "./types";
 
 const WAITING = { status: "waiting", requestedAt: null, finishedAt: null } as const;
@@ -23,64 +26,79 @@ export function initialState(protocol: TrialProtocol): TrialState {
   };
 }
 
-export function apply(state: TrialState, event: TrialEvent): TrialState {
-  const next: TrialState = { ...state, lastSeq: event.seq };
-  const setAction = (id: string, status: ActionStatus, field: "requestedAt" | "finishedAt" | null) => {
-    const before = next.actions[id] ?? WAITING;
-    next.actions = { ...next.actions, [id]: { ...before, status, ...(field ? { [field]: event.relMs } : {}) } };
+/** The state after `events`; `state` itself is left as it was. */
+export function applyAll(state: TrialState, events: readonly TrialEvent[]): TrialState {
+  const next: TrialState = {
+    ...state,
+    actions: { ...state.actions },
+    answers: { ...state.answers },
+    path: [...state.path],
   };
-  switch (event.type) {
-    case "trial.started":
-      return { ...next, status: "in_progress" };
-    case "step.entered": {
-      // A step entered again (a loop back, or the wizard's jump) runs its actions again.
-      const again = next.path.includes(event.stepId);
-      if (again) {
-        next.actions = { ...next.actions };
-        for (const id of next.stepActions[event.stepId] ?? []) next.actions[id] = WAITING;
-      }
-      return { ...next, currentStepId: event.stepId, path: [...next.path, event.stepId] };
-    }
-    case "action.requested":
-      setAction(event.actionId, "requested", "requestedAt");
-      return next;
-    case "action.dispatched":
-      setAction(event.actionId, "running", null);
-      return next;
-    case "action.completed":
-      setAction(event.actionId, "done", "finishedAt");
-      return next;
-    case "action.failed":
-      setAction(event.actionId, "failed", "finishedAt");
-      return next;
-    case "action.timed_out":
-      setAction(event.actionId, "timed_out", "finishedAt");
-      return next;
-    case "action.skipped":
-      setAction(event.actionId, "skipped", "finishedAt");
-      return next;
-    case "answer.recorded":
-      setAction(event.actionId, "done", "finishedAt");
-      return { ...next, answers: { ...next.answers, [event.actionId]: event.optionId } };
-    case "branch.resolved":
-      setAction(event.actionId, "done", "finishedAt");
-      return next;
-    case "trial.paused":
-      return { ...next, status: "paused" };
-    case "trial.resumed":
-      return { ...next, status: "in_progress", emergencyStopped: false };
-    case "trial.emergency_stop":
-      return { ...next, status: "paused", emergencyStopped: true };
-    case "trial.aborted":
-      return { ...next, status: "aborted" };
-    case "trial.completed":
-      return { ...next, status: "completed" };
-    case "note.added":
-    case "recording.started":
-      return next;
-  }
+  for (const event of events) advance(next, event);
+  return next;
 }
 
-export function fold(protocol: TrialProtocol, events: TrialEvent[]): TrialState {
-  return events.reduce(apply, initialState(protocol));
+export function apply(state: TrialState, event: TrialEvent): TrialState {
+  return applyAll(state, [event]);
+}
+
+export function fold(protocol: TrialProtocol, events: readonly TrialEvent[]): TrialState {
+  return applyAll(initialState(protocol), events);
+}
+
+/** What each action event makes of its action, and which time it stamps. */
+const ACTION_OUTCOME: Partial<Record<TrialEvent["type"], [ActionStatus, "requestedAt" | "finishedAt" | null]>> = {
+  "action.requested": ["requested", "requestedAt"],
+  "action.dispatched": ["running", null],
+  "action.completed": ["done", "finishedAt"],
+  "action.failed": ["failed", "finishedAt"],
+  "action.timed_out": ["timed_out", "finishedAt"],
+  "action.skipped": ["skipped", "finishedAt"],
+  "answer.recorded": ["done", "finishedAt"],
+  "branch.resolved": ["done", "finishedAt"],
+};
+
+/**
+ * Moves a state that only the caller holds on by one event, in place. Each
+ * action's entry is replaced, never changed, so a state copied by `applyAll`
+ * shares entries with the one it came from safely.
+ */
+function advance(next: TrialState, event: TrialEvent): void {
+  next.lastSeq = event.seq;
+  const outcome = ACTION_OUTCOME[event.type];
+  if (outcome && "actionId" in event) {
+    const [status, field] = outcome;
+    const before = next.actions[event.actionId] ?? WAITING;
+    next.actions[event.actionId] = { ...before, status, ...(field ? { [field]: event.relMs } : {}) };
+  }
+  switch (event.type) {
+    case "trial.started":
+    case "trial.resumed":
+      next.status = "in_progress";
+      next.emergencyStopped = false;
+      break;
+    case "step.entered":
+      // A step entered again (a loop back, or the wizard's jump) runs its actions again.
+      if (next.path.includes(event.stepId))
+        for (const id of next.stepActions[event.stepId] ?? []) next.actions[id] = WAITING;
+      next.currentStepId = event.stepId;
+      next.path.push(event.stepId);
+      break;
+    case "answer.recorded":
+      next.answers[event.actionId] = event.optionId;
+      break;
+    case "trial.paused":
+      next.status = "paused";
+      break;
+    case "trial.emergency_stop":
+      next.status = "paused";
+      next.emergencyStopped = true;
+      break;
+    case "trial.aborted":
+      next.status = "aborted";
+      break;
+    case "trial.completed":
+      next.status = "completed";
+      break;
+  }
 }

@@ -1,11 +1,11 @@
 "use client";
 // The browser's side of the trial socket: connects with a fresh token (each
 // works once, so every reconnection asks for a new one), resumes from the last
-// event it saw after any drop, and folds the events into the trial's state
+// event it saw after any drop, and applies the events to the trial's state
 // with the same engine the server uses.
 import { useMutation } from "@tanstack/react-query";
 import { useCallback, useEffect, useMemo, useRef, useState } from "react";
-import { type Command, fold, type TrialProtocol } from "@/core/trial";
+import { applyAll, type Command, fold, type TrialProtocol, type TrialState } from "@/core/trial";
 import { type Refusal, refusalInForce } from "@/core/trial/refusals";
 import {
   parseServerMessage,
@@ -140,7 +140,17 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     });
   }, []);
 
-  const state = useMemo(() => fold(protocol, events), [protocol, events]);
+  // Events only ever arrive appended: each batch is applied to the state so far, never refolded from the start.
+  const folded = useRef<{ protocol: TrialProtocol; count: number; state: TrialState } | null>(null);
+  const state = useMemo(() => {
+    const f = folded.current;
+    if (f?.protocol !== protocol || events.length < f.count) {
+      folded.current = { protocol, count: events.length, state: fold(protocol, events) };
+    } else if (events.length > f.count) {
+      folded.current = { protocol, count: events.length, state: applyAll(f.state, events.slice(f.count)) };
+    }
+    return folded.current!.state;
+  }, [protocol, events]);
   return {
     /** What the page must say now: the connection's trouble first, else a refusal that still applies. */
     notice: notice ?? refusalInForce(refusal, protocol, state)?.reason ?? null,

@@ -2,7 +2,8 @@
 import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
 import { useState, type FormEvent } from "react";
 import { studyRoleMay, type StudyRole } from "@/core/access/policy";
-import { ASSIGNMENT_STRATEGIES } from "@/core/studies/settings";
+import { strataCounts } from "@/core/studies/assignment";
+import { ASSIGNMENT_STRATEGIES, type StudySettings } from "@/core/studies/settings";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Field, Input, NativeSelect } from "@/ui/field";
@@ -15,20 +16,22 @@ const STRATEGY_HELP: Record<(typeof ASSIGNMENT_STRATEGIES)[number], string> = {
   fixed: "You choose each participant's condition.",
   random: "Each participant gets a random condition.",
   balanced: "Randomised in blocks, so the groups never differ by more than one block.",
+  stratified: "Balanced blocks kept for each answer to a demographic question, so every group is spread evenly.",
   counterbalanced: "Within-subject: everyone gets every condition, in Latin-square orders.",
 };
 
-type Assignment = { strategy: (typeof ASSIGNMENT_STRATEGIES)[number]; perCondition: number; seed?: string };
+type Strategy = StudySettings["assignment"]["strategy"];
 
 export function ConditionsTab({
   studyId,
   role,
-  assignment,
+  settings,
 }: {
   studyId: string;
   role: StudyRole;
-  assignment: Assignment;
+  settings: StudySettings;
 }) {
+  const { assignment } = settings;
   const trpc = useTRPC();
   const queryClient = useQueryClient();
   const list = useQuery(trpc.conditions.list.queryOptions({ studyId }));
@@ -37,6 +40,11 @@ export function ConditionsTab({
   const [name, setName] = useState("");
   const [experimentId, setExperimentId] = useState("");
   const [strategy, setStrategy] = useState(assignment.strategy);
+  const [perCondition, setPerCondition] = useState(assignment.perCondition);
+  // Only questions with a fixed set of answers can make strata (see settingsProblems).
+  const questions = settings.demographics.filter((f) => f.type === "choice");
+  const [stratifyBy, setStratifyBy] = useState(assignment.stratifyBy ?? questions[0]?.key ?? "");
+  const blocks = strategy === "balanced" || strategy === "stratified";
   const refresh = () => queryClient.invalidateQueries({ queryKey: trpc.conditions.list.queryKey({ studyId }) });
   const create = useMutation(trpc.conditions.create.mutationOptions({ onSuccess: () => (setName(""), refresh()) }));
   const update = useMutation(
@@ -55,11 +63,7 @@ export function ConditionsTab({
           <div className="w-64">
             <Field label="Assignment strategy" hint={STRATEGY_HELP[strategy]}>
               {(p) => (
-                <NativeSelect
-                  {...p}
-                  value={strategy}
-                  onChange={(e) => setStrategy(e.target.value as Assignment["strategy"])}
-                >
+                <NativeSelect {...p} value={strategy} onChange={(e) => setStrategy(e.target.value as Strategy)}>
                   {ASSIGNMENT_STRATEGIES.map((s) => (
                     <option key={s}>{s}</option>
                   ))}
@@ -67,10 +71,59 @@ export function ConditionsTab({
               )}
             </Field>
           </div>
+          {strategy === "stratified" && (
+            <div className="w-64">
+              <Field
+                label="Stratify by"
+                hint={
+                  questions.length
+                    ? "Each answer is balanced on its own."
+                    : "Add a choice question under Overview first."
+                }
+              >
+                {(p) => (
+                  <NativeSelect {...p} value={stratifyBy} onChange={(e) => setStratifyBy(e.target.value)}>
+                    {questions.map((f) => (
+                      <option key={f.key} value={f.key}>
+                        {f.label}
+                      </option>
+                    ))}
+                  </NativeSelect>
+                )}
+              </Field>
+            </div>
+          )}
+          {blocks && (
+            <div className="w-40">
+              <Field label="Each condition per block">
+                {(p) => (
+                  <Input
+                    {...p}
+                    type="number"
+                    min={1}
+                    max={20}
+                    value={perCondition}
+                    onChange={(e) => setPerCondition(Number(e.target.value))}
+                  />
+                )}
+              </Field>
+            </div>
+          )}
           <Button
             className="mb-5"
-            disabled={update.isPending}
-            onClick={() => update.mutate({ studyId, settings: { assignment: { strategy, perCondition: 1 } } })}
+            disabled={update.isPending || (strategy === "stratified" && !stratifyBy)}
+            onClick={() =>
+              update.mutate({
+                studyId,
+                settings: {
+                  assignment: {
+                    strategy,
+                    perCondition: blocks ? perCondition : 1,
+                    ...(strategy === "stratified" ? { stratifyBy } : {}),
+                  },
+                },
+              })
+            }
           >
             Use this strategy
           </Button>
@@ -118,6 +171,9 @@ export function ConditionsTab({
           {create.error && !fieldError(create.error, "name") && <Problem error={create.error} />}
         </Card>
       )}
+      {assignment.strategy === "stratified" && list.data && (
+        <StrataTable studyId={studyId} conditions={list.data.map((c) => ({ id: c.id, name: c.name }))} />
+      )}
       <ListView
         query={list}
         problem={update.error}
@@ -142,5 +198,38 @@ export function ConditionsTab({
         )}
       />
     </div>
+  );
+}
+
+/** Participants per stratum and condition: the balance the strategy promises, there to check. */
+function StrataTable({ studyId, conditions }: { studyId: string; conditions: Array<{ id: string; name: string }> }) {
+  const trpc = useTRPC();
+  const participants = useQuery(trpc.participants.list.queryOptions({ studyId }));
+  const rows = strataCounts((participants.data ?? []).map((p) => ({ stratum: p.stratum, condition: p.conditionId })));
+  if (!rows.length) return null;
+  return (
+    <Card className="overflow-x-auto p-5">
+      <h2 className="mb-3 font-semibold">Participants per stratum</h2>
+      <table className="text-sm">
+        <thead>
+          <tr>
+            <Th>Stratum</Th>
+            {conditions.map((c) => (
+              <Th key={c.id}>{c.name}</Th>
+            ))}
+          </tr>
+        </thead>
+        <tbody>
+          {rows.map((r) => (
+            <tr key={r.stratum}>
+              <Td className="font-medium">{r.stratum}</Td>
+              {conditions.map((c) => (
+                <Td key={c.id}>{r.counts[c.id] ?? 0}</Td>
+              ))}
+            </tr>
+          ))}
+        </tbody>
+      </table>
+    </Card>
   );
 }

@@ -112,7 +112,10 @@ export function ParticipantsTab({
               {blinded ? (
                 <span className="text-slate-500">hidden</span>
               ) : p.conditionId ? (
-                conditionName(p.conditionId)
+                <>
+                  {conditionName(p.conditionId)}
+                  {p.stratum !== null && <div className="text-xs text-slate-500">stratum: {p.stratum}</div>}
+                </>
               ) : manage && conditions.data?.length && strategy === "fixed" ? (
                 <NativeSelect
                   aria-label={`Condition of ${p.code}`}

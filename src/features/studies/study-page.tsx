@@ -58,7 +58,7 @@ export function StudyPage({ studyId }: { studyId: string }) {
                 {
                   id: "conditions",
                   label: "Conditions",
-                  content: <ConditionsTab studyId={studyId} role={role} assignment={s.settings.assignment} />,
+                  content: <ConditionsTab studyId={studyId} role={role} settings={s.settings} />,
                 },
               ]),
           {

@@ -34,6 +34,8 @@ export interface Simulator {
   ssh: SimulatedSsh | null;
   /** Every message clients sent, parsed, in arrival order. */
   received: Received[];
+  /** How many clients are connected now. */
+  connections(): number;
   /** What the real server would only have written to its log. */
   log: Array<{ at: number; connection: string; text: string }>;
   faults: { dropConnections(): void; refuseConnections(refuse: boolean): void; delayReplies(ms: number): void };
@@ -68,6 +70,7 @@ export async function startSimulator(options: SimulatorOptions): Promise<Simulat
     state,
     ssh,
     received: [],
+    connections: () => sockets.size,
     log: [],
     faults: {
       dropConnections: () => sockets.forEach((s) => s.terminate()),

@@ -8,7 +8,7 @@ import type { Plugin } from "@/core/plugins";
 import { type MethodsInput, methodsMarkdown, methodsPlainText } from "@/core/protocol/methods";
 import { readSnapshot } from "@/core/protocol/snapshot";
 import type { Definition } from "@/core/questionnaires/definition";
-import { readSettings } from "@/core/studies/settings";
+import { readSettings, type StudySettings } from "@/core/studies/settings";
 import type { Database } from "@/store/client";
 import {
   conditions,
@@ -48,7 +48,7 @@ export async function methodsText(db: Reader, version: VersionRow, studyId: stri
       .innerJoin(experiments, eq(experiments.id, conditions.experimentId))
       .where(eq(conditions.studyId, studyId))
       .orderBy(asc(conditions.name)),
-    assignment: readSettings(study?.settings).assignment,
+    assignment: assignmentOf(readSettings(study?.settings)),
     questionnaires: await givenQuestionnaires(db, studyId),
     names: actionNamesOf(plugin),
   };
@@ -97,4 +97,10 @@ async function givenQuestionnaires(db: Reader, studyId: string): Promise<Methods
       return { name: q.name, timing: q.timing as "before" | "after", items, instrument: definition.instrument ?? null };
     }),
   );
+}
+
+function assignmentOf(settings: StudySettings): MethodsInput["assignment"] {
+  const { strategy, perCondition, stratifyBy } = settings.assignment;
+  const question = settings.demographics.find((f) => f.key === stratifyBy);
+  return { strategy, perCondition, ...(strategy === "stratified" && question ? { stratifiedBy: question.label } : {}) };
 }

@@ -1,7 +1,7 @@
 import { TRPCError } from "@trpc/server";
 import { and, asc, eq, isNotNull, sql } from "drizzle-orm";
 import { z } from "zod";
-import { assign, type Strategy } from "@/core/studies/assignment";
+import { assign, strategyFor } from "@/core/studies/assignment";
 import { readSettings } from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { conditions, experiments, participants, studies } from "@/store/schema";
@@ -75,14 +75,19 @@ export const conditionsRouter = router({
         .where(eq(conditions.studyId, study!.id))
         .orderBy(asc(conditions.createdAt), asc(conditions.id));
       const settings = readSettings(study!.settings).assignment;
-      const strategy: Strategy =
-        settings.strategy === "balanced"
-          ? { kind: "balanced", perCondition: settings.perCondition }
-          : { kind: settings.strategy };
+      const strategy = strategyFor(settings, participant!.demographics as Record<string, unknown>);
+      const stratum = strategy.kind === "stratified" ? strategy.stratum : undefined;
+      // A stratum's position counts only the participants assigned in it (the stratum they had then).
       const [{ position }] = (await tx
         .select({ position: sql<number>`count(*)::int` })
         .from(participants)
-        .where(and(eq(participants.studyId, study!.id), isNotNull(participants.assignment)))) as [{ position: number }];
+        .where(
+          and(
+            eq(participants.studyId, study!.id),
+            isNotNull(participants.assignment),
+            stratum === undefined ? undefined : sql`${participants.assignment}->>'stratum' = ${stratum}`,
+          ),
+        )) as [{ position: number }];
       const seed = settings.seed ?? "";
       const fixed = list.find((c) => c.id === input.conditionId)?.name;
       let result: ReturnType<typeof assign>;
@@ -101,6 +106,7 @@ export const conditionsRouter = router({
       const record = {
         strategy: settings.strategy,
         perCondition: settings.perCondition,
+        ...(stratum === undefined ? {} : { stratifyBy: settings.stratifyBy, stratum }),
         seed,
         position,
         at: new Date().toISOString(),

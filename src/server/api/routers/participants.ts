@@ -66,6 +66,8 @@ export const participantsRouter = router({
         demographics: participants.demographics,
         // A blinded wizard sees who comes, never in which condition.
         conditionId: ctx.blinding.conditionsHidden ? sql<string | null>`null` : participants.conditionId,
+        // The group a stratified assignment balanced them in, as their answer was then.
+        stratum: sql<string | null>`${participants.assignment}->>'stratum'`,
         trialCount: sql<number>`(select count(*)::int from ${trials} where ${trials.participantId} = ${qualified(participants.id)})`,
       })
       .from(participants)

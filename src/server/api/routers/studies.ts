@@ -5,7 +5,13 @@ import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
 import { byConditionCsv } from "@/core/analysis/by-condition";
 import { STUDY_STATUSES } from "@/core/studies/status";
-import { changedSettings, readSettings, studySettingsChangeSchema, type StudySettings } from "@/core/studies/settings";
+import {
+  changedSettings,
+  readSettings,
+  settingsProblems,
+  studySettingsChangeSchema,
+  type StudySettings,
+} from "@/core/studies/settings";
 import { audit } from "../../audit";
 import { studyArchive } from "../../studies/archive";
 import { studyFigures, studyResultsByCondition } from "../../studies/summary";
@@ -88,6 +94,8 @@ export const studiesRouter = router({
     const before = readSettings(current.settings);
     // The seed is the server's, made once per choice of strategy, so assignments can be audited and reproduced.
     const merged = settings ? changedSettings(before, settings, () => randomBytes(12).toString("hex")) : null;
+    const problems = merged ? settingsProblems(merged) : [];
+    if (problems.length > 0) throw new TRPCError({ code: "BAD_REQUEST", message: problems.join("; ") });
     const changes = merged ? { ...rest, settings: merged } : rest;
     return ctx.db.transaction(async (tx) => {
       const [study] = await tx
