@@ -26,7 +26,7 @@ export function BrowserAudio({
   const stopped = state.emergencyStopped || state.status === "completed" || state.status === "aborted";
   if (!sounds.length) return null;
   return (
-    <div className="space-y-2" aria-label="Sounds played by this browser">
+    <div className="space-y-2">
       {sounds.map((sound) => (
         <Sound key={sound.actionId} sound={sound} stopped={stopped} send={send} />
       ))}
