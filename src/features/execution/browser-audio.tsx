@@ -23,18 +23,23 @@ export function BrowserAudio({
   send: Send;
 }) {
   const sounds = browserSounds(events, state);
-  const stopped = state.emergencyStopped || state.status === "completed" || state.status === "aborted";
+  const ended = state.status === "completed" || state.status === "aborted";
   if (!sounds.length) return null;
   return (
     <div className="space-y-2">
       {sounds.map((sound) => (
-        <Sound key={sound.actionId} sound={sound} stopped={stopped} send={send} />
+        <Sound
+          key={sound.actionId}
+          sound={sound}
+          stopped={sound.silenced ? "emergency" : ended ? "ended" : null}
+          send={send}
+        />
       ))}
     </div>
   );
 }
 
-function Sound({ sound, stopped, send }: { sound: BrowserSound; stopped: boolean; send: Send }) {
+function Sound({ sound, stopped, send }: { sound: BrowserSound; stopped: "emergency" | "ended" | null; send: Send }) {
   const player = useRef<HTMLAudioElement | null>(null);
   const [blocked, setBlocked] = useState(false);
   // One report per sound, whatever the element does after.
@@ -52,8 +57,12 @@ function Sound({ sound, stopped, send }: { sound: BrowserSound; stopped: boolean
     );
   // biome-ignore lint/correctness/useExhaustiveDependencies: started once per sound
   useEffect(() => void play(), []);
+  // Silenced by the emergency stop (the log says so, rather than leaving the action running) or by the trial's end.
+  // biome-ignore lint/correctness/useExhaustiveDependencies: report sends once per sound, whenever it is called
   useEffect(() => {
-    if (stopped) player.current?.pause();
+    if (!stopped) return;
+    player.current?.pause();
+    if (stopped === "emergency") report("the emergency stop silenced it");
   }, [stopped]);
   return (
     <div

@@ -166,11 +166,18 @@ describe("the sounds the wizard's browser plays", () => {
     browserSounds(events as never, fold(p, events as never));
 
   it.each<[string, readonly Record<string, unknown>[], string[]]>([
-    ["one handed to the browser, not one the robot plays", log, ["a:f1:one.wav"]],
+    ["one handed to the browser, not one the robot plays", log, ["a:f1:one.wav:playing"]],
+    [
+      "one the emergency stop silenced, until its end is logged",
+      [...log, { type: "trial.emergency_stop", seq: 7, relMs: 3 }],
+      ["a:f1:one.wav:silenced"],
+    ],
     ["none once it has ended", [...log, { type: "action.completed", actionId: "a", seq: 7, relMs: 3 }], []],
     ["none once it failed", [...log, { type: "action.failed", actionId: "a", reason: "x", seq: 7, relMs: 3 }], []],
     ["none before it is handed over", log.slice(0, 3), []],
   ])("%s", (_, events, expected) => {
-    expect(sounds(events).map((s) => `${s.actionId}:${s.fileId}:${s.name}`)).toEqual(expected);
+    expect(
+      sounds(events).map((s) => `${s.actionId}:${s.fileId}:${s.name}:${s.silenced ? "silenced" : "playing"}`),
+    ).toEqual(expected);
   });
 });
