@@ -23,6 +23,9 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
       });
     }
     if (resolved.status === "runtime") return report({ kind: "completed", actionId: request.actionId });
+    // The robot cannot play this sound: the wizard's browser plays it and reports its end (TrialHost.browserPlayed).
+    if (resolved.status === "browser")
+      return report({ kind: "dispatched", actionId: request.actionId, detail: { playedBy: "browser" } });
     await connecting;
     report({ kind: "dispatched", actionId: request.actionId, detail: { robotAction: resolved.action.id } });
     const outcome = await transport.dispatch(resolved.action, resolved.parameters);

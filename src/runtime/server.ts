@@ -220,6 +220,12 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
     }
     const host = await hosts.get(claims.trialId);
     if (!host) return reject("Another runtime process is running this trial; reload the page to reach it.");
+    if (message.command.kind === "played") {
+      const played = await host.browserPlayed(message.command.actionId, message.command.failed, access.userId);
+      return played.ok
+        ? send(ws, { type: "ack", requestId: message.requestId, seqs: played.events.map((e) => e.seq) })
+        : reject(played.reason);
+    }
     const command =
       message.command.kind === "unscripted" ? { ...message.command, actionId: crypto.randomUUID() } : message.command;
     // A recording is a row of its own: it must belong to this very trial.

@@ -47,6 +47,8 @@ export class TrialHost {
   /** Told when the trial ends, and when its last client leaves. */
   private readonly lifecycle = { ended: () => {}, unwatched: () => {} };
   private readonly timers = new Set<ReturnType<typeof setTimeout>>();
+  /** Sounds handed to the wizard's browser to play, by action id, until it reports their end. */
+  private readonly browserPlays = new Set<string>();
   private readonly samples;
   private readonly stopWatching: () => void;
   /** The trial's t0, once started: samples are timed from it. */
@@ -182,7 +184,11 @@ export class TrialHost {
     for (const event of events) {
       if (event.type === "trial.emergency_stop" || event.type === "trial.aborted") this.robot.halt();
       if (event.type !== "action.requested") continue;
-      const report = (command: Command) => void this.command(command, null);
+      const report = (command: Command) => {
+        if (command.kind === "dispatched" && command.detail?.playedBy === "browser")
+          this.browserPlays.add(command.actionId);
+        void this.command(command, null);
+      };
       if (event.actionType === "pause") {
         // The clock starts once "dispatched" is stored, so the logged hold is never shorter than designed.
         const seconds = Number(event.parameters.seconds ?? 0);
@@ -200,6 +206,22 @@ export class TrialHost {
         );
       }
     }
+  }
+
+  /**
+   * The wizard's browser finished a sound the robot could not play (or could
+   * not play it): logged as the action's end, by the wizard who heard it.
+   * Only a sound handed to the browser ends this way, never a robot's action.
+   */
+  browserPlayed(actionId: string, failed: string | undefined, actorId: string | null): Promise<CommandResult> {
+    if (!this.browserPlays.delete(actionId))
+      return Promise.resolve({ ok: false, reason: "No sound of this trial is waiting for the browser to play it." });
+    return this.command(
+      failed
+        ? { kind: "failed", actionId, reason: `The wizard's browser could not play the sound: ${failed}` }
+        : { kind: "completed", actionId, detail: { playedBy: "browser" } },
+      actorId,
+    );
   }
 
   async close() {

@@ -15,7 +15,7 @@ import type { Meta } from "../../src/server/api/trpc";
 import { freshDatabase } from "../support/db";
 import { studyFingerprint } from "../support/study-rows";
 import { buildFixture, CALLERS, newPerson, type Caller } from "./fixture";
-import { baseData, MATRIX } from "./matrix";
+import { baseData, freshAudio, MATRIX } from "./matrix";
 
 type Key = ReferenceKey | keyof typeof ACROSS_STUDIES;
 
@@ -80,6 +80,7 @@ async function victimStudy() {
     sessionId: session.id,
     annotationId: annotation.id,
     questionnaireId: questionnaire.id,
+    audioFileId: (await freshAudio(f, study.id, victim.id)).audioFileId,
     wizardId: victim.id,
     userId: victim.id,
   };
@@ -123,6 +124,7 @@ async function ownIds(): Promise<Record<Key, string | string[]>> {
     sessionId: session.id,
     annotationId: annotation.id,
     questionnaireId: questionnaire.id,
+    audioFileId: (await freshAudio(f, a.study.id, f.people.owner.id)).audioFileId,
     wizardId: f.people.owner.id,
     userId: f.people.owner.id,
   };

@@ -1,6 +1,8 @@
 // Every procedure, who may call it, and an input of the fixture's study for
 // it: the access rules as a person states them. The access matrix checks each
 // role against it; the isolation test turns each input into another study's.
+import { addAudio } from "../../src/server/media/audio";
+import { silentWav } from "../support/audio";
 import { newPerson, type Caller, type Fixture } from "./fixture";
 
 export const MEMBERS: Caller[] = ["owner", "researcher", "wizard", "observer"];
@@ -76,6 +78,17 @@ const freshRecording = async (f: Fixture, b: Base, finished = false) => {
   await f.media.storage.put(`recordings/${recordingId}/chunk-000000`, new Uint8Array([1, 2, 3]), "video/mp4");
   if (finished) await f.api("owner").recordings.finish({ recordingId, durationMs: 1000 });
   return { recordingId };
+};
+/** A sound added to the base study by its owner, as the upload route adds one. */
+export const freshAudio = async (f: Fixture, studyId: string, ownerId: string) => {
+  const added = await addAudio(f.db, f.media.storage, {
+    studyId,
+    userId: ownerId,
+    name: "chime.wav",
+    bytes: silentWav(20),
+  });
+  if (!added.ok) throw new Error(added.reason);
+  return { audioFileId: added.audio.id };
 };
 const EVERYONE: Caller[] = [...SIGNED_IN, "anonymous"];
 const sus = Object.fromEntries([4, 2, 3, 4, 3, 1, 3, 3, 3, 2].map((v, i) => [`sus${i + 1}`, v]));
@@ -256,6 +269,10 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "recordings.setOffset": [RUNNERS, async (f, b) => ({ ...(await freshRecording(f, b)), offsetMs: 120 })],
   "recordings.chunkTarget": [RUNNERS, async (f, b) => freshRecording(f, b)],
   "recordings.finish": [RUNNERS, async (f, b) => ({ ...(await freshRecording(f, b)), durationMs: 1000 })],
+  "audio.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "audio.uploadTarget": [EDITORS, (_f, b) => ({ studyId: b.study.id })],
+  "audio.remove": [EDITORS, (f, b) => freshAudio(f, b.study.id, f.people.owner.id)],
+  "audio.media": [RUNNERS, (f, b) => freshAudio(f, b.study.id, f.people.owner.id)],
   "recordings.list": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
   "recordings.media": [["owner", "researcher", "observer"], async (f, b) => freshRecording(f, b, true)],
   "trials.annotate": [MEMBERS, (_f, b) => ({ trialId: b.trial.id, relMs: 1500, label: "Smiled" })],

@@ -10,6 +10,8 @@ import { newPerson, type Caller } from "./fixture";
 import { ORIGIN, routeServer } from "../support/routes";
 import { appRouter } from "../../src/server/api/root";
 import { contextFromHeaders } from "../../src/server/context";
+import { addAudio } from "../../src/server/media/audio";
+import { silentWav } from "../support/audio";
 
 const s = await routeServer();
 afterAll(s.close);
@@ -51,7 +53,20 @@ async function studyWithRows(api: Awaited<ReturnType<typeof s.apiAs>>, studyId: 
   );
   await api.recordings.finish({ recordingId: finished.recordingId, durationMs: 1000 });
   const open = await api.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/mp4" });
-  return { studyId, trialId: trial.id, recordingId: finished.recordingId, openRecordingId: open.recordingId };
+  const audio = await addAudio(s.db, s.server.media.storage, {
+    studyId,
+    userId: (await api.account.me()).id,
+    name: `sound of ${code}.wav`,
+    bytes: silentWav(20),
+  });
+  if (!audio.ok) throw new Error(audio.reason);
+  return {
+    studyId,
+    trialId: trial.id,
+    recordingId: finished.recordingId,
+    openRecordingId: open.recordingId,
+    audioFileId: audio.audio.id,
+  };
 }
 
 const ownerHeaders = await s.signIn("owner");
@@ -60,7 +75,11 @@ const victim = await newPerson(s.db, "victim");
 // B's owner works through the same server (its media store included) as A's.
 const victimApi = appRouter.createCaller({ ...(await contextFromHeaders(new Headers())), user: victim });
 const b = await studyWithRows(victimApi, (await victimApi.studies.create({ title: "Victim" })).id, "B-1");
-const storedOfB = async () => JSON.stringify(await s.server.media.storage.list(`recordings/${b.openRecordingId}/`));
+const storedOfB = async () =>
+  JSON.stringify([
+    await s.server.media.storage.list(`recordings/${b.openRecordingId}/`),
+    await s.server.media.storage.list(`audio/${b.studyId}/`),
+  ]);
 const before = await storedOfB();
 
 type Ids = typeof a;
@@ -92,7 +111,9 @@ async function call(route: string, method: string, ids: Ids, who: Headers | null
       ? { cookie: who.get("cookie")! }
       : {};
   const init: RequestInit = { method, headers: { ...credentials, "content-type": "video/mp4" } };
-  if (method === "PUT" || method === "POST") init.body = new TextEncoder().encode("smuggled part");
+  // A sound where the route takes one (it refuses anything else before it could matter), a part elsewhere.
+  if (method === "PUT" || method === "POST")
+    init.body = route.endsWith("/audio") ? silentWav(20) : new TextEncoder().encode("smuggled part");
   return handlers[method]!(new Request(`${ORIGIN}/api/${path}${query}`, init), { params: Promise.resolve(params) });
 }
 
@@ -124,6 +145,8 @@ describe("REST routes keep studies apart", () => {
         "GET recordings/[recordingId]/media",
         "PUT recordings/[recordingId]/chunks/[index]",
         "GET trials/[trialId]/export",
+        "GET audio/[audioFileId]",
+        "POST studies/[studyId]/audio",
       ]),
     );
   });

@@ -32,6 +32,12 @@ describe("an action's display name", () => {
       { type: "record_answer", parameters: { prompt: "", options: [] } },
       "Record answer",
     ],
+    [
+      "a sound by its file's name, as written",
+      { type: "play_audio", parameters: { fileId: "f", name: "chime_2.wav", sha256: "a".repeat(64) } },
+      "Play audio: chime_2.wav",
+    ],
+    ["a sound not chosen yet", { type: "play_audio", parameters: {} }, "Play audio"],
     ["a posture in words", { type: "posture", parameters: { posture: "sit" } }, "Posture: Sit"],
     ["a direction in words", { type: "move", parameters: { direction: "turn_left", speed: 0.1 } }, "Move: Turn left"],
     [

@@ -48,6 +48,9 @@ export function actionName(
   if (label) return label;
   const block = blockName(action.type, names);
   const parameters = action.parameters ?? {};
+  // A sound is named by its file, exactly as the researcher named the file.
+  if (action.type === "play_audio" && typeof parameters.name === "string" && parameters.name.trim())
+    return `${block}: ${parameters.name.trim()}`;
   const key = MAIN_PARAMETERS.find((k) => {
     const v = parameters[k];
     return (typeof v === "string" && v.trim() !== "") || (typeof v === "number" && Number.isFinite(v));

@@ -18,6 +18,14 @@ describe("the block library", () => {
     );
   });
 
+  it("offers Play audio on any robot, saying who plays it", () => {
+    expect(blockFor("play_audio", null)).toMatchObject({
+      name: "Play audio",
+      category: "speech",
+      description: "One of the study's sounds, played by the robot where it can, otherwise by the wizard's browser.",
+    });
+  });
+
   it("never takes run together for an action: it is a tool that links actions", () => {
     expect(blockFor(RUN_TOGETHER.type, null)).toBeUndefined();
   });

@@ -86,14 +86,18 @@ export const CONTROL_BLOCKS: Block[] = [
   },
 ];
 
-const CATEGORY: Record<string, BlockCategory> = { say: "speech", pause: "timing" };
+const CATEGORY: Record<string, BlockCategory> = { say: "speech", play_audio: "speech", pause: "timing" };
 
 /** The abstract actions, named the way the library shows them. */
 export const ABSTRACT_BLOCKS: Block[] = ABSTRACT_ACTIONS.map((a) => ({
   type: a.id,
   name: a.name,
   category: CATEGORY[a.id] ?? "movement",
-  description: a.runtime ? "Carried out by the platform on any robot." : "Runs on any robot whose plugin maps it.",
+  description: a.runtime
+    ? "Carried out by the platform on any robot."
+    : a.browserFallback
+      ? "One of the study's sounds, played by the robot where it can, otherwise by the wizard's browser."
+      : "Runs on any robot whose plugin maps it.",
   parameterSchema: a.parameterSchema,
 }));
 

@@ -83,6 +83,17 @@ describe("diffProtocols", () => {
       ],
     ],
     [
+      "a note for the wizard added, changed and removed",
+      (s) => {
+        action(s, "greet").note = "Smile first.";
+        action(s, "tell").note = "Slowly.";
+      },
+      [
+        'changed action: Action "Greeting" in "Intro": note for the wizard added: "Smile first."',
+        'changed action: Action "Tell" in "Story": note for the wizard added: "Slowly."',
+      ],
+    ],
+    [
       "a step added",
       (s) =>
         s.steps.splice(1, 0, {
@@ -215,6 +226,19 @@ describe("diffProtocols", () => {
     const after = structuredClone(base);
     change(after);
     expect(diffProtocols(base, after).map((l) => `${l.kind} ${l.what}: ${l.text}`)).toEqual(expected);
+  });
+
+  it("says how a note for the wizard changed or that it was removed", () => {
+    const was = structuredClone(base);
+    action(was, "greet").note = "Smile first.";
+    action(was, "tell").note = "Slowly.";
+    const now = structuredClone(was);
+    action(now, "greet").note = "Smile, then speak.";
+    delete action(now, "tell").note;
+    expect(diffProtocols(was, now).map((l) => l.text)).toEqual([
+      'Action "Greeting" in "Intro": note for the wizard changed from "Smile first." to "Smile, then speak."',
+      'Action "Tell" in "Story": note for the wizard removed',
+    ]);
   });
 
   it("reads the other way round too", () => {

@@ -105,6 +105,12 @@ export function diffProtocols(before: ProtocolSnapshot, after: ProtocolSnapshot)
         oldSteps.get(prior.stepId)?.step.actions[prior.index - 1],
         step.actions[position - 1],
       ]);
+      if ((prior.action.note ?? "") !== (action.note ?? ""))
+        line(
+          "changed",
+          "action",
+          `Action ${name} in ${where}: note for the wizard ${noteChange(prior.action, action)}`,
+        );
       for (const change of parameterChanges(prior.action, action, labels, stepName))
         line("changed", "action", `Action ${name} in ${where}: ${change}`);
     });
@@ -121,6 +127,12 @@ export function diffProtocols(before: ProtocolSnapshot, after: ProtocolSnapshot)
 }
 
 const NEXT = { to: "next" } as const;
+
+function noteChange(was: Action, now: Action): string {
+  if (!was.note) return `added: ${show(now.note!)}`;
+  if (!now.note) return "removed";
+  return `changed from ${show(was.note)} to ${show(now.note)}`;
+}
 
 function actionsById(snapshot: ProtocolSnapshot) {
   return new Map(

@@ -28,7 +28,14 @@ const awkward: DesignDraft = {
           parameters: { text: '{"json": "inside"} \\n not a newline' },
           parallelGroup: "x",
         },
-        { id: "a2", type: "wave", name: "Wave", parameters: {}, parallelGroup: "x" },
+        {
+          id: "a2",
+          type: "wave",
+          name: "Wave",
+          parameters: {},
+          parallelGroup: "x",
+          note: "Only once the participant looks up.\nThen wait — “quietly”.",
+        },
         {
           id: "a3",
           type: "nao6-ros2.custom",
@@ -321,6 +328,16 @@ describe("importing a bad file", () => {
       "parameters that are a list",
       edit((f) => (f.steps[0].actions[0].parameters = [])),
       [["$.steps[0].actions[0].parameters", "must be an object"]],
+    ],
+    [
+      "a note for the wizard that is not text",
+      edit((f) => (f.steps[0].actions[0].note = 7)),
+      [["$.steps[0].actions[0].note", "must be a string"]],
+    ],
+    [
+      "a note for the wizard too long",
+      edit((f) => (f.steps[0].actions[0].note = "n".repeat(2001))),
+      [["$.steps[0].actions[0].note", "must be at most 2000 characters (it has 2001)"]],
     ],
     [
       "an empty group name",

@@ -40,6 +40,7 @@ const MAX_STEPS = 500;
 const MAX_ACTIONS = 500;
 const MAX_NAME = 200;
 const MAX_TEXT = 5000;
+const MAX_NOTE = 2000;
 const MAX_DEPTH = 32;
 
 interface FileAction {
@@ -47,6 +48,8 @@ interface FileAction {
   name?: string;
   parameters?: Record<string, unknown>;
   runTogether?: string;
+  /** The note for the wizard; absent when there is none (files written before notes have none). */
+  note?: string;
 }
 
 interface FileStep {
@@ -92,6 +95,7 @@ export function exportExperiment(draft: DesignDraft): string {
         // A target that is no step of the draft is already an error in the designer; an id would mean nothing elsewhere.
         parameters: action.type === "branch" ? swapTargets(action.parameters, (id) => keys.get(id)) : action.parameters,
         runTogether: action.parallelGroup ? group(action.parallelGroup) : undefined,
+        note: action.note || undefined,
       })),
     })),
   };
@@ -147,6 +151,7 @@ function build(file: ExperimentFile, newId: NewId): DesignDraft {
             ? swapTargets(action.parameters ?? {}, (key) => ids.get(key))
             : (action.parameters ?? {}),
         parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
+        ...(action.note ? { note: action.note } : {}),
       })),
     })),
   };
@@ -201,7 +206,7 @@ function write(value: unknown, indent: string, sorted: boolean): string {
 const ENVELOPE = ["format", "formatVersion", "experiment", "steps"];
 const EXPERIMENT = ["name", "description", "robot"];
 const STEP = ["key", "name", "description", "after", "actions"];
-const ACTION = ["type", "name", "parameters", "runTogether"];
+const ACTION = ["type", "name", "parameters", "runTogether", "note"];
 
 function check(file: unknown): ImportProblem[] {
   const problems: ImportProblem[] = [];
@@ -293,6 +298,7 @@ function check(file: unknown): ImportProblem[] {
       if (!object(action, path, ACTION)) return;
       text(action, "type", path, MAX_NAME, "required");
       text(action, "name", path, MAX_NAME, "optional");
+      text(action, "note", path, MAX_NOTE, "optional");
       text(action, "runTogether", path, MAX_NAME, "optional");
       if (action.runTogether === "")
         flag(`${path}.runTogether`, "must be a non-empty string, or left out for an action that runs alone");

@@ -97,6 +97,13 @@ describe("designer commands", () => {
     ],
     ["rename action", commands.renameAction("bow", "Deep bow"), (d) => d.steps[0]!.actions[2]!.name, "Deep bow"],
     [
+      "write a note for the wizard",
+      commands.setNote("bow", "Only if the participant smiles."),
+      (d) => d.steps[0]!.actions[2]!.note,
+      "Only if the participant smiles.",
+    ],
+    ["empty the note: none is kept", commands.setNote("bow", "  "), (d) => "note" in d.steps[0]!.actions[2]!, false],
+    [
       "set parameter",
       commands.setParameter("hello", "text", 'She said "hi" {{x}} $(rm -rf /)'),
       (d) => d.steps[0]!.actions[0]!.parameters,

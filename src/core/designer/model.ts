@@ -72,6 +72,7 @@ export function draftFrom(design: DesignDraft): DesignDraft {
         name: a.name,
         parameters: a.parameters,
         parallelGroup: a.parallelGroup,
+        ...(a.note ? { note: a.note } : {}),
       })),
     })),
   };
@@ -249,6 +250,13 @@ export const commands = {
     label: "rename action",
     mergeKey: `name:${actionId}`,
     apply: (d) => replaceAction(d, actionId, (a) => ({ ...a, name })),
+  }),
+
+  /** The note the wizard reads beside the action; an empty note is none. */
+  setNote: (actionId: string, note: string): Command => ({
+    label: "edit note for the wizard",
+    mergeKey: `note:${actionId}`,
+    apply: (d) => replaceAction(d, actionId, ({ note: _, ...a }) => (note.trim() ? { ...a, note } : a)),
   }),
 
   /** `undefined` removes the parameter, so the block's default applies. */

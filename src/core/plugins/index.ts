@@ -13,6 +13,7 @@ export { resolveAction, type Resolution } from "./resolve";
 export { portability, type PortableExperiment, type PortabilityReport, type ActionPortability } from "./portability";
 export { channelOf, isSshCommand, unreachable, type Channel, type Channels, type Reachable } from "./reach";
 export { outgoingFor, type Outgoing } from "./payload";
+export { audioPlayer, audioPlayerText, type AudioPlayer } from "./audio";
 export { shellCommand, shellWords, quoteWord, type ShellCommand, type ShellWords } from "./shell";
 export { httpRequest, type HttpRequest } from "./http";
 export { pluginChanges, type PluginChange } from "./changes";

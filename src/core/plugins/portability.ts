@@ -23,8 +23,8 @@ export interface ActionPortability {
   actionId: string;
   type: string;
   status: PortabilityStatus;
-  /** Who carries it out: the robot, or the trial runtime (pause, branch...). */
-  by: "robot" | "runtime";
+  /** Who carries it out: the robot, the trial runtime (pause, branch...), or the wizard's browser (play audio). */
+  by: "robot" | "runtime" | "browser";
   /** The plugin action that performs it, when there is one. */
   pluginAction?: string;
   reason?: string;
@@ -46,6 +46,8 @@ export function portability(experiment: PortableExperiment, plugin: Plugin, chan
       switch (resolution.status) {
         case "runtime":
           return { ...base, status: "supported", by: "runtime" };
+        case "browser":
+          return { ...base, status: "supported", by: "browser" };
         case "supported": {
           const pluginAction = resolution.action.id;
           const reason = channels && unreachable(plugin, resolution.action, channels);

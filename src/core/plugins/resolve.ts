@@ -8,6 +8,8 @@ import { abstractAction } from "./vocabulary";
 
 export type Resolution =
   | { status: "runtime" }
+  /** No robot action does it: the wizard's browser does (play audio on a robot that cannot). */
+  | { status: "browser" }
   | { status: "supported"; action: PluginAction; parameters: Record<string, unknown> }
   | { status: "unsupported"; reason: string }
   | { status: "parameter_problems"; problems: ParameterProblem[]; action?: PluginAction };
@@ -38,8 +40,9 @@ function resolveAbstract(plugin: Plugin, id: string, parameters: unknown): Resol
   if (problems.length) return { status: "parameter_problems", problems };
   if (vocabulary.runtime) return { status: "runtime" };
   const declared = plugin.unsupported?.find((u) => u.action === id);
-  if (declared) return { status: "unsupported", reason: declared.reason };
   const value = plugin.abstract?.[id];
+  if ((declared || !value) && vocabulary.browserFallback) return { status: "browser" };
+  if (declared) return { status: "unsupported", reason: declared.reason };
   if (!value) return { status: "unsupported", reason: `${plugin.robotId} does not map "${id}"` };
   const given = withDefaults(vocabulary.parameterSchema, parameters as Record<string, unknown>);
   const bindings: AbstractBinding[] = Array.isArray(value) ? value : [value];

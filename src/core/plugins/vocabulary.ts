@@ -10,6 +10,8 @@ export interface AbstractAction {
   parameterSchema: ParameterSchema;
   /** Performed by the trial runtime, never sent to a robot. */
   runtime?: true;
+  /** Carried out by the wizard's browser on a robot whose plugin does not map it. */
+  browserFallback?: true;
 }
 
 const none: ParameterSchema = { type: "object", properties: {}, additionalProperties: false };
@@ -74,6 +76,24 @@ export const ABSTRACT_ACTIONS: AbstractAction[] = [
     },
   },
   { id: "stop", name: "Stop", parameterSchema: none },
+  {
+    // The file is one of the study's audio files; its name and content hash
+    // travel with the id, so a published version pins the exact sound.
+    id: "play_audio",
+    name: "Play audio",
+    browserFallback: true,
+    parameterSchema: {
+      type: "object",
+      properties: {
+        fileId: { type: "string", title: "Audio file", minLength: 1, maxLength: 100 },
+        name: { type: "string", title: "File name", minLength: 1, maxLength: 255 },
+        sha256: { type: "string", title: "SHA-256", pattern: "^[0-9a-f]{64}$" },
+        durationMs: { type: "number", title: "Length (ms)", minimum: 0 },
+      },
+      required: ["fileId", "name", "sha256"],
+      additionalProperties: false,
+    },
+  },
 ];
 
 export function abstractAction(id: string): AbstractAction | undefined {

@@ -44,6 +44,11 @@ export const actionSchema = z.object({
     .default({}),
   // Actions that share a group and sit next to each other start together.
   parallelGroup: z.string().trim().min(1).max(100).nullable().default(null),
+  /**
+   * Guidance for the wizard, shown beside the action during a trial. Left
+   * out when empty, so a design without notes hashes as it always did.
+   */
+  note: plain("Note for the wizard", 2000).optional(),
 });
 
 export const stepSchema = z.object({
@@ -84,14 +89,16 @@ export interface ProtocolSnapshot {
 /**
  * What the trial engine needs of a protocol (a published snapshot or a
  * rehearsal's draft): the same steps and actions, of which only ids, types
- * and parameters are required.
+ * and parameters are required (the wizard's page also shows descriptions and notes).
  */
 export interface TrialProtocol {
   steps: Array<
-    Pick<DesignStep, "id" | "name" | "after"> & {
-      actions: Array<
-        Pick<DesignAction, "id" | "type" | "parameters"> & Partial<Pick<DesignAction, "name" | "parallelGroup">>
-      >;
-    }
+    Pick<DesignStep, "id" | "name" | "after"> &
+      Partial<Pick<DesignStep, "description">> & {
+        actions: Array<
+          Pick<DesignAction, "id" | "type" | "parameters"> &
+            Partial<Pick<DesignAction, "name" | "parallelGroup" | "note">>
+        >;
+      }
   >;
 }

@@ -169,6 +169,36 @@ describe("the methods text", () => {
     expect(methodsMarkdown(rejoining)).toContain(text);
   });
 
+  it("names a sound by its file and hash, and never says a note meant for the wizard", () => {
+    const sha256 = "ab12cd34ef56".padEnd(64, "0");
+    const sound: MethodsInput = {
+      ...storyteller,
+      snapshot: snapshotOf({
+        id: "exp-3",
+        name: "Chime",
+        description: "",
+        robotId: "nao6-ros2",
+        steps: [
+          step("s", "Start", [
+            {
+              id: "p",
+              type: "play_audio",
+              name: "",
+              parameters: { fileId: "f1", name: "chime.wav", sha256 },
+              parallelGroup: null,
+              note: "Only once the participant is seated.",
+            },
+          ]),
+        ],
+      }),
+    };
+    const md = methodsMarkdown(sound);
+    expect(md).toContain(
+      `1. **Start.** The sound file “chime.wav” (SHA-256 \`${sha256}\`) was played. The trial then ended.`,
+    );
+    expect(md).not.toContain("seated");
+  });
+
   it("keeps the researcher's words unescaped in the plain text", () => {
     expect(methodsPlainText(rejoining)).toContain("“Goodbye *friend*!”");
   });

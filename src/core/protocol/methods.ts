@@ -189,6 +189,11 @@ function clause(input: MethodsInput, s: Style, action: DesignAction): Clause {
     const n = Number(p.seconds);
     return make("", Number.isFinite(n) ? `there was a pause of ${seconds(n)}` : "there was a pause");
   }
+  if (action.type === "play_audio") {
+    // The file by its name and hash: the exact sound, which a reader can ask for.
+    const hash = typeof p.sha256 === "string" ? ` (SHA-256 ${s.code(p.sha256)})` : "";
+    return make("", `the sound file ${quote(s, String(p.name ?? ""))}${hash} was played`);
+  }
   if (action.type === "wizard_instruction")
     return make("the wizard", `followed the instruction ${quote(s, String(p.text ?? ""))}`);
   if (typeof p.text === "string" && p.text.trim()) return make("the robot", `said ${quote(s, p.text)}`);

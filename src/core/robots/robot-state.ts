@@ -11,6 +11,8 @@ export const ROBOT_STATE_TOPIC = "/hristudio/robot_state";
 export interface RobotState {
   speaking: string | null;
   lastSaid: string | null;
+  /** The sound file playing now (its name), and how long it lasts. */
+  playing: { name: string; durationMs: number } | null;
   animation: string | null;
   gesture: string | null;
   posture: string;
@@ -25,6 +27,7 @@ export function initialState(): RobotState {
   return {
     speaking: null,
     lastSaid: null,
+    playing: null,
     animation: null,
     gesture: null,
     posture: "stand",

@@ -27,6 +27,8 @@ export const commandSchema = z.discriminatedUnion("kind", [
   z.object({ kind: z.literal("complete") }),
   z.object({ kind: z.literal("emergency_stop") }),
   z.object({ kind: z.literal("note"), text: z.string().min(1).max(5000) }),
+  // The wizard's browser finished playing a sound the robot cannot play (`failed`: why it could not).
+  z.object({ kind: z.literal("played"), actionId: id, failed: z.string().min(1).max(500).optional() }),
   z.object({
     kind: z.literal("recording"),
     recordingId: id,

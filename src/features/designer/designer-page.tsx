@@ -22,7 +22,7 @@ import { libraryEntries } from "@/core/designer/library";
 import { commands, locateAction, locateStep } from "@/core/designer/model";
 import type { DesignDraft } from "@/core/designer/types";
 import { hasErrors, validateDesign } from "@/core/designer/validate";
-import { abstractAction, type Plugin } from "@/core/plugins";
+import { abstractAction, audioPlayer, type Plugin } from "@/core/plugins";
 import { newId } from "@/lib/new-id";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
@@ -370,9 +370,18 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
                 run={run}
                 onMove={moveSelected}
                 onDelete={deleteSelected}
+                studyId={designer.loaded.data!.studyId}
+                robotName={robotName}
+                audioPlayer={audioPlayer(plugin)}
               />
             </fieldset>
-            <IssuesPanel draft={draft} issues={issues} robotName={robotName} onSelect={setSelection} />
+            <IssuesPanel
+              draft={draft}
+              issues={issues}
+              robotName={robotName}
+              audioPlayer={audioPlayer(plugin)}
+              onSelect={setSelection}
+            />
             <VersionsPanel
               experimentId={experimentId}
               draft={draft}
@@ -438,7 +447,8 @@ function dragLabel(activeId: string, draft: DesignDraft | null, blockName: (t: s
 /** An abstract block this robot does not map: shown, but marked, in the library. */
 function isUnsupported(plugin: Plugin, type: string) {
   const action = abstractAction(type);
-  return Boolean(action && !action.runtime && !plugin.abstract?.[type]);
+  // A sound the robot cannot play is played by the wizard's browser: never unsupported.
+  return Boolean(action && !action.runtime && !action.browserFallback && !plugin.abstract?.[type]);
 }
 
 function SaveStatus({ save }: { save: SaveState }) {

@@ -4,23 +4,27 @@
 import { AlertCircle, AlertTriangle, CheckCircle2 } from "lucide-react";
 import type { DesignIssue } from "@/core/designer/validate";
 import type { DesignDraft } from "@/core/designer/types";
+import { audioPlayerText, type AudioPlayer } from "@/core/plugins";
 import type { Selection } from "./protocol-timeline";
 
 export function IssuesPanel({
   draft,
   issues,
   robotName,
+  audioPlayer,
   onSelect,
 }: {
   draft: DesignDraft;
   issues: DesignIssue[];
   robotName: string;
+  audioPlayer: AudioPlayer;
   onSelect: (s: Selection) => void;
 }) {
   const errors = issues.filter((i) => i.severity === "error").length;
   const warnings = issues.length - errors;
   const actionCount = draft.steps.reduce((n, s) => n + s.actions.length, 0);
   const unsupported = issues.filter((i) => i.code === "unsupported_on_robot").length;
+  const sounds = draft.steps.reduce((n, s) => n + s.actions.filter((a) => a.type === "play_audio").length, 0);
   return (
     <section aria-label="Checks" className="rounded-lg border border-slate-200 bg-white p-4 shadow-sm">
       <h2 className="mb-2 flex items-center gap-2 font-semibold">
@@ -40,6 +44,8 @@ export function IssuesPanel({
         {unsupported
           ? `${unsupported} of ${actionCount} actions cannot run on ${robotName}.`
           : `All ${actionCount} actions can run on ${robotName}.`}
+        {sounds > 0 &&
+          ` ${sounds === 1 ? "Its sound is" : `Its ${sounds} sounds are`} ${audioPlayerText(audioPlayer)}${audioPlayer === "browser" ? ` (${robotName} cannot play a file)` : ""}.`}
       </p>
       <ul className="max-h-64 space-y-1 overflow-y-auto text-sm">
         {issues.map((issue, n) => (

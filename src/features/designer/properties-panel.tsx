@@ -7,11 +7,12 @@ import type { Block } from "@/core/designer/blocks";
 import { commands, locateAction, locateStep, type Command } from "@/core/designer/model";
 import type { DesignIssue } from "@/core/designer/validate";
 import type { DesignAction, DesignDraft } from "@/core/designer/types";
-import type { ParameterSchema } from "@/core/plugins";
+import type { AudioPlayer, ParameterSchema } from "@/core/plugins";
 import { newId } from "@/lib/new-id";
 import { Button } from "@/ui/button";
 import { Field, Input, NativeSelect, Textarea } from "@/ui/field";
 import { SchemaForm } from "@/ui/schema-form";
+import { AudioChooser } from "./audio-chooser";
 import type { Selection } from "./protocol-timeline";
 
 interface Props {
@@ -22,6 +23,10 @@ interface Props {
   run: (c: Command) => void;
   onMove: (delta: -1 | 1) => void;
   onDelete: () => void;
+  /** For "Play audio": the study whose sounds it plays, and who plays them on this robot. */
+  studyId: string;
+  robotName: string;
+  audioPlayer: AudioPlayer;
 }
 
 export function PropertiesPanel(props: Props) {
@@ -147,6 +152,9 @@ function ActionProperties({
   run,
   onMove,
   onDelete,
+  studyId,
+  robotName,
+  audioPlayer,
 }: Props & { action: DesignAction }) {
   const block = blockFor(action.type);
   const { step, index } = locateAction(draft, action.id);
@@ -173,6 +181,8 @@ function ActionProperties({
         <AnswerEditor action={action} run={run} problems={problems} />
       ) : action.type === "branch" ? (
         <BranchEditor draft={draft} action={action} answer={step.actions[index - 1]} run={run} />
+      ) : action.type === "play_audio" ? (
+        <AudioChooser studyId={studyId} action={action} player={audioPlayer} robotName={robotName} run={run} />
       ) : block ? (
         <SchemaForm
           schema={block.parameterSchema}
@@ -191,6 +201,20 @@ function ActionProperties({
         />
         Starts together with the action above
       </label>
+      <Field
+        label="Note for the wizard"
+        hint="Shown to the wizard beside this action during the trial (what to watch for, when to go on). Not part of the methods text."
+      >
+        {(p) => (
+          <Textarea
+            {...p}
+            rows={2}
+            maxLength={2000}
+            value={action.note ?? ""}
+            onChange={(e) => run(commands.setNote(action.id, e.target.value))}
+          />
+        )}
+      </Field>
       <IssueList issues={own.filter((i) => !i.parameter)} />
       <Toolbar what="action" onMove={onMove} onDelete={onDelete} />
     </div>

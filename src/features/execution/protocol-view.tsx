@@ -101,6 +101,7 @@ export function StepActions({
   state,
   problems,
   onTrigger,
+  notes = false,
 }: {
   protocol: TrialProtocol;
   names: ActionNames;
@@ -108,6 +109,8 @@ export function StepActions({
   /** Why actions were not done, by id (actionProblems). */
   problems: Record<string, string>;
   onTrigger?: (actionId: string) => void;
+  /** Show each action's note for the wizard (the wizard's view; observers watch what happens). */
+  notes?: boolean;
 }) {
   const step = protocol.steps.find((s) => s.id === state.currentStepId);
   if (!step) return <p className="text-slate-500">The trial has not started.</p>;
@@ -116,6 +119,11 @@ export function StepActions({
       <h2 className="text-xl font-semibold" data-testid="current-step">
         {step.name}
       </h2>
+      {step.description?.trim() && (
+        <p className="mt-1 max-w-prose whitespace-pre-line text-slate-700" data-testid="step-description">
+          {step.description.trim()}
+        </p>
+      )}
       <ul className="mt-3 divide-y divide-slate-100 rounded-lg border border-slate-200 bg-white">
         {step.actions.map((a) => {
           const s = state.actions[a.id]!;
@@ -158,6 +166,15 @@ export function StepActions({
                   </button>
                 )}
               <WhyNotDone text={problems[a.id]} />
+              {notes && a.note?.trim() && (
+                <p
+                  className="basis-full whitespace-pre-line rounded-md border-l-4 border-amber-400 bg-amber-50 px-3 py-1.5 text-amber-900"
+                  data-testid="action-note"
+                >
+                  <span className="sr-only">Note for the wizard: </span>
+                  {a.note.trim()}
+                </p>
+              )}
             </li>
           );
         })}

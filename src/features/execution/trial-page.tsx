@@ -8,6 +8,7 @@ import { actionProblems, type TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
+import { BrowserAudio } from "./browser-audio";
 import { AnnotateForm, AnnotationList, Watching } from "./observer-panel";
 import { OffScript, StepActions, StepList } from "./protocol-view";
 import { TrialQuestionnaires } from "@/features/questionnaires/trial-questionnaires";
@@ -124,7 +125,9 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
             state={live.state}
             problems={problems}
             onTrigger={wizard ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined}
+            notes={wizard}
           />
+          {wizard && <BrowserAudio events={live.events} state={live.state} send={live.command} />}
           <OffScript events={live.events} names={trial.actionNames} state={live.state} problems={problems} />
           {wizard && (
             <WizardControls protocol={protocol} names={trial.actionNames} state={live.state} send={live.command} />

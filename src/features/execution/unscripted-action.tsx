@@ -8,7 +8,8 @@ import { Button } from "@/ui/button";
 import { Field, NativeSelect } from "@/ui/field";
 import { SchemaForm } from "@/ui/schema-form";
 
-const ROBOT_ACTIONS = ABSTRACT_ACTIONS.filter((a) => !a.runtime && a.id !== "say");
+// A sound is chosen from the study's files in the designer; a form of its id and hash is no way to pick one live.
+const ROBOT_ACTIONS = ABSTRACT_ACTIONS.filter((a) => !a.runtime && a.id !== "say" && a.id !== "play_audio");
 
 export function UnscriptedAction({
   send,

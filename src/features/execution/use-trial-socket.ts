@@ -175,8 +175,14 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     command: (command: WizardCommand) =>
       request(
         (requestId) => ({ type: "command", requestId, command }),
-        // The engine's form of it: the server gives an unscripted action its id.
-        command.kind === "unscripted" ? { ...command, actionId: crypto.randomUUID() } : command,
+        // The engine's form of it: the server gives an unscripted action its id; a sound's end is the action's.
+        command.kind === "unscripted"
+          ? { ...command, actionId: crypto.randomUUID() }
+          : command.kind === "played"
+            ? command.failed
+              ? { kind: "failed", actionId: command.actionId, reason: command.failed }
+              : { kind: "completed", actionId: command.actionId }
+            : command,
       ),
     annotate: (label: string, note = "") => request((requestId) => ({ type: "annotate", requestId, label, note })),
   };

@@ -80,6 +80,8 @@ export function RobotView({ url }: { url: string }) {
         >
           {state?.speaking ? (
             `“${state.speaking}”`
+          ) : state?.playing ? (
+            `♪ ${state.playing.name}`
           ) : (
             <span className="text-slate-500">{state?.lastSaid ? `Last said: “${state.lastSaid}”` : "…"}</span>
           )}

@@ -15,6 +15,7 @@ import { ParticipantsTab } from "./participants-tab";
 import { QuestionnairesTab } from "./questionnaires-tab";
 import { ResultsTab } from "./results-tab";
 import { SessionsTab } from "./sessions-tab";
+import { SoundsTab } from "./sounds-tab";
 import { TrialsTab } from "./trials-tab";
 
 export function StudyPage({ studyId }: { studyId: string }) {
@@ -53,6 +54,7 @@ export function StudyPage({ studyId }: { studyId: string }) {
             ? []
             : [
                 { id: "experiments", label: "Experiments", content: <ExperimentsTab studyId={studyId} role={role} /> },
+                { id: "sounds", label: "Sounds", content: <SoundsTab studyId={studyId} role={role} /> },
                 {
                   id: "conditions",
                   label: "Conditions",

@@ -1,13 +1,31 @@
 // The built-in simulated robot: a rosbridge v2 server so every path runs without hardware.
 import type { Plugin } from "../../core/plugins";
-import { battery, jointStates, pluginTopics, robotStateReport, speech, testServices, type RobotNode } from "./nodes";
+import {
+  audio,
+  battery,
+  jointStates,
+  pluginTopics,
+  robotStateReport,
+  speech,
+  testServices,
+  type RobotNode,
+} from "./nodes";
 
 export { startSimulator, type Simulator, type SimulatorOptions, type Received } from "./server";
-export { battery, jointStates, pluginTopics, robotStateReport, speech, testServices, type RobotNode } from "./nodes";
+export {
+  audio,
+  battery,
+  jointStates,
+  pluginTopics,
+  robotStateReport,
+  speech,
+  testServices,
+  type RobotNode,
+} from "./nodes";
 
 const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 
-/** The default robot: the topics of a plugin (NAO6's by default), speech, joint states and battery. */
+/** The default robot: the topics of a plugin (NAO6's by default), speech, sound files, joint states and battery. */
 export function simulatedRobot(
   plugin: Plugin,
   { msPerChar = 60, jointStatesHz = 10, batteryHz = 1 } = {},
@@ -15,6 +33,7 @@ export function simulatedRobot(
   return [
     pluginTopics(plugin),
     speech({ msPerChar }),
+    audio(),
     jointStates({
       hz: jointStatesHz,
       names: NAO_JOINTS,

@@ -36,6 +36,35 @@ export function speech({ msPerChar = 60, topic = "/speech", doneTopic = "/speech
   };
 }
 
+/**
+ * Sound files: a std_msgs/String on /audio, "<ms> <sha256> <name>" (the
+ * simulated plugin's play_audio), "plays" for the file's length, then
+ * "played: <name> (<ms> ms)" is published on /audio_done.
+ */
+export function audio({ topic = "/audio", doneTopic = "/audio_done" } = {}): RobotNode {
+  return (graph, state) => {
+    graph.declare(topic, "std_msgs/msg/String", ROBOT);
+    graph.declare(doneTopic, "std_msgs/msg/String", ROBOT);
+    const timers = new Set<NodeJS.Timeout>();
+    const stop = graph.listen(topic, (message) => {
+      const match = /^(\d+(?:\.\d+)?) ([0-9a-f]{64}) (.+)$/s.exec(String(message.data));
+      if (!match) return;
+      const playing = { name: match[3]!, durationMs: Number(match[1]) };
+      state.playing = playing;
+      const timer = setTimeout(() => {
+        timers.delete(timer);
+        if (state.playing === playing) state.playing = null;
+        graph.publish(doneTopic, { data: `played: ${playing.name} (${playing.durationMs} ms)` });
+      }, playing.durationMs);
+      timers.add(timer);
+    });
+    return () => {
+      stop();
+      timers.forEach(clearTimeout);
+    };
+  };
+}
+
 const stamp = () => {
   const now = Date.now();
   return { sec: Math.floor(now / 1000), nanosec: (now % 1000) * 1_000_000 };

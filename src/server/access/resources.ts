@@ -12,6 +12,7 @@ import {
   questionnaires,
   sessions,
   studies,
+  studyAudio,
   trials,
 } from "@/store/schema";
 
@@ -56,6 +57,7 @@ const LOADERS = {
     )[0],
   questionnaire: async (db: Db, id: string) =>
     (await db.select().from(questionnaires).where(eq(questionnaires.id, id)))[0],
+  audioFile: async (db: Db, id: string) => (await db.select().from(studyAudio).where(eq(studyAudio.id, id)))[0],
 } satisfies Record<string, (db: Db, id: string) => Promise<{ studyId: string } | undefined>>;
 
 export type Resource = keyof typeof LOADERS;
@@ -73,6 +75,7 @@ const NAMES: Record<Resource, string> = {
   session: "session",
   annotation: "annotation",
   questionnaire: "questionnaire",
+  audioFile: "audio file",
 };
 
 /**
@@ -92,6 +95,7 @@ export const REFERENCES = {
   sessionId: "session",
   annotationId: "annotation",
   questionnaireId: "questionnaire",
+  audioFileId: "audioFile",
   wizardId: "member",
   userId: "member",
 } as const satisfies Record<string, Resource | "member">;

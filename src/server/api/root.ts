@@ -9,6 +9,7 @@ import { formRouter } from "./routers/form";
 import { pluginsRouter } from "./routers/plugins";
 import { questionnairesRouter } from "./routers/questionnaires";
 import { recordingsRouter } from "./routers/recordings";
+import { audioRouter } from "./routers/audio";
 import { sessionsRouter } from "./routers/sessions";
 import { studiesRouter } from "./routers/studies";
 import { tokensRouter } from "./routers/tokens";
@@ -28,6 +29,7 @@ export const appRouter = router({
   questionnaires: questionnairesRouter,
   form: formRouter,
   recordings: recordingsRouter,
+  audio: audioRouter,
   plugins: pluginsRouter,
   trials: trialsRouter,
   admin: adminRouter,

@@ -103,6 +103,7 @@ export async function insertSteps(tx: Tx, experimentId: string, draftSteps: Desi
       name: a.name,
       parameters: a.parameters,
       parallelGroup: a.parallelGroup,
+      note: a.note ?? "",
     })),
   );
   if (stepRows.length) await tx.insert(steps).values(stepRows);

@@ -8,6 +8,7 @@ import { snapshotOf } from "@/core/protocol/snapshot";
 import type { Database } from "@/store/client";
 import { experimentVersions, experiments, pluginDocuments } from "@/store/schema";
 import { knownPlugin } from "@/robots/catalog";
+import { soundProblems } from "../media/audio";
 import { loadDesign } from "./design";
 
 export async function publish(db: Database, experimentId: string, userId: string) {
@@ -35,6 +36,9 @@ export async function publish(db: Database, experimentId: string, userId: string
         message: `This experiment cannot be published until ${problems.length === 1 ? "this problem is" : `these ${problems.length} problems are`} fixed: ${listed}`,
       });
     }
+    const sounds = await soundProblems(tx, design.studyId, draftFrom(design));
+    if (sounds.length)
+      throw new TRPCError({ code: "BAD_REQUEST", message: `This experiment cannot be published: ${sounds.join(" ")}` });
     if (known) {
       await tx
         .insert(pluginDocuments)

@@ -54,6 +54,8 @@ export const actions = pgTable(
     parameters: jsonb("parameters").notNull().default(sql`'{}'::jsonb`),
     // Actions sharing a group id start together.
     parallelGroup: text("parallel_group"),
+    // Guidance shown to the wizard beside the action during a trial.
+    note: text("note").notNull().default(""),
   },
   (t) => [index("actions_step_idx").on(t.stepId, t.position)],
 );

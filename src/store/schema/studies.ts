@@ -1,5 +1,15 @@
 import { sql } from "drizzle-orm";
-import { index, jsonb, pgTable, primaryKey, text, timestamp, uniqueIndex } from "drizzle-orm/pg-core";
+import {
+  bigint,
+  doublePrecision,
+  index,
+  jsonb,
+  pgTable,
+  primaryKey,
+  text,
+  timestamp,
+  uniqueIndex,
+} from "drizzle-orm/pg-core";
 import { user } from "./auth";
 import { createdAt, id } from "./columns";
 // Only inside lazy references: the two schema files refer to each other.
@@ -91,4 +101,26 @@ export const auditLog = pgTable(
     details: jsonb("details").notNull().default(sql`'{}'::jsonb`),
   },
   (t) => [index("audit_log_study_idx").on(t.studyId, t.at)],
+);
+
+// Sounds a study's experiments play ("Play audio"): the bytes live in media
+// storage under storage_key; sha256 is what a published version pins.
+export const studyAudio = pgTable(
+  "study_audio",
+  {
+    id: id(),
+    studyId: text("study_id")
+      .notNull()
+      .references(() => studies.id, { onDelete: "cascade" }),
+    name: text("name").notNull(),
+    mimeType: text("mime_type").notNull(),
+    sizeBytes: bigint("size_bytes", { mode: "number" }).notNull(),
+    sha256: text("sha256").notNull(),
+    // Read from the file's own header when it says; null when it does not.
+    durationMs: doublePrecision("duration_ms"),
+    storageKey: text("storage_key").notNull(),
+    uploadedBy: text("uploaded_by").references(() => user.id, { onDelete: "set null" }),
+    createdAt: createdAt(),
+  },
+  (t) => [index("study_audio_study_idx").on(t.studyId)],
 );
