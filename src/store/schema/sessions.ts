@@ -28,5 +28,8 @@ export const sessions = pgTable(
   (t) => [
     index("sessions_study_idx").on(t.studyId, t.plannedAt),
     index("sessions_wizard_idx").on(t.wizardId, t.plannedAt),
+    index("sessions_participant_idx").on(t.participantId),
+    index("sessions_condition_idx").on(t.conditionId),
+    index("sessions_trial_idx").on(t.trialId),
   ],
 );

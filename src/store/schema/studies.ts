@@ -59,7 +59,10 @@ export const conditions = pgTable(
       .references(() => experiments.id, { onDelete: "restrict" }),
     createdAt: createdAt(),
   },
-  (t) => [uniqueIndex("conditions_study_name_idx").on(t.studyId, t.name)],
+  (t) => [
+    uniqueIndex("conditions_study_name_idx").on(t.studyId, t.name),
+    index("conditions_experiment_idx").on(t.experimentId),
+  ],
 );
 
 export const participants = pgTable(
@@ -85,7 +88,10 @@ export const participants = pgTable(
     assignment: jsonb("assignment"),
     createdAt: createdAt(),
   },
-  (t) => [uniqueIndex("participants_study_code_idx").on(t.studyId, t.code)],
+  (t) => [
+    uniqueIndex("participants_study_code_idx").on(t.studyId, t.code),
+    index("participants_condition_idx").on(t.conditionId),
+  ],
 );
 
 // Who changed what, for administrative changes (members, roles, users, plugins).

@@ -41,7 +41,13 @@ export const trials = pgTable(
     createdBy: text("created_by").references(() => user.id, { onDelete: "set null" }),
     createdAt: createdAt(),
   },
-  (t) => [index("trials_study_idx").on(t.studyId, t.createdAt)],
+  (t) => [
+    index("trials_study_idx").on(t.studyId, t.createdAt),
+    index("trials_experiment_idx").on(t.experimentId),
+    index("trials_version_idx").on(t.versionId),
+    index("trials_participant_idx").on(t.participantId),
+    index("trials_wizard_idx").on(t.wizardId),
+  ],
 );
 
 // The append-only log a trial's state is folded from.
