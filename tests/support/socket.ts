@@ -54,7 +54,8 @@ export async function connectTrial(url: string, token: string, lastSeq = 0): Pro
     },
     command(requestId, command) {
       socket.send({ type: "command", requestId, command });
-      return socket.next((m) => m.requestId === requestId);
+      // The outcome: "ack" or "rejected" (a stop's "halted" comes before it and is not one).
+      return socket.next((m) => m.requestId === requestId && (m.type === "ack" || m.type === "rejected"));
     },
     close: () => ws.close(),
   };
