@@ -18,7 +18,6 @@ if (!config.DATABASE_URL || !config.BETTER_AUTH_SECRET) {
   process.exit(1);
 }
 const { db, sql, close } = createDatabase(config.DATABASE_URL);
-const lockConnection = await sql.reserve();
 for (const problem of (await pluginCatalog(db)).problems) console.error(`[runtime] plugin not loaded: ${problem}`);
 const robotSettings = transportConfig(config);
 // The plugin document is the trial's own (pinned by its version), chosen in trialHosts.
@@ -28,13 +27,7 @@ const robotFor = (plugin: Plugin | null, robotId: string) => {
   return choice.ok ? pluginRobot(plugin, choice.transport) : unavailableRobot(choice.reason);
 };
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
-const hosts = trialHosts(
-  db,
-  lockConnection,
-  robotFor,
-  (...args) => announceRobot(...args),
-  config.HRI_TRIAL_IDLE_SECONDS * 1000,
-);
+const hosts = trialHosts(db, sql, robotFor, (...args) => announceRobot(...args), config.HRI_TRIAL_IDLE_SECONDS * 1000);
 const relay = await eventRelay(db, sql);
 // Replays go to the simulated robot only (HRI_SIMULATOR_URL), never to the robot settings above.
 const replays = simulatorReplays(db, config.HRI_SIMULATOR_URL);
@@ -58,14 +51,19 @@ const purge = setInterval(
 const server = runtime.server;
 console.log(`[runtime] listening on ws://${server.hostname}:${server.port}`);
 
+// A command stuck on a database that does not answer must not keep the process alive: shutdown is bounded.
+const SHUTDOWN_MS = 4000;
 const stop = async () => {
+  setTimeout(() => {
+    console.error(`[runtime] still shutting down after ${SHUTDOWN_MS / 1000} s: exiting now.`);
+    process.exit(1);
+  }, SHUTDOWN_MS).unref();
   clearInterval(purge);
   server.stop(true);
   await hosts.closeAll();
   await replays.close();
   await relay.close();
   await access.close();
-  lockConnection.release();
   await close();
   process.exit(0);
 };

@@ -12,6 +12,7 @@ import { experimentVersions, trials } from "@/store/schema";
 import { trialPlugin } from "@/robots/trial-plugin";
 import type { RobotLink } from "./robot";
 import { unavailableRobot } from "./robot-link";
+import { trialLocks } from "./trial-locks";
 import { logUnexpected } from "@/store/error-reference";
 import { TrialHost } from "./trial-host";
 
@@ -25,7 +26,8 @@ export interface TrialHosts {
 
 export function trialHosts(
   db: Database,
-  lockConnection: postgres.ReservedSql,
+  /** The database client the trials' locks are taken through, on a connection of their own. */
+  sql: postgres.Sql,
   /** The robot for a trial's plugin document; `plugin` is null when none is installed for `robotId`. */
   robotFor: (plugin: Plugin | null, robotId: string) => RobotLink | Promise<RobotLink>,
   onRobotStatus: (trialId: string, connected: boolean, detail?: string) => void,
@@ -33,19 +35,35 @@ export function trialHosts(
   idleMs = 60_000,
 ): TrialHosts {
   const hosts = new Map<string, Promise<TrialHost | null>>();
+  // A lock lost with its connection and taken by another process: that process runs the trial now.
+  const locks = trialLocks(sql, (trialId) => {
+    void hosts
+      .get(trialId)
+      ?.then((host) => host && retire(trialId, host, false))
+      .catch(retireFailed);
+  });
 
-  async function retire(trialId: string, host: TrialHost) {
+  async function retire(trialId: string, host: TrialHost, unlock = true) {
     const current = hosts.get(trialId);
     if (!current || (await current.catch(() => null)) !== host) return;
     hosts.delete(trialId);
     await host.close();
-    // Advisory locks count per session: this releases exactly the hold this host took.
-    await lockConnection`select pg_advisory_unlock(hashtextextended(${trialId}, 0))`;
+    // Locks count: this releases exactly the hold this host took.
+    if (unlock) await locks.release(trialId);
   }
 
   async function open(trialId: string) {
-    const [owned] = await lockConnection`select pg_try_advisory_lock(hashtextextended(${trialId}, 0)) as ok`;
-    if (!owned?.ok) return null;
+    if (!(await locks.take(trialId))) return null;
+    try {
+      return await hostFor(trialId);
+    } catch (error) {
+      // Refused, not owned: another attempt (or process) may take it once the cause is fixed.
+      await locks.release(trialId);
+      throw error;
+    }
+  }
+
+  async function hostFor(trialId: string) {
     const [row] = await db
       .select({ snapshot: experimentVersions.snapshot, rehearsal: trials.rehearsalSnapshot, status: trials.status })
       .from(trials)
@@ -54,11 +72,7 @@ export function trialHosts(
     const protocol = row?.snapshot ?? row?.rehearsal;
     if (!protocol) throw new Error("This trial has no protocol to run.");
     const chosen = await trialPlugin(db, trialId);
-    if (!chosen.ok) {
-      // Refused, not owned: another attempt (or process) may take it once the cause is fixed.
-      await lockConnection`select pg_advisory_unlock(hashtextextended(${trialId}, 0))`;
-      throw new Error(chosen.reason);
-    }
+    if (!chosen.ok) throw new Error(chosen.reason);
     const ended = row?.status === "completed" || row?.status === "aborted";
     const robot = ended ? unavailableRobot("the trial has ended") : await robotFor(chosen.plugin, chosen.robotId);
     const host = await TrialHost.open(db, trialId, protocol, robot);
@@ -98,6 +112,7 @@ export function trialHosts(
     async closeAll() {
       for (const host of hosts.values()) await (await host.catch(() => null))?.close();
       hosts.clear();
+      await locks.close();
     },
   };
 }

@@ -115,7 +115,9 @@ const publishes = (topic: string) =>
   sim.received.filter((r) => r.message.op === "publish" && r.message.topic === topic).map((r) => r.message.msg);
 
 describe("an emergency stop with the database frozen", () => {
-  it("stops the robot at once, drops what was asked before it, and logs the stop once the database is back", async () => {
+  it("stops the robot at once, drops what was asked before it, and logs the stop once the database is back", {
+    timeout: 60_000,
+  }, async () => {
     const still = { linear: { x: 0, y: 0, z: 0 }, angular: { x: 0, y: 0, z: 0 } };
     expect(await wizard.command("r1", { kind: "start" })).toMatchObject({ type: "ack" });
     expect(await wizard.command("r2", { kind: "next" })).toMatchObject({ type: "ack" });
@@ -164,5 +166,16 @@ describe("an emergency stop with the database frozen", () => {
       { actionId: "late", reason: "Not sent: the robot was stopped before this reached it." },
     ]);
     expect(publishes("/speech")).toEqual([]);
+  });
+
+  it("ends on SIGTERM though a command is stuck on the frozen database", { timeout: 30_000 }, async () => {
+    await signalDatabase("SIGSTOP");
+    wizard.send({ type: "command", requestId: "stuck", command: { kind: "resume" } });
+    await new Promise((r) => setTimeout(r, 200));
+    const exited = new Promise<number | null>((resolve) => runtime.child.once("exit", (code) => resolve(code)));
+    runtime.child.kill("SIGTERM");
+    // Bounded shutdown: the runtime gives up on the stuck command rather than waiting for ever.
+    expect(await exited).toBe(1);
+    await signalDatabase("SIGCONT");
   });
 });

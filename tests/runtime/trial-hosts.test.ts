@@ -46,10 +46,9 @@ const IDLE_MS = 200;
 
 beforeAll(async () => {
   sim = await startSimulator({ port: 0, nodes: simulatedRobot(plugin, { msPerChar: 0 }) });
-  const lockConnection = await client.reserve();
   hosts = trialHosts(
     db,
-    lockConnection,
+    client,
     () => pluginRobot(plugin, new RosbridgeTransport({ url: sim.url })),
     () => {},
     IDLE_MS,
@@ -171,6 +170,28 @@ describe.sequential("the trials a runtime holds open", () => {
     expect(hosts.size).toBe(1);
     await until(() => hosts.size === 0 && sim.connections() === 0, "the trial to close once the pause is over");
     expect(host.current.actions.hold?.status).toBe("done");
+  });
+
+  it("takes its locks again on a new connection when the lock connection dies", async () => {
+    const [kept, later] = await newTrials(2);
+    const host = (await hosts.get(kept!))!;
+    const unsubscribe = host.subscribe(() => {});
+    expect(await trialLocks()).toBe(1);
+    // An administrator (or a restart) ends the connection the locks live on.
+    await db.execute(
+      sql`select pg_terminate_backend(pid) from pg_locks where locktype = 'advisory' and database = (select oid from pg_database where datname = current_database())`,
+    );
+    await until(async () => (await trialLocks()) === 0, "the lock to go with its connection");
+    const next = await hosts.get(later!);
+    expect(next).not.toBeNull();
+    expect(await trialLocks()).toBe(2);
+    expect(await hosts.get(kept!)).toBe(host);
+    unsubscribe();
+    await next!.command({ kind: "start" }, null);
+    await next!.command({ kind: "complete" }, null);
+    await host.command({ kind: "start" }, null);
+    await host.command({ kind: "complete" }, null);
+    await until(async () => hosts.size === 0 && (await trialLocks()) === 0, "both trials to close");
   });
 
   it("opens a finished trial without connecting to its robot", async () => {
