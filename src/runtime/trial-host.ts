@@ -26,6 +26,26 @@ export type CommandResult = { ok: true; events: StoredEvent[] } | { ok: false; r
 
 const BLOCKS_WITHOUT_ROBOT = new Set<string>(CONTROL_TYPES);
 
+/**
+ * How long the trial log may take to answer before the wizard's commands are
+ * refused rather than held: a command carried out late (a line spoken 17 s
+ * after it was asked for, in the middle of something else) is worse than one
+ * refused plainly and asked again.
+ */
+const LOG_DEADLINE_MS = 1000;
+const LOG_UNAVAILABLE =
+  "The trial log is not answering (the database is unavailable), so nothing was done and the robot was not told. Try again in a moment.";
+
+/** What the robot side and the clock report, and the stops: logged whenever the log can take them, never refused for lateness. */
+const ALWAYS_LOGGED = new Set<Command["kind"]>([
+  "dispatched",
+  "completed",
+  "failed",
+  "timed_out",
+  "emergency_stop",
+  "abort",
+]);
+
 /** The wizard's commands that can set the robot going: after a stop, one asked for before it is stale. */
 const MOVES_THE_ROBOT = new Set<Command["kind"]>([
   "start",
@@ -44,6 +64,8 @@ export class TrialHost {
   private shut = false;
   /** How many times the robot was stopped outside the queue: commands asked for before a stop are dropped. */
   private halts = 0;
+  /** When the command being logged now started its write: null while none is. */
+  private writingSince: number | null = null;
   /** Told when the trial ends, and when its last client leaves. */
   private readonly lifecycle = { ended: () => {}, unwatched: () => {} };
   private readonly timers = new Set<ReturnType<typeof setTimeout>>();
@@ -141,42 +163,55 @@ export class TrialHost {
   /** Runs after every earlier command has finished, so the log never forks. */
   command(command: Command, actorId: string | null): Promise<CommandResult> {
     const halts = this.halts;
-    const run = this.queue.then(() => this.execute(command, actorId, halts));
+    const asked = Date.now();
+    // The log is stuck on an earlier command: refuse now rather than queue behind it.
+    if (!ALWAYS_LOGGED.has(command.kind) && this.writingSince !== null && asked - this.writingSince > LOG_DEADLINE_MS)
+      return Promise.resolve({ ok: false, reason: LOG_UNAVAILABLE });
+    const run = this.queue.then(() => this.execute(command, actorId, halts, asked));
     this.queue = run.catch(() => undefined);
     return run;
   }
 
-  private async execute(command: Command, actorId: string | null, halts: number): Promise<CommandResult> {
+  private async execute(
+    command: Command,
+    actorId: string | null,
+    halts: number,
+    asked: number,
+  ): Promise<CommandResult> {
     // A robot's late report, or a clock, after the host closed: the trial is no longer run from here.
     if (this.shut) return { ok: false, reason: "This trial is no longer open here. Reload the page." };
     if (halts !== this.halts && MOVES_THE_ROBOT.has(command.kind))
       return { ok: false, reason: "Not carried out: the robot was stopped after you asked for this." };
+    const late = () => !ALWAYS_LOGGED.has(command.kind) && Date.now() - asked > LOG_DEADLINE_MS;
+    if (late()) return { ok: false, reason: LOG_UNAVAILABLE };
     const decision = decide(this.protocol, this.state, command);
     if (!decision.ok) return decision;
     const cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
-    const stored = await appendEvents(this.db, cursor, decision.events, actorId);
+    this.writingSince = Date.now();
+    const stored = await appendEvents(this.db, cursor, decision.events, actorId).finally(() => {
+      this.writingSince = null;
+    });
     this.state = applyAll(this.state, stored);
     this.t0 ??= startedAt(stored);
     for (const listener of this.listeners) listener(stored);
-    // Stopped while this was being logged: it is in the log as asked for, and goes no further.
-    if (halts !== this.halts) this.dropAfterHalt(decision.events);
+    // Stopped, or the log answered too late, while this was being logged: it is in the log as asked
+    // for, and goes no further.
+    if (halts !== this.halts) this.withhold(decision.events, "Not sent: the robot was stopped before this reached it.");
+    else if (late())
+      this.withhold(
+        decision.events,
+        "Not sent: the trial log answered too late, so this would have reached the robot late.",
+      );
     else this.carryOut(decision.events);
     if (this.state.status === "completed" || this.state.status === "aborted") this.lifecycle.ended();
     return { ok: true, events: stored };
   }
 
-  /** Each action the stop overtook is logged as failed, so the log says it never reached the robot. */
-  private dropAfterHalt(events: EngineEvent[]) {
+  /** Each action held back is logged as failed, with why, so the log says it never reached the robot. */
+  private withhold(events: EngineEvent[], reason: string) {
     for (const event of events)
       if (event.type === "action.requested")
-        void this.command(
-          {
-            kind: "failed",
-            actionId: event.actionId,
-            reason: "Not sent: the robot was stopped before this reached it.",
-          },
-          null,
-        );
+        void this.command({ kind: "failed", actionId: event.actionId, reason }, null);
   }
 
   /** What happens in the world once the events are committed. */

@@ -168,6 +168,33 @@ describe("an emergency stop with the database frozen", () => {
     expect(publishes("/speech")).toEqual([]);
   });
 
+  it("refuses the wizard's commands at once while the log is stuck, instead of holding them", {
+    timeout: 60_000,
+  }, async () => {
+    await signalDatabase("SIGSTOP");
+    wizard.send({
+      type: "command",
+      requestId: "held",
+      command: { kind: "note", text: "written once the log is back" },
+    });
+    await new Promise((r) => setTimeout(r, 1500));
+    // Asked while the log has been stuck for more than a second: refused now, with the database still frozen.
+    expect(await wizard.command("refused", { kind: "note", text: "never written" })).toEqual({
+      type: "rejected",
+      requestId: "refused",
+      reason:
+        "The trial log is not answering (the database is unavailable), so nothing was done and the robot was not told. Try again in a moment.",
+    });
+    await signalDatabase("SIGCONT");
+    await wizard.next((m) => m.requestId === "held" && (m.type === "ack" || m.type === "rejected"), 30_000);
+    const notes = wizard.messages.flatMap((m) =>
+      m.type === "events"
+        ? (m.events as Array<{ type: string; text?: string }>).filter((e) => e.type === "note.added").map((e) => e.text)
+        : [],
+    );
+    expect(notes).not.toContain("never written");
+  });
+
   it("ends on SIGTERM though a command is stuck on the frozen database", { timeout: 30_000 }, async () => {
     await signalDatabase("SIGSTOP");
     wizard.send({ type: "command", requestId: "stuck", command: { kind: "resume" } });
