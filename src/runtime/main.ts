@@ -1,7 +1,7 @@
 // The trial runtime process: `bun run src/runtime/main.ts`. The launcher
 // starts it beside the web app with the same database and secret.
 import { readConfig } from "@/store/config";
-import { createDatabase } from "@/store/client";
+import { createDatabase, createSessionClient } from "@/store/client";
 import type { Plugin } from "@/core/plugins";
 import { pluginCatalog } from "@/robots/catalog";
 import { transportConfig, transportFor } from "@/robots/transports";
@@ -27,7 +27,13 @@ const robotFor = (plugin: Plugin | null, robotId: string) => {
   return choice.ok ? pluginRobot(plugin, choice.transport) : unavailableRobot(choice.reason);
 };
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
-const hosts = trialHosts(db, sql, robotFor, (...args) => announceRobot(...args), config.HRI_TRIAL_IDLE_SECONDS * 1000);
+const hosts = trialHosts(
+  db,
+  createSessionClient(config.DATABASE_URL),
+  robotFor,
+  (...args) => announceRobot(...args),
+  config.HRI_TRIAL_IDLE_SECONDS * 1000,
+);
 const relay = await eventRelay(db, sql);
 // Replays go to the simulated robot only (HRI_SIMULATOR_URL), never to the robot settings above.
 const replays = simulatorReplays(db, config.HRI_SIMULATOR_URL);

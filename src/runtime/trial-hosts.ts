@@ -26,8 +26,8 @@ export interface TrialHosts {
 
 export function trialHosts(
   db: Database,
-  /** The database client the trials' locks are taken through, on a connection of their own. */
-  sql: postgres.Sql,
+  /** A connection of its own for the trials' locks (`createSessionClient`); closed with the hosts. */
+  lockSession: postgres.Sql,
   /** The robot for a trial's plugin document; `plugin` is null when none is installed for `robotId`. */
   robotFor: (plugin: Plugin | null, robotId: string) => RobotLink | Promise<RobotLink>,
   onRobotStatus: (trialId: string, connected: boolean, detail?: string) => void,
@@ -36,7 +36,7 @@ export function trialHosts(
 ): TrialHosts {
   const hosts = new Map<string, Promise<TrialHost | null>>();
   // A lock lost with its connection and taken by another process: that process runs the trial now.
-  const locks = trialLocks(sql, (trialId) => {
+  const locks = trialLocks(lockSession, (trialId) => {
     void hosts
       .get(trialId)
       ?.then((host) => host && retire(trialId, host, false))

@@ -1,9 +1,10 @@
 // Which trials this runtime process owns: PostgreSQL advisory locks, held on
-// one connection of their own. Such locks live as long as that connection,
-// so when it dies (the database restarted, a network blip, an administrator
-// ended it) a new one is taken and every lock held is taken again on it; a
-// trial whose lock another process took meanwhile is given up, so two
-// processes never run one trial.
+// a connection of their own (`createSessionClient`). Such locks live as long
+// as that connection's session, so every lock operation also reads the
+// session's id: when it has changed (the database restarted, a network blip,
+// an administrator ended the connection), every lock held is taken again on
+// the new session, and a trial whose lock another process took meanwhile is
+// given up, so two processes never run one trial.
 import type postgres from "postgres";
 
 export interface TrialLocks {
@@ -14,79 +15,90 @@ export interface TrialLocks {
 }
 
 export function trialLocks(
-  sql: postgres.Sql,
-  /** Told of each trial lost while the connection was replaced: its host must stop. */
+  session: postgres.Sql,
+  /** Told of each trial lost with a session: its host must stop. */
   lost: (trialId: string) => void,
 ): TrialLocks {
-  let connection: Promise<postgres.ReservedSql> = sql.reserve();
   const held = new Map<string, number>();
+  let sessionId: number | null = null;
+  // One operation at a time, so a session change is noticed and mended before the next.
+  let queue: Promise<unknown> = Promise.resolve();
 
-  const lock = async (c: postgres.ReservedSql, trialId: string) =>
-    Boolean((await c`select pg_try_advisory_lock(hashtextextended(${trialId}, 0)) as ok`)[0]?.ok);
+  const tryLock = async (trialId: string) => {
+    const [row] = await session<[{ ok: boolean; pid: number }]>`
+      select pg_try_advisory_lock(hashtextextended(${trialId}, 0)) as ok, pg_backend_pid() as pid`;
+    return row;
+  };
 
-  /** A new connection, with every lock held before taken again on it. */
-  async function reconnect(broken: postgres.ReservedSql) {
-    if ((await connection) !== broken) return connection;
-    connection = (async () => {
-      try {
-        broken.release();
-      } catch {
-        // Already gone with its socket.
+  /** On a new session: every lock held before, taken again; those another process holds now, given up. */
+  async function mend(pid: number) {
+    if (sessionId === null || sessionId === pid) {
+      sessionId = pid;
+      return;
+    }
+    sessionId = pid;
+    for (const [trialId, count] of [...held]) {
+      let ok = true;
+      for (let i = 0; i < count && ok; i++) ok = (await tryLock(trialId)).ok;
+      if (!ok) {
+        held.delete(trialId);
+        lost(trialId);
       }
-      const fresh = await sql.reserve();
-      for (const [trialId, count] of [...held]) {
-        let ok = true;
-        for (let i = 0; i < count && ok; i++) ok = await lock(fresh, trialId);
-        if (!ok) {
-          held.delete(trialId);
-          lost(trialId);
-        }
-      }
-      return fresh;
-    })();
-    return connection;
-  }
-
-  /** Runs on the lock connection; once more on a new one if it had died. */
-  async function onConnection<T>(work: (c: postgres.ReservedSql) => Promise<T>): Promise<T> {
-    const c = await connection;
-    try {
-      return await work(c);
-    } catch (error) {
-      if (!isConnectionLost(error)) throw error;
-      return work(await reconnect(c));
     }
   }
 
+  /** Once more if the connection dropped under the query: the retry runs on a new session. */
+  const retried = async <T>(work: () => Promise<T>): Promise<T> => {
+    try {
+      return await work();
+    } catch (error) {
+      if (!isConnectionLost(error)) throw error;
+      return work();
+    }
+  };
+
+  const serial = <T>(work: () => Promise<T>): Promise<T> => {
+    const run = queue.then(work);
+    queue = run.catch(() => undefined);
+    return run;
+  };
+
   return {
-    async take(trialId) {
-      const ok = await onConnection((c) => lock(c, trialId));
-      if (ok) held.set(trialId, (held.get(trialId) ?? 0) + 1);
-      return ok;
-    },
-    async release(trialId) {
-      const count = held.get(trialId) ?? 0;
-      if (count === 0) return;
-      if (count === 1) held.delete(trialId);
-      else held.set(trialId, count - 1);
-      await onConnection((c) => c`select pg_advisory_unlock(hashtextextended(${trialId}, 0))`);
-    },
+    take: (trialId) =>
+      serial(async () => {
+        const { ok, pid } = await retried(() => tryLock(trialId));
+        await mend(pid);
+        if (ok) held.set(trialId, (held.get(trialId) ?? 0) + 1);
+        return ok;
+      }),
+    release: (trialId) =>
+      serial(async () => {
+        const count = held.get(trialId) ?? 0;
+        if (count === 0) return;
+        if (count === 1) held.delete(trialId);
+        else held.set(trialId, count - 1);
+        const [row] = await retried(
+          () => session<[{ pid: number }]>`
+            select pg_advisory_unlock(hashtextextended(${trialId}, 0)), pg_backend_pid() as pid`,
+        );
+        await mend(row.pid);
+      }),
     async close() {
       held.clear();
-      (await connection).release();
+      await session.end({ timeout: 5 });
     },
   };
 }
 
-/** Errors that mean the connection itself is gone, not that the query was wrong. */
+/** Errors that mean the connection itself went, not that the query was wrong. */
 function isConnectionLost(error: unknown): boolean {
-  const e = error as { code?: string; message?: string };
-  return (
-    e?.code === "CONNECTION_CLOSED" ||
-    e?.code === "CONNECTION_ENDED" ||
-    e?.code === "CONNECTION_DESTROYED" ||
-    e?.code === "57P01" || // terminated by an administrator
-    e?.code === "ECONNRESET" ||
-    /socket|connection/i.test(e?.message ?? "")
-  );
+  const e = error as { code?: string };
+  return [
+    "CONNECTION_CLOSED",
+    "CONNECTION_ENDED",
+    "CONNECTION_DESTROYED",
+    "57P01",
+    "ECONNRESET",
+    "ECONNREFUSED",
+  ].includes(e?.code ?? "");
 }

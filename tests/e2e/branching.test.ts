@@ -114,6 +114,8 @@ describe.sequential("branches that rejoin, in the browser", () => {
     await page.goto(studyUrl);
     await page.getByRole("tab", { name: "Experiments" }).click();
     await page.getByRole("button", { name: "Duplicate Planet quiz" }).click();
+    // Into this study, the dialog's first choice.
+    await page.getByRole("dialog").getByRole("button", { name: "Duplicate", exact: true }).click();
     await page.waitForURL(/\/experiments\//);
     await expect.poll(() => page.getByLabel("Experiment name").inputValue()).toBe("Planet quiz (copy)");
     await expect.poll(() => leadsTo(page)).toEqual(REJOINED);

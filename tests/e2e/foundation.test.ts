@@ -89,7 +89,7 @@ describe.sequential("the platform foundation, in the browser", () => {
     await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
     await page.getByRole("heading", { name: "Storytelling and memory (demo)" }).waitFor();
     await screenshot(page, "dashboard");
-    await page.getByRole("button", { name: "New study" }).click();
+    await page.getByRole("button", { name: "New study", exact: true }).click();
     await page.getByLabel("Title").fill("Gesture and recall");
     await page.getByLabel("Description").fill("Do a robot's gestures help listeners remember?");
     await expectAccessible(page, "the New study dialog");

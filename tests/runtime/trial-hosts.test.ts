@@ -11,6 +11,7 @@ import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots
 import { RosbridgeTransport } from "../../src/robots/transports/rosbridge";
 import { pluginRobot } from "../../src/runtime/robot-link";
 import { trialHosts, type TrialHosts } from "../../src/runtime/trial-hosts";
+import { createSessionClient } from "../../src/store/client";
 import { experiments, studies, trials } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
 
@@ -39,7 +40,7 @@ const protocol: ProtocolSnapshot = {
   ],
 };
 
-const { db, sql: client, close } = await freshDatabase();
+const { db, url, close } = await freshDatabase();
 let sim: Simulator;
 let hosts: TrialHosts;
 const IDLE_MS = 200;
@@ -48,7 +49,7 @@ beforeAll(async () => {
   sim = await startSimulator({ port: 0, nodes: simulatedRobot(plugin, { msPerChar: 0 }) });
   hosts = trialHosts(
     db,
-    client,
+    createSessionClient(url),
     () => pluginRobot(plugin, new RosbridgeTransport({ url: sim.url })),
     () => {},
     IDLE_MS,
