@@ -17,7 +17,8 @@ if (!config.DATABASE_URL || !config.BETTER_AUTH_SECRET) {
   console.error("[runtime] DATABASE_URL and BETTER_AUTH_SECRET must be set (the launcher sets both).");
   process.exit(1);
 }
-const { db, sql, close } = createDatabase(config.DATABASE_URL);
+const databaseUrl = config.DATABASE_URL;
+const { db, sql, close } = createDatabase(databaseUrl);
 for (const problem of (await pluginCatalog(db)).problems) console.error(`[runtime] plugin not loaded: ${problem}`);
 const robotSettings = transportConfig(config);
 // The plugin document is the trial's own (pinned by its version), chosen in trialHosts.
@@ -29,7 +30,7 @@ const robotFor = (plugin: Plugin | null, robotId: string) => {
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
 const hosts = trialHosts(
   db,
-  createSessionClient(config.DATABASE_URL),
+  () => createSessionClient(databaseUrl),
   robotFor,
   (...args) => announceRobot(...args),
   config.HRI_TRIAL_IDLE_SECONDS * 1000,

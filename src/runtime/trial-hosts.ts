@@ -26,8 +26,8 @@ export interface TrialHosts {
 
 export function trialHosts(
   db: Database,
-  /** A connection of its own for the trials' locks (`createSessionClient`); closed with the hosts. */
-  lockSession: postgres.Sql,
+  /** Makes the trials' lock connection (`createSessionClient`), again whenever the one before died; closed with the hosts. */
+  lockSession: () => postgres.Sql,
   /** The robot for a trial's plugin document; `plugin` is null when none is installed for `robotId`. */
   robotFor: (plugin: Plugin | null, robotId: string) => RobotLink | Promise<RobotLink>,
   onRobotStatus: (trialId: string, connected: boolean, detail?: string) => void,

@@ -4,7 +4,9 @@
 // session's id: when it has changed (the database restarted, a network blip,
 // an administrator ended the connection), every lock held is taken again on
 // the new session, and a trial whose lock another process took meanwhile is
-// given up, so two processes never run one trial.
+// given up, so two processes never run one trial. A lock query on a
+// connection that died under it can fail, or never answer at all: either way
+// the client is dropped and the query runs once more on a new one.
 import type postgres from "postgres";
 
 export interface TrialLocks {
@@ -14,11 +16,16 @@ export interface TrialLocks {
   close(): Promise<void>;
 }
 
+/** Long enough for a loaded database, short enough that a dead connection is not waited on for long. */
+const ANSWER_MS = 5000;
+
 export function trialLocks(
-  session: postgres.Sql,
+  /** A new session client (see `createSessionClient`), each time the one before is dropped. */
+  newSession: () => postgres.Sql,
   /** Told of each trial lost with a session: its host must stop. */
   lost: (trialId: string) => void,
 ): TrialLocks {
+  let session = newSession();
   const held = new Map<string, number>();
   let sessionId: number | null = null;
   // One operation at a time, so a session change is noticed and mended before the next.
@@ -47,13 +54,15 @@ export function trialLocks(
     }
   }
 
-  /** Once more if the connection dropped under the query: the retry runs on a new session. */
+  /** Once more on a new client if the connection dropped under the query, or it did not answer. */
   const retried = async <T>(work: () => Promise<T>): Promise<T> => {
     try {
-      return await work();
+      return await answered(work());
     } catch (error) {
       if (!isConnectionLost(error)) throw error;
-      return work();
+      void session.end({ timeout: 0 }).catch(() => {});
+      session = newSession();
+      return answered(work());
     }
   };
 
@@ -90,10 +99,24 @@ export function trialLocks(
   };
 }
 
-/** Errors that mean the connection itself went, not that the query was wrong. */
+const NO_ANSWER = "NO_ANSWER";
+
+function answered<T>(query: Promise<T>): Promise<T> {
+  let timer: ReturnType<typeof setTimeout> | undefined;
+  const silence = new Promise<never>((_, reject) => {
+    timer = setTimeout(
+      () => reject(Object.assign(new Error("The lock connection did not answer."), { code: NO_ANSWER })),
+      ANSWER_MS,
+    );
+  });
+  return Promise.race([query, silence]).finally(() => clearTimeout(timer));
+}
+
+/** Errors that mean the connection itself went (or went silent), not that the query was wrong. */
 function isConnectionLost(error: unknown): boolean {
   const e = error as { code?: string };
   return [
+    NO_ANSWER,
     "CONNECTION_CLOSED",
     "CONNECTION_ENDED",
     "CONNECTION_DESTROYED",

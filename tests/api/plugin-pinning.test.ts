@@ -10,6 +10,7 @@ import { eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import type { Plugin } from "../../src/core/plugins";
 import { hashCanonical } from "../../src/core/protocol/canonical";
+import { createSessionClient } from "../../src/store/client";
 import { experimentVersions, pluginDocuments } from "../../src/store/schema";
 import { trialPlugin } from "../../src/robots/trial-plugin";
 import { unavailableRobot } from "../../src/runtime/robot-link";
@@ -33,7 +34,7 @@ const files: Record<string, string> = {
   "/plugins/lab-bot.json": JSON.stringify(v1),
 };
 
-const { db, sql, close } = await freshDatabase();
+const { db, url, close } = await freshDatabase();
 const f = await buildFixture(db);
 const owner = f.api("owner");
 let server: Server;
@@ -103,11 +104,10 @@ describe("a published version pins its plugin document", async () => {
   });
 
   it("opens the trial in the runtime with exactly the pinned document", async () => {
-    const lock = await sql.reserve();
     const given: Array<Plugin | null> = [];
     const hosts = trialHosts(
       db,
-      lock,
+      () => createSessionClient(url),
       (plugin, robotId) => (given.push(plugin), unavailableRobot(`test robot for ${robotId}`)),
       () => {},
     );
@@ -116,7 +116,6 @@ describe("a published version pins its plugin document", async () => {
       expect(given.map((p) => [p?.version, topicOf(p)])).toEqual([["1.0.0", "/speech"]]);
     } finally {
       await hosts.closeAll();
-      lock.release();
     }
   });
 
@@ -131,20 +130,17 @@ describe("a published version pins its plugin document", async () => {
     await db.delete(pluginDocuments).where(eq(pluginDocuments.hash, hashCanonical(v1)));
     const reason = `Version 1 was published with a lab-bot plugin document (${hashCanonical(v1).slice(0, 12)}) that is no longer stored, so its trials cannot run. Publish the experiment again to run it with the plugin installed now.`;
     expect(await trialPlugin(db, trialId)).toEqual({ ok: false, reason });
-    const lock = await sql.reserve();
     const hosts = trialHosts(
       db,
-      lock,
+      () => createSessionClient(url),
       () => unavailableRobot("never asked"),
       () => {},
     );
     try {
-      // Another trial of the same version: the first one's lock is still held by the connection above.
       const other = await owner.trials.create({ versionId: version.id });
       await expect(hosts.get(other.id)).rejects.toThrow(reason);
     } finally {
       await hosts.closeAll();
-      lock.release();
     }
   });
 });

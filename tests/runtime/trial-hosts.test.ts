@@ -49,7 +49,7 @@ beforeAll(async () => {
   sim = await startSimulator({ port: 0, nodes: simulatedRobot(plugin, { msPerChar: 0 }) });
   hosts = trialHosts(
     db,
-    createSessionClient(url),
+    () => createSessionClient(url),
     () => pluginRobot(plugin, new RosbridgeTransport({ url: sim.url })),
     () => {},
     IDLE_MS,
