@@ -2,16 +2,16 @@
 // runtime's real transports: every SSH action of the plugin completes, the
 // posture it sets is what the robot page reads over rosbridge, and only the
 // launcher's password gets in.
-import { readFileSync } from "node:fs";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { isSshCommand, loadPlugin, type Plugin } from "../../src/core/plugins";
+import { isSshCommand } from "../../src/core/plugins";
 import { ROBOT_STATE_TOPIC, type RobotState } from "../../src/core/robots/robot-state";
 import { startDefaultSimulator } from "../../src/robots/simulator/main";
 import type { Simulator } from "../../src/robots/simulator";
 import { RosbridgeTransport } from "../../src/robots/transports/rosbridge";
 import { SshTransport } from "../../src/robots/transports/ssh";
+import { firstPartyPlugin } from "../support/plugins";
 
-const nao = (loadPlugin("nao6-ros2.json", readFileSync("plugins/nao6-ros2.json", "utf8")) as { value: Plugin }).value;
+const nao = firstPartyPlugin("nao6-ros2.json");
 const action = (id: string) => nao.actions.find((a) => a.id === id)!;
 const PASSWORD = "the-launcher-makes-one-per-start";
 
@@ -65,9 +65,7 @@ describe.sequential("the simulated NAO6 over SSH", () => {
   });
 
   it("keeps one robot state for both sides: a posture published over rosbridge is the one SSH changes", async () => {
-    const simulated = (
-      loadPlugin("simulated.json", readFileSync("plugins/simulated.json", "utf8")) as { value: Plugin }
-    ).value;
+    const simulated = firstPartyPlugin("simulated.json");
     const posture = simulated.actions.find((a) => a.id === "posture")!;
     expect(await rosbridge.dispatch(posture, { posture: "rest" })).toMatchObject({ status: "completed" });
     await shown({ posture: "rest", awake: false });

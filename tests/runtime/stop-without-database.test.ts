@@ -6,10 +6,8 @@
 // simulated one, reached over the real roslib client.
 import { execFileSync } from "node:child_process";
 import { mkdtemp, readFile, rm } from "node:fs/promises";
-import { readFileSync } from "node:fs";
 import { join } from "node:path";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { loadPlugin, type Plugin } from "../../src/core/plugins";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
 import { createAccount } from "../../src/server/auth/accounts";
@@ -18,15 +16,12 @@ import { startEmbeddedPostgres, type EmbeddedDatabase } from "../../src/store/em
 import { migrateDatabase } from "../../src/store/migrate";
 import { experimentVersions, experiments, studies, studyMembers, trials } from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
+import { firstPartyPlugin } from "../support/plugins";
 import { startRuntime } from "../support/runtime";
 import { connectTrial, type TrialSocket } from "../support/socket";
 
 const SECRET = "stop-without-database-secret".padEnd(40, "x");
-const plugin = (() => {
-  const loaded = loadPlugin("simulated.json", readFileSync("plugins/simulated.json", "utf8"));
-  if (!loaded.ok) throw new Error("the simulated robot's plugin does not load");
-  return loaded.value as Plugin;
-})();
+const plugin = firstPartyPlugin("simulated.json");
 
 const protocol: ProtocolSnapshot = {
   schemaVersion: 2,

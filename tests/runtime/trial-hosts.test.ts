@@ -2,10 +2,8 @@
 // client has followed them for a while. The robot connections and trial
 // locks a runtime holds are bounded by the trials being run, with the real
 // roslib client against the simulated robot and the real advisory locks.
-import { readFileSync } from "node:fs";
 import { sql } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { loadPlugin, type Plugin } from "../../src/core/plugins";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
 import { RosbridgeTransport } from "../../src/robots/transports/rosbridge";
@@ -14,12 +12,9 @@ import { trialHosts, type TrialHosts } from "../../src/runtime/trial-hosts";
 import { createSessionClient } from "../../src/store/client";
 import { experiments, studies, trials } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
+import { firstPartyPlugin } from "../support/plugins";
 
-const plugin = (() => {
-  const loaded = loadPlugin("simulated.json", readFileSync("plugins/simulated.json", "utf8"));
-  if (!loaded.ok) throw new Error("the simulated robot's plugin does not load");
-  return loaded.value as Plugin;
-})();
+const plugin = firstPartyPlugin("simulated.json");
 
 const protocol: ProtocolSnapshot = {
   schemaVersion: 2,

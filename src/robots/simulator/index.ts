@@ -12,16 +12,7 @@ import {
 } from "./nodes";
 
 export { startSimulator, type Simulator, type SimulatorOptions, type Received } from "./server";
-export {
-  audio,
-  battery,
-  jointStates,
-  pluginTopics,
-  robotStateReport,
-  speech,
-  testServices,
-  type RobotNode,
-} from "./nodes";
+export * from "./nodes";
 
 const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 
