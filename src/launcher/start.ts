@@ -34,6 +34,23 @@ async function main() {
   }
   const children: ChildProcess[] = [];
   let stopping = false;
+  // PostgreSQL is supervised like the other children: after kill -9 it is started again, and the
+  // runtime (which refuses commands while it is away) carries on without a restart of its own.
+  embedded?.onCrash(function restart() {
+    if (stopping) return;
+    log("PostgreSQL stopped unexpectedly; restarting it.");
+    setTimeout(
+      () =>
+        void embedded!.restart().then(
+          () => log("PostgreSQL is back."),
+          (error: unknown) => {
+            log(`PostgreSQL did not start again (${String(error)}); trying once more.`);
+            restart();
+          },
+        ),
+      500,
+    );
+  });
   const stop = async (code: number) => {
     if (stopping) return;
     stopping = true;

@@ -11,6 +11,13 @@ export interface EmbeddedDatabase {
   url: string;
   port: number;
   stop(): Promise<void>;
+  /**
+   * Told when the server dies without being asked to stop (kill -9, a crash):
+   * the launcher starts it again, on the same data and port.
+   */
+  onCrash(listener: () => void): void;
+  /** Starts the server again after a crash; committed data is recovered from its log. */
+  restart(): Promise<void>;
 }
 
 export interface EmbeddedOptions {
@@ -102,6 +109,13 @@ export async function startEmbeddedPostgres(options: EmbeddedOptions): Promise<E
   if (fresh) await pg.createDatabase("hristudio");
 
   let stopped = false;
+  let crashed: () => void = () => {};
+  // The package keeps the server's process to itself; its exit is the only sign of a crash.
+  const watch = () =>
+    (pg as unknown as { process?: import("node:child_process").ChildProcess }).process?.once("exit", () => {
+      if (!stopped) crashed();
+    });
+  watch();
   return {
     url: connectionUrl({ user: USER, password, host: "127.0.0.1", port, database: "hristudio" }),
     port,
@@ -109,6 +123,13 @@ export async function startEmbeddedPostgres(options: EmbeddedOptions): Promise<E
       if (stopped) return;
       stopped = true;
       await pg.stop();
+    },
+    onCrash(listener) {
+      crashed = listener;
+    },
+    async restart() {
+      await pg.start();
+      watch();
     },
   };
 }

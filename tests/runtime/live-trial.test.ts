@@ -1,6 +1,8 @@
 // The trial runtime over real sockets: the wizard commands, observers watch
-// and annotate but cannot command, and kill -9 of the runtime loses and
-// duplicates nothing the wizard saw acknowledged.
+// and annotate but cannot command, and kill -9 of the runtime or of
+// PostgreSQL loses and duplicates nothing the wizard saw acknowledged.
+import { readFileSync } from "node:fs";
+import { join } from "node:path";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { childPid, DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { apiClient, signIn } from "../support/http";
@@ -108,4 +110,49 @@ describe.sequential("a live trial through the runtime", () => {
     expect(Math.min(...(next.seqs as number[]))).toBeGreaterThan(lastSeen);
     resumed!.close();
   });
+
+  it("carries on through kill -9 of PostgreSQL: refused while it is down, restarted by the launcher, nothing lost or repeated", async () => {
+    const wizard = await open(wizardApi);
+    const before = await wizard.command("p1", { kind: "note", text: "before the database died" });
+    expect(before.type).toBe("ack");
+    const runtimePid = childPid(app, "runtime/main.ts");
+    const postmaster = Number(readFileSync(join(app.dataDir, "postgres", "postmaster.pid"), "utf8").split("\n")[0]);
+    process.kill(postmaster, "SIGKILL");
+    // Its backends may finish what they hold before they notice: whatever is acknowledged counts. Once it
+    // is down, a command is refused, plainly, and not held to be carried out later.
+    const acknowledged = [before];
+    let down: Record<string, unknown> = {};
+    for (let i = 0; i < 50 && down.type !== "rejected"; i++) {
+      down = await wizard.command(`p2-${i}`, { kind: "note", text: `while the database dies ${i}` });
+      if (down.type === "ack") acknowledged.push(down);
+    }
+    expect(down.type).toBe("rejected");
+    expect(String(down.reason)).not.toMatch(/SQL|ECONN|postgres/i);
+    const refusedText = `while the database dies ${acknowledged.length - 1}`;
+    // The launcher starts it again; the same runtime carries on, and the same socket is acknowledged.
+    let after: Record<string, unknown> = {};
+    for (let i = 0; i < 150 && after.type !== "ack"; i++) {
+      after = await wizard.command(`p3-${i}`, { kind: "note", text: "after the database came back" });
+      if (after.type !== "ack") await new Promise((r) => setTimeout(r, 200));
+    }
+    expect(after.type).toBe("ack");
+    expect(childPid(app, "runtime/main.ts")).toBe(runtimePid);
+    expect(app.output()).toContain("PostgreSQL stopped unexpectedly; restarting it.");
+    // Every acknowledged event is in the log once, and the one refused is not.
+    const reconnected = await open(wizardApi);
+    const logged = reconnected.messages.find((m) => m.type === "welcome")!.events as Array<{
+      seq: number;
+      type: string;
+      text?: string;
+    }>;
+    const seqs = logged.map((e) => e.seq);
+    expect(seqs).toEqual(seqs.map((_, i) => i + 1));
+    for (const reply of [...acknowledged, after]) for (const seq of reply.seqs as number[]) expect(seqs).toContain(seq);
+    const notes = logged.filter((e) => e.type === "note.added").map((e) => e.text);
+    expect(notes).toContain("before the database died");
+    expect(notes).not.toContain(refusedText);
+    expect(notes.filter((n) => n === "after the database came back")).toHaveLength(1);
+    wizard.close();
+    reconnected.close();
+  }, 120_000);
 });
