@@ -100,4 +100,29 @@ describe("a live trial host", async () => {
     expect(log.map((e) => e.seq)).toEqual([1, 2, 3, 4, 5]);
     await second.close();
   });
+
+  it("recovers when a commit's reply is lost: the events are taken as landed, never written twice", async () => {
+    const trialId = await newTrialId();
+    // The database as it is, except that the first append commits and then loses its reply, as a
+    // connection dropped between COMMIT and its answer would.
+    const real = db.$client;
+    let lose = true;
+    const lossy = ((first: unknown, ...rest: unknown[]) => {
+      const isStatement = Array.isArray(first) && "raw" in first;
+      if (!isStatement || !lose) return (real as (...a: unknown[]) => unknown)(first, ...rest);
+      lose = false;
+      return Promise.resolve((real as (...a: unknown[]) => unknown)(first, ...rest)).then(() => {
+        throw Object.assign(new Error("write CONNECTION_CLOSED"), { code: "CONNECTION_CLOSED" });
+      });
+    }) as typeof real;
+    const flaky = Object.assign(Object.create(db) as typeof db, { $client: lossy });
+    const host = await TrialHost.open(flaky, trialId, protocol, timekeeperRobot());
+    expect(await host.command({ kind: "start" }, null)).toMatchObject({ ok: true, events: [{ seq: 1 }, { seq: 2 }] });
+    expect(lose).toBe(false);
+    expect((await host.command({ kind: "next" }, null)).ok).toBe(true);
+    const log = await eventsSince(db, trialId);
+    expect(log.map((e) => e.seq)).toEqual(log.map((_, i) => i + 1));
+    expect(log.filter((e) => e.type === "trial.started")).toHaveLength(1);
+    await host.close();
+  });
 });

@@ -188,9 +188,11 @@ export class TrialHost {
     if (!decision.ok) return decision;
     const cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
     this.writingSince = Date.now();
-    const stored = await appendEvents(this.db, cursor, decision.events, actorId).finally(() => {
-      this.writingSince = null;
-    });
+    const stored = await appendEvents(this.db, cursor, decision.events, actorId)
+      .catch((error: unknown) => this.landedAnyway(error))
+      .finally(() => {
+        this.writingSince = null;
+      });
     this.state = applyAll(this.state, stored);
     this.t0 ??= startedAt(stored);
     for (const listener of this.listeners) listener(stored);
@@ -205,6 +207,18 @@ export class TrialHost {
     else this.carryOut(decision.events);
     if (this.state.status === "completed" || this.state.status === "aborted") this.lifecycle.ended();
     return { ok: true, events: stored };
+  }
+
+  /**
+   * An append that failed may still have committed, its reply lost with the
+   * connection. Only this host writes the trial (it holds the lock), so
+   * events past the last sequence number are this command's own: take them
+   * as its outcome rather than write them again or stall on a stale cursor.
+   */
+  private async landedAnyway(error: unknown): Promise<StoredEvent[]> {
+    const landed = await eventsSince(this.db, this.trialId, this.state.lastSeq).catch(() => []);
+    if (landed.length === 0) throw error;
+    return landed;
   }
 
   /** Each action held back is logged as failed, with why, so the log says it never reached the robot. */
