@@ -90,8 +90,9 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
   };
 }
 
+// A minute: a loaded machine can take that long to start the web app; a stuck one never answers.
 async function waitForHttp(url: string) {
-  for (let i = 0; i < 200; i++) {
+  for (let i = 0; i < 600; i++) {
     try {
       const res = await fetch(url);
       if (res.ok) return;
