@@ -237,13 +237,11 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
         return reject("Another wizard has just claimed this trial: you may watch it but not run it.");
       ws.data.access = { ...ws.data.access!, trial: { ...ws.data.access!.trial, wizardId: access.userId } };
     }
-    // Safety before logging: the robot stops now, whatever the database is doing.
+    // Safety before logging: the host stops the robot as it takes the command, whatever the database is doing.
+    const logged = host.command(command, access.userId);
     const halting = command.kind === "emergency_stop" || command.kind === "abort";
-    if (halting) {
-      host.halt();
-      send(ws, { type: "halted", requestId: message.requestId });
-    }
-    const result = await host.command(command, access.userId).catch((error: unknown) => {
+    if (halting) send(ws, { type: "halted", requestId: message.requestId });
+    const result = await logged.catch((error: unknown) => {
       if (!halting) throw error;
       const ref = logUnexpected(error, "logging a stop");
       return {

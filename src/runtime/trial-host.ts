@@ -36,6 +36,12 @@ const LOG_DEADLINE_MS = 1000;
 const LOG_UNAVAILABLE =
   "The trial log is not answering (the database is unavailable), so nothing was done and the robot was not told. Try again in a moment.";
 
+const NOT_CARRIED_OUT = "Not carried out: the robot was stopped after you asked for this.";
+const NOT_SENT = {
+  stopped: "Not sent: the robot was stopped before this reached it.",
+  late: "Not sent: the trial log answered too late, so this would have reached the robot late.",
+} as const;
+
 /** What the robot side and the clock report, and the stops: logged whenever the log can take them, never refused for lateness. */
 const ALWAYS_LOGGED = new Set<Command["kind"]>([
   "dispatched",
@@ -150,18 +156,17 @@ export class TrialHost {
   }
 
   /**
-   * Stops the robot now, ahead of every command waiting to be logged: safety
-   * before logging. The stop's own command is logged after, in turn; what
-   * the wizard asked for before the stop and is still waiting is dropped
-   * (see `execute`), never sent to the robot after it.
+   * Runs after every earlier command has finished, so the log never forks.
+   * An emergency stop or abort first stops the robot, at once, ahead of every
+   * command waiting to be logged: safety before logging. Its own entry is
+   * logged after, in turn; what was asked for before it and has not reached
+   * the robot is dropped (see `overtaken`), never sent after it.
    */
-  halt() {
-    this.halts++;
-    this.robot.halt();
-  }
-
-  /** Runs after every earlier command has finished, so the log never forks. */
   command(command: Command, actorId: string | null): Promise<CommandResult> {
+    if (command.kind === "emergency_stop" || command.kind === "abort") {
+      this.halts++;
+      this.robot.halt();
+    }
     const halts = this.halts;
     const asked = Date.now();
     // The log is stuck on an earlier command: refuse now rather than queue behind it.
@@ -180,10 +185,8 @@ export class TrialHost {
   ): Promise<CommandResult> {
     // A robot's late report, or a clock, after the host closed: the trial is no longer run from here.
     if (this.shut) return { ok: false, reason: "This trial is no longer open here. Reload the page." };
-    if (halts !== this.halts && MOVES_THE_ROBOT.has(command.kind))
-      return { ok: false, reason: "Not carried out: the robot was stopped after you asked for this." };
-    const late = () => !ALWAYS_LOGGED.has(command.kind) && Date.now() - asked > LOG_DEADLINE_MS;
-    if (late()) return { ok: false, reason: LOG_UNAVAILABLE };
+    const before = this.overtaken(command, halts, asked);
+    if (before) return { ok: false, reason: before === "stopped" ? NOT_CARRIED_OUT : LOG_UNAVAILABLE };
     const decision = decide(this.protocol, this.state, command);
     if (!decision.ok) return decision;
     const cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
@@ -198,15 +201,18 @@ export class TrialHost {
     for (const listener of this.listeners) listener(stored);
     // Stopped, or the log answered too late, while this was being logged: it is in the log as asked
     // for, and goes no further.
-    if (halts !== this.halts) this.withhold(decision.events, "Not sent: the robot was stopped before this reached it.");
-    else if (late())
-      this.withhold(
-        decision.events,
-        "Not sent: the trial log answered too late, so this would have reached the robot late.",
-      );
+    const after = this.overtaken(command, halts, asked);
+    if (after) this.withhold(decision.events, NOT_SENT[after]);
     else this.carryOut(decision.events);
     if (this.state.status === "completed" || this.state.status === "aborted") this.lifecycle.ended();
     return { ok: true, events: stored };
+  }
+
+  /** Whether a command was overtaken since it was asked for: by a stop, or by the log's deadline. */
+  private overtaken(command: Command, halts: number, asked: number): "stopped" | "late" | null {
+    if (halts !== this.halts && MOVES_THE_ROBOT.has(command.kind)) return "stopped";
+    if (!ALWAYS_LOGGED.has(command.kind) && Date.now() - asked > LOG_DEADLINE_MS) return "late";
+    return null;
   }
 
   /**
@@ -231,7 +237,6 @@ export class TrialHost {
   /** What happens in the world once the events are committed. */
   private carryOut(events: EngineEvent[]) {
     for (const event of events) {
-      if (event.type === "trial.emergency_stop" || event.type === "trial.aborted") this.robot.halt();
       if (event.type !== "action.requested") continue;
       const report = (command: Command) => {
         if (command.kind === "dispatched" && command.detail?.playedBy === "browser")
