@@ -30,9 +30,12 @@ const BLOCKS_WITHOUT_ROBOT = new Set<string>(CONTROL_TYPES);
  * How long the trial log may take to answer before the wizard's commands are
  * refused rather than held: a command carried out late (a line spoken 17 s
  * after it was asked for, in the middle of something else) is worse than one
- * refused plainly and asked again.
+ * refused plainly and asked again. Three seconds, not one: a database busy
+ * with a backup or a heavy export can take more than a second to commit, and
+ * a line dropped then is a false alarm; a dead one refuses at once anyway
+ * (its connection is refused).
  */
-const LOG_DEADLINE_MS = 1000;
+const LOG_DEADLINE_MS = 3000;
 const LOG_UNAVAILABLE =
   "The trial log is not answering (the database is unavailable), so nothing was done and the robot was not told. Try again in a moment.";
 
