@@ -125,4 +125,82 @@ describe("a live trial host", async () => {
     expect(log.filter((e) => e.type === "trial.started")).toHaveLength(1);
     await host.close();
   });
+
+  /** The database as it is, except that `wrap` decides what the next append (only that one) does. */
+  const withNextAppend = (wrap: (append: () => Promise<unknown>) => Promise<unknown>) => {
+    const real = db.$client;
+    let armed = false;
+    const client = ((first: unknown, ...rest: unknown[]) => {
+      const isStatement = Array.isArray(first) && "raw" in first;
+      const call = () => (real as (...a: unknown[]) => unknown)(first, ...rest);
+      if (!isStatement || !armed) return call();
+      armed = false;
+      return wrap(() => Promise.resolve(call()));
+    }) as typeof real;
+    return { db: Object.assign(Object.create(db) as typeof db, { $client: client }), arm: () => (armed = true) };
+  };
+  const recordingRobot = () => {
+    const performed: string[] = [];
+    return {
+      performed,
+      robot: { ...timekeeperRobot(), perform: (r: { actionId: string }) => performed.push(r.actionId) },
+    };
+  };
+  const say = (actionId: string) =>
+    ({ kind: "unscripted", actionId, actionType: "say", parameters: { text: actionId } }) as const;
+
+  it("answers the wizard by the log's deadline though the write has not returned, and never sends what lands after it", async () => {
+    const trialId = await newTrialId();
+    const slow = withNextAppend((append) => new Promise((r) => setTimeout(r, 3600)).then(append));
+    const { performed, robot } = recordingRobot();
+    const host = await TrialHost.open(slow.db, trialId, protocol, robot);
+    expect((await host.command({ kind: "start" }, null)).ok).toBe(true);
+    slow.arm();
+    const answer = await host.command(say("slow-line"), null);
+    expect(answer).toMatchObject({ ok: false, reason: expect.stringMatching(/^The trial log did not answer in time/) });
+    // The write lands after the answer: in the log as asked for, then failed as never sent.
+    await settle(host, () => host.current.actions["slow-line"]?.status === "failed");
+    const log = await eventsSince(db, trialId);
+    expect(log.slice(-2)).toMatchObject([
+      { type: "action.requested", actionId: "slow-line" },
+      {
+        type: "action.failed",
+        actionId: "slow-line",
+        reason: expect.stringMatching(/^Not sent: the trial log answered too late/),
+      },
+    ]);
+    expect(performed).toEqual([]);
+    await host.close();
+  });
+
+  it("takes in a write it was told had failed that lands later, refuses the command that meets it, and never sends it", async () => {
+    const trialId = await newTrialId();
+    // Refused at once, committed a moment later: as a statement sent just before its connection broke.
+    const ghost = withNextAppend((append) => {
+      setTimeout(() => void append(), 100);
+      return Promise.reject(Object.assign(new Error("write CONNECTION_CLOSED"), { code: "CONNECTION_CLOSED" }));
+    });
+    const { performed, robot } = recordingRobot();
+    const host = await TrialHost.open(ghost.db, trialId, protocol, robot);
+    expect((await host.command({ kind: "start" }, null)).ok).toBe(true);
+    ghost.arm();
+    await expect(host.command(say("ghost-line"), null)).rejects.toThrow("CONNECTION_CLOSED");
+    await expect.poll(async () => (await eventsSince(db, trialId)).length).toBe(3);
+    expect(await host.command({ kind: "note", text: "after" }, null)).toEqual({
+      ok: false,
+      reason: expect.stringMatching(/^Not carried out: an earlier command reached the trial log late/),
+    });
+    await settle(host, () => host.current.actions["ghost-line"]?.status === "failed");
+    const log = await eventsSince(db, trialId);
+    expect(log.map((e) => e.seq)).toEqual(log.map((_, i) => i + 1));
+    expect(log.slice(2)).toMatchObject([
+      { type: "action.requested", actionId: "ghost-line" },
+      { type: "action.failed", actionId: "ghost-line", reason: expect.stringMatching(/^Not sent/) },
+    ]);
+    expect(log.some((e) => e.type === "note.added")).toBe(false);
+    expect(performed).toEqual([]);
+    // The host carries on from the log as it is.
+    expect(await host.command({ kind: "note", text: "after" }, null)).toMatchObject({ ok: true });
+    await host.close();
+  });
 });

@@ -11,8 +11,9 @@ import {
   type TrialProtocol,
   type TrialState,
 } from "@/core/trial";
-import type { Database } from "@/store/client";
-import { appendEvents, eventsSince } from "@/store/event-store";
+import { type Database, neverReachedDatabase } from "@/store/client";
+import { appendEvents, eventsSince, type TrialCursor } from "@/store/event-store";
+import { areTheseEvents } from "@/core/trial/landed";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import type { RobotLink } from "./robot";
 import { sampleRecorder } from "./samples";
@@ -38,6 +39,16 @@ const BLOCKS_WITHOUT_ROBOT = new Set<string>(CONTROL_TYPES);
 const LOG_DEADLINE_MS = 3000;
 const LOG_UNAVAILABLE =
   "The trial log is not answering (the database is unavailable), so nothing was done and the robot was not told. Try again in a moment.";
+
+const NOT_ANSWERED =
+  "The trial log did not answer in time (the database may be down or overloaded), so the robot was not told. Should the log take this late, it appears there with its robot actions marked not sent: check the log before asking again.";
+
+const STOP_NOT_LOGGED =
+  "The robot was stopped, but the trial log is not answering (the database is unavailable), so the stop is not in it.";
+const STOP_UNCONFIRMED =
+  "The robot was stopped, but the trial log did not confirm the stop: should it take it late, it appears there.";
+const LOG_MOVED =
+  "Not carried out: an earlier command reached the trial log late and is shown there now. Check the log before asking again.";
 
 const NOT_CARRIED_OUT = "Not carried out: the robot was stopped after you asked for this.";
 const NOT_SENT = {
@@ -65,6 +76,22 @@ const MOVES_THE_ROBOT = new Set<Command["kind"]>([
   "unscripted",
   "resume",
 ]);
+
+/**
+ * The wizard is answered by the log's deadline, even when the write under way
+ * never returns (a connection caught by a restart of the database): past it,
+ * the write, if it lands at all, is marked "not sent" (see `overtaken`). The
+ * margin keeps the two on the same side of the deadline.
+ */
+const DEADLINE_MARGIN_MS = 250;
+
+function answeredBy(run: Promise<CommandResult>, at: number): Promise<CommandResult> {
+  let timer: ReturnType<typeof setTimeout> | undefined;
+  const late = new Promise<CommandResult>((resolve) => {
+    timer = setTimeout(() => resolve({ ok: false, reason: NOT_ANSWERED }), Math.max(0, at - Date.now()));
+  });
+  return Promise.race([run, late]).finally(() => clearTimeout(timer));
+}
 
 export class TrialHost {
   private state: TrialState;
@@ -177,7 +204,7 @@ export class TrialHost {
       return Promise.resolve({ ok: false, reason: LOG_UNAVAILABLE });
     const run = this.queue.then(() => this.execute(command, actorId, halts, asked));
     this.queue = run.catch(() => undefined);
-    return run;
+    return ALWAYS_LOGGED.has(command.kind) ? run : answeredBy(run, asked + LOG_DEADLINE_MS + DEADLINE_MARGIN_MS);
   }
 
   private async execute(
@@ -194,21 +221,59 @@ export class TrialHost {
     if (!decision.ok) return decision;
     const cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
     this.writingSince = Date.now();
-    const stored = await appendEvents(this.db, cursor, decision.events, actorId)
-      .catch((error: unknown) => this.landedAnyway(error))
-      .finally(() => {
-        this.writingSince = null;
-      });
-    this.state = applyAll(this.state, stored);
-    this.t0 ??= startedAt(stored);
-    for (const listener of this.listeners) listener(stored);
+    const written = await this.write(cursor, decision.events, actorId).finally(() => {
+      this.writingSince = null;
+    });
+    const halting = command.kind === "emergency_stop" || command.kind === "abort";
+    if (written === "refused") return { ok: false, reason: halting ? STOP_NOT_LOGGED : LOG_UNAVAILABLE };
+    if (written === "unknown") return { ok: false, reason: halting ? STOP_UNCONFIRMED : NOT_ANSWERED };
+    if (written.earlier) {
+      // An earlier command the wizard was told had not answered in time, landed late: taken in, never sent.
+      this.take(written.events, NOT_SENT.late);
+      // A report of the robot's, or a stop, is a fact the log must hold: written again after it.
+      if (ALWAYS_LOGGED.has(command.kind)) return this.execute(command, actorId, halts, asked);
+      return { ok: false, reason: LOG_MOVED };
+    }
     // Stopped, or the log answered too late, while this was being logged: it is in the log as asked
     // for, and goes no further.
     const after = this.overtaken(command, halts, asked);
-    if (after) this.withhold(decision.events, NOT_SENT[after]);
-    else this.carryOut(decision.events);
+    this.take(written.events, after && NOT_SENT[after]);
+    return { ok: true, events: written.events };
+  }
+
+  /** Committed events: into the state, to every client, then to the robot unless `withheld` says why not. */
+  private take(stored: StoredEvent[], withheld: string | null) {
+    this.state = applyAll(this.state, stored);
+    this.t0 ??= startedAt(stored);
+    for (const listener of this.listeners) listener(stored);
+    if (withheld) this.withhold(stored, withheld);
+    else this.carryOut(stored);
     if (this.state.status === "completed" || this.state.status === "aborted") this.lifecycle.ended();
-    return { ok: true, events: stored };
+  }
+
+  /**
+   * Appends, and when the append fails, finds out what the log holds: a
+   * commit whose reply was lost is still a commit. Only this host writes the
+   * trial (it holds the lock), so events past its cursor are its own: this
+   * command's (taken as its outcome, never written twice), or an earlier
+   * command's that landed late (`earlier`). "refused" when the statement
+   * never reached the database; "unknown" when the log cannot be read either:
+   * a later append meets whatever landed.
+   */
+  private async write(
+    cursor: TrialCursor,
+    events: EngineEvent[],
+    actorId: string | null,
+  ): Promise<{ events: StoredEvent[]; earlier: boolean } | "refused" | "unknown"> {
+    try {
+      return { events: await appendEvents(this.db, cursor, events, actorId), earlier: false };
+    } catch (error) {
+      if (neverReachedDatabase(error)) return "refused";
+      const landed = await eventsSince(this.db, this.trialId, cursor.lastSeq).catch(() => null);
+      if (landed === null) return "unknown";
+      if (landed.length === 0) throw error;
+      return { events: landed, earlier: !areTheseEvents(landed, events) };
+    }
   }
 
   /** Whether a command was overtaken since it was asked for: by a stop, or by the log's deadline. */
@@ -216,18 +281,6 @@ export class TrialHost {
     if (halts !== this.halts && MOVES_THE_ROBOT.has(command.kind)) return "stopped";
     if (!ALWAYS_LOGGED.has(command.kind) && Date.now() - asked > LOG_DEADLINE_MS) return "late";
     return null;
-  }
-
-  /**
-   * An append that failed may still have committed, its reply lost with the
-   * connection. Only this host writes the trial (it holds the lock), so
-   * events past the last sequence number are this command's own: take them
-   * as its outcome rather than write them again or stall on a stale cursor.
-   */
-  private async landedAnyway(error: unknown): Promise<StoredEvent[]> {
-    const landed = await eventsSince(this.db, this.trialId, this.state.lastSeq).catch(() => []);
-    if (landed.length === 0) throw error;
-    return landed;
   }
 
   /** Each action held back is logged as failed, with why, so the log says it never reached the robot. */

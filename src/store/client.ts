@@ -4,8 +4,23 @@ import * as schema from "./schema";
 
 export type Database = ReturnType<typeof createDatabase>["db"];
 
+/**
+ * How every client of ours reconnects after the database went away. The
+ * driver's defaults wait up to 20 s between attempts (its backoff grows with
+ * every refused connection, 3^n / 100 s) and 30 s for a connection to open:
+ * after a restart of PostgreSQL, queries waited for a connection that had
+ * long been possible, and one caught mid-connect by the restart waited for
+ * good. A wizard's command must be answered in seconds, so attempts are
+ * retried within a second and a connection that does not open in 5 s fails
+ * the query, plainly.
+ */
+const RECONNECT = {
+  backoff: (attempt: number) => Math.min(0.05 * 2 ** attempt, 1),
+  connect_timeout: 5,
+} as const;
+
 export function createDatabase(url: string, options: { max?: number } = {}) {
-  const sql = postgres(url, { max: options.max ?? 10, onnotice: () => {} });
+  const sql = postgres(url, { max: options.max ?? 10, onnotice: () => {}, ...RECONNECT });
   const db = drizzle(sql, { schema });
   return { db, sql, close: () => sql.end({ timeout: 5 }) };
 }
@@ -16,5 +31,15 @@ export function createDatabase(url: string, options: { max?: number } = {}) {
  * and the caller sees the change in `pg_backend_pid()`.
  */
 export function createSessionClient(url: string) {
-  return postgres(url, { max: 1, max_lifetime: null, idle_timeout: 0, onnotice: () => {} });
+  return postgres(url, { max: 1, max_lifetime: null, idle_timeout: 0, onnotice: () => {}, ...RECONNECT });
+}
+
+/**
+ * Errors raised before a statement reached the server (nothing listened, the
+ * server was still starting, no connection opened in time): nothing of it can
+ * have been stored. Any other failure may have committed.
+ */
+export function neverReachedDatabase(error: unknown): boolean {
+  const code = (error as { code?: string } | null)?.code ?? "";
+  return ["ECONNREFUSED", "CONNECT_TIMEOUT", "57P03"].includes(code);
 }

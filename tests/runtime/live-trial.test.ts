@@ -128,18 +128,20 @@ describe.sequential("a live trial through the runtime", () => {
     }
     expect(down.type).toBe("rejected");
     expect(String(down.reason)).not.toMatch(/SQL|ECONN|postgres/i);
-    const refusedText = `while the database dies ${acknowledged.length - 1}`;
-    // The launcher starts it again; the same runtime carries on, and the same socket is acknowledged.
+    // The launcher starts it again; the same runtime carries on, and the same socket is acknowledged. Until
+    // then each command is answered (refused, or not confirmed in time), never left without an answer.
     let after: Record<string, unknown> = {};
+    let text = "";
     for (let i = 0; i < 150 && after.type !== "ack"; i++) {
-      after = await wizard.command(`p3-${i}`, { kind: "note", text: "after the database came back" });
+      text = `after the database came back ${i}`;
+      after = await wizard.command(`p3-${i}`, { kind: "note", text });
       if (after.type !== "ack") await new Promise((r) => setTimeout(r, 200));
     }
     expect(after.type).toBe("ack");
     expect(childPid(app, "runtime/main.ts")).toBe(runtimePid);
     expect(app.output()).toContain("PostgreSQL stopped unexpectedly; restarting it.");
-    // Every acknowledged event is in the log once, and the one refused is not: the socket was sent the
-    // whole log at hello and every event after it.
+    // Every acknowledged event is in the log once, and nothing twice: the socket was sent the whole log at
+    // hello and every event after it. Refused plainly (the database was not there), a note is not in the log.
     const logged = wizard.messages.flatMap(
       (m) => (m.events as Array<{ seq: number; type: string; text?: string }> | undefined) ?? [],
     );
@@ -148,8 +150,19 @@ describe.sequential("a live trial through the runtime", () => {
     for (const reply of [...acknowledged, after]) for (const seq of reply.seqs as number[]) expect(seqs).toContain(seq);
     const notes = logged.filter((e) => e.type === "note.added").map((e) => e.text);
     expect(notes).toContain("before the database died");
-    expect(notes).not.toContain(refusedText);
-    expect(notes.filter((n) => n === "after the database came back")).toHaveLength(1);
+    expect(notes.filter((n) => n === text)).toHaveLength(1);
+    expect(new Set(notes).size).toBe(notes.length);
+    const refusedPlainly = wizard.messages.filter(
+      (m) => m.type === "rejected" && String(m.reason).startsWith("The trial log is not answering"),
+    );
+    expect(refusedPlainly.length).toBeGreaterThan(0);
+    const sent = new Map(
+      [...Array(150).keys()].flatMap((i) => [
+        [`p2-${i}`, `while the database dies ${i}`],
+        [`p3-${i}`, `after the database came back ${i}`],
+      ]),
+    );
+    for (const refusal of refusedPlainly) expect(notes).not.toContain(sent.get(String(refusal.requestId)));
     wizard.close();
   }, 120_000);
 });
