@@ -223,7 +223,7 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
     if (message.command.kind === "played") {
       const played = await host.browserPlayed(message.command.actionId, message.command.failed, access.userId);
       return played.ok
-        ? send(ws, { type: "ack", requestId: message.requestId, seqs: played.events.map((e) => e.seq) })
+        ? send(ws, { type: "ack", requestId: message.requestId, seqs: played.seqs })
         : reject(played.reason);
     }
     const command =
@@ -238,9 +238,10 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
       ws.data.access = { ...ws.data.access!, trial: { ...ws.data.access!.trial, wizardId: access.userId } };
     }
     // Safety before logging: the host stops the robot as it takes the command, whatever the database is doing.
-    const logged = host.command(command, access.userId);
+    const logged = host.command(command, access.userId, { id: message.requestId, retry: message.retry });
     const halting = command.kind === "emergency_stop" || command.kind === "abort";
-    if (halting) send(ws, { type: "halted", requestId: message.requestId });
+    // Asked again, a stop halted the robot the first time it arrived, or not at all (the answer says which).
+    if (halting && !message.retry) send(ws, { type: "halted", requestId: message.requestId });
     const result = await logged.catch((error: unknown) => {
       if (!halting) throw error;
       const ref = logUnexpected(error, "logging a stop");
@@ -249,7 +250,7 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
         reason: `The robot was stopped, but the stop could not be logged (reference ${ref}).`,
       };
     });
-    if (result.ok) send(ws, { type: "ack", requestId: message.requestId, seqs: result.events.map((e) => e.seq) });
+    if (result.ok) send(ws, { type: "ack", requestId: message.requestId, seqs: result.seqs });
     else reject(result.reason);
   }
 

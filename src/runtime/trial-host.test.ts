@@ -117,7 +117,7 @@ describe("a live trial host", async () => {
     }) as typeof real;
     const flaky = Object.assign(Object.create(db) as typeof db, { $client: lossy });
     const host = await TrialHost.open(flaky, trialId, protocol, timekeeperRobot());
-    expect(await host.command({ kind: "start" }, null)).toMatchObject({ ok: true, events: [{ seq: 1 }, { seq: 2 }] });
+    expect(await host.command({ kind: "start" }, null)).toEqual({ ok: true, seqs: [1, 2] });
     expect(lose).toBe(false);
     expect((await host.command({ kind: "next" }, null)).ok).toBe(true);
     const log = await eventsSince(db, trialId);
@@ -202,5 +202,33 @@ describe("a live trial host", async () => {
     // The host carries on from the log as it is.
     expect(await host.command({ kind: "note", text: "after" }, null)).toMatchObject({ ok: true });
     await host.close();
+  });
+
+  it("carries out a request once, answering the same id again with its first outcome, after a restart too", async () => {
+    const trialId = await newTrialId();
+    const first = await TrialHost.open(db, trialId, protocol, timekeeperRobot());
+    expect(await first.command({ kind: "start" }, null, { id: "start-1" })).toEqual({ ok: true, seqs: [1, 2] });
+    const note = { kind: "note", text: "once" } as const;
+    const answer = await first.command(note, null, { id: "note-1" });
+    expect(answer).toEqual({ ok: true, seqs: [3] });
+    // Sent again on the same connection, and as a retry after a reconnect: the same answer, nothing written.
+    expect(await first.command(note, null, { id: "note-1" })).toEqual(answer);
+    expect(await first.command(note, null, { id: "note-1", retry: true })).toEqual(answer);
+    // A refusal is an outcome too.
+    const refused = await first.command({ kind: "jump", stepId: "nowhere" }, null, { id: "jump-1" });
+    expect(refused.ok).toBe(false);
+    expect(await first.command({ kind: "jump", stepId: "nowhere" }, null, { id: "jump-1" })).toEqual(refused);
+    // The runtime restarts: the log still knows the request.
+    const second = await TrialHost.open(db, trialId, protocol, timekeeperRobot());
+    expect(await second.command(note, null, { id: "note-1", retry: true })).toEqual(answer);
+    // A retry of a request the trial never received is not carried out now, late.
+    expect(await second.command(note, null, { id: "note-2", retry: true })).toEqual({
+      ok: false,
+      reason: "Not carried out: the connection dropped before this reached the trial. Ask again if you still want it.",
+    });
+    const notes = (await eventsSince(db, trialId)).filter((e) => e.type === "note.added");
+    expect(notes).toHaveLength(1);
+    await first.close();
+    await second.close();
   });
 });

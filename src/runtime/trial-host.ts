@@ -12,7 +12,7 @@ import {
   type TrialState,
 } from "@/core/trial";
 import { type Database, neverReachedDatabase } from "@/store/client";
-import { appendEvents, eventsSince, type TrialCursor } from "@/store/event-store";
+import { answeredRequests, appendEvents, eventsSince, type TrialCursor } from "@/store/event-store";
 import { areTheseEvents } from "@/core/trial/landed";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import type { RobotLink } from "./robot";
@@ -23,7 +23,13 @@ function startedAt(events: StoredEvent[]): number | null {
   return started ? started.serverTime.getTime() : null;
 }
 
-export type CommandResult = { ok: true; events: StoredEvent[] } | { ok: false; reason: string };
+export type CommandResult = { ok: true; seqs: number[] } | { ok: false; reason: string };
+
+/** A wizard's request: its id is the command's idempotency key; `retry` asks again after a dropped connection. */
+export interface Request {
+  id: string;
+  retry?: boolean;
+}
 
 const BLOCKS_WITHOUT_ROBOT = new Set<string>(CONTROL_TYPES);
 
@@ -49,6 +55,9 @@ const STOP_UNCONFIRMED =
   "The robot was stopped, but the trial log did not confirm the stop: should it take it late, it appears there.";
 const LOG_MOVED =
   "Not carried out: an earlier command reached the trial log late and is shown there now. Check the log before asking again.";
+
+const NEVER_ARRIVED =
+  "Not carried out: the connection dropped before this reached the trial. Ask again if you still want it.";
 
 const NOT_CARRIED_OUT = "Not carried out: the robot was stopped after you asked for this.";
 const NOT_SENT = {
@@ -111,6 +120,8 @@ export class TrialHost {
   private readonly stopWatching: () => void;
   /** The trial's t0, once started: samples are timed from it. */
   private t0: number | null;
+  /** Each request's outcome by its id, so a request sent again is answered, never carried out twice. */
+  private readonly requests = new Map<string, Promise<CommandResult>>();
 
   private constructor(
     private readonly db: Database,
@@ -133,6 +144,8 @@ export class TrialHost {
   /** Rebuilds the trial from its events; actions cut off by a restart are marked failed. */
   static async open(db: Database, trialId: string, protocol: TrialProtocol, robot: RobotLink) {
     const host = new TrialHost(db, trialId, protocol, robot, await eventsSince(db, trialId));
+    for (const [id, seqs] of await answeredRequests(db, trialId))
+      host.requests.set(id, Promise.resolve({ ok: true, seqs }));
     const interrupted = Object.entries(host.state.actions).filter(
       ([, a]) => a.status === "requested" || a.status === "running",
     );
@@ -190,9 +203,23 @@ export class TrialHost {
    * An emergency stop or abort first stops the robot, at once, ahead of every
    * command waiting to be logged: safety before logging. Its own entry is
    * logged after, in turn; what was asked for before it and has not reached
-   * the robot is dropped (see `overtaken`), never sent after it.
+   * the robot is dropped (see `overtaken`), never sent after it. A request
+   * seen before is answered with its first outcome.
    */
-  command(command: Command, actorId: string | null): Promise<CommandResult> {
+  command(command: Command, actorId: string | null, request?: Request): Promise<CommandResult> {
+    if (request) {
+      const first = this.requests.get(request.id);
+      if (first) return first;
+      // Asked again after a dropped connection, and never seen: too late to carry out now.
+      if (request.retry) return Promise.resolve({ ok: false, reason: NEVER_ARRIVED });
+      const answer = this.enqueue(command, actorId, request.id);
+      this.requests.set(request.id, answer);
+      return answer;
+    }
+    return this.enqueue(command, actorId, null);
+  }
+
+  private enqueue(command: Command, actorId: string | null, requestId: string | null): Promise<CommandResult> {
     if (command.kind === "emergency_stop" || command.kind === "abort") {
       this.halts++;
       this.robot.halt();
@@ -202,7 +229,7 @@ export class TrialHost {
     // The log is stuck on an earlier command: refuse now rather than queue behind it.
     if (!ALWAYS_LOGGED.has(command.kind) && this.writingSince !== null && asked - this.writingSince > LOG_DEADLINE_MS)
       return Promise.resolve({ ok: false, reason: LOG_UNAVAILABLE });
-    const run = this.queue.then(() => this.execute(command, actorId, halts, asked));
+    const run = this.queue.then(() => this.execute(command, actorId, requestId, halts, asked));
     this.queue = run.catch(() => undefined);
     return ALWAYS_LOGGED.has(command.kind) ? run : answeredBy(run, asked + LOG_DEADLINE_MS + DEADLINE_MARGIN_MS);
   }
@@ -210,6 +237,7 @@ export class TrialHost {
   private async execute(
     command: Command,
     actorId: string | null,
+    requestId: string | null,
     halts: number,
     asked: number,
   ): Promise<CommandResult> {
@@ -221,7 +249,7 @@ export class TrialHost {
     if (!decision.ok) return decision;
     const cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
     this.writingSince = Date.now();
-    const written = await this.write(cursor, decision.events, actorId).finally(() => {
+    const written = await this.write(cursor, decision.events, actorId, requestId).finally(() => {
       this.writingSince = null;
     });
     const halting = command.kind === "emergency_stop" || command.kind === "abort";
@@ -231,14 +259,14 @@ export class TrialHost {
       // An earlier command the wizard was told had not answered in time, landed late: taken in, never sent.
       this.take(written.events, NOT_SENT.late);
       // A report of the robot's, or a stop, is a fact the log must hold: written again after it.
-      if (ALWAYS_LOGGED.has(command.kind)) return this.execute(command, actorId, halts, asked);
+      if (ALWAYS_LOGGED.has(command.kind)) return this.execute(command, actorId, requestId, halts, asked);
       return { ok: false, reason: LOG_MOVED };
     }
     // Stopped, or the log answered too late, while this was being logged: it is in the log as asked
     // for, and goes no further.
     const after = this.overtaken(command, halts, asked);
     this.take(written.events, after && NOT_SENT[after]);
-    return { ok: true, events: written.events };
+    return { ok: true, seqs: written.events.map((e) => e.seq) };
   }
 
   /** Committed events: into the state, to every client, then to the robot unless `withheld` says why not. */
@@ -264,9 +292,10 @@ export class TrialHost {
     cursor: TrialCursor,
     events: EngineEvent[],
     actorId: string | null,
+    requestId: string | null,
   ): Promise<{ events: StoredEvent[]; earlier: boolean } | "refused" | "unknown"> {
     try {
-      return { events: await appendEvents(this.db, cursor, events, actorId), earlier: false };
+      return { events: await appendEvents(this.db, cursor, events, actorId, { requestId }), earlier: false };
     } catch (error) {
       if (neverReachedDatabase(error)) return "refused";
       const landed = await eventsSince(this.db, this.trialId, cursor.lastSeq).catch(() => null);

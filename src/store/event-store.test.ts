@@ -20,14 +20,14 @@ describe("the trial event store", async () => {
     const trialId = await newTrial();
     let clock = Date.parse("2026-01-01T10:00:00Z");
     const now = () => new Date(clock);
-    await appendEvents(db, await cursor(trialId), [{ type: "note.added", text: "before" }], null, now);
+    await appendEvents(db, await cursor(trialId), [{ type: "note.added", text: "before" }], null, { now });
     clock += 1000;
     await appendEvents(
       db,
       await cursor(trialId),
       [{ type: "trial.started" }, { type: "step.entered", stepId: "s1", via: "start" }],
       null,
-      now,
+      { now },
     );
     clock += 2500;
     const [skipped] = await appendEvents(
@@ -35,7 +35,7 @@ describe("the trial event store", async () => {
       await cursor(trialId),
       [{ type: "action.skipped", stepId: "s1", actionId: "a1", deviation: "skipped" }],
       null,
-      now,
+      { now },
     );
     expect(skipped).toMatchObject({ seq: 4, relMs: 2500, deviation: "skipped", actionId: "a1" });
     const all = await eventsSince(db, trialId);
@@ -46,7 +46,7 @@ describe("the trial event store", async () => {
       [4, "action.skipped", 2500],
     ]);
     expect((await eventsSince(db, trialId, 2)).map((e) => e.seq)).toEqual([3, 4]);
-    await appendEvents(db, await cursor(trialId), [{ type: "trial.completed" }], null, now);
+    await appendEvents(db, await cursor(trialId), [{ type: "trial.completed" }], null, { now });
     const [trial] = await db.select().from(trials).where(eq(trials.id, trialId));
     expect(trial).toMatchObject({
       status: "completed",

@@ -1,6 +1,6 @@
 // The trial's append-only log in PostgreSQL. An event exists once its
 // transaction commits; only then may anyone be told about it.
-import { and, asc, eq, gt } from "drizzle-orm";
+import { and, asc, eq, gt, isNotNull } from "drizzle-orm";
 import type { EngineEvent, StoredEvent } from "@/core/trial";
 import type { Database } from "./client";
 import { trialEvents, type trials } from "./schema";
@@ -49,10 +49,10 @@ export async function appendEvents(
   cursor: TrialCursor,
   events: EngineEvent[],
   actorId: string | null,
-  now: () => Date = () => new Date(),
+  options: { now?: () => Date; requestId?: string | null } = {},
 ): Promise<StoredEvent[]> {
   if (events.length === 0) return [];
-  const at = now();
+  const at = (options.now ?? (() => new Date()))();
   let t0 = cursor.t0;
   let status: string | null = null;
   const rows = events.map((event, i) => {
@@ -69,6 +69,7 @@ export async function appendEvents(
       action_id: "actionId" in event ? event.actionId : null,
       payload: event,
       deviation: Boolean(event.deviation),
+      request_id: options.requestId ?? null,
     };
   });
   const ended = status === "completed" || status === "aborted";
@@ -81,7 +82,7 @@ export async function appendEvents(
   const client = db.$client;
   await client`
     with appended as (
-      insert into trial_events ${client(wire, "trial_id", "seq", "type", "server_time", "rel_ms", "actor_id", "step_id", "action_id", "payload", "deviation")}
+      insert into trial_events ${client(wire, "trial_id", "seq", "type", "server_time", "rel_ms", "actor_id", "step_id", "action_id", "payload", "deviation", "request_id")}
     ), moved as (
       update trials set
         t0 = coalesce(t0, ${t0?.toISOString() ?? null}::timestamptz),
@@ -108,4 +109,16 @@ export async function eventsSince(db: Database, trialId: string, afterSeq = 0): 
     .where(and(eq(trialEvents.trialId, trialId), gt(trialEvents.seq, afterSeq)))
     .orderBy(asc(trialEvents.seq));
   return rows.map(toStored);
+}
+
+/** The seqs each request of the trial's wizard was answered with: what a request sent again is answered from. */
+export async function answeredRequests(db: Database, trialId: string): Promise<Map<string, number[]>> {
+  const rows = await db
+    .select({ requestId: trialEvents.requestId, seq: trialEvents.seq })
+    .from(trialEvents)
+    .where(and(eq(trialEvents.trialId, trialId), isNotNull(trialEvents.requestId)))
+    .orderBy(asc(trialEvents.seq));
+  const answered = new Map<string, number[]>();
+  for (const { requestId, seq } of rows) answered.set(requestId!, [...(answered.get(requestId!) ?? []), seq]);
+  return answered;
 }

@@ -55,7 +55,7 @@ async function store(trialId: string, events: EngineEvent[]) {
   const cursor: TrialCursor = { id: trialId, lastSeq: 0, t0: null };
   for (const [i, event] of events.entries()) {
     const at = new Date(start + i * 1000);
-    await appendEvents(db, cursor, [event], f.people.owner.id, () => at);
+    await appendEvents(db, cursor, [event], f.people.owner.id, { now: () => at });
     cursor.lastSeq++;
     cursor.t0 ??= at;
   }

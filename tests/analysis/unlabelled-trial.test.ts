@@ -99,7 +99,7 @@ describe("a trial whose actions have no labels", () => {
     const cursor: TrialCursor = { id: trialId, lastSeq: 0, t0: null };
     for (const [i, event] of wizardRun(protocol).entries()) {
       const at = new Date(start + i * 250);
-      await appendEvents(db, cursor, [event], f.people.owner.id, () => at);
+      await appendEvents(db, cursor, [event], f.people.owner.id, { now: () => at });
       cursor.lastSeq++;
       cursor.t0 ??= at;
     }

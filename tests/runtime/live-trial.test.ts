@@ -87,7 +87,7 @@ describe.sequential("a live trial through the runtime", () => {
 
   it("survives kill -9 of the runtime: the wizard resumes with nothing lost or repeated", async () => {
     const wizard = await open(wizardApi);
-    await wizard.command("r2", { kind: "next" });
+    const r2 = await wizard.command("r2", { kind: "next" });
     const acked = seqsOf(wizard);
     const lastSeen = Math.max(...acked);
     const runtimePid = childPid(app, "runtime/main.ts");
@@ -101,6 +101,10 @@ describe.sequential("a live trial through the runtime", () => {
     const welcome = resumed!.messages.find((m) => m.type === "welcome")!;
     const missed = (welcome.events as Array<{ seq: number }>).map((e) => e.seq);
     expect(missed.every((s) => s > lastSeen)).toBe(true);
+    // Asked again by its id (the browser does so for what it sent before the drop): answered from the
+    // log with its first outcome, not carried out a second time.
+    resumed!.send({ type: "command", requestId: "r2", command: { kind: "next" }, retry: true });
+    expect(await resumed!.next((m) => m.requestId === "r2")).toEqual(r2);
     const next = await resumed!.command("r3", { kind: "next" });
     expect(next.type).toBe("ack");
     const all = await wizardApi.trials.get.query({ trialId });

@@ -46,6 +46,7 @@ function templateOf(schema: z.ZodObject, name: string): Template {
     } else if (field.def.type === "literal") fields[key] = field.def.values![0];
     else if (field.def.type === "string") fields[key] = "Matrix text";
     else if (field.def.type === "number") fields[key] = 0;
+    else if (field.def.type === "boolean") fields[key] = false;
     else if (field.def.type === "record") fields[key] = {};
     else if (key === "command") command = { name: "", fields: {}, idKeys: [] };
     else

@@ -51,7 +51,9 @@ export const clientMessageSchema = z.discriminatedUnion("type", [
       .min(0)
       .max(2 ** 31 - 1),
   }),
-  z.object({ type: z.literal("command"), requestId: id, command: commandSchema }),
+  // `requestId` is the command's idempotency key: the same id is never carried out twice. `retry`: sent
+  // again after a dropped connection, to learn its outcome; never carried out if it did not arrive before.
+  z.object({ type: z.literal("command"), requestId: id, command: commandSchema, retry: z.boolean().optional() }),
   z.object({
     type: z.literal("annotate"),
     requestId: id,

@@ -39,9 +39,11 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const [mayRun, setMayRun] = useState<boolean | null>(null);
   const socket = useRef<WebSocket | null>(null);
   const lastSeq = useRef(0);
-  const pending = useRef(new Map<string, (o: Outcome) => void>());
-  // The command each request carries, so that a refusal can be checked against the trial as it moves on.
-  const sent = useRef(new Map<string, Command>());
+  // Each request awaiting its answer: what was sent (sent again, as a retry, after a reconnect) and, for a
+  // command, its engine form, so that a refusal can be checked against the trial as it moves on.
+  const pending = useRef(
+    new Map<string, { settle: (o: Outcome) => void; message: ClientMessage; command: Command | null }>(),
+  );
 
   const receive = useCallback((incoming: WireEvent[]) => {
     const fresh = incoming.filter((e) => e.seq > lastSeq.current);
@@ -86,6 +88,11 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
           setViewers(m.viewers);
           setMayRun(m.mayRun);
           receive(m.events);
+          // Commands sent before the connection dropped: asked again by their id, answered with what became
+          // of them, never carried out twice nor late.
+          for (const { message } of pending.current.values())
+            if (message.type === "command")
+              ws.send(JSON.stringify({ ...message, retry: true } satisfies ClientMessage));
         } else if (m.type === "access") setMayRun(m.mayRun);
         else if (m.type === "events") receive(m.events);
         else if (m.type === "presence") setViewers(m.viewers);
@@ -101,25 +108,28 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
           }, 1000);
         } else if (m.type === "ack" || m.type === "rejected") {
           setLogBehind(null);
-          const settle = m.requestId ? pending.current.get(m.requestId) : undefined;
-          const command = m.requestId ? (sent.current.get(m.requestId) ?? null) : null;
-          if (m.requestId) {
-            pending.current.delete(m.requestId);
-            sent.current.delete(m.requestId);
-          }
-          if (m.type === "rejected") setRefusal({ reason: m.reason, command, atSeq: lastSeq.current });
-          settle?.(m.type === "ack" ? { ok: true } : { ok: false, reason: m.reason });
+          const request = m.requestId ? pending.current.get(m.requestId) : undefined;
+          if (m.requestId) pending.current.delete(m.requestId);
+          if (m.type === "rejected")
+            setRefusal({ reason: m.reason, command: request?.command ?? null, atSeq: lastSeq.current });
+          request?.settle(m.type === "ack" ? { ok: true } : { ok: false, reason: m.reason });
         }
       };
       ws.onclose = (event) => {
         setConnected(false);
-        for (const settle of pending.current.values())
-          settle({ ok: false, reason: "The connection dropped before the server confirmed this." });
-        pending.current.clear();
-        sent.current.clear();
+        // An annotation is not asked again (it has no idempotency key); a command is, once reconnected.
+        const dropped = (all: boolean) => {
+          for (const [id, { settle, message }] of pending.current)
+            if (all || message.type !== "command") {
+              pending.current.delete(id);
+              settle({ ok: false, reason: "The connection dropped before the server confirmed this." });
+            }
+        };
+        dropped(stopped);
         if (stopped) return;
         // Shut out (no longer a member, account disabled): say why and stay disconnected.
         if (event.code === 4403) {
+          dropped(true);
           stopped = true;
           setMayRun(false);
           setNotice(event.reason || "You may no longer follow this trial.");
@@ -145,9 +155,9 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
       return Promise.resolve({ ok: false, reason: "Not connected to the trial yet." });
     const requestId = crypto.randomUUID();
     return new Promise((settle) => {
-      pending.current.set(requestId, settle);
-      if (command) sent.current.set(requestId, command);
-      ws.send(JSON.stringify(message(requestId)));
+      const sent = message(requestId);
+      pending.current.set(requestId, { settle, message: sent, command: command ?? null });
+      ws.send(JSON.stringify(sent));
     });
   }, []);
 

@@ -67,6 +67,9 @@ export const trialEvents = pgTable(
     actionId: text("action_id"),
     payload: jsonb("payload").notNull().default(sql`'{}'::jsonb`),
     deviation: boolean("deviation").notNull().default(false),
+    // The wizard's request these events answer (its idempotency key): a command sent again after a
+    // dropped connection is answered from the log, never carried out twice.
+    requestId: text("request_id"),
   },
   (t) => [primaryKey({ columns: [t.trialId, t.seq] })],
 );

@@ -1,0 +1,1 @@
+ALTER TABLE "trial_events" ADD COLUMN "request_id" text;
