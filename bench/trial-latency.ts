@@ -117,8 +117,8 @@ async function socket(
   };
 }
 
-/** One trial: a wizard and its observers; `commands` unscripted lines, one after another, at most one per `paceMs`. */
-async function runTrial(commands: number, toRobot: number[], toObservers: number[], paceMs = 0) {
+/** One trial: a wizard and `observers` observers; `commands` unscripted lines, one after another, at most one per `paceMs`. */
+async function runTrial(commands: number, toRobot: number[], toObservers: number[], paceMs = 0, observing = OBSERVERS) {
   const [trial] = await db
     .insert(trials)
     .values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id })
@@ -132,7 +132,7 @@ async function runTrial(commands: number, toRobot: number[], toObservers: number
     }
   };
   const observers = await Promise.all(
-    Array.from({ length: OBSERVERS }, () => socket(trial!.id, observerUser.id, observe)),
+    Array.from({ length: observing }, () => socket(trial!.id, observerUser.id, observe)),
   );
   const wizard = await socket(trial!.id, wizardUser.id, () => {});
   await wizard.command({ kind: "start" });
@@ -143,7 +143,9 @@ async function runTrial(commands: number, toRobot: number[], toObservers: number
       heard.set(text, (at) => (toRobot.push(at - sent), heard.delete(text), ok())),
     );
     const everyone = new Promise<void>((ok) =>
-      seen.set(text, { left: OBSERVERS, done: (at) => (toObservers.push(at - sent), seen.delete(text), ok()) }),
+      observing === 0
+        ? ok()
+        : seen.set(text, { left: observing, done: (at) => (toObservers.push(at - sent), seen.delete(text), ok()) }),
     );
     await wizard.command({ kind: "unscripted", actionType: "say", parameters: { text } });
     await Promise.all([robot, everyone]);
@@ -168,6 +170,19 @@ const flood = { robot: [] as number[], observers: [] as number[] };
 await Promise.all(Array.from({ length: 50 }, () => runTrial(20, flood.robot, flood.observers)));
 report("50 trials × 10 observers, back to back (saturation): → robot", flood.robot);
 report("50 trials × 10 observers, back to back (saturation): → observers", flood.observers);
+
+// Many wizards at once, each sending its next line as soon as the robot has the last: what one runtime
+// and one database carry. Each action is three commits' worth of events (requested, dispatched, completed).
+const WIZARDS = 20;
+const wizards = { robot: [] as number[] };
+const began = performance.now();
+await Promise.all(Array.from({ length: WIZARDS }, () => runTrial(150, wizards.robot, [], 0, 0)));
+const seconds = (performance.now() - began) / 1000;
+report(`${WIZARDS} wizards back to back: wizard message → robot`, wizards.robot, 25);
+const perSecond = wizards.robot.length / seconds;
+console.log(
+  `${`${WIZARDS} wizards back to back: throughput`.padEnd(58)} n=${String(wizards.robot.length).padStart(6)}  ${perSecond.toFixed(0)} actions/s  target ≥ 1500: ${perSecond >= 1500 ? "met" : "NOT met"} (ratio ${(perSecond / 1500).toFixed(2)})`,
+);
 
 runtime.kill("SIGTERM");
 await new Promise((ok) => runtime.once("exit", ok));

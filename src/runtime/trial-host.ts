@@ -12,7 +12,8 @@ import {
   type TrialState,
 } from "@/core/trial";
 import { type Database, neverReachedDatabase } from "@/store/client";
-import { answeredRequests, appendEvents, eventsSince, type TrialCursor } from "@/store/event-store";
+import { answeredRequests, eventsSince, type TrialCursor } from "@/store/event-store";
+import { directWriter, type LogWriter } from "./log-writer";
 import { areTheseEvents } from "@/core/trial/landed";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import type { RobotLink } from "./robot";
@@ -129,6 +130,7 @@ export class TrialHost {
     readonly protocol: TrialProtocol,
     private readonly robot: RobotLink,
     history: StoredEvent[],
+    private readonly log: LogWriter,
   ) {
     this.state = fold(protocol, history);
     this.t0 = startedAt(history);
@@ -142,8 +144,14 @@ export class TrialHost {
   }
 
   /** Rebuilds the trial from its events; actions cut off by a restart are marked failed. */
-  static async open(db: Database, trialId: string, protocol: TrialProtocol, robot: RobotLink) {
-    const host = new TrialHost(db, trialId, protocol, robot, await eventsSince(db, trialId));
+  static async open(
+    db: Database,
+    trialId: string,
+    protocol: TrialProtocol,
+    robot: RobotLink,
+    log: LogWriter = directWriter(db),
+  ) {
+    const host = new TrialHost(db, trialId, protocol, robot, await eventsSince(db, trialId), log);
     for (const [id, seqs] of await answeredRequests(db, trialId))
       host.requests.set(id, Promise.resolve({ ok: true, seqs }));
     const interrupted = Object.entries(host.state.actions).filter(
@@ -295,7 +303,7 @@ export class TrialHost {
     requestId: string | null,
   ): Promise<{ events: StoredEvent[]; earlier: boolean } | "refused" | "unknown"> {
     try {
-      return { events: await appendEvents(this.db, cursor, events, actorId, { requestId }), earlier: false };
+      return { events: await this.log.append({ cursor, events, actorId, requestId }), earlier: false };
     } catch (error) {
       if (neverReachedDatabase(error)) return "refused";
       const landed = await eventsSince(this.db, this.trialId, cursor.lastSeq).catch(() => null);

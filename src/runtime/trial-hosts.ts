@@ -15,6 +15,7 @@ import { unavailableRobot } from "./robot-link";
 import { trialLocks } from "./trial-locks";
 import { logUnexpected } from "@/store/error-reference";
 import { TrialHost } from "./trial-host";
+import { groupWriter } from "./log-writer";
 
 export interface TrialHosts {
   /** The trial's host in this process, or null while another process owns the trial. */
@@ -35,6 +36,8 @@ export function trialHosts(
   idleMs = 60_000,
 ): TrialHosts {
   const hosts = new Map<string, Promise<TrialHost | null>>();
+  // Every trial of this process appends through one writer: one commit for what arrives together.
+  const log = groupWriter(db);
   // A lock lost with its connection and taken by another process: that process runs the trial now.
   const locks = trialLocks(lockSession, (trialId) => {
     void hosts
@@ -75,7 +78,7 @@ export function trialHosts(
     if (!chosen.ok) throw new Error(chosen.reason);
     const ended = row?.status === "completed" || row?.status === "aborted";
     const robot = ended ? unavailableRobot("the trial has ended") : await robotFor(chosen.plugin, chosen.robotId);
-    const host = await TrialHost.open(db, trialId, protocol, robot);
+    const host = await TrialHost.open(db, trialId, protocol, robot, log);
     host.onRobotStatus((connected, detail) => onRobotStatus(trialId, connected, detail));
     // Unwatched for idleMs: closes, unless an action is still under way (then looks again later).
     const retireIfIdle = () => {

@@ -43,3 +43,12 @@ export function neverReachedDatabase(error: unknown): boolean {
   const code = (error as { code?: string } | null)?.code ?? "";
   return ["ECONNREFUSED", "CONNECT_TIMEOUT", "57P03"].includes(code);
 }
+
+/**
+ * An error the server answered with (the statement ran and failed): its
+ * transaction rolled back, so nothing of it was stored. A failure of the
+ * connection instead leaves the outcome unknown.
+ */
+export function refusedByDatabase(error: unknown): boolean {
+  return typeof (error as { severity?: unknown } | null)?.severity === "string";
+}

@@ -38,6 +38,14 @@ export interface TrialCursor {
   t0: Date | null;
 }
 
+/** One trial's share of a write: its events, after its cursor, by whom, answering which request. */
+export interface Append {
+  cursor: TrialCursor;
+  events: EngineEvent[];
+  actorId: string | null;
+  requestId?: string | null;
+}
+
 /**
  * Appends events after `cursor.lastSeq` and moves the trial's status, in ONE
  * statement (one round trip, one commit): this sits on the wizard's
@@ -51,54 +59,89 @@ export async function appendEvents(
   actorId: string | null,
   options: { now?: () => Date; requestId?: string | null } = {},
 ): Promise<StoredEvent[]> {
-  if (events.length === 0) return [];
-  const at = (options.now ?? (() => new Date()))();
-  let t0 = cursor.t0;
-  let status: string | null = null;
-  const rows = events.map((event, i) => {
-    if (event.type === "trial.started") t0 ??= at;
-    status = STATUS_AFTER[event.type] ?? status;
-    return {
-      trial_id: cursor.id,
-      seq: cursor.lastSeq + i + 1,
-      type: event.type,
-      server_time: at,
-      rel_ms: t0 ? at.getTime() - t0.getTime() : null,
-      actor_id: actorId,
-      step_id: "stepId" in event ? event.stepId : null,
-      action_id: "actionId" in event ? event.actionId : null,
-      payload: event,
-      deviation: Boolean(event.deviation),
-      request_id: options.requestId ?? null,
-    };
+  const [stored] = await appendMany(db, [{ cursor, events, actorId, requestId: options.requestId }], options.now);
+  return stored!;
+}
+
+/**
+ * Several trials' appends in ONE statement, one transaction, one commit
+ * (group commit: what arrived while the last commit was under way goes in
+ * the next). Each trial keeps its own sequence; all land or none do.
+ */
+export async function appendMany(
+  db: Database,
+  appends: Append[],
+  now: () => Date = () => new Date(),
+): Promise<StoredEvent[][]> {
+  const at = now();
+  const rows: Array<Omit<ReturnType<typeof rowOf>, "payload"> & { payload: string }> = [];
+  const moves = { id: [] as string[], t0: [] as Array<string | null>, status: [] as Array<string | null> };
+  const notices: string[] = [];
+  const stored = appends.map(({ cursor, events, actorId, requestId }) => {
+    let t0 = cursor.t0;
+    let status: string | null = null;
+    const mine = events.map((event, i) => {
+      if (event.type === "trial.started") t0 ??= at;
+      status = STATUS_AFTER[event.type] ?? status;
+      return rowOf(cursor, i, event, at, t0, actorId, requestId ?? null);
+    });
+    if (mine.length) {
+      rows.push(...mine.map((r) => ({ ...r, payload: JSON.stringify(r.payload) })));
+      moves.id.push(cursor.id);
+      moves.t0.push(t0?.toISOString() ?? null);
+      moves.status.push(status);
+      notices.push(`${cursor.id}:${cursor.lastSeq + mine.length}`);
+    }
+    return mine.map((r) => ({
+      ...r.payload,
+      seq: r.seq,
+      relMs: r.rel_ms,
+      trialId: r.trial_id,
+      serverTime: at,
+      actorId: r.actor_id,
+    }));
   });
-  const ended = status === "completed" || status === "aborted";
-  // Drizzle's client leaves serialising to Drizzle, so values go as text PostgreSQL casts by column.
-  const wire = rows.map((r) => ({
-    ...r,
-    server_time: r.server_time.toISOString(),
-    payload: JSON.stringify(r.payload),
-  }));
+  if (rows.length === 0) return stored;
   const client = db.$client;
+  // Values go as text, cast by column (Drizzle's client leaves serialising to Drizzle); the trials move
+  // by one row each, from parallel arrays.
   await client`
     with appended as (
-      insert into trial_events ${client(wire, "trial_id", "seq", "type", "server_time", "rel_ms", "actor_id", "step_id", "action_id", "payload", "deviation", "request_id")}
+      insert into trial_events ${client(rows, "trial_id", "seq", "type", "server_time", "rel_ms", "actor_id", "step_id", "action_id", "payload", "deviation", "request_id")}
     ), moved as (
       update trials set
-        t0 = coalesce(t0, ${t0?.toISOString() ?? null}::timestamptz),
-        status = coalesce(${status}, status),
-        ended_at = case when ${ended} then coalesce(ended_at, ${at.toISOString()}::timestamptz) else ended_at end
-      where id = ${cursor.id}
+        t0 = coalesce(trials.t0, v.t0::timestamptz),
+        status = coalesce(v.status, trials.status),
+        ended_at = case when v.status in ('completed', 'aborted') then coalesce(trials.ended_at, ${at.toISOString()}::timestamptz) else trials.ended_at end
+      from unnest(${moves.id}::text[], ${moves.t0}::text[], ${moves.status}::text[]) as v(id, t0, status)
+      where trials.id = v.id
     )
-    select pg_notify(${NOTIFY_CHANNEL}, ${`${cursor.id}:${cursor.lastSeq + rows.length}`})`;
-  return rows.map((r) => ({
-    ...r.payload,
-    seq: r.seq,
-    relMs: r.rel_ms,
-    trialId: r.trial_id,
-    serverTime: r.server_time,
-    actorId: r.actor_id,
-  }));
+    select pg_notify(${NOTIFY_CHANNEL}, n) from unnest(${notices}::text[]) as n`;
+  return stored;
+}
+
+function rowOf(
+  cursor: TrialCursor,
+  i: number,
+  event: EngineEvent,
+  at: Date,
+  t0: Date | null,
+  actorId: string | null,
+  requestId: string | null,
+) {
+  return {
+    trial_id: cursor.id,
+    seq: cursor.lastSeq + i + 1,
+    type: event.type,
+    server_time: at.toISOString(),
+    rel_ms: t0 ? at.getTime() - t0.getTime() : null,
+    actor_id: actorId,
+    step_id: "stepId" in event ? event.stepId : null,
+    action_id: "actionId" in event ? event.actionId : null,
+    payload: event,
+    deviation: Boolean(event.deviation),
+    request_id: requestId,
+  };
 }
 
 /** The events after `afterSeq`, in order: what a reconnecting client missed. */
