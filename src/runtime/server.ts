@@ -129,7 +129,9 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
     // Admitted: from here on, access changes reach this socket (and may close it).
     viewers.set(trialId, (viewers.get(trialId) ?? new Set()).add(ws));
     const host = await hosts.get(trialId);
-    const log = await eventsSince(db, trialId, lastSeq);
+    // Just opened for this hello: the log the host read to open it, kept up to date (one read, not two, and
+    // nothing can fall between it and the subscription below). Else the log is read here.
+    const log = host?.takeOpeningLog(lastSeq) ?? (await eventsSince(db, trialId, lastSeq));
     if (ws.data.closed) return;
     const shown = mayReadTrialLog(ws.data.access) ? log : [];
     const push = (events: StoredEvent[]) => {

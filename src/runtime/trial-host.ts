@@ -2,7 +2,7 @@
 // run one at a time: decide (pure engine) → append (committed) → apply →
 // tell every client. Robot and clock reports come back as commands too.
 import {
-  applyAll,
+  applyInPlace,
   decide,
   fold,
   type Command,
@@ -104,7 +104,7 @@ function answeredBy(run: Promise<CommandResult>, at: number): Promise<CommandRes
 }
 
 export class TrialHost {
-  private state: TrialState;
+  private readonly state: TrialState;
   private queue: Promise<unknown> = Promise.resolve();
   private readonly listeners = new Set<(events: StoredEvent[]) => void>();
   private shut = false;
@@ -121,6 +121,8 @@ export class TrialHost {
   private readonly stopWatching: () => void;
   /** The trial's t0, once started: samples are timed from it. */
   private t0: number | null;
+  /** The log as read to open the trial, kept up to date, until the hello that opened it takes it. */
+  private opening: StoredEvent[] | null;
   /** Each request's outcome by its id, so a request sent again is answered, never carried out twice. */
   private readonly requests = new Map<string, Promise<CommandResult>>();
 
@@ -134,6 +136,7 @@ export class TrialHost {
   ) {
     this.state = fold(protocol, history);
     this.t0 = startedAt(history);
+    this.opening = history;
     this.samples = sampleRecorder(db, trialId, (error) =>
       console.error(`[runtime] trial ${trialId}: samples not stored: ${String(error)}`),
     );
@@ -277,9 +280,20 @@ export class TrialHost {
     return { ok: true, seqs: written.events.map((e) => e.seq) };
   }
 
+  /**
+   * The log after `lastSeq` as this host opened it, with all it appended since, once: the hello that
+   * opened the trial reads the log once, not twice. Null once taken (read the log then).
+   */
+  takeOpeningLog(lastSeq: number): StoredEvent[] | null {
+    const log = this.opening;
+    this.opening = null;
+    return log && log.filter((e) => e.seq > lastSeq);
+  }
+
   /** Committed events: into the state, to every client, then to the robot unless `withheld` says why not. */
   private take(stored: StoredEvent[], withheld: string | null) {
-    this.state = applyAll(this.state, stored);
+    this.opening?.push(...stored);
+    applyInPlace(this.state, stored);
     this.t0 ??= startedAt(stored);
     for (const listener of this.listeners) listener(stored);
     if (withheld) this.withhold(stored, withheld);

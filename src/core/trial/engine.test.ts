@@ -1,5 +1,14 @@
 import { describe, expect, it } from "vitest";
-import { apply, applyAll, fold, simulate, type Command, type EngineEvent, type TrialProtocol } from "./index";
+import {
+  apply,
+  applyAll,
+  applyInPlace,
+  fold,
+  simulate,
+  type Command,
+  type EngineEvent,
+  type TrialProtocol,
+} from "./index";
 
 // A small Storyteller: speech and wave together, a pause, a question, a branch.
 const protocol: TrialProtocol = {
@@ -293,6 +302,15 @@ describe("applying events in batches", () => {
     for (let i = 0; i < log.length; i += size) state = applyAll(state, log.slice(i, i + size));
     expect(state).toEqual(fold(protocol, log));
   });
+
+  it.each([1, 3, log.length])(
+    "moves the runtime's own state in place to the state of one fold (batches of %i)",
+    (size) => {
+      const state = fold(protocol, []);
+      for (let i = 0; i < log.length; i += size) applyInPlace(state, log.slice(i, i + size));
+      expect(state).toEqual(fold(protocol, log));
+    },
+  );
 
   it("leaves the state it started from as it was, so the page's earlier renders stay true", () => {
     const half = fold(protocol, log.slice(0, 4));

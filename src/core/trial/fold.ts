@@ -38,6 +38,15 @@ export function applyAll(state: TrialState, events: readonly TrialEvent[]): Tria
   return next;
 }
 
+/**
+ * `state` itself moved on by `events`, in place: for the one owner of a live
+ * state (the runtime's trial host), whose cost per command must not grow with
+ * the trial, as a copy of every action so far would.
+ */
+export function applyInPlace(state: TrialState, events: readonly TrialEvent[]): void {
+  for (const event of events) advance(state, event);
+}
+
 export function apply(state: TrialState, event: TrialEvent): TrialState {
   return applyAll(state, [event]);
 }

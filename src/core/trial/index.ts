@@ -1,5 +1,5 @@
 export { decide } from "./decide";
-export { apply, applyAll, fold, initialState } from "./fold";
+export { apply, applyAll, applyInPlace, fold, initialState } from "./fold";
 export { answerOptions, nextUnit } from "./protocol";
 export { actionProblems } from "./problems";
 export { simulate, type Simulation } from "./simulate";
