@@ -6,7 +6,7 @@ import { join } from "node:path";
 
 const here = import.meta.dirname;
 const all = readdirSync(here)
-  .filter((f) => f.endsWith(".ts") && !["run.ts", "support.ts"].includes(f))
+  .filter((f) => f.endsWith(".ts") && f !== "run.ts" && !f.startsWith("support"))
   .map((f) => f.replace(/\.ts$/, ""));
 const wanted = process.argv.slice(2);
 const unknown = wanted.filter((w) => !all.includes(w));
