@@ -44,7 +44,7 @@ describe("a ROS 2 action goal: navigate_to_pose", () => {
       status: "completed",
       detail: { action: "/navigate_to_pose", result: { error_code: 0, error_msg: "" } },
     });
-    expect((outcome as { detail: { feedback: number } }).detail.feedback).toBeGreaterThan(0);
+    expect((outcome as unknown as { detail: { feedback: number } }).detail.feedback).toBeGreaterThan(0);
     const [goal] = sent(sim, "send_action_goal");
     expect(round({ ...goal, id: undefined })).toEqual(
       round({
@@ -134,7 +134,8 @@ describe("named transforms reach the robot as HRIStudio's file means them", () =
     Object.assign(sim.state.pose, { x: 1.25, y: -0.5, theta: Math.PI / 2 });
     const outcome = await transport.dispatch(action("get_robot_state"), {});
     expect(outcome.status).toBe("completed");
-    const { topic, state } = (outcome as { detail: { topic: string; state: Record<string, unknown> } }).detail;
+    const { topic, state } = (outcome as unknown as { detail: { topic: string; state: Record<string, unknown> } })
+      .detail;
     expect(topic).toBe("/odom");
     expect(round({ ...state, stamp: undefined })).toEqual(
       round({ frame: "odom", x: 1.25, y: -0.5, theta: Math.PI / 2, linear: 0, angular: 0 }),
