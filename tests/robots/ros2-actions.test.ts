@@ -97,6 +97,45 @@ describe("a ROS 2 action goal: navigate_to_pose", () => {
   });
 });
 
+describe("every action of HRIStudio's Burger file reaches the simulator with its exact payload", () => {
+  const burger = (() => {
+    const file = "turtlebot3-burger.json";
+    const loaded = loadPlugin(file, readFileSync(`tests/fixtures/hristudio-plugins/plugins/${file}`, "utf8"));
+    if (!loaded.ok) throw new Error("fixture");
+    return loaded.value as Plugin;
+  })();
+  const zero = { linear: { x: 0, y: 0, z: 0 }, angular: { x: 0, y: 0, z: 0 } };
+  it.each([
+    [
+      "move_velocity",
+      { linear: -0.22, angular: 2.84 },
+      "publish",
+      { linear: { x: -0.22, y: 0, z: 0 }, angular: { x: 0, y: 0, z: 2.84 } },
+    ],
+    ["stop_robot", {}, "publish", zero],
+    [
+      "move_to_pose",
+      { x: 0.2, y: 0.1, theta: 0 },
+      "send_action_goal",
+      {
+        pose: {
+          header: { stamp: { sec: 0, nanosec: 0 }, frame_id: "map" },
+          pose: { position: { x: 0.2, y: 0.1, z: 0 }, orientation: { x: 0, y: 0, z: 0, w: 1 } },
+        },
+        behavior_tree: "",
+      },
+    ],
+  ])("%s", async (id, parameters, op, payload) => {
+    sim = await startSimulator({ port: 0, nodes: simulatedRobot(burger) });
+    transport = new RosbridgeTransport({ url: sim.url, plugin: burger });
+    await transport.connect();
+    const outcome = await transport.dispatch(burger.actions.find((a) => a.id === id)!, parameters);
+    expect(outcome.status).toBe("completed");
+    const s = sim;
+    await expect.poll(() => sent(s, op).map((m) => (op === "publish" ? m.msg : m.args))).toEqual([payload]);
+  });
+});
+
 describe("named transforms reach the robot as HRIStudio's file means them", () => {
   it("transformToTwist: the exact velocity on /cmd_vel", async () => {
     const { sim, transport } = await setUp();
