@@ -84,4 +84,49 @@ describe("robot plugins on the server", () => {
       'No robot plugin called "r2d2" is installed.',
     );
   });
+
+  it.each([
+    ["nao6-ros2", null],
+    ["pepper-ros2", null],
+    ["simulated", null],
+    ["turtlebot3-burger", 9],
+  ] as const)(
+    "publishes the Storyteller on %s only if the robot can do every action, listing each it cannot",
+    async (robotId, refused) => {
+      const researcher = (await db.query.user.findMany()).find((u) => u.email === "researcher@demo.hristudio")!;
+      const asOwner = createCallerFactory(appRouter)({
+        db,
+        user: { id: researcher.id, name: researcher.name, email: researcher.email, role: "researcher" },
+        secret: TEST_SECRET,
+        runtimeUrl: "ws://127.0.0.1:1",
+        media: testMedia(),
+        robotChannels: DEMO_CHANNELS,
+      });
+      const [study] = await asOwner.studies.mine();
+      const [storyteller] = await asOwner.experiments.list({ studyId: study!.id });
+      const copy = await asOwner.experiments.duplicate({ experimentId: storyteller!.id });
+      const draft = await asOwner.experiments.get({ experimentId: copy.id });
+      await asOwner.experiments.saveDesign({
+        experimentId: copy.id,
+        baseRevision: draft.draftRevision,
+        details: { robotId },
+        steps: draft.steps,
+      });
+      const publishing = asOwner.versions.publish({ experimentId: copy.id });
+      if (refused === null) return expect((await publishing).robotId).toBe(robotId);
+      const error = await publishing.then(
+        () => null,
+        (e: Error) => e.message,
+      );
+      expect(error).toMatch(
+        new RegExp(
+          `^This experiment cannot be published: TurtleBot3 Burger cannot do these ${refused} actions\\. Step 1 \\(`,
+        ),
+      );
+      expect(error!.match(/cannot run on TurtleBot3 Burger: /g)).toHaveLength(refused);
+      expect(error).toContain("cannot run on TurtleBot3 Burger: The TurtleBot3 has no speaker");
+      expect(error).toMatch(/Replace or remove them, or choose another robot\.$/);
+      expect(await asOwner.versions.list({ experimentId: copy.id })).toEqual([]);
+    },
+  );
 });
