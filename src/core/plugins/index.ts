@@ -12,7 +12,13 @@ export { TRANSFORMS, transformOf, maxTurnOf, type Transform, type Motion } from 
 export { actionGoal, type ActionGoal } from "./goal";
 export { unavailableActions, unavailableReason, type UnavailableAction } from "./availability";
 export { resolveAction, type Resolution } from "./resolve";
-export { portability, type PortableExperiment, type PortabilityReport, type ActionPortability } from "./portability";
+export {
+  cannotStart,
+  portability,
+  type PortableExperiment,
+  type PortabilityReport,
+  type ActionPortability,
+} from "./portability";
 export { channelOf, isSshCommand, unreachable, type Channel, type Channels, type Reachable } from "./reach";
 export { outgoingFor, type Outgoing } from "./payload";
 export { audioPlayer, audioPlayerText, type AudioPlayer } from "./audio";
