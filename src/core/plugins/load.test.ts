@@ -195,3 +195,27 @@ describe("the loader's one pass", () => {
     if (result.ok) expect(unavailableActions(result.value).map((u) => u.reason)).toEqual(reason ? [reason] : []);
   });
 });
+
+describe("checking the parts the schema found sound never trips on the broken ones", () => {
+  it("loads every one-field corruption of the Waffle file without throwing", () => {
+    const base = JSON.parse(read(`${fixtures}/plugins/turtlebot3-waffle.json`));
+    const paths = (value: unknown, at: Array<string | number> = []): Array<Array<string | number>> => [
+      at,
+      ...(value && typeof value === "object"
+        ? Object.entries(value).flatMap(([k, v]) => paths(v, [...at, Array.isArray(value) ? Number(k) : k]))
+        : []),
+    ];
+    let loaded = 0;
+    for (const path of paths(base).filter((p) => p.length)) {
+      for (const junk of [null, 1, "x", [], {}, [null]]) {
+        const document = structuredClone(base);
+        const parent = path.slice(0, -1).reduce((o, k) => o[k], document);
+        parent[path.at(-1)!] = junk;
+        const result = loadPlugin("waffle.json", JSON.stringify(document));
+        if (result.ok) unavailableActions(result.value);
+        loaded++;
+      }
+    }
+    expect(loaded).toBeGreaterThan(1000);
+  });
+});
