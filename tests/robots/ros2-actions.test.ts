@@ -151,6 +151,18 @@ describe("named transforms reach the robot as HRIStudio's file means them", () =
       .toEqual([{ linear: { x: 0.2, y: 0, z: 0 }, angular: { x: 0, y: 0, z: -1 } }]);
   });
 
+  it("emergency_stop: the exact zero velocity on /cmd_vel", async () => {
+    const { sim, transport } = await setUp();
+    expect(await transport.dispatch(action("emergency_stop"), {})).toMatchObject({ status: "completed" });
+    await expect
+      .poll(() =>
+        sent(sim, "publish")
+          .filter((m) => m.topic === "/cmd_vel")
+          .map((m) => m.msg),
+      )
+      .toEqual([{ linear: { x: 0, y: 0, z: 0 }, angular: { x: 0, y: 0, z: 0 } }]);
+  });
+
   it("transformToRotation: a turn at the fraction of the Waffle's 1.82 rad/s, then a stop once the angle is covered", async () => {
     const { sim, transport } = await setUp();
     const outcome = await transport.dispatch(action("rotate_in_place"), { angle: -0.91, speed: 1 });
