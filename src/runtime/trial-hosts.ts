@@ -6,7 +6,7 @@
 // ever opened. A finished trial is opened without a robot at all.
 import { eq } from "drizzle-orm";
 import type postgres from "postgres";
-import type { Plugin } from "@/core/plugins";
+import { cannotStart, type Plugin } from "@/core/plugins";
 import type { Database } from "@/store/client";
 import { experimentVersions, trials } from "@/store/schema";
 import { trialPlugin } from "@/robots/trial-plugin";
@@ -76,6 +76,11 @@ export function trialHosts(
     if (!protocol) throw new Error("This trial has no protocol to run.");
     const chosen = await trialPlugin(db, trialId);
     if (!chosen.ok) throw new Error(chosen.reason);
+    // A robot whose plugin lacks an action of the version would fail it mid-trial: refused before the first step.
+    // (A rehearsal pilots a draft, whose checks only warn.)
+    const missing =
+      row?.snapshot && row.status === "scheduled" && chosen.plugin ? cannotStart(row.snapshot, chosen.plugin) : null;
+    if (missing) throw new Error(missing);
     const ended = row?.status === "completed" || row?.status === "aborted";
     const robot = ended ? unavailableRobot("the trial has ended") : await robotFor(chosen.plugin, chosen.robotId);
     const host = await TrialHost.open(db, trialId, protocol, robot, log);

@@ -143,4 +143,31 @@ describe("a published version pins its plugin document", async () => {
       await hosts.closeAll();
     }
   });
+
+  it("refuses to start a trial on a robot whose plugin lacks an action of the version, naming each", async () => {
+    // A version published before pinning runs with the plugin installed now, which has dropped say_text.
+    const legacy = await owner.versions.publish({ experimentId: experiment.id });
+    await db.update(experimentVersions).set({ pluginHash: null }).where(eq(experimentVersions.id, legacy.id));
+    files["/plugins/lab-bot.json"] = JSON.stringify({
+      ...v2,
+      version: "1.2.0",
+      abstract: {},
+      actions: v2.actions.filter((a) => a.id !== "say_text"),
+    });
+    await sync();
+    const trial = await owner.trials.create({ versionId: legacy.id });
+    const hosts = trialHosts(
+      db,
+      () => createSessionClient(url),
+      () => unavailableRobot("never asked"),
+      () => {},
+    );
+    try {
+      await expect(hosts.get(trial.id)).rejects.toThrow(
+        'This trial cannot start: Lab bot (plugin 1.2.0) cannot do an action of its protocol: step 1 (Hello), "lab-bot.say_text": lab-bot has no action "say_text".',
+      );
+    } finally {
+      await hosts.closeAll();
+    }
+  });
 });

@@ -2,7 +2,7 @@
 // published version records the plugin version; portability is reported
 // before any trial, per robot, for the seeded Interactive Storyteller.
 import { afterAll, describe, expect, it } from "vitest";
-import { portability } from "../../src/core/plugins";
+import { cannotStart, portability } from "../../src/core/plugins";
 import { appRouter } from "../../src/server/api/root";
 import { createCallerFactory } from "../../src/server/api/trpc";
 import { seedDemo } from "../../src/server/seed/demo";
@@ -13,6 +13,19 @@ const { db, close } = await freshDatabase();
 await seedDemo(db);
 const f = await buildFixture(db);
 afterAll(close);
+
+/** The demo study's owner, as the seed made them. */
+async function demoOwner() {
+  const researcher = (await db.query.user.findMany()).find((u) => u.email === "researcher@demo.hristudio")!;
+  return createCallerFactory(appRouter)({
+    db,
+    user: { id: researcher.id, name: researcher.name, email: researcher.email, role: "researcher" },
+    secret: TEST_SECRET,
+    runtimeUrl: "ws://127.0.0.1:1",
+    media: testMedia(),
+    robotChannels: DEMO_CHANNELS,
+  });
+}
 
 describe("robot plugins on the server", () => {
   it("lists the first-party robots with their versions", async () => {
@@ -48,16 +61,7 @@ describe("robot plugins on the server", () => {
   });
 
   it("reports the Storyteller's portability per robot before any trial", async () => {
-    // The demo study's owner, as the seed made them.
-    const researcher = (await db.query.user.findMany()).find((u) => u.email === "researcher@demo.hristudio")!;
-    const asOwner = createCallerFactory(appRouter)({
-      db,
-      user: { id: researcher.id, name: researcher.name, email: researcher.email, role: "researcher" },
-      secret: TEST_SECRET,
-      runtimeUrl: "ws://127.0.0.1:1",
-      media: testMedia(),
-      robotChannels: DEMO_CHANNELS,
-    });
+    const asOwner = await demoOwner();
     const [study] = await asOwner.studies.mine();
     const [storyteller] = await asOwner.experiments.list({ studyId: study!.id });
     // As the designer does: the draft and the robot's plugin from the server, the report from the core.
@@ -84,4 +88,68 @@ describe("robot plugins on the server", () => {
       'No robot plugin called "r2d2" is installed.',
     );
   });
+
+  it.each([
+    ["nao6-ros2", null],
+    ["pepper-ros2", null],
+    ["simulated", null],
+    ["turtlebot3-burger", 9],
+  ] as const)(
+    "publishes the Storyteller on %s only if the robot can do every action, listing each it cannot",
+    async (robotId, refused) => {
+      const asOwner = await demoOwner();
+      const [study] = await asOwner.studies.mine();
+      const [storyteller] = await asOwner.experiments.list({ studyId: study!.id });
+      const copy = await asOwner.experiments.duplicate({ experimentId: storyteller!.id });
+      const draft = await asOwner.experiments.get({ experimentId: copy.id });
+      await asOwner.experiments.saveDesign({
+        experimentId: copy.id,
+        baseRevision: draft.draftRevision,
+        details: { robotId },
+        steps: draft.steps,
+      });
+      const publishing = asOwner.versions.publish({ experimentId: copy.id });
+      if (refused === null) return expect((await publishing).robotId).toBe(robotId);
+      const error = await publishing.then(
+        () => null,
+        (e: Error) => e.message,
+      );
+      expect(error).toMatch(
+        new RegExp(
+          `^This experiment cannot be published: TurtleBot3 Burger cannot do these ${refused} actions\\. Step 1 \\(`,
+        ),
+      );
+      expect(error!.match(/cannot run on TurtleBot3 Burger: /g)).toHaveLength(refused);
+      expect(error).toContain("cannot run on TurtleBot3 Burger: The TurtleBot3 has no speaker");
+      expect(error).toMatch(/Replace or remove them, or choose another robot\.$/);
+      expect(await asOwner.versions.list({ experimentId: copy.id })).toEqual([]);
+    },
+  );
+
+  it.each([
+    ["nao6-ros2", 0],
+    ["pepper-ros2", 0],
+    ["simulated", 0],
+    ["turtlebot3-burger", 9],
+  ] as const)(
+    "a trial of the Storyteller cannot start on %s if its plugin lacks an action, each named",
+    async (robotId, missing) => {
+      const asOwner = await demoOwner();
+      const [study] = await asOwner.studies.mine();
+      // The Storyteller published for the NAO6, as the seed designs it.
+      const [storyteller] = await asOwner.experiments.list({ studyId: study!.id });
+      const copy = await asOwner.experiments.duplicate({ experimentId: storyteller!.id });
+      const published = await asOwner.versions.publish({ experimentId: copy.id });
+      expect(published.robotId).toBe("nao6-ros2");
+      const version = await asOwner.versions.get({ versionId: published.id });
+      const reason = cannotStart(version.snapshot, await asOwner.plugins.get({ robotId }));
+      if (!missing) return expect(reason).toBeNull();
+      expect(reason).toMatch(
+        new RegExp(
+          `^This trial cannot start: TurtleBot3 Burger \\(plugin [0-9.]+\\) cannot do ${missing} actions of its protocol: step 1 `,
+        ),
+      );
+      expect(reason!.match(/; step /g)).toHaveLength(missing - 1);
+    },
+  );
 });

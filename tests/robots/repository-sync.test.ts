@@ -2,7 +2,7 @@
 import { readFile } from "node:fs/promises";
 import { createServer, type Server } from "node:http";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { loadPlugin, pluginChanges, type Plugin } from "../../src/core/plugins";
+import { loadPlugin, pluginChanges, unavailableActions, type Plugin } from "../../src/core/plugins";
 import { fetchRepository } from "../../src/robots/repository-sync";
 
 const fixtures = "tests/fixtures/hristudio-plugins";
@@ -35,16 +35,19 @@ beforeAll(async () => {
 afterAll(() => new Promise<void>((resolve) => server.close(() => resolve())));
 
 describe("fetchRepository", () => {
-  it("fetches the official repository and its NAO6 plugin unmodified", async () => {
+  it("fetches the official repository with all three plugins, unmodified, the Waffle's three actions we cannot run marked", async () => {
     const result = await fetchRepository(`${base}/official`);
-    // The TurtleBot3 files send ROS 2 action goals, which the format cannot express yet (issue 16): refused, and named.
-    expect([...new Set(result.errors.map((e) => e.file))]).toEqual([
-      "turtlebot3-burger.json",
-      "turtlebot3-waffle.json",
-    ]);
+    expect(result.errors).toEqual([]);
     expect(result.repository?.id).toBe("hristudio-official");
     expect(result.plugins.map((p) => [p.file, p.plugin.robotId, p.plugin.version, p.trust])).toEqual([
+      ["turtlebot3-burger.json", "turtlebot3-burger", "2.0.0", "official"],
+      ["turtlebot3-waffle.json", "turtlebot3-waffle", "2.0.0", "official"],
       ["nao6-ros2.json", "nao6-ros2", "3.0.0", "verified"],
+    ]);
+    expect(result.plugins.map((p) => [p.plugin.robotId, unavailableActions(p.plugin).map((u) => u.actionId)])).toEqual([
+      ["turtlebot3-burger", []],
+      ["turtlebot3-waffle", ["capture_image", "scan_environment", "follow_wall"]],
+      ["nao6-ros2", []],
     ]);
   });
 

@@ -1,18 +1,27 @@
 // What the JSON Schema cannot say: ids unique, parameter schemas usable,
-// placeholders and transforms that exist, abstract bindings that point at
-// real actions and real parameters.
+// placeholders that exist, abstract bindings that point at real actions and
+// real parameters. Parts the schema already found broken are skipped (their
+// error is reported), so every other part is still checked in the same pass.
+// A transform we do not have is no error: the action loads as unsupported
+// (availability.ts).
 import { pointer, type PluginError, type PluginErrorCode } from "./errors";
 import { checkValue, compileParameterSchema } from "./parameters";
 import { placeholders } from "./template";
-import { hasTransform } from "./transforms";
 import type { AbstractBinding, Plugin, PluginAction } from "./types";
 import { abstractAction } from "./vocabulary";
 
-export function checkPlugin(file: string, plugin: Plugin): PluginError[] {
+/** Whether the schema found the part at this JSON Pointer broken. */
+export type Broken = (at: string) => boolean;
+
+export function checkPlugin(file: string, plugin: Plugin, broken: Broken = () => false): PluginError[] {
   const errors: PluginError[] = [];
   const add = (path: string, code: PluginErrorCode, reason: string) => errors.push({ file, path, code, reason });
   const seen = new Map<string, number>();
   plugin.actions.forEach((action, i) => {
+    if (broken(pointer("actions", i))) {
+      if (typeof action?.id === "string" && !seen.has(action.id)) seen.set(action.id, i);
+      return;
+    }
     const earlier = seen.get(action.id);
     if (earlier !== undefined)
       add(
@@ -23,7 +32,7 @@ export function checkPlugin(file: string, plugin: Plugin): PluginError[] {
     else seen.set(action.id, i);
     checkAction(action, pointer("actions", i), add);
   });
-  checkAbstract(plugin, add);
+  checkAbstract(plugin, add, broken);
   return errors;
 }
 
@@ -56,9 +65,6 @@ function checkAction(action: PluginAction, at: string, add: Add) {
   const ros2 = action.ros2;
   if (ros2 && "payloadMapping" in ros2) {
     const mapping = ros2.payloadMapping;
-    if (mapping.type === "transform" && !hasTransform(mapping.transformFn)) {
-      add(`${at}/ros2/payloadMapping/transformFn`, "unknown_transform", `unknown transform "${mapping.transformFn}"`);
-    }
     if (mapping.type !== "ssh" && mapping.payload) {
       for (const p of placeholders(mapping.payload, `${at}/ros2/payloadMapping/payload`)) {
         if (!Object.hasOwn(schema.properties, p.name))
@@ -74,12 +80,14 @@ function checkAction(action: PluginAction, at: string, add: Add) {
   }
 }
 
-function checkAbstract(plugin: Plugin, add: Add) {
-  const unsupported = new Set((plugin.unsupported ?? []).map((u) => u.action));
-  (plugin.unsupported ?? []).forEach((u, i) => {
+function checkAbstract(plugin: Plugin, add: Add, broken: Broken) {
+  const declared = broken("/unsupported") ? [] : (plugin.unsupported ?? []);
+  const unsupported = new Set(declared.map((u) => u.action));
+  declared.forEach((u, i) => {
     if (!abstractAction(u.action))
       add(pointer("unsupported", i, "action"), "unknown_abstract_action", `"${u.action}" is not an abstract action`);
   });
+  if (broken("/abstract")) return;
   for (const [id, value] of Object.entries(plugin.abstract ?? {})) {
     const vocabulary = abstractAction(id);
     if (!vocabulary) {
@@ -91,8 +99,10 @@ function checkAbstract(plugin: Plugin, add: Add) {
     const bindings: AbstractBinding[] = Array.isArray(value) ? value : [value];
     bindings.forEach((binding, n) => {
       const at = Array.isArray(value) ? pointer("abstract", id, n) : pointer("abstract", id);
-      const target = plugin.actions.find((a) => a.id === binding.action);
-      if (!target) return add(`${at}/action`, "bad_binding", `no action "${binding.action}" in this plugin`);
+      const index = plugin.actions.findIndex((a) => a?.id === binding.action);
+      if (index < 0) return add(`${at}/action`, "bad_binding", `no action "${binding.action}" in this plugin`);
+      const target = plugin.actions[index]!;
+      if (broken(pointer("actions", index))) return;
       for (const name of Object.keys(binding.parameters ?? {})) {
         if (!Object.hasOwn(target.parameterSchema.properties, name))
           add(

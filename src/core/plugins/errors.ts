@@ -7,7 +7,6 @@ export const PLUGIN_ERROR_CODES = {
   duplicate_action: "Two actions share an id.",
   bad_parameter_schema: "An action's parameterSchema is not usable.",
   unknown_placeholder: "A payload placeholder names no parameter of its action.",
-  unknown_transform: "A payloadMapping names a transform we do not implement.",
   bad_binding: "An abstract binding refers to something that does not exist.",
   unknown_abstract_action: "The plugin maps an abstract action that is not in the vocabulary.",
   duplicate_robot: "Two plugin files declare the same robotId.",

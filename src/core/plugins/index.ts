@@ -8,9 +8,17 @@ export { ABSTRACT_ACTIONS, abstractAction, type AbstractAction } from "./vocabul
 export { parseActionType, robotActionType, type ActionType } from "./action-type";
 export { validateParameters, withDefaults, type ParameterProblem } from "./parameters";
 export { fillTemplate, placeholders } from "./template";
-export { TRANSFORMS } from "./transforms";
+export { TRANSFORMS, transformOf, maxTurnOf, type Transform, type Motion } from "./transforms";
+export { actionGoal, type ActionGoal } from "./goal";
+export { unavailableActions, unavailableReason, type UnavailableAction } from "./availability";
 export { resolveAction, type Resolution } from "./resolve";
-export { portability, type PortableExperiment, type PortabilityReport, type ActionPortability } from "./portability";
+export {
+  cannotStart,
+  portability,
+  type PortableExperiment,
+  type PortabilityReport,
+  type ActionPortability,
+} from "./portability";
 export { channelOf, isSshCommand, unreachable, type Channel, type Channels, type Reachable } from "./reach";
 export { outgoingFor, type Outgoing } from "./payload";
 export { audioPlayer, audioPlayerText, type AudioPlayer } from "./audio";

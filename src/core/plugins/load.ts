@@ -18,17 +18,27 @@ export function loadPlugin(file: string, text: string): LoadResult<Plugin> {
   return checkDocument(file, parsed.value);
 }
 
-/** For a document already parsed (a plugin fetched and decoded elsewhere). */
+/**
+ * For a document already parsed (a plugin fetched and decoded elsewhere).
+ * One pass: the schema's errors and then every check a schema cannot make,
+ * on each part the schema found sound, so an author sees every problem at once.
+ */
 export function checkDocument(file: string, document: unknown): LoadResult<Plugin> {
-  if (!validatePlugin(document)) {
-    const errors = plainErrors(validatePlugin.errors).map(
-      (e): PluginError => ({ file, path: e.path, code: "schema", reason: e.reason }),
-    );
-    return { ok: false, errors };
-  }
-  const plugin = document as Plugin;
-  const errors = checkPlugin(file, plugin);
-  return errors.length ? { ok: false, errors } : { ok: true, value: plugin };
+  const schemaErrors = validatePlugin(document)
+    ? []
+    : plainErrors(validatePlugin.errors).map(
+        (e): PluginError => ({ file, path: e.path, code: "schema", reason: e.reason }),
+      );
+  const broken = (at: string) => schemaErrors.some((e) => e.path === at || e.path.startsWith(`${at}/`));
+  const errors = soundActions(document)
+    ? [...schemaErrors, ...checkPlugin(file, document as Plugin, broken)]
+    : schemaErrors;
+  return errors.length ? { ok: false, errors } : { ok: true, value: document as Plugin };
+}
+
+/** Whether the document has a list of actions the checks can walk, even if some of them are broken. */
+function soundActions(document: unknown): boolean {
+  return typeof document === "object" && document !== null && Array.isArray((document as Plugin).actions);
 }
 
 export function parseJson(file: string, text: string): LoadResult<unknown> {

@@ -74,3 +74,19 @@ export function portability(experiment: PortableExperiment, plugin: Plugin, chan
     actions,
   };
 }
+
+/**
+ * Why a trial of this protocol cannot start on a robot with this plugin: each
+ * action of the protocol the plugin cannot do, with its step and reason, in
+ * plain words; null when it can do them all.
+ */
+export function cannotStart(protocol: PortableExperiment, plugin: Plugin): string | null {
+  const missing = portability(protocol, plugin).actions.filter((a) => a.status === "unsupported");
+  if (!missing.length) return null;
+  const listed = missing.map((a) => {
+    const step = protocol.steps[a.stepIndex]!;
+    return `step ${a.stepIndex + 1}${step.name ? ` (${step.name})` : ""}, "${a.type}": ${a.reason}`;
+  });
+  const what = missing.length === 1 ? "an action" : `${missing.length} actions`;
+  return `This trial cannot start: ${plugin.name} (plugin ${plugin.version}) cannot do ${what} of its protocol: ${listed.join("; ")}.`;
+}

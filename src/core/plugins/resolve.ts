@@ -1,6 +1,7 @@
 // From an experiment action ({type, parameters}) to the plugin action that
 // performs it and that action's parameters, or the reason it cannot run.
 import { parseActionType } from "./action-type";
+import { unavailableReason } from "./availability";
 import { validateParameters, withDefaults, type ParameterProblem } from "./parameters";
 import { fillTemplate } from "./template";
 import type { AbstractBinding, JsonObject, Plugin, PluginAction } from "./types";
@@ -27,7 +28,7 @@ export function resolveAction(plugin: Plugin, type: string, parameters: unknown)
       }
       const action = plugin.actions.find((a) => a.id === parsed.actionId);
       if (!action) return { status: "unsupported", reason: `${plugin.robotId} has no action "${parsed.actionId}"` };
-      return checked(action, parameters);
+      return unavailable(plugin, action) ?? checked(action, parameters);
     }
     case "abstract":
       return resolveAbstract(plugin, parsed.id, parameters);
@@ -49,6 +50,8 @@ function resolveAbstract(plugin: Plugin, id: string, parameters: unknown): Resol
   const binding = bindings.find((b) => Object.entries(b.when ?? {}).every(([k, v]) => given[k] === v));
   if (!binding) return { status: "parameter_problems", problems: unmatched(bindings, given) };
   const action = plugin.actions.find((a) => a.id === binding.action)!;
+  const cannot = unavailable(plugin, action);
+  if (cannot) return cannot;
   // An abstract parameter left out (an optional speed) leaves the robot's default.
   const present = Object.fromEntries(
     Object.entries(binding.parameters ?? {}).filter(([, t]) => !mentionsMissing(t, given)),
@@ -56,6 +59,14 @@ function resolveAbstract(plugin: Plugin, id: string, parameters: unknown): Resol
   const filled = fillTemplate(present as JsonObject, given);
   if (!filled.ok) return { status: "parameter_problems", problems: [{ parameter: "", message: filled.reason }] };
   return checked(action, filled.value);
+}
+
+/** An action the plugin declares but this platform cannot carry out (availability.ts). */
+function unavailable(plugin: Plugin, action: PluginAction): Resolution | null {
+  const reason = unavailableReason(plugin, action);
+  return reason
+    ? { status: "unsupported", reason: `${plugin.robotId}'s "${action.name}" cannot run: ${reason}` }
+    : null;
 }
 
 function checked(action: PluginAction, parameters: unknown): Resolution {

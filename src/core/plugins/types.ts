@@ -22,10 +22,16 @@ export type PayloadMapping =
   | { type: "transform"; transformFn: string; payload?: JsonObject }
   | { type: "ssh"; sshCommand: string };
 
-/** How an action reaches the robot over rosbridge: a topic publish or a service call. */
+/**
+ * How an action reaches the robot over rosbridge: a topic publish, a service
+ * call, or a ROS 2 action goal (HRIStudio's `action`, whose `messageType` is
+ * the goal's message; our `actionType` names the action's type when it is not
+ * one goal.ts knows from that message).
+ */
 export type Ros2Dispatch =
   | { topic: string; messageType: string; payloadMapping: PayloadMapping }
-  | { service: string; serviceType: string; args?: JsonObject };
+  | { service: string; serviceType: string; args?: JsonObject }
+  | { action: string; actionType?: string; messageType: string; payloadMapping: PayloadMapping };
 
 export interface PluginAction {
   id: string;

@@ -19,6 +19,8 @@ export interface RobotState {
   /** Motors on (woken up) or off (at rest). */
   awake: boolean;
   velocity: { linear: number; angular: number };
+  /** Where a wheeled robot is on its map (m, rad), moved by /cmd_vel and navigation goals. */
+  pose: { x: number; y: number; theta: number };
   headPitch: number;
   battery: number;
 }
@@ -33,6 +35,7 @@ export function initialState(): RobotState {
     posture: "stand",
     awake: true,
     velocity: { linear: 0, angular: 0 },
+    pose: { x: 0, y: 0, theta: 0 },
     headPitch: 0,
     battery: 100,
   };

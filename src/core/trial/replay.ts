@@ -21,8 +21,8 @@ export interface ReplayCommand {
   /** The plugin action and parameters that made the message, for the transport to send again. */
   action: PluginAction;
   parameters: Record<string, unknown>;
-  /** The message itself: a topic message or a service call (what the simulated robot receives). */
-  message: Extract<Outgoing, { kind: "publish" | "call" }>;
+  /** What the simulated robot receives: a topic message, a service call, an action goal, a turn and its stop, or a topic read. */
+  message: Exclude<Outgoing, { kind: "ssh" | "none" }>;
 }
 
 export interface ReplaySchedule {
@@ -59,7 +59,7 @@ export function replaySchedule(
       skip(`${plugin.name} no longer resolves "${request.actionType}" as it did`);
       continue;
     }
-    const message = outgoingFor(resolved.action, resolved.parameters);
+    const message = outgoingFor(resolved.action, resolved.parameters, plugin);
     if (message.kind === "ssh") skip(`"${resolved.action.name}" went to the robot over SSH, not rosbridge`);
     else if (message.kind === "none") skip(message.reason);
     else

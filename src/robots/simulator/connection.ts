@@ -5,6 +5,7 @@
 // purpose because clients must survive them: a bare JSON number, null or
 // boolean stops all processing on the connection (07), and a non-integer
 // fragment_size makes it mute (05). Either way the socket stays open.
+import { ActionGoals } from "./action-goals";
 import { ServiceCalls } from "./service-calls";
 import type { RosGraph } from "./graph";
 import { populate } from "./ros-types";
@@ -26,6 +27,7 @@ export class Connection {
   private readonly advertised = new Map<string, Set<unknown>>();
   private readonly partial = new Map<unknown, { total: unknown; parts: Map<unknown, string> }>();
   private readonly calls: ServiceCalls;
+  private readonly goals: ActionGoals;
   private fragmentSize: unknown = null;
   /** rosbridge's worker thread died: nothing sent on this connection is processed. */
   private deaf = false;
@@ -36,6 +38,7 @@ export class Connection {
     private readonly hooks: ConnectionHooks,
   ) {
     this.calls = new ServiceCalls(graph, (m) => this.send(m), hooks.log);
+    this.goals = new ActionGoals(graph, (m) => this.send(m), hooks.log);
   }
 
   receive(text: string) {
@@ -47,6 +50,7 @@ export class Connection {
   }
 
   close() {
+    this.goals.close();
     for (const { subscription, stop } of this.subscriptions.values()) {
       subscription.close();
       stop();
@@ -139,6 +143,8 @@ export class Connection {
       }
     },
     call_service: (m) => this.calls.call(m),
+    send_action_goal: (m) => this.goals.goal(m),
+    cancel_action_goal: (m) => this.goals.cancel(m),
     fragment: (m) => this.defragment(m),
   };
 

@@ -9,6 +9,12 @@ export type ServiceHandler = (
   request: Record<string, unknown>,
 ) => Record<string, unknown> | Promise<Record<string, unknown>>;
 
+/** A ROS 2 action server: runs one goal, may send feedback, resolves with the result unless cancelled. */
+export type ActionHandler = (
+  goal: Record<string, unknown>,
+  run: { feedback(values: Record<string, unknown>): void; cancelled: Promise<void> },
+) => Promise<Record<string, unknown>>;
+
 interface Topic {
   typeKey: string;
   owners: Set<string>;
@@ -18,6 +24,7 @@ export class RosGraph {
   private readonly topics = new Map<string, Topic>();
   private readonly listeners = new Map<string, Set<Listener>>();
   readonly services = new Map<string, { typeKey: string; handler: ServiceHandler }>();
+  readonly actions = new Map<string, { typeKey: string; handler: ActionHandler }>();
 
   /** Declares a topic's type for an owner; returns an error text on a conflict. */
   declare(topic: string, type: string, owner: string): string | null {
@@ -52,6 +59,12 @@ export class RosGraph {
 
   publish(topic: string, message: Record<string, unknown>) {
     for (const listener of [...(this.listeners.get(topic) ?? [])]) listener(message);
+  }
+
+  offerAction(name: string, type: string, handler: ActionHandler) {
+    const lookup = lookupType(type, "action");
+    if (!lookup.ok) throw new Error(lookup.reason);
+    this.actions.set(name, { typeKey: lookup.key, handler });
   }
 
   offer(name: string, type: string, handler: ServiceHandler) {

@@ -4,6 +4,8 @@ import {
   audio,
   battery,
   jointStates,
+  navigation,
+  odometry,
   pluginTopics,
   robotStateReport,
   speech,
@@ -16,12 +18,17 @@ export * from "./nodes";
 
 const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 
-/** The default robot: the topics of a plugin (NAO6's by default), speech, sound files, joint states and battery. */
+/** Whether the plugin drives a base (velocity commands or navigation goals): its robot then has odometry and Nav2's navigation. */
+const drives = (plugin: Plugin) =>
+  plugin.actions.some((a) => a.ros2 && (("topic" in a.ros2 && a.ros2.topic === "/cmd_vel") || "action" in a.ros2));
+
+/** The default robot: the topics of a plugin (NAO6's by default), speech, sound files, joint states and battery; odometry and navigation for a robot that drives. */
 export function simulatedRobot(
   plugin: Plugin,
   { msPerChar = 60, jointStatesHz = 10, batteryHz = 1 } = {},
 ): RobotNode[] {
   return [
+    ...(drives(plugin) ? [odometry(), navigation()] : []),
     pluginTopics(plugin),
     speech({ msPerChar }),
     audio(),

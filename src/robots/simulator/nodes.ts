@@ -190,3 +190,95 @@ export function testServices({ slowMs = 3000 } = {}): RobotNode {
     return () => {};
   };
 }
+
+const angleOf = (q: { z: number; w: number }) => 2 * Math.atan2(q.z, q.w);
+const wrap = (angle: number) => Math.atan2(Math.sin(angle), Math.cos(angle));
+
+/**
+ * nav_msgs/Odometry on /odom at `hz`: the robot's pose, moved by the last
+ * /cmd_vel velocity (a differential drive: forward along its heading, turning
+ * about z), and its velocity. A wheeled robot's odometry, in the "odom" frame.
+ */
+export function odometry({ hz = 10 } = {}): RobotNode {
+  return (graph, state) => {
+    graph.declare("/odom", "nav_msgs/msg/Odometry", ROBOT);
+    let last = performance.now();
+    const timer = setInterval(() => {
+      const now = performance.now();
+      const dt = (now - last) / 1000;
+      last = now;
+      const { linear, angular } = state.velocity;
+      const { pose } = state;
+      pose.theta = wrap(pose.theta + angular * dt);
+      pose.x += linear * Math.cos(pose.theta) * dt;
+      pose.y += linear * Math.sin(pose.theta) * dt;
+      graph.publish("/odom", {
+        header: { stamp: stamp(), frame_id: "odom" },
+        child_frame_id: "base_footprint",
+        pose: {
+          pose: {
+            position: { x: pose.x, y: pose.y, z: 0 },
+            orientation: { x: 0, y: 0, z: Math.sin(pose.theta / 2), w: Math.cos(pose.theta / 2) },
+          },
+          covariance: new Array(36).fill(0),
+        },
+        twist: {
+          twist: { linear: { x: linear, y: 0, z: 0 }, angular: { x: 0, y: 0, z: angular } },
+          covariance: new Array(36).fill(0),
+        },
+      });
+    }, 1000 / hz);
+    return () => clearInterval(timer);
+  };
+}
+
+/**
+ * Nav2's /navigate_to_pose (nav2_msgs/action/NavigateToPose): the robot
+ * drives straight to the goal's position at `speed` m/s, sending its pose and
+ * the distance left as feedback every `stepMs`, then turns to the goal's
+ * heading and succeeds. A cancel stops it where it is.
+ */
+export function navigation({ speed = 0.5, stepMs = 50 } = {}): RobotNode {
+  return (graph, state) => {
+    const timers = new Set<NodeJS.Timeout>();
+    graph.offerAction("/navigate_to_pose", "nav2_msgs/action/NavigateToPose", (goal, run) => {
+      const target = (
+        goal.pose as { pose: { position: { x: number; y: number }; orientation: { z: number; w: number } } }
+      ).pose;
+      const started = Date.now();
+      return new Promise((resolve) => {
+        const step = () => {
+          const { pose } = state;
+          const [dx, dy] = [target.position.x - pose.x, target.position.y - pose.y];
+          const left = Math.hypot(dx, dy);
+          const move = (speed * stepMs) / 1000;
+          if (left <= move) {
+            Object.assign(pose, { x: target.position.x, y: target.position.y, theta: angleOf(target.orientation) });
+            timers.delete(timer);
+            return resolve({ error_code: 0, error_msg: "" });
+          }
+          pose.theta = Math.atan2(dy, dx);
+          pose.x += (dx / left) * move;
+          pose.y += (dy / left) * move;
+          run.feedback({
+            current_pose: {
+              header: { stamp: stamp(), frame_id: "map" },
+              pose: { position: { x: pose.x, y: pose.y, z: 0 } },
+            },
+            distance_remaining: left - move,
+            navigation_time: { sec: Math.floor((Date.now() - started) / 1000), nanosec: 0 },
+          });
+          timer = setTimeout(step, stepMs);
+          timers.add(timer);
+        };
+        let timer = setTimeout(step, stepMs);
+        timers.add(timer);
+        void run.cancelled.then(() => {
+          clearTimeout(timer);
+          timers.delete(timer);
+        });
+      });
+    });
+    return () => timers.forEach(clearTimeout);
+  };
+}

@@ -18,6 +18,18 @@ const MESSAGES: Record<string, Definition> = {
   "builtin_interfaces/Time": { sec: "int32", nanosec: "uint32" },
   "geometry_msgs/Vector3": { x: "float64", y: "float64", z: "float64" },
   "geometry_msgs/Twist": { linear: "geometry_msgs/Vector3", angular: "geometry_msgs/Vector3" },
+  "geometry_msgs/Point": { x: "float64", y: "float64", z: "float64" },
+  "geometry_msgs/Quaternion": { x: "float64", y: "float64", z: "float64", w: "float64" },
+  "geometry_msgs/Pose": { position: "geometry_msgs/Point", orientation: "geometry_msgs/Quaternion" },
+  "geometry_msgs/PoseStamped": { header: "std_msgs/Header", pose: "geometry_msgs/Pose" },
+  "geometry_msgs/PoseWithCovariance": { pose: "geometry_msgs/Pose", covariance: "float64[]" },
+  "geometry_msgs/TwistWithCovariance": { twist: "geometry_msgs/Twist", covariance: "float64[]" },
+  "nav_msgs/Odometry": {
+    header: "std_msgs/Header",
+    child_frame_id: "string",
+    pose: "geometry_msgs/PoseWithCovariance",
+    twist: "geometry_msgs/TwistWithCovariance",
+  },
   "sensor_msgs/JointState": {
     header: "std_msgs/Header",
     name: "string[]",
@@ -50,6 +62,11 @@ const SERVICES: Record<string, { request: Definition; response: Definition }> = 
   "std_srvs/Empty": { request: {}, response: {} },
 };
 
+/** ROS 2 actions: the goal's fields (rosbridge's send_action_goal fills it as it fills a message). */
+const ACTIONS: Record<string, { goal: Definition }> = {
+  "nav2_msgs/NavigateToPose": { goal: { pose: "geometry_msgs/PoseStamped", behavior_tree: "string" } },
+};
+
 const INTEGER_RANGES: Record<string, [number, number]> = {
   int8: [-128, 127],
   uint8: [0, 255],
@@ -64,14 +81,14 @@ const INTEGER_RANGES: Record<string, [number, number]> = {
 export type TypeLookup = { ok: true; key: string; spelling: string } | { ok: false; reason: string };
 
 /** "std_msgs/msg/String" and "std_msgs/String" both give key "std_msgs/String". */
-export function lookupType(name: unknown, kind: "msg" | "srv" = "msg"): TypeLookup {
+export function lookupType(name: unknown, kind: "msg" | "srv" | "action" = "msg"): TypeLookup {
   if (typeof name !== "string") return { ok: false, reason: `${JSON.stringify(name)} is not a valid type string` };
   const parts = name.split("/");
   if (parts.length < 2 || parts.length > 3 || parts.some((p) => !p) || (parts.length === 3 && parts[1] !== kind)) {
     return { ok: false, reason: `${name} is not a valid type string` };
   }
   const key = `${parts[0]}/${parts[parts.length - 1]}`;
-  const table = kind === "msg" ? MESSAGES : SERVICES;
+  const table = kind === "msg" ? MESSAGES : kind === "srv" ? SERVICES : ACTIONS;
   if (!table[key]) {
     const knownPackage = Object.keys(table).some((k) => k.startsWith(`${parts[0]}/`));
     return {
@@ -89,6 +106,10 @@ export class ConversionError extends Error {}
 /** JSON to a full message of the type, as rosbridge's populate_instance does. */
 export function populate(typeKey: string, value: unknown): Record<string, unknown> {
   return populateWith(MESSAGES[typeKey]!, typeKey, value);
+}
+
+export function populateGoal(actionKey: string, value: unknown): Record<string, unknown> {
+  return populateWith(ACTIONS[actionKey]!.goal, `${actionKey}Goal`, value);
 }
 
 export function populateRequest(serviceKey: string, value: unknown): Record<string, unknown> {

@@ -37,6 +37,6 @@ export function transportFor(plugin: Plugin, config: TransportConfig): Transport
   const primary =
     kind === "http"
       ? new HttpTransport({ baseUrl: config.httpBaseUrl ?? String(plugin.httpBaseUrl) })
-      : new RosbridgeTransport({ url: (kind === "simulated" ? config.simulatorUrl : config.rosbridgeUrl)! });
+      : new RosbridgeTransport({ url: (kind === "simulated" ? config.simulatorUrl : config.rosbridgeUrl)!, plugin });
   return { ok: true, transport: new RoutedTransport(plugin, channels, primary, ssh) };
 }

@@ -8,7 +8,7 @@
 // Server state belongs to one connection (transcript 09): after every
 // reconnect a fresh roslib.Ros is made and state subscriptions are re-sent.
 import * as ROSLIB from "roslib";
-import { outgoingFor, type JsonValue, type PluginAction } from "../../core/plugins";
+import { outgoingFor, type JsonValue, type Plugin, type PluginAction } from "../../core/plugins";
 import {
   backoffDelay,
   checkedParameters,
@@ -18,6 +18,7 @@ import {
   unreached,
   type Backoff,
 } from "./link";
+import { holdThenStop, readOnce, sendGoal } from "./ros2-goal";
 import type { DispatchOutcome } from "./transport";
 
 export interface RosbridgeOptions {
@@ -26,6 +27,8 @@ export interface RosbridgeOptions {
   heartbeatTimeoutMs?: number;
   /** Reconnect delays grow from the first to the last (default: RECONNECT_BACKOFF). */
   backoffMs?: Backoff;
+  /** The robot's plugin, for what an action needs of the robot as a whole (its top turning speed). */
+  plugin?: Pick<Plugin, "actions">;
 }
 
 const HEARTBEAT_SERVICE = "/hristudio/heartbeat";
@@ -64,7 +67,7 @@ export class RosbridgeTransport extends LinkedTransport {
     const timeoutMs = timeoutOf(action);
     const checked = checkedParameters(action, parameters);
     if (!checked.ok) return checked.outcome;
-    const outgoing = outgoingFor(action, checked.parameters);
+    const outgoing = outgoingFor(action, checked.parameters, this.options.plugin);
     if (outgoing.kind === "none") return { status: "failed", reason: outgoing.reason };
     if (outgoing.kind === "ssh")
       return { status: "failed", reason: `action "${action.id}" runs over SSH, not rosbridge` };
@@ -79,6 +82,10 @@ export class RosbridgeTransport extends LinkedTransport {
       this.topic(ros, outgoing.topic, outgoing.messageType).publish(outgoing.message);
       return { status: "completed", detail: { topic: outgoing.topic } };
     }
+    if (outgoing.kind === "goal") return sendGoal(ros, outgoing, started + timeoutMs);
+    if (outgoing.kind === "read") return readOnce(ros, outgoing, started + timeoutMs);
+    if (outgoing.kind === "motion")
+      return holdThenStop((m) => this.publish(outgoing.topic, outgoing.messageType, m), outgoing);
     return this.call(ros, outgoing.service, outgoing.serviceType, outgoing.args, started + timeoutMs);
   }
 

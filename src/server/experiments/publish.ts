@@ -25,7 +25,16 @@ export async function publish(db: Database, experimentId: string, userId: string
     // The exact plugin document the design was published against: its trials run with it, whatever is installed later.
     const known = await knownPlugin(tx, design.robotId);
     const plugin = known?.plugin;
-    const problems = validateDesign(draftFrom(design), plugin ?? null).filter((i) => i.severity === "error");
+    const issues = validateDesign(draftFrom(design), plugin ?? null);
+    // The designer only warns of an action the robot cannot do; a version that trials run must not hold one.
+    const cannot = issues.filter((i) => i.code === "unsupported_on_robot");
+    if (cannot.length) {
+      throw new TRPCError({
+        code: "BAD_REQUEST",
+        message: `This experiment cannot be published: ${plugin?.name ?? design.robotId} cannot do ${cannot.length === 1 ? "this action" : `these ${cannot.length} actions`}. ${cannot.map((i) => `${stepOf(design.steps, i.stepId)}: ${i.message}`).join("; ")}. Replace or remove ${cannot.length === 1 ? "it" : "them"}, or choose another robot.`,
+      });
+    }
+    const problems = issues.filter((i) => i.severity === "error");
     if (problems.length) {
       const listed = problems
         .slice(0, 5)
@@ -71,4 +80,10 @@ export async function publish(db: Database, experimentId: string, userId: string
       .returning();
     return version!;
   });
+}
+
+/** "Step 2 (Greeting)": where an action is, as the designer numbers steps. */
+function stepOf(steps: Array<{ id: string; name: string }>, stepId: string | undefined): string {
+  const at = steps.findIndex((s) => s.id === stepId);
+  return at < 0 ? "A step" : `Step ${at + 1} (${steps[at]!.name})`;
 }
