@@ -8,6 +8,7 @@ import {
   lostAccess,
   mayReadTrialLog,
   replayVerdict,
+  signalVerdict,
   touches,
   type AccessChange,
   type TrialAccess,
@@ -30,8 +31,11 @@ import { annotate } from "./annotations";
 import type { EventRelay } from "./relay";
 import type { Replays } from "./replay";
 import type { TrialHosts } from "./trial-hosts";
+import type { IceServer } from "@/core/network/ice-servers";
 
 interface Connection {
+  /** Names this connection to the others of its trial, for live video's signals. */
+  peerId: string;
   /** Set at the first hello: a connection follows one trial, once. */
   greeted: boolean;
   closed: boolean;
@@ -57,6 +61,8 @@ export interface RuntimeOptions {
   secret: string;
   hostname: string;
   port: number;
+  /** STUN/TURN servers the browsers use for live video (HRI_ICE_SERVERS). */
+  iceServers?: IceServer[];
 }
 
 /** Close codes the browser acts on: 4401 fetch a fresh token and retry; 4403 stop and say why. */
@@ -77,7 +83,16 @@ function eventsMessage(events: StoredEvent[]): string {
 
 const mayRun = (access: TrialAccess) => commandVerdict(access, "next").allow;
 
-export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname, port }: RuntimeOptions) {
+export function startRuntimeServer({
+  db,
+  hosts,
+  relay,
+  replays,
+  secret,
+  hostname,
+  port,
+  iceServers = [],
+}: RuntimeOptions) {
   /** Admitted sockets by trial: presence, annotations and access changes reach them. */
   const viewers = new Map<string, Set<Socket>>();
   const send = (ws: Socket, message: ServerMessage): void => void ws.send(JSON.stringify(message));
@@ -87,6 +102,7 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
       userId: s.data.access!.userId,
       name: s.data.access!.name,
       role: s.data.access!.studyRole ?? "",
+      peerId: s.data.peerId,
     }));
     for (const s of sockets) send(s, { type: "presence", viewers: list });
     return list;
@@ -150,6 +166,8 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
       mayRun: mayRun(now),
       events: shown.map(toWire),
       viewers: presence(trialId),
+      peerId: ws.data.peerId,
+      iceServers,
     });
     if (host) send(ws, { type: "robot", connected: host.robotStatus() });
   }
@@ -277,6 +295,23 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
     send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
   }
 
+  /**
+   * Passes a live video signal to another connection of the same trial, as it is. Never
+   * touches the database or the trial's host: video can neither delay nor block a command.
+   */
+  function signal(ws: Socket, message: Extract<ClientMessage, { type: "signal" }>): void {
+    const { claims, access } = ws.data;
+    const reject = (reason: string) => send(ws, { type: "rejected", requestId: message.requestId, reason });
+    if (!claims || !access) return reject("Say hello with your trial link first.");
+    // Looked up among this trial's own connections: a peer of any other trial is not found.
+    const to = [...(viewers.get(claims.trialId) ?? [])].find((s) => s.data.peerId === message.peerId && s !== ws);
+    if (!to) return reject("That person is no longer connected to this trial: the video to them was not sent.");
+    const verdict = signalVerdict(access, to.data.access!);
+    if (!verdict.allow) return reject(verdict.reason);
+    send(to, { type: "signal", peerId: ws.data.peerId, signal: message.signal });
+    send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
+  }
+
   async function onMessage(ws: Socket, text: string): Promise<void> {
     if (ws.data.closed) return;
     const parsed = parseClientMessage(text);
@@ -290,6 +325,7 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
         shut(ws, 1011, `The server could not open this trial (reference ${ref}). Reload the page.`);
       });
     }
+    if (message.type === "signal") return signal(ws, message);
     if (message.type === "replay" || message.type === "replay_stop") {
       // One at a time: a quick run of seeks ends with the last one playing, and held by this connection.
       const run = (ws.data.replayQueue ?? Promise.resolve()).then(() => replay(ws, message));
@@ -303,7 +339,18 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
     hostname,
     port,
     fetch(req, server) {
-      if (server.upgrade(req, { data: { greeted: false, closed: false, claims: null, access: null, reloads: 0 } }))
+      if (
+        server.upgrade(req, {
+          data: {
+            peerId: crypto.randomUUID(),
+            greeted: false,
+            closed: false,
+            claims: null,
+            access: null,
+            reloads: 0,
+          },
+        })
+      )
         return undefined;
       return new Response("This is the HRIStudio trial runtime: connect with a WebSocket.", { status: 426 });
     },
