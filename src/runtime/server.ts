@@ -299,7 +299,7 @@ export function startRuntimeServer({
    * Passes a live video signal to another connection of the same trial, as it is. Never
    * touches the database or the trial's host: video can neither delay nor block a command.
    */
-  function signal(ws: Socket, message: Extract<ClientMessage, { type: "signal" }>): void {
+  function signal(ws: Socket, message: Extract<ClientMessage, { type: "signal" }>) {
     const { claims, access } = ws.data;
     const reject = (reason: string) => send(ws, { type: "rejected", requestId: message.requestId, reason });
     if (!claims || !access) return reject("Say hello with your trial link first.");
