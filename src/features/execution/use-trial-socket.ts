@@ -12,6 +12,7 @@ import {
   SOCKET_MESSAGES_VERSION,
   type ClientMessage,
   type ServerMessage,
+  type Signal,
   type Viewer,
   type WireEvent,
   type WizardCommand,
@@ -20,6 +21,8 @@ import { useTRPC } from "@/lib/trpc";
 
 export type Annotation = Extract<ServerMessage, { type: "annotation" }>["annotation"];
 type Outcome = { ok: true } | { ok: false; reason: string };
+export type IceServers = Extract<ServerMessage, { type: "welcome" }>["iceServers"];
+export type SignalListener = (from: string, signal: Signal) => void;
 
 export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const trpc = useTRPC();
@@ -37,6 +40,11 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const [logBehind, setLogBehind] = useState<string | null>(null);
   // Whether the server lets me command this trial (role, assigned wizard), as it last said.
   const [mayRun, setMayRun] = useState<boolean | null>(null);
+  // Live video: this connection's name among the trial's, and the STUN/TURN servers to use.
+  const [peer, setPeer] = useState<{ peerId: string; iceServers: IceServers } | null>(null);
+  const signalListeners = useRef(new Set<SignalListener>());
+  // Signals' outcomes are the video's business: a refused one never becomes the page's notice.
+  const signalRequests = useRef(new Set<string>());
   const socket = useRef<WebSocket | null>(null);
   const lastSeq = useRef(0);
   const pending = useRef(new Map<string, (o: Outcome) => void>());
@@ -85,12 +93,16 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
           setNotice(null);
           setViewers(m.viewers);
           setMayRun(m.mayRun);
+          setPeer({ peerId: m.peerId, iceServers: m.iceServers });
           receive(m.events);
         } else if (m.type === "access") setMayRun(m.mayRun);
         else if (m.type === "events") receive(m.events);
         else if (m.type === "presence") setViewers(m.viewers);
         else if (m.type === "robot") setRobot({ connected: m.connected, detail: m.detail });
         else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
+        else if (m.type === "signal") for (const listen of signalListeners.current) listen(m.peerId, m.signal);
+        else if ((m.type === "ack" || m.type === "rejected") && m.requestId && signalRequests.current.has(m.requestId))
+          signalRequests.current.delete(m.requestId);
         else if (m.type === "halted") {
           const requestId = m.requestId;
           setTimeout(() => {
@@ -113,6 +125,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
       };
       ws.onclose = (event) => {
         setConnected(false);
+        setPeer(null);
+        signalRequests.current.clear();
         for (const settle of pending.current.values())
           settle({ ok: false, reason: "The connection dropped before the server confirmed this." });
         pending.current.clear();
@@ -151,6 +165,21 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     });
   }, []);
 
+  /** Sends a live video signal, fire and forget: the video copes with a lost one, the trial never waits on it. */
+  const signal = useCallback((peerId: string, signal: Signal) => {
+    const ws = socket.current;
+    if (!ws || ws.readyState !== WebSocket.OPEN) return;
+    const requestId = crypto.randomUUID();
+    signalRequests.current.add(requestId);
+    ws.send(JSON.stringify({ type: "signal", requestId, peerId, signal } satisfies ClientMessage));
+  }, []);
+  const onSignal = useCallback((listen: SignalListener) => {
+    signalListeners.current.add(listen);
+    return () => void signalListeners.current.delete(listen);
+  }, []);
+
+  const video = useMemo(() => (peer ? { ...peer, signal, onSignal } : null), [peer, signal, onSignal]);
+
   // Events only ever arrive appended: each batch is applied to the state so far, never refolded from the start.
   const folded = useRef<{ protocol: TrialProtocol; count: number; state: TrialState } | null>(null);
   const state = useMemo(() => {
@@ -172,6 +201,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     connected,
     robot,
     mayRun,
+    /** Live video's side of the socket: null until welcomed (and while reconnecting). */
+    video,
     command: (command: WizardCommand) =>
       request(
         (requestId) => ({ type: "command", requestId, command }),
