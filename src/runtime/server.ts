@@ -31,6 +31,7 @@ import { annotate } from "./annotations";
 import type { EventRelay } from "./relay";
 import type { Replays } from "./replay";
 import type { TrialHosts } from "./trial-hosts";
+import type { CameraFrame } from "./robot";
 import type { IceServer } from "@/core/network/ice-servers";
 
 interface Connection {
@@ -45,13 +46,21 @@ interface Connection {
   /** Counts reloads, so an older reload finishing late never overwrites a newer one. */
   reloads: number;
   unsubscribe?: () => void;
+  /** Stops the robot's camera frames to this connection. */
+  stopCamera?: () => void;
   /** Stops this connection's replay, if one is playing. */
   stopReplay?: () => void;
   /** The connection's replay messages, one after another. */
   replayQueue?: Promise<unknown>;
 }
 
-type Socket = { data: Connection; send(text: string): unknown; close(code?: number, reason?: string): void };
+type Socket = {
+  data: Connection;
+  send(text: string): unknown;
+  close(code?: number, reason?: string): void;
+  /** Bytes queued to this browser and not yet sent (Bun's ServerWebSocket). */
+  getBufferedAmount(): number;
+};
 
 export interface RuntimeOptions {
   db: Database;
@@ -78,6 +87,16 @@ function eventsMessage(events: StoredEvent[]): string {
       events,
       (text = JSON.stringify({ type: "events", events: events.map(toWire) } satisfies ServerMessage)),
     );
+  return text;
+}
+
+/** A connection this far behind skips the robot's camera frames until it catches up: the frames wait for no one. */
+const CAMERA_BACKLOG_BYTES = 256 * 1024;
+const cameraMessages = new WeakMap<CameraFrame, string>();
+function cameraMessage(frame: CameraFrame): string {
+  let text = cameraMessages.get(frame);
+  if (text === undefined)
+    cameraMessages.set(frame, (text = JSON.stringify({ type: "camera", ...frame } satisfies ServerMessage)));
   return text;
 }
 
@@ -113,6 +132,7 @@ export function startRuntimeServer({
     if (ws.data.closed) return;
     ws.data.closed = true;
     ws.data.unsubscribe?.();
+    ws.data.stopCamera?.();
     ws.data.stopReplay?.();
     const trialId = ws.data.claims?.trialId;
     if (trialId && viewers.get(trialId)?.delete(ws)) presence(trialId);
@@ -169,7 +189,14 @@ export function startRuntimeServer({
       peerId: ws.data.peerId,
       iceServers,
     });
-    if (host) send(ws, { type: "robot", connected: host.robotStatus() });
+    if (host) {
+      send(ws, { type: "robot", connected: host.robotStatus() });
+      // The robot's camera, to whoever may follow the trial now, as fast as their connection takes it.
+      ws.data.stopCamera = host.watchCamera((frame) => {
+        if (ws.data.closed || !mayReadTrialLog(ws.data.access!)) return;
+        if (ws.getBufferedAmount() < CAMERA_BACKLOG_BYTES) ws.send(cameraMessage(frame));
+      });
+    }
   }
 
   /** Reloads one socket's access; closes it if its user may no longer be here. */

@@ -8,7 +8,8 @@ import type { StoredEvent } from "@/core/trial";
 // server sends "access" when the caller's role or rights change.
 // 3: "halted": the robot was stopped, ahead of the stop being logged.
 // 4: "signal": live video between the wizard's and observers' browsers (WebRTC), relayed by the runtime;
-// each connection has a `peerId` (welcome, presence) and the welcome carries the ICE servers.
+// each connection has a `peerId` (welcome, presence) and the welcome carries the ICE servers;
+// "camera": the robot's own camera, frame by frame.
 export const SOCKET_MESSAGES_VERSION = 4;
 
 /** Every id a message carries is declared with this, so tests can find them all. */
@@ -152,6 +153,8 @@ export const serverMessageSchema = z.discriminatedUnion("type", [
   }),
   z.object({ type: z.literal("robot"), connected: z.boolean(), detail: z.string().optional() }),
   z.object({ type: z.literal("pong") }),
+  // The robot's camera (its plugin's `camera`): one compressed image, base64, as the robot sent it.
+  z.object({ type: z.literal("camera"), format: z.string().max(100), data: z.string() }),
   // Live video: a signal from another connection of this trial.
   z.object({ type: z.literal("signal"), peerId: z.string(), signal: signalSchema }),
   // This connection's replay as it goes: started, each command sent, ended or stopped (with why).

@@ -10,6 +10,7 @@ import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
 import { BrowserAudio } from "./browser-audio";
 import { SendVideo, WatchVideo } from "./live-video-panel";
+import { RobotCamera } from "./robot-camera";
 import { AnnotateForm, AnnotationList, Watching } from "./observer-panel";
 import { OffScript, StepActions, StepList } from "./protocol-view";
 import { TrialQuestionnaires } from "@/features/questionnaires/trial-questionnaires";
@@ -149,6 +150,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           )}
           {wizard && <SendVideo video={live.video} viewers={live.viewers} stream={camera} />}
           {!wizard && <WatchVideo video={live.video} />}
+          <RobotCamera onCamera={live.onCamera} />
           {wizard && trial.participantId && !trial.isRehearsal && (
             <TrialQuestionnaires studyId={trial.studyId} trialId={trial.id} participantId={trial.participantId} />
           )}

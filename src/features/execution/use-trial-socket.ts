@@ -23,6 +23,7 @@ export type Annotation = Extract<ServerMessage, { type: "annotation" }>["annotat
 type Outcome = { ok: true } | { ok: false; reason: string };
 export type IceServers = Extract<ServerMessage, { type: "welcome" }>["iceServers"];
 export type SignalListener = (from: string, signal: Signal) => void;
+export type CameraFrame = Omit<Extract<ServerMessage, { type: "camera" }>, "type">;
 
 export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const trpc = useTRPC();
@@ -43,6 +44,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   // Live video: this connection's name among the trial's, and the STUN/TURN servers to use.
   const [peer, setPeer] = useState<{ peerId: string; iceServers: IceServers } | null>(null);
   const signalListeners = useRef(new Set<SignalListener>());
+  // The robot's camera goes straight to the picture that shows it: a frame re-renders nothing else.
+  const cameraListeners = useRef(new Set<(frame: CameraFrame) => void>());
   // Signals' outcomes are the video's business: a refused one never becomes the page's notice.
   const signalRequests = useRef(new Set<string>());
   const socket = useRef<WebSocket | null>(null);
@@ -100,6 +103,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         else if (m.type === "presence") setViewers(m.viewers);
         else if (m.type === "robot") setRobot({ connected: m.connected, detail: m.detail });
         else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
+        else if (m.type === "camera") for (const show of cameraListeners.current) show(m);
         else if (m.type === "signal") for (const listen of signalListeners.current) listen(m.peerId, m.signal);
         else if ((m.type === "ack" || m.type === "rejected") && m.requestId && signalRequests.current.has(m.requestId))
           signalRequests.current.delete(m.requestId);
@@ -178,6 +182,10 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     return () => void signalListeners.current.delete(listen);
   }, []);
 
+  const onCamera = useCallback((show: (frame: CameraFrame) => void) => {
+    cameraListeners.current.add(show);
+    return () => void cameraListeners.current.delete(show);
+  }, []);
   const video = useMemo(() => (peer ? { ...peer, signal, onSignal } : null), [peer, signal, onSignal]);
 
   // Events only ever arrive appended: each batch is applied to the state so far, never refolded from the start.
@@ -203,6 +211,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     mayRun,
     /** Live video's side of the socket: null until welcomed (and while reconnecting). */
     video,
+    /** The robot's camera frames, as they arrive. */
+    onCamera,
     command: (command: WizardCommand) =>
       request(
         (requestId) => ({ type: "command", requestId, command }),

@@ -10,13 +10,15 @@ import {
   testServices,
   type RobotNode,
 } from "./nodes";
+import { camera } from "./camera";
 
 export { startSimulator, type Simulator, type SimulatorOptions, type Received } from "./server";
 export * from "./nodes";
+export { camera, CAMERA_TOPIC } from "./camera";
 
 const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 
-/** The default robot: the topics of a plugin (NAO6's by default), speech, sound files, joint states and battery. */
+/** The default robot: the topics of a plugin (NAO6's by default), speech, sound files, joint states, battery and its camera. */
 export function simulatedRobot(
   plugin: Plugin,
   { msPerChar = 60, jointStatesHz = 10, batteryHz = 1 } = {},
@@ -32,6 +34,7 @@ export function simulatedRobot(
       velocity: [0, 0, 0, 0],
     }),
     battery({ hz: batteryHz }),
+    camera(),
     robotStateReport(),
     testServices(),
   ];
