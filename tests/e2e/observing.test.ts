@@ -106,5 +106,5 @@ describe.sequential("observing a live trial", () => {
     await observers[0]!.goto("/studies");
     await screenshot(observers[0]!, "live-now");
     for (const page of [...observers, wizard]) await page.context().close();
-  });
+  }, 240_000);
 });
