@@ -70,10 +70,13 @@ async function measure(label: string) {
   return { acked, dispatched };
 }
 
-const p99 = (samples: number[]) =>
-  percentile(
-    [...samples].sort((a, b) => a - b),
-    99,
+/** 10 % over the p99 without video, to the millisecond. */
+const within10 = (samples: number[]) =>
+  Math.round(
+    percentile(
+      [...samples].sort((a, b) => a - b),
+      99,
+    ) * 1.1,
   );
 
 await measure("warm-up");
