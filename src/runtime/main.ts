@@ -46,6 +46,7 @@ const runtime = startRuntimeServer({
   secret: config.BETTER_AUTH_SECRET,
   hostname: config.HOST,
   port: config.HRI_RUNTIME_PORT,
+  iceServers: config.HRI_ICE_SERVERS,
 });
 announceRobot = runtime.announceRobot;
 // Membership, role, blinding and assigned-wizard changes reach open sockets at once.

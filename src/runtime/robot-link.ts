@@ -3,7 +3,10 @@
 // its outcome reported back as the trial's action events. One path, no other.
 import { resolveAction, type Plugin } from "@/core/plugins";
 import type { Transport } from "@/robots/transports";
-import type { RobotLink, RobotReport, RobotRequest } from "./robot";
+import type { CameraFrame, RobotLink, RobotReport, RobotRequest } from "./robot";
+
+/** 5 frames a second unless the plugin says otherwise: what a lab's network holds for several watchers. */
+const CAMERA_THROTTLE_MS = 200;
 
 export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
   const connecting = transport.connect().catch(() => undefined);
@@ -53,6 +56,19 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
       );
       return () => stops.forEach((stop) => stop());
     },
+    watchCamera(listener) {
+      const { camera } = plugin;
+      if (!camera) return () => {};
+      return transport.subscribe(
+        camera.topic,
+        camera.messageType,
+        (message) => {
+          const frame = cameraFrame(message);
+          if (frame) listener(frame);
+        },
+        { throttleRate: camera.throttleRate ?? CAMERA_THROTTLE_MS },
+      );
+    },
     close() {
       void transport.close();
     },
@@ -69,6 +85,19 @@ export function unavailableRobot(reason: string): RobotLink {
       listener(false, reason);
     },
     watchState: () => () => {},
+    watchCamera: () => () => {},
     close() {},
   };
+}
+
+/** A CompressedImage's bytes arrive as base64 (rosbridge's JSON) or, from some bridges, as numbers. */
+function cameraFrame(message: unknown): CameraFrame | null {
+  const { format, data } = (message ?? {}) as { format?: unknown; data?: unknown };
+  const bytes =
+    typeof data === "string"
+      ? data
+      : Array.isArray(data) && data.every((b) => typeof b === "number")
+        ? Buffer.from(data).toString("base64")
+        : null;
+  return bytes ? { format: typeof format === "string" ? format : "jpeg", data: bytes } : null;
 }

@@ -13,6 +13,13 @@ export type RobotReport =
   | { kind: "failed"; actionId: string; reason: string }
   | { kind: "timed_out"; actionId: string };
 
+export interface CameraFrame {
+  /** What sensor_msgs/CompressedImage says, e.g. "jpeg" or "rgb8; jpeg compressed bgr8". */
+  format: string;
+  /** The image's bytes, base64. */
+  data: string;
+}
+
 export interface RobotLink {
   perform(request: RobotRequest, report: (r: RobotReport) => void): void;
   /** Stop everything now (emergency stop). */
@@ -20,6 +27,8 @@ export interface RobotLink {
   connected(): boolean;
   /** Robot state messages (the plugin's state topics) as they arrive; returns a function that stops them. */
   watchState(listener: (topic: string, message: unknown) => void): () => void;
+  /** The robot's camera frames (the plugin's `camera`), base64, at its throttle; returns a function that stops them. */
+  watchCamera(listener: (frame: CameraFrame) => void): () => void;
   onConnection(listener: (connected: boolean, detail?: string) => void): void;
   close(): void;
 }

@@ -8,6 +8,7 @@ import {
   lostAccess,
   mayReadTrialLog,
   replayVerdict,
+  signalVerdict,
   touches,
   type AccessChange,
   type TrialAccess,
@@ -30,8 +31,12 @@ import { annotate } from "./annotations";
 import type { EventRelay } from "./relay";
 import type { Replays } from "./replay";
 import type { TrialHosts } from "./trial-hosts";
+import type { CameraFrame } from "./robot";
+import type { IceServer } from "@/core/network/ice-servers";
 
 interface Connection {
+  /** Names this connection to the others of its trial, for live video's signals. */
+  peerId: string;
   /** Set at the first hello: a connection follows one trial, once. */
   greeted: boolean;
   closed: boolean;
@@ -41,13 +46,21 @@ interface Connection {
   /** Counts reloads, so an older reload finishing late never overwrites a newer one. */
   reloads: number;
   unsubscribe?: () => void;
+  /** Stops the robot's camera frames to this connection. */
+  stopCamera?: () => void;
   /** Stops this connection's replay, if one is playing. */
   stopReplay?: () => void;
   /** The connection's replay messages, one after another. */
   replayQueue?: Promise<unknown>;
 }
 
-type Socket = { data: Connection; send(text: string): unknown; close(code?: number, reason?: string): void };
+type Socket = {
+  data: Connection;
+  send(text: string): unknown;
+  close(code?: number, reason?: string): void;
+  /** Bytes queued to this browser and not yet sent (Bun's ServerWebSocket). */
+  getBufferedAmount(): number;
+};
 
 export interface RuntimeOptions {
   db: Database;
@@ -57,6 +70,8 @@ export interface RuntimeOptions {
   secret: string;
   hostname: string;
   port: number;
+  /** STUN/TURN servers the browsers use for live video (HRI_ICE_SERVERS). */
+  iceServers?: IceServer[];
 }
 
 /** Close codes the browser acts on: 4401 fetch a fresh token and retry; 4403 stop and say why. */
@@ -75,9 +90,28 @@ function eventsMessage(events: StoredEvent[]): string {
   return text;
 }
 
+/** A connection this far behind skips the robot's camera frames until it catches up: the frames wait for no one. */
+const CAMERA_BACKLOG_BYTES = 256 * 1024;
+const cameraMessages = new WeakMap<CameraFrame, string>();
+function cameraMessage(frame: CameraFrame): string {
+  let text = cameraMessages.get(frame);
+  if (text === undefined)
+    cameraMessages.set(frame, (text = JSON.stringify({ type: "camera", ...frame } satisfies ServerMessage)));
+  return text;
+}
+
 const mayRun = (access: TrialAccess) => commandVerdict(access, "next").allow;
 
-export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname, port }: RuntimeOptions) {
+export function startRuntimeServer({
+  db,
+  hosts,
+  relay,
+  replays,
+  secret,
+  hostname,
+  port,
+  iceServers = [],
+}: RuntimeOptions) {
   /** Admitted sockets by trial: presence, annotations and access changes reach them. */
   const viewers = new Map<string, Set<Socket>>();
   const send = (ws: Socket, message: ServerMessage): void => void ws.send(JSON.stringify(message));
@@ -87,6 +121,7 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
       userId: s.data.access!.userId,
       name: s.data.access!.name,
       role: s.data.access!.studyRole ?? "",
+      peerId: s.data.peerId,
     }));
     for (const s of sockets) send(s, { type: "presence", viewers: list });
     return list;
@@ -97,6 +132,7 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
     if (ws.data.closed) return;
     ws.data.closed = true;
     ws.data.unsubscribe?.();
+    ws.data.stopCamera?.();
     ws.data.stopReplay?.();
     const trialId = ws.data.claims?.trialId;
     if (trialId && viewers.get(trialId)?.delete(ws)) presence(trialId);
@@ -152,8 +188,17 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
       mayRun: mayRun(now),
       events: shown.map(toWire),
       viewers: presence(trialId),
+      peerId: ws.data.peerId,
+      iceServers,
     });
-    if (host) send(ws, { type: "robot", connected: host.robotStatus() });
+    if (host) {
+      send(ws, { type: "robot", connected: host.robotStatus() });
+      // The robot's camera, to whoever may follow the trial now, as fast as their connection takes it.
+      ws.data.stopCamera = host.watchCamera((frame) => {
+        if (ws.data.closed || !mayReadTrialLog(ws.data.access!)) return;
+        if (ws.getBufferedAmount() < CAMERA_BACKLOG_BYTES) ws.send(cameraMessage(frame));
+      });
+    }
   }
 
   /** Reloads one socket's access; closes it if its user may no longer be here. */
@@ -280,6 +325,23 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
     send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
   }
 
+  /**
+   * Passes a live video signal to another connection of the same trial, as it is. Never
+   * touches the database or the trial's host: video can neither delay nor block a command.
+   */
+  function signal(ws: Socket, message: Extract<ClientMessage, { type: "signal" }>) {
+    const { claims, access } = ws.data;
+    const reject = (reason: string) => send(ws, { type: "rejected", requestId: message.requestId, reason });
+    if (!claims || !access) return reject("Say hello with your trial link first.");
+    // Looked up among this trial's own connections: a peer of any other trial is not found.
+    const to = [...(viewers.get(claims.trialId) ?? [])].find((s) => s.data.peerId === message.peerId && s !== ws);
+    if (!to) return reject("That person is no longer connected to this trial: the video to them was not sent.");
+    const verdict = signalVerdict(access, to.data.access!);
+    if (!verdict.allow) return reject(verdict.reason);
+    send(to, { type: "signal", peerId: ws.data.peerId, signal: message.signal });
+    send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
+  }
+
   async function onMessage(ws: Socket, text: string): Promise<void> {
     if (ws.data.closed) return;
     const parsed = parseClientMessage(text);
@@ -293,6 +355,7 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
         shut(ws, 1011, `The server could not open this trial (reference ${ref}). Reload the page.`);
       });
     }
+    if (message.type === "signal") return signal(ws, message);
     if (message.type === "replay" || message.type === "replay_stop") {
       // One at a time: a quick run of seeks ends with the last one playing, and held by this connection.
       const run = (ws.data.replayQueue ?? Promise.resolve()).then(() => replay(ws, message));
@@ -306,7 +369,18 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
     hostname,
     port,
     fetch(req, server) {
-      if (server.upgrade(req, { data: { greeted: false, closed: false, claims: null, access: null, reloads: 0 } }))
+      if (
+        server.upgrade(req, {
+          data: {
+            peerId: crypto.randomUUID(),
+            greeted: false,
+            closed: false,
+            claims: null,
+            access: null,
+            reloads: 0,
+          },
+        })
+      )
         return undefined;
       return new Response("This is the HRIStudio trial runtime: connect with a WebSocket.", { status: 426 });
     },

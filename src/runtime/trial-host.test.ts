@@ -29,6 +29,7 @@ function timekeeperRobot(): RobotLink {
     connected: () => true,
     onConnection() {},
     watchState: () => () => {},
+    watchCamera: () => () => {},
     close() {},
   };
 }

@@ -16,7 +16,7 @@ import { answeredRequests, eventsSince, type TrialCursor } from "@/store/event-s
 import { directWriter, type LogWriter } from "./log-writer";
 import { areTheseEvents } from "@/core/trial/landed";
 import { CONTROL_TYPES } from "@/core/trial/types";
-import type { RobotLink } from "./robot";
+import type { CameraFrame, RobotLink } from "./robot";
 import { sampleRecorder } from "./samples";
 
 function startedAt(events: StoredEvent[]): number | null {
@@ -112,6 +112,9 @@ export class TrialHost {
   private halts = 0;
   /** When the command being logged now started its write: null while none is. */
   private writingSince: number | null = null;
+  /** Who watches the robot's camera now; the camera is subscribed only while someone does. */
+  private readonly cameraWatchers = new Set<(frame: CameraFrame) => void>();
+  private stopCamera: (() => void) | null = null;
   /** Told when the trial ends, and when its last client leaves. */
   private readonly lifecycle = { ended: () => {}, unwatched: () => {} };
   private readonly timers = new Set<ReturnType<typeof setTimeout>>();
@@ -186,6 +189,20 @@ export class TrialHost {
     this.listeners.add(listener);
     return () => {
       if (this.listeners.delete(listener) && this.listeners.size === 0) this.lifecycle.unwatched();
+    };
+  }
+
+  /** The robot's camera frames, for one watcher; apart from the commands and the log. */
+  watchCamera(listener: (frame: CameraFrame) => void) {
+    this.cameraWatchers.add(listener);
+    this.stopCamera ??= this.robot.watchCamera((frame) => {
+      for (const watch of this.cameraWatchers) watch(frame);
+    });
+    return () => {
+      if (this.cameraWatchers.delete(listener) && this.cameraWatchers.size === 0) {
+        this.stopCamera?.();
+        this.stopCamera = null;
+      }
     };
   }
 
@@ -389,6 +406,9 @@ export class TrialHost {
     this.shut = true;
     for (const t of this.timers) clearTimeout(t);
     this.stopWatching();
+    this.stopCamera?.();
+    this.stopCamera = null;
+    this.cameraWatchers.clear();
     await this.queue;
     await this.samples.close();
     this.robot.close();

@@ -2,6 +2,7 @@
 // The README's configuration table lists the same variables.
 import { z } from "zod";
 import { parseTrustedProxies } from "../core/network/client-address";
+import { parseIceServers } from "../core/network/ice-servers";
 
 const flag = z
   .enum(["true", "false", "1", "0", "yes", "no"])
@@ -59,6 +60,18 @@ const schema = z.object({
         return z.NEVER;
       }
       return parsed.ranges;
+    }),
+  // STUN/TURN servers for the live video between the wizard's and observers' browsers; none on one network.
+  HRI_ICE_SERVERS: z
+    .string()
+    .default("")
+    .transform((setting, ctx) => {
+      const parsed = parseIceServers(setting);
+      if ("error" in parsed) {
+        ctx.addIssue({ code: "custom", message: parsed.error });
+        return z.NEVER;
+      }
+      return parsed.servers;
     }),
   HRI_SEED_DEMO: flag.optional(),
   // One password for every demo account (workshops, tests); random when unset.

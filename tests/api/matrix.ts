@@ -292,6 +292,7 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   ],
   "trials.create": [RUNNERS, (_f, b) => ({ versionId: b.version.id, participantId: b.participant.id })],
   "trials.rehearse": [RUNNERS, (_f, b) => ({ experimentId: b.experiment.id })],
+  "trials.liveNow": [SIGNED_IN, () => undefined],
   "trials.list": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
   "trials.get": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
   "trials.socketToken": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],

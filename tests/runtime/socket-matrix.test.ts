@@ -19,6 +19,8 @@ interface Ids {
   trialId: string;
   studyId: string;
   recordingId: string;
+  /** Live video: a connection of that study's trial, by its peer id. */
+  peerId: string;
 }
 const ID_KEYS: Record<string, (side: Side, ids: Record<Side, Ids>) => string> = {
   actionId: (side) => `${side === "own" ? "A" : "B"}-ask`,
@@ -27,6 +29,12 @@ const ID_KEYS: Record<string, (side: Side, ids: Record<Side, Ids>) => string> = 
   recordingId: (side, ids) => ids[side].recordingId,
   trialId: (side, ids) => ids[side].trialId,
   studyId: (side, ids) => ids[side].studyId,
+  peerId: (side, ids) => ids[side].peerId,
+};
+
+/** Fields that are neither ids nor plain values: one valid sample each. */
+const SAMPLES: Record<string, unknown> = {
+  signal: { kind: "description", description: { type: "offer", sdp: "v=0 Matrix text" } },
 };
 
 /** A message's template: each field a fixed value, or an id key to fill per variant. */
@@ -39,7 +47,8 @@ function templateOf(schema: z.ZodObject, name: string): Template {
   for (const [key, raw] of Object.entries(schema.shape)) {
     let field = raw as Field;
     while (field.def.type === "optional" || field.def.type === "default") field = field.def.innerType!;
-    if (field === (id as unknown)) {
+    if (key in SAMPLES) fields[key] = SAMPLES[key];
+    else if (field === (id as unknown)) {
       if (key === "requestId") fields[key] = "";
       else if (ID_KEYS[key]) idKeys.push(key);
       else throw new Error(`The socket protocol declares an id "${key}" the matrix has no ids for: add it to ID_KEYS.`);
@@ -104,12 +113,17 @@ describe.sequential("every socket message × every role × own, other and mixed 
   let f: Fixture;
   let bTrial = "";
   let bRecording = "";
+  let bPeer = "";
+  let bWatcher: Awaited<ReturnType<Fixture["open"]>>;
   const aTrials: string[] = [];
   const secretsOfB: string[] = [];
   beforeAll(async () => {
     f = await socketFixture();
     bTrial = await f.b.trial(f.b.people.wizard!, "live");
     bRecording = await f.recording(bTrial);
+    // Study B's wizard, connected to B's trial: no signal sent from study A may ever reach it.
+    bWatcher = await f.open({ userId: f.b.people.wizard! }, bTrial);
+    bPeer = String(bWatcher.messages.find((m) => m.type === "welcome")!.peerId);
     secretsOfB.push(
       f.b.studyId,
       bTrial,
@@ -124,6 +138,7 @@ describe.sequential("every socket message × every role × own, other and mixed 
       "B experiment",
       "B owner",
       "B wizard",
+      bPeer,
     );
   });
   afterAll(async () => f?.stop());
@@ -136,6 +151,7 @@ describe.sequential("every socket message × every role × own, other and mixed 
         "annotate",
         "replay",
         "replay_stop",
+        "signal",
         ...commandSchema.options.map((c) => `command ${String(c.shape.kind.value)}`),
       ]),
     );
@@ -146,10 +162,18 @@ describe.sequential("every socket message × every role × own, other and mixed 
     async (who, _message, _variant, { t, v }) => {
       const trialId = await f.a.trial(f.a.people.wizard!, "live");
       aTrials.push(trialId);
-      const usesRecording = [...t.idKeys, ...(t.command?.idKeys ?? [])].includes("recordingId");
+      const keys = [...t.idKeys, ...(t.command?.idKeys ?? [])];
+      const usesRecording = keys.includes("recordingId");
+      // The trial's wizard in another tab: the own side's live video peer.
+      const peer = keys.includes("peerId") ? await f.open("wizard", trialId) : null;
       const ids: Record<Side, Ids> = {
-        own: { trialId, studyId: f.a.studyId, recordingId: usesRecording ? await f.recording(trialId) : "" },
-        other: { trialId: bTrial, studyId: f.b.studyId, recordingId: bRecording },
+        own: {
+          trialId,
+          studyId: f.a.studyId,
+          recordingId: usesRecording ? await f.recording(trialId) : "",
+          peerId: String(peer?.messages.find((m) => m.type === "welcome")?.peerId ?? ""),
+        },
+        other: { trialId: bTrial, studyId: f.b.studyId, recordingId: bRecording, peerId: bPeer },
       };
       const socket = await f.open(who, trialId);
       if (who === "outsider") {
@@ -170,6 +194,12 @@ describe.sequential("every socket message × every role × own, other and mixed 
       const kind = t.command ? String(t.command.fields.kind) : null;
       if (kind && (who === "observer" || (who === "otherWizard" && kind !== "emergency_stop")))
         expect(reply).toMatchObject({ type: "rejected" });
+      // Live video between the trial's own connections is passed on, from this very connection.
+      if (t.name === "signal" && !Object.values(v.sides).includes("other")) {
+        expect(reply).toMatchObject({ type: "ack" });
+        const welcome = socket.messages.find((m) => m.type === "welcome")!;
+        await peer!.next((m) => m.type === "signal" && m.peerId === welcome.peerId);
+      }
       if (t.name === "hello")
         expect(reply).toMatchObject({ type: "rejected", reason: expect.stringMatching(/already said hello/) });
       // No read: nothing this socket received, except the refusal of what it sent, names study B.
@@ -180,10 +210,37 @@ describe.sequential("every socket message × every role × own, other and mixed 
         if (m.type === "events" || m.type === "welcome")
           expect((m.events as Array<{ trialId: string }>).every((e) => e.trialId === trialId)).toBe(true);
       socket.close();
+      peer?.close();
     },
   );
 
+  it("passes live video between two trials of one study never, either way", async () => {
+    const trialId = await f.a.trial(f.a.people.wizard!, "live");
+    const otherTrialId = await f.a.trial(f.a.people.wizard!, "live");
+    aTrials.push(trialId, otherTrialId);
+    const wizard = await f.open("wizard", trialId);
+    const elsewhere = await f.open("observer", otherTrialId);
+    const peerOf = (s: typeof wizard) => String(s.messages.find((m) => m.type === "welcome")!.peerId);
+    for (const [from, to] of [
+      [wizard, elsewhere],
+      [elsewhere, wizard],
+    ] as const) {
+      const requestId = crypto.randomUUID();
+      from.send({ type: "signal", requestId, peerId: peerOf(to), signal: SAMPLES.signal });
+      expect(await from.next((m) => m.requestId === requestId)).toMatchObject({
+        type: "rejected",
+        reason: expect.stringMatching(/no longer connected to this trial/),
+      });
+    }
+    await wizard.command("drain", { kind: "note", text: "drain" });
+    expect([...wizard.messages, ...elsewhere.messages].filter((m) => m.type === "signal")).toEqual([]);
+    wizard.close();
+    elsewhere.close();
+  });
+
   it("wrote nothing to the other study, and nothing of it into this study's logs", async () => {
+    // Study B's connection was signalled by nobody of study A.
+    expect(bWatcher.messages.filter((m) => m.type === "signal")).toEqual([]);
     const bEvents = await f.db.select().from(trialEvents).where(eq(trialEvents.trialId, bTrial));
     expect(bEvents.map((e) => e.type)).toEqual(["trial.started", "step.entered"]);
     expect(await f.db.select().from(annotations).where(eq(annotations.trialId, bTrial))).toEqual([]);

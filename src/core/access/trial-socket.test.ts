@@ -5,6 +5,7 @@ import {
   commandVerdict,
   mayReadTrialLog,
   replayVerdict,
+  signalVerdict,
   touches,
   type TrialAccess,
 } from "./trial-socket";
@@ -213,5 +214,35 @@ describe("which open sockets an access change concerns", () => {
     ["nothing named", {}, false],
   ])("%s → %s", (_name, change, touched) => {
     expect(touches(change, socket)).toBe(touched);
+  });
+});
+
+describe("who may pass a live video signal to whom", () => {
+  const wizard = access();
+  const observer = (over: Parameters<typeof access>[0] = {}) =>
+    access({ userId: "u-obs", studyRole: "observer", wizardId: me, ...over });
+  it.each<[string, TrialAccess, TrialAccess, "allow" | RegExp]>([
+    ["the wizard to an observer (an offer)", wizard, observer(), "allow"],
+    ["an observer to the wizard (an answer)", observer(), wizard, "allow"],
+    ["a researcher watching to the wizard", access({ userId: "u-r", studyRole: "researcher" }), wizard, "allow"],
+    ["an observer to another observer", observer(), observer({ userId: "u-obs-2" }), /not between watchers/],
+    [
+      "another wizard of the study (who may not run it) to an observer",
+      access({ userId: "u-w2", wizardId: me }),
+      observer(),
+      /not between watchers/,
+    ],
+    ["a removed member", observer({ studyRole: null }), wizard, /no longer a member/],
+    ["to a removed member", wizard, observer({ studyRole: null }), /has left this trial/],
+    [
+      "to an observer once the trial has ended",
+      access({ status: "completed" }),
+      observer({ status: "completed" }),
+      /has ended/,
+    ],
+  ])("%s", (_name, from, to, expected) => {
+    const verdict = signalVerdict(from, to);
+    if (expected === "allow") expect(verdict).toEqual({ allow: true, claim: false });
+    else expect(!verdict.allow && verdict.reason).toMatch(expected);
   });
 });

@@ -94,6 +94,25 @@ export function replayVerdict(access: TrialAccess): SocketVerdict {
   return { allow: true, claim: false };
 }
 
+/**
+ * May one connection pass a live video signal to another? Only within one
+ * trial (the runtime looks the recipient up among that trial's connections),
+ * and only between the video's source, someone who may run the trial, and a
+ * watcher who may follow its log: observers never signal each other.
+ */
+export function signalVerdict(from: TrialAccess, to: TrialAccess): SocketVerdict {
+  const lost = lostAccess(from);
+  if (lost) return refuse(lost);
+  if (lostAccess(to)) return refuse("That connection has left this trial.");
+  if (from.trial.status === "completed" || from.trial.status === "aborted")
+    return refuse("This trial has ended: its live video has ended with it.");
+  const runs = (a: TrialAccess) => commandVerdict(a, "next").allow;
+  const watcher = runs(from) ? to : runs(to) ? from : null;
+  if (!watcher) return refuse("Live video goes between the trial's wizard and those watching: not between watchers.");
+  if (!mayReadTrialLog(watcher)) return refuse("That person may not follow this trial.");
+  return { allow: true, claim: false };
+}
+
 /** A change PostgreSQL announced on 'hri_access': the keys name what changed. */
 export interface AccessChange {
   studyId?: string;

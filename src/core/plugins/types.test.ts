@@ -25,6 +25,7 @@ const PLUGIN: Fields<Plugin> = {
   abstract: true,
   unsupported: true,
   stateTopics: true,
+  camera: true,
 };
 const ACTION: Fields<PluginAction> = {
   id: true,

@@ -80,6 +80,8 @@ export interface Plugin {
   unsupported?: Array<{ action: string; reason: string }>;
   /** Robot state the runtime logs as trial samples during a trial. */
   stateTopics?: Array<{ topic: string; messageType: string; throttleRate?: number }>;
+  /** The robot's own camera (sensor_msgs/CompressedImage): the wizard and observers see it live; never logged. */
+  camera?: { topic: string; messageType: string; throttleRate?: number };
   /** Every other field of the file, kept as written. */
   [extra: string]: unknown;
 }

@@ -10,6 +10,24 @@ describe("the socket messages", () => {
       JSON.stringify({ type: "command", requestId: "r1", command: { kind: "answer", actionId: "a", optionId: "o" } }),
       null,
     ],
+    [
+      "a video signal from another connection",
+      JSON.stringify({
+        type: "signal",
+        requestId: "r1",
+        peerId: "p2",
+        signal: {
+          kind: "candidate",
+          candidate: { candidate: "candidate:1 1 udp 1 10.0.0.2 5000 typ host", sdpMid: "0" },
+        },
+      }),
+      null,
+    ],
+    [
+      "a video signal of another kind",
+      JSON.stringify({ type: "signal", requestId: "r1", peerId: "p2", signal: { kind: "shout" } }),
+      "The message is not understood: signal.kind: ",
+    ],
     ["not JSON", "{nope", "The message is not valid JSON."],
     ["an unknown type", JSON.stringify({ type: "shout" }), "The message is not understood: type: "],
     [
@@ -53,7 +71,17 @@ const stored: StoredEvent = {
   actorId: "u1",
 };
 const welcome = (events: unknown[], version: number = SOCKET_MESSAGES_VERSION) =>
-  JSON.stringify({ type: "welcome", version, trialId: "t1", role: "wizard", mayRun: true, events, viewers: [] });
+  JSON.stringify({
+    type: "welcome",
+    version,
+    trialId: "t1",
+    role: "wizard",
+    mayRun: true,
+    events,
+    viewers: [],
+    peerId: "p1",
+    iceServers: [],
+  });
 
 describe("the browser's check of what the runtime sends", () => {
   it.each<[string, string, string | null]>([
@@ -62,6 +90,33 @@ describe("the browser's check of what the runtime sends", () => {
     ["an ack", JSON.stringify({ type: "ack", requestId: "r1", seqs: [2, 3] }), null],
     ["a rejection of no request", JSON.stringify({ type: "rejected", requestId: null, reason: "No." }), null],
     ["the robot's status", JSON.stringify({ type: "robot", connected: false, detail: "unplugged" }), null],
+    [
+      "a video offer from another connection",
+      JSON.stringify({
+        type: "signal",
+        peerId: "p2",
+        signal: { kind: "description", description: { type: "offer", sdp: "v=0" } },
+      }),
+      null,
+    ],
+    [
+      "a video signal from another connection",
+      JSON.stringify({
+        type: "signal",
+        requestId: "r1",
+        peerId: "p2",
+        signal: {
+          kind: "candidate",
+          candidate: { candidate: "candidate:1 1 udp 1 10.0.0.2 5000 typ host", sdpMid: "0" },
+        },
+      }),
+      null,
+    ],
+    [
+      "a video signal of another kind",
+      JSON.stringify({ type: "signal", requestId: "r1", peerId: "p2", signal: { kind: "shout" } }),
+      "The message is not understood: signal.kind: ",
+    ],
     ["not JSON", "{nope", "The message is not valid JSON."],
     ["an unknown type", JSON.stringify({ type: "shout" }), "The message is not understood: type: "],
     [

@@ -7,7 +7,10 @@ import type { StoredEvent } from "@/core/trial";
 // 2: tokens are single use and carry no role; one hello per connection; the
 // server sends "access" when the caller's role or rights change.
 // 3: "halted": the robot was stopped, ahead of the stop being logged.
-export const SOCKET_MESSAGES_VERSION = 3;
+// 4: "signal": live video between the wizard's and observers' browsers (WebRTC), relayed by the runtime;
+// each connection has a `peerId` (welcome, presence) and the welcome carries the ICE servers;
+// "camera": the robot's own camera, frame by frame.
+export const SOCKET_MESSAGES_VERSION = 4;
 
 /** Every id a message carries is declared with this, so tests can find them all. */
 export const id = z.string().min(1).max(100);
@@ -37,6 +40,24 @@ export const commandSchema = z.discriminatedUnion("kind", [
 ]);
 
 export type WizardCommand = z.infer<typeof commandSchema>;
+
+// WebRTC's own messages, passed between two browsers as they are: a session
+// description (offer or answer) or an ICE candidate. The runtime only relays them.
+export const signalSchema = z.discriminatedUnion("kind", [
+  z.object({
+    kind: z.literal("description"),
+    description: z.object({ type: z.enum(["offer", "answer"]), sdp: z.string().max(100_000) }),
+  }),
+  z.object({
+    kind: z.literal("candidate"),
+    candidate: z.object({
+      candidate: z.string().max(2000),
+      sdpMid: z.string().max(100).nullable().optional(),
+      sdpMLineIndex: z.number().int().min(0).max(1000).nullable().optional(),
+    }),
+  }),
+]);
+export type Signal = z.infer<typeof signalSchema>;
 
 export const clientMessageSchema = z.discriminatedUnion("type", [
   // First and only once on a connection (the token works once); `lastSeq` asks for exactly what was missed.
@@ -72,6 +93,8 @@ export const clientMessageSchema = z.discriminatedUnion("type", [
     speed: z.number().finite(),
   }),
   z.object({ type: z.literal("replay_stop"), requestId: id }),
+  // Live video: to another connection of the same trial (its `peerId`), one side of which is the trial's wizard.
+  z.object({ type: z.literal("signal"), requestId: id, peerId: id, signal: signalSchema }),
 ]);
 
 export type ClientMessage = z.infer<typeof clientMessageSchema>;
@@ -93,7 +116,14 @@ const logFields = z.object({
 });
 const wireEvent = z.custom<WireEvent>((e) => logFields.safeParse(e).success, "not a stored event");
 
-const viewer = z.object({ userId: z.string(), name: z.string(), role: z.string() });
+/** `peerId` names one connection (a person may watch from two tabs): live video's signals go to it. */
+const viewer = z.object({ userId: z.string(), name: z.string(), role: z.string(), peerId: z.string() });
+
+const iceServer = z.object({
+  urls: z.array(z.string()),
+  username: z.string().optional(),
+  credential: z.string().optional(),
+});
 
 export const serverMessageSchema = z.discriminatedUnion("type", [
   // `events` is empty unless the caller may read the log (see mayReadTrialLog);
@@ -106,6 +136,10 @@ export const serverMessageSchema = z.discriminatedUnion("type", [
     mayRun: z.boolean(),
     events: z.array(wireEvent),
     viewers: z.array(viewer),
+    /** This connection, as the others see it in `viewers`. */
+    peerId: z.string(),
+    /** STUN/TURN servers for live video (HRI_ICE_SERVERS); none on one local network. */
+    iceServers: z.array(iceServer),
   }),
   // The caller's role or rights changed while connected (a removed member is disconnected instead).
   z.object({ type: z.literal("access"), role: z.string(), mayRun: z.boolean() }),
@@ -121,6 +155,10 @@ export const serverMessageSchema = z.discriminatedUnion("type", [
   }),
   z.object({ type: z.literal("robot"), connected: z.boolean(), detail: z.string().optional() }),
   z.object({ type: z.literal("pong") }),
+  // The robot's camera (its plugin's `camera`): one compressed image, base64, as the robot sent it.
+  z.object({ type: z.literal("camera"), format: z.string().max(100), data: z.string() }),
+  // Live video: a signal from another connection of this trial.
+  z.object({ type: z.literal("signal"), peerId: z.string(), signal: signalSchema }),
   // This connection's replay as it goes: started, each command sent, ended or stopped (with why).
   z.object({
     type: z.literal("replay"),

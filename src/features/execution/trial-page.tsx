@@ -1,7 +1,7 @@
 "use client";
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
-import { useCallback, useEffect, useMemo } from "react";
+import { useCallback, useEffect, useMemo, useState } from "react";
 import { studyRoleMay } from "@/core/access/policy";
 import type { ActionNames } from "@/core/designer/action-name";
 import { actionProblems, type TrialProtocol } from "@/core/trial";
@@ -9,6 +9,8 @@ import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
 import { BrowserAudio } from "./browser-audio";
+import { SendVideo, WatchVideo } from "./live-video-panel";
+import { RobotCamera } from "./robot-camera";
 import { AnnotateForm, AnnotationList, Watching } from "./observer-panel";
 import { OffScript, StepActions, StepList } from "./protocol-view";
 import { TrialQuestionnaires } from "@/features/questionnaires/trial-questionnaires";
@@ -55,6 +57,8 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
   const problems = useMemo(() => actionProblems(live.events), [live.events]);
   const ended = live.state.status === "completed" || live.state.status === "aborted";
   const { command } = live;
+  // The camera and microphone the wizard records: also what those watching see live.
+  const [camera, setCamera] = useState<MediaStream | null>(null);
   // Starting an unassigned trial records its starter as the wizard: read who that was.
   const claimed = Boolean(started) && trial.wizardId === null;
   // biome-ignore lint/correctness/useExhaustiveDependencies: refresh is a new function on every render; once per start is enough
@@ -141,8 +145,12 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
               startedAt={started?.serverTime ?? null}
               ended={ended}
               logStart={logRecording}
+              onStream={setCamera}
             />
           )}
+          {wizard && <SendVideo video={live.video} viewers={live.viewers} stream={camera} />}
+          {!wizard && <WatchVideo video={live.video} />}
+          <RobotCamera onCamera={live.onCamera} />
           {wizard && trial.participantId && !trial.isRehearsal && (
             <TrialQuestionnaires studyId={trial.studyId} trialId={trial.id} participantId={trial.participantId} />
           )}

@@ -12,6 +12,7 @@ import {
   SOCKET_MESSAGES_VERSION,
   type ClientMessage,
   type ServerMessage,
+  type Signal,
   type Viewer,
   type WireEvent,
   type WizardCommand,
@@ -20,6 +21,9 @@ import { useTRPC } from "@/lib/trpc";
 
 export type Annotation = Extract<ServerMessage, { type: "annotation" }>["annotation"];
 type Outcome = { ok: true } | { ok: false; reason: string };
+export type IceServers = Extract<ServerMessage, { type: "welcome" }>["iceServers"];
+export type SignalListener = (from: string, signal: Signal) => void;
+export type CameraFrame = Omit<Extract<ServerMessage, { type: "camera" }>, "type">;
 
 export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const trpc = useTRPC();
@@ -37,6 +41,13 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const [logBehind, setLogBehind] = useState<string | null>(null);
   // Whether the server lets me command this trial (role, assigned wizard), as it last said.
   const [mayRun, setMayRun] = useState<boolean | null>(null);
+  // Live video: this connection's name among the trial's, and the STUN/TURN servers to use.
+  const [peer, setPeer] = useState<{ peerId: string; iceServers: IceServers } | null>(null);
+  const signalListeners = useRef(new Set<SignalListener>());
+  // The robot's camera goes straight to the picture that shows it: a frame re-renders nothing else.
+  const cameraListeners = useRef(new Set<(frame: CameraFrame) => void>());
+  // Signals' outcomes are the video's business: a refused one never becomes the page's notice.
+  const signalRequests = useRef(new Set<string>());
   const socket = useRef<WebSocket | null>(null);
   const lastSeq = useRef(0);
   // Each request awaiting its answer: what was sent (sent again, as a retry, after a reconnect) and, for a
@@ -87,6 +98,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
           setNotice(null);
           setViewers(m.viewers);
           setMayRun(m.mayRun);
+          setPeer({ peerId: m.peerId, iceServers: m.iceServers });
           receive(m.events);
           // Commands sent before the connection dropped: asked again by their id, answered with what became
           // of them, never carried out twice nor late.
@@ -98,6 +110,10 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         else if (m.type === "presence") setViewers(m.viewers);
         else if (m.type === "robot") setRobot({ connected: m.connected, detail: m.detail });
         else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
+        else if (m.type === "camera") for (const show of cameraListeners.current) show(m);
+        else if (m.type === "signal") for (const listen of signalListeners.current) listen(m.peerId, m.signal);
+        else if ((m.type === "ack" || m.type === "rejected") && m.requestId && signalRequests.current.has(m.requestId))
+          signalRequests.current.delete(m.requestId);
         else if (m.type === "halted") {
           const requestId = m.requestId;
           setTimeout(() => {
@@ -117,7 +133,9 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
       };
       ws.onclose = (event) => {
         setConnected(false);
-        // An annotation is not asked again (it has no idempotency key); a command is, once reconnected.
+        setPeer(null);
+        signalRequests.current.clear();
+        // An annotation or a signal is not asked again (no idempotency key); a command is, once reconnected.
         const dropped = (all: boolean) => {
           for (const [id, { settle, message }] of pending.current)
             if (all || message.type !== "command") {
@@ -161,6 +179,25 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     });
   }, []);
 
+  /** Sends a live video signal, fire and forget: the video copes with a lost one, the trial never waits on it. */
+  const signal = useCallback((peerId: string, signal: Signal) => {
+    const ws = socket.current;
+    if (!ws || ws.readyState !== WebSocket.OPEN) return;
+    const requestId = crypto.randomUUID();
+    signalRequests.current.add(requestId);
+    ws.send(JSON.stringify({ type: "signal", requestId, peerId, signal } satisfies ClientMessage));
+  }, []);
+  const onSignal = useCallback((listen: SignalListener) => {
+    signalListeners.current.add(listen);
+    return () => void signalListeners.current.delete(listen);
+  }, []);
+
+  const onCamera = useCallback((show: (frame: CameraFrame) => void) => {
+    cameraListeners.current.add(show);
+    return () => void cameraListeners.current.delete(show);
+  }, []);
+  const video = useMemo(() => (peer ? { ...peer, signal, onSignal } : null), [peer, signal, onSignal]);
+
   // Events only ever arrive appended: each batch is applied to the state so far, never refolded from the start.
   const folded = useRef<{ protocol: TrialProtocol; count: number; state: TrialState } | null>(null);
   const state = useMemo(() => {
@@ -182,6 +219,10 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     connected,
     robot,
     mayRun,
+    /** Live video's side of the socket: null until welcomed (and while reconnecting). */
+    video,
+    /** The robot's camera frames, as they arrive. */
+    onCamera,
     command: (command: WizardCommand) =>
       request(
         (requestId) => ({ type: "command", requestId, command }),

@@ -2,7 +2,7 @@
 // The wizard's recorder: choose the camera and microphone, start, and see at
 // a glance that it is recording and that its parts reach the server.
 import { Circle, Square, Video } from "lucide-react";
-import { useState } from "react";
+import { useEffect, useState } from "react";
 import { Button } from "@/ui/button";
 import { NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
@@ -17,13 +17,17 @@ export function RecordingPanel({
   startedAt,
   ended,
   logStart,
+  onStream,
 }: {
   trialId: string;
   startedAt: string | null;
   ended: boolean;
   logStart: (recordingId: string, offsetMs: number) => void;
+  /** The camera and microphone while they are recorded (null otherwise): the live video's source. */
+  onStream?: (stream: MediaStream | null) => void;
 }) {
   const recorder = useRecorder(trialId, startedAt, ended, logStart);
+  useEffect(() => onStream?.(recorder.stream), [onStream, recorder.stream]);
   const [camera, setCamera] = useState("");
   const [microphone, setMicrophone] = useState("");
   const cameras = recorder.devices.filter((d) => d.kind === "videoinput");

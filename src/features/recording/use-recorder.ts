@@ -30,6 +30,8 @@ export function useRecorder(
   const [waiting, setWaiting] = useState(0);
   const [elapsedMs, setElapsedMs] = useState(0);
   const [devices, setDevices] = useState<MediaDeviceInfo[]>([]);
+  // The camera and microphone being recorded: the trial page streams the same ones to those watching.
+  const [stream, setStream] = useState<MediaStream | null>(null);
   const recording = useRef<{
     id: string;
     recorder: MediaRecorder;
@@ -114,6 +116,7 @@ export function useRecorder(
         recorder.onstart = () => {
           recording.current!.startedAt = Date.now();
           setState("recording");
+          setStream(stream);
         };
         recorder.start(PART_EVERY_MS);
       } catch (error) {
@@ -132,6 +135,7 @@ export function useRecorder(
     r.recorder.stop();
     await last;
     r.stream.getTracks().forEach((t) => t.stop());
+    setStream(null);
     while (queue.current.length) await pump();
     try {
       await client.recordings.finish.mutate({ recordingId: r.id, durationMs: Date.now() - r.startedAt });
@@ -163,5 +167,5 @@ export function useRecorder(
     return () => clearInterval(timer);
   }, [state]);
 
-  return { state, problem, sent, waiting, elapsedMs, devices, start, stop };
+  return { state, problem, sent, waiting, elapsedMs, devices, stream, start, stop };
 }

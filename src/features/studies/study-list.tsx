@@ -5,6 +5,7 @@ import { SYSTEM_OPERATIONS, type SystemRole } from "@/core/access/policy";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, EmptyState, ROLE_TONE, Spinner, STATUS_TONE } from "@/ui/surface";
+import { LiveNow } from "./live-now";
 import { NewStudyDialog } from "./new-study-dialog";
 import { StudyFromTemplateDialog } from "./study-from-template-dialog";
 
@@ -14,6 +15,7 @@ export function StudyList({ systemRole }: { systemRole: SystemRole }) {
   const canCreate = (SYSTEM_OPERATIONS["study.create"] as readonly SystemRole[]).includes(systemRole);
   return (
     <section>
+      <LiveNow />
       <div className="mb-6 flex items-center justify-between">
         <h1 className="text-2xl font-semibold">My studies</h1>
         {canCreate && (

@@ -12,9 +12,11 @@ import {
   testServices,
   type RobotNode,
 } from "./nodes";
+import { camera } from "./camera";
 
 export { startSimulator, type Simulator, type SimulatorOptions, type Received } from "./server";
 export * from "./nodes";
+export { camera, CAMERA_TOPIC } from "./camera";
 
 const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 
@@ -22,7 +24,7 @@ const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 const drives = (plugin: Plugin) =>
   plugin.actions.some((a) => a.ros2 && (("topic" in a.ros2 && a.ros2.topic === "/cmd_vel") || "action" in a.ros2));
 
-/** The default robot: the topics of a plugin (NAO6's by default), speech, sound files, joint states and battery; odometry and navigation for a robot that drives. */
+/** The default robot: the topics of a plugin (NAO6's by default), speech, sound files, joint states, battery and its camera; odometry and navigation for a robot that drives. */
 export function simulatedRobot(
   plugin: Plugin,
   { msPerChar = 60, jointStatesHz = 10, batteryHz = 1 } = {},
@@ -39,6 +41,7 @@ export function simulatedRobot(
       velocity: [0, 0, 0, 0],
     }),
     battery({ hz: batteryHz }),
+    camera(),
     robotStateReport(),
     testServices(),
   ];

@@ -65,7 +65,7 @@ export function audio({ topic = "/audio", doneTopic = "/audio_done" } = {}): Rob
   };
 }
 
-const stamp = () => {
+export const stamp = () => {
   const now = Date.now();
   return { sec: Math.floor(now / 1000), nanosec: (now % 1000) * 1_000_000 };
 };

@@ -47,6 +47,8 @@ const MESSAGES: Record<string, Definition> = {
     power_supply_status: "uint8",
     present: "bool",
   },
+  // data: uint8[], which rosbridge's JSON carries as one base64 string.
+  "sensor_msgs/CompressedImage": { header: "std_msgs/Header", format: "string", data: "uint8[]" },
   "naoqi_bridge_msgs/JointAnglesWithSpeed": {
     header: "std_msgs/Header",
     joint_names: "string[]",

@@ -17,6 +17,7 @@ import { assertRunsTrials } from "../../studies/status-gate";
 import { signSocketToken } from "@/store/socket-token";
 import { qualified } from "@/store/qualified";
 import { router, studyProcedure } from "../trpc";
+import { liveNow } from "./live-now";
 import { id, text } from "../validation";
 
 /** Who created the trial, kept apart from who runs it (its wizard). */
@@ -52,6 +53,7 @@ const questionnaireScores = sql<Array<{ name: string; score: number }> | null>`(
   where l.trial_id = ${qualified(trials.id)} and r.status = 'submitted' and r.score is not null)`;
 
 export const trialsRouter = router({
+  liveNow,
   // wizardId: omitted → the creator runs it; null → unassigned, the first wizard to start it claims it.
   create: studyProcedure(
     "trial.create",
