@@ -26,6 +26,7 @@ import {
 } from "@/core/socket/messages";
 import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
 import { logUnexpected } from "@/store/error-reference";
+import type { LiveRobotState } from "@/core/robots/live-state";
 import { annotate } from "./annotations";
 import type { EventRelay } from "./relay";
 import type { Replays } from "./replay";
@@ -151,7 +152,10 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
       events: shown.map(toWire),
       viewers: presence(trialId),
     });
-    if (host) send(ws, { type: "robot", connected: host.robotStatus() });
+    if (host) {
+      send(ws, { type: "robot", connected: host.robotStatus(), ...(host.robotName ? { name: host.robotName } : {}) });
+      if (mayReadTrialLog(ws.data.access!)) send(ws, { type: "robotState", ...host.robotState });
+    }
   }
 
   /** Reloads one socket's access; closes it if its user may no longer be here. */
@@ -193,6 +197,12 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
   /** Tells everyone in a trial at once when its robot drops or comes back. */
   const announceRobot = (trialId: string, connected: boolean, detail?: string) => {
     for (const s of viewers.get(trialId) ?? []) send(s, { type: "robot", connected, ...(detail ? { detail } : {}) });
+  };
+
+  /** Tells those in a trial who may read its log what its robot is doing now (what it says is the log's business). */
+  const announceRobotState = (trialId: string, state: LiveRobotState) => {
+    for (const s of viewers.get(trialId) ?? [])
+      if (mayReadTrialLog(s.data.access!)) send(s, { type: "robotState", ...state });
   };
 
   async function act(ws: Socket, message: Extract<ClientMessage, { type: "command" | "annotate" }>): Promise<void> {
@@ -328,7 +338,7 @@ export function startRuntimeServer({ db, hosts, relay, replays, secret, hostname
       },
     },
   });
-  return { server, announceRobot, accessChanged, recheckAll };
+  return { server, announceRobot, announceRobotState, accessChanged, recheckAll };
 }
 
 function logError(error: unknown) {
