@@ -12,35 +12,6 @@ export type RobotRecord = typeof robots.$inferSelect;
 
 const LIVE = ["in_progress", "paused"] as const;
 
-/** A robot the launcher or the environment names: seeding again updates the same record. */
-export interface RobotSeed {
-  seededFrom: string;
-  name: string;
-  pluginRobotId: string | null;
-  simulated: boolean;
-  rosbridgeUrl: string | null;
-  sshHost: string | null;
-  sshPort: number;
-  sshUser: string | null;
-  sshSecret: string | null;
-  httpUrl: string | null;
-}
-
-/**
- * Makes or updates the seeded records. A new one is available to every study
- * (what a single-robot deployment did before records); an administrator may
- * narrow it afterwards, and seeding again leaves that choice alone.
- */
-export async function seedRobots(db: Database, seeds: RobotSeed[]) {
-  for (const seed of seeds) {
-    const { seededFrom: _, ...connection } = seed;
-    await db
-      .insert(robots)
-      .values({ ...seed, allStudies: true })
-      .onConflictDoUpdate({ target: robots.seededFrom, set: connection });
-  }
-}
-
 /** The ways to reach a registered robot, its SSH secret read from where the record says. */
 export function connectionOf(
   robot: RobotRecord,
@@ -165,7 +136,7 @@ export async function robotHeldBy(db: Database, robot: RobotRecord, trialId: str
   return robotTaken(robot.name, describeTrial(holder, holder.studyId === self?.studyId));
 }
 
-export function describeTrial(
+function describeTrial(
   t: { id: string; experiment: string; participant: string | null; status: string },
   sameStudy: boolean,
 ): string {

@@ -1,6 +1,7 @@
 // The trial runtime process: `bun run src/runtime/main.ts`. The launcher
 // starts it beside the web app with the same database and secret.
 import { readConfig } from "@/store/config";
+import { environmentSeed, seedRobots } from "@/store/robot-seeds";
 import { createDatabase, createSessionClient } from "@/store/client";
 import type { Plugin } from "@/core/plugins";
 import { pluginCatalog } from "@/robots/catalog";
@@ -24,6 +25,9 @@ if (!config.DATABASE_URL || !config.BETTER_AUTH_SECRET) {
 const databaseUrl = config.DATABASE_URL;
 const { db, sql, close } = createDatabase(databaseUrl);
 for (const problem of (await pluginCatalog(db)).problems) console.error(`[runtime] plugin not loaded: ${problem}`);
+// The robot the environment names (HRI_ROSBRIDGE_URL, HRI_ROBOT_SSH_*…) is a registered robot like any other.
+const fromEnvironment = environmentSeed(config);
+if (fromEnvironment) await seedRobots(db, [fromEnvironment]);
 // The plugin document is the trial's own (pinned by its version), and the robot the registered one
 // it was given, both chosen in trialHosts; the robot's health goes to its record as it changes.
 const robotFor = (plugin: Plugin | null, robotId: string, robot: RobotChoice) => {

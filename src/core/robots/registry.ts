@@ -29,7 +29,7 @@ export function parseSecretReference(reference: string): SecretReference | { err
 export interface RegisteredRobot {
   id: string;
   name: string;
-  /** The plugin's robotId; null for a simulated robot, which stands in for any plugin. */
+  /** The plugin's robotId; null: runs any plugin (a simulated robot, or the environment's robot). */
   pluginRobotId: string | null;
 }
 
@@ -40,8 +40,8 @@ export function runsPlugin(robot: Pick<RegisteredRobot, "pluginRobotId">, robotI
 
 /**
  * The robot a new trial gets: the first (in the order given) that runs its
- * plugin and that no live trial holds; a robot of the plugin itself before a
- * simulated stand-in. Null when none fits.
+ * plugin and that no live trial holds; a robot of the plugin itself before one
+ * that runs any plugin. Null when none fits.
  */
 export function chooseRobot<R extends RegisteredRobot>(
   available: R[],

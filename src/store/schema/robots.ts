@@ -10,7 +10,7 @@ import { studies } from "./studies";
 export const robots = pgTable("robots", {
   id: id(),
   name: text("name").notNull().unique(),
-  // The plugin's robotId; null for a simulated robot, which stands in for any plugin.
+  // The plugin's robotId; null: runs any plugin (a simulated robot; the environment's robot, as before records).
   pluginRobotId: text("plugin_robot_id"),
   simulated: boolean("simulated").notNull().default(false),
   rosbridgeUrl: text("rosbridge_url"),
