@@ -8,7 +8,7 @@ import { Card } from "@/ui/surface";
 export function RobotStatePanel({ name, state }: { name: string | undefined; state: LiveRobotState | null }) {
   const unknown = <span className="text-slate-400">not reported</span>;
   return (
-    <Card className="p-4 text-sm" aria-label="Robot">
+    <Card className="p-4 text-sm">
       <h2 className="mb-2 font-semibold">
         Robot
         {name && (
