@@ -6,7 +6,7 @@ import { batteryLow, LOW_BATTERY_PERCENT, type LiveRobotState } from "@/core/rob
 import { Card } from "@/ui/surface";
 
 export function RobotStatePanel({ name, state }: { name: string | undefined; state: LiveRobotState | null }) {
-  const unknown = <span className="text-slate-400">not reported</span>;
+  const unknown = <span className="text-slate-500">not reported</span>;
   return (
     <Card className="p-4 text-sm">
       <h2 className="mb-2 font-semibold">
@@ -25,7 +25,7 @@ export function RobotStatePanel({ name, state }: { name: string | undefined; sta
       <dl className="grid grid-cols-[5.5rem_1fr] gap-y-1">
         <dt className="text-slate-500">Speaking</dt>
         <dd data-testid="robot-speaking">
-          {state?.speaking ? `“${state.speaking}”` : state ? <span className="text-slate-400">silent</span> : unknown}
+          {state?.speaking ? `“${state.speaking}”` : state ? <span className="text-slate-500">silent</span> : unknown}
         </dd>
         <dt className="text-slate-500">Gesture</dt>
         <dd data-testid="robot-gesture">{state?.gesture ?? unknown}</dd>
