@@ -28,7 +28,7 @@ export function RobotStatePanel({ name, state }: { name: string | undefined; sta
           {state?.speaking ? `“${state.speaking}”` : state ? <span className="text-slate-500">silent</span> : unknown}
         </dd>
         <dt className="text-slate-500">Gesture</dt>
-        <dd data-testid="robot-gesture">{state?.gesture ?? unknown}</dd>
+        <dd data-testid="robot-gesture" className="break-all">{state?.gesture ?? unknown}</dd>
         <dt className="text-slate-500">Posture</dt>
         <dd data-testid="robot-posture">{state?.posture ?? unknown}</dd>
         <dt className="text-slate-500">Battery</dt>
