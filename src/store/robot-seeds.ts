@@ -1,6 +1,6 @@
 // The robots the registry is seeded with: the simulated robots the launcher
-// starts, and the one robot the environment names (HRI_ROSBRIDGE_URL,
-// HRI_ROBOT_SSH_*, HRI_ROBOT_HTTP_URL), as a deployment had before records.
+// starts, and the one robot the environment names (HRI_ROSBRIDGE_URL or
+// HRI_ROBOT_HTTP_URL, with HRI_ROBOT_SSH_*), as a deployment had before records.
 // Seeding again at every start updates the same records (a simulator's ports
 // change each time), never adds a second one.
 import { resolve } from "node:path";
@@ -51,7 +51,8 @@ export async function seedSimulators(db: Database, seeds: RobotSeed[]) {
 
 /** The robot the environment names, if it names one. Its SSH secret stays in the environment: the record points at it. */
 export function environmentSeed(config: Config): RobotSeed | null {
-  if (!config.HRI_ROSBRIDGE_URL && !config.HRI_ROBOT_SSH_HOST && !config.HRI_ROBOT_HTTP_URL) return null;
+  // SSH alone names no robot: npm start has always ignored HRI_ROBOT_SSH_* without a rosbridge address.
+  if (!config.HRI_ROSBRIDGE_URL && !config.HRI_ROBOT_HTTP_URL) return null;
   const secret = config.HRI_ROBOT_SSH_PASSWORD
     ? "env:HRI_ROBOT_SSH_PASSWORD"
     : config.HRI_ROBOT_SSH_KEY_FILE
