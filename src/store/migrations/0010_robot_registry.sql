@@ -28,5 +28,7 @@ CREATE TABLE "robots" (
 ALTER TABLE "trials" ADD COLUMN "assigned_robot_id" text;--> statement-breakpoint
 ALTER TABLE "robot_studies" ADD CONSTRAINT "robot_studies_robot_id_robots_id_fk" FOREIGN KEY ("robot_id") REFERENCES "public"."robots"("id") ON DELETE cascade ON UPDATE no action;--> statement-breakpoint
 ALTER TABLE "robot_studies" ADD CONSTRAINT "robot_studies_study_id_studies_id_fk" FOREIGN KEY ("study_id") REFERENCES "public"."studies"("id") ON DELETE cascade ON UPDATE no action;--> statement-breakpoint
+CREATE INDEX "robot_studies_study_idx" ON "robot_studies" USING btree ("study_id");--> statement-breakpoint
 ALTER TABLE "trials" ADD CONSTRAINT "trials_assigned_robot_id_robots_id_fk" FOREIGN KEY ("assigned_robot_id") REFERENCES "public"."robots"("id") ON DELETE set null ON UPDATE no action;--> statement-breakpoint
+CREATE INDEX "trials_robot_idx" ON "trials" USING btree ("assigned_robot_id");--> statement-breakpoint
 CREATE UNIQUE INDEX "trials_live_robot_idx" ON "trials" USING btree ("assigned_robot_id") WHERE "trials"."status" in ('in_progress', 'paused');

@@ -3,7 +3,7 @@
 // never stored: a record names where to read one (an environment variable or
 // a file) and the runtime reads it when it connects. The live health columns
 // are written by the runtime that drives (or last drove) the robot.
-import { boolean, doublePrecision, integer, pgTable, primaryKey, text, timestamp } from "drizzle-orm/pg-core";
+import { boolean, doublePrecision, index, integer, pgTable, primaryKey, text, timestamp } from "drizzle-orm/pg-core";
 import { createdAt, id } from "./columns";
 import { studies } from "./studies";
 
@@ -40,5 +40,5 @@ export const robotStudies = pgTable(
       .notNull()
       .references(() => studies.id, { onDelete: "cascade" }),
   },
-  (t) => [primaryKey({ columns: [t.robotId, t.studyId] })],
+  (t) => [primaryKey({ columns: [t.robotId, t.studyId] }), index("robot_studies_study_idx").on(t.studyId)],
 );

@@ -51,6 +51,7 @@ export const trials = pgTable(
     index("trials_version_idx").on(t.versionId),
     index("trials_participant_idx").on(t.participantId),
     index("trials_wizard_idx").on(t.wizardId),
+    index("trials_robot_idx").on(t.assignedRobotId),
     // One robot is never driven by two live trials, whichever runtime process runs them.
     uniqueIndex("trials_live_robot_idx").on(t.assignedRobotId).where(sql`${t.status} in ('in_progress', 'paused')`),
   ],
