@@ -36,8 +36,9 @@ export function connectionOf(
     ok: true,
     config: {
       rosbridgeUrl: url,
-      // A simulated robot is reached the same way for the plugins whose transport is "simulated".
-      simulatorUrl: robot.simulated ? url : undefined,
+      // A plugin whose transport is "simulated" speaks rosbridge to the robot it is given, as it did
+      // to HRI_ROSBRIDGE_URL before records: only robots registered for it, or for any plugin, get it.
+      simulatorUrl: url,
       httpBaseUrl: robot.httpUrl ?? undefined,
       ssh:
         robot.sshHost && robot.sshUser
