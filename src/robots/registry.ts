@@ -67,8 +67,8 @@ export function robotsOfStudy(db: Database, studyId: string) {
 
 /**
  * The robot the trial drives: the one it was given, or else (chosen now and
- * kept) the first free robot available to its study that runs its plugin.
- * `heldHere`: robots this runtime drives for trials not yet in the database as live.
+ * kept) a robot available to its study that runs its plugin, free ones first
+ * (`chooseRobot`). `heldHere`: robots of other trials this runtime has open.
  */
 export async function robotOfTrial(
   db: Database,
@@ -92,15 +92,11 @@ export async function robotOfTrial(
     .where(and(inArray(trials.status, [...LIVE]), ne(trials.id, trialId)));
   const held = new Set([...heldHere, ...live.map((l) => l.robot).filter((r) => r !== null)]);
   const chosen = chooseRobot(available, robotId, held);
-  if (!chosen) {
-    const fits = available.some((r) => r.pluginRobotId === null || r.pluginRobotId === robotId);
+  if (!chosen)
     return {
       ok: false,
-      reason: fits
-        ? `Every robot of this study that runs the ${robotId} plugin is being driven by another live trial.`
-        : `No registered robot available to this study runs the ${robotId} plugin: an administrator registers one (Administration → Robots) and makes it available to the study.`,
+      reason: `No registered robot available to this study runs the ${robotId} plugin: an administrator registers one (Administration → Robots) and makes it available to the study.`,
     };
-  }
   // Another opening of the same trial may have chosen first: the first choice stands.
   await db
     .update(trials)

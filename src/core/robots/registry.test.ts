@@ -31,7 +31,8 @@ describe("choosing a robot for a trial", () => {
     ["the next free one when the first is held", [nao("a"), nao("b")], "nao6-ros2", ["a"], "b"],
     ["a simulated robot for any plugin", [pepper, sim("s1")], "turtlebot3-burger", [], "s1"],
     ["a second simulated robot when the first is held", [sim("s1"), sim("s2")], "nao6-ros2", ["s1"], "s2"],
-    ["none when every fitting robot is held", [nao("a"), pepper], "nao6-ros2", ["a"], null],
+    ["a held one when every fitting robot is held (its start waits)", [pepper, nao("a")], "nao6-ros2", ["a"], "a"],
+    ["the plugin's own held robot before a held simulated one", [sim("s1"), nao("a")], "nao6-ros2", ["a", "s1"], "a"],
     ["none of another plugin", [pepper], "nao6-ros2", [], null],
   ])("%s", (_, available, robotId, held, expected) => {
     expect(chooseRobot(available, robotId, new Set(held))?.id ?? null).toBe(expected);

@@ -40,19 +40,22 @@ export function runsPlugin(robot: Pick<RegisteredRobot, "pluginRobotId">, robotI
 
 /**
  * The robot a new trial gets: the first (in the order given) that runs its
- * plugin and that no live trial holds; a robot of the plugin itself before one
- * that runs any plugin. Null when none fits.
+ * plugin and that no live trial holds, a robot of the plugin itself before one
+ * that runs any plugin. When every such robot is held, the first of them: the
+ * wizard sees which, and starting waits until its trial ends (`robotTaken`).
+ * Null when none runs the plugin.
  */
 export function chooseRobot<R extends RegisteredRobot>(
   available: R[],
   robotId: string,
   held: ReadonlySet<string>,
 ): R | null {
-  const free = available.filter((r) => runsPlugin(r, robotId) && !held.has(r.id));
-  return free.find((r) => r.pluginRobotId === robotId) ?? free[0] ?? null;
+  const fitting = available.filter((r) => runsPlugin(r, robotId));
+  const preferred = (list: R[]) => list.find((r) => r.pluginRobotId === robotId) ?? list[0] ?? null;
+  return preferred(fitting.filter((r) => !held.has(r.id))) ?? preferred(fitting);
 }
 
 /** The refusal a wizard reads when the trial's robot is driven by another live trial. */
 export function robotTaken(robotName: string, holder: string): string {
-  return `The robot "${robotName}" is being driven by another live trial (${holder}). Finish or abort that trial, or choose another robot for this one, before starting.`;
+  return `The robot "${robotName}" is being driven by another live trial (${holder}). This trial can start once that one has ended.`;
 }
