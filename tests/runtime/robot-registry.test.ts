@@ -170,8 +170,11 @@ describe("robots as records, in the runtime", () => {
         ]),
       )
       .toEqual([[true, true]]);
-    const state = await one.next((m) => m.type === "robotState" && m.battery !== null);
+    // The battery and the robot's own report arrive on two topics, in either order.
+    const state = await one.next((m) => m.type === "robotState" && m.battery !== null && m.posture !== null);
     expect(state).toMatchObject({ posture: "stand" });
     expect(state.battery).toBeGreaterThan(90);
+    // While the robot spoke the trial's line, the wizard was told so, with its text.
+    await one.next((m) => m.type === "robotState" && m.speaking === "Hello from trial one");
   });
 });
