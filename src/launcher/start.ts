@@ -8,6 +8,7 @@ import { readConfig } from "../store/config";
 import { createDatabase } from "../store/client";
 import { freePort, startEmbeddedPostgres, type EmbeddedDatabase } from "../store/embedded";
 import { migrateDatabase } from "../store/migrate";
+import { type RobotSeed, seedSimulators, simulatorPasswordVariable, simulatorSeed } from "../store/robot-seeds";
 import { seedDemo, type DemoAccount } from "../server/seed/demo";
 import { buildIfChanged } from "./build";
 import { rememberChildren, stopOrphanedChildren } from "./children";
@@ -99,17 +100,21 @@ async function main() {
     });
   };
 
-  // The robot settings both servers read: the runtime reaches the robot with
-  // them, the web app's designer says which actions they let run.
+  // The simulated robots, each a registered robot (for piloting several trials at once). The web
+  // app's designer reads the first one's ways as "the robot's" when no real robot is set; the
+  // runtime reaches every robot through its record, its SSH password by reference to a variable.
   let robot: Record<string, string> = {};
+  const passwords: Record<string, string> = {};
+  const seeds: RobotSeed[] = [];
   let simulatorUrl: string | undefined;
-  if (!config.HRI_ROSBRIDGE_URL) {
-    const simulatorPort = await firstFreePort(config.HRI_SIMULATOR_PORT);
+  const simulatedRobots = config.HRI_SIMULATED_ROBOTS ?? (config.HRI_ROSBRIDGE_URL ? 0 : 1);
+  for (let n = 1; n <= simulatedRobots; n++) {
+    const simulatorPort = await firstFreePort(n === 1 ? config.HRI_SIMULATOR_PORT : config.HRI_SIMULATOR_PORT + n - 1);
     const sshPort = await freePort();
     // A fresh password per start, known only to the simulated robot and the two servers.
     const password = randomBytes(24).toString("base64url");
-    simulatorUrl = `ws://127.0.0.1:${simulatorPort}`;
-    supervise("simulated robot", "src/robots/simulator/main.ts", {
+    const url = `ws://127.0.0.1:${simulatorPort}`;
+    supervise(`simulated robot ${n}`, "src/robots/simulator/main.ts", {
       SIM_PORT: String(simulatorPort),
       SIM_HOST: "127.0.0.1",
       SIM_SSH_PORT: String(sshPort),
@@ -117,19 +122,28 @@ async function main() {
       SIM_SSH_PASSWORD: password,
     });
     await Promise.all([listening(simulatorPort), listening(sshPort)]);
-    // Both of its ways, whatever HRI_ROBOT_SSH_* say: those name a real robot, and none is set.
-    robot = {
-      HRI_ROSBRIDGE_URL: simulatorUrl,
-      HRI_ROBOT_SSH_HOST: "127.0.0.1",
-      HRI_ROBOT_SSH_PORT: String(sshPort),
-      HRI_ROBOT_SSH_USER: "nao",
-      HRI_ROBOT_SSH_PASSWORD: password,
-      HRI_ROBOT_SSH_KEY_FILE: "",
-    };
-    log(`The simulated NAO6 robot speaks rosbridge at ${simulatorUrl} and NAOqi over SSH at 127.0.0.1:${sshPort}.`);
+    passwords[simulatorPasswordVariable(n)] = password;
+    seeds.push(simulatorSeed(n, url, sshPort));
+    if (n === 1) {
+      simulatorUrl = url;
+      if (!config.HRI_ROSBRIDGE_URL)
+        robot = {
+          HRI_ROSBRIDGE_URL: url,
+          HRI_ROBOT_SSH_HOST: "127.0.0.1",
+          HRI_ROBOT_SSH_PORT: String(sshPort),
+          HRI_ROBOT_SSH_USER: "nao",
+          HRI_ROBOT_SSH_PASSWORD: password,
+          HRI_ROBOT_SSH_KEY_FILE: "",
+        };
+    }
+    log(`Simulated robot ${n} (a NAO6) speaks rosbridge at ${url} and NAOqi over SSH at 127.0.0.1:${sshPort}.`);
   }
+  const registry = createDatabase(databaseUrl, { max: 1 });
+  await seedSimulators(registry.db, seeds);
+  await registry.close();
   const simulator: Record<string, string> = simulatorUrl ? { HRI_SIMULATOR_URL: simulatorUrl } : {};
-  supervise("trial runtime", "src/runtime/main.ts", { ...shared, ...robot, ...simulator });
+  // Not `robot`: the runtime would register the simulator a second time as "the robot from the environment".
+  supervise("trial runtime", "src/runtime/main.ts", { ...shared, ...passwords, ...simulator });
   await listening(runtimePort);
 
   const webServer = await bundleWebServer(root);

@@ -1,16 +1,21 @@
 // The trial runtime process: `bun run src/runtime/main.ts`. The launcher
 // starts it beside the web app with the same database and secret.
 import { readConfig } from "@/store/config";
+import { environmentSeed, seedRobots } from "@/store/robot-seeds";
 import { createDatabase, createSessionClient } from "@/store/client";
 import type { Plugin } from "@/core/plugins";
 import { pluginCatalog } from "@/robots/catalog";
-import { transportConfig, transportFor } from "@/robots/transports";
+import { transportFor } from "@/robots/transports";
+import { connectionOf } from "@/robots/registry";
+import { ROBOT_STATE_TOPIC } from "@/core/robots/robot-state";
+import type { LiveRobotState } from "@/core/robots/live-state";
 import { pluginRobot, unavailableRobot } from "./robot-link";
 import { purgeSpentTokens, watchAccess } from "./access";
 import { eventRelay } from "./relay";
 import { simulatorReplays } from "./replay";
 import { startRuntimeServer } from "./server";
-import { trialHosts } from "./trial-hosts";
+import { trialHosts, type RobotChoice } from "./trial-hosts";
+import { withHealth } from "./robot-health";
 
 const config = readConfig();
 if (!config.DATABASE_URL || !config.BETTER_AUTH_SECRET) {
@@ -20,20 +25,35 @@ if (!config.DATABASE_URL || !config.BETTER_AUTH_SECRET) {
 const databaseUrl = config.DATABASE_URL;
 const { db, sql, close } = createDatabase(databaseUrl);
 for (const problem of (await pluginCatalog(db)).problems) console.error(`[runtime] plugin not loaded: ${problem}`);
-const robotSettings = transportConfig(config);
-// The plugin document is the trial's own (pinned by its version), chosen in trialHosts.
-const robotFor = (plugin: Plugin | null, robotId: string) => {
+// The robot the environment names (HRI_ROSBRIDGE_URL, HRI_ROBOT_SSH_*…) is a registered robot like any other.
+const fromEnvironment = environmentSeed(config);
+if (fromEnvironment) await seedRobots(db, [fromEnvironment]);
+// The plugin document is the trial's own (pinned by its version), and the robot the registered one
+// it was given, both chosen in trialHosts; the robot's health goes to its record as it changes.
+const robotFor = (plugin: Plugin | null, robotId: string, robot: RobotChoice) => {
   if (!plugin) return unavailableRobot(`no robot plugin "${robotId}" is installed`);
-  const choice = transportFor(plugin, robotSettings);
-  return choice.ok ? pluginRobot(plugin, choice.transport) : unavailableRobot(choice.reason);
+  if (!robot.ok) return unavailableRobot(robot.reason);
+  const connection = connectionOf(robot.robot);
+  if (!connection.ok) return unavailableRobot(connection.reason);
+  const choice = transportFor(plugin, connection.config);
+  if (!choice.ok) return unavailableRobot(choice.reason);
+  const transport = choice.transport;
+  // The simulated robot also reports what it is doing (speech, gesture, posture) on a topic of its own.
+  const report = robot.robot.simulated
+    ? (listener: (topic: string, message: unknown) => void) =>
+        transport.subscribe(ROBOT_STATE_TOPIC, "std_msgs/msg/String", (m) => listener(ROBOT_STATE_TOPIC, m))
+    : undefined;
+  return withHealth(db, robot.robot.id, pluginRobot(plugin, transport), report);
 };
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
+let announceRobotState: (trialId: string, state: LiveRobotState) => void = () => {};
 const hosts = trialHosts(
   db,
   () => createSessionClient(databaseUrl),
   robotFor,
   (...args) => announceRobot(...args),
   config.HRI_TRIAL_IDLE_SECONDS * 1000,
+  (...args) => announceRobotState(...args),
 );
 const relay = await eventRelay(db, sql);
 // Replays go to the simulated robot only (HRI_SIMULATOR_URL), never to the robot settings above.
@@ -49,6 +69,7 @@ const runtime = startRuntimeServer({
   iceServers: config.HRI_ICE_SERVERS,
 });
 announceRobot = runtime.announceRobot;
+announceRobotState = runtime.announceRobotState;
 // Membership, role, blinding and assigned-wizard changes reach open sockets at once.
 const access = await watchAccess(sql, runtime.accessChanged, runtime.recheckAll);
 const purge = setInterval(

@@ -27,6 +27,7 @@ import {
 } from "@/core/socket/messages";
 import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
 import { logUnexpected } from "@/store/error-reference";
+import type { LiveRobotState } from "@/core/robots/live-state";
 import { annotate } from "./annotations";
 import type { EventRelay } from "./relay";
 import type { Replays } from "./replay";
@@ -192,7 +193,8 @@ export function startRuntimeServer({
       iceServers,
     });
     if (host) {
-      send(ws, { type: "robot", connected: host.robotStatus() });
+      send(ws, { type: "robot", connected: host.robotStatus(), ...(host.robotName ? { name: host.robotName } : {}) });
+      if (mayReadTrialLog(ws.data.access!)) send(ws, { type: "robotState", ...host.robotState });
       // The robot's camera, to whoever may follow the trial now, as fast as their connection takes it.
       ws.data.stopCamera = host.watchCamera((frame) => {
         if (ws.data.closed || !mayReadTrialLog(ws.data.access!)) return;
@@ -240,6 +242,12 @@ export function startRuntimeServer({
   /** Tells everyone in a trial at once when its robot drops or comes back. */
   const announceRobot = (trialId: string, connected: boolean, detail?: string) => {
     for (const s of viewers.get(trialId) ?? []) send(s, { type: "robot", connected, ...(detail ? { detail } : {}) });
+  };
+
+  /** Tells those in a trial who may read its log what its robot is doing now (what it says is the log's business). */
+  const announceRobotState = (trialId: string, state: LiveRobotState) => {
+    for (const s of viewers.get(trialId) ?? [])
+      if (mayReadTrialLog(s.data.access!)) send(s, { type: "robotState", ...state });
   };
 
   async function act(ws: Socket, message: Extract<ClientMessage, { type: "command" | "annotate" }>): Promise<void> {
@@ -405,7 +413,7 @@ export function startRuntimeServer({
       },
     },
   });
-  return { server, announceRobot, accessChanged, recheckAll };
+  return { server, announceRobot, announceRobotState, accessChanged, recheckAll };
 }
 
 function logError(error: unknown) {

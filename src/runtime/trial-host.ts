@@ -18,6 +18,7 @@ import { areTheseEvents } from "@/core/trial/landed";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import type { CameraFrame, RobotLink } from "./robot";
 import { sampleRecorder } from "./samples";
+import { foldLiveState, UNKNOWN_STATE, type LiveRobotState } from "@/core/robots/live-state";
 
 function startedAt(events: StoredEvent[]): number | null {
   const started = events.find((e) => e.type === "trial.started");
@@ -128,6 +129,13 @@ export class TrialHost {
   private opening: StoredEvent[] | null;
   /** Each request's outcome by its id, so a request sent again is answered, never carried out twice. */
   private readonly requests = new Map<string, Promise<CommandResult>>();
+  /** What the wizard sees of the robot now (speaking, gesture, posture, battery), and who is told of changes. */
+  private live: LiveRobotState = UNKNOWN_STATE;
+  private readonly liveListeners = new Set<(state: LiveRobotState) => void>();
+  /** The registered robot's name, shown to the wizard before the trial starts. */
+  robotName: string | null = null;
+  /** Wraps the start: the runtime refuses one whose robot another live trial drives (trial-hosts.ts). */
+  private startGuard = (start: () => Promise<CommandResult>) => start();
 
   private constructor(
     private readonly db: Database,
@@ -146,6 +154,10 @@ export class TrialHost {
     this.stopWatching = robot.watchState((topic, message) => {
       const live = this.state.status === "in_progress" || this.state.status === "paused";
       if (live && this.t0 !== null) this.samples.add(topic, Date.now() - this.t0, message);
+      const next = foldLiveState(this.live, topic, message);
+      if (next === this.live) return;
+      this.live = next;
+      for (const listener of this.liveListeners) listener(next);
     });
   }
 
@@ -170,6 +182,19 @@ export class TrialHost {
       );
     }
     return host;
+  }
+
+  /** The robot's live state as the wizard sees it, and a listener for its changes. */
+  get robotState(): LiveRobotState {
+    return this.live;
+  }
+
+  onRobotState(listener: (state: LiveRobotState) => void) {
+    this.liveListeners.add(listener);
+  }
+
+  guardStart(guard: (start: () => Promise<CommandResult>) => Promise<CommandResult>) {
+    this.startGuard = guard;
   }
 
   /** Whether the robot is reachable now, and a listener for every change. */
@@ -257,7 +282,8 @@ export class TrialHost {
     // The log is stuck on an earlier command: refuse now rather than queue behind it.
     if (!ALWAYS_LOGGED.has(command.kind) && this.writingSince !== null && asked - this.writingSince > LOG_DEADLINE_MS)
       return Promise.resolve({ ok: false, reason: LOG_UNAVAILABLE });
-    const run = this.queue.then(() => this.execute(command, actorId, requestId, halts, asked));
+    const execute = () => this.execute(command, actorId, requestId, halts, asked);
+    const run = this.queue.then(() => (command.kind === "start" ? this.startGuard(execute) : execute()));
     this.queue = run.catch(() => undefined);
     return ALWAYS_LOGGED.has(command.kind) ? run : answeredBy(run, asked + LOG_DEADLINE_MS + DEADLINE_MARGIN_MS);
   }

@@ -4,18 +4,31 @@
 // client has followed it for a while with nothing under way, so the robot
 // connections held are bounded by the trials being run, not by every trial
 // ever opened. A finished trial is opened without a robot at all.
+//
+// Each trial drives the registered robot it was given (src/robots/registry.ts),
+// and one robot is never driven by two live trials: a start is refused while
+// another trial holds the trial's robot, in this process (a start under way)
+// and in the database (a live trial of any process; its unique index is the
+// last word when two processes start at the same moment).
 import { eq } from "drizzle-orm";
 import type postgres from "postgres";
 import { cannotStart, type Plugin } from "@/core/plugins";
 import type { Database } from "@/store/client";
 import { experimentVersions, trials } from "@/store/schema";
 import { trialPlugin } from "@/robots/trial-plugin";
+import { isRobotTakenError, robotHeldBy, robotOfTrial, type RobotRecord } from "@/robots/registry";
+import { robotTaken } from "@/core/robots/registry";
+import type { LiveRobotState } from "@/core/robots/live-state";
 import type { RobotLink } from "./robot";
 import { unavailableRobot } from "./robot-link";
 import { trialLocks } from "./trial-locks";
 import { logUnexpected } from "@/store/error-reference";
-import { TrialHost } from "./trial-host";
+import { TrialHost, type CommandResult } from "./trial-host";
 import { groupWriter } from "./log-writer";
+
+export type RobotChoice = { ok: true; robot: RobotRecord } | { ok: false; reason: string };
+
+const refused = (reason: string): CommandResult => ({ ok: false, reason });
 
 export interface TrialHosts {
   /** The trial's host in this process, or null while another process owns the trial. */
@@ -29,15 +42,24 @@ export function trialHosts(
   db: Database,
   /** Makes the trials' lock connection (`createSessionClient`), again whenever the one before died; closed with the hosts. */
   lockSession: () => postgres.Sql,
-  /** The robot for a trial's plugin document; `plugin` is null when none is installed for `robotId`. */
-  robotFor: (plugin: Plugin | null, robotId: string) => RobotLink | Promise<RobotLink>,
+  /**
+   * The link to a trial's robot: `plugin` is the trial's plugin document (null when none is installed for
+   * `robotId`), `robot` the registered robot it drives, or why it has none.
+   */
+  robotFor: (plugin: Plugin | null, robotId: string, robot: RobotChoice) => RobotLink | Promise<RobotLink>,
   onRobotStatus: (trialId: string, connected: boolean, detail?: string) => void,
   /** How long a trial nobody follows stays open, for a wizard who reloads or reconnects. */
   idleMs = 60_000,
+  /** The robot's live state changed (what the wizard's page shows). */
+  onRobotState: (trialId: string, state: LiveRobotState) => void = () => {},
 ): TrialHosts {
   const hosts = new Map<string, Promise<TrialHost | null>>();
   // Every trial of this process appends through one writer: one commit for what arrives together.
   const log = groupWriter(db);
+  /** The registered robot of each trial open here. */
+  const robotOf = new Map<string, RobotRecord>();
+  /** Robots whose trial is starting now, not yet live in the database: robot → trial. */
+  const starting = new Map<string, string>();
   // A lock lost with its connection and taken by another process: that process runs the trial now.
   const locks = trialLocks(lockSession, (trialId) => {
     void hosts
@@ -50,6 +72,7 @@ export function trialHosts(
     const current = hosts.get(trialId);
     if (!current || (await current.catch(() => null)) !== host) return;
     hosts.delete(trialId);
+    robotOf.delete(trialId);
     await host.close();
     // Locks count: this releases exactly the hold this host took.
     if (unlock) await locks.release(trialId);
@@ -82,9 +105,25 @@ export function trialHosts(
       row?.snapshot && row.status === "scheduled" && chosen.plugin ? cannotStart(row.snapshot, chosen.plugin) : null;
     if (missing) throw new Error(missing);
     const ended = row?.status === "completed" || row?.status === "aborted";
-    const robot = ended ? unavailableRobot("the trial has ended") : await robotFor(chosen.plugin, chosen.robotId);
+    let robot: RobotLink;
+    let registered: RobotRecord | null = null;
+    if (ended) robot = unavailableRobot("the trial has ended");
+    else {
+      // A robot another trial open here drives is not chosen for a new one, started or not.
+      const heldHere = new Set([...robotOf].filter(([t]) => t !== trialId).map(([, r]) => r.id));
+      const choice = await robotOfTrial(db, trialId, chosen.robotId, heldHere);
+      registered = choice.ok ? choice.robot : null;
+      robot = await robotFor(chosen.plugin, chosen.robotId, choice);
+    }
     const host = await TrialHost.open(db, trialId, protocol, robot, log);
+    if (registered) {
+      const own = registered;
+      robotOf.set(trialId, own);
+      host.robotName = own.name;
+      host.guardStart((start) => startOn(own, trialId, start));
+    }
     host.onRobotStatus((connected, detail) => onRobotStatus(trialId, connected, detail));
+    host.onRobotState((state) => onRobotState(trialId, state));
     // Unwatched for idleMs: closes, unless an action is still under way (then looks again later).
     const retireIfIdle = () => {
       const timer = setTimeout(() => {
@@ -98,6 +137,23 @@ export function trialHosts(
     // Opened by a command or a hello that may never subscribe: it must not stay open for ever either.
     retireIfIdle();
     return host;
+  }
+
+  /** Starts the trial unless another trial drives its robot, here or anywhere. */
+  async function startOn(robot: RobotRecord, trialId: string, start: () => Promise<CommandResult>) {
+    const other = starting.get(robot.id);
+    if (other && other !== trialId) return refused(robotTaken(robot.name, "a trial that is starting now"));
+    starting.set(robot.id, trialId);
+    try {
+      const held = await robotHeldBy(db, robot, trialId);
+      if (held) return refused(held);
+      return await start();
+    } catch (error) {
+      if (!isRobotTakenError(error)) throw error;
+      return refused((await robotHeldBy(db, robot, trialId)) ?? robotTaken(robot.name, "another trial"));
+    } finally {
+      if (starting.get(robot.id) === trialId) starting.delete(robot.id);
+    }
   }
 
   return {

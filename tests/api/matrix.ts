@@ -49,6 +49,17 @@ const freshSession = async (f: Fixture, b: Base) => {
   return owner.sessions.schedule({ participantId: p.id, plannedAt: new Date(), wizardId: f.people.wizard.id });
 };
 
+/** A robot of its own for each call, available to the fixture's study. */
+const robotInput = (b: Base) => ({
+  name: `NAO ${crypto.randomUUID().slice(0, 8)}`,
+  pluginRobotId: "nao6-ros2",
+  rosbridgeUrl: "ws://192.0.2.10:9090",
+  sshHost: "192.0.2.10",
+  sshUser: "nao",
+  sshSecret: "env:NAO_SSH_PASSWORD",
+  studyIds: [b.study.id],
+});
+
 /** Each publish gets an experiment of its own, so the base experiment keeps the one version the other rows use. */
 const publishable = async (f: Fixture, b: Base) => {
   const e = await f.api("owner").experiments.create({ studyId: b.study.id, name: "tmp", robotId: "nao6-ros2" });
@@ -313,6 +324,14 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "admin.users.setRole": [ADMIN, async (f) => ({ userId: (await newPerson(f.db, "promoted")).id, role: "wizard" })],
   "admin.users.setDisabled": [ADMIN, async (f) => ({ userId: (await newPerson(f.db, "disabled")).id, disabled: true })],
   "admin.auditLog": [ADMIN, () => ({ limit: 10 })],
+  "robots.list": [ADMIN, () => undefined],
+  "robots.studies": [ADMIN, () => undefined],
+  "robots.register": [ADMIN, (_f, b) => robotInput(b)],
+  "robots.update": [
+    ADMIN,
+    async (f, b) => ({ ...robotInput(b), robotId: (await f.api("admin").robots.register(robotInput(b))).id }),
+  ],
+  "robots.remove": [ADMIN, async (f, b) => ({ robotId: (await f.api("admin").robots.register(robotInput(b))).id })],
   "tokens.studies": [SIGNED_IN, () => undefined],
   "tokens.list": [SIGNED_IN, () => undefined],
   "tokens.create": [SIGNED_IN, tokenInput],

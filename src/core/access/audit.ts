@@ -7,6 +7,7 @@ export const AUDIT_AREAS = [
   { value: "participant", label: "Participants and consent" },
   { value: "user", label: "Accounts" },
   { value: "plugins", label: "Robot plugins" },
+  { value: "robot", label: "Robots" },
   { value: "token", label: "Access tokens" },
 ] as const;
 
@@ -35,6 +36,9 @@ const ACTION_WORDS: Record<string, string> = {
   "plugins.repository.add": "added a plugin repository",
   "plugins.repository.remove": "removed a plugin repository",
   "plugins.sync": "synced a plugin repository",
+  "robot.register": "registered a robot",
+  "robot.update": "changed a robot",
+  "robot.remove": "removed a robot",
   "token.create": "created an access token",
   "token.revoke": "revoked an access token",
   "token.use": "used an access token (first use that day)",

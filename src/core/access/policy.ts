@@ -13,6 +13,7 @@ export const SYSTEM_OPERATIONS = {
   "plugin.read": ["administrator", "researcher", "wizard", "observer"],
   "admin.users": ["administrator"],
   "admin.plugins": ["administrator"],
+  "admin.robots": ["administrator"],
   // Anyone may hold access tokens; each reaches only studies whose data its owner may read.
   "token.manage": ["administrator", "researcher", "wizard", "observer"],
   // The studies whose data I may read: the analysis API's list.

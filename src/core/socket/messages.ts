@@ -153,7 +153,21 @@ export const serverMessageSchema = z.discriminatedUnion("type", [
     type: z.literal("annotation"),
     annotation: z.object({ id, relMs: z.number(), label: z.string(), note: z.string(), authorName: z.string() }),
   }),
-  z.object({ type: z.literal("robot"), connected: z.boolean(), detail: z.string().optional() }),
+  // `name`: the registered robot the trial drives (sent with the welcome, so the wizard sees it before starting).
+  z.object({
+    type: z.literal("robot"),
+    connected: z.boolean(),
+    detail: z.string().optional(),
+    name: z.string().optional(),
+  }),
+  // What the robot is doing now (src/core/robots/live-state.ts): sent with the welcome and on every change.
+  z.object({
+    type: z.literal("robotState"),
+    speaking: z.string().nullable(),
+    gesture: z.string().nullable(),
+    posture: z.string().nullable(),
+    battery: z.number().nullable(),
+  }),
   z.object({ type: z.literal("pong") }),
   // The robot's camera (its plugin's `camera`): one compressed image, base64, as the robot sent it.
   z.object({ type: z.literal("camera"), format: z.string().max(100), data: z.string() }),

@@ -1,5 +1,5 @@
 "use client";
-// The administrator's three pages, one link each; the current one is marked
+// The administrator's pages, one link each; the current one is marked
 // for screen readers as well as by colour.
 import Link from "next/link";
 import { usePathname } from "next/navigation";
@@ -7,6 +7,7 @@ import { cn } from "@/ui/cn";
 
 const PAGES = [
   { href: "/admin", label: "Accounts" },
+  { href: "/admin/robots", label: "Robots" },
   { href: "/admin/plugins", label: "Robot plugins" },
   { href: "/admin/audit", label: "Audit log" },
 ];

@@ -15,6 +15,7 @@ import { AnnotateForm, AnnotationList, Watching } from "./observer-panel";
 import { OffScript, StepActions, StepList } from "./protocol-view";
 import { TrialQuestionnaires } from "@/features/questionnaires/trial-questionnaires";
 import { RecordingPanel } from "@/features/recording/recording-panel";
+import { RobotStatePanel } from "./robot-state-panel";
 import { TrialClock } from "./trial-clock";
 import { TrialPeople } from "./trial-people";
 import { useTrialSocket } from "./use-trial-socket";
@@ -138,6 +139,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           )}
         </div>
         <div className="space-y-4">
+          {wizard && <RobotStatePanel name={live.robot?.name} state={live.robotState} />}
           <Watching viewers={live.viewers} />
           {wizard && (
             <RecordingPanel

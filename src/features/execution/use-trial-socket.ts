@@ -18,6 +18,7 @@ import {
   type WizardCommand,
 } from "@/core/socket/messages";
 import { useTRPC } from "@/lib/trpc";
+import type { LiveRobotState } from "@/core/robots/live-state";
 
 export type Annotation = Extract<ServerMessage, { type: "annotation" }>["annotation"];
 type Outcome = { ok: true } | { ok: false; reason: string };
@@ -32,7 +33,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const [viewers, setViewers] = useState<Viewer[]>([]);
   const [annotations, setAnnotations] = useState<Annotation[]>([]);
   const [connected, setConnected] = useState(false);
-  const [robot, setRobot] = useState<{ connected: boolean; detail?: string } | null>(null);
+  const [robot, setRobot] = useState<{ connected: boolean; detail?: string; name?: string } | null>(null);
+  const [robotState, setRobotState] = useState<LiveRobotState | null>(null);
   // About the connection (lost, shut out, another version): stays until the connection changes.
   const [notice, setNotice] = useState<string | null>(null);
   // About the trial (a command refused): stays only while the trial is as it was when refused.
@@ -108,8 +110,13 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         } else if (m.type === "access") setMayRun(m.mayRun);
         else if (m.type === "events") receive(m.events);
         else if (m.type === "presence") setViewers(m.viewers);
-        else if (m.type === "robot") setRobot({ connected: m.connected, detail: m.detail });
-        else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
+        // The robot's name comes with the welcome; a later change of connection keeps it.
+        else if (m.type === "robot")
+          setRobot((r) => ({ connected: m.connected, detail: m.detail, name: m.name ?? r?.name }));
+        else if (m.type === "robotState") {
+          const { type: _, ...state } = m;
+          setRobotState(state);
+        } else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
         else if (m.type === "camera") for (const show of cameraListeners.current) show(m);
         else if (m.type === "signal") for (const listen of signalListeners.current) listen(m.peerId, m.signal);
         else if ((m.type === "ack" || m.type === "rejected") && m.requestId && signalRequests.current.has(m.requestId))
@@ -218,6 +225,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     annotations,
     connected,
     robot,
+    /** What the robot is doing now (null until the runtime says). */
+    robotState,
     mayRun,
     /** Live video's side of the socket: null until welcomed (and while reconnecting). */
     video,

@@ -7,6 +7,7 @@ import { membersRouter } from "./routers/members";
 import { participantsRouter } from "./routers/participants";
 import { formRouter } from "./routers/form";
 import { pluginsRouter } from "./routers/plugins";
+import { robotsRouter } from "./routers/robots";
 import { questionnairesRouter } from "./routers/questionnaires";
 import { recordingsRouter } from "./routers/recordings";
 import { audioRouter } from "./routers/audio";
@@ -31,6 +32,7 @@ export const appRouter = router({
   recordings: recordingsRouter,
   audio: audioRouter,
   plugins: pluginsRouter,
+  robots: robotsRouter,
   trials: trialsRouter,
   admin: adminRouter,
   tokens: tokensRouter,

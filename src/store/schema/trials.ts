@@ -11,11 +11,13 @@ import {
   primaryKey,
   text,
   timestamp,
+  uniqueIndex,
 } from "drizzle-orm/pg-core";
 import { user } from "./auth";
 import { experimentVersions, experiments } from "./experiments";
 import { createdAt, id, snapshot } from "./columns";
 import { participants, studies } from "./studies";
+import { robots } from "./robots";
 
 export const trials = pgTable(
   "trials",
@@ -36,6 +38,8 @@ export const trials = pgTable(
       .notNull()
       .default("scheduled"),
     isRehearsal: boolean("is_rehearsal").notNull().default(false),
+    // The registered robot the trial drives: chosen when it is created or first opened, changeable until it starts.
+    assignedRobotId: text("assigned_robot_id").references(() => robots.id, { onDelete: "set null" }),
     t0: timestamp("t0", { withTimezone: true }),
     endedAt: timestamp("ended_at", { withTimezone: true }),
     createdBy: text("created_by").references(() => user.id, { onDelete: "set null" }),
@@ -47,6 +51,9 @@ export const trials = pgTable(
     index("trials_version_idx").on(t.versionId),
     index("trials_participant_idx").on(t.participantId),
     index("trials_wizard_idx").on(t.wizardId),
+    index("trials_robot_idx").on(t.assignedRobotId),
+    // One robot is never driven by two live trials, whichever runtime process runs them.
+    uniqueIndex("trials_live_robot_idx").on(t.assignedRobotId).where(sql`${t.status} in ('in_progress', 'paused')`),
   ],
 );
 

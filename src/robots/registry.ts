@@ -1,0 +1,165 @@
+// The robot registry in the database: seeding it from the environment and the
+// launcher, the robot a trial drives (chosen once, among those available to its
+// study), who holds a robot now, and the live health the runtime writes.
+// The rules themselves are pure (src/core/robots/registry.ts).
+import { and, asc, eq, inArray, isNull, ne, or } from "drizzle-orm";
+import { chooseRobot, parseSecretReference, robotTaken } from "@/core/robots/registry";
+import type { Database } from "@/store/client";
+import { experiments, participants, robotStudies, robots, trials } from "@/store/schema";
+import type { TransportConfig } from "./transports";
+
+export type RobotRecord = typeof robots.$inferSelect;
+
+const LIVE = ["in_progress", "paused"] as const;
+
+/** The ways to reach a registered robot, its SSH secret read from where the record says. */
+export function connectionOf(
+  robot: RobotRecord,
+  env: NodeJS.ProcessEnv = process.env,
+): { ok: true; config: TransportConfig } | { ok: false; reason: string } {
+  let password: string | undefined;
+  let privateKeyFile: string | undefined;
+  if (robot.sshSecret) {
+    const secret = parseSecretReference(robot.sshSecret);
+    if ("error" in secret) return { ok: false, reason: `The SSH secret of "${robot.name}" ${secret.error}.` };
+    if (secret.kind === "env") {
+      password = env[secret.name];
+      if (!password)
+        return {
+          ok: false,
+          reason: `The SSH password of "${robot.name}" is read from the environment variable ${secret.name}, which is not set for the trial runtime.`,
+        };
+    } else privateKeyFile = secret.path;
+  }
+  const url = robot.rosbridgeUrl ?? undefined;
+  return {
+    ok: true,
+    config: {
+      rosbridgeUrl: url,
+      // A plugin whose transport is "simulated" speaks rosbridge to the robot it is given, as it did
+      // to HRI_ROSBRIDGE_URL before records: only robots registered for it, or for any plugin, get it.
+      simulatorUrl: url,
+      httpBaseUrl: robot.httpUrl ?? undefined,
+      ssh:
+        robot.sshHost && robot.sshUser
+          ? { host: robot.sshHost, port: robot.sshPort, username: robot.sshUser, password, privateKeyFile }
+          : undefined,
+    },
+  };
+}
+
+/** The robots a study may use, seeded and simulated ones included, by name. */
+export function robotsOfStudy(db: Database, studyId: string) {
+  return db
+    .select()
+    .from(robots)
+    .where(
+      or(
+        eq(robots.allStudies, true),
+        inArray(
+          robots.id,
+          db.select({ id: robotStudies.robotId }).from(robotStudies).where(eq(robotStudies.studyId, studyId)),
+        ),
+      ),
+    )
+    .orderBy(asc(robots.name));
+}
+
+/**
+ * The robot the trial drives: the one it was given, or else (chosen now and
+ * kept) a robot available to its study that runs its plugin, free ones first
+ * (`chooseRobot`). `heldHere`: robots of other trials this runtime has open.
+ */
+export async function robotOfTrial(
+  db: Database,
+  trialId: string,
+  robotId: string,
+  heldHere: ReadonlySet<string> = new Set(),
+): Promise<{ ok: true; robot: RobotRecord } | { ok: false; reason: string }> {
+  const [trial] = await db
+    .select({ studyId: trials.studyId, assigned: trials.assignedRobotId })
+    .from(trials)
+    .where(eq(trials.id, trialId));
+  if (!trial) return { ok: false, reason: "This trial does not exist." };
+  if (trial.assigned) {
+    const [robot] = await db.select().from(robots).where(eq(robots.id, trial.assigned));
+    if (robot) return { ok: true, robot };
+  }
+  const available = await robotsOfStudy(db, trial.studyId);
+  const live = await db
+    .select({ robot: trials.assignedRobotId })
+    .from(trials)
+    .where(and(inArray(trials.status, [...LIVE]), ne(trials.id, trialId)));
+  const held = new Set([...heldHere, ...live.map((l) => l.robot).filter((r) => r !== null)]);
+  const chosen = chooseRobot(available, robotId, held);
+  if (!chosen)
+    return {
+      ok: false,
+      reason: `No registered robot available to this study runs the ${robotId} plugin: an administrator registers one (Administration → Robots) and makes it available to the study.`,
+    };
+  // Another opening of the same trial may have chosen first: the first choice stands.
+  await db
+    .update(trials)
+    .set({ assignedRobotId: chosen.id })
+    .where(and(eq(trials.id, trialId), isNull(trials.assignedRobotId)));
+  const [kept] = await db
+    .select()
+    .from(robots)
+    .innerJoin(trials, eq(trials.assignedRobotId, robots.id))
+    .where(eq(trials.id, trialId));
+  return kept ? { ok: true, robot: kept.robots } : { ok: true, robot: chosen };
+}
+
+/**
+ * The refusal when another live trial drives the robot, naming that trial in
+ * the wizard's words: in full when it is of the same study, and only as "a
+ * trial of another study" otherwise (a study's trials are its own business).
+ */
+export async function robotHeldBy(db: Database, robot: RobotRecord, trialId: string): Promise<string | null> {
+  const [self] = await db.select({ studyId: trials.studyId }).from(trials).where(eq(trials.id, trialId));
+  const [holder] = await db
+    .select({
+      id: trials.id,
+      studyId: trials.studyId,
+      experiment: experiments.name,
+      participant: participants.code,
+      status: trials.status,
+    })
+    .from(trials)
+    .innerJoin(experiments, eq(experiments.id, trials.experimentId))
+    .leftJoin(participants, eq(participants.id, trials.participantId))
+    .where(and(eq(trials.assignedRobotId, robot.id), inArray(trials.status, [...LIVE]), ne(trials.id, trialId)));
+  if (!holder) return null;
+  return robotTaken(robot.name, describeTrial(holder, holder.studyId === self?.studyId));
+}
+
+function describeTrial(
+  t: { id: string; experiment: string; participant: string | null; status: string },
+  sameStudy: boolean,
+): string {
+  if (!sameStudy) return "a trial of another study";
+  const who = t.participant ? ` with participant ${t.participant}` : "";
+  return `the trial of "${t.experiment}"${who}, ${t.status === "paused" ? "paused" : "in progress"}, id ${t.id.slice(0, 8)}`;
+}
+
+/** Whether an error is the database refusing a second live trial on one robot (the backstop across processes). */
+export function isRobotTakenError(error: unknown): boolean {
+  // Drizzle may wrap the driver's error: the constraint is on the error or its cause.
+  for (
+    let e = error as { code?: string; constraint_name?: string; cause?: unknown } | null;
+    e;
+    e = e.cause as typeof e
+  ) {
+    if (e.code === "23505" && e.constraint_name === "trials_live_robot_idx") return true;
+  }
+  return false;
+}
+
+/** The runtime's news of a robot: connected or not, its battery; "last seen" moves whenever it answers. */
+export async function recordHealth(db: Database, robotId: string, health: { connected?: boolean; battery?: number }) {
+  const seen = health.connected !== false ? { lastSeenAt: new Date() } : {};
+  await db
+    .update(robots)
+    .set({ ...health, ...seen })
+    .where(eq(robots.id, robotId));
+}

@@ -1,0 +1,52 @@
+// A registered robot's health, written to its record as the runtime sees it:
+// connected or not, its battery, and when it last answered. The admin page
+// reads it from there, so it is true whichever runtime process drives the robot.
+import { batteryPercent } from "@/core/robots/live-state";
+import { recordHealth } from "@/robots/registry";
+import type { Database } from "@/store/client";
+import { logUnexpected } from "@/store/error-reference";
+import type { RobotLink } from "./robot";
+
+/** At most one battery write per robot per this long: the record is for people, not a sample log. */
+const BATTERY_EVERY_MS = 10_000;
+
+/**
+ * The link, recording its health on the robot's record. `moreState`: state
+ * topics beyond the plugin's (the simulated robot's own report) that the trial
+ * host should also see.
+ */
+export function withHealth(
+  db: Database,
+  robotId: string,
+  link: RobotLink,
+  moreState?: (listener: (topic: string, message: unknown) => void) => () => void,
+): RobotLink {
+  const write = (health: { connected?: boolean; battery?: number }) =>
+    void recordHealth(db, robotId, health).catch((error: unknown) =>
+      logUnexpected(error, "recording a robot's health"),
+    );
+  link.onConnection((connected) => write({ connected }));
+  let batteryAt = Number.NEGATIVE_INFINITY;
+  const stopBattery = link.watchState((_, message) => {
+    const battery = batteryPercent(message);
+    if (battery === null || Date.now() - batteryAt < BATTERY_EVERY_MS) return;
+    batteryAt = Date.now();
+    write({ connected: true, battery });
+  });
+  return {
+    perform: (request, report) => link.perform(request, report),
+    halt: () => link.halt(),
+    connected: () => link.connected(),
+    onConnection: (listener) => link.onConnection(listener),
+    watchCamera: (listener) => link.watchCamera(listener),
+    watchState(listener) {
+      const stops = [link.watchState(listener), ...(moreState ? [moreState(listener)] : [])];
+      return () => stops.forEach((stop) => stop());
+    },
+    close() {
+      stopBattery();
+      link.close();
+      write({ connected: false });
+    },
+  };
+}

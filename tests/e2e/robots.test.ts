@@ -1,0 +1,88 @@
+// Two simulated robots registered (npm start with HRI_SIMULATED_ROBOTS=2), two
+// wizards in two browsers, each trial on its own robot: each wizard sees which
+// robot before starting, and what it is doing while the trial runs; each
+// robot hears its own trial's speech, once; the administrator sees both robots'
+// health. (Speech durations confirmed by the robot are asserted once the
+// robot link confirms completion: the lead adds that here.)
+import type { Browser, Page } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
+import { apiClient, signIn } from "../support/http";
+import { listenToSpeech } from "../support/robot-ears";
+
+const GREETING = "Hello. I want to tell you about Kai, an astronaut who went on a mission to Mars.";
+
+describe.sequential("two robots, two wizards", () => {
+  let app: RunningApp;
+  let browser: Browser;
+  const trialPaths: string[] = [];
+
+  beforeAll(async () => {
+    app = await startApp({ env: { HRI_SIMULATED_ROBOTS: "2" } });
+    browser = await launchBrowser();
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const wizard = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await researcher.studies.mine.query();
+    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
+    const version = await researcher.versions.publish.mutate({ experimentId: experiment!.id });
+    const [first, second] = await researcher.participants.list.query({ studyId: study!.id });
+    // The wizard runs one trial, the researcher (the study's owner) the other, at the same time.
+    const ofWizard = await wizard.trials.create.mutate({ versionId: version.id, participantId: first!.id });
+    const ofResearcher = await researcher.trials.create.mutate({ versionId: version.id, participantId: second!.id });
+    trialPaths.push(`/trials/${ofWizard.id}`, `/trials/${ofResearcher.id}`);
+  }, 180_000);
+  afterAll(async () => {
+    await browser?.close();
+    await app?.stop();
+  });
+
+  it("runs two trials at once, each on its own robot, and shows each robot's health", async () => {
+    const admin = apiClient(app.url, await signIn(app.url, "admin@demo.hristudio", DEMO_PASSWORD));
+    const registered = await admin.robots.list.query();
+    expect(registered.map((r) => [r.name, r.simulated, r.allStudies])).toEqual([
+      ["Simulated robot 1", true, true],
+      ["Simulated robot 2", true, true],
+    ]);
+    const ears = await Promise.all(registered.map((r) => listenToSpeech(r.rosbridgeUrl!)));
+
+    const pages: Page[] = [];
+    for (const [i, who] of ["wizard@demo.hristudio", "researcher@demo.hristudio"].entries()) {
+      const page = await (await newContext(browser, app.url)).newPage();
+      await signInAs(page, who, DEMO_PASSWORD);
+      await page.goto(trialPaths[i]!);
+      await page.getByText("robot connected").waitFor();
+      pages.push(page);
+    }
+    // Before starting, each wizard sees which robot the trial will use: not the same one.
+    const names = await Promise.all(pages.map((p) => p.getByTestId("robot-name").textContent()));
+    expect(names.map((n) => n?.replace(/^: /, "")).sort()).toEqual(["Simulated robot 1", "Simulated robot 2"]);
+
+    // Both wizards start and run the introduction at the same time.
+    await Promise.all(pages.map((p) => p.keyboard.press("n")));
+    await Promise.all(
+      pages.map((p) => expect.poll(() => p.getByTestId("current-step").textContent()).toBe("Introduction")),
+    );
+    await Promise.all(pages.map((p) => p.keyboard.press("n")));
+    // Each robot heard the greeting once: its own trial's, never the other's.
+    for (const ear of ears) await expect.poll(() => ear.heard, { timeout: 15_000 }).toEqual([GREETING]);
+    // What the robot is doing reaches the wizard's page: its posture and battery, from the robot.
+    for (const page of pages) {
+      await expect.poll(() => page.getByTestId("robot-posture").textContent()).toBe("stand");
+      await expect.poll(() => page.getByTestId("robot-battery").textContent()).toMatch(/^\d+(\.\d)? %$/);
+    }
+    await screenshot(pages[0]!, "wizard-robot-state");
+
+    const adminPage = await (await newContext(browser, app.url)).newPage();
+    await signInAs(adminPage, "admin@demo.hristudio", DEMO_PASSWORD);
+    await adminPage.goto("/admin/robots");
+    for (const name of ["Simulated robot 1", "Simulated robot 2"]) {
+      const row = adminPage.getByTestId(`robot-${name}`);
+      await row.getByText("connected", { exact: true }).waitFor();
+      await row.getByText("in a live trial").waitFor();
+    }
+    await screenshot(adminPage, "admin-robots");
+    for (const ear of ears) ear.close();
+    for (const page of [...pages, adminPage]) await page.context().close();
+  }, 120_000);
+});
