@@ -43,7 +43,12 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
     },
     connected: () => transport.health().state === "connected",
     onConnection(listener) {
-      transport.onHealth((h) => listener(h.state === "connected", h.state));
+      transport.onHealth((h) => {
+        // The robot's own errors and the reason for a loss go to the runtime's log as well as to the wizard.
+        const said = h.problem ?? (h.state === "connected" ? undefined : h.reason);
+        if (said) console.warn(`${plugin.name}: ${said}`);
+        listener(h.state === "connected", said ?? h.state);
+      });
     },
     watchState(listener) {
       const stops = (plugin.stateTopics ?? []).map((t) =>

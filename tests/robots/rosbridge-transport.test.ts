@@ -189,14 +189,35 @@ describe("connection health", () => {
     expect(await pending).toEqual({ status: "completed", detail: { topic: "/cmd_vel" } });
   });
 
-  it("the heartbeat notices a connection that has gone silent, and reconnects", async () => {
+  it("the heartbeat notices a bridge that has stopped answering, and reconnects once it answers again", async () => {
     const { sim, transport } = await setUp({ heartbeatEveryMs: 100, heartbeatTimeoutMs: 150 });
     await until(() => transport.health().lastHeartbeatMs !== null);
     const states: Health["state"][] = [];
     transport.onHealth((h) => states.push(h.state));
-    sim.faults.delayReplies(1000);
+    sim.faults.freeze(true);
     await until(() => states.includes("disconnected"), 2000);
-    sim.faults.delayReplies(0);
+    expect(transport.health().reason).toMatch(/stopped answering/);
+    sim.faults.freeze(false);
     await until(() => transport.health().state === "connected");
+  });
+
+  it("the heartbeat is WebSocket ping/pong: it sends the bridge no op, so nothing reaches the bridge's log", async () => {
+    const { sim, transport } = await setUp({ heartbeatEveryMs: 50 });
+    await until(() => transport.health().lastHeartbeatMs !== null);
+    await new Promise((r) => setTimeout(r, 300));
+    expect(sim.received.filter((r) => r.message.op === "call_service")).toEqual([]);
+    expect(sim.log).toEqual([]);
+  });
+
+  it("tells the trial an error the bridge reports in a status frame, without dropping the link", async () => {
+    const { sim, transport } = await setUp();
+    const problems: string[] = [];
+    transport.onHealth((h) => h.problem && problems.push(h.problem));
+    sim.faults.reportStatus("error", "Unable to load the manifest for package nao_msgs");
+    await until(() => problems.length > 0);
+    expect(problems).toEqual([
+      "the robot's bridge reported an error: Unable to load the manifest for package nao_msgs",
+    ]);
+    expect(transport.health().state).toBe("connected");
   });
 });

@@ -1,10 +1,15 @@
 // The rosbridge v2 transport, through the real roslib client. rosbridge
-// acknowledges nothing and reports errors only in its own log, so:
-// - a topic publish is "completed" once written to a connected socket;
-// - a service call completes or fails on its service_response, or times out;
-// - liveness is a heartbeat: a call to a service nobody offers, which every
-//   rosbridge answers with result false. No answer in time means the socket
-//   is dead or mute (transcripts 05, 07), and we reconnect.
+// acknowledges nothing and reports most errors only in its own log, so:
+// - a topic publish is "completed" only once the bridge has read it (a
+//   WebSocket ping sent after it was answered: see watched-socket.ts);
+//   one whose answer never comes fails with the reason, never "completed";
+// - a service call completes or fails on its service_response, or times out,
+//   and fails at once if the link is lost while it waits;
+// - liveness is WebSocket ping/pong (every rosbridge answers it, nothing is
+//   logged): a bridge that stops answering is given up within
+//   heartbeatTimeoutMs + heartbeatEveryMs, its socket terminated;
+// - a `status` frame of level error or warning (servers that send them) is
+//   told to the trial as the robot's problem.
 // Server state belongs to one connection (transcript 09): after every
 // reconnect a fresh roslib.Ros is made and state subscriptions are re-sent.
 import * as ROSLIB from "roslib";
@@ -19,6 +24,7 @@ import {
   type Backoff,
 } from "./link";
 import type { DispatchOutcome } from "./transport";
+import { WatchedSocket } from "./watched-socket";
 
 export interface RosbridgeOptions {
   url: string;
@@ -27,8 +33,6 @@ export interface RosbridgeOptions {
   /** Reconnect delays grow from the first to the last (default: RECONNECT_BACKOFF). */
   backoffMs?: Backoff;
 }
-
-const HEARTBEAT_SERVICE = "/hristudio/heartbeat";
 
 interface StateSubscription {
   topic: string;
@@ -44,7 +48,7 @@ export class RosbridgeTransport extends LinkedTransport {
   private topics = new Map<string, ROSLIB.Topic>();
   private readonly subscriptions = new Set<StateSubscription>();
   private timers = new Set<NodeJS.Timeout>();
-  private heartbeat: NodeJS.Timeout | null = null;
+  private socket: WatchedSocket | null = null;
   private waiting = new Set<() => void>();
 
   constructor(private readonly options: RosbridgeOptions) {
@@ -76,7 +80,13 @@ export class RosbridgeTransport extends LinkedTransport {
           : null;
     if (!ros) return unreached(action, started, "robot not connected");
     if (outgoing.kind === "publish") {
+      const socket = this.socket;
       this.topic(ros, outgoing.topic, outgoing.messageType).publish(outgoing.message);
+      if (!socket || !(await socket.delivered()))
+        return {
+          status: "failed",
+          reason: `the robot link was lost before the robot took the action in: ${this.lostReason()}`,
+        };
       return { status: "completed", detail: { topic: outgoing.topic } };
     }
     return this.call(ros, outgoing.service, outgoing.serviceType, outgoing.args, started + timeoutMs);
@@ -107,36 +117,60 @@ export class RosbridgeTransport extends LinkedTransport {
   async close() {
     this.setState("closed");
     this.timers.forEach(clearTimeout);
-    if (this.heartbeat) clearInterval(this.heartbeat);
-    this.ros?.close();
+    this.socket?.terminate("the connection was closed");
     this.ros = null;
+    this.socket = null;
     this.waiting.forEach((wake) => wake());
   }
 
   private open() {
-    const ros = new ROSLIB.Ros({});
+    const liveness = {
+      everyMs: this.options.heartbeatEveryMs ?? 500,
+      timeoutMs: this.options.heartbeatTimeoutMs ?? 1500,
+    };
+    let socket: WatchedSocket | null = null;
+    const lost = (reason: string) => {
+      if (this.ros !== ros || this.status.state === "closed") return;
+      this.ros = null;
+      this.socket = null;
+      this.setState("disconnected", reason);
+      this.reconnectLater();
+    };
+    const ros = new ROSLIB.Ros({
+      transportFactory: async (url) => {
+        socket = new WatchedSocket(url, liveness, lost);
+        socket.on("message", (message) => this.bridgeSaid(message as { op?: string; level?: string; msg?: string }));
+        this.socket = socket;
+        return socket;
+      },
+    });
     this.ros = ros;
     this.topics = new Map();
     this.setState("connecting");
-    let gone = false;
-    const lost = () => {
-      if (gone || this.ros !== ros) return;
-      gone = true;
-      if (this.heartbeat) clearInterval(this.heartbeat);
-      this.setState("disconnected");
-      this.reconnectLater();
-    };
     ros.on("connection", () => {
       if (this.ros !== ros) return;
       this.status.attempts = 0;
       this.setState("connected");
       this.subscriptions.forEach((s) => this.listen(ros, s));
-      this.startHeartbeat(ros);
       this.waiting.forEach((wake) => wake());
     });
-    ros.on("close", lost);
-    ros.on("error", lost);
-    ros.connect(this.options.url).catch(lost);
+    ros.connect(this.options.url).catch((error: Error) => lost(`cannot reach rosbridge: ${error.message}`));
+  }
+
+  override health() {
+    return { ...super.health(), lastHeartbeatMs: this.socket?.lastRoundTripMs ?? this.status.lastHeartbeatMs };
+  }
+
+  /** A `status` frame (rosbridge's protocol; not every server sends them): errors and warnings are the robot's problems. */
+  private bridgeSaid(message: { op?: string; level?: string; msg?: string }) {
+    if (message.op !== "status" || (message.level !== "error" && message.level !== "warning")) return;
+    this.tell(
+      `the robot's bridge reported ${message.level === "error" ? "an error" : "a warning"}: ${message.msg ?? "(no text)"}`,
+    );
+  }
+
+  private lostReason() {
+    return this.status.reason ?? "the robot's bridge did not answer";
   }
 
   private reconnectLater() {
@@ -147,18 +181,6 @@ export class RosbridgeTransport extends LinkedTransport {
       if (this.status.state !== "closed") this.open();
     }, delay);
     this.timers.add(timer);
-  }
-
-  private startHeartbeat(ros: ROSLIB.Ros) {
-    const every = this.options.heartbeatEveryMs ?? 2000;
-    const limit = this.options.heartbeatTimeoutMs ?? 1500;
-    this.heartbeat = setInterval(() => {
-      const sent = Date.now();
-      void this.call(ros, HEARTBEAT_SERVICE, "std_srvs/srv/Trigger", {}, sent + limit).then((outcome) => {
-        if (outcome.status === "timed_out") return ros.close();
-        this.status.lastHeartbeatMs = Date.now() - sent;
-      });
-    }, every);
   }
 
   private call(
@@ -176,8 +198,17 @@ export class RosbridgeTransport extends LinkedTransport {
       );
       const done = (outcome: DispatchOutcome) => {
         clearTimeout(timer);
+        unwatch();
         resolve(outcome);
       };
+      // A lost link will never bring the answer: fail now, with why, rather than at the timeout.
+      const unwatch = this.onHealth((health) => {
+        if (health.state !== "connected" && !health.problem)
+          done({
+            status: "failed",
+            reason: `the robot link was lost while waiting for the answer: ${this.lostReason()}`,
+          });
+      });
       new ROSLIB.Service({ ros, name, serviceType }).callService(
         args,
         (values) => done({ status: "completed", detail: { response: values as Record<string, unknown> } }),
