@@ -83,7 +83,11 @@ describe("every action of the fixture NAO6 plugin through roslib", () => {
       const { sim, transport } = await setUp();
       const ros2 = action.ros2 as { topic: string; messageType: string };
       const outcome = await transport.dispatch(action, parametersFor[action.id] ?? {});
-      expect(outcome).toEqual({ status: "completed", detail: { topic: ros2.topic } });
+      // The fixture declares no completion rules: taken in by the bridge, not confirmed done by the robot.
+      expect(outcome).toEqual({
+        status: "completed",
+        detail: { topic: ros2.topic, confirmation: { by: "delivered", confirmed: false } },
+      });
       await until(() => lastPublish(sim, ros2.topic).count === 1);
       const received = lastPublish(sim, ros2.topic);
       expect(received.type).toBe(ros2.messageType);
@@ -137,7 +141,10 @@ describe("service calls", () => {
     const { transport } = await setUp();
     expect(await transport.dispatch(service("/set_led", 2000, { data: "{{on}}" }), { on: true })).toEqual({
       status: "completed",
-      detail: { response: { success: true, message: "led=True" } },
+      detail: {
+        response: { success: true, message: "led=True" },
+        confirmation: { by: "service_response", confirmed: true, source: "/set_led" },
+      },
     });
   });
 
@@ -186,7 +193,10 @@ describe("connection health", () => {
     });
     const pending = transport.dispatch(stop, {});
     setTimeout(() => sim.faults.refuseConnections(false), 300);
-    expect(await pending).toEqual({ status: "completed", detail: { topic: "/cmd_vel" } });
+    expect(await pending).toEqual({
+      status: "completed",
+      detail: { topic: "/cmd_vel", confirmation: { by: "delivered", confirmed: false } },
+    });
   });
 
   it("the heartbeat notices a bridge that has stopped answering, and reconnects once it answers again", async () => {

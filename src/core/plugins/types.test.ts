@@ -25,6 +25,7 @@ const PLUGIN: Fields<Plugin> = {
   abstract: true,
   unsupported: true,
   stateTopics: true,
+  halt: true,
 };
 const ACTION: Fields<PluginAction> = {
   id: true,
@@ -37,6 +38,7 @@ const ACTION: Fields<PluginAction> = {
   parameterSchema: true,
   ros2: true,
   http: true,
+  completion: true,
 };
 const PARAMETERS: Fields<ParameterSchema> = {
   type: true,

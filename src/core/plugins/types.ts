@@ -40,7 +40,26 @@ export interface PluginAction {
   ros2?: Ros2Dispatch;
   /** Our extension: a request to the robot's REST API. */
   http?: HttpDispatch;
+  /** Our extension: how the action is known to be done (completion.ts gives the default when absent). */
+  completion?: Completion;
 }
+
+/** Which message on a done topic is this action's: the field at a dotted path, compared after {{param}} filling. */
+export interface DoneMatch {
+  field: string;
+  equals?: JsonValue;
+  startsWith?: string;
+}
+
+/** How an action is known to be done, as a plugin declares it. */
+export type Completion =
+  | { kind: "done_topic"; topic: string; messageType: string; match?: DoneMatch }
+  | { kind: "service_response" }
+  | { kind: "http_response" }
+  /** A ROS 2 action goal's result: fulfilled by the transport that sends action goals. */
+  | { kind: "action_result" }
+  /** The last resort: not confirmed by the robot, and marked so. */
+  | { kind: "estimated_duration"; ms?: number; msPerChar?: number; perCharOf?: string };
 
 export interface HttpDispatch {
   method: "GET" | "POST" | "PUT" | "PATCH" | "DELETE";
@@ -72,6 +91,8 @@ export interface Plugin {
   actions: PluginAction[];
   abstract?: Record<string, AbstractBinding | AbstractBinding[]>;
   unsupported?: Array<{ action: string; reason: string }>;
+  /** Our extension: the actions an emergency stop or abort sends, in order (e.g. stop walking, stop speech, stop animation). */
+  halt?: string[];
   /** Robot state the runtime logs as trial samples during a trial. */
   stateTopics?: Array<{ topic: string; messageType: string; throttleRate?: number }>;
   /** Every other field of the file, kept as written. */

@@ -1,6 +1,7 @@
 // The built-in simulated robot: a rosbridge v2 server so every path runs without hardware.
 import type { Plugin } from "../../core/plugins";
 import {
+  animation,
   audio,
   battery,
   jointStates,
@@ -16,14 +17,15 @@ export * from "./nodes";
 
 const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 
-/** The default robot: the topics of a plugin (NAO6's by default), speech, sound files, joint states and battery. */
+/** The default robot: the topics of a plugin (NAO6's by default), speech, animations, sound files, joint states and battery. */
 export function simulatedRobot(
   plugin: Plugin,
-  { msPerChar = 60, jointStatesHz = 10, batteryHz = 1 } = {},
+  { msPerChar = 60, jointStatesHz = 10, batteryHz = 1, animationMs = 1500 } = {},
 ): RobotNode[] {
   return [
     pluginTopics(plugin),
     speech({ msPerChar }),
+    animation({ durationMs: animationMs }),
     audio(),
     jointStates({
       hz: jointStatesHz,

@@ -13,7 +13,18 @@
 // Server state belongs to one connection (transcript 09): after every
 // reconnect a fresh roslib.Ros is made and state subscriptions are re-sent.
 import * as ROSLIB from "roslib";
-import { outgoingFor, type JsonValue, type PluginAction } from "../../core/plugins";
+import {
+  completionOf,
+  estimatedMs,
+  expectedDone,
+  outgoingFor,
+  robotTimeOf,
+  type Confirmation,
+  type JsonValue,
+  type Outgoing,
+  type PluginAction,
+} from "../../core/plugins";
+import { DoneTopics } from "./done-topics";
 import {
   backoffDelay,
   checkedParameters,
@@ -49,6 +60,9 @@ export class RosbridgeTransport extends LinkedTransport {
   private readonly subscriptions = new Set<StateSubscription>();
   private timers = new Set<NodeJS.Timeout>();
   private socket: WatchedSocket | null = null;
+  private readonly done = new DoneTopics((topic, messageType, onMessage) =>
+    this.subscribe(topic, messageType, onMessage),
+  );
   private waiting = new Set<() => void>();
 
   constructor(private readonly options: RosbridgeOptions) {
@@ -79,17 +93,75 @@ export class RosbridgeTransport extends LinkedTransport {
           ? await this.connectedWithin(started + timeoutMs)
           : null;
     if (!ros) return unreached(action, started, "robot not connected");
-    if (outgoing.kind === "publish") {
-      const socket = this.socket;
-      this.topic(ros, outgoing.topic, outgoing.messageType).publish(outgoing.message);
-      if (!socket || !(await socket.delivered()))
+    if (outgoing.kind === "publish")
+      return this.published(ros, action, checked.parameters, outgoing, started + timeoutMs);
+    return this.call(ros, outgoing.service, outgoing.serviceType, outgoing.args, started + timeoutMs);
+  }
+
+  /** A topic publish, completed as its rule says: a matching done message, an estimated duration, or only delivered. */
+  private async published(
+    ros: ROSLIB.Ros,
+    action: PluginAction,
+    parameters: Record<string, unknown>,
+    outgoing: Extract<Outgoing, { kind: "publish" }>,
+    deadline: number,
+  ): Promise<DispatchOutcome> {
+    const started = Date.now();
+    const rule = completionOf(action);
+    if (rule.kind === "action_result")
+      return {
+        status: "failed",
+        reason: `"${action.name}" waits for a ROS 2 action result but is sent as a topic message`,
+      };
+    const expected = rule.kind === "done_topic" ? expectedDone(rule.match, parameters) : null;
+    if (expected && !expected.ok) return { status: "failed", reason: expected.reason };
+    // Waiting starts before the send, so an answer that comes at once is not missed.
+    const done =
+      rule.kind === "done_topic" && expected?.ok
+        ? this.done.wait(rule.topic, rule.messageType, expected.match, deadline)
+        : null;
+    const socket = this.socket;
+    this.topic(ros, outgoing.topic, outgoing.messageType).publish(outgoing.message);
+    if (!socket || !(await socket.delivered())) {
+      done?.cancel();
+      return {
+        status: "failed",
+        reason: `the robot link was lost before the robot took the action in: ${this.lostReason()}`,
+      };
+    }
+    const detail = (confirmation: Confirmation) => ({ topic: outgoing.topic, confirmation });
+    if (done && rule.kind === "done_topic") {
+      const answer = await done.answer;
+      if (answer === "timeout") return { status: "timed_out", afterMs: Date.now() - started };
+      if (answer === "lost")
         return {
           status: "failed",
-          reason: `the robot link was lost before the robot took the action in: ${this.lostReason()}`,
+          reason: `the robot link was lost before the robot said it was done: ${this.lostReason()}`,
         };
-      return { status: "completed", detail: { topic: outgoing.topic } };
+      const robotTime = robotTimeOf(answer.message);
+      return {
+        status: "completed",
+        detail: detail({ by: "done_topic", confirmed: true, source: rule.topic, ...(robotTime ? { robotTime } : {}) }),
+      };
     }
-    return this.call(ros, outgoing.service, outgoing.serviceType, outgoing.args, started + timeoutMs);
+    if (rule.kind === "estimated_duration") {
+      const ms = estimatedMs(rule, parameters);
+      if (started + ms > deadline)
+        return this.after(deadline - started, { status: "timed_out", afterMs: deadline - started });
+      return this.after(ms, { status: "completed", detail: detail({ by: "estimated_duration", confirmed: false }) });
+    }
+    return { status: "completed", detail: detail({ by: "delivered", confirmed: false }) };
+  }
+
+  /** An outcome told after a pause, unless the transport is closed first. */
+  private after(ms: number, outcome: DispatchOutcome): Promise<DispatchOutcome> {
+    return new Promise((resolve) => {
+      const timer = setTimeout(() => {
+        this.timers.delete(timer);
+        resolve(outcome);
+      }, ms);
+      this.timers.add(timer);
+    });
   }
 
   /** A message of our own (not a plugin action's) on a topic, if connected now: false if not. */
@@ -118,6 +190,7 @@ export class RosbridgeTransport extends LinkedTransport {
     this.setState("closed");
     this.timers.forEach(clearTimeout);
     this.socket?.terminate("the connection was closed");
+    this.done.lose();
     this.ros = null;
     this.socket = null;
     this.waiting.forEach((wake) => wake());
@@ -134,6 +207,7 @@ export class RosbridgeTransport extends LinkedTransport {
       this.ros = null;
       this.socket = null;
       this.setState("disconnected", reason);
+      this.done.lose();
       this.reconnectLater();
     };
     const ros = new ROSLIB.Ros({
@@ -211,7 +285,14 @@ export class RosbridgeTransport extends LinkedTransport {
       });
       new ROSLIB.Service({ ros, name, serviceType }).callService(
         args,
-        (values) => done({ status: "completed", detail: { response: values as Record<string, unknown> } }),
+        (values) =>
+          done({
+            status: "completed",
+            detail: {
+              response: values as Record<string, unknown>,
+              confirmation: { by: "service_response", confirmed: true, source: name } satisfies Confirmation,
+            },
+          }),
         (error) => done({ status: "failed", reason: String(error) }),
       );
     });
