@@ -144,7 +144,11 @@ export function jointStates({
   };
 }
 
-/** sensor_msgs/msg/BatteryState on /battery, draining 0.01 % per message. */
+/**
+ * sensor_msgs/msg/BatteryState on /battery, every field, draining 0.01 % per
+ * message. What a NAO's battery does not measure is NaN, as the message's
+ * definition asks (temperature, design capacity, cells).
+ */
 export function battery({ hz = 1 } = {}): RobotNode {
   return (graph, state) => {
     graph.declare("/battery", "sensor_msgs/msg/BatteryState", ROBOT);
@@ -154,12 +158,20 @@ export function battery({ hz = 1 } = {}): RobotNode {
       graph.publish("/battery", {
         header: { stamp: stamp(), frame_id: "" },
         voltage: 21.6 + percentage * 4,
+        temperature: Number.NaN,
         current: -1.2,
         charge: percentage * 2.25,
         capacity: 2.25,
+        design_capacity: Number.NaN,
         percentage,
-        power_supply_status: 2,
+        power_supply_status: 2, // discharging
+        power_supply_health: 1, // good
+        power_supply_technology: 2, // Li-ion
         present: true,
+        cell_voltage: [],
+        cell_temperature: [],
+        location: "body",
+        serial_number: "",
       });
     }, 1000 / hz);
     return () => clearInterval(timer);

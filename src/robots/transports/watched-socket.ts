@@ -12,6 +12,7 @@
 // may be lost, and the action is failed rather than called completed.
 import { AbstractTransport } from "roslib";
 import { WebSocket } from "ws";
+import { parsePythonJson } from "../../core/robots/python-json";
 
 export interface Liveness {
   /** How often a ping goes out, in ms. */
@@ -46,7 +47,9 @@ export class WatchedSocket extends AbstractTransport {
       this.timer = setInterval(() => this.beat(), liveness.everyMs);
     });
     this.socket.on("pong", () => this.answered());
-    this.socket.on("message", (data, isBinary) => this.handleRawMessage(isBinary ? data : data.toString()));
+    this.socket.on("message", (data, isBinary) =>
+      this.handleRawMessage(isBinary ? data : this.parsed(data.toString())),
+    );
     this.socket.on("close", (code) => {
       this.lose(`the robot's bridge closed the connection (code ${code})`);
       this.emit("close", code);
@@ -55,6 +58,15 @@ export class WatchedSocket extends AbstractTransport {
       this.emit("error", error);
       this.lose(`the robot's bridge cannot be reached: ${error.message}`);
     });
+  }
+
+  /** rosbridge writes NaN and Infinity as Python does; roslib's JSON.parse would drop the whole message. */
+  private parsed(text: string): unknown {
+    try {
+      return parsePythonJson(text);
+    } catch {
+      return text; // roslib reports what does not parse
+    }
   }
 
   send(message: unknown) {
