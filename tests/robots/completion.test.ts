@@ -41,6 +41,14 @@ describe("completion confirmed by the robot", () => {
     expect(sim.state).toMatchObject({ speaking: null, lastSaid: text });
   });
 
+  it("a say longer than the action's timeout is given its speaking time (the rule's msPerChar), not timed out", async () => {
+    const { sim, transport } = await setUp(20);
+    const text = "x".repeat(60); // 1.2 s of speech at 20 ms a character; the rule allows 100 ms a character more
+    const outcome = await transport.dispatch({ ...action("say_text"), timeout: 500 }, { text });
+    expect(outcome).toMatchObject({ status: "completed", detail: { confirmation: { by: "done_topic" } } });
+    expect(sim.state.lastSaid).toBe(text);
+  });
+
   it("two says at once are each completed by their own done message", async () => {
     const { transport } = await setUp();
     let longDone = false;

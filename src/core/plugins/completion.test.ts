@@ -69,7 +69,7 @@ describe("estimated durations and the robot's time", () => {
     [{ msPerChar: 60, perCharOf: "text" }, { text: "Hello" }, 300],
     [{ ms: 100, msPerChar: 10, perCharOf: "text" }, { text: "赤い石" }, 130],
   ])("%j with %j lasts %i ms", (rule, parameters, ms) => {
-    expect(estimatedMs({ kind: "estimated_duration", ...rule }, parameters)).toBe(ms);
+    expect(estimatedMs(rule, parameters)).toBe(ms);
   });
 
   it.each([

@@ -5,7 +5,7 @@
 // estimated duration, or only the bridge having taken the message in, does
 // not, and the log and the analysis say so.
 import { fillTemplate } from "./template";
-import type { Completion, DoneMatch, JsonValue, PluginAction } from "./types";
+import type { Completion, DoneMatch, Expected, JsonValue, PluginAction } from "./types";
 
 export type Rule = Completion | { kind: "command_exit" } | { kind: "delivered" };
 
@@ -73,11 +73,8 @@ export function matchesDone(match: DoneMatch | undefined, message: unknown): boo
   return true;
 }
 
-/** An estimated duration: fixed, plus so many ms per character of a text parameter. */
-export function estimatedMs(
-  rule: Extract<Completion, { kind: "estimated_duration" }>,
-  parameters: Record<string, unknown>,
-) {
+/** How long the action is expected to take: fixed, plus so many ms per character of a text parameter. */
+export function estimatedMs(rule: Expected, parameters: Record<string, unknown>) {
   const text = rule.perCharOf === undefined ? "" : String(parameters[rule.perCharOf] ?? "");
   return (rule.ms ?? 0) + (rule.msPerChar ?? 0) * [...text].length;
 }

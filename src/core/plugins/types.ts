@@ -53,13 +53,24 @@ export interface DoneMatch {
 
 /** How an action is known to be done, as a plugin declares it. */
 export type Completion =
-  | { kind: "done_topic"; topic: string; messageType: string; match?: DoneMatch }
+  | ({ kind: "done_topic"; topic: string; messageType: string; match?: DoneMatch } & Expected)
   | { kind: "service_response" }
   | { kind: "http_response" }
   /** A ROS 2 action goal's result: fulfilled by the transport that sends action goals. */
   | { kind: "action_result" }
   /** The last resort: not confirmed by the robot, and marked so. */
-  | { kind: "estimated_duration"; ms?: number; msPerChar?: number; perCharOf?: string };
+  | ({ kind: "estimated_duration" } & Expected);
+
+/**
+ * How long the action takes on the robot: `ms`, plus `msPerChar` per character
+ * of the parameter `perCharOf` (a say's text). For a done topic it is added
+ * to the action's timeout, so a long say is not timed out while it is spoken.
+ */
+export interface Expected {
+  ms?: number;
+  msPerChar?: number;
+  perCharOf?: string;
+}
 
 export interface HttpDispatch {
   method: "GET" | "POST" | "PUT" | "PATCH" | "DELETE";

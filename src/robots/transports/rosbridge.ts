@@ -118,7 +118,7 @@ export class RosbridgeTransport extends LinkedTransport {
     // Waiting starts before the send, so an answer that comes at once is not missed.
     const done =
       rule.kind === "done_topic" && expected?.ok
-        ? this.done.wait(rule.topic, rule.messageType, expected.match, deadline)
+        ? this.done.wait(rule.topic, rule.messageType, expected.match, deadline + estimatedMs(rule, parameters))
         : null;
     const socket = this.socket;
     this.topic(ros, outgoing.topic, outgoing.messageType).publish(outgoing.message);
