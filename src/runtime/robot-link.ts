@@ -40,13 +40,22 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
   };
   return {
     perform: (request, report) => void perform(request, report),
+    // Every halting action at once, not one after another: speech and animation stop with the wheels.
     halt() {
-      const stop = resolveAction(plugin, "stop", {});
-      if (stop.status === "supported") void transport.dispatch(stop.action, stop.parameters);
+      const halting = plugin.halt?.length
+        ? plugin.halt.map((id) => resolveAction(plugin, `${plugin.robotId}.${id}`, {}))
+        : [resolveAction(plugin, "stop", {})];
+      for (const stop of halting)
+        if (stop.status === "supported") void transport.dispatch(stop.action, stop.parameters);
     },
     connected: () => transport.health().state === "connected",
     onConnection(listener) {
-      transport.onHealth((h) => listener(h.state === "connected", h.state));
+      transport.onHealth((h) => {
+        // The robot's own errors and the reason for a loss go to the runtime's log as well as to the wizard.
+        const said = h.problem ?? (h.state === "connected" ? undefined : h.reason);
+        if (said) console.warn(`${plugin.name}: ${said}`);
+        listener(h.state === "connected", said ?? (h.state === "connected" ? undefined : h.state));
+      });
     },
     watchState(listener) {
       const stops = (plugin.stateTopics ?? []).map((t) =>

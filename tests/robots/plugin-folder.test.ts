@@ -25,7 +25,9 @@ describe("first-party plugins", () => {
       if (key === "actions") continue;
       expect(ours[key], key).toEqual(value);
     }
-    expect(ours.actions.slice(0, original.actions.length)).toEqual(original.actions);
+    // An action's own additions (how it is known to be done) are ours; all else is the fixture's.
+    const withoutOurs = ({ completion: _, ...action }: Record<string, unknown>) => action;
+    expect(ours.actions.slice(0, original.actions.length).map(withoutOurs)).toEqual(original.actions);
   });
 });
 

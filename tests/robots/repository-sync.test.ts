@@ -96,7 +96,16 @@ describe("pluginChanges", () => {
         change: "updated",
         fromVersion: "3.0.0",
         toVersion: "3.1.0",
-        actions: { added: ["look_down", "play_animation"], removed: [], changed: [] },
+        actions: {
+          added: ["look_down", "play_animation", "stop_speech", "stop_animation"],
+          removed: [],
+          // Ours declare how speech and animations are known to be done.
+          changed: [
+            "say_text",
+            "say_with_emotion",
+            ...["bow", "hey", "show_floor", "enthusiastic", "yes", "no", "idontknow"].map((a) => `play_animation_${a}`),
+          ],
+        },
       },
       {
         robotId: "pepper-ros2",

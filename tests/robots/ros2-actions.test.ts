@@ -42,7 +42,11 @@ describe("a ROS 2 action goal: navigate_to_pose", () => {
     const outcome = await transport.dispatch(action("move_to_pose"), { x: 0.3, y: -0.4, theta: Math.PI / 2 });
     expect(outcome).toMatchObject({
       status: "completed",
-      detail: { action: "/navigate_to_pose", result: { error_code: 0, error_msg: "" } },
+      detail: {
+        action: "/navigate_to_pose",
+        result: { error_code: 0, error_msg: "" },
+        confirmation: { by: "action_result", confirmed: true, source: "/navigate_to_pose" },
+      },
     });
     expect((outcome as unknown as { detail: { feedback: number } }).detail.feedback).toBeGreaterThan(0);
     const [goal] = sent(sim, "send_action_goal");
@@ -166,7 +170,10 @@ describe("named transforms reach the robot as HRIStudio's file means them", () =
   it("transformToRotation: a turn at the fraction of the Waffle's 1.82 rad/s, then a stop once the angle is covered", async () => {
     const { sim, transport } = await setUp();
     const outcome = await transport.dispatch(action("rotate_in_place"), { angle: -0.91, speed: 1 });
-    expect(outcome).toEqual({ status: "completed", detail: { topic: "/cmd_vel", turnedForMs: 500 } });
+    expect(outcome).toEqual({
+      status: "completed",
+      detail: { topic: "/cmd_vel", turnedForMs: 500, confirmation: { by: "delivered", confirmed: false } },
+    });
     await expect
       .poll(() =>
         sent(sim, "publish")

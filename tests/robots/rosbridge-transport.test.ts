@@ -83,7 +83,11 @@ describe("every action of the fixture NAO6 plugin through roslib", () => {
       const { sim, transport } = await setUp();
       const ros2 = action.ros2 as { topic: string; messageType: string };
       const outcome = await transport.dispatch(action, parametersFor[action.id] ?? {});
-      expect(outcome).toEqual({ status: "completed", detail: { topic: ros2.topic } });
+      // The fixture declares no completion rules: taken in by the bridge, not confirmed done by the robot.
+      expect(outcome).toEqual({
+        status: "completed",
+        detail: { topic: ros2.topic, confirmation: { by: "delivered", confirmed: false } },
+      });
       await until(() => lastPublish(sim, ros2.topic).count === 1);
       const received = lastPublish(sim, ros2.topic);
       expect(received.type).toBe(ros2.messageType);
@@ -137,7 +141,10 @@ describe("service calls", () => {
     const { transport } = await setUp();
     expect(await transport.dispatch(service("/set_led", 2000, { data: "{{on}}" }), { on: true })).toEqual({
       status: "completed",
-      detail: { response: { success: true, message: "led=True" } },
+      detail: {
+        response: { success: true, message: "led=True" },
+        confirmation: { by: "service_response", confirmed: true, source: "/set_led" },
+      },
     });
   });
 
@@ -186,17 +193,41 @@ describe("connection health", () => {
     });
     const pending = transport.dispatch(stop, {});
     setTimeout(() => sim.faults.refuseConnections(false), 300);
-    expect(await pending).toEqual({ status: "completed", detail: { topic: "/cmd_vel" } });
+    expect(await pending).toEqual({
+      status: "completed",
+      detail: { topic: "/cmd_vel", confirmation: { by: "delivered", confirmed: false } },
+    });
   });
 
-  it("the heartbeat notices a connection that has gone silent, and reconnects", async () => {
+  it("the heartbeat notices a bridge that has stopped answering, and reconnects once it answers again", async () => {
     const { sim, transport } = await setUp({ heartbeatEveryMs: 100, heartbeatTimeoutMs: 150 });
     await until(() => transport.health().lastHeartbeatMs !== null);
     const states: Health["state"][] = [];
     transport.onHealth((h) => states.push(h.state));
-    sim.faults.delayReplies(1000);
+    sim.faults.freeze(true);
     await until(() => states.includes("disconnected"), 2000);
-    sim.faults.delayReplies(0);
+    expect(transport.health().reason).toMatch(/stopped answering/);
+    sim.faults.freeze(false);
     await until(() => transport.health().state === "connected");
+  });
+
+  it("the heartbeat is WebSocket ping/pong: it sends the bridge no op, so nothing reaches the bridge's log", async () => {
+    const { sim, transport } = await setUp({ heartbeatEveryMs: 50 });
+    await until(() => transport.health().lastHeartbeatMs !== null);
+    await new Promise((r) => setTimeout(r, 300));
+    expect(sim.received.filter((r) => r.message.op === "call_service")).toEqual([]);
+    expect(sim.log).toEqual([]);
+  });
+
+  it("tells the trial an error the bridge reports in a status frame, without dropping the link", async () => {
+    const { sim, transport } = await setUp();
+    const problems: string[] = [];
+    transport.onHealth((h) => h.problem && problems.push(h.problem));
+    sim.faults.reportStatus("error", "Unable to load the manifest for package nao_msgs");
+    await until(() => problems.length > 0);
+    expect(problems).toEqual([
+      "the robot's bridge reported an error: Unable to load the manifest for package nao_msgs",
+    ]);
+    expect(transport.health().state).toBe("connected");
   });
 });

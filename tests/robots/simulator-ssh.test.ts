@@ -50,7 +50,10 @@ describe.sequential("the simulated NAO6 over SSH", () => {
     const ids = nao.actions.filter(isSshCommand).map((a) => a.id);
     expect(ids).toEqual(Object.keys(postures));
     for (const id of ids) {
-      expect(await ssh.dispatch(action(id), {})).toEqual({ status: "completed", detail: { exitCode: 0 } });
+      expect(await ssh.dispatch(action(id), {})).toEqual({
+        status: "completed",
+        detail: { exitCode: 0, confirmation: { by: "command_exit", confirmed: true } },
+      });
       expect(sim.state).toMatchObject(postures[id]!);
       await shown(postures[id]!);
     }

@@ -5,6 +5,7 @@ import { afterEach, describe, expect, it } from "vitest";
 import { WebSocket } from "ws";
 import { loadPlugin, type Plugin } from "../../src/core/plugins";
 import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
+import { parsePythonJson } from "../../src/core/robots/python-json";
 
 const nao6 = (() => {
   const loaded = loadPlugin("nao6-ros2.json", readFileSync("plugins/nao6-ros2.json", "utf8"));
@@ -21,7 +22,8 @@ afterEach(async () => {
 async function client(url: string) {
   const frames: Array<Record<string, any>> = [];
   const socket = new WebSocket(url);
-  socket.on("message", (data) => frames.push(JSON.parse(data.toString())));
+  // As rosbridge's Python writes it: the battery's unmeasured fields are NaN literals.
+  socket.on("message", (data) => frames.push(parsePythonJson(data.toString()) as Record<string, any>));
   await new Promise((resolve, reject) => socket.once("open", resolve).once("error", reject));
   const send = (frame: unknown) => socket.send(JSON.stringify(frame));
   const until = async (check: () => boolean, ms = 3000) => {

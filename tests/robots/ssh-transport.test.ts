@@ -44,7 +44,10 @@ describe.sequential("the SSH transport", () => {
   it("runs every SSH action of the NAO6 plugin as its exact qicli command", async () => {
     expect(sshActions.map((a) => a.id)).toEqual(["wake_up", "rest", "stand", "stand_init", "sit", "crouch"]);
     for (const action of sshActions)
-      expect(await transport.dispatch(action, {})).toEqual({ status: "completed", detail: { exitCode: 0 } });
+      expect(await transport.dispatch(action, {})).toEqual({
+        status: "completed",
+        detail: { exitCode: 0, confirmation: { by: "command_exit", confirmed: true } },
+      });
     const expected = sshActions.map((a) =>
       (a.ros2 as { payloadMapping: { sshCommand: string } }).payloadMapping.sshCommand.split(" ").slice(1),
     );

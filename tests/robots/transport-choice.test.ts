@@ -19,7 +19,7 @@ describe("choosing a transport from the plugin", () => {
     const gesture = simulated.actions.find((a) => a.id === "gesture")!;
     expect(await choice.transport.dispatch(gesture, { name: "wave" })).toEqual({
       status: "completed",
-      detail: { topic: "/gesture" },
+      detail: { topic: "/gesture", confirmation: { by: "delivered", confirmed: false } },
     });
     await choice.transport.close();
   });

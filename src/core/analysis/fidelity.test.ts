@@ -112,6 +112,22 @@ describe("the fidelity report", () => {
     });
     expect(r.completed).toBe(true);
   });
+
+  it.each<[string, Record<string, unknown> | undefined, "robot" | "unconfirmed" | null]>([
+    ["a done message from the robot", { confirmation: { by: "done_topic", confirmed: true } }, "robot"],
+    ["a service response", { confirmation: { by: "service_response", confirmed: true } }, "robot"],
+    ["an estimated duration", { confirmation: { by: "estimated_duration", confirmed: false } }, "unconfirmed"],
+    ["only delivered to the bridge", { confirmation: { by: "delivered", confirmed: false } }, "unconfirmed"],
+    ["a log that does not say", undefined, null],
+  ])("marks a completion confirmed by %s as %s", (_, detail, confirmation) => {
+    const commands: Command[] = [
+      { kind: "start" },
+      { kind: "next" },
+      { kind: "dispatched", actionId: "hello" },
+      { kind: "completed", actionId: "hello", ...(detail ? { detail } : {}) },
+    ];
+    expect(report(commands).actions.find((a) => a.actionId === "hello")?.confirmation).toBe(confirmation);
+  });
 });
 
 describe("the fidelity report of answers that rejoin", () => {

@@ -19,6 +19,12 @@ export interface PlannedAction {
   durationMs: number | null;
   /** requested → dispatched: how long the platform took to reach the robot. */
   dispatchLatencyMs: number | null;
+  /**
+   * Whether the robot itself said the action was done ("robot"), or its
+   * completion was only an estimate or a delivery ("unconfirmed"); null when
+   * the log does not say (not completed, not a robot action, or an older log).
+   */
+  confirmation: "robot" | "unconfirmed" | null;
 }
 
 export interface StepTiming {
@@ -131,6 +137,7 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
           requested && dispatched && !(CONTROL_TYPES as readonly string[]).includes(a.type)
             ? at(dispatched)! - at(requested)!
             : null,
+        confirmation: confirmationOf(first("action.completed", a.id)),
       };
     }),
   );
@@ -172,4 +179,12 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
     executionFidelity: inReached.length ? Math.round((faithful / inReached.length) * 1000) / 10 : 0,
     completed: log.some((e) => e.type === "trial.completed"),
   };
+}
+
+/** What confirmed a completion, as the robot link wrote it into the event's detail. */
+function confirmationOf(completed?: E): PlannedAction["confirmation"] {
+  const detail = completed && "detail" in completed ? completed.detail : undefined;
+  const confirmation = detail?.confirmation as { confirmed?: unknown } | undefined;
+  if (!confirmation || typeof confirmation !== "object") return null;
+  return confirmation.confirmed === true ? "robot" : "unconfirmed";
 }

@@ -33,6 +33,14 @@ export function checkPlugin(file: string, plugin: Plugin, broken: Broken = () =>
     checkAction(action, pointer("actions", i), add);
   });
   checkAbstract(plugin, add, broken);
+  (plugin.halt ?? []).forEach((id, i) => {
+    if (!seen.has(id))
+      add(
+        pointer("halt", i),
+        "bad_binding",
+        `an emergency stop would send "${id}", which is not an action of this plugin`,
+      );
+  });
   return errors;
 }
 

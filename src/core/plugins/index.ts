@@ -26,3 +26,13 @@ export { shellCommand, shellWords, quoteWord, type ShellCommand, type ShellWords
 export { httpRequest, type HttpRequest } from "./http";
 export { pluginChanges, type PluginChange } from "./changes";
 export { effectiveTrust, chooseProviders, shadowing, FIRST_PARTY, type ProvidedPlugin } from "./identity";
+export {
+  completionOf,
+  expectedDone,
+  matchesDone,
+  estimatedMs,
+  robotTimeOf,
+  isConfirmation,
+  type Confirmation,
+  type Rule,
+} from "./completion";

@@ -26,6 +26,7 @@ const PLUGIN: Fields<Plugin> = {
   unsupported: true,
   stateTopics: true,
   camera: true,
+  halt: true,
 };
 const ACTION: Fields<PluginAction> = {
   id: true,
@@ -38,6 +39,7 @@ const ACTION: Fields<PluginAction> = {
   parameterSchema: true,
   ros2: true,
   http: true,
+  completion: true,
 };
 const PARAMETERS: Fields<ParameterSchema> = {
   type: true,

@@ -46,6 +46,36 @@ export interface PluginAction {
   ros2?: Ros2Dispatch;
   /** Our extension: a request to the robot's REST API. */
   http?: HttpDispatch;
+  /** Our extension: how the action is known to be done (completion.ts gives the default when absent). */
+  completion?: Completion;
+}
+
+/** Which message on a done topic is this action's: the field at a dotted path, compared after {{param}} filling. */
+export interface DoneMatch {
+  field: string;
+  equals?: JsonValue;
+  startsWith?: string;
+}
+
+/** How an action is known to be done, as a plugin declares it. */
+export type Completion =
+  | ({ kind: "done_topic"; topic: string; messageType: string; match?: DoneMatch } & Expected)
+  | { kind: "service_response" }
+  | { kind: "http_response" }
+  /** A ROS 2 action goal's result: fulfilled by the transport that sends action goals. */
+  | { kind: "action_result" }
+  /** The last resort: not confirmed by the robot, and marked so. */
+  | ({ kind: "estimated_duration" } & Expected);
+
+/**
+ * How long the action takes on the robot: `ms`, plus `msPerChar` per character
+ * of the parameter `perCharOf` (a say's text). For a done topic it is added
+ * to the action's timeout, so a long say is not timed out while it is spoken.
+ */
+export interface Expected {
+  ms?: number;
+  msPerChar?: number;
+  perCharOf?: string;
 }
 
 export interface HttpDispatch {
@@ -78,6 +108,8 @@ export interface Plugin {
   actions: PluginAction[];
   abstract?: Record<string, AbstractBinding | AbstractBinding[]>;
   unsupported?: Array<{ action: string; reason: string }>;
+  /** Our extension: the actions an emergency stop or abort sends, in order (e.g. stop walking, stop speech, stop animation). */
+  halt?: string[];
   /** Robot state the runtime logs as trial samples during a trial. */
   stateTopics?: Array<{ topic: string; messageType: string; throttleRate?: number }>;
   /** The robot's own camera (sensor_msgs/CompressedImage): the wizard and observers see it live; never logged. */

@@ -140,7 +140,16 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
                   {a.outOfOrder && <Badge tone="amber">out of order</Badge>}
                 </Td>
                 <Td>{seconds(a.requestedMs)}</Td>
-                <Td>{seconds(a.durationMs)}</Td>
+                <Td>
+                  {seconds(a.durationMs)}
+                  {/* The robot did not say when it was done: the time is an estimate or a delivery, not its own. */}
+                  {a.confirmation === "unconfirmed" && (
+                    <>
+                      {" "}
+                      <Badge tone="amber">unconfirmed</Badge>
+                    </>
+                  )}
+                </Td>
                 <Td>{a.dispatchLatencyMs === null ? "—" : `${a.dispatchLatencyMs.toFixed(0)} ms`}</Td>
               </tr>
             ))}

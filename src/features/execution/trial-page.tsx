@@ -96,10 +96,11 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           ))}
         <span className="ml-auto flex items-center gap-4">
           {live.robot && (
-            <Badge tone={live.robot.connected ? "green" : "red"}>
+            // A connected robot's detail is an error its side reported (e.g. a refused subscription): shown, not hidden.
+            <Badge tone={live.robot.connected ? (live.robot.detail ? "amber" : "green") : "red"}>
               <span data-testid="robot-status">
                 {live.robot.connected
-                  ? "robot connected"
+                  ? `robot connected${live.robot.detail ? ` (${live.robot.detail})` : ""}`
                   : `robot disconnected${live.robot.detail ? ` (${live.robot.detail})` : ""}`}
               </span>
             </Badge>

@@ -8,10 +8,10 @@
 import { ActionGoals } from "./action-goals";
 import { ServiceCalls } from "./service-calls";
 import type { RosGraph } from "./graph";
-import { populate } from "./ros-types";
+import { messageJson, populate } from "./ros-types";
 import { IncomingStream } from "./stream";
 import { Subscription } from "./subscription";
-import { encode, fragments } from "./wire";
+import { encode, encodePublish, fragments } from "./wire";
 
 export interface ConnectionHooks {
   send(text: string): void;
@@ -127,7 +127,9 @@ export class Connection {
       }
       let entry = this.subscriptions.get(topic);
       if (!entry) {
-        const subscription = new Subscription((msg) => this.send({ op: "publish", topic, msg }));
+        const subscription = new Subscription((msg) =>
+          this.send({ op: "publish", topic, msg }, encodePublish(topic, messageJson(this.graph.typeOf(topic), msg))),
+        );
         entry = { subscription, stop: this.graph.listen(topic, (msg) => subscription.deliver(msg)) };
         this.subscriptions.set(topic, entry);
       }
@@ -161,11 +163,10 @@ export class Connection {
     this.receive([...entry.parts.values()].join(""));
   }
 
-  private send(message: Message) {
+  private send(message: Message, text = encode(message)) {
     const size = this.fragmentSize;
     if (size !== null && !Number.isInteger(size))
       return this.hooks.log(`cannot send: fragment_size ${JSON.stringify(size)} is not an integer`);
-    const text = encode(message);
     const frames = size === null ? [text] : fragments(text, size as number, message.id);
     for (const frame of frames) this.hooks.send(frame);
   }

@@ -1,6 +1,7 @@
 // The built-in simulated robot: a rosbridge v2 server so every path runs without hardware.
 import type { Plugin } from "../../core/plugins";
 import {
+  animation,
   audio,
   battery,
   jointStates,
@@ -24,15 +25,16 @@ const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 const drives = (plugin: Plugin) =>
   plugin.actions.some((a) => a.ros2 && (("topic" in a.ros2 && a.ros2.topic === "/cmd_vel") || "action" in a.ros2));
 
-/** The default robot: the topics of a plugin (NAO6's by default), speech, sound files, joint states, battery and its camera; odometry and navigation for a robot that drives. */
+/** The default robot: the topics of a plugin (NAO6's by default), speech, animations, sound files, joint states, battery and its camera; odometry and navigation for a robot that drives. */
 export function simulatedRobot(
   plugin: Plugin,
-  { msPerChar = 60, jointStatesHz = 10, batteryHz = 1 } = {},
+  { msPerChar = 60, jointStatesHz = 10, batteryHz = 1, animationMs = 1500 } = {},
 ): RobotNode[] {
   return [
     ...(drives(plugin) ? [odometry(), navigation()] : []),
     pluginTopics(plugin),
     speech({ msPerChar }),
+    animation({ durationMs: animationMs }),
     audio(),
     jointStates({
       hz: jointStatesHz,

@@ -11,13 +11,26 @@ const ROBOT = "robot";
 /**
  * Speech: a std_msgs/String on /speech is "spoken" for msPerChar per
  * character, then "said: <text>" is published on /speech_done (the shape the
- * recorded test node used, so one client works against both).
+ * recorded test node used, so one client works against both): the plugins'
+ * completion rule for a say. Anything on /speech_stop silences it at once,
+ * and what was cut off is never reported said.
  */
-export function speech({ msPerChar = 60, topic = "/speech", doneTopic = "/speech_done" } = {}): RobotNode {
+export function speech({
+  msPerChar = 60,
+  topic = "/speech",
+  doneTopic = "/speech_done",
+  stopTopic = "/speech_stop",
+} = {}): RobotNode {
   return (graph, state) => {
     graph.declare(topic, "std_msgs/msg/String", ROBOT);
     graph.declare(doneTopic, "std_msgs/msg/String", ROBOT);
+    graph.declare(stopTopic, "std_msgs/msg/Empty", ROBOT);
     const timers = new Set<NodeJS.Timeout>();
+    const silence = graph.listen(stopTopic, () => {
+      timers.forEach(clearTimeout);
+      timers.clear();
+      state.speaking = null;
+    });
     const stop = graph.listen(topic, (message) => {
       const text = String(message.data);
       state.speaking = text;
@@ -31,6 +44,43 @@ export function speech({ msPerChar = 60, topic = "/speech", doneTopic = "/speech
     });
     return () => {
       stop();
+      silence();
+      timers.forEach(clearTimeout);
+    };
+  };
+}
+
+/**
+ * Animations: a std_msgs/String on /animation (its name) runs for
+ * `durationMs`, then "done: <name>" is published on /animation_done (the
+ * plugins' completion rule for an animation). Anything on /animation_stop
+ * ends it at once, never reported done.
+ */
+export function animation({ durationMs = 1500 } = {}): RobotNode {
+  return (graph, state) => {
+    graph.declare("/animation", "std_msgs/msg/String", ROBOT);
+    graph.declare("/animation_done", "std_msgs/msg/String", ROBOT);
+    graph.declare("/animation_stop", "std_msgs/msg/Empty", ROBOT);
+    const timers = new Set<NodeJS.Timeout>();
+    const stops = [
+      graph.listen("/animation", (m) => {
+        const name = String(m.data);
+        state.animation = name;
+        const timer = setTimeout(() => {
+          timers.delete(timer);
+          if (state.animation === name) state.animation = null;
+          graph.publish("/animation_done", { data: `done: ${name}` });
+        }, durationMs);
+        timers.add(timer);
+      }),
+      graph.listen("/animation_stop", () => {
+        timers.forEach(clearTimeout);
+        timers.clear();
+        state.animation = null;
+      }),
+    ];
+    return () => {
+      stops.forEach((stop) => stop());
       timers.forEach(clearTimeout);
     };
   };
@@ -94,7 +144,11 @@ export function jointStates({
   };
 }
 
-/** sensor_msgs/msg/BatteryState on /battery, draining 0.01 % per message. */
+/**
+ * sensor_msgs/msg/BatteryState on /battery, every field, draining 0.01 % per
+ * message. What a NAO's battery does not measure is NaN, as the message's
+ * definition asks (temperature, design capacity, cells).
+ */
 export function battery({ hz = 1 } = {}): RobotNode {
   return (graph, state) => {
     graph.declare("/battery", "sensor_msgs/msg/BatteryState", ROBOT);
@@ -104,12 +158,20 @@ export function battery({ hz = 1 } = {}): RobotNode {
       graph.publish("/battery", {
         header: { stamp: stamp(), frame_id: "" },
         voltage: 21.6 + percentage * 4,
+        temperature: Number.NaN,
         current: -1.2,
         charge: percentage * 2.25,
         capacity: 2.25,
+        design_capacity: Number.NaN,
         percentage,
-        power_supply_status: 2,
+        power_supply_status: 2, // discharging
+        power_supply_health: 1, // good
+        power_supply_technology: 2, // Li-ion
         present: true,
+        cell_voltage: [],
+        cell_temperature: [],
+        location: "body",
+        serial_number: "",
       });
     }, 1000 / hz);
     return () => clearInterval(timer);
@@ -145,7 +207,6 @@ export function pluginTopics(plugin: Plugin): RobotNode {
         graph.declare(ros2.topic, ros2.messageType, ROBOT);
     }
     const stops = [
-      graph.listen("/animation", (m) => void (state.animation = String(m.data))),
       graph.listen("/gesture", (m) => void (state.gesture = String(m.data))),
       graph.listen("/posture", (m) => {
         state.posture = String(m.data);

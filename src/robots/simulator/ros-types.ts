@@ -37,15 +37,24 @@ const MESSAGES: Record<string, Definition> = {
     velocity: "float64[]",
     effort: "float64[]",
   },
+  // Every field of ROS 2's sensor_msgs/msg/BatteryState, in its order.
   "sensor_msgs/BatteryState": {
     header: "std_msgs/Header",
     voltage: "float32",
+    temperature: "float32",
     current: "float32",
     charge: "float32",
     capacity: "float32",
+    design_capacity: "float32",
     percentage: "float32",
     power_supply_status: "uint8",
+    power_supply_health: "uint8",
+    power_supply_technology: "uint8",
     present: "bool",
+    cell_voltage: "float32[]",
+    cell_temperature: "float32[]",
+    location: "string",
+    serial_number: "string",
   },
   // data: uint8[], which rosbridge's JSON carries as one base64 string.
   "sensor_msgs/CompressedImage": { header: "std_msgs/Header", format: "string", data: "uint8[]" },
@@ -105,6 +114,38 @@ export function lookupType(name: unknown, kind: "msg" | "srv" | "action" = "msg"
 
 export class ConversionError extends Error {}
 
+const FLOATS = new Set(["float32", "float64"]);
+
+/**
+ * A message as rosbridge writes it: Python floats keep their ".0" (1.0, not
+ * 1, so a Python client reads a float back) and NaN and ±Infinity are the
+ * literals Python's and ujson's encoders write. Other values as JSON.
+ */
+export function messageJson(typeKey: string | undefined, value: unknown): string {
+  return typeKey && MESSAGES[typeKey] ? write(typeKey, value) : JSON.stringify(value);
+}
+
+function write(type: Field, value: unknown): string {
+  if (type.endsWith("[]") && Array.isArray(value))
+    return `[${value.map((v) => write(type.slice(0, -2), v)).join(",")}]`;
+  const definition = MESSAGES[type];
+  if (definition && value && typeof value === "object" && !Array.isArray(value)) {
+    const fields = Object.entries(value as Record<string, unknown>).map(
+      ([k, v]) => `${JSON.stringify(k)}:${definition[k] ? write(definition[k]!, v) : JSON.stringify(v)}`,
+    );
+    return `{${fields.join(",")}}`;
+  }
+  if (FLOATS.has(type) && typeof value === "number") return floatText(value);
+  return JSON.stringify(value);
+}
+
+function floatText(value: number): string {
+  if (Number.isNaN(value)) return "NaN";
+  if (!Number.isFinite(value)) return value > 0 ? "Infinity" : "-Infinity";
+  const text = String(value);
+  return /[.e]/.test(text) ? text : `${text}.0`;
+}
+
 /** JSON to a full message of the type, as rosbridge's populate_instance does. */
 export function populate(typeKey: string, value: unknown): Record<string, unknown> {
   return populateWith(MESSAGES[typeKey]!, typeKey, value);
@@ -162,7 +203,8 @@ function convert(type: Field, value: unknown, typeName: string, field: string): 
     if (typeof value !== "boolean") throw wrong();
     return value;
   }
-  if (typeof value !== "number" || !Number.isFinite(value)) throw wrong();
+  // NaN and ±Infinity are floats to Python: a float field takes them (BatteryState's unmeasured fields are NaN), an integer field does not.
+  if (typeof value !== "number" || (!Number.isFinite(value) && !FLOATS.has(type))) throw wrong();
   const range = INTEGER_RANGES[type];
   if (range && (!Number.isInteger(value) || value < range[0] || value > range[1])) throw wrong();
   return value;

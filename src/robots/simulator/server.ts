@@ -5,6 +5,7 @@
 import { WebSocketServer, type WebSocket } from "ws";
 import { Connection } from "./connection";
 import { RosGraph } from "./graph";
+import { encode } from "./wire";
 import { initialState, type RobotState } from "../../core/robots/robot-state";
 import type { RobotNode } from "./nodes";
 import { startSimulatedSsh, type SimulatedSsh, type SimulatedSshOptions } from "./ssh";
@@ -38,7 +39,15 @@ export interface Simulator {
   connections(): number;
   /** What the real server would only have written to its log. */
   log: Array<{ at: number; connection: string; text: string }>;
-  faults: { dropConnections(): void; refuseConnections(refuse: boolean): void; delayReplies(ms: number): void };
+  faults: {
+    dropConnections(): void;
+    refuseConnections(refuse: boolean): void;
+    delayReplies(ms: number): void;
+    /** Reads nothing from any socket (no frames, no pings answered) while on, as a stopped process would; sockets stay open. */
+    freeze(on: boolean): void;
+    /** A `status` frame to every client, as rosbridge's protocol describes (the recorded servers never send one: README G1). */
+    reportStatus(level: "error" | "warning" | "info", msg: string): void;
+  };
   close(): Promise<void>;
 }
 
@@ -50,6 +59,7 @@ export async function startSimulator(options: SimulatorOptions): Promise<Simulat
   const stops = options.nodes.map((node) => node(graph, state));
   let refuse = false;
   let delay = 0;
+  let frozen = false;
   let next = 0;
   const sockets = new Set<WebSocket>();
   const server = new WebSocketServer({
@@ -76,6 +86,11 @@ export async function startSimulator(options: SimulatorOptions): Promise<Simulat
       dropConnections: () => sockets.forEach((s) => s.terminate()),
       refuseConnections: (on) => void (refuse = on),
       delayReplies: (ms) => void (delay = ms),
+      freeze: (on) => {
+        frozen = on;
+        sockets.forEach((s) => (on ? s.pause() : s.resume()));
+      },
+      reportStatus: (level, msg) => sockets.forEach((s) => s.send(encode({ op: "status", level, msg }))),
     },
     close: async () => {
       stops.forEach((stop) => stop());
@@ -86,6 +101,7 @@ export async function startSimulator(options: SimulatorOptions): Promise<Simulat
   server.on("connection", (socket) => {
     const id = String(next++);
     sockets.add(socket);
+    if (frozen) socket.pause();
     const send = (text: string) => (delay ? setTimeout(() => socket.send(text), delay) : socket.send(text));
     const connection = new Connection(id, graph, {
       send,

@@ -5,6 +5,8 @@
 // split across frames is reassembled, two requests in a frame both run, a
 // truncated one is lost, and garbage around a request is ignored.
 
+import { parsePythonJson } from "../../core/robots/python-json";
+
 export class IncomingStream {
   private buffer = "";
 
@@ -13,7 +15,7 @@ export class IncomingStream {
     this.buffer += text;
     if (!this.buffer) return undefined;
     try {
-      const message: unknown = JSON.parse(this.buffer);
+      const message: unknown = parsePythonJson(this.buffer);
       this.buffer = "";
       return { message };
     } catch {
@@ -34,7 +36,7 @@ export class IncomingStream {
         if (end < start) continue;
         let candidate: unknown;
         try {
-          candidate = JSON.parse(text.slice(start, end + 1));
+          candidate = parsePythonJson(text.slice(start, end + 1));
         } catch {
           continue;
         }

@@ -5,10 +5,16 @@
 // size, with rosbridge's float "total" ((length - 1) / size + 1).
 
 export function encode(value: unknown): string {
-  return JSON.stringify(value).replace(/[/\u0080-\uffff]/g, (c) =>
-    c === "/" ? "\\/" : `\\u${c.charCodeAt(0).toString(16).padStart(4, "0")}`,
-  );
+  return escaped(JSON.stringify(value));
 }
+
+/** A publish frame whose message is already JSON text (typed: floats keep ".0", see messageJson). */
+export function encodePublish(topic: string, msgJson: string): string {
+  return escaped(`{"op":"publish","topic":${JSON.stringify(topic)},"msg":${msgJson}}`);
+}
+
+const escaped = (json: string) =>
+  json.replace(/[/\u0080-\uffff]/g, (c) => (c === "/" ? "\\/" : `\\u${c.charCodeAt(0).toString(16).padStart(4, "0")}`));
 
 export function fragments(text: string, size: number, id: unknown): string[] {
   if (text.length <= size) return [text];

@@ -51,7 +51,14 @@ export class HttpTransport extends LinkedTransport {
       const response = action.retryable ? await sendUntilReached() : await send();
       if (!response) return { status: "timed_out", afterMs: Date.now() - started };
       const text = (await response.text()).slice(0, 500);
-      if (response.ok) return { status: "completed", detail: { httpStatus: response.status } };
+      if (response.ok)
+        return {
+          status: "completed",
+          detail: {
+            httpStatus: response.status,
+            confirmation: { by: "http_response", confirmed: true, source: action.http.url },
+          },
+        };
       return { status: "failed", reason: `the robot answered HTTP ${response.status}${text ? `: ${text}` : ""}` };
     } catch (error) {
       if ((error as Error).name === "TimeoutError") return { status: "timed_out", afterMs: Date.now() - started };

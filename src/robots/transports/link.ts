@@ -78,9 +78,15 @@ export abstract class LinkedTransport implements Transport {
     return () => void this.listeners.delete(listener);
   }
 
-  protected setState(state: ConnectionState) {
+  protected setState(state: ConnectionState, reason?: string) {
     if (this.status.state === state || this.status.state === "closed") return;
-    this.status = { ...this.status, state, since: Date.now() };
+    this.status = { ...this.status, state, since: Date.now(), reason };
     this.listeners.forEach((listener) => listener(this.health()));
+  }
+
+  /** An error the robot's side reported: every listener hears it once, with the state unchanged. */
+  protected tell(problem: string) {
+    if (this.status.state === "closed") return;
+    this.listeners.forEach((listener) => listener({ ...this.health(), problem }));
   }
 }

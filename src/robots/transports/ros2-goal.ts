@@ -43,7 +43,18 @@ export function sendGoal(
     };
     const id = client.sendGoal(
       goal.goal,
-      (result) => done({ status: "completed", detail: { action: goal.action, result, feedback, lastFeedback } }),
+      (result) =>
+        done({
+          status: "completed",
+          detail: {
+            action: goal.action,
+            result,
+            feedback,
+            lastFeedback,
+            // The action server's own result: the robot says it is done.
+            confirmation: { by: "action_result", confirmed: true, source: goal.action },
+          },
+        }),
       (values) => {
         feedback++;
         lastFeedback = values;
@@ -67,7 +78,15 @@ export function holdThenStop(
     setTimeout(() => {
       resolve(
         publish(motion.stop)
-          ? { status: "completed", detail: { topic: motion.topic, turnedForMs: motion.stopAfterMs } }
+          ? {
+              status: "completed",
+              // Turned for the time asked and stopped: sent, not confirmed by the robot.
+              detail: {
+                topic: motion.topic,
+                turnedForMs: motion.stopAfterMs,
+                confirmation: { by: "delivered", confirmed: false },
+              },
+            }
           : { status: "failed", reason: `the robot was lost before the stop was sent on ${motion.topic}` },
       );
     }, motion.stopAfterMs);
@@ -89,7 +108,15 @@ export function readOnce(
   });
   return new Promise((resolve) => {
     const listener = (message: unknown) =>
-      finish({ status: "completed", detail: { topic: reading.topic, state: reading.read(message) } });
+      finish({
+        status: "completed",
+        // The robot's own message answered the reading.
+        detail: {
+          topic: reading.topic,
+          state: reading.read(message),
+          confirmation: { by: "done_topic", confirmed: true, source: reading.topic },
+        },
+      });
     const timer = setTimeout(
       () => finish({ status: "timed_out", afterMs: Date.now() - started }),
       Math.max(0, deadline - started),

@@ -1,14 +1,31 @@
 // The rosbridge v2 transport, through the real roslib client. rosbridge
-// acknowledges nothing and reports errors only in its own log, so:
-// - a topic publish is "completed" once written to a connected socket;
-// - a service call completes or fails on its service_response, or times out;
-// - liveness is a heartbeat: a call to a service nobody offers, which every
-//   rosbridge answers with result false. No answer in time means the socket
-//   is dead or mute (transcripts 05, 07), and we reconnect.
+// acknowledges nothing and reports most errors only in its own log, so:
+// - a topic publish is "completed" only once the bridge has read it (a
+//   WebSocket ping sent after it was answered: see watched-socket.ts);
+//   one whose answer never comes fails with the reason, never "completed";
+// - a service call completes or fails on its service_response, or times out,
+//   and fails at once if the link is lost while it waits;
+// - liveness is WebSocket ping/pong (every rosbridge answers it, nothing is
+//   logged): a bridge that stops answering is given up within
+//   heartbeatTimeoutMs + heartbeatEveryMs, its socket terminated;
+// - a `status` frame of level error or warning (servers that send them) is
+//   told to the trial as the robot's problem.
 // Server state belongs to one connection (transcript 09): after every
 // reconnect a fresh roslib.Ros is made and state subscriptions are re-sent.
 import * as ROSLIB from "roslib";
-import { outgoingFor, type JsonValue, type Plugin, type PluginAction } from "../../core/plugins";
+import {
+  completionOf,
+  estimatedMs,
+  expectedDone,
+  outgoingFor,
+  robotTimeOf,
+  type Confirmation,
+  type JsonValue,
+  type Outgoing,
+  type Plugin,
+  type PluginAction,
+} from "../../core/plugins";
+import { DoneTopics } from "./done-topics";
 import {
   backoffDelay,
   checkedParameters,
@@ -20,6 +37,7 @@ import {
 } from "./link";
 import { holdThenStop, readOnce, sendGoal } from "./ros2-goal";
 import type { DispatchOutcome } from "./transport";
+import { WatchedSocket } from "./watched-socket";
 
 export interface RosbridgeOptions {
   url: string;
@@ -30,8 +48,6 @@ export interface RosbridgeOptions {
   /** The robot's plugin, for what an action needs of the robot as a whole (its top turning speed). */
   plugin?: Pick<Plugin, "actions">;
 }
-
-const HEARTBEAT_SERVICE = "/hristudio/heartbeat";
 
 interface StateSubscription {
   topic: string;
@@ -47,7 +63,10 @@ export class RosbridgeTransport extends LinkedTransport {
   private topics = new Map<string, ROSLIB.Topic>();
   private readonly subscriptions = new Set<StateSubscription>();
   private timers = new Set<NodeJS.Timeout>();
-  private heartbeat: NodeJS.Timeout | null = null;
+  private socket: WatchedSocket | null = null;
+  private readonly done = new DoneTopics((topic, messageType, onMessage) =>
+    this.subscribe(topic, messageType, onMessage),
+  );
   private waiting = new Set<() => void>();
 
   constructor(private readonly options: RosbridgeOptions) {
@@ -78,15 +97,79 @@ export class RosbridgeTransport extends LinkedTransport {
           ? await this.connectedWithin(started + timeoutMs)
           : null;
     if (!ros) return unreached(action, started, "robot not connected");
-    if (outgoing.kind === "publish") {
-      this.topic(ros, outgoing.topic, outgoing.messageType).publish(outgoing.message);
-      return { status: "completed", detail: { topic: outgoing.topic } };
-    }
+    if (outgoing.kind === "publish")
+      return this.published(ros, action, checked.parameters, outgoing, started + timeoutMs);
     if (outgoing.kind === "goal") return sendGoal(ros, outgoing, started + timeoutMs);
     if (outgoing.kind === "read") return readOnce(ros, outgoing, started + timeoutMs);
     if (outgoing.kind === "motion")
       return holdThenStop((m) => this.publish(outgoing.topic, outgoing.messageType, m), outgoing);
     return this.call(ros, outgoing.service, outgoing.serviceType, outgoing.args, started + timeoutMs);
+  }
+
+  /** A topic publish, completed as its rule says: a matching done message, an estimated duration, or only delivered. */
+  private async published(
+    ros: ROSLIB.Ros,
+    action: PluginAction,
+    parameters: Record<string, unknown>,
+    outgoing: Extract<Outgoing, { kind: "publish" }>,
+    deadline: number,
+  ): Promise<DispatchOutcome> {
+    const started = Date.now();
+    const rule = completionOf(action);
+    if (rule.kind === "action_result")
+      return {
+        status: "failed",
+        reason: `"${action.name}" waits for a ROS 2 action result but is sent as a topic message`,
+      };
+    const expected = rule.kind === "done_topic" ? expectedDone(rule.match, parameters) : null;
+    if (expected && !expected.ok) return { status: "failed", reason: expected.reason };
+    // Waiting starts before the send, so an answer that comes at once is not missed.
+    const done =
+      rule.kind === "done_topic" && expected?.ok
+        ? this.done.wait(rule.topic, rule.messageType, expected.match, deadline + estimatedMs(rule, parameters))
+        : null;
+    const socket = this.socket;
+    this.topic(ros, outgoing.topic, outgoing.messageType).publish(outgoing.message);
+    if (!socket || !(await socket.delivered())) {
+      done?.cancel();
+      return {
+        status: "failed",
+        reason: `the robot link was lost before the robot took the action in: ${this.lostReason()}`,
+      };
+    }
+    const detail = (confirmation: Confirmation) => ({ topic: outgoing.topic, confirmation });
+    if (done && rule.kind === "done_topic") {
+      const answer = await done.answer;
+      if (answer === "timeout") return { status: "timed_out", afterMs: Date.now() - started };
+      if (answer === "lost")
+        return {
+          status: "failed",
+          reason: `the robot link was lost before the robot said it was done: ${this.lostReason()}`,
+        };
+      const robotTime = robotTimeOf(answer.message);
+      return {
+        status: "completed",
+        detail: detail({ by: "done_topic", confirmed: true, source: rule.topic, ...(robotTime ? { robotTime } : {}) }),
+      };
+    }
+    if (rule.kind === "estimated_duration") {
+      const ms = estimatedMs(rule, parameters);
+      if (started + ms > deadline)
+        return this.after(deadline - started, { status: "timed_out", afterMs: deadline - started });
+      return this.after(ms, { status: "completed", detail: detail({ by: "estimated_duration", confirmed: false }) });
+    }
+    return { status: "completed", detail: detail({ by: "delivered", confirmed: false }) };
+  }
+
+  /** An outcome told after a pause, unless the transport is closed first. */
+  private after(ms: number, outcome: DispatchOutcome): Promise<DispatchOutcome> {
+    return new Promise((resolve) => {
+      const timer = setTimeout(() => {
+        this.timers.delete(timer);
+        resolve(outcome);
+      }, ms);
+      this.timers.add(timer);
+    });
   }
 
   /** A message of our own (not a plugin action's) on a topic, if connected now: false if not. */
@@ -114,36 +197,62 @@ export class RosbridgeTransport extends LinkedTransport {
   async close() {
     this.setState("closed");
     this.timers.forEach(clearTimeout);
-    if (this.heartbeat) clearInterval(this.heartbeat);
-    this.ros?.close();
+    this.socket?.terminate("the connection was closed");
+    this.done.lose();
     this.ros = null;
+    this.socket = null;
     this.waiting.forEach((wake) => wake());
   }
 
   private open() {
-    const ros = new ROSLIB.Ros({});
+    const liveness = {
+      everyMs: this.options.heartbeatEveryMs ?? 500,
+      timeoutMs: this.options.heartbeatTimeoutMs ?? 1500,
+    };
+    let socket: WatchedSocket | null = null;
+    const lost = (reason: string) => {
+      if (this.ros !== ros || this.status.state === "closed") return;
+      this.ros = null;
+      this.socket = null;
+      this.setState("disconnected", reason);
+      this.done.lose();
+      this.reconnectLater();
+    };
+    const ros = new ROSLIB.Ros({
+      transportFactory: async (url) => {
+        socket = new WatchedSocket(url, liveness, lost);
+        socket.on("message", (message) => this.bridgeSaid(message as { op?: string; level?: string; msg?: string }));
+        this.socket = socket;
+        return socket;
+      },
+    });
     this.ros = ros;
     this.topics = new Map();
     this.setState("connecting");
-    let gone = false;
-    const lost = () => {
-      if (gone || this.ros !== ros) return;
-      gone = true;
-      if (this.heartbeat) clearInterval(this.heartbeat);
-      this.setState("disconnected");
-      this.reconnectLater();
-    };
     ros.on("connection", () => {
       if (this.ros !== ros) return;
       this.status.attempts = 0;
       this.setState("connected");
       this.subscriptions.forEach((s) => this.listen(ros, s));
-      this.startHeartbeat(ros);
       this.waiting.forEach((wake) => wake());
     });
-    ros.on("close", lost);
-    ros.on("error", lost);
-    ros.connect(this.options.url).catch(lost);
+    ros.connect(this.options.url).catch((error: Error) => lost(`cannot reach rosbridge: ${error.message}`));
+  }
+
+  override health() {
+    return { ...super.health(), lastHeartbeatMs: this.socket?.lastRoundTripMs ?? this.status.lastHeartbeatMs };
+  }
+
+  /** A `status` frame (rosbridge's protocol; not every server sends them): errors and warnings are the robot's problems. */
+  private bridgeSaid(message: { op?: string; level?: string; msg?: string }) {
+    if (message.op !== "status" || (message.level !== "error" && message.level !== "warning")) return;
+    this.tell(
+      `the robot's bridge reported ${message.level === "error" ? "an error" : "a warning"}: ${message.msg ?? "(no text)"}`,
+    );
+  }
+
+  private lostReason() {
+    return this.status.reason ?? "the robot's bridge did not answer";
   }
 
   private reconnectLater() {
@@ -154,18 +263,6 @@ export class RosbridgeTransport extends LinkedTransport {
       if (this.status.state !== "closed") this.open();
     }, delay);
     this.timers.add(timer);
-  }
-
-  private startHeartbeat(ros: ROSLIB.Ros) {
-    const every = this.options.heartbeatEveryMs ?? 2000;
-    const limit = this.options.heartbeatTimeoutMs ?? 1500;
-    this.heartbeat = setInterval(() => {
-      const sent = Date.now();
-      void this.call(ros, HEARTBEAT_SERVICE, "std_srvs/srv/Trigger", {}, sent + limit).then((outcome) => {
-        if (outcome.status === "timed_out") return ros.close();
-        this.status.lastHeartbeatMs = Date.now() - sent;
-      });
-    }, every);
   }
 
   private call(
@@ -183,11 +280,27 @@ export class RosbridgeTransport extends LinkedTransport {
       );
       const done = (outcome: DispatchOutcome) => {
         clearTimeout(timer);
+        unwatch();
         resolve(outcome);
       };
+      // A lost link will never bring the answer: fail now, with why, rather than at the timeout.
+      const unwatch = this.onHealth((health) => {
+        if (health.state !== "connected" && !health.problem)
+          done({
+            status: "failed",
+            reason: `the robot link was lost while waiting for the answer: ${this.lostReason()}`,
+          });
+      });
       new ROSLIB.Service({ ros, name, serviceType }).callService(
         args,
-        (values) => done({ status: "completed", detail: { response: values as Record<string, unknown> } }),
+        (values) =>
+          done({
+            status: "completed",
+            detail: {
+              response: values as Record<string, unknown>,
+              confirmation: { by: "service_response", confirmed: true, source: name } satisfies Confirmation,
+            },
+          }),
         (error) => done({ status: "failed", reason: String(error) }),
       );
     });

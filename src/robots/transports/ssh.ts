@@ -77,7 +77,12 @@ export class SshTransport extends LinkedTransport {
         stream.on("data", () => {});
         stream.on("close", (code: number | null) => {
           clearTimeout(timer);
-          if (code === 0) resolve({ status: "completed", detail: { exitCode: 0 } });
+          // The command returns when the robot has done it (qicli call blocks): its exit confirms.
+          if (code === 0)
+            resolve({
+              status: "completed",
+              detail: { exitCode: 0, confirmation: { by: "command_exit", confirmed: true } },
+            });
           else
             resolve({
               status: "failed",

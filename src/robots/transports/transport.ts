@@ -19,6 +19,10 @@ export interface Health {
   attempts: number;
   /** Round trip of the last heartbeat, in ms. */
   lastHeartbeatMs: number | null;
+  /** Why the link was last lost, in plain words. */
+  reason?: string;
+  /** An error the robot's side reported (e.g. rosbridge refused a subscription), told once as it comes. */
+  problem?: string;
 }
 
 export interface Transport {
