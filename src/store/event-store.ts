@@ -1,6 +1,6 @@
 // The trial's append-only log in PostgreSQL. An event exists once its
 // transaction commits; only then may anyone be told about it.
-import { and, asc, eq, gt } from "drizzle-orm";
+import { and, asc, eq, gt, inArray } from "drizzle-orm";
 import type { EngineEvent, StoredEvent } from "@/core/trial";
 import type { Database } from "./client";
 import { trialEvents, type trials } from "./schema";
@@ -108,4 +108,17 @@ export async function eventsSince(db: Database, trialId: string, afterSeq = 0): 
     .where(and(eq(trialEvents.trialId, trialId), gt(trialEvents.seq, afterSeq)))
     .orderBy(asc(trialEvents.seq));
   return rows.map(toStored);
+}
+
+/** Every event of several trials in one query, each trial's in order: what exports read a batch of trials with. */
+export async function eventsOfTrials(db: Database, trialIds: string[]): Promise<Map<string, StoredEvent[]>> {
+  const byTrial = new Map<string, StoredEvent[]>(trialIds.map((id) => [id, []]));
+  if (!trialIds.length) return byTrial;
+  const rows = await db
+    .select()
+    .from(trialEvents)
+    .where(inArray(trialEvents.trialId, trialIds))
+    .orderBy(asc(trialEvents.trialId), asc(trialEvents.seq));
+  for (const row of rows) byTrial.get(row.trialId)!.push(toStored(row));
+  return byTrial;
 }
