@@ -100,6 +100,12 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=eaf`}>
             ELAN (.eaf)
           </a>
+          <a
+            className="font-medium text-brand-600 hover:underline"
+            href={`/api/trials/${trialId}/export?format=samples`}
+          >
+            Robot samples (CSV)
+          </a>
         </span>
       </div>
       <TrialPeople

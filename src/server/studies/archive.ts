@@ -19,6 +19,7 @@ import {
   sessions,
   studies,
   trialEvents,
+  trialSamples,
 } from "@/store/schema";
 import { answersCsv } from "@/core/questionnaires/export";
 import { methodsText } from "../experiments/methods";
@@ -37,8 +38,10 @@ experiments/<name>-v<N>-methods.md
                             robot and plugin version, steps, exact speech, branches, pauses,
                             questionnaires, conditions and assignment, the version's hash
 trials/<id>.json            each trial's full record: protocol version, events,
-                            annotations, questionnaires
+                            annotations, questionnaires, robot state samples
 trials/<id>-events.csv      each trial's events, one row per event (RFC 4180)
+trials/<id>-samples.csv     each trial's robot state samples (joint states, battery...), one row per
+                            sample: trial_id, topic, rel_ms, data (the message as JSON)
 trials/<id>.eaf             each trial as an ELAN document: steps, actions, deviations, annotations
 questionnaire-answers.csv   every submitted answer: one row per participant x item, then scores
 
@@ -46,23 +49,23 @@ Rehearsals are not included. Participants who withdrew are left out, as are thei
 and answers; study.json says how many.
 `;
 
-/** A batch of trials is cut once it holds this many events (or trials): the archive's memory bound. */
-const BATCH_EVENTS = 20_000;
+/** A batch of trials is cut once it holds this many rows, events and samples (or trials): the archive's memory bound. */
+const BATCH_ROWS = 20_000;
 const BATCH_TRIALS = 50;
 
-/** The trials in batches of about BATCH_EVENTS events, in the order given (a large trial is a batch of its own). */
-export function batchesOf(trials: { id: string; events: number }[]) {
+/** The trials in batches of about BATCH_ROWS rows, in the order given (a large trial is a batch of its own). */
+export function batchesOf(trials: { id: string; rows: number }[]) {
   const batches: string[][] = [];
   let batch: string[] = [];
-  let events = 0;
+  let rows = 0;
   for (const trial of trials) {
-    if (batch.length && (events + trial.events > BATCH_EVENTS || batch.length === BATCH_TRIALS)) {
+    if (batch.length && (rows + trial.rows > BATCH_ROWS || batch.length === BATCH_TRIALS)) {
       batches.push(batch);
       batch = [];
-      events = 0;
+      rows = 0;
     }
     batch.push(trial.id);
-    events += trial.events;
+    rows += trial.rows;
   }
   if (batch.length) batches.push(batch);
   return batches;
@@ -172,20 +175,25 @@ async function studyFiles(db: Database, studyId: string) {
 export async function studyArchive(db: Database, studyId: string) {
   const trialRows = await analysedTrials(db, studyId);
   const { study, files } = await studyFiles(db, studyId);
-  const counted = trialRows.length
-    ? await db
-        .select({ id: trialEvents.trialId, events: count() })
-        .from(trialEvents)
-        .where(
-          inArray(
-            trialEvents.trialId,
-            trialRows.map((t) => t.id),
-          ),
-        )
-        .groupBy(trialEvents.trialId)
-    : [];
-  const sizes = new Map(counted.map((c) => [c.id, c.events]));
-  const batches = batchesOf(trialRows.map((t) => ({ id: t.id, events: sizes.get(t.id) ?? 0 })));
+  // What a trial weighs in memory: its events and its robot state samples, counted in one query each.
+  const ids = trialRows.map((t) => t.id);
+  const [eventCounts, sampleCounts] = ids.length
+    ? await Promise.all([
+        db
+          .select({ id: trialEvents.trialId, rows: count() })
+          .from(trialEvents)
+          .where(inArray(trialEvents.trialId, ids))
+          .groupBy(trialEvents.trialId),
+        db
+          .select({ id: trialSamples.trialId, rows: count() })
+          .from(trialSamples)
+          .where(inArray(trialSamples.trialId, ids))
+          .groupBy(trialSamples.trialId),
+      ])
+    : [[], []];
+  const sizes = new Map<string, number>();
+  for (const c of [...eventCounts, ...sampleCounts]) sizes.set(c.id, (sizes.get(c.id) ?? 0) + c.rows);
+  const batches = batchesOf(trialRows.map((t) => ({ id: t.id, rows: sizes.get(t.id) ?? 0 })));
 
   let out: ReadableStreamDefaultController<Uint8Array>;
   const zip = new Zip((error, chunk, final) => {
@@ -209,7 +217,7 @@ export async function studyArchive(db: Database, studyId: string) {
       const batch = batches[next++];
       if (!batch) return zip.end();
       try {
-        for (const { files: trialFiles } of await trialsFiles(db, batch, ["json", "csv", "eaf"]))
+        for (const { files: trialFiles } of await trialsFiles(db, batch, ["json", "csv", "eaf", "samples"]))
           for (const file of trialFiles) add(`trials/${file.filename.replace(/^trial-/, "")}`, file.body);
       } catch (error) {
         // The headers have gone: the zip ends unfinished, which the researcher's download reports; the why is logged.

@@ -1,21 +1,30 @@
 // A trial as files: its events as tidy CSV, its full record as JSON (the
 // protocol version embedded, events, annotations, questionnaires,
-// recordings), or an ELAN document for video coding. The trial's download
+// recordings, robot state samples), its robot state samples as tidy CSV, or
+// an ELAN document for video coding. The trial's download
 // and the study's archive both take them from here, reading the trial once.
 import { asc, eq, inArray } from "drizzle-orm";
 import { elanDocument } from "@/core/analysis/elan";
-import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
+import { eventsCsv, samplesCsv, trialRecordJson } from "@/core/analysis/exports";
 import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent } from "@/core/trial";
 import type { Database } from "@/store/client";
-import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/store/schema";
+import {
+  annotations,
+  experimentVersions,
+  mediaRecordings,
+  questionnaireLinks,
+  trialSamples,
+  trials,
+  user,
+} from "@/store/schema";
 import { recordingFileName } from "../media/recordings";
 import { submitted } from "../questionnaires/responses";
 import { eventsOfTrials } from "@/store/event-store";
 import type { ActionNames } from "@/core/designer/action-name";
 import { trialActionNames } from "./action-names";
 
-export type TrialFormat = "csv" | "json" | "eaf";
+export type TrialFormat = "csv" | "json" | "eaf" | "samples";
 
 /** The names of these accounts by id (an account deleted since has none). */
 async function namesOf(db: Database, userIds: (string | null)[]) {
@@ -82,7 +91,7 @@ export async function trialsEventsOf(db: Database, trialIds: string[]) {
 
 /** Everything of these trials that their files hold, read in one query per kind of row. */
 export async function readTrials(db: Database, trialIds: string[]) {
-  const [read, marked, recordings, questionnaires] = await Promise.all([
+  const [read, marked, recordings, questionnaires, samples] = await Promise.all([
     trialsEventsOf(db, trialIds),
     trialIds.length
       ? db
@@ -106,22 +115,36 @@ export async function readTrials(db: Database, trialIds: string[]) {
           .orderBy(asc(mediaRecordings.createdAt))
       : [],
     trialIds.length ? submitted(db, inArray(questionnaireLinks.trialId, trialIds)) : [],
+    trialIds.length
+      ? db
+          .select({
+            trialId: trialSamples.trialId,
+            topic: trialSamples.topic,
+            relMs: trialSamples.relMs,
+            data: trialSamples.data,
+          })
+          .from(trialSamples)
+          .where(inArray(trialSamples.trialId, trialIds))
+          .orderBy(asc(trialSamples.relMs), asc(trialSamples.id))
+      : [],
   ]);
   const markedBy = byTrial(trialIds, marked);
   const recordingsBy = byTrial(trialIds, recordings);
   const questionnairesBy = byTrial(trialIds, questionnaires);
+  const samplesBy = byTrial(trialIds, samples);
   return read.map((r) => ({
     ...r,
     marked: markedBy.get(r.trial.id)!.map(({ trialId: _, ...a }) => a),
     recordings: recordingsBy.get(r.trial.id)!,
     questionnaires: questionnairesBy.get(r.trial.id)!,
+    samples: samplesBy.get(r.trial.id)!.map(({ trialId: _, ...sample }) => sample),
   }));
 }
 
 type ReadTrial = Awaited<ReturnType<typeof readTrials>>[number];
 
 function fileOf(
-  { trial, people, version, protocol, events, marked, recordings, questionnaires, names }: ReadTrial,
+  { trial, people, version, protocol, events, marked, recordings, questionnaires, names, samples }: ReadTrial,
   format: TrialFormat,
 ) {
   const name = `trial-${trial.id}`;
@@ -131,6 +154,12 @@ function fileOf(
       filename: `${name}-events.csv`,
       contentType: "text/csv; charset=utf-8",
       body: eventsCsv(trial.id, events, people, named),
+    };
+  if (format === "samples")
+    return {
+      filename: `${name}-samples.csv`,
+      contentType: "text/csv; charset=utf-8",
+      body: samplesCsv(trial.id, samples),
     };
   if (format === "eaf") {
     const video = recordings.find((r) => r.status === "complete" && r.kind === "video");
@@ -182,6 +211,7 @@ function fileOf(
         durationMs: m.durationMs,
         url: `/api/recordings/${m.id}/media`,
       })),
+      samples,
     },
     named,
   );
