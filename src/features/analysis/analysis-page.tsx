@@ -106,6 +106,9 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           >
             Robot samples (CSV)
           </a>
+          <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=mcap`}>
+            MCAP (Foxglove)
+          </a>
         </span>
       </div>
       <TrialPeople

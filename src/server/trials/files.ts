@@ -1,7 +1,7 @@
 // A trial as files: its events as tidy CSV, its full record as JSON (the
 // protocol version embedded, events, annotations, questionnaires,
-// recordings, robot state samples), its robot state samples as tidy CSV, or
-// an ELAN document for video coding. The trial's download
+// recordings, robot state samples), its robot state samples as tidy CSV, an
+// ELAN document for video coding, or an MCAP file for robotics tools. The trial's download
 // and the study's archive both take them from here, reading the trial once.
 import { asc, eq, inArray } from "drizzle-orm";
 import { elanDocument } from "@/core/analysis/elan";
@@ -23,6 +23,7 @@ import { submitted } from "../questionnaires/responses";
 import { eventsOfTrials } from "@/store/event-store";
 import type { ActionNames } from "@/core/designer/action-name";
 import { trialActionNames } from "./action-names";
+import { trialMcap } from "./mcap";
 
 export type TrialFormat = "csv" | "json" | "eaf" | "samples";
 
@@ -218,9 +219,15 @@ function fileOf(
   return { filename: `${name}.json`, contentType: "application/json", body: record };
 }
 
-export async function trialFile(db: Database, trialId: string, format: TrialFormat) {
+export async function trialFile(db: Database, trialId: string, format: TrialFormat | "mcap") {
   const [read] = await readTrials(db, [trialId]);
-  return fileOf(read!, format);
+  if (format !== "mcap") return fileOf(read!, format);
+  const { trial, events, samples } = read!;
+  return {
+    filename: `trial-${trial.id}.mcap`,
+    contentType: "application/octet-stream",
+    body: new Uint8Array(await trialMcap({ trialId: trial.id, t0: trial.t0 ?? trial.createdAt, events, samples })),
+  };
 }
 
 /** Several formats of each of these trials, from one batch read of them (the study archive's case). */
