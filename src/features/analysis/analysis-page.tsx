@@ -73,6 +73,8 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
     ...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })),
     ...(annotations.data ?? []).map((m) => ({ at: m.relMs, kind: "annotation" as const, m })),
   ].sort((a, b) => a.at - b.at);
+  // One time axis for the timeline and the robot's state: to the last event, annotation or sample.
+  const endMs = Math.max(timeline.at(-1)?.at ?? 0, (samples.data ?? []).at(-1)?.relMs ?? 0);
   // A moment of the trial chosen on the timeline: the recording goes there, or (with none) the replay's playhead.
   const seekTo = (ms: number) => {
     if (recording && video.current) video.current.currentTime = videoSeconds(recording, ms);
@@ -165,7 +167,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
             .filter((e) => e.deviation && e.relMs !== null)
             .map((e) => ({ at: e.relMs!, kind: String(e.deviation) }))}
           annotations={(annotations.data ?? []).map((m) => ({ at: m.relMs, label: m.label }))}
-          endMs={timeline.at(-1)?.at ?? 0}
+          endMs={endMs}
           playheadMs={playheadMs}
           onSeek={seekTo}
         />
@@ -173,7 +175,12 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
       </section>
       <AnnotationsEditor trialId={trialId} annotations={annotations.data ?? []} playheadMs={playheadMs} />
       {samples.data && samples.data.length > 0 && (
-        <JointAngles samples={samples.data as Array<{ relMs: number; data: unknown }>} />
+        <JointAngles
+          samples={samples.data as Array<{ relMs: number; data: unknown }>}
+          endMs={endMs}
+          playheadMs={playheadMs}
+          onSeek={seekTo}
+        />
       )}
     </div>
   );
