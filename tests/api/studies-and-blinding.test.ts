@@ -193,6 +193,7 @@ describe("the study archive", () => {
       "questionnaire-answers.csv",
       "study.json",
       `trials/${trial.id}-events.csv`,
+      `trials/${trial.id}-samples.csv`,
       `trials/${trial.id}.eaf`,
       `trials/${trial.id}.json`,
     ]);
