@@ -1,6 +1,6 @@
 // The trial's append-only log in PostgreSQL. An event exists once its
 // transaction commits; only then may anyone be told about it.
-import { and, asc, eq, gt, isNotNull } from "drizzle-orm";
+import { and, asc, eq, gt, inArray, isNotNull } from "drizzle-orm";
 import type { EngineEvent, StoredEvent } from "@/core/trial";
 import type { Database } from "./client";
 import { trialEvents, type trials } from "./schema";
@@ -164,4 +164,17 @@ export async function answeredRequests(db: Database, trialId: string): Promise<M
   const answered = new Map<string, number[]>();
   for (const { requestId, seq } of rows) answered.set(requestId!, [...(answered.get(requestId!) ?? []), seq]);
   return answered;
+}
+
+/** Every event of several trials in one query, each trial's in order: what exports read a batch of trials with. */
+export async function eventsOfTrials(db: Database, trialIds: string[]): Promise<Map<string, StoredEvent[]>> {
+  const byTrial = new Map<string, StoredEvent[]>(trialIds.map((id) => [id, []]));
+  if (!trialIds.length) return byTrial;
+  const rows = await db
+    .select()
+    .from(trialEvents)
+    .where(inArray(trialEvents.trialId, trialIds))
+    .orderBy(asc(trialEvents.trialId), asc(trialEvents.seq));
+  for (const row of rows) byTrial.get(row.trialId)!.push(toStored(row));
+  return byTrial;
 }

@@ -3,12 +3,12 @@
 // stay numbers: checked through the real export procedures and the study
 // archive, with answers, codes, names, notes and speech text a participant
 // or researcher could type.
-import { strFromU8, unzipSync } from "fflate";
+import { strFromU8 } from "fflate";
 import { afterAll, describe, expect, it } from "vitest";
 import { appendEvents } from "../../src/store/event-store";
 import { parseCsv } from "../support/csv";
 import { freshDatabase } from "../support/db";
-import { buildFixture } from "./fixture";
+import { buildFixture, unzipArchive } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -105,9 +105,13 @@ describe("the trial events CSV", () => {
     // Speech text, notes and names sit inside the payload's JSON, a cell that starts with "{".
     expect(cell("note.added", "payload")).toMatch(/^\{.*HYPERLINK/);
 
-    const archive = unzipSync((await owner.studies.exportArchive({ studyId: study.id })).body as Uint8Array);
+    const archive = await unzipArchive(await owner.studies.exportArchive({ studyId: study.id }));
     const files = Object.entries(archive).filter(([name]) => name.endsWith(".csv"));
-    expect(files.map(([name]) => name).sort()).toEqual(["questionnaire-answers.csv", `trials/${trial.id}-events.csv`]);
+    expect(files.map(([name]) => name).sort()).toEqual([
+      "questionnaire-answers.csv",
+      `trials/${trial.id}-events.csv`,
+      `trials/${trial.id}-samples.csv`,
+    ]);
     expect(inert(strFromU8(archive[`trials/${trial.id}-events.csv`]!))).toEqual([]);
     expect(inert(strFromU8(archive["questionnaire-answers.csv"]!))).toEqual(["-3"]);
   });

@@ -10,6 +10,7 @@ import { appRouter } from "../../src/server/api/root";
 import { createAccount } from "../../src/server/auth/accounts";
 import type { Database } from "../../src/store/client";
 import { eq } from "drizzle-orm";
+import { unzipSync } from "fflate";
 import { studies, studyMembers } from "../../src/store/schema";
 
 export const CALLERS = ["owner", "researcher", "wizard", "observer", "outsider", "admin", "anonymous"] as const;
@@ -112,4 +113,9 @@ export async function plannedSession(api: Api, studyId: string, experimentId: st
   await api.conditions.assign({ participantId: participant.id, conditionId: condition.id });
   const session = await api.sessions.schedule({ participantId: participant.id, plannedAt: new Date(), wizardId });
   return { participant, session };
+}
+
+/** The study's zip read back whole: it is streamed as it is made. */
+export async function unzipArchive(archive: { body: ReadableStream<Uint8Array> }) {
+  return unzipSync(new Uint8Array(await new Response(archive.body).arrayBuffer()));
 }

@@ -2,11 +2,11 @@
 // withdrawal taking a participant's data out of analysis and exports,
 // demographics and the consent document's version, and sessions.
 import { eq } from "drizzle-orm";
-import { strFromU8, unzipSync } from "fflate";
+import { strFromU8 } from "fflate";
 import { afterAll, describe, expect, it } from "vitest";
 import { auditLog } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
-import { buildFixture } from "./fixture";
+import { buildFixture, unzipArchive } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -185,7 +185,7 @@ describe("the study archive", () => {
     const twinVersion = await owner.versions.publish({ experimentId: twin.id });
     const archive = await owner.studies.exportArchive({ studyId: study.id });
     expect(archive).toMatchObject({ filename: "fixture-study.zip", contentType: "application/zip" });
-    const files = unzipSync(archive.body);
+    const files = await unzipArchive(archive);
     expect(Object.keys(files).sort()).toEqual([
       "README.txt",
       expect.stringMatching(/^experiments\/story-v1-[0-9a-f-]{8}-methods\.md$/),
@@ -193,6 +193,7 @@ describe("the study archive", () => {
       "questionnaire-answers.csv",
       "study.json",
       `trials/${trial.id}-events.csv`,
+      `trials/${trial.id}-samples.csv`,
       `trials/${trial.id}.eaf`,
       `trials/${trial.id}.json`,
     ]);

@@ -2,12 +2,12 @@
 // one yet (`wizardId: null`), in which case whoever starts it claims it (the
 // runtime's side is tests/runtime/socket-access.test.ts); and who created it,
 // kept apart from its wizard everywhere the trial is shown.
-import { strFromU8, unzipSync } from "fflate";
+import { strFromU8 } from "fflate";
 import { afterAll, describe, expect, it } from "vitest";
 import { appendEvents } from "../../src/store/event-store";
 import { parseCsv } from "../support/csv";
 import { freshDatabase } from "../support/db";
-import { buildFixture, plannedSession, publishedVersion } from "./fixture";
+import { buildFixture, plannedSession, publishedVersion, unzipArchive } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -60,7 +60,7 @@ describe("the wizard and the creator, two named fields wherever the trial is sho
     const record = JSON.parse((await owner.trials.export({ trialId: trial.id, format: "json" })).body as string);
     expect(record.trial).toMatchObject({ wizardId: f.people.wizard.id, createdBy: f.people.owner.id, ...names });
 
-    const archive = unzipSync((await owner.studies.exportArchive({ studyId: study.id })).body as Uint8Array);
+    const archive = await unzipArchive(await owner.studies.exportArchive({ studyId: study.id }));
     expect(JSON.parse(strFromU8(archive[`trials/${trial.id}.json`]!)).trial).toMatchObject(names);
     expect(csvRows(strFromU8(archive[`trials/${trial.id}-events.csv`]!))[0]!.slice(1, 3)).toEqual([
       f.people.wizard.name,

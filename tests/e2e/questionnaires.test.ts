@@ -98,7 +98,7 @@ describe.sequential("questionnaires in the browser", () => {
     expect(Object.keys(archive)).toContain(`trials/${trial.id}.eaf`);
     const csv = await (await researcher.request.get(`/api/studies/${study!.id}/questionnaires`)).text();
     expect(csv.split("\r\n")).toContain(`P001,${trial.id},System Usability Scale (SUS),1,score,score,60`);
-    const record = JSON.parse((await api.trials.export.query({ trialId: trial.id, format: "json" })).body);
+    const record = JSON.parse((await api.trials.export.query({ trialId: trial.id, format: "json" })).body as string);
     expect(record.questionnaires).toMatchObject([
       { questionnaire: "System Usability Scale (SUS)", score: { score: 60 } },
     ]);

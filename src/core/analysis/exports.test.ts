@@ -1,7 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { parseCsv } from "../../../tests/support/csv";
 import type { StoredEvent } from "@/core/trial";
-import { eventsCsv, trialRecordJson } from "./exports";
+import { eventsCsv, samplesCsv, trialRecordJson } from "./exports";
 import { trialNames } from "./names";
 
 const events: StoredEvent[] = [
@@ -92,6 +92,7 @@ describe("the trial record", () => {
           annotations: [],
           questionnaires: [],
           recordings: [],
+          samples: [],
         },
         names,
       ),
@@ -100,5 +101,19 @@ describe("the trial record", () => {
       { stepName: undefined, actionName: undefined },
       { stepName: "Welcome", actionName: 'Say: She said "hi", then left; {{x}}…' },
     ]);
+  });
+});
+
+describe("the robot state samples CSV", () => {
+  it("parses back to the samples: one row each, the message as JSON, quotes and commas included", () => {
+    const samples = [
+      { topic: "/joint_states", relMs: 0, data: { name: ["HeadYaw", "HeadPitch"], position: [0.1, -0.25] } },
+      { topic: "/battery_state", relMs: 20.5, data: { percentage: 0.8, location: 'pack "A", left' } },
+    ];
+    const [header, ...rows] = parseCsv(samplesCsv("t1", samples)).filter((r) => r.length > 1);
+    expect(header).toEqual(["trial_id", "topic", "rel_ms", "data"]);
+    expect(
+      rows.map(([trialId, topic, relMs, data]) => ({ trialId, topic, relMs: Number(relMs), data: JSON.parse(data!) })),
+    ).toEqual(samples.map((s) => ({ trialId: "t1", ...s })));
   });
 });

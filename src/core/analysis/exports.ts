@@ -6,6 +6,7 @@ import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { csvDocument, type CsvValue } from "@/core/csv/csv";
 import type { StoredEvent } from "@/core/trial";
 import type { TrialNames } from "./names";
+import { SAMPLE_COLUMNS } from "./api";
 
 // 2: the protocol is snapshot schema 2 (robotId; steps say where they lead), the version names its robotId.
 export const TRIAL_RECORD_SCHEMA_VERSION = 2;
@@ -69,6 +70,21 @@ export function eventRows(
   });
 }
 
+/** A robot state sample as logged: its topic, when (ms from t0) and the message as the robot sent it. */
+export interface Sample {
+  topic: string;
+  relMs: number;
+  data: unknown;
+}
+
+/** A trial's robot state samples as tidy CSV, in the analysis API's samples columns: one row per sample, the message as JSON. */
+export function samplesCsv(trialId: string, samples: Sample[]): string {
+  return csvDocument(
+    SAMPLE_COLUMNS,
+    samples.map((s) => [trialId, s.topic, s.relMs, JSON.stringify(s.data)]),
+  );
+}
+
 export interface TrialRecord {
   schemaVersion: number;
   trial: Record<string, unknown>;
@@ -80,6 +96,8 @@ export interface TrialRecord {
   questionnaires: unknown[];
   /** Recordings of the trial: where to fetch them, and their offset from t0 (ms). */
   recordings: unknown[];
+  /** The robot's state samples (joint states, battery…) in time order. */
+  samples: Sample[];
 }
 
 export function trialRecordJson(

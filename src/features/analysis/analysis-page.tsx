@@ -11,6 +11,7 @@ import { useTRPC } from "@/lib/trpc";
 import { QuestionnaireAnswers } from "./questionnaire-answers";
 import { AnnotationsEditor } from "./annotations-editor";
 import { TimelineChart } from "./timeline-chart";
+import { EventList, type TimelineItem } from "./event-list";
 import { RecordingPlayer, useTrialRecording, videoSeconds } from "./recording-player";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, type Tone } from "@/ui/surface";
@@ -68,10 +69,12 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
     const { stepName, actionName } = named!.of(e);
     return actionName ?? stepName;
   };
-  const timeline = [
+  const timeline: TimelineItem[] = [
     ...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })),
     ...(annotations.data ?? []).map((m) => ({ at: m.relMs, kind: "annotation" as const, m })),
   ].sort((a, b) => a.at - b.at);
+  // One time axis for the timeline and the robot's state: to the last event, annotation or sample.
+  const endMs = Math.max(timeline.at(-1)?.at ?? 0, (samples.data ?? []).at(-1)?.relMs ?? 0);
   // A moment of the trial chosen on the timeline: the recording goes there, or (with none) the replay's playhead.
   const seekTo = (ms: number) => {
     if (recording && video.current) video.current.currentTime = videoSeconds(recording, ms);
@@ -98,6 +101,15 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           </a>
           <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=eaf`}>
             ELAN (.eaf)
+          </a>
+          <a
+            className="font-medium text-brand-600 hover:underline"
+            href={`/api/trials/${trialId}/export?format=samples`}
+          >
+            Robot samples (CSV)
+          </a>
+          <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=mcap`}>
+            MCAP (Foxglove)
           </a>
         </span>
       </div>
@@ -164,39 +176,20 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
             .filter((e) => e.deviation && e.relMs !== null)
             .map((e) => ({ at: e.relMs!, kind: String(e.deviation) }))}
           annotations={(annotations.data ?? []).map((m) => ({ at: m.relMs, label: m.label }))}
-          endMs={timeline.at(-1)?.at ?? 0}
+          endMs={endMs}
           playheadMs={playheadMs}
           onSeek={seekTo}
         />
-        <Card className="divide-y divide-slate-100 text-sm">
-          {timeline.map((item, i) => (
-            <button
-              key={i}
-              type="button"
-              aria-current={current === i ? "time" : undefined}
-              onClick={() => seekTo(item.at)}
-              className={`flex w-full gap-3 px-4 py-1.5 text-left enabled:hover:bg-slate-50 ${current === i ? "bg-brand-50" : ""}`}
-            >
-              <span className="w-16 shrink-0 font-mono text-xs text-slate-600">{seconds(item.at)}</span>
-              {item.kind === "annotation" ? (
-                <span>
-                  <Badge tone="violet">marked</Badge> <strong>{item.m.label}</strong> {item.m.note}{" "}
-                  <span className="text-xs text-slate-600">by {item.m.authorName}</span>
-                </span>
-              ) : (
-                <span>
-                  {item.e.type}
-                  {about(item.e) && <span className="text-slate-500"> · {about(item.e)}</span>}
-                  {item.e.deviation && <Badge tone="amber">{item.e.deviation.replace("_", " ")}</Badge>}
-                </span>
-              )}
-            </button>
-          ))}
-        </Card>
+        <EventList items={timeline} current={current} about={about} onSeek={seekTo} />
       </section>
       <AnnotationsEditor trialId={trialId} annotations={annotations.data ?? []} playheadMs={playheadMs} />
       {samples.data && samples.data.length > 0 && (
-        <JointAngles samples={samples.data as Array<{ relMs: number; data: unknown }>} />
+        <JointAngles
+          samples={samples.data as Array<{ relMs: number; data: unknown }>}
+          endMs={endMs}
+          playheadMs={playheadMs}
+          onSeek={seekTo}
+        />
       )}
     </div>
   );

@@ -2,6 +2,11 @@
 // The trial at a glance, on one time axis under the video: step bands, action
 // bars from requested to finished, deviations and annotations. Clicking
 // anything seeks the recording there; the playhead shows where it is.
+// Steps and annotations are few (the protocol's, the researchers'): each is a
+// button. Actions and deviations can be tens of thousands in a long trial:
+// their lanes are drawn (one SVG path per colour) with one button that the
+// arrow keys move from bar to bar.
+import { useState } from "react";
 import type { FidelityReport } from "@/core/analysis/fidelity";
 import { cn } from "@/ui/cn";
 import { seconds } from "@/ui/format";
@@ -67,36 +72,35 @@ export function TimelineChart({ report, deviations, annotations, endMs, playhead
       )}
       {lane(
         "Actions",
-        report.actions
-          .filter((a) => a.requestedMs !== null)
-          .map((a) => (
-            <button
-              key={a.actionId}
-              type="button"
-              title={`${a.name}: ${a.outcome}`}
-              aria-label={`Action ${a.name} at ${seconds(a.requestedMs)}`}
-              className={cn(
-                item,
-                a.outcome === "executed" ? "bg-emerald-300" : a.outcome === "skipped" ? "bg-amber-300" : "bg-red-300",
-              )}
-              style={{ left: left(a.requestedMs!), width: width(a.requestedMs!, a.requestedMs! + (a.durationMs ?? 0)) }}
-              onClick={() => seek(a.requestedMs!)}
-            />
-          )),
+        <DrawnMarks
+          name="Action"
+          total={total}
+          onSeek={seek}
+          marks={report.actions
+            .filter((a) => a.requestedMs !== null)
+            .map((a) => ({
+              at: a.requestedMs!,
+              to: a.requestedMs! + (a.durationMs ?? 0),
+              tone: a.outcome === "executed" ? "executed" : a.outcome === "skipped" ? "skipped" : "failed",
+              label: `Action ${a.name} at ${seconds(a.requestedMs)}`,
+              title: `${a.name}: ${a.outcome}`,
+            }))}
+        />,
       )}
       {lane(
         "Deviations",
-        deviations.map((d, i) => (
-          <button
-            key={i}
-            type="button"
-            title={d.kind.replace("_", " ")}
-            aria-label={`Deviation: ${d.kind.replace("_", " ")}`}
-            className="absolute top-0 bottom-0 w-1 rounded bg-amber-500"
-            style={{ left: left(d.at) }}
-            onClick={() => seek(d.at)}
-          />
-        )),
+        <DrawnMarks
+          name="Deviation"
+          total={total}
+          onSeek={seek}
+          marks={deviations.map((d) => ({
+            at: d.at,
+            to: d.at,
+            tone: "deviation",
+            label: `Deviation: ${d.kind.replace("_", " ")} at ${seconds(d.at)}`,
+            title: d.kind.replace("_", " "),
+          }))}
+        />,
       )}
       {lane(
         "Annotations",
@@ -122,5 +126,84 @@ export function TimelineChart({ report, deviations, annotations, endMs, playhead
         />
       )}
     </Card>
+  );
+}
+
+type Mark = { at: number; to: number; tone: keyof typeof FILL; label: string; title: string };
+
+const FILL = {
+  executed: "fill-emerald-300",
+  skipped: "fill-amber-300",
+  failed: "fill-red-300",
+  deviation: "fill-amber-500",
+};
+/** The drawing's width in its own units: bars narrower than a unit are drawn a unit wide, as the 3 px of old. */
+const WIDE = 1000;
+
+const KEYS: Record<string, (i: number, count: number) => number> = {
+  ArrowRight: (i, count) => Math.min(count - 1, i + 1),
+  ArrowLeft: (i) => Math.max(0, i - 1),
+  Home: () => 0,
+  End: (_, count) => count - 1,
+};
+
+/**
+ * A lane's bars as one path per colour, and one button on the chosen bar: the
+ * keyboard's way along the lane (arrow keys, Home, End) and to seek (Enter).
+ */
+function DrawnMarks({
+  name,
+  marks,
+  total,
+  onSeek,
+}: {
+  name: string;
+  marks: Mark[];
+  total: number;
+  onSeek: (ms: number) => void;
+}) {
+  const [chosen, setChosen] = useState(0);
+  const x = (ms: number) => (Math.min(total, Math.max(0, ms)) / total) * WIDE;
+  const paths = new Map<string, string[]>();
+  for (const m of marks) {
+    const d = paths.get(m.tone) ?? [];
+    d.push(
+      `M${x(m.at).toFixed(2)} 0h${Math.max(2, x(m.to) - x(m.at)).toFixed(2)}v1h-${Math.max(2, x(m.to) - x(m.at)).toFixed(2)}z`,
+    );
+    paths.set(m.tone, d);
+  }
+  const mark = marks[Math.min(chosen, marks.length - 1)];
+  return (
+    <>
+      <svg
+        className="pointer-events-none absolute inset-x-0 top-1 bottom-1 h-4 w-full"
+        viewBox={`0 0 ${WIDE} 1`}
+        preserveAspectRatio="none"
+        aria-hidden
+      >
+        {[...paths].map(([tone, d]) => (
+          <path key={tone} className={FILL[tone as Mark["tone"]]} d={d.join("")} />
+        ))}
+      </svg>
+      {mark && (
+        <button
+          type="button"
+          title={mark.title}
+          aria-label={`${mark.label} (${name.toLowerCase()} ${Math.min(chosen, marks.length - 1) + 1} of ${marks.length}; arrow keys choose another)`}
+          className="absolute top-0 bottom-0 rounded-sm outline-offset-1 focus-visible:ring-2 focus-visible:ring-brand-600"
+          style={{
+            left: `${(x(mark.at) / WIDE) * 100}%`,
+            width: `max(6px, ${((x(mark.to) - x(mark.at)) / WIDE) * 100}%)`,
+          }}
+          onClick={() => onSeek(mark.at)}
+          onKeyDown={(event) => {
+            const move = KEYS[event.key];
+            if (!move) return;
+            event.preventDefault();
+            setChosen(move(Math.min(chosen, marks.length - 1), marks.length));
+          }}
+        />
+      )}
+    </>
   );
 }

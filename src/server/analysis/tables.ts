@@ -20,7 +20,7 @@ import {
   user,
 } from "@/store/schema";
 import { submitted } from "../questionnaires/responses";
-import { trialEventsOf } from "../trials/files";
+import { trialsEventsOf } from "../trials/files";
 
 /**
  * The trials a study's data is made of, oldest first: the archive's rule, no
@@ -71,13 +71,11 @@ export async function trialsTable(db: Database, studyId: string): Promise<Table>
   );
 }
 
-/** Every event of these trials, each trial's in order, in its events CSV's columns. */
+/** Every event of these trials, each trial's in order, in its events CSV's columns: one read for them all. */
 export async function eventsTable(db: Database, trialIds: string[]): Promise<Table> {
   const rows = [];
-  for (const trialId of trialIds) {
-    const { trial, people, protocol, events, names } = await trialEventsOf(db, trialId);
-    rows.push(...eventRows(trial.id, events, people, trialNames(protocol, events, names)));
-  }
+  for (const { trial, people, protocol, events, names } of await trialsEventsOf(db, trialIds))
+    for (const row of eventRows(trial.id, events, people, trialNames(protocol, events, names))) rows.push(row);
   return { columns: EVENT_COLUMNS, rows };
 }
 

@@ -27,20 +27,26 @@ export async function apiRoute(
   }
 }
 
-export function download(
-  req: Request,
-  file: (api: Caller) => Promise<{ body: string | Uint8Array<ArrayBuffer>; contentType: string; filename: string }>,
-): Promise<Response> {
+type File = {
+  body: string | Uint8Array<ArrayBuffer> | ReadableStream<Uint8Array>;
+  contentType: string;
+  filename: string;
+  /** For a file streamed as it is made: how many trials it holds, for the researcher's progress. */
+  trials?: number;
+};
+
+export function download(req: Request, file: (api: Caller) => Promise<File>): Promise<Response> {
   return apiRoute(req, async (api) => {
-    const { body, contentType, filename } = await file(api);
-    // The length lets the browser show the download's progress.
-    const length = typeof body === "string" ? Buffer.byteLength(body) : body.byteLength;
-    return new Response(body, {
-      headers: {
-        "content-type": contentType,
-        "content-length": String(length),
-        "content-disposition": `attachment; filename="${filename}"`,
-      },
-    });
+    const { body, contentType, filename, trials } = await file(api);
+    const headers: Record<string, string> = {
+      "content-type": contentType,
+      "content-disposition": `attachment; filename="${filename}"`,
+    };
+    // The length lets the browser show the download's progress; a streamed file's is not known
+    // before its end, so it says how many trials are coming instead.
+    if (typeof body === "string") headers["content-length"] = String(Buffer.byteLength(body));
+    else if (body instanceof Uint8Array) headers["content-length"] = String(body.byteLength);
+    if (trials !== undefined) headers["x-export-trials"] = String(trials);
+    return new Response(body, { headers });
   });
 }

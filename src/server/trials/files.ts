@@ -1,78 +1,151 @@
 // A trial as files: its events as tidy CSV, its full record as JSON (the
 // protocol version embedded, events, annotations, questionnaires,
-// recordings), or an ELAN document for video coding. The trial's download
+// recordings, robot state samples), its robot state samples as tidy CSV, an
+// ELAN document for video coding, or an MCAP file for robotics tools. The trial's download
 // and the study's archive both take them from here, reading the trial once.
-import { asc, eq } from "drizzle-orm";
+import { asc, eq, inArray } from "drizzle-orm";
 import { elanDocument } from "@/core/analysis/elan";
-import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
+import { eventsCsv, samplesCsv, trialRecordJson } from "@/core/analysis/exports";
 import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent } from "@/core/trial";
 import type { Database } from "@/store/client";
-import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/store/schema";
+import {
+  annotations,
+  experimentVersions,
+  mediaRecordings,
+  questionnaireLinks,
+  trialSamples,
+  trials,
+  user,
+} from "@/store/schema";
 import { recordingFileName } from "../media/recordings";
 import { submitted } from "../questionnaires/responses";
-import { eventsSince } from "@/store/event-store";
+import { eventsOfTrials } from "@/store/event-store";
+import type { ActionNames } from "@/core/designer/action-name";
 import { trialActionNames } from "./action-names";
+import { trialMcap } from "./mcap";
 
-export type TrialFormat = "csv" | "json" | "eaf";
+export type TrialFormat = "csv" | "json" | "eaf" | "samples";
 
-/** The name of an account, or null (none given, or the account was deleted). */
-async function nameOf(db: Database, userId: string | null) {
-  if (!userId) return null;
-  const [person] = await db.select({ name: user.name }).from(user).where(eq(user.id, userId));
-  return person?.name ?? null;
-}
-
-/** What a trial's events need to be read: the trial, its people, its protocol and the names of its actions. */
-export async function trialEventsOf(db: Database, trialId: string) {
-  const [trial] = await db.select().from(trials).where(eq(trials.id, trialId));
-  const [version] = trial!.versionId
-    ? await db.select().from(experimentVersions).where(eq(experimentVersions.id, trial!.versionId))
+/** The names of these accounts by id (an account deleted since has none). */
+async function namesOf(db: Database, userIds: (string | null)[]) {
+  const wanted = [...new Set(userIds.filter((id): id is string => id !== null))];
+  const rows = wanted.length
+    ? await db.select({ id: user.id, name: user.name }).from(user).where(inArray(user.id, wanted))
     : [];
-  const protocol = version?.snapshot ?? trial!.rehearsalSnapshot;
-  // Every trial runs a published version or, for a rehearsal, the draft frozen when it began.
-  if (!protocol) throw new Error(`Trial ${trial!.id} has neither a version nor a rehearsal snapshot`);
-  return {
-    trial: trial!,
-    // Who ran it and who created it: two named fields, as the trial page shows them.
-    people: { wizard: await nameOf(db, trial!.wizardId), createdBy: await nameOf(db, trial!.createdBy) },
-    version,
-    protocol,
-    events: await eventsSince(db, trialId),
-    names: await trialActionNames(db, trialId),
-  };
+  return new Map(rows.map((r) => [r.id, r.name]));
 }
 
-async function readTrial(db: Database, trialId: string) {
-  return {
-    ...(await trialEventsOf(db, trialId)),
-    marked: await db
-      .select({ relMs: annotations.relMs, label: annotations.label, note: annotations.note, authorName: user.name })
-      .from(annotations)
-      .leftJoin(user, eq(user.id, annotations.authorId))
-      .where(eq(annotations.trialId, trialId))
-      .orderBy(asc(annotations.relMs)),
-    recordings: await db
-      .select()
-      .from(mediaRecordings)
-      .where(eq(mediaRecordings.trialId, trialId))
-      .orderBy(asc(mediaRecordings.createdAt)),
-    questionnaires: await submitted(db, eq(questionnaireLinks.trialId, trialId)),
-  };
+/** Each row of `rows` under its trial, for a batch read in one query. */
+function byTrial<T extends { trialId: string | null }>(trialIds: string[], rows: T[]) {
+  const grouped = new Map<string, T[]>(trialIds.map((id) => [id, []]));
+  for (const row of rows) if (row.trialId) grouped.get(row.trialId)?.push(row);
+  return grouped;
 }
+
+/**
+ * What these trials' events need to be read: each trial, its people, its
+ * protocol and the names of its actions. One query per kind of row for the
+ * whole batch (not per trial), so a study of 1,000 trials costs a handful of
+ * queries per batch; the action names are looked up once per version.
+ */
+export async function trialsEventsOf(db: Database, trialIds: string[]) {
+  if (!trialIds.length) return [];
+  const trialRows = await db.select().from(trials).where(inArray(trials.id, trialIds));
+  const versionIds = [...new Set(trialRows.flatMap((t) => (t.versionId ? [t.versionId] : [])))];
+  const versions = versionIds.length
+    ? await db.select().from(experimentVersions).where(inArray(experimentVersions.id, versionIds))
+    : [];
+  const people = await namesOf(
+    db,
+    trialRows.flatMap((t) => [t.wizardId, t.createdBy]),
+  );
+  const events = await eventsOfTrials(db, trialIds);
+  const namesByRun = new Map<string, Promise<ActionNames>>();
+  const order = new Map(trialIds.map((id, i) => [id, i]));
+  return Promise.all(
+    trialRows
+      .sort((a, b) => order.get(a.id)! - order.get(b.id)!)
+      .map(async (trial) => {
+        const version = versions.find((v) => v.id === trial.versionId);
+        const protocol = version?.snapshot ?? trial.rehearsalSnapshot;
+        // Every trial runs a published version or, for a rehearsal, the draft frozen when it began.
+        if (!protocol) throw new Error(`Trial ${trial.id} has neither a version nor a rehearsal snapshot`);
+        // Trials of one version run with one plugin document: its names are read once.
+        const run = trial.versionId ?? `draft:${trial.experimentId}`;
+        if (!namesByRun.has(run)) namesByRun.set(run, trialActionNames(db, trial.id));
+        return {
+          trial,
+          // Who ran it and who created it: two named fields, as the trial page shows them.
+          people: {
+            wizard: (trial.wizardId && people.get(trial.wizardId)) ?? null,
+            createdBy: (trial.createdBy && people.get(trial.createdBy)) ?? null,
+          },
+          version,
+          protocol,
+          events: events.get(trial.id)!,
+          names: await namesByRun.get(run)!,
+        };
+      }),
+  );
+}
+
+/** Everything of these trials that their files hold, read in one query per kind of row. */
+export async function readTrials(db: Database, trialIds: string[]) {
+  const [read, marked, recordings, questionnaires, samples] = await Promise.all([
+    trialsEventsOf(db, trialIds),
+    trialIds.length
+      ? db
+          .select({
+            trialId: annotations.trialId,
+            relMs: annotations.relMs,
+            label: annotations.label,
+            note: annotations.note,
+            authorName: user.name,
+          })
+          .from(annotations)
+          .leftJoin(user, eq(user.id, annotations.authorId))
+          .where(inArray(annotations.trialId, trialIds))
+          .orderBy(asc(annotations.relMs))
+      : [],
+    trialIds.length
+      ? db
+          .select()
+          .from(mediaRecordings)
+          .where(inArray(mediaRecordings.trialId, trialIds))
+          .orderBy(asc(mediaRecordings.createdAt))
+      : [],
+    trialIds.length ? submitted(db, inArray(questionnaireLinks.trialId, trialIds)) : [],
+    trialIds.length
+      ? db
+          .select({
+            trialId: trialSamples.trialId,
+            topic: trialSamples.topic,
+            relMs: trialSamples.relMs,
+            data: trialSamples.data,
+          })
+          .from(trialSamples)
+          .where(inArray(trialSamples.trialId, trialIds))
+          .orderBy(asc(trialSamples.relMs), asc(trialSamples.id))
+      : [],
+  ]);
+  const markedBy = byTrial(trialIds, marked);
+  const recordingsBy = byTrial(trialIds, recordings);
+  const questionnairesBy = byTrial(trialIds, questionnaires);
+  const samplesBy = byTrial(trialIds, samples);
+  return read.map((r) => ({
+    ...r,
+    marked: markedBy.get(r.trial.id)!.map(({ trialId: _, ...a }) => a),
+    recordings: recordingsBy.get(r.trial.id)!,
+    questionnaires: questionnairesBy.get(r.trial.id)!,
+    samples: samplesBy.get(r.trial.id)!.map(({ trialId: _, ...sample }) => sample),
+  }));
+}
+
+type ReadTrial = Awaited<ReturnType<typeof readTrials>>[number];
 
 function fileOf(
-  {
-    trial,
-    people,
-    version,
-    protocol,
-    events,
-    marked,
-    recordings,
-    questionnaires,
-    names,
-  }: Awaited<ReturnType<typeof readTrial>>,
+  { trial, people, version, protocol, events, marked, recordings, questionnaires, names, samples }: ReadTrial,
   format: TrialFormat,
 ) {
   const name = `trial-${trial.id}`;
@@ -82,6 +155,12 @@ function fileOf(
       filename: `${name}-events.csv`,
       contentType: "text/csv; charset=utf-8",
       body: eventsCsv(trial.id, events, people, named),
+    };
+  if (format === "samples")
+    return {
+      filename: `${name}-samples.csv`,
+      contentType: "text/csv; charset=utf-8",
+      body: samplesCsv(trial.id, samples),
     };
   if (format === "eaf") {
     const video = recordings.find((r) => r.status === "complete" && r.kind === "video");
@@ -133,18 +212,28 @@ function fileOf(
         durationMs: m.durationMs,
         url: `/api/recordings/${m.id}/media`,
       })),
+      samples,
     },
     named,
   );
   return { filename: `${name}.json`, contentType: "application/json", body: record };
 }
 
-export async function trialFile(db: Database, trialId: string, format: TrialFormat) {
-  return fileOf(await readTrial(db, trialId), format);
+export async function trialFile(db: Database, trialId: string, format: TrialFormat | "mcap") {
+  const [read] = await readTrials(db, [trialId]);
+  if (format !== "mcap") return fileOf(read!, format);
+  const { trial, events, samples } = read!;
+  return {
+    filename: `trial-${trial.id}.mcap`,
+    contentType: "application/octet-stream",
+    body: new Uint8Array(await trialMcap({ trialId: trial.id, t0: trial.t0 ?? trial.createdAt, events, samples })),
+  };
 }
 
-/** Several formats of one trial from one reading of it (the study archive's case). */
-export async function trialFiles(db: Database, trialId: string, formats: TrialFormat[]) {
-  const data = await readTrial(db, trialId);
-  return formats.map((format) => fileOf(data, format));
+/** Several formats of each of these trials, from one batch read of them (the study archive's case). */
+export async function trialsFiles(db: Database, trialIds: string[], formats: TrialFormat[]) {
+  return (await readTrials(db, trialIds)).map((read) => ({
+    trialId: read.trial.id,
+    files: formats.map((format) => fileOf(read, format)),
+  }));
 }

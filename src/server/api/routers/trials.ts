@@ -182,11 +182,16 @@ export const trialsRouter = router({
     return { edited: ctx.row.id };
   }),
 
-  /** The trial as a file: its events as tidy CSV, or the full record (protocol embedded) as JSON. */
+  /** The trial as a file: events or robot samples as tidy CSV, the full record (protocol embedded) as JSON, ELAN or MCAP. */
   export: studyProcedure(
     "data.read",
     "trial",
-    z.object({ trialId: id, format: z.enum(["csv", "json", "eaf"], { error: "must be csv, json or eaf" }) }),
+    z.object({
+      trialId: id,
+      format: z.enum(["csv", "json", "eaf", "samples", "mcap"], {
+        error: "must be csv, json, eaf, samples or mcap",
+      }),
+    }),
   ).query(async ({ ctx, input }) => {
     await assertNotWithdrawn(ctx.db, ctx.row.id);
     return trialFile(ctx.db, ctx.row.id, input.format);

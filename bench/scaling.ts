@@ -1,0 +1,269 @@
+// bench/scaling: how each path's cost grows with a study. A study of 10,
+// 100 and 1,000 trials (200 events each) and a trial of 1k, 10k and 100k
+// events (unscripted lines: requested, dispatched, completed), seeded straight
+// in a scratch database; each path is called as the web server calls it (the
+// tRPC procedure, in process) and timed, with the process's peak memory above
+// its level before the call. The growth ratio is the time's growth over the
+// size's (1.0 is linear). Targets (issue 15): at 1,000 trials the Trials tab,
+// Results tab and first byte of the zip under 1 s; at 100k events opening the
+// trial under 1 s and the exports under 2 s. The analysis page in Chromium is
+// bench/analysis (it needs the built app).
+import { eventsSince } from "../src/store/event-store";
+import { createDatabase } from "../src/store/client";
+import { fold } from "../src/core/trial/fold";
+import type { TrialEvent, TrialProtocol } from "../src/core/trial";
+import { buildFixture, publishedVersion } from "../tests/api/fixture";
+import { percentile, scratchDatabase } from "./support";
+
+const RUNS = 3;
+const STUDY_SIZES = [10, 100, 1000];
+const EVENTS_PER_TRIAL = 200;
+const TRIAL_SIZES = [1000, 10_000, 100_000];
+
+const database = await scratchDatabase();
+const { db, close } = createDatabase(database.url, { max: 4 });
+const sql = db.$client;
+
+/** A trial's log of unscripted lines, as bench/analysis seeds it: each action requested, dispatched, completed. */
+function eventRows(trialId: string, count: number, t0: Date) {
+  return Array.from({ length: count }, (_, i) => {
+    const relMs = i * 100;
+    const actionId = `a${Math.floor(i / 3)}`;
+    const body =
+      i === 0
+        ? { type: "trial.started" }
+        : i === count - 1
+          ? { type: "trial.completed" }
+          : [
+              {
+                type: "action.requested",
+                stepId: null,
+                actionId,
+                actionType: "say",
+                parameters: { text: `Line ${i}` },
+                scripted: false,
+                deviation: "unscripted",
+              },
+              { type: "action.dispatched", actionId },
+              { type: "action.completed", actionId },
+            ][i % 3]!;
+    return {
+      trial_id: trialId,
+      seq: i + 1,
+      type: body.type,
+      server_time: new Date(t0.getTime() + relMs).toISOString(),
+      rel_ms: relMs,
+      action_id: "actionId" in body ? body.actionId : null,
+      payload: JSON.stringify(body),
+      deviation: "deviation" in body,
+    };
+  });
+}
+
+async function insertEvents(rows: ReturnType<typeof eventRows>) {
+  for (let start = 0; start < rows.length; start += 5000) {
+    await sql`insert into trial_events ${sql(rows.slice(start, start + 5000), "trial_id", "seq", "type", "server_time", "rel_ms", "action_id", "payload", "deviation")}`;
+  }
+}
+
+/** `count` completed trials of a new study, each with its consenting participant and `events` events. */
+async function seedStudy(f: Awaited<ReturnType<typeof buildFixture>>, count: number, events: number) {
+  const owner = f.api("owner");
+  const study = await f.newStudy(`Scaling ${count}×${events}`);
+  const { experiment, version } = await publishedVersion(owner, study.id);
+  const t0 = new Date(Date.now() - 3_600_000);
+  const trialIds: string[] = [];
+  for (let start = 0; start < count; start += 500) {
+    const n = Math.min(500, count - start);
+    const people = Array.from({ length: n }, (_, k) => ({
+      id: crypto.randomUUID(),
+      study_id: study.id,
+      code: `P${String(start + k + 1).padStart(4, "0")}`,
+      consent_status: "given",
+    }));
+    await sql`insert into participants ${sql(people)}`;
+    const rows = people.map((p, k) => ({
+      id: crypto.randomUUID(),
+      study_id: study.id,
+      experiment_id: experiment.id,
+      version_id: version.id,
+      participant_id: p.id,
+      wizard_id: f.people.wizard.id,
+      created_by: f.people.owner.id,
+      status: "completed",
+      t0: t0.toISOString(),
+      ended_at: new Date(t0.getTime() + events * 100).toISOString(),
+      created_at: new Date(t0.getTime() + start + k).toISOString(),
+    }));
+    await sql`insert into trials ${sql(rows)}`;
+    trialIds.push(...rows.map((r) => r.id));
+  }
+  for (const id of trialIds) await insertEvents(eventRows(id, events, t0));
+  return { study, version, trialIds };
+}
+
+/** Runs `path` RUNS times: the median time and the largest peak of memory above where it started. */
+async function measure(path: () => Promise<unknown>) {
+  const times: number[] = [];
+  let peakMb = 0;
+  for (let i = 0; i < RUNS; i++) {
+    Bun.gc(true);
+    const before = process.memoryUsage().rss;
+    let peak = before;
+    const sampler = setInterval(() => {
+      peak = Math.max(peak, process.memoryUsage().rss);
+    }, 5);
+    const started = performance.now();
+    await path();
+    times.push(performance.now() - started);
+    clearInterval(sampler);
+    peak = Math.max(peak, process.memoryUsage().rss);
+    peakMb = Math.max(peakMb, (peak - before) / 1e6);
+  }
+  return {
+    ms: percentile(
+      [...times].sort((a, b) => a - b),
+      50,
+    ),
+    peakMb,
+  };
+}
+
+function print(
+  path: string,
+  sizes: number[],
+  unit: string,
+  results: { ms: number; peakMb: number }[],
+  targetMs?: number,
+) {
+  console.log(`\n${path}`);
+  results.forEach((r, i) => {
+    const growth =
+      i === 0 ? "" : `  growth ${(r.ms / results[i - 1]!.ms / (sizes[i]! / sizes[i - 1]!)).toFixed(2)} of linear`;
+    const target =
+      targetMs === undefined || i < results.length - 1
+        ? ""
+        : `  target < ${targetMs} ms: ${r.ms < targetMs ? "met" : "NOT met"} (ratio ${(r.ms / targetMs).toFixed(2)})`;
+    console.log(
+      `  ${String(sizes[i]).padStart(7)} ${unit.padEnd(7)} n=${RUNS}  p50=${r.ms.toFixed(1).padStart(9)} ms  peak memory +${r.peakMb.toFixed(1).padStart(6)} MB${growth}${target}`,
+    );
+  });
+}
+
+try {
+  const f = await buildFixture(db);
+  const owner = f.api("owner");
+  console.log(
+    `Machine load (1, 5, 15 min): ${(await Bun.file("/proc/loadavg").text()).split(" ").slice(0, 3).join(" ")}`,
+  );
+
+  const studiesBySize: Awaited<ReturnType<typeof seedStudy>>[] = [];
+  for (const size of STUDY_SIZES) studiesBySize.push(await seedStudy(f, size, EVENTS_PER_TRIAL));
+  const trialsBySize: Awaited<ReturnType<typeof seedStudy>>[] = [];
+  for (const size of TRIAL_SIZES) trialsBySize.push(await seedStudy(f, 1, size));
+  await sql`analyze`;
+
+  const byStudy = async (path: (studyId: string) => Promise<unknown>) => {
+    const results = [];
+    for (const { study } of studiesBySize) results.push(await measure(() => path(study.id)));
+    return results;
+  };
+  const byTrial = async (path: (trialId: string, protocol: TrialProtocol) => Promise<unknown>) => {
+    const results = [];
+    for (const { trialIds, version } of trialsBySize)
+      results.push(await measure(() => path(trialIds[0]!, version.snapshot as TrialProtocol)));
+    return results;
+  };
+  const drain = async (body: ReadableStream<Uint8Array>) => {
+    const reader = body.getReader();
+    let bytes = 0;
+    for (let read = await reader.read(); !read.done; read = await reader.read()) bytes += read.value.length;
+    return bytes;
+  };
+
+  console.log(`Studies of ${STUDY_SIZES.join(", ")} trials (${EVENTS_PER_TRIAL} events each):`);
+  print(
+    "Trials tab (trials.list)",
+    STUDY_SIZES,
+    "trials",
+    await byStudy((studyId) => owner.trials.list({ studyId })),
+    1000,
+  );
+  print(
+    "Results tab (studies.figures and resultsByCondition)",
+    STUDY_SIZES,
+    "trials",
+    await byStudy((studyId) =>
+      Promise.all([owner.studies.figures({ studyId }), owner.studies.resultsByCondition({ studyId })]),
+    ),
+    1000,
+  );
+  print(
+    "Study zip: first byte",
+    STUDY_SIZES,
+    "trials",
+    await byStudy(async (studyId) => {
+      const { body } = await owner.studies.exportArchive({ studyId });
+      const reader = body.getReader();
+      await reader.read();
+      await reader.cancel();
+    }),
+    1000,
+  );
+  const zipBytes: number[] = [];
+  print(
+    "Study zip: whole",
+    STUDY_SIZES,
+    "trials",
+    await byStudy(async (studyId) => {
+      zipBytes.push(await drain((await owner.studies.exportArchive({ studyId })).body));
+    }),
+  );
+  console.log(`  (zip sizes: ${[0, 1, 2].map((i) => `${(zipBytes[i * RUNS]! / 1e6).toFixed(1)} MB`).join(", ")})`);
+  print(
+    "Analysis API events table of the study (/api/v1)",
+    STUDY_SIZES,
+    "trials",
+    await byStudy(async (studyId) => {
+      const { studyEventsTable } = await import("../src/server/analysis/tables");
+      return studyEventsTable(db, studyId);
+    }),
+  );
+
+  console.log(`\nTrials of ${TRIAL_SIZES.join(", ")} events (unscripted lines):`);
+  print(
+    "Opening the trial (its events read and folded)",
+    TRIAL_SIZES,
+    "events",
+    await byTrial(async (trialId, protocol) =>
+      fold(protocol, (await eventsSince(db, trialId)) as unknown as TrialEvent[]),
+    ),
+    1000,
+  );
+  print(
+    "Analysis page's data (trials.get and trials.events)",
+    TRIAL_SIZES,
+    "events",
+    await byTrial((trialId) => Promise.all([owner.trials.get({ trialId }), owner.trials.events({ trialId })])),
+  );
+  print(
+    "Events export (CSV)",
+    TRIAL_SIZES,
+    "events",
+    await byTrial((trialId) => owner.trials.export({ trialId, format: "csv" })),
+    2000,
+  );
+  print(
+    "Trial record export (JSON)",
+    TRIAL_SIZES,
+    "events",
+    await byTrial((trialId) => owner.trials.export({ trialId, format: "json" })),
+    2000,
+  );
+  console.log(
+    `\nMachine load after (1, 5, 15 min): ${(await Bun.file("/proc/loadavg").text()).split(" ").slice(0, 3).join(" ")}`,
+  );
+} finally {
+  await close();
+  await database.stop();
+}
