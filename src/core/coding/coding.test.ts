@@ -1,7 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { agreement, type CodeMark, cohenKappa, confusion, NONE, sliceCodes, strength } from "./agreement";
 import { checkScheme, codeForKey } from "./scheme";
-import { blankScheme, SCHEME_TEMPLATES, schemeTemplate } from "./templates";
+import { blankScheme, newCode, SCHEME_TEMPLATES, schemeTemplate } from "./templates";
 
 const code = (id: string, key: string, kind: "point" | "state" = "point") => ({
   id,
@@ -249,5 +249,16 @@ describe("slicing two observers' codes", () => {
   it("refuses slices of different lengths, and a code the set does not have", () => {
     expect(() => confusion(["a"], [], ["a"])).toThrow("1 and 0 slices");
     expect(() => confusion(["a"], ["b"], ["a"])).toThrow('"b" is not a category');
+  });
+});
+
+describe("a new code", () => {
+  it("takes the first key no code has, and stays valid when added", () => {
+    const s = blankScheme("Mine");
+    const added = newCode(s);
+    expect(added.key).toBe("2");
+    expect(added.id).toBe("code-2");
+    s.sets[0]!.codes.push(added);
+    expect(checkScheme(s).ok).toBe(true);
   });
 });

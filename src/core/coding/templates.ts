@@ -76,3 +76,23 @@ export const blankScheme = (name: string): Scheme => ({
     },
   ],
 });
+
+const KEY_ORDER = "123456789abcdefghijklmnopqrstuvwxyz0";
+const COLOURS = ["#2563eb", "#dc2626", "#16a34a", "#d97706", "#7c3aed", "#0891b2", "#db2777", "#64748b"];
+
+/** A new code for a set of a scheme: on the first key no code of the scheme has taken. */
+export function newCode(scheme: Scheme): Scheme["sets"][number]["codes"][number] {
+  const codes = scheme.sets.flatMap((s) => s.codes);
+  const taken = new Set(codes.map((c) => c.key));
+  const ids = new Set(codes.map((c) => c.id));
+  let n = codes.length + 1;
+  while (ids.has(`code-${n}`)) n++;
+  return {
+    id: `code-${n}`,
+    name: `Code ${n}`,
+    key: [...KEY_ORDER].find((k) => !taken.has(k)) ?? "",
+    colour: COLOURS[codes.length % COLOURS.length]!,
+    kind: "point",
+    modifiers: [],
+  };
+}

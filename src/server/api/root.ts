@@ -8,6 +8,7 @@ import { participantsRouter } from "./routers/participants";
 import { formRouter } from "./routers/form";
 import { pluginsRouter } from "./routers/plugins";
 import { questionnairesRouter } from "./routers/questionnaires";
+import { codingRouter } from "./routers/coding";
 import { recordingsRouter } from "./routers/recordings";
 import { audioRouter } from "./routers/audio";
 import { sessionsRouter } from "./routers/sessions";
@@ -27,6 +28,7 @@ export const appRouter = router({
   conditions: conditionsRouter,
   sessions: sessionsRouter,
   questionnaires: questionnairesRouter,
+  coding: codingRouter,
   form: formRouter,
   recordings: recordingsRouter,
   audio: audioRouter,

@@ -7,3 +7,4 @@ export * from "./sessions";
 export * from "./questionnaires";
 export * from "./security";
 export * from "./access-tokens";
+export * from "./coding";

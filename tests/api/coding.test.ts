@@ -1,0 +1,102 @@
+// Coding schemes through the API: made from a template, checked and versioned
+// like questionnaires; codes added afterwards in one's own tier only.
+import { afterAll, describe, expect, it } from "vitest";
+import { schemeTemplate } from "../../src/core/coding/templates";
+import { freshDatabase } from "../support/db";
+import { buildFixture, publishedVersion } from "./fixture";
+
+const { db, close } = await freshDatabase();
+const f = await buildFixture(db);
+afterAll(close);
+
+const owner = f.api("owner");
+const study = await f.newStudy();
+const { version } = await publishedVersion(owner, study.id);
+const trial = await owner.trials.create({ versionId: version.id });
+
+describe("coding schemes", () => {
+  it("starts from a template, refuses a broken scheme with every problem named, and publishes numbered versions", async () => {
+    const { id } = await owner.coding.createScheme({ studyId: study.id, template: "wizard-interventions" });
+    expect((await f.api("observer").coding.scheme({ codingSchemeId: id })).draft).toEqual(
+      schemeTemplate("wizard-interventions"),
+    );
+    const broken = schemeTemplate("wizard-interventions");
+    broken.sets[0]!.codes[1]!.key = "t";
+    broken.sets[0]!.codes[2]!.colour = "orange";
+    await expect(owner.coding.saveScheme({ codingSchemeId: id, definition: broken })).rejects.toMatchObject({
+      code: "BAD_REQUEST",
+      message:
+        'Please correct: definition.sets.0.codes.2.colour: must be a colour like #3b82f6; definition.sets.0.codes.1.key: "t" is already the key of Technical',
+    });
+    const first = await owner.coding.publishScheme({ codingSchemeId: id });
+    const renamed = { ...schemeTemplate("wizard-interventions"), name: "Interventions (v2)" };
+    await owner.coding.saveScheme({ codingSchemeId: id, definition: renamed });
+    const second = await owner.coding.publishScheme({ codingSchemeId: id });
+    expect([first.version, second.version]).toEqual([1, 2]);
+    expect(first.hash).not.toBe(second.hash);
+    expect(await f.api("observer").coding.schemes({ studyId: study.id })).toContainEqual({
+      id,
+      name: "Interventions (v2)",
+      latestVersion: 2,
+    });
+    // Observers code with the latest published version.
+    const forTrial = await f.api("observer").coding.forTrial({ trialId: trial.id });
+    expect(forTrial.schemes.find((s) => s.schemeId === id)).toMatchObject({ versionId: second.id, version: 2 });
+  });
+
+  it("keeps each observer's codes their own: added, moved and deleted by them alone", async () => {
+    const { id } = await owner.coding.createScheme({ studyId: study.id, template: "participant-engagement" });
+    const { id: schemeVersionId } = await owner.coding.publishScheme({ codingSchemeId: id });
+    const observer = f.api("observer");
+    const gaze = await observer.coding.addCode({
+      trialId: trial.id,
+      schemeVersionId,
+      setId: "gaze",
+      codeId: "robot",
+      startMs: 1000,
+      endMs: 4000,
+    });
+    const smile = await f.api("researcher").coding.addCode({
+      trialId: trial.id,
+      schemeVersionId,
+      setId: "expression",
+      codeId: "smile",
+      startMs: 2500,
+      modifiers: ["laugh"],
+    });
+    await expect(
+      observer.coding.addCode({ trialId: trial.id, schemeVersionId, setId: "gaze", codeId: "robot", startMs: 5 }),
+    ).rejects.toMatchObject({ message: "Please correct: endMs: a state must end at or after its start" });
+    await expect(
+      observer.coding.addCode({ trialId: trial.id, schemeVersionId, setId: "gaze", codeId: "blink", startMs: 5 }),
+    ).rejects.toMatchObject({ message: "“Participant engagement” has no code gaze/blink." });
+    await expect(
+      observer.coding.addCode({
+        trialId: trial.id,
+        schemeVersionId,
+        setId: "expression",
+        codeId: "smile",
+        startMs: 5,
+        modifiers: ["grin"],
+      }),
+    ).rejects.toMatchObject({ message: "“Smile” has no modifier “grin”." });
+    await expect(observer.coding.deleteCode({ codeEventId: smile.id })).rejects.toMatchObject({
+      code: "FORBIDDEN",
+      message: "This code is another observer's: only they may change it.",
+    });
+    await expect(owner.coding.moveCode({ codeEventId: gaze.id, startMs: 0, endMs: 1 })).rejects.toMatchObject({
+      code: "FORBIDDEN",
+    });
+    expect(await observer.coding.moveCode({ codeEventId: gaze.id, startMs: 1200, endMs: 4200 })).toMatchObject({
+      startMs: 1200,
+      endMs: 4200,
+    });
+    const tiers = (await owner.coding.codes({ trialId: trial.id })).filter((c) => c.versionId === schemeVersionId);
+    expect(tiers.map((c) => [c.observerName, c.codeId, c.startMs, c.endMs, c.modifiers])).toEqual([
+      ["observer", "robot", 1200, 4200, []],
+      ["researcher", "smile", 2500, null, ["laugh"]],
+    ]);
+    await f.api("researcher").coding.deleteCode({ codeEventId: smile.id });
+    expect((await owner.coding.codes({ trialId: trial.id })).map((c) => c.id)).not.toContain(smile.id);
+  });
+});
