@@ -7,7 +7,7 @@ import { eq, inArray } from "drizzle-orm";
 import type { z } from "zod";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { clientMessageSchema, commandSchema, id } from "../../src/core/socket/messages";
-import { annotations, trialEvents, trials } from "../../src/store/schema";
+import { annotations, codeEvents, trialEvents, trials } from "../../src/store/schema";
 import { socketFixture, STUDY_ROLES_HERE, type Person } from "../support/socket-fixture";
 
 type Fixture = Awaited<ReturnType<typeof socketFixture>>;
@@ -19,6 +19,7 @@ interface Ids {
   trialId: string;
   studyId: string;
   recordingId: string;
+  schemeVersionId: string;
 }
 const ID_KEYS: Record<string, (side: Side, ids: Record<Side, Ids>) => string> = {
   actionId: (side) => `${side === "own" ? "A" : "B"}-ask`,
@@ -27,6 +28,7 @@ const ID_KEYS: Record<string, (side: Side, ids: Record<Side, Ids>) => string> = 
   recordingId: (side, ids) => ids[side].recordingId,
   trialId: (side, ids) => ids[side].trialId,
   studyId: (side, ids) => ids[side].studyId,
+  schemeVersionId: (side, ids) => ids[side].schemeVersionId,
 };
 
 /** A message's template: each field a fixed value, or an id key to fill per variant. */
@@ -47,6 +49,7 @@ function templateOf(schema: z.ZodObject, name: string): Template {
     else if (field.def.type === "string") fields[key] = "Matrix text";
     else if (field.def.type === "number") fields[key] = 0;
     else if (field.def.type === "record") fields[key] = {};
+    else if (field.def.type === "array") fields[key] = [];
     else if (key === "command") command = { name: "", fields: {}, idKeys: [] };
     else
       throw new Error(
@@ -113,6 +116,7 @@ describe.sequential("every socket message × every role × own, other and mixed 
       f.b.studyId,
       bTrial,
       bRecording,
+      f.b.schemeVersionId,
       ...Object.values(f.b.people),
       "B-step-1",
       "B-step-2",
@@ -133,6 +137,7 @@ describe.sequential("every socket message × every role × own, other and mixed 
         "hello",
         "ping",
         "annotate",
+        "code",
         "replay",
         "replay_stop",
         ...commandSchema.options.map((c) => `command ${String(c.shape.kind.value)}`),
@@ -147,8 +152,13 @@ describe.sequential("every socket message × every role × own, other and mixed 
       aTrials.push(trialId);
       const usesRecording = [...t.idKeys, ...(t.command?.idKeys ?? [])].includes("recordingId");
       const ids: Record<Side, Ids> = {
-        own: { trialId, studyId: f.a.studyId, recordingId: usesRecording ? await f.recording(trialId) : "" },
-        other: { trialId: bTrial, studyId: f.b.studyId, recordingId: bRecording },
+        own: {
+          trialId,
+          studyId: f.a.studyId,
+          recordingId: usesRecording ? await f.recording(trialId) : "",
+          schemeVersionId: f.a.schemeVersionId,
+        },
+        other: { trialId: bTrial, studyId: f.b.studyId, recordingId: bRecording, schemeVersionId: f.b.schemeVersionId },
       };
       const socket = await f.open(who, trialId);
       if (who === "outsider") {
@@ -186,6 +196,11 @@ describe.sequential("every socket message × every role × own, other and mixed 
     const bEvents = await f.db.select().from(trialEvents).where(eq(trialEvents.trialId, bTrial));
     expect(bEvents.map((e) => e.type)).toEqual(["trial.started", "step.entered"]);
     expect(await f.db.select().from(annotations).where(eq(annotations.trialId, bTrial))).toEqual([]);
+    expect(await f.db.select().from(codeEvents).where(eq(codeEvents.trialId, bTrial))).toEqual([]);
+    expect(
+      await f.db.select().from(codeEvents).where(eq(codeEvents.versionId, f.b.schemeVersionId)),
+      "no code of study A's trials points at study B's scheme",
+    ).toEqual([]);
     expect((await f.db.select({ w: trials.wizardId }).from(trials).where(eq(trials.id, bTrial)))[0]!.w).toBe(
       f.b.people.wizard,
     );

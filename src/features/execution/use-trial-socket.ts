@@ -19,6 +19,8 @@ import {
 import { useTRPC } from "@/lib/trpc";
 
 export type Annotation = Extract<ServerMessage, { type: "annotation" }>["annotation"];
+/** One of my code events as the runtime confirmed it. */
+export type LiveCode = Extract<ServerMessage, { type: "codes" }>["codes"][number];
 type Outcome = { ok: true } | { ok: false; reason: string };
 
 export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
@@ -27,6 +29,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const [events, setEvents] = useState<WireEvent[]>([]);
   const [viewers, setViewers] = useState<Viewer[]>([]);
   const [annotations, setAnnotations] = useState<Annotation[]>([]);
+  // My own codes as the runtime wrote them this visit (the page merges them with those loaded before).
+  const [codes, setCodes] = useState<LiveCode[]>([]);
   const [connected, setConnected] = useState(false);
   const [robot, setRobot] = useState<{ connected: boolean; detail?: string } | null>(null);
   // About the connection (lost, shut out, another version): stays until the connection changes.
@@ -91,6 +95,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         else if (m.type === "presence") setViewers(m.viewers);
         else if (m.type === "robot") setRobot({ connected: m.connected, detail: m.detail });
         else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
+        else if (m.type === "codes")
+          setCodes((c) => [...c.filter((x) => !m.codes.some((y) => y.id === x.id)), ...m.codes]);
         else if (m.type === "halted") {
           const requestId = m.requestId;
           setTimeout(() => {
@@ -169,6 +175,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     events,
     viewers,
     annotations,
+    codes,
     connected,
     robot,
     mayRun,
@@ -185,5 +192,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
             : command,
       ),
     annotate: (label: string, note = "") => request((requestId) => ({ type: "annotate", requestId, label, note })),
+    code: (mark: { schemeVersionId: string; setId: string; codeId: string; modifiers?: string[] }) =>
+      request((requestId) => ({ type: "code", requestId, modifiers: [], ...mark })),
   };
 }
