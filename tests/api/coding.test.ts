@@ -38,6 +38,7 @@ describe("coding schemes", () => {
       id,
       name: "Interventions (v2)",
       latestVersion: 2,
+      latestVersionId: second.id,
     });
     // Observers code with the latest published version.
     const forTrial = await f.api("observer").coding.forTrial({ trialId: trial.id });
@@ -98,5 +99,35 @@ describe("coding schemes", () => {
     ]);
     await f.api("researcher").coding.deleteCode({ codeEventId: smile.id });
     expect((await owner.coding.codes({ trialId: trial.id })).map((c) => c.id)).not.toContain(smile.id);
+  });
+
+  it("computes Cohen's kappa per set between the two observers, per trial and pooled", async () => {
+    const { id } = await owner.coding.createScheme({ studyId: study.id, template: "participant-engagement" });
+    const { id: schemeVersionId } = await owner.coding.publishScheme({ codingSchemeId: id });
+    const gaze = async (who: "observer" | "researcher", codeId: string, startMs: number, endMs: number) =>
+      f.api(who).coding.addCode({ trialId: trial.id, schemeVersionId, setId: "gaze", codeId, startMs, endMs });
+    await gaze("observer", "robot", 0, 2000);
+    await gaze("observer", "away", 2000, 4000);
+    await gaze("researcher", "robot", 0, 3000);
+    await gaze("researcher", "away", 3000, 4000);
+    const result = await f.api("observer").coding.agreement({ schemeVersionId });
+    expect(result.observers.map((o) => o.name).sort()).toEqual(["observer", "researcher"]);
+    const [pair] = result.pairs;
+    const gazeAgreement = pair!.pooled.find((s) => s.setId === "gaze")!;
+    const flip =
+      pair!.a === f.people.observer.id
+        ? (t: number[][]) => t
+        : (t: number[][]) => t[0]!.map((_, j) => t.map((r) => r[j]!));
+    expect(flip(gazeAgreement.table.counts)).toEqual([
+      [2, 0, 0, 0],
+      [0, 0, 0, 0],
+      [1, 0, 1, 0],
+      [0, 0, 0, 0],
+    ]);
+    expect(gazeAgreement.table.categories).toEqual(["robot", "task", "away", "(none)"]);
+    expect(gazeAgreement.kappa).toBeCloseTo(0.5, 6);
+    // Nobody coded an expression: no slices differ, but chance agreement is certain, so kappa is undefined.
+    expect(pair!.pooled.find((s) => s.setId === "expression")!.kappa).toBeNull();
+    expect(pair!.trials.map((t) => t.trialId)).toEqual([trial.id]);
   });
 });

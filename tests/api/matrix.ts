@@ -289,6 +289,10 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   ],
   "coding.forTrial": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
   "coding.codes": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
+  "coding.agreement": [
+    ["owner", "researcher", "observer"],
+    async (f, b) => ({ schemeVersionId: (await codingRows(f.api("owner"), b.study.id, b.trial.id)).schemeVersionId }),
+  ],
   "coding.addCode": [
     MEMBERS,
     async (f, b) => ({

@@ -9,6 +9,7 @@ import { SCHEME_TEMPLATES, blankScheme, schemeTemplate } from "@/core/coding/tem
 import { codeOfTrial, codeView, trialCodes } from "@/store/code-events";
 import { qualified } from "@/store/qualified";
 import { codeEvents, codingSchemeVersions, codingSchemes, user } from "@/store/schema";
+import { studyAgreement } from "../../coding/agreement";
 import { checkedScheme, insertScheme, publishScheme, publishedSchemes } from "../../coding/schemes";
 import { router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
@@ -36,6 +37,9 @@ export const codingRouter = router({
         latestVersion: sql<
           number | null
         >`(select max(${codingSchemeVersions.version}) from ${codingSchemeVersions} where ${codingSchemeVersions.schemeId} = ${qualified(codingSchemes.id)})`,
+        latestVersionId: sql<
+          string | null
+        >`(select ${codingSchemeVersions.id} from ${codingSchemeVersions} where ${codingSchemeVersions.schemeId} = ${qualified(codingSchemes.id)} order by ${codingSchemeVersions.version} desc limit 1)`,
       })
       .from(codingSchemes)
       .where(eq(codingSchemes.studyId, ctx.studyId))
@@ -94,6 +98,18 @@ export const codingRouter = router({
       .orderBy(asc(codeEvents.startMs), asc(codeEvents.id));
     return rows.map((r) => ({ ...codeView(r.code), observerName: r.observerName ?? "(former member)" }));
   }),
+
+  /**
+   * Cohen's kappa per set between every two observers who coded with this
+   * version: per trial both coded, and pooled over them (the study's figure).
+   */
+  agreement: studyProcedure(
+    "data.read",
+    "schemeVersion",
+    z.object({ schemeVersionId: id, sliceMs: z.number().int().min(100).max(60_000).default(1000) }),
+  ).query(({ ctx, input }) =>
+    studyAgreement(ctx.db, ctx.studyId, ctx.row.id, checkedScheme(ctx.row.definition), input.sliceMs),
+  ),
 
   /** A code marked afterwards, against the recording, in the caller's own tier. */
   addCode: studyProcedure(
