@@ -376,5 +376,6 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "analysis.samples": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
   "analysis.answers": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
   "analysis.annotations": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
+  "analysis.codes": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
   "analysis.trialEvents": [DATA_READERS, (_f, b) => ({ trialId: b.trial.id })],
 };
