@@ -1,7 +1,10 @@
 // Coding schemes through the API: made from a template, checked and versioned
 // like questionnaires; codes added afterwards in one's own tier only.
 import { afterAll, describe, expect, it } from "vitest";
+import { unzipSync, strFromU8 } from "fflate";
+import { CODE_COLUMNS } from "../../src/core/coding/export";
 import { schemeTemplate } from "../../src/core/coding/templates";
+import { parseCsv } from "../support/csv";
 import { freshDatabase } from "../support/db";
 import { buildFixture, publishedVersion } from "./fixture";
 
@@ -129,5 +132,54 @@ describe("coding schemes", () => {
     // Nobody coded an expression: no slices differ, but chance agreement is certain, so kappa is undefined.
     expect(pair!.pooled.find((s) => s.setId === "expression")!.kappa).toBeNull();
     expect(pair!.trials.map((t) => t.trialId)).toEqual([trial.id]);
+  });
+
+  it("puts every code in the trial's JSON and codes CSV, and the study zip's codes.csv", async () => {
+    const participant = await owner.participants.create({
+      studyId: study.id,
+      code: "P-codes",
+      consentStatus: "given",
+      consentDate: new Date(),
+    });
+    const coded = await owner.trials.create({ versionId: version.id, participantId: participant.id });
+    const { id } = await owner.coding.createScheme({ studyId: study.id, template: "participant-engagement" });
+    const { id: schemeVersionId } = await owner.coding.publishScheme({ codingSchemeId: id });
+    await f.api("observer").coding.addCode({
+      trialId: coded.id,
+      schemeVersionId,
+      setId: "expression",
+      codeId: "hesitation",
+      startMs: 800,
+      modifiers: ["verbal", "gesture"],
+    });
+    await f
+      .api("researcher")
+      .coding.addCode({ trialId: coded.id, schemeVersionId, setId: "gaze", codeId: "away", startMs: 0, endMs: 900 });
+    const rows = [
+      [coded.id, "researcher", "Participant engagement", "1", "Gaze", "Away", "state", "0", "900", ""],
+      [
+        coded.id,
+        "observer",
+        "Participant engagement",
+        "1",
+        "Expression",
+        "Hesitation",
+        "point",
+        "800",
+        "",
+        "verbal; gesture",
+      ],
+    ];
+    const csv = await owner.trials.export({ trialId: coded.id, format: "codes" });
+    expect(csv.filename).toBe(`trial-${coded.id}-codes.csv`);
+    expect(parseCsv(csv.body as string)).toEqual([[...CODE_COLUMNS], ...rows]);
+    const record = JSON.parse((await owner.trials.export({ trialId: coded.id, format: "json" })).body as string);
+    expect(record.schemaVersion).toBe(3);
+    expect(record.codes).toEqual([
+      expect.objectContaining({ observer: "researcher", set: "Gaze", code: "Away", start_ms: 0, end_ms: 900 }),
+      expect.objectContaining({ observer: "observer", code: "Hesitation", end_ms: null, modifiers: "verbal; gesture" }),
+    ]);
+    const archive = unzipSync((await owner.studies.exportArchive({ studyId: study.id })).body as Uint8Array);
+    expect(parseCsv(strFromU8(archive["codes.csv"]!))).toEqual([[...CODE_COLUMNS], ...rows]);
   });
 });

@@ -8,7 +8,8 @@ import type { StoredEvent } from "@/core/trial";
 import type { TrialNames } from "./names";
 
 // 2: the protocol is snapshot schema 2 (robotId; steps say where they lead), the version names its robotId.
-export const TRIAL_RECORD_SCHEMA_VERSION = 2;
+// 3: observers' codes (`codes`, one record per code event as in the codes CSV).
+export const TRIAL_RECORD_SCHEMA_VERSION = 3;
 
 export const EVENT_COLUMNS = [
   "trial_id",
@@ -80,6 +81,8 @@ export interface TrialRecord {
   questionnaires: unknown[];
   /** Recordings of the trial: where to fetch them, and their offset from t0 (ms). */
   recordings: unknown[];
+  /** Observers' code events, one row each as in the codes CSV (CODE_COLUMNS). */
+  codes: Array<Record<string, unknown>>;
 }
 
 export function trialRecordJson(

@@ -96,6 +96,9 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=json`}>
             Download trial record (JSON)
           </a>
+          <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=codes`}>
+            Download codes (CSV)
+          </a>
           <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=eaf`}>
             ELAN (.eaf)
           </a>

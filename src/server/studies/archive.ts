@@ -17,6 +17,9 @@ import { answersCsv } from "@/core/questionnaires/export";
 import { methodsText } from "../experiments/methods";
 import { fileSlug } from "../file-slug";
 import { submitted } from "../questionnaires/responses";
+import { tableCsv } from "@/core/analysis/table";
+import { codesTable } from "@/core/coding/export";
+import { codeRowsOf } from "../coding/rows";
 import { trialFiles } from "../trials/files";
 import { analysedTrials } from "../analysis/tables";
 
@@ -30,9 +33,12 @@ experiments/<name>-v<N>-methods.md
                             robot and plugin version, steps, exact speech, branches, pauses,
                             questionnaires, conditions and assignment, the version's hash
 trials/<id>.json            each trial's full record: protocol version, events,
-                            annotations, questionnaires
+                            annotations, questionnaires, codes
 trials/<id>-events.csv      each trial's events, one row per event (RFC 4180)
-trials/<id>.eaf             each trial as an ELAN document: steps, actions, deviations, annotations
+trials/<id>.eaf             each trial as an ELAN document: steps, actions, deviations, annotations,
+                            and one tier per observer per set of codes
+codes.csv                   every observer's codes: one row per code event (observer, scheme,
+                            set, code, start and end in ms from the trial's start, modifiers)
 questionnaire-answers.csv   every submitted answer: one row per participant x item, then scores
 
 Rehearsals are not included. Participants who withdrew are left out, as are their trials
@@ -128,6 +134,16 @@ export async function studyArchive(db: Database, studyId: string) {
       ),
     ),
     "questionnaire-answers.csv": strToU8(answersCsv(await submitted(db, eq(questionnaireLinks.studyId, studyId)))),
+    "codes.csv": strToU8(
+      tableCsv(
+        codesTable(
+          await codeRowsOf(
+            db,
+            trialRows.map((t) => t.id),
+          ),
+        ),
+      ),
+    ),
   };
   for (const version of versions) {
     const methods = await methodsText(db, version, studyId);

@@ -1,20 +1,23 @@
 // A trial as files: its events as tidy CSV, its full record as JSON (the
 // protocol version embedded, events, annotations, questionnaires,
-// recordings), or an ELAN document for video coding. The trial's download
+// recordings, codes), its codes as tidy CSV, or an ELAN document for video coding. The trial's download
 // and the study's archive both take them from here, reading the trial once.
 import { asc, eq } from "drizzle-orm";
 import { elanDocument } from "@/core/analysis/elan";
+import { tableCsv, tableRecords } from "@/core/analysis/table";
+import { codesTable } from "@/core/coding/export";
 import { eventsCsv, trialRecordJson } from "@/core/analysis/exports";
 import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent } from "@/core/trial";
 import type { Database } from "@/store/client";
 import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/store/schema";
+import { codeRowsOf } from "../coding/rows";
 import { recordingFileName } from "../media/recordings";
 import { submitted } from "../questionnaires/responses";
 import { eventsSince } from "@/store/event-store";
 import { trialActionNames } from "./action-names";
 
-export type TrialFormat = "csv" | "json" | "eaf";
+export type TrialFormat = "csv" | "json" | "eaf" | "codes";
 
 /** The name of an account, or null (none given, or the account was deleted). */
 async function nameOf(db: Database, userId: string | null) {
@@ -58,6 +61,7 @@ async function readTrial(db: Database, trialId: string) {
       .where(eq(mediaRecordings.trialId, trialId))
       .orderBy(asc(mediaRecordings.createdAt)),
     questionnaires: await submitted(db, eq(questionnaireLinks.trialId, trialId)),
+    codes: await codeRowsOf(db, [trialId]),
   };
 }
 
@@ -72,6 +76,7 @@ function fileOf(
     recordings,
     questionnaires,
     names,
+    codes,
   }: Awaited<ReturnType<typeof readTrial>>,
   format: TrialFormat,
 ) {
@@ -83,6 +88,8 @@ function fileOf(
       contentType: "text/csv; charset=utf-8",
       body: eventsCsv(trial.id, events, people, named),
     };
+  if (format === "codes")
+    return { filename: `${name}-codes.csv`, contentType: "text/csv; charset=utf-8", body: tableCsv(codesTable(codes)) };
   if (format === "eaf") {
     const video = recordings.find((r) => r.status === "complete" && r.kind === "video");
     const media = video
@@ -99,6 +106,7 @@ function fileOf(
       date: (trial.t0 ?? trial.createdAt).toISOString(),
       media,
       names,
+      codes,
     });
     return { filename: `${name}.eaf`, contentType: "application/xml; charset=utf-8", body };
   }
@@ -133,6 +141,7 @@ function fileOf(
         durationMs: m.durationMs,
         url: `/api/recordings/${m.id}/media`,
       })),
+      codes: tableRecords(codesTable(codes)),
     },
     named,
   );

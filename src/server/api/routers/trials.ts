@@ -184,7 +184,10 @@ export const trialsRouter = router({
   export: studyProcedure(
     "data.read",
     "trial",
-    z.object({ trialId: id, format: z.enum(["csv", "json", "eaf"], { error: "must be csv, json or eaf" }) }),
+    z.object({
+      trialId: id,
+      format: z.enum(["csv", "json", "eaf", "codes"], { error: "must be csv, json, eaf or codes" }),
+    }),
   ).query(async ({ ctx, input }) => {
     await assertNotWithdrawn(ctx.db, ctx.row.id);
     return trialFile(ctx.db, ctx.row.id, input.format);
