@@ -9,6 +9,8 @@ import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { QuestionnaireAnswers } from "./questionnaire-answers";
+import { AgreementPanel } from "../coding/agreement-panel";
+import { CodeTiers } from "../coding/code-tiers";
 import { AnnotationsEditor } from "./annotations-editor";
 import { TimelineChart } from "./timeline-chart";
 import { RecordingPlayer, useTrialRecording, videoSeconds } from "./recording-player";
@@ -189,6 +191,12 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         </Card>
       </section>
       <AnnotationsEditor trialId={trialId} annotations={annotations.data ?? []} playheadMs={playheadMs} />
+      {t.myRole !== "wizard" && (
+        <>
+          <CodeTiers trialId={trialId} playheadMs={playheadMs} />
+          <AgreementPanel studyId={t.studyId} trialId={trialId} />
+        </>
+      )}
       {samples.data && samples.data.length > 0 && (
         <JointAngles samples={samples.data as Array<{ relMs: number; data: unknown }>} />
       )}
