@@ -107,7 +107,11 @@ describe("the trial events CSV", () => {
 
     const archive = unzipSync((await owner.studies.exportArchive({ studyId: study.id })).body as Uint8Array);
     const files = Object.entries(archive).filter(([name]) => name.endsWith(".csv"));
-    expect(files.map(([name]) => name).sort()).toEqual(["questionnaire-answers.csv", `trials/${trial.id}-events.csv`]);
+    expect(files.map(([name]) => name).sort()).toEqual([
+      "codes.csv",
+      "questionnaire-answers.csv",
+      `trials/${trial.id}-events.csv`,
+    ]);
     expect(inert(strFromU8(archive[`trials/${trial.id}-events.csv`]!))).toEqual([]);
     expect(inert(strFromU8(archive["questionnaire-answers.csv"]!))).toEqual(["-3"]);
   });
