@@ -182,4 +182,15 @@ describe("coding schemes", () => {
     const archive = unzipSync((await owner.studies.exportArchive({ studyId: study.id })).body as Uint8Array);
     expect(parseCsv(strFromU8(archive["codes.csv"]!))).toEqual([[...CODE_COLUMNS], ...rows]);
   });
+
+  it("goes with its study: a study with published schemes and codes is deleted whole", async () => {
+    const doomed = await f.newStudy("Doomed");
+    const { version: v } = await publishedVersion(owner, doomed.id);
+    const t = await owner.trials.create({ versionId: v.id });
+    const { id } = await owner.coding.createScheme({ studyId: doomed.id, template: "wizard-interventions" });
+    const { id: schemeVersionId } = await owner.coding.publishScheme({ codingSchemeId: id });
+    await owner.coding.addCode({ trialId: t.id, schemeVersionId, setId: "intervention", codeId: "hint", startMs: 1 });
+    await owner.studies.delete({ studyId: doomed.id, confirmTitle: "Doomed" });
+    await expect(owner.coding.scheme({ codingSchemeId: id })).rejects.toMatchObject({ code: "NOT_FOUND" });
+  });
 });

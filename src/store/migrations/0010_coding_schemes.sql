@@ -34,8 +34,8 @@ CREATE TABLE "coding_schemes" (
 --> statement-breakpoint
 ALTER TABLE "code_events" ADD CONSTRAINT "code_events_trial_id_trials_id_fk" FOREIGN KEY ("trial_id") REFERENCES "public"."trials"("id") ON DELETE cascade ON UPDATE no action;--> statement-breakpoint
 ALTER TABLE "code_events" ADD CONSTRAINT "code_events_observer_id_user_id_fk" FOREIGN KEY ("observer_id") REFERENCES "public"."user"("id") ON DELETE set null ON UPDATE no action;--> statement-breakpoint
-ALTER TABLE "code_events" ADD CONSTRAINT "code_events_version_id_coding_scheme_versions_id_fk" FOREIGN KEY ("version_id") REFERENCES "public"."coding_scheme_versions"("id") ON DELETE restrict ON UPDATE no action;--> statement-breakpoint
-ALTER TABLE "coding_scheme_versions" ADD CONSTRAINT "coding_scheme_versions_scheme_id_coding_schemes_id_fk" FOREIGN KEY ("scheme_id") REFERENCES "public"."coding_schemes"("id") ON DELETE restrict ON UPDATE no action;--> statement-breakpoint
+ALTER TABLE "code_events" ADD CONSTRAINT "code_events_version_id_coding_scheme_versions_id_fk" FOREIGN KEY ("version_id") REFERENCES "public"."coding_scheme_versions"("id") ON DELETE cascade ON UPDATE no action;--> statement-breakpoint
+ALTER TABLE "coding_scheme_versions" ADD CONSTRAINT "coding_scheme_versions_scheme_id_coding_schemes_id_fk" FOREIGN KEY ("scheme_id") REFERENCES "public"."coding_schemes"("id") ON DELETE cascade ON UPDATE no action;--> statement-breakpoint
 ALTER TABLE "coding_scheme_versions" ADD CONSTRAINT "coding_scheme_versions_published_by_user_id_fk" FOREIGN KEY ("published_by") REFERENCES "public"."user"("id") ON DELETE set null ON UPDATE no action;--> statement-breakpoint
 ALTER TABLE "coding_schemes" ADD CONSTRAINT "coding_schemes_study_id_studies_id_fk" FOREIGN KEY ("study_id") REFERENCES "public"."studies"("id") ON DELETE cascade ON UPDATE no action;--> statement-breakpoint
 CREATE INDEX "code_events_trial_idx" ON "code_events" USING btree ("trial_id","start_ms");--> statement-breakpoint

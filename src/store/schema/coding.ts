@@ -28,7 +28,8 @@ export const codingSchemeVersions = pgTable(
     id: id(),
     schemeId: text("scheme_id")
       .notNull()
-      .references(() => codingSchemes.id, { onDelete: "restrict" }),
+      // A version goes only with its study (there is no deleting a scheme): then its codes go too.
+      .references(() => codingSchemes.id, { onDelete: "cascade" }),
     version: integer("version").notNull(),
     definition: jsonb("definition").notNull(),
     hash: text("hash").notNull(),
@@ -48,7 +49,7 @@ export const codeEvents = pgTable(
     observerId: text("observer_id").references(() => user.id, { onDelete: "set null" }),
     versionId: text("version_id")
       .notNull()
-      .references(() => codingSchemeVersions.id, { onDelete: "restrict" }),
+      .references(() => codingSchemeVersions.id, { onDelete: "cascade" }),
     setId: text("set_id").notNull(),
     codeId: text("code_id").notNull(),
     kind: text("kind", { enum: ["point", "state"] }).notNull(),
