@@ -4,6 +4,7 @@
 // PostgreSQL announces a change (see access.ts), never trusted from the client.
 import {
   annotateVerdict,
+  codeVerdict,
   commandVerdict,
   lostAccess,
   mayReadTrialLog,
@@ -29,6 +30,7 @@ import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access
 import { logUnexpected } from "@/store/error-reference";
 import type { LiveRobotState } from "@/core/robots/live-state";
 import { annotate } from "./annotations";
+import { codeLive } from "./coding";
 import type { EventRelay } from "./relay";
 import type { Replays } from "./replay";
 import type { TrialHosts } from "./trial-hosts";
@@ -370,7 +372,21 @@ export function startRuntimeServer({
       ws.data.replayQueue = run.catch(() => undefined);
       return run;
     }
+    if (message.type === "code") return code(ws, message);
     return act(ws, message);
+  }
+
+  /** An observer's key press: answered to them alone, with the changes to their own tier. */
+  async function code(ws: Socket, message: Extract<ClientMessage, { type: "code" }>): Promise<void> {
+    const { claims, access } = ws.data;
+    const reject = (reason: string) => send(ws, { type: "rejected", requestId: message.requestId, reason });
+    if (!claims || !access) return reject("Say hello with your trial link first.");
+    const verdict = codeVerdict(access);
+    if (!verdict.allow) return reject(verdict.reason);
+    const coded = await codeLive(db, { trialId: claims.trialId, observerId: access.userId }, message);
+    if (!coded.ok) return reject(coded.reason);
+    send(ws, { type: "codes", requestId: message.requestId, codes: coded.changed });
+    send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
   }
 
   const server = Bun.serve<Connection>({

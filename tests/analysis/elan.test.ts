@@ -5,6 +5,7 @@ import { writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { beforeAll, describe, expect, it } from "vitest";
 import { elanDocument } from "../../src/core/analysis/elan";
+import { schemeTemplate } from "../../src/core/coding/templates";
 import { simulate, type Command, type TrialProtocol } from "../../src/core/trial";
 import { storytellerDraft } from "../../src/server/seed/storyteller";
 import { pythonEnvironment, runPython } from "../support/python";
@@ -62,6 +63,68 @@ describe("the ELAN export", () => {
     expect(tiers.Action!.map((a) => a[2])).toContain("Question: What color was the rock Kai found?");
     expect(tiers.Deviation).toEqual([[expect.any(Number), expect.any(Number), "skipped: Look down at the crater"]]);
     expect(tiers["Annotation"]).toEqual([[1200, 2200, `She said "wow" <laughs> & smiles`]]);
+  });
+
+  it("gives every observer a tier of their own per set of codes, states spanning their time", () => {
+    const log = simulate(protocol, run, (i) => i * 250).log;
+    const scheme = schemeTemplate("participant-engagement");
+    const code = (
+      observer: string,
+      setId: string,
+      codeId: string,
+      startMs: number,
+      endMs: number | null,
+      modifiers: string[] = [],
+    ) => ({
+      trialId: "t1",
+      observer,
+      scheme,
+      schemeVersion: 1,
+      setId,
+      codeId,
+      kind: setId === "gaze" ? ("state" as const) : ("point" as const),
+      startMs,
+      endMs,
+      modifiers,
+    });
+    const eaf = elanDocument({
+      protocol,
+      events: log,
+      annotations: [],
+      date: "2026-11-23T10:00:00Z",
+      codes: [
+        code("Ana", "gaze", "robot", 0, 2000),
+        code("Ana", "gaze", "away", 2000, 3500),
+        code("Ana", "expression", "smile", 1200, null, ["laugh"]),
+        code("Ben", "gaze", "robot", 0, 2500),
+        code("Ben", "gaze", "task", 2500, null),
+      ],
+    });
+    const file = join(root, ".tmp", "storyteller-coded.eaf");
+    writeFileSync(file, eaf);
+    const { tiers } = JSON.parse(runPython("read_eaf.py", [file])) as {
+      tiers: Record<string, Array<[number, number, string]>>;
+    };
+    expect(Object.keys(tiers).sort()).toEqual([
+      "Action",
+      "Ana - Expression",
+      "Ana - Gaze",
+      "Annotation",
+      "Ben - Gaze",
+      "Deviation",
+      "Step",
+    ]);
+    expect(tiers["Ana - Gaze"]).toEqual([
+      [0, 2000, "At the robot"],
+      [2000, 3500, "Away"],
+    ]);
+    expect(tiers["Ana - Expression"]).toEqual([[1200, 1201, "Smile (laugh)"]]);
+    // A state still held when the trial ended lasts to the trial's last event.
+    const lastMs = Math.max(...log.map((e) => e.relMs ?? 0));
+    expect(tiers["Ben - Gaze"]).toEqual([
+      [0, 2500, "At the robot"],
+      [2500, lastMs, "At the task"],
+    ]);
   });
 
   it("links the recording, with every time moved to where it falls in the recording", () => {

@@ -8,6 +8,8 @@ import { afterAll, describe, expect, it, vi } from "vitest";
 import { hashTokenSecret } from "../../src/core/access/token-secret";
 import { API_BASE, ENDPOINTS, STUDY_COLUMNS, TRIAL_COLUMNS } from "../../src/core/analysis/api";
 import { EVENT_COLUMNS } from "../../src/core/analysis/exports";
+import { CODE_COLUMNS } from "../../src/core/coding/export";
+import { codingRows } from "../support/coding";
 import { accessTokens, annotations, auditLog, trialSamples, trials } from "../../src/store/schema";
 import { appendEvents } from "../../src/store/event-store";
 import { parseCsv } from "../support/csv";
@@ -48,6 +50,7 @@ async function studyWithTrial(title: string, code: string) {
   await s.db
     .insert(annotations)
     .values({ trialId: trial.id, relMs: 10, label: `look ${code}`, authorId: s.f.people.observer.id });
+  await codingRows(owner, study.id, trial.id);
   return { studyId: study.id, trialId: trial.id, participantId: p.id };
 }
 
@@ -86,7 +89,7 @@ describe("what a token reads", () => {
     expect(rows).toEqual([[a.studyId, "Study A", "active", "owner", "false"]]);
   });
 
-  it("returns the study's trials, events, samples, answers and annotations as tidy CSV", async () => {
+  it("returns the study's trials, events, samples, answers, annotations and codes as tidy CSV", async () => {
     const [trialsHeader, ...trials] = await csvOf(await get(`/studies/${a.studyId}/trials`, as(tokenA)));
     expect(trialsHeader).toEqual([...TRIAL_COLUMNS]);
     expect(trials.map((t) => [t[0], t[1], t[3]])).toEqual([[a.trialId, "Greeting A-1", "A-1"]]);
@@ -100,6 +103,11 @@ describe("what a token reads", () => {
     expect(sample).toEqual([a.trialId, "/joint_states", "20", '{"code":"A-1"}']);
     const [, note] = await csvOf(await get(`/studies/${a.studyId}/annotations`, as(tokenA)));
     expect(note).toEqual([a.trialId, "10", "look A-1", "", "observer"]);
+    const [codesHeader, ...codes] = await csvOf(await get(`/studies/${a.studyId}/codes`, as(tokenA)));
+    expect(codesHeader).toEqual([...CODE_COLUMNS]);
+    expect(codes).toEqual([
+      [a.trialId, "owner", "Wizard interventions", "1", "Intervention type", "Hint", "point", "1500", "", ""],
+    ]);
     const answers = await get(`/studies/${a.studyId}/answers`, as(tokenA));
     expect([answers.status, (await csvOf(answers))[0]]).toEqual([
       200,
@@ -286,7 +294,7 @@ describe("a participant who withdrew", () => {
     const w = await studyWithTrial("Withdrawal study", "W-1");
     const token = (await owner.tokens.create({ name: "W", studyIds: [w.studyId], expiresInDays: 5 })).secret;
     await owner.participants.update({ participantId: w.participantId, consentStatus: "withdrawn" });
-    for (const table of ["trials", "events", "samples", "annotations", "answers"])
+    for (const table of ["trials", "events", "samples", "annotations", "codes", "answers"])
       expect(await csvOf(await get(`/studies/${w.studyId}/${table}`, as(token)))).toHaveLength(1);
     const one = await get(`/trials/${w.trialId}/events`, as(token));
     expect([one.status, (await one.json()).error]).toEqual([

@@ -108,6 +108,7 @@ describe("the trial events CSV", () => {
     const archive = await unzipArchive(await owner.studies.exportArchive({ studyId: study.id }));
     const files = Object.entries(archive).filter(([name]) => name.endsWith(".csv"));
     expect(files.map(([name]) => name).sort()).toEqual([
+      "codes.csv",
       "questionnaire-answers.csv",
       `trials/${trial.id}-events.csv`,
       `trials/${trial.id}-samples.csv`,

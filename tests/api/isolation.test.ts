@@ -13,6 +13,7 @@ import { ACROSS_STUDIES, REFERENCES, type ReferenceKey } from "../../src/server/
 import { appRouter } from "../../src/server/api/root";
 import type { Meta } from "../../src/server/api/trpc";
 import { freshDatabase } from "../support/db";
+import { codingRows } from "../support/coding";
 import { studyFingerprint } from "../support/study-rows";
 import { buildFixture, CALLERS, newPerson, type Caller } from "./fixture";
 import { baseData, freshAudio, MATRIX } from "./matrix";
@@ -81,6 +82,7 @@ async function victimStudy() {
     annotationId: annotation.id,
     questionnaireId: questionnaire.id,
     audioFileId: (await freshAudio(f, study.id, victim.id)).audioFileId,
+    ...(await codingRows(api, study.id, trial.id)),
     wizardId: victim.id,
     userId: victim.id,
   };
@@ -125,6 +127,7 @@ async function ownIds(): Promise<Record<Key, string | string[]>> {
     annotationId: annotation.id,
     questionnaireId: questionnaire.id,
     audioFileId: (await freshAudio(f, a.study.id, f.people.owner.id)).audioFileId,
+    ...(await codingRows(owner, a.study.id, a.trial.id)),
     wizardId: f.people.owner.id,
     userId: f.people.owner.id,
   };

@@ -2,7 +2,9 @@
 // it: the access rules as a person states them. The access matrix checks each
 // role against it; the isolation test turns each input into another study's.
 import { addAudio } from "../../src/server/media/audio";
+import { schemeTemplate } from "../../src/core/coding/templates";
 import { silentWav } from "../support/audio";
+import { codingRows } from "../support/coding";
 import { newPerson, type Caller, type Fixture } from "./fixture";
 
 export const MEMBERS: Caller[] = ["owner", "researcher", "wizard", "observer"];
@@ -34,6 +36,16 @@ export async function baseData(f: Fixture) {
     .conditions.create({ studyId: study.id, name: "With gestures", experimentId: experiment.id });
   return { study, experiment, version, participant, trial, condition };
 }
+
+/** A code the caller marked in the base trial (a member's own), or the owner's for those who may not code. */
+const ownCode = async (f: Fixture, b: Base, caller: Caller) => {
+  const { schemeVersionId, codeEventId } = await codingRows(f.api("owner"), b.study.id, b.trial.id);
+  const mine = await f
+    .api(caller as "owner")
+    .coding.addCode({ trialId: b.trial.id, schemeVersionId, setId: "intervention", codeId: "hint", startMs: 5 })
+    .catch(() => ({ id: codeEventId }));
+  return mine.id;
+};
 
 // Destructive procedures get fresh rows for every call.
 /** A consenting participant, assigned, with a session planned for the study's wizard. */
@@ -269,6 +281,42 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   ],
   "questionnaires.responses": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
   "questionnaires.exportCsv": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
+  "coding.schemes": [MEMBERS, (_f, b) => ({ studyId: b.study.id })],
+  "coding.scheme": [
+    MEMBERS,
+    async (f, b) => ({ codingSchemeId: (await codingRows(f.api("owner"), b.study.id, b.trial.id)).codingSchemeId }),
+  ],
+  "coding.createScheme": [EDITORS, (_f, b) => ({ studyId: b.study.id, template: "participant-engagement" })],
+  "coding.saveScheme": [
+    EDITORS,
+    async (f, b) => ({
+      codingSchemeId: (await f.api("owner").coding.createScheme({ studyId: b.study.id })).id,
+      definition: schemeTemplate("wizard-interventions"),
+    }),
+  ],
+  "coding.publishScheme": [
+    EDITORS,
+    async (f, b) => ({ codingSchemeId: (await f.api("owner").coding.createScheme({ studyId: b.study.id })).id }),
+  ],
+  "coding.forTrial": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
+  "coding.codes": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
+  "coding.agreement": [
+    ["owner", "researcher", "observer"],
+    async (f, b) => ({ schemeVersionId: (await codingRows(f.api("owner"), b.study.id, b.trial.id)).schemeVersionId }),
+  ],
+  "coding.addCode": [
+    MEMBERS,
+    async (f, b) => ({
+      trialId: b.trial.id,
+      schemeVersionId: (await codingRows(f.api("owner"), b.study.id, b.trial.id)).schemeVersionId,
+      setId: "intervention",
+      codeId: "guidance",
+      startMs: 2000,
+    }),
+  ],
+  // Each caller moves and deletes a code of their own tier; another observer's is refused (tests/api/coding.test.ts).
+  "coding.moveCode": [MEMBERS, async (f, b, caller) => ({ codeEventId: await ownCode(f, b, caller), startMs: 10 })],
+  "coding.deleteCode": [MEMBERS, async (f, b, caller) => ({ codeEventId: await ownCode(f, b, caller) })],
   // The one-time link is the participant's credential: no account needed, none checked.
   "form.open": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token })],
   "form.save": [EVERYONE, async (f, b) => ({ token: (await freshLink(f, b)).token, answers: { sus1: 3 } })],
@@ -348,5 +396,6 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "analysis.samples": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
   "analysis.answers": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
   "analysis.annotations": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
+  "analysis.codes": [DATA_READERS, (_f, b) => ({ studyId: b.study.id })],
   "analysis.trialEvents": [DATA_READERS, (_f, b) => ({ trialId: b.trial.id })],
 };

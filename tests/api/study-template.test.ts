@@ -9,6 +9,8 @@ import { auditLog, experiments } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
 import { studyFingerprint, studyRowCounts } from "../support/study-rows";
 import { buildFixture, newPerson } from "./fixture";
+import { schemeTemplate } from "../../src/core/coding/templates";
+import { codingRows } from "../support/coding";
 import { fullStudy } from "./full-study";
 
 const { db, close } = await freshDatabase();
@@ -17,6 +19,12 @@ const owner = f.api("owner");
 afterAll(close);
 
 const source = await fullStudy(f);
+// A published coding scheme whose draft moved on since, and a code in the source's trial.
+const sourceCoding = await codingRows(owner, source.study.id, source.trial.id);
+await owner.coding.saveScheme({
+  codingSchemeId: sourceCoding.codingSchemeId,
+  definition: { ...schemeTemplate("wizard-interventions"), name: "Interventions, revised" },
+});
 const sourceBefore = await studyFingerprint(db, source.study.id);
 
 /** An experiment's design with ids replaced by names, so a copy and its source compare. */
@@ -102,6 +110,15 @@ describe("a study from a template", async () => {
     }
   });
 
+  it("copies the coding schemes' drafts, unpublished, and none of the source's codes", async () => {
+    const listed = await researcher.coding.schemes({ studyId: copy.id });
+    expect(listed.map((s) => [s.name, s.latestVersion])).toEqual([["Interventions, revised", null]]);
+    expect((await researcher.coding.scheme({ codingSchemeId: listed[0]!.id })).draft).toEqual({
+      ...schemeTemplate("wizard-interventions"),
+      name: "Interventions, revised",
+    });
+  });
+
   it("holds nothing of the source's run: counted row by row", async () => {
     expect(await studyRowCounts(db, copy.id)).toEqual({
       study: 1,
@@ -111,6 +128,7 @@ describe("a study from a template", async () => {
       action: 4,
       condition: 2,
       questionnaire: 2,
+      "coding scheme": 1,
       // Its own creation, saying which study it came from.
       audit: 1,
     });

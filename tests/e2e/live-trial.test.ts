@@ -133,7 +133,7 @@ describe.sequential("a live trial in two browsers", () => {
       trialId,
     );
     expect(record).toMatchObject({
-      schemaVersion: 2,
+      schemaVersion: 3,
       protocol: { experiment: { name: "Interactive Storyteller" } },
       annotations: [{ label: "Participant hesitated" }],
     });

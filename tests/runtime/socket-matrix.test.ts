@@ -7,7 +7,7 @@ import { eq, inArray } from "drizzle-orm";
 import type { z } from "zod";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { clientMessageSchema, commandSchema, id } from "../../src/core/socket/messages";
-import { annotations, trialEvents, trials } from "../../src/store/schema";
+import { annotations, codeEvents, trialEvents, trials } from "../../src/store/schema";
 import { socketFixture, STUDY_ROLES_HERE, type Person } from "../support/socket-fixture";
 
 type Fixture = Awaited<ReturnType<typeof socketFixture>>;
@@ -21,6 +21,7 @@ interface Ids {
   recordingId: string;
   /** Live video: a connection of that study's trial, by its peer id. */
   peerId: string;
+  schemeVersionId: string;
 }
 const ID_KEYS: Record<string, (side: Side, ids: Record<Side, Ids>) => string> = {
   actionId: (side) => `${side === "own" ? "A" : "B"}-ask`,
@@ -30,6 +31,7 @@ const ID_KEYS: Record<string, (side: Side, ids: Record<Side, Ids>) => string> = 
   trialId: (side, ids) => ids[side].trialId,
   studyId: (side, ids) => ids[side].studyId,
   peerId: (side, ids) => ids[side].peerId,
+  schemeVersionId: (side, ids) => ids[side].schemeVersionId,
 };
 
 /** Fields that are neither ids nor plain values: one valid sample each. */
@@ -57,6 +59,7 @@ function templateOf(schema: z.ZodObject, name: string): Template {
     else if (field.def.type === "number") fields[key] = 0;
     else if (field.def.type === "boolean") fields[key] = false;
     else if (field.def.type === "record") fields[key] = {};
+    else if (field.def.type === "array") fields[key] = [];
     else if (key === "command") command = { name: "", fields: {}, idKeys: [] };
     else
       throw new Error(
@@ -128,6 +131,7 @@ describe.sequential("every socket message × every role × own, other and mixed 
       f.b.studyId,
       bTrial,
       bRecording,
+      f.b.schemeVersionId,
       ...Object.values(f.b.people),
       "B-step-1",
       "B-step-2",
@@ -149,6 +153,7 @@ describe.sequential("every socket message × every role × own, other and mixed 
         "hello",
         "ping",
         "annotate",
+        "code",
         "replay",
         "replay_stop",
         "signal",
@@ -172,8 +177,15 @@ describe.sequential("every socket message × every role × own, other and mixed 
           studyId: f.a.studyId,
           recordingId: usesRecording ? await f.recording(trialId) : "",
           peerId: String(peer?.messages.find((m) => m.type === "welcome")?.peerId ?? ""),
+          schemeVersionId: f.a.schemeVersionId,
         },
-        other: { trialId: bTrial, studyId: f.b.studyId, recordingId: bRecording, peerId: bPeer },
+        other: {
+          trialId: bTrial,
+          studyId: f.b.studyId,
+          recordingId: bRecording,
+          peerId: bPeer,
+          schemeVersionId: f.b.schemeVersionId,
+        },
       };
       const socket = await f.open(who, trialId);
       if (who === "outsider") {
@@ -244,6 +256,11 @@ describe.sequential("every socket message × every role × own, other and mixed 
     const bEvents = await f.db.select().from(trialEvents).where(eq(trialEvents.trialId, bTrial));
     expect(bEvents.map((e) => e.type)).toEqual(["trial.started", "step.entered"]);
     expect(await f.db.select().from(annotations).where(eq(annotations.trialId, bTrial))).toEqual([]);
+    expect(await f.db.select().from(codeEvents).where(eq(codeEvents.trialId, bTrial))).toEqual([]);
+    expect(
+      await f.db.select().from(codeEvents).where(eq(codeEvents.versionId, f.b.schemeVersionId)),
+      "no code of study A's trials points at study B's scheme",
+    ).toEqual([]);
     expect((await f.db.select({ w: trials.wizardId }).from(trials).where(eq(trials.id, bTrial)))[0]!.w).toBe(
       f.b.people.wizard,
     );

@@ -5,6 +5,8 @@ import type { ChildProcess } from "node:child_process";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/store/client";
 import {
+  codingSchemeVersions,
+  codingSchemes,
   experimentVersions,
   experiments,
   mediaRecordings,
@@ -13,6 +15,7 @@ import {
   trials,
 } from "../../src/store/schema";
 import { appendEvents } from "../../src/store/event-store";
+import { schemeTemplate } from "../../src/core/coding/templates";
 import { signSocketToken } from "../../src/store/socket-token";
 import type { EngineEvent } from "../../src/core/trial";
 import { freshDatabaseUrl } from "./db";
@@ -100,7 +103,16 @@ export async function socketFixture() {
       await appendEvents(db, { id: row!.id, lastSeq: 0, t0: null }, events, wizardId);
       return row!.id;
     };
-    return { studyId: study!.id, people: ids, trial };
+    // A published coding scheme of the study, for observers to code with live.
+    const [scheme] = await db
+      .insert(codingSchemes)
+      .values({ studyId: study!.id, name: `${tag} coding`, draft: schemeTemplate("participant-engagement") })
+      .returning();
+    const [schemeVersion] = await db
+      .insert(codingSchemeVersions)
+      .values({ schemeId: scheme!.id, version: 1, definition: schemeTemplate("participant-engagement"), hash: tag })
+      .returning();
+    return { studyId: study!.id, people: ids, trial, schemeVersionId: schemeVersion!.id };
   };
   const a = await studyOf("A", {
     owner: "owner",

@@ -23,6 +23,9 @@ const rowsOf = (studyId: string) => sql`
     union all select 'questionnaire version', to_jsonb(qv)::text from questionnaire_versions qv join questionnaires q on q.id = qv.questionnaire_id where q.study_id = ${studyId}
     union all select 'link', to_jsonb(l)::text from questionnaire_links l where l.study_id = ${studyId}
     union all select 'response', to_jsonb(qr)::text from questionnaire_responses qr join questionnaire_links l on l.id = qr.link_id where l.study_id = ${studyId}
+    union all select 'coding scheme', to_jsonb(cs)::text from coding_schemes cs where cs.study_id = ${studyId}
+    union all select 'coding scheme version', to_jsonb(cv)::text from coding_scheme_versions cv join coding_schemes cs on cs.id = cv.scheme_id where cs.study_id = ${studyId}
+    union all select 'code', to_jsonb(ce)::text from code_events ce join trials tr on tr.id = ce.trial_id where tr.study_id = ${studyId}
     union all select 'audit', to_jsonb(au)::text from audit_log au where au.study_id = ${studyId}`;
 
 /** Every row of the study, as text, in a fixed order: equal before and after means nothing was written. */

@@ -2,6 +2,7 @@ import { describe, expect, it } from "vitest";
 import { NOT_BLINDED } from "../studies/blinding";
 import {
   annotateVerdict,
+  codeVerdict,
   commandVerdict,
   mayReadTrialLog,
   replayVerdict,
@@ -129,6 +130,22 @@ describe("who may command a trial over its socket", () => {
     ["a removed member", access({ studyRole: null }), false],
   ])("annotating: %s → %s", (_name, who, allowed) => {
     expect(annotateVerdict(who).allow).toBe(allowed);
+  });
+
+  it.each<[string, TrialAccess, string]>([
+    ["an observer of a running trial", access({ studyRole: "observer" }), "allow"],
+    ["an observer of a paused trial", access({ studyRole: "observer", status: "paused" }), "allow"],
+    ["an observer before the start", access({ studyRole: "observer", status: "scheduled" }), "has not started yet"],
+    [
+      "an observer after the end",
+      access({ studyRole: "observer", status: "completed" }),
+      "code it on its analysis page",
+    ],
+    ["an observer of an aborted trial", access({ studyRole: "observer", status: "aborted" }), "has ended"],
+    ["a removed member", access({ studyRole: null }), "no longer a member"],
+  ])("coding live: %s", (_name, who, expected) => {
+    const verdict = codeVerdict(who);
+    expect(verdict.allow ? "allow" : verdict.reason).toContain(expected);
   });
 });
 

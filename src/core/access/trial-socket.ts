@@ -64,6 +64,23 @@ export function annotateVerdict(access: TrialAccess): SocketVerdict {
 }
 
 /**
+ * May the caller code this trial live, with a key per code? Whoever may
+ * annotate, while the trial runs: codes are timed from its start, and a
+ * finished trial is coded on its analysis page, against the recording.
+ */
+export function codeVerdict(access: TrialAccess): SocketVerdict {
+  const lost = lostAccess(access);
+  if (lost) return refuse(lost);
+  if (!studyRoleMay(access.studyRole!, "annotation.create"))
+    return refuse(`As ${access.studyRole} you may not code in this trial.`);
+  if (access.trial.status === "scheduled")
+    return refuse("The trial has not started yet: codes are timed from its start.");
+  if (access.trial.status === "completed" || access.trial.status === "aborted")
+    return refuse("The trial has ended: code it on its analysis page, against the recording.");
+  return { allow: true, claim: false };
+}
+
+/**
  * May the caller receive the trial's event log? Whoever may read the study's
  * data (blinds included); and any member while the trial is live, since
  * watching it unfold is what the socket is for. A finished trial's log is results.

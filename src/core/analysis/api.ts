@@ -1,6 +1,7 @@
 // The analysis API (/api/v1), declared once: each endpoint's path, what it
 // returns and its columns. The route handlers, the OpenAPI description and
 // the test that every route is described all read this list.
+import { CODE_COLUMNS } from "@/core/coding/export";
 import { ANSWER_COLUMNS } from "@/core/questionnaires/export";
 import { EVENT_COLUMNS } from "./exports";
 
@@ -70,6 +71,12 @@ export const ENDPOINTS = {
     summary: "Observers' annotations",
     description: `One row per annotation made during or after a trial, on the trial's clock. ${STUDY_DATA}`,
     columns: ANNOTATION_COLUMNS,
+  },
+  codes: {
+    path: "/studies/{studyId}/codes",
+    summary: "Observers' codes",
+    description: `One row per code event of a coding scheme: its observer, the scheme and its version, set and code by name, point or state, start and end on the trial's clock (ms; a point event or a state still held has no end), modifiers joined with "; ". ${STUDY_DATA}`,
+    columns: CODE_COLUMNS,
   },
   trialEvents: {
     path: "/trials/{trialId}/events",

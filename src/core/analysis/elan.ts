@@ -2,6 +2,7 @@
 // the trial's steps, actions, deviations and annotations beside the video
 // in the tool they already use. Times are milliseconds from the trial's t0,
 // or, when the trial was recorded, from the start of the linked recording.
+import type { CodeRowInput } from "../coding/export";
 import { blockName, type ActionNames } from "../designer/action-name";
 import type { TrialEvent, TrialProtocol } from "../trial";
 import { fidelityReport } from "./fidelity";
@@ -17,6 +18,8 @@ export interface ElanInput {
   date: string;
   /** The robot plugin's names of its own actions (see actionNamesOf). */
   names?: ActionNames;
+  /** Observers' code events: one tier per observer per set of codes. */
+  codes?: CodeRowInput[];
 }
 
 type Span = { start: number; end: number; value: string };
@@ -83,7 +86,25 @@ function tiers(input: ElanInput): Record<string, Span[]> {
     Action: [...actions, ...unscripted].sort((a, b) => a.start - b.start),
     Deviation: deviations,
     Annotation: annotations,
+    ...codeTiers(input.codes ?? [], lastMs),
   };
+}
+
+/**
+ * "<observer> - <set>" tiers, as ELAN's own multi-coder files name them: a
+ * state spans its start to its end (one still held, to the trial's last
+ * event), a point event lasts a millisecond; modifiers follow the code's name.
+ */
+function codeTiers(codes: CodeRowInput[], lastMs: number): Record<string, Span[]> {
+  const tiers: Record<string, Span[]> = {};
+  for (const c of codes) {
+    const set = c.scheme.sets.find((s) => s.id === c.setId);
+    const name = set?.codes.find((x) => x.id === c.codeId)?.name ?? c.codeId;
+    const value = c.modifiers.length ? `${name} (${c.modifiers.join(", ")})` : name;
+    const end = c.kind === "state" ? (c.endMs ?? Math.max(lastMs, c.startMs + 1)) : null;
+    (tiers[`${c.observer} - ${set?.name ?? c.setId}`] ??= []).push(span(c.startMs, end, value));
+  }
+  return tiers;
 }
 
 export function elanDocument(input: ElanInput): string {

@@ -90,6 +90,7 @@ describe("the trial record", () => {
           protocol: { schemaVersion: 2, experiment: {} as never, steps: [] },
           events,
           annotations: [],
+          codes: [],
           questionnaires: [],
           recordings: [],
           samples: [],

@@ -9,7 +9,8 @@ import type { TrialNames } from "./names";
 import { SAMPLE_COLUMNS } from "./api";
 
 // 2: the protocol is snapshot schema 2 (robotId; steps say where they lead), the version names its robotId.
-export const TRIAL_RECORD_SCHEMA_VERSION = 2;
+// 3: observers' codes (`codes`, one record per code event as in the codes CSV).
+export const TRIAL_RECORD_SCHEMA_VERSION = 3;
 
 export const EVENT_COLUMNS = [
   "trial_id",
@@ -98,6 +99,8 @@ export interface TrialRecord {
   recordings: unknown[];
   /** The robot's state samples (joint states, battery…) in time order. */
   samples: Sample[];
+  /** Observers' code events, one row each as in the codes CSV (CODE_COLUMNS). */
+  codes: Array<Record<string, unknown>>;
 }
 
 export function trialRecordJson(

@@ -17,8 +17,7 @@ export function tableOf<C extends readonly string[]>(columns: C, rows: ReadonlyA
 export const tableCsv = (table: Table) => csvDocument(table.columns, table.rows);
 
 /** One object per row, keyed by column (an empty cell is null), as pandas' and R's JSON readers expect. */
-export function tableJson(table: Table): string {
-  return JSON.stringify(
-    table.rows.map((row) => Object.fromEntries(table.columns.map((c, i) => [c, row[i] === undefined ? null : row[i]]))),
-  );
-}
+export const tableRecords = (table: Table): Array<Record<string, unknown>> =>
+  table.rows.map((row) => Object.fromEntries(table.columns.map((c, i) => [c, row[i] === undefined ? null : row[i]])));
+
+export const tableJson = (table: Table): string => JSON.stringify(tableRecords(table));

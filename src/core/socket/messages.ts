@@ -10,6 +10,7 @@ import type { StoredEvent } from "@/core/trial";
 // 4: "signal": live video between the wizard's and observers' browsers (WebRTC), relayed by the runtime;
 // each connection has a `peerId` (welcome, presence) and the welcome carries the ICE servers;
 // "camera": the robot's own camera, frame by frame.
+// Also 4: "code": an observer's key press on a code of a published coding scheme; "codes" answers with their tier's changes.
 export const SOCKET_MESSAGES_VERSION = 4;
 
 /** Every id a message carries is declared with this, so tests can find them all. */
@@ -80,6 +81,16 @@ export const clientMessageSchema = z.discriminatedUnion("type", [
     requestId: id,
     label: z.string().min(1).max(200),
     note: z.string().max(5000).default(""),
+  }),
+  // One key press on a code of a published coding scheme version (of the trial's study), timed by the
+  // runtime on the trial's clock: marks a point event, or starts or ends a state (src/core/coding/live.ts).
+  z.object({
+    type: z.literal("code"),
+    requestId: id,
+    schemeVersionId: id,
+    setId: z.string().min(1).max(100),
+    codeId: z.string().min(1).max(100),
+    modifiers: z.array(z.string().min(1).max(100)).max(20).default([]),
   }),
   z.object({ type: z.literal("ping") }),
   // Replays the finished trial's robot commands on the simulated robot, from a
@@ -152,6 +163,25 @@ export const serverMessageSchema = z.discriminatedUnion("type", [
   z.object({
     type: z.literal("annotation"),
     annotation: z.object({ id, relMs: z.number(), label: z.string(), note: z.string(), authorName: z.string() }),
+  }),
+  // The code events a "code" message of this very observer changed (no one else's codes are sent:
+  // observers code independently, or their agreement would mean nothing).
+  z.object({
+    type: z.literal("codes"),
+    requestId: z.string(),
+    codes: z.array(
+      z.object({
+        id,
+        versionId: id,
+        setId: z.string(),
+        codeId: z.string(),
+        kind: z.enum(["point", "state"]),
+        startMs: z.number(),
+        endMs: z.number().nullable(),
+        modifiers: z.array(z.string()),
+        observerId: z.string().nullable(),
+      }),
+    ),
   }),
   // `name`: the registered robot the trial drives (sent with the welcome, so the wizard sees it before starting).
   z.object({

@@ -9,6 +9,8 @@ import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { QuestionnaireAnswers } from "./questionnaire-answers";
+import { AgreementPanel } from "../coding/agreement-panel";
+import { CodeTiers } from "../coding/code-tiers";
 import { AnnotationsEditor } from "./annotations-editor";
 import { TimelineChart } from "./timeline-chart";
 import { EventList, type TimelineItem } from "./event-list";
@@ -99,6 +101,9 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=json`}>
             Download trial record (JSON)
           </a>
+          <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=codes`}>
+            Download codes (CSV)
+          </a>
           <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=eaf`}>
             ELAN (.eaf)
           </a>
@@ -183,6 +188,12 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         <EventList items={timeline} current={current} about={about} onSeek={seekTo} />
       </section>
       <AnnotationsEditor trialId={trialId} annotations={annotations.data ?? []} playheadMs={playheadMs} />
+      {t.myRole !== "wizard" && (
+        <>
+          <CodeTiers trialId={trialId} playheadMs={playheadMs} />
+          <AgreementPanel studyId={t.studyId} trialId={trialId} />
+        </>
+      )}
       {samples.data && samples.data.length > 0 && (
         <JointAngles
           samples={samples.data as Array<{ relMs: number; data: unknown }>}

@@ -11,6 +11,7 @@ import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
 import { BrowserAudio } from "./browser-audio";
 import { SendVideo, WatchVideo } from "./live-video-panel";
 import { RobotCamera } from "./robot-camera";
+import { LiveCodingPanel } from "../coding/live-coding-panel";
 import { AnnotateForm, AnnotationList, Watching } from "./observer-panel";
 import { OffScript, StepActions, StepList } from "./protocol-view";
 import { TrialQuestionnaires } from "@/features/questionnaires/trial-questionnaires";
@@ -157,6 +158,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           {wizard && trial.participantId && !trial.isRehearsal && (
             <TrialQuestionnaires studyId={trial.studyId} trialId={trial.id} participantId={trial.participantId} />
           )}
+          {!wizard && !ended && <LiveCodingPanel trialId={trial.id} codes={live.codes} send={live.code} />}
           {!wizard && <AnnotateForm annotate={live.annotate} />}
           <AnnotationList annotations={live.annotations} />
           {wizard && (

@@ -21,6 +21,8 @@ import { useTRPC } from "@/lib/trpc";
 import type { LiveRobotState } from "@/core/robots/live-state";
 
 export type Annotation = Extract<ServerMessage, { type: "annotation" }>["annotation"];
+/** One of my code events as the runtime confirmed it. */
+export type LiveCode = Extract<ServerMessage, { type: "codes" }>["codes"][number];
 type Outcome = { ok: true } | { ok: false; reason: string };
 export type IceServers = Extract<ServerMessage, { type: "welcome" }>["iceServers"];
 export type SignalListener = (from: string, signal: Signal) => void;
@@ -32,6 +34,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const [events, setEvents] = useState<WireEvent[]>([]);
   const [viewers, setViewers] = useState<Viewer[]>([]);
   const [annotations, setAnnotations] = useState<Annotation[]>([]);
+  // My own codes as the runtime wrote them this visit (the page merges them with those loaded before).
+  const [codes, setCodes] = useState<LiveCode[]>([]);
   const [connected, setConnected] = useState(false);
   const [robot, setRobot] = useState<{ connected: boolean; detail?: string; name?: string } | null>(null);
   const [robotState, setRobotState] = useState<LiveRobotState | null>(null);
@@ -121,6 +125,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         else if (m.type === "signal") for (const listen of signalListeners.current) listen(m.peerId, m.signal);
         else if ((m.type === "ack" || m.type === "rejected") && m.requestId && signalRequests.current.has(m.requestId))
           signalRequests.current.delete(m.requestId);
+        else if (m.type === "codes")
+          setCodes((c) => [...c.filter((x) => !m.codes.some((y) => y.id === x.id)), ...m.codes]);
         else if (m.type === "halted") {
           const requestId = m.requestId;
           setTimeout(() => {
@@ -223,6 +229,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     events,
     viewers,
     annotations,
+    codes,
     connected,
     robot,
     /** What the robot is doing now (null until the runtime says). */
@@ -245,5 +252,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
             : command,
       ),
     annotate: (label: string, note = "") => request((requestId) => ({ type: "annotate", requestId, label, note })),
+    code: (mark: { schemeVersionId: string; setId: string; codeId: string; modifiers?: string[] }) =>
+      request((requestId) => ({ type: "code", requestId, modifiers: [], ...mark })),
   };
 }

@@ -10,6 +10,7 @@ import { Problem } from "@/ui/problem";
 import { Card, EmptyState, Spinner } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
 import { seconds } from "@/ui/format";
+import { AgreementPanel } from "../coding/agreement-panel";
 import { ResultsByCondition } from "./results-by-condition";
 
 export function ResultsTab({ studyId }: { studyId: string }) {
@@ -48,6 +49,7 @@ export function ResultsTab({ studyId }: { studyId: string }) {
         <StepTimingPlot steps={s.steps} />
       </section>
       <ResultsByCondition studyId={studyId} />
+      <AgreementPanel studyId={studyId} />
       <section aria-label="Trials">
         <h2 className="mb-2 text-lg font-semibold">Trials</h2>
         <Table>

@@ -7,6 +7,7 @@ import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, ROLE_TONE, Spinner, STATUS_TONE } from "@/ui/surface";
 import { Tabs } from "@/ui/tabs";
+import { CodingTab } from "../coding/coding-tab";
 import { ConditionsTab } from "./conditions-tab";
 import { ExperimentsTab } from "./experiments-tab";
 import { MembersTab } from "./members-tab";
@@ -72,6 +73,7 @@ export function StudyPage({ studyId }: { studyId: string }) {
             label: "Questionnaires",
             content: <QuestionnairesTab studyId={studyId} role={role} />,
           },
+          { id: "coding", label: "Coding", content: <CodingTab studyId={studyId} role={role} /> },
           ...(studyRoleMay(role, "data.read")
             ? [{ id: "results", label: "Results", content: <ResultsTab studyId={studyId} /> }]
             : []),

@@ -4,6 +4,9 @@ import { eq, getTableColumns } from "drizzle-orm";
 import type { Database } from "@/store/client";
 import {
   annotations,
+  codeEvents,
+  codingSchemeVersions,
+  codingSchemes,
   conditions,
   experimentVersions,
   experiments,
@@ -58,6 +61,24 @@ const LOADERS = {
   questionnaire: async (db: Db, id: string) =>
     (await db.select().from(questionnaires).where(eq(questionnaires.id, id)))[0],
   audioFile: async (db: Db, id: string) => (await db.select().from(studyAudio).where(eq(studyAudio.id, id)))[0],
+  codingScheme: async (db: Db, id: string) =>
+    (await db.select().from(codingSchemes).where(eq(codingSchemes.id, id)))[0],
+  schemeVersion: async (db: Db, id: string) =>
+    (
+      await db
+        .select({ ...getTableColumns(codingSchemeVersions), studyId: codingSchemes.studyId })
+        .from(codingSchemeVersions)
+        .innerJoin(codingSchemes, eq(codingSchemes.id, codingSchemeVersions.schemeId))
+        .where(eq(codingSchemeVersions.id, id))
+    )[0],
+  codeEvent: async (db: Db, id: string) =>
+    (
+      await db
+        .select({ ...getTableColumns(codeEvents), studyId: trials.studyId })
+        .from(codeEvents)
+        .innerJoin(trials, eq(trials.id, codeEvents.trialId))
+        .where(eq(codeEvents.id, id))
+    )[0],
 } satisfies Record<string, (db: Db, id: string) => Promise<{ studyId: string } | undefined>>;
 
 export type Resource = keyof typeof LOADERS;
@@ -76,6 +97,9 @@ const NAMES: Record<Resource, string> = {
   annotation: "annotation",
   questionnaire: "questionnaire",
   audioFile: "audio file",
+  codingScheme: "coding scheme",
+  schemeVersion: "coding scheme version",
+  codeEvent: "code",
 };
 
 /**
@@ -96,6 +120,9 @@ export const REFERENCES = {
   annotationId: "annotation",
   questionnaireId: "questionnaire",
   audioFileId: "audioFile",
+  codingSchemeId: "codingScheme",
+  schemeVersionId: "schemeVersion",
+  codeEventId: "codeEvent",
   wizardId: "member",
   userId: "member",
 } as const satisfies Record<string, Resource | "member">;

@@ -1,6 +1,8 @@
 // The analysis API's tables of a study, read from the same rows and with the
 // same builders as the exports: a trial's events as in its events CSV,
 // answers as in questionnaire-answers.csv.
+import { codesTable as tableOfCodes } from "@/core/coding/export";
+import { codeRowsOf } from "../coding/rows";
 import { and, asc, eq, inArray, ne } from "drizzle-orm";
 import { ANNOTATION_COLUMNS, SAMPLE_COLUMNS, TRIAL_COLUMNS } from "@/core/analysis/api";
 import { EVENT_COLUMNS, eventRows } from "@/core/analysis/exports";
@@ -125,4 +127,8 @@ export async function annotationsTable(db: Database, studyId: string): Promise<T
     ANNOTATION_COLUMNS,
     rows.map((a) => ({ trial_id: a.trialId, rel_ms: a.relMs, label: a.label, note: a.note, author: a.author })),
   );
+}
+
+export async function codesTable(db: Database, studyId: string): Promise<Table> {
+  return tableOfCodes(await codeRowsOf(db, await ids(db, studyId)));
 }

@@ -22,6 +22,7 @@ const HANDLERS: Record<EndpointName, (api: Caller, p: Params) => Promise<Table>>
   samples: (api, p) => api.analysis.samples({ studyId: p.studyId! }),
   answers: (api, p) => api.analysis.answers({ studyId: p.studyId! }),
   annotations: (api, p) => api.analysis.annotations({ studyId: p.studyId! }),
+  codes: (api, p) => api.analysis.codes({ studyId: p.studyId! }),
   trialEvents: (api, p) => api.analysis.trialEvents({ trialId: p.trialId! }),
 };
 

@@ -9,6 +9,7 @@ import { formRouter } from "./routers/form";
 import { pluginsRouter } from "./routers/plugins";
 import { robotsRouter } from "./routers/robots";
 import { questionnairesRouter } from "./routers/questionnaires";
+import { codingRouter } from "./routers/coding";
 import { recordingsRouter } from "./routers/recordings";
 import { audioRouter } from "./routers/audio";
 import { sessionsRouter } from "./routers/sessions";
@@ -28,6 +29,7 @@ export const appRouter = router({
   conditions: conditionsRouter,
   sessions: sessionsRouter,
   questionnaires: questionnairesRouter,
+  coding: codingRouter,
   form: formRouter,
   recordings: recordingsRouter,
   audio: audioRouter,

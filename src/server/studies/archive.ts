@@ -25,6 +25,9 @@ import { answersCsv } from "@/core/questionnaires/export";
 import { methodsText } from "../experiments/methods";
 import { fileSlug } from "../file-slug";
 import { submitted } from "../questionnaires/responses";
+import { tableCsv } from "@/core/analysis/table";
+import { codesTable } from "@/core/coding/export";
+import { codeRowsOf } from "../coding/rows";
 import { trialsFiles } from "../trials/files";
 import { analysedTrials } from "../analysis/tables";
 
@@ -38,11 +41,14 @@ experiments/<name>-v<N>-methods.md
                             robot and plugin version, steps, exact speech, branches, pauses,
                             questionnaires, conditions and assignment, the version's hash
 trials/<id>.json            each trial's full record: protocol version, events,
-                            annotations, questionnaires, robot state samples
+                            annotations, questionnaires, robot state samples, codes
 trials/<id>-events.csv      each trial's events, one row per event (RFC 4180)
 trials/<id>-samples.csv     each trial's robot state samples (joint states, battery...), one row per
                             sample: trial_id, topic, rel_ms, data (the message as JSON)
-trials/<id>.eaf             each trial as an ELAN document: steps, actions, deviations, annotations
+trials/<id>.eaf             each trial as an ELAN document: steps, actions, deviations, annotations,
+                            and one tier per observer per set of codes
+codes.csv                   every observer's codes: one row per code event (observer, scheme,
+                            set, code, start and end in ms from the trial's start, modifiers)
 questionnaire-answers.csv   every submitted answer: one row per participant x item, then scores
 
 Rehearsals are not included. Participants who withdrew are left out, as are their trials
@@ -194,6 +200,8 @@ export async function studyArchive(db: Database, studyId: string) {
   const sizes = new Map<string, number>();
   for (const c of [...eventCounts, ...sampleCounts]) sizes.set(c.id, (sizes.get(c.id) ?? 0) + c.rows);
   const batches = batchesOf(trialRows.map((t) => ({ id: t.id, rows: sizes.get(t.id) ?? 0 })));
+  // Codes are few (a key press each): every trial's in one file, read at once.
+  files["codes.csv"] = strToU8(tableCsv(codesTable(await codeRowsOf(db, ids))));
 
   let out: ReadableStreamDefaultController<Uint8Array>;
   const zip = new Zip((error, chunk, final) => {

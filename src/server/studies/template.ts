@@ -1,7 +1,7 @@
 // A new study from another one as a template: its design, never its data.
 // Copied: the settings that are design (decided one by one in
 // core/studies/template.ts), every experiment's draft, the conditions (each
-// bound to the copy of its experiment) and the questionnaires' drafts. Never
+// bound to the copy of its experiment), the questionnaires' and coding schemes' drafts. Never
 // copied: participants, sessions, trials and their events, recordings,
 // annotations, questionnaire links and answers, published versions, the audit
 // log, and members: the creator is the new study's only member, its owner.
@@ -11,7 +11,9 @@ import { readSettings } from "@/core/studies/settings";
 import { templateSettings } from "@/core/studies/template";
 import type { Definition } from "@/core/questionnaires/definition";
 import type { Database } from "@/store/client";
-import { conditions, experiments, questionnaires, studies } from "@/store/schema";
+import type { Scheme } from "@/core/coding/scheme";
+import { codingSchemes, conditions, experiments, questionnaires, studies } from "@/store/schema";
+import { insertScheme } from "../coding/schemes";
 import { duplicate } from "../experiments/exchange";
 import { insertQuestionnaire } from "../questionnaires/create";
 import { createStudy } from "./create";
@@ -70,6 +72,13 @@ export async function studyFromTemplate(
       .orderBy(asc(questionnaires.createdAt), asc(questionnaires.id));
     for (const q of sourceQuestionnaires)
       await insertQuestionnaire(tx, created.id, { name: q.name, draft: q.draft as Definition, timing: q.timing });
+    // Coding schemes the same way: drafts, published afresh (same scheme, same hash), never the source's codes.
+    const sourceSchemes = await tx
+      .select()
+      .from(codingSchemes)
+      .where(eq(codingSchemes.studyId, source!.id))
+      .orderBy(asc(codingSchemes.createdAt), asc(codingSchemes.id));
+    for (const s of sourceSchemes) await insertScheme(tx, created.id, s.draft as Scheme);
     return created;
   });
 }

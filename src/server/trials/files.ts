@@ -1,11 +1,14 @@
 // A trial as files: its events as tidy CSV, its full record as JSON (the
 // protocol version embedded, events, annotations, questionnaires,
-// recordings, robot state samples), its robot state samples as tidy CSV, an
-// ELAN document for video coding, or an MCAP file for robotics tools. The trial's download
+// recordings, robot state samples, codes), its robot state samples or its
+// codes as tidy CSV, an ELAN document for video coding (codes included), or
+// an MCAP file for robotics tools. The trial's download
 // and the study's archive both take them from here, reading the trial once.
 import { asc, eq, inArray } from "drizzle-orm";
 import { elanDocument } from "@/core/analysis/elan";
 import { eventsCsv, samplesCsv, trialRecordJson } from "@/core/analysis/exports";
+import { tableCsv, tableRecords } from "@/core/analysis/table";
+import { codesTable } from "@/core/coding/export";
 import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent } from "@/core/trial";
 import type { Database } from "@/store/client";
@@ -24,8 +27,9 @@ import { eventsOfTrials } from "@/store/event-store";
 import type { ActionNames } from "@/core/designer/action-name";
 import { trialActionNames } from "./action-names";
 import { trialMcap } from "./mcap";
+import { codeRowsOf } from "../coding/rows";
 
-export type TrialFormat = "csv" | "json" | "eaf" | "samples";
+export type TrialFormat = "csv" | "json" | "eaf" | "samples" | "codes";
 
 /** The names of these accounts by id (an account deleted since has none). */
 async function namesOf(db: Database, userIds: (string | null)[]) {
@@ -92,7 +96,7 @@ export async function trialsEventsOf(db: Database, trialIds: string[]) {
 
 /** Everything of these trials that their files hold, read in one query per kind of row. */
 export async function readTrials(db: Database, trialIds: string[]) {
-  const [read, marked, recordings, questionnaires, samples] = await Promise.all([
+  const [read, marked, recordings, questionnaires, samples, codes] = await Promise.all([
     trialsEventsOf(db, trialIds),
     trialIds.length
       ? db
@@ -128,24 +132,27 @@ export async function readTrials(db: Database, trialIds: string[]) {
           .where(inArray(trialSamples.trialId, trialIds))
           .orderBy(asc(trialSamples.relMs), asc(trialSamples.id))
       : [],
+    codeRowsOf(db, trialIds),
   ]);
   const markedBy = byTrial(trialIds, marked);
   const recordingsBy = byTrial(trialIds, recordings);
   const questionnairesBy = byTrial(trialIds, questionnaires);
   const samplesBy = byTrial(trialIds, samples);
+  const codesBy = byTrial(trialIds, codes);
   return read.map((r) => ({
     ...r,
     marked: markedBy.get(r.trial.id)!.map(({ trialId: _, ...a }) => a),
     recordings: recordingsBy.get(r.trial.id)!,
     questionnaires: questionnairesBy.get(r.trial.id)!,
     samples: samplesBy.get(r.trial.id)!.map(({ trialId: _, ...sample }) => sample),
+    codes: codesBy.get(r.trial.id)!,
   }));
 }
 
 type ReadTrial = Awaited<ReturnType<typeof readTrials>>[number];
 
 function fileOf(
-  { trial, people, version, protocol, events, marked, recordings, questionnaires, names, samples }: ReadTrial,
+  { trial, people, version, protocol, events, marked, recordings, questionnaires, names, samples, codes }: ReadTrial,
   format: TrialFormat,
 ) {
   const name = `trial-${trial.id}`;
@@ -162,6 +169,8 @@ function fileOf(
       contentType: "text/csv; charset=utf-8",
       body: samplesCsv(trial.id, samples),
     };
+  if (format === "codes")
+    return { filename: `${name}-codes.csv`, contentType: "text/csv; charset=utf-8", body: tableCsv(codesTable(codes)) };
   if (format === "eaf") {
     const video = recordings.find((r) => r.status === "complete" && r.kind === "video");
     const media = video
@@ -178,6 +187,7 @@ function fileOf(
       date: (trial.t0 ?? trial.createdAt).toISOString(),
       media,
       names,
+      codes,
     });
     return { filename: `${name}.eaf`, contentType: "application/xml; charset=utf-8", body };
   }
@@ -213,6 +223,7 @@ function fileOf(
         url: `/api/recordings/${m.id}/media`,
       })),
       samples,
+      codes: tableRecords(codesTable(codes)),
     },
     named,
   );

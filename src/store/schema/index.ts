@@ -8,3 +8,4 @@ export * from "./questionnaires";
 export * from "./security";
 export * from "./access-tokens";
 export * from "./robots";
+export * from "./coding";

@@ -9,6 +9,7 @@ import { studies, studyMembers } from "@/store/schema";
 import {
   annotationsTable,
   answersTable,
+  codesTable,
   eventsTable,
   samplesTable,
   studyEventsTable,
@@ -50,6 +51,7 @@ export const analysisRouter = router({
   samples: studyProcedure("data.read", "study", ofStudy).query(({ ctx }) => samplesTable(ctx.db, ctx.studyId)),
   answers: studyProcedure("data.read", "study", ofStudy).query(({ ctx }) => answersTable(ctx.db, ctx.studyId)),
   annotations: studyProcedure("data.read", "study", ofStudy).query(({ ctx }) => annotationsTable(ctx.db, ctx.studyId)),
+  codes: studyProcedure("data.read", "study", ofStudy).query(({ ctx }) => codesTable(ctx.db, ctx.studyId)),
 
   trialEvents: studyProcedure("data.read", "trial", z.object({ trialId: id })).query(async ({ ctx }) => {
     await assertNotWithdrawn(ctx.db, ctx.row.id);

@@ -188,8 +188,8 @@ export const trialsRouter = router({
     "trial",
     z.object({
       trialId: id,
-      format: z.enum(["csv", "json", "eaf", "samples", "mcap"], {
-        error: "must be csv, json, eaf, samples or mcap",
+      format: z.enum(["csv", "json", "eaf", "samples", "mcap", "codes"], {
+        error: "must be csv, json, eaf, samples, mcap or codes",
       }),
     }),
   ).query(async ({ ctx, input }) => {

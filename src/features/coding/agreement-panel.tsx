@@ -1,0 +1,153 @@
+"use client";
+// Inter-rater agreement as a paper reports it: Cohen's kappa per set of codes
+// between two chosen observers, over time slices, with the confusion table it
+// comes from; pooled over the study's trials, or for one trial.
+import { useQuery } from "@tanstack/react-query";
+import { useState } from "react";
+import { strength, type SetAgreement } from "@/core/coding/agreement";
+import { useTRPC } from "@/lib/trpc";
+import { Field, NativeSelect } from "@/ui/field";
+import { Problem } from "@/ui/problem";
+import { Card, Spinner } from "@/ui/surface";
+import { Table, Td, Th } from "@/ui/table";
+
+const SLICES = [500, 1000, 2000, 5000];
+
+export function AgreementPanel({ studyId, trialId }: { studyId: string; trialId?: string }) {
+  const trpc = useTRPC();
+  const schemes = useQuery(trpc.coding.schemes.queryOptions({ studyId }));
+  const published = (schemes.data ?? []).filter((s) => s.latestVersionId);
+  const [schemeId, setSchemeId] = useState<string | null>(null);
+  const scheme = published.find((s) => s.id === schemeId) ?? published[0];
+  if (schemes.error) return <Problem error={schemes.error} />;
+  if (!scheme) return null;
+  return (
+    <section aria-label="Agreement between observers" className="space-y-3">
+      <h2 className="text-lg font-semibold">Agreement between observers</h2>
+      {published.length > 1 && (
+        <NativeSelect
+          aria-label="Coding scheme"
+          className="w-72"
+          value={scheme.id}
+          onChange={(e) => setSchemeId(e.target.value)}
+        >
+          {published.map((s) => (
+            <option key={s.id} value={s.id}>
+              {s.name} (version {s.latestVersion})
+            </option>
+          ))}
+        </NativeSelect>
+      )}
+      <Pair versionId={scheme.latestVersionId!} trialId={trialId} />
+    </section>
+  );
+}
+
+function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
+  const trpc = useTRPC();
+  const [sliceMs, setSliceMs] = useState(1000);
+  const [chosen, setChosen] = useState<[string, string] | null>(null);
+  const result = useQuery(trpc.coding.agreement.queryOptions({ schemeVersionId: versionId, sliceMs }));
+  if (result.isPending) return <Spinner label="Comparing the observers…" />;
+  if (result.error) return <Problem error={result.error} />;
+  const { observers, pairs } = result.data;
+  if (observers.length < 2)
+    return (
+      <p className="text-sm text-slate-600">
+        Agreement needs two observers who coded the same trial with this scheme; {observers.length || "none"} coded so
+        far.
+      </p>
+    );
+  const [a, b] = chosen ?? [pairs[0]!.a, pairs[0]!.b];
+  const pair = pairs.find((p) => (p.a === a && p.b === b) || (p.a === b && p.b === a));
+  const sets = trialId ? pair?.trials.find((t) => t.trialId === trialId)?.sets : pair?.pooled;
+  const nameOf = (id: string) => observers.find((o) => o.id === id)?.name ?? id;
+  const choose = (which: 0 | 1, id: string) => setChosen(which === 0 ? [id, b] : [a, id]);
+  return (
+    <div className="space-y-3">
+      <div className="flex flex-wrap items-end gap-3 text-sm">
+        {([0, 1] as const).map((which) => (
+          <Field key={which} label={which === 0 ? "First observer" : "Second observer"}>
+            {(p) => (
+              <NativeSelect {...p} value={which === 0 ? a : b} onChange={(e) => choose(which, e.target.value)}>
+                {observers.map((o) => (
+                  <option key={o.id} value={o.id}>
+                    {o.name}
+                  </option>
+                ))}
+              </NativeSelect>
+            )}
+          </Field>
+        ))}
+        <Field label="Time slice">
+          {(p) => (
+            <NativeSelect {...p} value={sliceMs} onChange={(e) => setSliceMs(Number(e.target.value))}>
+              {SLICES.map((ms) => (
+                <option key={ms} value={ms}>
+                  {ms / 1000} s
+                </option>
+              ))}
+            </NativeSelect>
+          )}
+        </Field>
+      </div>
+      {a === b || !pair || !sets ? (
+        <p className="text-sm text-slate-600">
+          {a === b ? "Choose two different observers." : "These two observers have not coded the same trial."}
+        </p>
+      ) : (
+        <>
+          <p className="text-sm text-slate-600">
+            {nameOf(pair.a)} (rows) and {nameOf(pair.b)} (columns),{" "}
+            {trialId
+              ? "in this trial"
+              : `pooled over ${pair.trials.length} trial${pair.trials.length === 1 ? "" : "s"} both coded`}
+            .
+          </p>
+          {sets.map((s) => (
+            <SetFigure key={s.setId} set={s} />
+          ))}
+        </>
+      )}
+    </div>
+  );
+}
+
+function SetFigure({ set }: { set: SetAgreement }) {
+  const kappa = set.kappa === null ? "undefined" : set.kappa.toFixed(2);
+  return (
+    <Card className="space-y-2 p-3">
+      <h3 className="font-medium">
+        {set.setId}: Cohen&apos;s κ = <span data-kappa={set.setId}>{kappa}</span>
+        {set.kappa !== null && <span className="text-slate-600"> ({strength(set.kappa)})</span>}
+      </h3>
+      <p className="text-xs text-slate-600">
+        {set.n} slices, observed agreement {(set.observed * 100).toFixed(1)} %, expected by chance{" "}
+        {(set.expected * 100).toFixed(1)} %.
+        {set.kappa === null && " Kappa is undefined where chance agreement is certain (both always coded the same)."}
+      </p>
+      <Table aria-label={`Confusion table of ${set.setId}`}>
+        <thead>
+          <tr>
+            <Th />
+            {set.table.categories.map((c) => (
+              <Th key={c}>{c}</Th>
+            ))}
+          </tr>
+        </thead>
+        <tbody>
+          {set.table.counts.map((row, i) => (
+            <tr key={i}>
+              <Th scope="row">{set.table.categories[i]}</Th>
+              {row.map((n, j) => (
+                <Td key={j} className={i === j ? "font-semibold" : undefined}>
+                  {n}
+                </Td>
+              ))}
+            </tr>
+          ))}
+        </tbody>
+      </Table>
+    </Card>
+  );
+}

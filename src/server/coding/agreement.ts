@@ -1,0 +1,75 @@
+// Agreement between every two observers who coded the study's trials with
+// one published scheme version: per trial, and pooled over all of them.
+import { and, eq } from "drizzle-orm";
+import { agreement, type CodeMark } from "@/core/coding/agreement";
+import type { Scheme } from "@/core/coding/scheme";
+import type { Database } from "@/store/client";
+import { codeEvents, participants, trials, user } from "@/store/schema";
+
+export async function studyAgreement(
+  db: Database,
+  studyId: string,
+  versionId: string,
+  scheme: Scheme,
+  sliceMs: number,
+) {
+  const rows = await db
+    .select({
+      code: codeEvents,
+      observerName: user.name,
+      t0: trials.t0,
+      endedAt: trials.endedAt,
+      participantCode: participants.code,
+    })
+    .from(codeEvents)
+    .innerJoin(trials, eq(trials.id, codeEvents.trialId))
+    .leftJoin(participants, eq(participants.id, trials.participantId))
+    .leftJoin(user, eq(user.id, codeEvents.observerId))
+    .where(and(eq(trials.studyId, studyId), eq(codeEvents.versionId, versionId)));
+  const observers = new Map<string, string>();
+  const byTrial = new Map<string, { label: string; durationMs: number; marks: Map<string, CodeMark[]> }>();
+  for (const r of rows) {
+    const observerId = r.code.observerId;
+    if (!observerId) continue;
+    observers.set(observerId, r.observerName ?? "(former member)");
+    const trial = byTrial.get(r.code.trialId) ?? {
+      label: r.participantCode ?? "rehearsal",
+      // A finished trial lasts from t0 to its end; a running one as far as anyone has coded.
+      durationMs: r.t0 && r.endedAt ? r.endedAt.getTime() - r.t0.getTime() : 0,
+      marks: new Map(),
+    };
+    if (!(r.t0 && r.endedAt)) trial.durationMs = Math.max(trial.durationMs, r.code.endMs ?? r.code.startMs + 1);
+    const marks = trial.marks.get(observerId) ?? [];
+    marks.push(r.code);
+    trial.marks.set(observerId, marks);
+    byTrial.set(r.code.trialId, trial);
+  }
+  const ids = [...observers.keys()].sort();
+  const pairs = ids.flatMap((a, i) => ids.slice(i + 1).map((b) => [a, b] as const));
+  return {
+    observers: ids.map((id) => ({ id, name: observers.get(id)! })),
+    pairs: pairs.map(([a, b]) => {
+      // Only the trials both coded: a trial one of them never watched says nothing about their agreement.
+      const both = [...byTrial.entries()].filter(([, t]) => t.marks.has(a) && t.marks.has(b));
+      const of = (t: (typeof both)[number][1]) => ({
+        durationMs: t.durationMs,
+        a: t.marks.get(a)!,
+        b: t.marks.get(b)!,
+      });
+      return {
+        a,
+        b,
+        pooled: agreement(
+          scheme.sets,
+          both.map(([, t]) => of(t)),
+          sliceMs,
+        ),
+        trials: both.map(([trialId, t]) => ({
+          trialId,
+          label: t.label,
+          sets: agreement(scheme.sets, [of(t)], sliceMs),
+        })),
+      };
+    }),
+  };
+}
