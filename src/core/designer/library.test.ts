@@ -89,12 +89,14 @@ describe("searching the library", () => {
     ["yes", { nod: ["Yes (Nod)"] }, true],
     ["walk backward", { move: ["Walk Backward"] }, true],
     ["bow", { "nao6-ros2.play_animation_bow": [] }, false],
-    ["STOP", { stop: ["Stop"] }, true],
+    // The robot's own stops (what an emergency stop sends) are actions a design may use too.
+    ["STOP", { stop: ["Stop"], "nao6-ros2.stop_speech": [], "nao6-ros2.stop_animation": [] }, true],
     ["no such thing", {}, false],
   ])("%j", (query, expected, open) => {
     const shown = searchLibrary(entries, query);
     if (!expected) return expect(shown.length).toBe(entries.length);
     expect(Object.fromEntries(shown.map((e) => [e.block.type, e.variants.map((v) => v.name)]))).toEqual(expected);
-    expect(shown.every((e) => e.open === open)).toBe(true);
+    // Opened: an entry shown for a matching variant; one that matches by its own name has none to open.
+    expect(shown.every((e) => e.open === (open && e.variants.length > 0))).toBe(true);
   });
 });
