@@ -60,5 +60,10 @@ export const codeEvents = pgTable(
     createdAt: createdAt(),
     updatedAt: timestamp("updated_at", { withTimezone: true }).notNull().defaultNow(),
   },
-  (t) => [index("code_events_trial_idx").on(t.trialId, t.startMs)],
+  (t) => [
+    index("code_events_trial_idx").on(t.trialId, t.startMs),
+    // An observer's tier, and the codes of a scheme version (its deletion with the study looks them up).
+    index("code_events_observer_idx").on(t.observerId),
+    index("code_events_version_idx").on(t.versionId),
+  ],
 );
