@@ -120,6 +120,7 @@ async function main() {
       SIM_SSH_PORT: String(sshPort),
       SIM_SSH_USER: "nao",
       SIM_SSH_PASSWORD: password,
+      SIM_MS_PER_CHAR: String(config.HRI_SIMULATOR_MS_PER_CHAR),
     });
     await Promise.all([listening(simulatorPort), listening(sshPort)]);
     passwords[simulatorPasswordVariable(n)] = password;

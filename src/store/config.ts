@@ -41,6 +41,8 @@ const schema = z.object({
   // replays go to it and nowhere else (never HRI_ROSBRIDGE_URL, which may be a real robot).
   HRI_SIMULATOR_URL: z.string().url().optional(),
   HRI_SIMULATOR_PORT: z.coerce.number().int().min(0).max(65535).default(9090),
+  // How long the simulated robots take to say each character: speech is completed when it has been said.
+  HRI_SIMULATOR_MS_PER_CHAR: z.coerce.number().min(0).max(1000).default(60),
   // How many simulated robots npm start runs (each a registered robot, for piloting in parallel);
   // default 1 without HRI_ROSBRIDGE_URL, 0 with it.
   HRI_SIMULATED_ROBOTS: z.coerce.number().int().min(0).max(16).optional(),

@@ -51,6 +51,8 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
       HRI_SIMULATOR_PORT: String(simulatorPort),
       HRI_DEMO_PASSWORD: DEMO_PASSWORD,
       HRI_SIGNIN_PER_MINUTE: "1000",
+      // A quick talker: a say is completed once said, and the tests' trials need not last as long as speech.
+      HRI_SIMULATOR_MS_PER_CHAR: "5",
       ...options.env,
     },
   });

@@ -2,7 +2,8 @@
 // or from the launcher. SIM_PORT (default 9090), SIM_HOST (default 127.0.0.1)
 // and SIM_PLUGIN (default plugins/nao6-ros2.json) choose where and as what;
 // SIM_SSH_PORT with SIM_SSH_PASSWORD (and SIM_SSH_USER, default nao) also
-// opens its SSH side for the plugin's NAOqi commands.
+// opens its SSH side for the plugin's NAOqi commands; SIM_MS_PER_CHAR (default
+// 60) is how long it takes to say each character.
 import { readFile } from "node:fs/promises";
 import { loadPlugin, formatPluginError } from "../../core/plugins";
 import { simulatedRobot, startSimulator, type Simulator } from "./index";
@@ -14,7 +15,7 @@ export async function startDefaultSimulator(env: Record<string, string | undefin
   return startSimulator({
     host: env.SIM_HOST ?? "127.0.0.1",
     port: Number(env.SIM_PORT ?? 9090),
-    nodes: simulatedRobot(loaded.value),
+    nodes: simulatedRobot(loaded.value, env.SIM_MS_PER_CHAR ? { msPerChar: Number(env.SIM_MS_PER_CHAR) } : {}),
     ssh:
       env.SIM_SSH_PORT && env.SIM_SSH_PASSWORD
         ? { port: Number(env.SIM_SSH_PORT), username: env.SIM_SSH_USER ?? "nao", password: env.SIM_SSH_PASSWORD }
