@@ -58,10 +58,10 @@ describe.sequential("the platform foundation, in the browser", () => {
     await page
       .getByText("nao6-ros2 is already provided by the first-party plugins; this repository's copy was not installed.")
       .waitFor();
-    await page.getByText("HRIStudio Official Robot Plugins").waitFor();
+    await page.getByText("HRIStudio Official Robot Plugins", { exact: true }).waitFor();
     // Its repository.json says official; the administrator's choice stands.
     await page
-      .getByRole("row", { name: /HRIStudio Official Robot Plugins/ })
+      .getByRole("row", { name: /^HRIStudio Official Robot Plugins/ })
       .getByText("verified")
       .waitFor();
     await screenshot(page, "admin-plugins");

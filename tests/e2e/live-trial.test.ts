@@ -105,6 +105,17 @@ describe.sequential("a live trial in two browsers", () => {
     await press("1", () => stepIs(wizard, "Response — correct"));
     await stepIs(observer, "Response — correct");
     await press("n", () => wizard.getByRole("button", { name: /End$/ }).waitFor());
+    // The robot says it has finished the response (and its nod) before the wizard ends the trial.
+    await expect
+      .poll(
+        async () => {
+          const log = await researcherApi.trials.events.query({ trialId: trialPath.split("/").pop()! });
+          const asked = log.filter((e) => e.type === "action.requested").length;
+          return log.filter((e) => /^action\.(completed|failed|timed_out|skipped)$/.test(e.type)).length >= asked;
+        },
+        { timeout: 15_000 },
+      )
+      .toBe(true);
     await press("n", () => expect.poll(() => observer.getByTestId("trial-status").textContent()).toBe("completed"));
     // A completed trial takes nothing more: its controls are off, emergency stop included, and the page says why.
     await wizard.getByText(/^This trial is completed: nothing more can be sent to it or to its robot/).waitFor();
