@@ -47,6 +47,8 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.getByText("live", { exact: true }).waitFor();
     await observer.getByText("live", { exact: true }).waitFor();
     await wizard.getByText("Olu Observer (observer)").waitFor();
+    // The robot the trial drives is connected once the runtime has opened the trial: a wizard waits for it.
+    await wizard.getByText("robot connected").waitFor();
 
     const press = async (key: string, then: () => Promise<unknown>) => {
       await wizard.keyboard.press(key);
