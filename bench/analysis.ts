@@ -8,7 +8,7 @@ import { launchBrowser, newContext, signInAs } from "../tests/support/browser";
 import { DEMO_PASSWORD, startApp } from "../tests/support/app";
 import { apiClient, signIn } from "../tests/support/http";
 import { createDatabase } from "../src/store/client";
-import { report, scratchDatabase } from "./support";
+import { report, scratchDatabase, unscriptedLog } from "./support";
 
 const EVENTS = 2000;
 const SAMPLES = 180_000;
@@ -29,41 +29,7 @@ try {
   // A long session: mostly unscripted robot actions, each requested, dispatched and completed.
   const t0 = new Date(Date.now() - MINUTES * 60_000);
   const span = MINUTES * 60_000;
-  const events = Array.from({ length: EVENTS }, (_, i) => {
-    const seq = i + 1;
-    const relMs = Math.round((i / EVENTS) * span);
-    const actionId = `a${Math.floor(i / 3)}`;
-    const body =
-      i === 0
-        ? { type: "trial.started" }
-        : i === EVENTS - 1
-          ? { type: "trial.completed" }
-          : [
-              {
-                type: "action.requested",
-                stepId: null,
-                actionId,
-                actionType: "say",
-                parameters: { text: `Line ${i}` },
-                scripted: false,
-                deviation: "unscripted",
-              },
-              { type: "action.dispatched", actionId },
-              { type: "action.completed", actionId },
-            ][i % 3]!;
-    return {
-      trial_id: trial.id,
-      seq,
-      type: body.type,
-      server_time: new Date(t0.getTime() + relMs).toISOString(),
-      rel_ms: relMs,
-      actor_id: null,
-      step_id: null,
-      action_id: "actionId" in body ? body.actionId : null,
-      payload: JSON.stringify(body),
-      deviation: "deviation" in body,
-    };
-  });
+  const events = unscriptedLog(trial.id, EVENTS, t0, (i) => Math.round((i / EVENTS) * span));
   const sql = db.$client;
   await sql`insert into trial_events ${sql(events)}`;
   const names = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];

@@ -13,7 +13,7 @@ import { createDatabase } from "../src/store/client";
 import { fold } from "../src/core/trial/fold";
 import type { TrialEvent, TrialProtocol } from "../src/core/trial";
 import { buildFixture, publishedVersion } from "../tests/api/fixture";
-import { percentile, scratchDatabase } from "./support";
+import { percentile, scratchDatabase, unscriptedLog } from "./support";
 
 const RUNS = 3;
 const STUDY_SIZES = [10, 100, 1000];
@@ -24,41 +24,8 @@ const database = await scratchDatabase();
 const { db, close } = createDatabase(database.url, { max: 4 });
 const sql = db.$client;
 
-/** A trial's log of unscripted lines, as bench/analysis seeds it: each action requested, dispatched, completed. */
-function eventRows(trialId: string, count: number, t0: Date) {
-  return Array.from({ length: count }, (_, i) => {
-    const relMs = i * 100;
-    const actionId = `a${Math.floor(i / 3)}`;
-    const body =
-      i === 0
-        ? { type: "trial.started" }
-        : i === count - 1
-          ? { type: "trial.completed" }
-          : [
-              {
-                type: "action.requested",
-                stepId: null,
-                actionId,
-                actionType: "say",
-                parameters: { text: `Line ${i}` },
-                scripted: false,
-                deviation: "unscripted",
-              },
-              { type: "action.dispatched", actionId },
-              { type: "action.completed", actionId },
-            ][i % 3]!;
-    return {
-      trial_id: trialId,
-      seq: i + 1,
-      type: body.type,
-      server_time: new Date(t0.getTime() + relMs).toISOString(),
-      rel_ms: relMs,
-      action_id: "actionId" in body ? body.actionId : null,
-      payload: JSON.stringify(body),
-      deviation: "deviation" in body,
-    };
-  });
-}
+/** A trial's log of unscripted lines, as bench/analysis seeds it, an event every 100 ms. */
+const eventRows = (trialId: string, count: number, t0: Date) => unscriptedLog(trialId, count, t0, (i) => i * 100);
 
 async function insertEvents(rows: ReturnType<typeof eventRows>) {
   for (let start = 0; start < rows.length; start += 5000) {

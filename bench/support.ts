@@ -35,3 +35,45 @@ export function report(name: string, samples: number[], targetP99Ms?: number) {
     `${name.padEnd(58)} n=${String(sorted.length).padStart(6)}  p50=${percentile(sorted, 50).toFixed(3)} ms  p99=${p99.toFixed(3)} ms  max=${sorted.at(-1)!.toFixed(3)} ms${verdict}`,
   );
 }
+
+/**
+ * A trial's log of unscripted lines as rows of trial_events: started, then
+ * each line requested, dispatched and completed, then completed; `relMsOf`
+ * spaces the events from t0.
+ */
+export function unscriptedLog(trialId: string, count: number, t0: Date, relMsOf: (i: number) => number) {
+  return Array.from({ length: count }, (_, i) => {
+    const relMs = relMsOf(i);
+    const actionId = `a${Math.floor(i / 3)}`;
+    const body =
+      i === 0
+        ? { type: "trial.started" }
+        : i === count - 1
+          ? { type: "trial.completed" }
+          : [
+              {
+                type: "action.requested",
+                stepId: null,
+                actionId,
+                actionType: "say",
+                parameters: { text: `Line ${i}` },
+                scripted: false,
+                deviation: "unscripted",
+              },
+              { type: "action.dispatched", actionId },
+              { type: "action.completed", actionId },
+            ][i % 3]!;
+    return {
+      trial_id: trialId,
+      seq: i + 1,
+      type: body.type,
+      server_time: new Date(t0.getTime() + relMs).toISOString(),
+      rel_ms: relMs,
+      actor_id: null,
+      step_id: null,
+      action_id: "actionId" in body ? body.actionId : null,
+      payload: JSON.stringify(body),
+      deviation: "deviation" in body,
+    };
+  });
+}
