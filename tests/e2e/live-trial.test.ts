@@ -7,6 +7,7 @@ import { childPid, DEMO_PASSWORD, startApp, type RunningApp } from "../support/a
 import { expectAccessible } from "../support/accessibility";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
+import { explained } from "../support/explain";
 import { connectTrial } from "../support/socket";
 import { scoreRun } from "../support/storyteller-run-checklist";
 
@@ -184,13 +185,16 @@ describe.sequential("a live trial in two browsers", () => {
     await expect.poll(() => currentStep(wizard)).toBe("Introduction");
     await wizard.keyboard.press("n");
     // The robot takes its time to speak and wave; a loaded machine takes longer than poll's default second.
-    await expect
-      .poll(
-        async () =>
-          (await wizard.locator('[data-testid^="action-"]').allTextContents()).every((t) => t.startsWith("done")),
-        { timeout: 15_000 },
-      )
-      .toBe(true);
+    await explained(
+      expect
+        .poll(
+          async () =>
+            (await wizard.locator('[data-testid^="action-"]').allTextContents()).every((t) => t.startsWith("done")),
+          { timeout: 15_000 },
+        )
+        .toBe(true),
+      { app, trialIds: [wizard.url().split("/").pop()!], pages: [wizard] },
+    );
 
     process.kill(childPid(app, "runtime/main.ts"), "SIGKILL");
     await wizard.getByText("reconnecting", { exact: true }).waitFor();

@@ -7,6 +7,7 @@ import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
+import { explained } from "../support/explain";
 import { apiClient, signIn } from "../support/http";
 
 const SECOND_OBSERVER = { email: "second-observer@demo.hristudio", password: "second-observer-pw" };
@@ -78,7 +79,11 @@ describe.sequential("observing a live trial", () => {
       .toMatch(/go to 2 watching/);
 
     for (const page of observers) {
-      await page.getByTestId("live-video").waitFor({ state: "visible", timeout: 30_000 });
+      await explained(page.getByTestId("live-video").waitFor({ state: "visible", timeout: 30_000 }), {
+        app,
+        trialIds: [trialId],
+        pages: [wizard, page],
+      });
       const frame = await videoFrameDecoded(page);
       expect(frame.width).toBeGreaterThan(0);
       expect(frame.height).toBeGreaterThan(0);

@@ -9,6 +9,7 @@ import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
+import { explained } from "../support/explain";
 import { listenToSpeech } from "../support/robot-ears";
 
 const GREETING = "Hello. I want to tell you about Kai, an astronaut who went on a mission to Mars.";
@@ -65,7 +66,9 @@ describe.sequential("two robots, two wizards", () => {
     );
     await Promise.all(pages.map((p) => p.keyboard.press("n")));
     // Each robot heard the greeting once: its own trial's, never the other's.
-    for (const ear of ears) await expect.poll(() => ear.heard, { timeout: 15_000 }).toEqual([GREETING]);
+    const trialIds = trialPaths.map((p) => p.split("/").pop()!);
+    for (const ear of ears)
+      await explained(expect.poll(() => ear.heard, { timeout: 15_000 }).toEqual([GREETING]), { app, trialIds, pages });
     // What the robot is doing reaches the wizard's page: its posture and battery, from the robot.
     for (const page of pages) {
       await expect.poll(() => page.getByTestId("robot-posture").textContent()).toBe("stand");
