@@ -50,6 +50,9 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   // Live video: this connection's name among the trial's, and the STUN/TURN servers to use.
   const [peer, setPeer] = useState<{ peerId: string; iceServers: IceServers } | null>(null);
   const signalListeners = useRef(new Set<SignalListener>());
+  // Signals that came before the video listened (an offer can beat the watcher's first render): kept, in order,
+  // for the first listener, or the wizard's one offer to this page would be lost and the picture never come.
+  const unheardSignals = useRef<Array<Parameters<SignalListener>>>([]);
   // The robot's camera goes straight to the picture that shows it: a frame re-renders nothing else.
   const cameraListeners = useRef(new Set<(frame: CameraFrame) => void>());
   // Signals' outcomes are the video's business: a refused one never becomes the page's notice.
@@ -122,7 +125,10 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
           setRobotState(state);
         } else if (m.type === "annotation") setAnnotations((a) => [...a, m.annotation]);
         else if (m.type === "camera") for (const show of cameraListeners.current) show(m);
-        else if (m.type === "signal") for (const listen of signalListeners.current) listen(m.peerId, m.signal);
+        else if (m.type === "signal") {
+          if (signalListeners.current.size === 0) unheardSignals.current.push([m.peerId, m.signal]);
+          for (const listen of signalListeners.current) listen(m.peerId, m.signal);
+        }
         else if ((m.type === "ack" || m.type === "rejected") && m.requestId && signalRequests.current.has(m.requestId))
           signalRequests.current.delete(m.requestId);
         else if (m.type === "codes")
@@ -148,6 +154,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         setConnected(false);
         setPeer(null);
         signalRequests.current.clear();
+        unheardSignals.current = [];
         // An annotation or a signal is not asked again (no idempotency key); a command is, once reconnected.
         const dropped = (all: boolean) => {
           for (const [id, { settle, message }] of pending.current)
@@ -202,6 +209,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   }, []);
   const onSignal = useCallback((listen: SignalListener) => {
     signalListeners.current.add(listen);
+    for (const [peerId, signal] of unheardSignals.current.splice(0)) listen(peerId, signal);
     return () => void signalListeners.current.delete(listen);
   }, []);
 
