@@ -151,7 +151,9 @@ describe.sequential("observing a live trial", () => {
     await press(oda, "a", 3, "Away");
     await olu.locator("li[data-held]").filter({ hasText: "At the task" }).waitFor();
     expect(await olu.locator("li[data-held]").count()).toBe(1);
-    await olu.getByRole("heading", { name: "Coding", exact: true }).evaluate((h) => h.scrollIntoView({ block: "start" }));
+    await olu
+      .getByRole("heading", { name: "Coding", exact: true })
+      .evaluate((h) => h.scrollIntoView({ block: "start" }));
     await screenshot(olu, "observer-coding");
 
     await wizard.getByRole("button", { name: "Complete trial" }).click();
@@ -189,6 +191,7 @@ describe.sequential("observing a live trial", () => {
     const tier = (name: string) => page.getByRole("region", { name: `Tier ${name}` }).getByRole("listitem");
     await expect.poll(() => tier("Olu Observer - Gaze").allTextContents(), { timeout: 30_000 }).toHaveLength(2);
     for (const [name, names] of [
+      // The states each observer's last key began were never ended: they hold to the trial's end.
       ["Olu Observer - Gaze", ["At the robot", "At the task"]],
       ["Olu Observer - Expression", ["Smile"]],
       ["Oda Observer - Gaze", ["At the robot", "Away"]],
@@ -197,6 +200,10 @@ describe.sequential("observing a live trial", () => {
       const texts = await tier(name).allTextContents();
       expect(texts, name).toHaveLength(names.length);
       names.forEach((code, i) => expect(texts[i], name).toContain(code));
+      if (name.endsWith("Gaze")) {
+        expect(texts[0], name).toMatch(/\d s – \d+\.\d s/);
+        expect(texts[1], name).toContain("held to the end");
+      }
     }
     const panel = page.getByRole("region", { name: "Agreement between observers" });
     await panel
@@ -206,6 +213,11 @@ describe.sequential("observing a live trial", () => {
       expect(await panel.locator(`[data-kappa="${set.setId}"]`).textContent(), set.setId).toBe(
         set.kappa === null ? "undefined" : set.kappa.toFixed(2),
       );
+    // In the scheme's words: the set's name over its kappa, the codes' names heading its confusion table.
+    await panel.getByRole("heading", { name: /^Gaze: Cohen's κ = / }).waitFor();
+    expect(
+      await panel.getByRole("table", { name: "Confusion table of Gaze" }).getByRole("columnheader").allTextContents(),
+    ).toEqual(["", "At the robot", "At the task", "Away", "(none)"]);
     await page
       .getByRole("heading", { name: "Codes", exact: true })
       .evaluate((h) => h.scrollIntoView({ block: "start" }));
