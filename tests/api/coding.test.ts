@@ -128,6 +128,16 @@ describe("coding schemes", () => {
       [0, 0, 0, 0],
     ]);
     expect(gazeAgreement.table.categories).toEqual(["robot", "task", "away", "(none)"]);
+    // The figure is shown in the scheme's words: each set's and code's name beside its id.
+    expect(result.sets.find((s) => s.id === "gaze")).toEqual({
+      id: "gaze",
+      name: "Gaze",
+      codes: [
+        { id: "robot", name: "At the robot" },
+        { id: "task", name: "At the task" },
+        { id: "away", name: "Away" },
+      ],
+    });
     expect(gazeAgreement.kappa).toBeCloseTo(0.5, 6);
     // Nobody coded an expression: no slices differ, but chance agreement is certain, so kappa is undefined.
     expect(pair!.pooled.find((s) => s.setId === "expression")!.kappa).toBeNull();

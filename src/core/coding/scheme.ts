@@ -22,8 +22,7 @@ export const codeSchema = z.object({
   name: text(100),
   /**
    * One key on the keyboard: a letter, a digit or a punctuation mark, compared
-   * without case. Space and Escape are not codes' keys: the coding panel keeps
-   * Escape to end every open state.
+   * without case. Space and Escape are not codes' keys.
    */
   key: z
     .string()

@@ -50,7 +50,7 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
   const result = useQuery(trpc.coding.agreement.queryOptions({ schemeVersionId: versionId, sliceMs }));
   if (result.isPending) return <Spinner label="Comparing the observers…" />;
   if (result.error) return <Problem error={result.error} />;
-  const { observers, pairs } = result.data;
+  const { sets: named, observers, pairs } = result.data;
   if (observers.length < 2)
     return (
       <p className="text-sm text-slate-600">
@@ -105,7 +105,7 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
             .
           </p>
           {sets.map((s) => (
-            <SetFigure key={s.setId} set={s} />
+            <SetFigure key={s.setId} set={s} names={named.find((n) => n.id === s.setId)} />
           ))}
         </>
       )}
@@ -113,12 +113,17 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
   );
 }
 
-function SetFigure({ set }: { set: SetAgreement }) {
+type SetNames = { name: string; codes: Array<{ id: string; name: string }> };
+
+function SetFigure({ set, names }: { set: SetAgreement; names?: SetNames }) {
   const kappa = set.kappa === null ? "undefined" : set.kappa.toFixed(2);
+  const setName = names?.name ?? set.setId;
+  // "(none)" is no code's id (ids are slugs): it stays as it is.
+  const codeName = (id: string) => names?.codes.find((c) => c.id === id)?.name ?? id;
   return (
     <Card className="space-y-2 p-3">
       <h3 className="font-medium">
-        {set.setId}: Cohen&apos;s κ = <span data-kappa={set.setId}>{kappa}</span>
+        {setName}: Cohen&apos;s κ = <span data-kappa={set.setId}>{kappa}</span>
         {set.kappa !== null && <span className="text-slate-600"> ({strength(set.kappa)})</span>}
       </h3>
       <p className="text-xs text-slate-600">
@@ -126,19 +131,19 @@ function SetFigure({ set }: { set: SetAgreement }) {
         {(set.expected * 100).toFixed(1)} %.
         {set.kappa === null && " Kappa is undefined where chance agreement is certain (both always coded the same)."}
       </p>
-      <Table aria-label={`Confusion table of ${set.setId}`}>
+      <Table aria-label={`Confusion table of ${setName}`}>
         <thead>
           <tr>
             <Th />
             {set.table.categories.map((c) => (
-              <Th key={c}>{c}</Th>
+              <Th key={c}>{codeName(c)}</Th>
             ))}
           </tr>
         </thead>
         <tbody>
           {set.table.counts.map((row, i) => (
             <tr key={i}>
-              <Th scope="row">{set.table.categories[i]}</Th>
+              <Th scope="row">{codeName(set.table.categories[i]!)}</Th>
               {row.map((n, j) => (
                 <Td key={j} className={i === j ? "font-semibold" : undefined}>
                   {n}

@@ -65,7 +65,9 @@ export function CodeTiers({ trialId, playheadMs }: { trialId: string; playheadMs
                 <li key={c.id} className="flex items-center gap-2">
                   <span className="inline-block h-2.5 w-2.5 rounded-full" style={{ background: names?.colour }} />
                   <span className="font-mono text-xs text-slate-600">
-                    {sec(c.startMs)} s{c.endMs !== null && ` – ${sec(c.endMs)} s`}
+                    {sec(c.startMs)} s
+                    {/* A state never ended holds to the trial's end (so agreement counts it): not a moment. */}
+                    {c.endMs !== null ? ` – ${sec(c.endMs)} s` : c.kind === "state" && " – held to the end"}
                   </span>
                   {names?.code ?? c.codeId}
                   {c.modifiers.length > 0 && <span className="text-slate-600">({c.modifiers.join(", ")})</span>}

@@ -47,6 +47,12 @@ export async function studyAgreement(
   const ids = [...observers.keys()].sort();
   const pairs = ids.flatMap((a, i) => ids.slice(i + 1).map((b) => [a, b] as const));
   return {
+    // The sets' and codes' names, so the figures speak the scheme's words, not its ids.
+    sets: scheme.sets.map((set) => ({
+      id: set.id,
+      name: set.name,
+      codes: set.codes.map((code) => ({ id: code.id, name: code.name })),
+    })),
     observers: ids.map((id) => ({ id, name: observers.get(id)! })),
     pairs: pairs.map(([a, b]) => {
       // Only the trials both coded: a trial one of them never watched says nothing about their agreement.
