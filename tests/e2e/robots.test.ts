@@ -2,11 +2,11 @@
 // wizards in two browsers, each trial on its own robot: each wizard sees which
 // robot before starting, and what it is doing while the trial runs; each
 // robot hears its own trial's speech, once; the administrator sees both robots'
-// health. (Speech durations confirmed by the robot are asserted once the
-// robot link confirms completion: the lead adds that here.)
+// health; the analysis times each robot's speech as the robot spoke it.
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { fidelityReport } from "../../src/core/analysis/fidelity";
+import { DEMO_PASSWORD, SIMULATOR_MS_PER_CHAR, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
 import { explained } from "../support/explain";
@@ -69,6 +69,23 @@ describe.sequential("two robots, two wizards", () => {
     const trialIds = trialPaths.map((p) => p.split("/").pop()!);
     for (const ear of ears)
       await explained(expect.poll(() => ear.heard, { timeout: 15_000 }).toEqual([GREETING]), { app, trialIds, pages });
+    // The analysis times each greeting as the robot spoke it: the simulator's speaking time (so many ms a
+    // character), within 50 ms, and confirmed by the robot's own "said" message, not estimated.
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const greetingOf = async (trialId: string) => {
+      const { protocol } = await researcher.trials.get.query({ trialId });
+      const events = await researcher.trials.events.query({ trialId });
+      return fidelityReport(protocol, events).actions.find((a) => a.type === "say")!;
+    };
+    for (const trialId of trialIds) {
+      await explained(expect.poll(async () => (await greetingOf(trialId)).confirmation).toBe("robot"), {
+        app,
+        trialIds,
+        pages,
+      });
+      const took = (await greetingOf(trialId)).durationMs!;
+      expect(Math.abs(took - SIMULATOR_MS_PER_CHAR * GREETING.length), `took ${took} ms`).toBeLessThanOrEqual(50);
+    }
     // What the robot is doing reaches the wizard's page: its posture and battery, from the robot.
     for (const page of pages) {
       await expect.poll(() => page.getByTestId("robot-posture").textContent()).toBe("stand");

@@ -9,6 +9,8 @@ import { freePort } from "../../src/store/embedded";
 const root = resolve(import.meta.dirname, "..", "..");
 export const BUN = join(root, "node_modules", "@oven", `bun-${process.platform}-${process.arch}`, "bin", "bun");
 export const DEMO_PASSWORD = "demo-password-for-tests";
+/** How long the tests' simulated robots take to say one character: a quick talker. */
+export const SIMULATOR_MS_PER_CHAR = 5;
 
 export interface RunningApp {
   url: string;
@@ -52,7 +54,7 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
       HRI_DEMO_PASSWORD: DEMO_PASSWORD,
       HRI_SIGNIN_PER_MINUTE: "1000",
       // A quick talker: a say is completed once said, and the tests' trials need not last as long as speech.
-      HRI_SIMULATOR_MS_PER_CHAR: "5",
+      HRI_SIMULATOR_MS_PER_CHAR: String(SIMULATOR_MS_PER_CHAR),
       ...options.env,
     },
   });
