@@ -21,6 +21,8 @@ export interface ConnectionHooks {
   send(text: string): void;
   log(text: string): void;
   record(message: Record<string, unknown>): void;
+  /** Also tell the client what was refused, as a `status` frame (protocol.md); the recorded servers never do. */
+  statusFrames?: boolean;
 }
 
 type Message = Record<string, unknown>;
@@ -95,7 +97,10 @@ export class Connection {
     try {
       handler(m);
     } catch (error) {
-      this.hooks.log(`${m.op}: ${(error as Error).message}`);
+      const text = `${m.op}: ${(error as Error).message}`;
+      this.hooks.log(text);
+      if (this.hooks.statusFrames)
+        this.send({ op: "status", ...(m.id !== undefined ? { id: m.id } : {}), level: "error", msg: text });
     }
   }
 
