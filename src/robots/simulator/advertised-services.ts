@@ -5,7 +5,8 @@
 // advertisement) and the request with every field filled; the advertiser's
 // service_response with that id answers the caller. The response's `result`
 // is not read (rosbridge fills the response from `values` either way), so a
-// response without `values` answers nothing: the caller waits. Errors go to
+// response without `values`, or with values not an object, answers nothing:
+// the caller waits. Errors go to
 // the log only, as everywhere on this server. The newest advertisement of a
 // name wins; when an advertisement ends (unadvertise, displaced, the client
 // gone) its calls in flight fail, as rosbridge's graceful_shutdown does.
