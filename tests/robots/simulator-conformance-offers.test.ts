@@ -134,6 +134,20 @@ describe("advertise_service from a client", () => {
     );
   });
 
+  it("a failure from roslib's advertiseAsync (values a string) answers nothing either, as rosbridge's type check refuses it", async () => {
+    sim = await startSimulator({ port: 0, nodes: [] });
+    const robot = await client(sim.url);
+    const service = new ROSLIB.Service<SetBool, Answer>({ ros: robot, name: "/ask", serviceType: "std_srvs/SetBool" });
+    void service.advertiseAsync(async () => {
+      throw new Error("no motor");
+    });
+    await advertised("/ask");
+    const answer = call(await client(sim.url), "/ask", { data: true });
+    await expect.poll(() => sim!.log.some((l) => l.text === "service_response: values must be an object")).toBe(true);
+    robot.close();
+    expect(await answer).toMatchObject({ ok: false, error: expect.stringContaining("/ask was unadvertised") });
+  });
+
   it("after unadvertise_service the service does not exist", async () => {
     sim = await startSimulator({ port: 0, nodes: [] });
     const [robot, wizard] = [await client(sim.url), await client(sim.url)];
