@@ -1,6 +1,6 @@
 // What the robot's bridge reports goes into the trial's log and to the
-// wizard: a state subscription the bridge refuses (a type it does not know)
-// and the bridge's own status frames. The real runtime parts over a real
+// wizard: a state subscription or an action's advertise the bridge refuses
+// (a type it does not know) and the bridge's own status frames. The real runtime parts over a real
 // socket: the NAO6 plugin through roslib (RosbridgeTransport, pluginRobot)
 // to the simulated robot, told to send protocol.md's status frames, and a
 // trial host writing to a real database.
@@ -38,10 +38,10 @@ describe("problems the robot's bridge reports", async () => {
     host = sim = null;
   });
 
-  async function open() {
-    sim = await startSimulator({ port: 0, nodes: simulatedRobot(plugin, { msPerChar: 1 }), statusFrames: true });
+  async function open(drives = plugin) {
+    sim = await startSimulator({ port: 0, nodes: simulatedRobot(nao, { msPerChar: 1 }), statusFrames: true });
     const trialId = await bareTrial(db);
-    host = await TrialHost.open(db, trialId, protocol, pluginRobot(plugin, new RosbridgeTransport({ url: sim.url })));
+    host = await TrialHost.open(db, trialId, protocol, pluginRobot(drives, new RosbridgeTransport({ url: sim.url })));
     const wizard: string[] = [];
     host.onRobotStatus((_, detail) => detail && wizard.push(detail));
     const problems = async () =>
@@ -63,6 +63,25 @@ describe("problems the robot's bridge reports", async () => {
     const rows = eventRows(trialId, events, { wizard: null, createdBy: null }, trialNames(protocol, events));
     const row = rows.find((r) => r[4] === "robot.problem")!;
     expect(JSON.parse(String(row.at(-1)))).toMatchObject({ type: "robot.problem", text });
+  });
+
+  it("a refused advertise of an action's topic is logged during the trial", async () => {
+    // The say action's message type misspelt: the bridge refuses roslib's advertise of /speech.
+    const misspelt: Plugin = {
+      ...plugin,
+      actions: nao.actions.map((a) =>
+        a.id === "say_text" && a.ros2 ? { ...a, ros2: { ...a.ros2, messageType: "no_such_msgs/msg/Words" } } : a,
+      ),
+    };
+    const { problems } = await open(misspelt);
+    await expect.poll(problems, { timeout: 15_000 }).toHaveLength(1);
+    expect((await host!.command({ kind: "start" }, null)).ok).toBe(true);
+    expect((await host!.command({ kind: "next" }, null)).ok).toBe(true);
+    await expect.poll(problems, { timeout: 15_000 }).toHaveLength(2);
+    expect((await problems())[1]).toMatch(/^the robot's bridge reported an error: advertise: .*no_such_msgs/);
+    expect(sim!.received.find((r) => r.message.op === "advertise" && r.message.topic === "/speech")?.message.type).toBe(
+      "no_such_msgs/msg/Words",
+    );
   });
 
   it("status frames of level error and warning are logged in order, the same one told again in a row once; info is not", async () => {
