@@ -38,6 +38,7 @@ export function withHealth(
     halt: () => link.halt(),
     connected: () => link.connected(),
     onConnection: (listener) => link.onConnection(listener),
+    onProblem: (listener) => link.onProblem(listener),
     watchCamera: (listener) => link.watchCamera(listener),
     watchState(listener) {
       const stops = [link.watchState(listener), ...(moreState ? [moreState(listener)] : [])];

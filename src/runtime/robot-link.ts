@@ -57,6 +57,11 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
         listener(h.state === "connected", said ?? (h.state === "connected" ? undefined : h.state));
       });
     },
+    onProblem(listener) {
+      transport.onHealth((h) => {
+        if (h.problem) listener(h.problem);
+      });
+    },
     watchState(listener) {
       const stops = (plugin.stateTopics ?? []).map((t) =>
         transport.subscribe(t.topic, t.messageType, (message) => listener(t.topic, message), {
@@ -93,6 +98,7 @@ export function unavailableRobot(reason: string): RobotLink {
     onConnection(listener) {
       listener(false, reason);
     },
+    onProblem() {},
     watchState: () => () => {},
     watchCamera: () => () => {},
     close() {},

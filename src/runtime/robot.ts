@@ -30,5 +30,7 @@ export interface RobotLink {
   /** The robot's camera frames (the plugin's `camera`), base64, at its throttle; returns a function that stops them. */
   watchCamera(listener: (frame: CameraFrame) => void): () => void;
   onConnection(listener: (connected: boolean, detail?: string) => void): void;
+  /** An error or warning the robot's side reported (a refused subscription, a bridge's status frame): the trial logs it. */
+  onProblem(listener: (problem: string) => void): void;
   close(): void;
 }

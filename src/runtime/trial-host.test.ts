@@ -28,6 +28,7 @@ function timekeeperRobot(): RobotLink {
     halt() {},
     connected: () => true,
     onConnection() {},
+    onProblem() {},
     watchState: () => () => {},
     watchCamera: () => () => {},
     close() {},

@@ -75,6 +75,7 @@ const ALWAYS_LOGGED = new Set<Command["kind"]>([
   "timed_out",
   "emergency_stop",
   "abort",
+  "robot_problem",
 ]);
 
 /** The wizard's commands that can set the robot going: after a stop, one asked for before it is stale. */
@@ -151,6 +152,13 @@ export class TrialHost {
     this.samples = sampleRecorder(db, trialId, (error) =>
       console.error(`[runtime] trial ${trialId}: samples not stored: ${String(error)}`),
     );
+    // What the robot's side reports goes in the log, for the analysis and the exports; the same one told again in a row, once.
+    let lastProblem: string | null = null;
+    robot.onProblem((text) => {
+      if (text === lastProblem || this.shut) return;
+      lastProblem = text;
+      void this.command({ kind: "robot_problem", text }, null);
+    });
     this.stopWatching = robot.watchState((topic, message) => {
       const live = this.state.status === "in_progress" || this.state.status === "paused";
       if (live && this.t0 !== null) this.samples.add(topic, Date.now() - this.t0, message);

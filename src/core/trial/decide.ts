@@ -23,6 +23,11 @@ export function decide(protocol: TrialProtocol, state: TrialState, command: Comm
       return ok({ type: "note.added", text: command.text });
     case "recording":
       return ok({ type: "recording.started", recordingId: command.recordingId, offsetMs: command.offsetMs });
+    case "robot_problem":
+      // Logged whenever the link is open, before the start too (state subscriptions are refused as it connects).
+      if (state.status === "completed" || state.status === "aborted") return no("This trial has already ended.");
+      if (!command.text.trim()) return no("The robot's problem has no text.");
+      return ok({ type: "robot.problem", text: command.text });
     case "abort":
       if (state.status === "completed" || state.status === "aborted") return no("This trial has already ended.");
       return ok({ type: "trial.aborted", reason: command.reason });

@@ -111,6 +111,22 @@ describe("the trial engine", () => {
       [["recording.started", null, null]],
     ],
     [
+      "a problem the robot's side reported is logged before the trial starts",
+      [{ kind: "robot_problem", text: "subscribe: Unable to load the manifest for package no_such_msgs" }],
+      [["robot.problem", null, null]],
+    ],
+    [
+      "and while it runs or is paused",
+      [...start, { kind: "pause" }, { kind: "robot_problem", text: "the robot's bridge reported a warning: x" }],
+      [["robot.problem", null, null]],
+    ],
+    [
+      "but not once the trial has ended",
+      [...start, { kind: "abort", reason: "stopped" }, { kind: "robot_problem", text: "late" }],
+      "This trial has already ended.",
+    ],
+    ["nor without words", [{ kind: "robot_problem", text: " " }], "The robot's problem has no text."],
+    [
       "next starts a parallel group together",
       [...start, { kind: "next" }],
       [

@@ -37,7 +37,9 @@ export type EventBody =
   | { type: "trial.completed" }
   | { type: "note.added"; text: string }
   /** A recording of the session began `offsetMs` after t0 (negative: before it), as its recorder measured. */
-  | { type: "recording.started"; recordingId: string; offsetMs: number };
+  | { type: "recording.started"; recordingId: string; offsetMs: number }
+  /** An error or warning the robot's side reported (a refused subscription, a status frame), in its words. */
+  | { type: "robot.problem"; text: string };
 
 /** An event as the engine produces it; the runtime adds seq, times and actor. */
 export type EngineEvent = EventBody & { deviation?: DeviationKind };
@@ -75,7 +77,8 @@ export type Command =
   | { kind: "dispatched"; actionId: string; detail?: Record<string, unknown> }
   | { kind: "completed"; actionId: string; detail?: Record<string, unknown> }
   | { kind: "failed"; actionId: string; reason: string }
-  | { kind: "timed_out"; actionId: string };
+  | { kind: "timed_out"; actionId: string }
+  | { kind: "robot_problem"; text: string };
 
 export type ActionStatus = "waiting" | "requested" | "running" | "done" | "failed" | "timed_out" | "skipped";
 

@@ -66,10 +66,11 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   if (trial.error || events.error) return <Problem error={trial.error ?? events.error} />;
   const t = trial.data;
   const r = report!;
-  // What an event in the list is about: its action, else its step.
+  // What an event in the list is about: its action, else its step; a robot's problem, in its own words.
   const about = (e: object) => {
     const { stepName, actionName } = named!.of(e);
-    return actionName ?? stepName;
+    const problem = e as { type?: string; text?: string };
+    return actionName ?? stepName ?? (problem.type === "robot.problem" ? problem.text : undefined);
   };
   const timeline: TimelineItem[] = [
     ...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })),

@@ -1,22 +1,28 @@
 // One client connection, speaking rosbridge v2 the way the recorded server
 // does: no status frames and no acknowledgements (errors go to the log
 // only), state that belongs to this connection alone, stream parsing of
-// incoming text, fragments both ways. Two server faults are imitated on
-// purpose because clients must survive them: a bare JSON number, null or
-// boolean stops all processing on the connection (07), and a non-integer
-// fragment_size makes it mute (05). Either way the socket stays open.
+// incoming text, fragments both ways. Services a client advertises
+// (advertised-services.ts) and latched topics follow rosbridge_suite's code.
+// Two server faults are imitated on purpose because clients must survive
+// them: a bare JSON number, null or boolean stops all processing on the
+// connection (07), and a non-integer fragment_size makes it mute (05).
+// Either way the socket stays open.
 import { ActionGoals } from "./action-goals";
+import { AdvertisedServices } from "./advertised-services";
 import { ServiceCalls } from "./service-calls";
 import type { RosGraph } from "./graph";
 import { messageJson, populate } from "./ros-types";
 import { IncomingStream } from "./stream";
 import { Subscription } from "./subscription";
 import { encode, encodePublish, fragments } from "./wire";
+import { optionalInteger, requireString } from "./fields";
 
 export interface ConnectionHooks {
   send(text: string): void;
   log(text: string): void;
   record(message: Record<string, unknown>): void;
+  /** Also tell the client what was refused, as a `status` frame (protocol.md); the recorded servers never do. */
+  statusFrames?: boolean;
 }
 
 type Message = Record<string, unknown>;
@@ -28,6 +34,7 @@ export class Connection {
   private readonly partial = new Map<unknown, { total: unknown; parts: Map<unknown, string> }>();
   private readonly calls: ServiceCalls;
   private readonly goals: ActionGoals;
+  private readonly offered: AdvertisedServices;
   private fragmentSize: unknown = null;
   /** rosbridge's worker thread died: nothing sent on this connection is processed. */
   private deaf = false;
@@ -39,6 +46,7 @@ export class Connection {
   ) {
     this.calls = new ServiceCalls(graph, (m) => this.send(m), hooks.log);
     this.goals = new ActionGoals(graph, (m) => this.send(m), hooks.log);
+    this.offered = new AdvertisedServices(graph, this.owner, (m) => this.send(m), hooks.log);
   }
 
   receive(text: string) {
@@ -51,12 +59,16 @@ export class Connection {
 
   close() {
     this.goals.close();
+    this.offered.close();
     for (const { subscription, stop } of this.subscriptions.values()) {
       subscription.close();
       stop();
     }
     this.subscriptions.clear();
-    for (const topic of this.advertised.keys()) this.graph.release(topic, this.owner);
+    for (const topic of this.advertised.keys()) {
+      this.graph.release(topic, this.owner);
+      this.graph.removePublisher(topic, this.owner);
+    }
     this.advertised.clear();
   }
 
@@ -85,7 +97,10 @@ export class Connection {
     try {
       handler(m);
     } catch (error) {
-      this.hooks.log(`${m.op}: ${(error as Error).message}`);
+      const text = `${m.op}: ${(error as Error).message}`;
+      this.hooks.log(text);
+      if (this.hooks.statusFrames)
+        this.send({ op: "status", ...(m.id !== undefined ? { id: m.id } : {}), level: "error", msg: text });
     }
   }
 
@@ -97,6 +112,8 @@ export class Connection {
       if (conflict) throw new Error(conflict);
       const ids = this.advertised.get(topic) ?? new Set();
       this.advertised.set(topic, ids.add(m.id ?? null));
+      const warning = this.graph.addPublisher(topic, this.owner, m.latch === true);
+      if (warning) this.hooks.log(warning);
     },
     unadvertise: (m) => {
       const topic = requireString(m, "topic");
@@ -106,6 +123,7 @@ export class Connection {
       if (ids.size && m.id !== undefined) return;
       this.advertised.delete(topic);
       this.graph.release(topic, this.owner);
+      this.graph.removePublisher(topic, this.owner);
     },
     publish: (m) => {
       const topic = requireString(m, "topic");
@@ -113,7 +131,7 @@ export class Connection {
       if (!typeKey) throw new Error(`Cannot infer topic type for topic ${topic} as it is not yet advertised`);
       if ("msg" in m && (typeof m.msg !== "object" || m.msg === null || Array.isArray(m.msg)))
         throw new Error("msg must be an object");
-      this.graph.publish(topic, populate(typeKey, m.msg));
+      this.graph.publishFromClient(topic, populate(typeKey, m.msg));
     },
     subscribe: (m) => {
       const topic = requireString(m, "topic");
@@ -132,6 +150,11 @@ export class Connection {
         );
         entry = { subscription, stop: this.graph.listen(topic, (msg) => subscription.deliver(msg)) };
         this.subscriptions.set(topic, entry);
+        entry.subscription.add((m.id as string | undefined) ?? null, { throttleRate, queueLength });
+        // A new subscriber of a latched topic gets its last message at once (a further id on the topic does not).
+        const latched = this.graph.latched(topic);
+        if (latched) subscription.deliver(latched);
+        return;
       }
       entry.subscription.add((m.id as string | undefined) ?? null, { throttleRate, queueLength });
     },
@@ -145,6 +168,9 @@ export class Connection {
       }
     },
     call_service: (m) => this.calls.call(m),
+    advertise_service: (m) => this.offered.advertise(m),
+    unadvertise_service: (m) => this.offered.unadvertise(m),
+    service_response: (m) => this.offered.respond(m),
     send_action_goal: (m) => this.goals.goal(m),
     cancel_action_goal: (m) => this.goals.cancel(m),
     fragment: (m) => this.defragment(m),
@@ -170,16 +196,4 @@ export class Connection {
     const frames = size === null ? [text] : fragments(text, size as number, message.id);
     for (const frame of frames) this.hooks.send(frame);
   }
-}
-
-function requireString(m: Message, field: string): string {
-  if (!(field in m)) throw new Error(`missing ${field}`);
-  if (typeof m[field] !== "string") throw new Error(`${field} must be a string`);
-  return m[field] as string;
-}
-
-function optionalInteger(m: Message, field: string): number {
-  if (m[field] === undefined) return 0;
-  if (!Number.isInteger(m[field])) throw new Error(`${field} must be an integer`);
-  return m[field] as number;
 }

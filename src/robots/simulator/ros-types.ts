@@ -159,6 +159,10 @@ export function populateRequest(serviceKey: string, value: unknown): Record<stri
   return populateWith(SERVICES[serviceKey]!.request, `${serviceKey}Request`, value);
 }
 
+export function populateResponse(serviceKey: string, value: unknown): Record<string, unknown> {
+  return populateWith(SERVICES[serviceKey]!.response, `${serviceKey}Response`, value);
+}
+
 function populateWith(definition: Definition, typeName: string, value: unknown): Record<string, unknown> {
   const given = (value ?? {}) as Record<string, unknown>;
   if (typeof given !== "object" || Array.isArray(given))

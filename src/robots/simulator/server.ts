@@ -17,6 +17,12 @@ export interface SimulatorOptions {
   nodes: RobotNode[];
   /** Also answer the plugin's NAOqi commands over SSH, on the same robot state. */
   ssh?: Omit<SimulatedSshOptions, "host">;
+  /**
+   * A refused op (a subscribe or advertise of a type it does not know, a bad publish…) is also told to its
+   * client as an error `status` frame, as rosbridge's protocol.md describes. Off by default: the recorded
+   * servers only log it (README G1).
+   */
+  statusFrames?: boolean;
 }
 
 export interface Received {
@@ -107,6 +113,7 @@ export async function startSimulator(options: SimulatorOptions): Promise<Simulat
       send,
       log: (text) => sim.log.push({ at: at(), connection: id, text }),
       record: (message) => sim.received.push({ at: at(), connection: id, message }),
+      statusFrames: options.statusFrames,
     });
     // A binary frame is read as UTF-8 text (the real server happened to
     // answer a binary JSON frame too; see transcript 07).

@@ -4,6 +4,7 @@
 // "name#id"); a failure has result false and values a string. Calls run
 // concurrently, so a slow service does not hold up the next call: match
 // responses by id. The "timeout" field is ignored, as on the real server.
+import { graphName } from "./fields";
 import type { RosGraph } from "./graph";
 import { populateRequest, requestFields } from "./ros-types";
 
@@ -22,7 +23,7 @@ export class ServiceCalls {
     const hash = m.service.indexOf("#");
     const id = m.id !== undefined ? m.id : hash >= 0 ? m.service.slice(hash + 1) : undefined;
     const bare = hash >= 0 ? m.service.slice(0, hash) : m.service;
-    const name = bare.startsWith("/") ? bare : `/${bare}`;
+    const name = graphName(bare);
     const respond = (values: unknown, result: boolean) =>
       this.send({ op: "service_response", service: m.service, values, result, ...(id !== undefined ? { id } : {}) });
     const service = this.graph.services.get(name);
