@@ -84,7 +84,11 @@ export async function pluginCatalog(db: Reader): Promise<{ plugins: KnownPlugin[
 }
 
 /** The document an experiment for `robotId` runs today: `source`'s, or with null the default. */
-export async function knownPlugin(db: Reader, robotId: string, source: string | null): Promise<KnownPlugin | undefined> {
+export async function knownPlugin(
+  db: Reader,
+  robotId: string,
+  source: string | null,
+): Promise<KnownPlugin | undefined> {
   const { versions } = await known(db, eq(installedPlugins.robotId, robotId));
   return chooseDocument(latestPerSource(versions), robotId, source);
 }
