@@ -39,7 +39,7 @@ describe.sequential("the platform foundation, in the browser", () => {
     }
   });
 
-  it("lets an administrator add a plugin repository with the trust they choose, sync it, and see what was refused", async () => {
+  it("lets an administrator add a plugin repository with the trust they choose, sync it, and see every plugin it added told apart from ours", async () => {
     const fixture = join(import.meta.dirname, "..", "fixtures", "hristudio-plugins");
     const repo = createServer((req, res) => {
       const file = join(fixture, normalize(req.url!).replace(/^(\.\.[/\\])+/, ""));
@@ -54,9 +54,29 @@ describe.sequential("the platform foundation, in the browser", () => {
     await page.getByRole("option", { name: /^Verified/ }).click();
     await page.getByRole("button", { name: "Add repository" }).click();
     await page.getByRole("button", { name: /^Sync / }).click();
-    // The fixture's NAO6 has the robotId of our own first-party plugin: refused, not shadowed.
+    // All three of HRIStudio's plugins are added, its NAO6 beside our first-party one of the same robotId and version.
+    const report = page.getByRole("region", { name: "What the last sync changed" });
+    for (const added of [
+      "nao6-ros2: added (version 3.0.0)",
+      "turtlebot3-burger: added (version 2.0.0)",
+      "turtlebot3-waffle: added (version 2.0.0)",
+    ])
+      await report.getByRole("listitem").filter({ hasText: added }).waitFor();
+    await report
+      .getByText(
+        /^nao6-ros2 is also provided by nao6-ros2 3\.0\.0 from the first-party plugins \([0-9a-f]{12}\) with the same version, 3\.0\.0: both are kept, told apart by their source and hash/,
+      )
+      .waitFor();
+    // The catalogue tells the two NAO6 documents apart, and says which one experiments run unless they choose.
     await page
-      .getByText("nao6-ros2 is already provided by the first-party plugins; this repository's copy was not installed.")
+      .getByRole("row", {
+        name: /nao6-ros2\s*3\.0\.0\s*[0-9a-f]{12}.*the first-party plugins.*Run by experiments that have not chosen/,
+      })
+      .waitFor();
+    await page
+      .getByRole("row", {
+        name: /nao6-ros2\s*3\.0\.0\s*[0-9a-f]{12}.*HRIStudio Official Robot Plugins.*Run only by experiments that choose it/,
+      })
       .waitFor();
     await page.getByText("HRIStudio Official Robot Plugins", { exact: true }).waitFor();
     // Its repository.json says official; the administrator's choice stands.
