@@ -33,7 +33,7 @@ import { Tabs } from "@/ui/tabs";
 import { FlowMap } from "./flow-map";
 import { IssuesPanel } from "./issues-panel";
 import { LibraryPanel } from "./library-panel";
-import { PluginChoice } from "./plugin-choice";
+import { documentsOf, PluginChoice } from "./plugin-choice";
 import { PropertiesPanel } from "./properties-panel";
 import { ProtocolTimeline, type Marks, type Selection } from "./protocol-timeline";
 import { RehearsalPreview } from "./rehearsal-preview";
@@ -230,6 +230,8 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const robotName = robots.data?.robots.find((r) => r.robotId === draft.robotId)?.name ?? draft.robotId;
   // One entry per robot: several sources may offer the same robotId (the plugin choice tells them apart).
   const robotChoices = robots.data?.robots.filter((r) => r.isDefault) ?? [];
+  // The document the draft runs now: a version is worth publishing when only this changed.
+  const runs = documentsOf(robots.data?.robots ?? [], draft.robotId, pluginSource).used;
   const errors = hasErrors(issues);
 
   return (
@@ -406,6 +408,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
             <VersionsPanel
               experimentId={experimentId}
               draft={draft}
+              pluginHash={runs?.hash}
               canPublish={canPublish}
               blocked={
                 errors

@@ -17,6 +17,12 @@ export interface PluginDocument {
   hash: string;
 }
 
+/** The documents of `robotId`, the default first, and the one an experiment with `chosenSource` runs. */
+export function documentsOf<T extends PluginDocument>(documents: T[], robotId: string, chosenSource: string | null) {
+  const offered = documents.filter((d) => d.robotId === robotId).map((d) => ({ ...d, source: d.sourceId }));
+  return { offered, used: chooseDocument(offered, robotId, chosenSource) };
+}
+
 /** "the first-party plugins · 3.0.0 · 1a2b3c4d5e6f" */
 const label = (d: PluginDocument) => `${d.sourceName} · ${d.version} · ${shortHash(d.hash)}`;
 
