@@ -49,15 +49,14 @@ export function PluginChoice({
       onSuccess: () => queryClient.invalidateQueries({ queryKey: trpc.experiments.get.queryKey({ experimentId }) }),
     }),
   );
-  const offered = documents.filter((d) => d.robotId === robotId).map((d) => ({ ...d, source: d.sourceId }));
-  const used = chooseDocument(offered, robotId, chosenSource);
-  if (!used)
+  const { offered, used } = documentsOf(documents, robotId, chosenSource);
+  if (!offered.length)
     return (
       <span role="status" className="text-sm text-red-700">
-        No plugin document of {robotId} is installed{chosenSource ? " from the source this experiment chose" : ""}.
+        No plugin document of {robotId} is installed.
       </span>
     );
-  if (offered.length === 1)
+  if (offered.length === 1 && used)
     return (
       <span className="text-sm text-slate-600" title={`Plugin document ${used.hash}`}>
         Plugin: {label(used)}
@@ -69,12 +68,18 @@ export function PluginChoice({
       Plugin
       <NativeSelect
         aria-label="Plugin document"
-        title={`${offered.length} sources offer ${robotId}: choose which document this experiment runs`}
+        title={`Which document of ${robotId} this experiment runs; its next published version pins it`}
         className="h-9 w-auto py-0"
-        value={used.sourceId}
+        value={used?.sourceId ?? ""}
         disabled={!canChoose || choose.isPending}
         onChange={(e) => choose.mutate({ experimentId, source: e.target.value })}
       >
+        {/* The source chosen stopped offering the robot (its repository removed): never another's in its place. */}
+        {!used && (
+          <option value="" disabled>
+            No longer installed from the source chosen: choose one
+          </option>
+        )}
         {offered.map((d) => (
           <option key={d.sourceId} value={d.sourceId}>
             {label(d)}
