@@ -1,11 +1,19 @@
 // The robot plugins this server knows: first-party files from plugins/
 // (through the public loader, like any other) and plugins synced from enabled
-// repositories into the database. Each robotId has one source: first-party
-// first, then the repository that installed it first (see chooseProviders).
+// repositories into the database. Several sources may offer one robotId: each
+// keeps its own document, and an experiment runs the one of the source it chose
+// (see latestPerSource and chooseDocument).
 import { asc, eq, and, type SQL } from "drizzle-orm";
 import { join } from "node:path";
 import { hashCanonical } from "@/core/protocol/canonical";
-import { chooseProviders, FIRST_PARTY, type Plugin, type TrustLevel } from "@/core/plugins";
+import {
+  chooseDocument,
+  FIRST_PARTY,
+  latestPerSource,
+  type Plugin,
+  type ProvidedPlugin,
+  type TrustLevel,
+} from "@/core/plugins";
 import { loadPluginFolder, type PluginFolder } from "@/robots/plugin-folder";
 import type { Database } from "@/store/client";
 import { installedPlugins, pluginRepositories } from "@/store/schema";
@@ -21,15 +29,9 @@ export function firstPartyPlugins(): Promise<PluginFolder> {
 }
 
 /** One plugin version with its identity: source, robotId, version and content hash. */
-export interface KnownPlugin {
+export interface KnownPlugin extends ProvidedPlugin {
   plugin: Plugin;
-  robotId: string;
   trust: TrustLevel;
-  /** FIRST_PARTY or the repository's id. */
-  source: string;
-  sourceName: string;
-  /** SHA-256 of the plugin's canonical JSON. */
-  hash: string;
 }
 
 type Reader = Pick<Database, "select">;
@@ -43,6 +45,7 @@ async function known(db: Reader, where?: SQL): Promise<{ versions: KnownPlugin[]
     (p): KnownPlugin => ({
       plugin: p,
       robotId: p.robotId,
+      version: p.version,
       trust: p.trustLevel ?? "official",
       source: FIRST_PARTY,
       sourceName: FIRST_PARTY_NAME,
@@ -50,7 +53,7 @@ async function known(db: Reader, where?: SQL): Promise<{ versions: KnownPlugin[]
     }),
   );
   const firstParty = firstPartyKnown;
-  // Oldest install first: the first repository to install a robot keeps it.
+  // Oldest install first: an experiment that has not chosen runs the first repository's document of its robot.
   const rows = await db
     .select({ row: installedPlugins, repositoryName: pluginRepositories.name })
     .from(installedPlugins)
@@ -61,6 +64,7 @@ async function known(db: Reader, where?: SQL): Promise<{ versions: KnownPlugin[]
     ({ row, repositoryName }): KnownPlugin => ({
       plugin: row.definition as Plugin,
       robotId: row.robotId,
+      version: row.version,
       trust: row.trustLevel as TrustLevel,
       source: row.repositoryId!,
       sourceName: `the repository "${repositoryName}"`,
@@ -70,18 +74,25 @@ async function known(db: Reader, where?: SQL): Promise<{ versions: KnownPlugin[]
   return { versions: [...firstParty, ...synced], folder };
 }
 
-/** Every robot, with the version it runs with, and the first-party files that could not be loaded. */
+/**
+ * Every source's current document of every robot, the default one of a robot
+ * first, and the first-party files that could not be loaded.
+ */
 export async function pluginCatalog(db: Reader): Promise<{ plugins: KnownPlugin[]; problems: string[] }> {
   const { versions, folder } = await known(db);
-  return { plugins: chooseProviders(versions), problems: folder.errors.map((e) => `${e.file} ${e.path}: ${e.reason}`) };
+  return { plugins: latestPerSource(versions), problems: folder.errors.map((e) => `${e.file} ${e.path}: ${e.reason}`) };
 }
 
-/** The plugin a robotId runs with today, with its identity. */
-export async function knownPlugin(db: Reader, robotId: string): Promise<KnownPlugin | undefined> {
+/** The document an experiment for `robotId` runs today: `source`'s, or with null the default. */
+export async function knownPlugin(
+  db: Reader,
+  robotId: string,
+  source: string | null,
+): Promise<KnownPlugin | undefined> {
   const { versions } = await known(db, eq(installedPlugins.robotId, robotId));
-  return chooseProviders(versions.filter((v) => v.robotId === robotId))[0];
+  return chooseDocument(latestPerSource(versions), robotId, source);
 }
 
-export async function findPlugin(db: Reader, robotId: string): Promise<Plugin | undefined> {
-  return (await knownPlugin(db, robotId))?.plugin;
+export async function findPlugin(db: Reader, robotId: string, source: string | null): Promise<Plugin | undefined> {
+  return (await knownPlugin(db, robotId, source))?.plugin;
 }

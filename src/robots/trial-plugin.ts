@@ -1,7 +1,8 @@
 // The plugin document a trial runs with. A published version's trials run
 // with exactly the document it pinned when it was published, whatever is
 // installed under that robotId now; a rehearsal (no version) and a version
-// published before pinning use the robot's current plugin.
+// published before pinning use the current document of the source the
+// experiment chose.
 import { eq } from "drizzle-orm";
 import type { Plugin } from "@/core/plugins";
 import type { Database } from "@/store/client";
@@ -18,6 +19,7 @@ export async function trialPlugin(db: Pick<Database, "select">, trialId: string)
   const [row] = await db
     .select({
       draftRobotId: experiments.robotId,
+      draftSource: experiments.pluginSource,
       versionRobotId: experimentVersions.robotId,
       version: experimentVersions.version,
       pinnedHash: experimentVersions.pluginHash,
@@ -29,7 +31,10 @@ export async function trialPlugin(db: Pick<Database, "select">, trialId: string)
   if (!row) return { ok: false, reason: "This trial does not exist." };
   // A published version names the robot it was published for; the draft may have moved on since.
   const robotId = row.versionRobotId ?? row.draftRobotId;
-  if (!row.pinnedHash) return { ok: true, robotId, plugin: (await findPlugin(db, robotId)) ?? null, pinnedHash: null };
+  if (!row.pinnedHash) {
+    const plugin = (await findPlugin(db, robotId, row.draftSource)) ?? null;
+    return { ok: true, robotId, plugin, pinnedHash: null };
+  }
   const [document] = await db
     .select({ definition: pluginDocuments.definition })
     .from(pluginDocuments)

@@ -170,6 +170,7 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
       return { experimentId: e.id, baseRevision: 0, steps: [{ name: "Only", actions: [] }] };
     },
   ],
+  "experiments.choosePlugin": [EDITORS, (_f, b) => ({ experimentId: b.experiment.id, source: "first-party" })],
   "versions.publish": [EDITORS, async (f, b) => ({ experimentId: (await publishable(f, b)).id })],
   "versions.diff": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id, from: 1, to: 1 })],
   "experiments.exportFile": [MEMBERS, (_f, b) => ({ experimentId: b.experiment.id })],

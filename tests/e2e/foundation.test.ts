@@ -1,7 +1,7 @@
 // A researcher sets up a study in a real Chromium; the server keeps an
 // observer from editing it and a non-member from even seeing it.
 import { existsSync, readFileSync } from "node:fs";
-import { createServer } from "node:http";
+import { createServer, type Server } from "node:http";
 import type { AddressInfo } from "node:net";
 import { join, normalize } from "node:path";
 import type { Browser } from "playwright-core";
@@ -9,11 +9,14 @@ import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { expectAccessible } from "../support/accessibility";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
+import { Researcher } from "../support/researcher";
 
 describe.sequential("the platform foundation, in the browser", () => {
   let app: RunningApp;
   let browser: Browser;
   let studyUrl = "";
+  // HRIStudio's repository, served from the fixture while the plugin tests run.
+  let repo: Server | undefined;
 
   beforeAll(async () => {
     app = await startApp();
@@ -22,6 +25,7 @@ describe.sequential("the platform foundation, in the browser", () => {
   afterAll(async () => {
     await browser?.close();
     await app?.stop();
+    repo?.close();
   });
 
   it("lets each demo role sign in and shows their role", async () => {
@@ -39,24 +43,44 @@ describe.sequential("the platform foundation, in the browser", () => {
     }
   });
 
-  it("lets an administrator add a plugin repository with the trust they choose, sync it, and see what was refused", async () => {
+  it("lets an administrator add a plugin repository with the trust they choose, sync it, and see every plugin it added told apart from ours", async () => {
     const fixture = join(import.meta.dirname, "..", "fixtures", "hristudio-plugins");
-    const repo = createServer((req, res) => {
+    repo = createServer((req, res) => {
       const file = join(fixture, normalize(req.url!).replace(/^(\.\.[/\\])+/, ""));
       existsSync(file) ? res.end(readFileSync(file)) : res.writeHead(404).end();
     });
-    await new Promise<void>((ok) => repo.listen(0, "127.0.0.1", ok));
+    await new Promise<void>((ok) => repo!.listen(0, "127.0.0.1", ok));
     const page = await (await newContext(browser, app.url)).newPage();
     await signInAs(page, "admin@demo.hristudio", DEMO_PASSWORD);
     await page.goto("/admin/plugins");
-    await page.getByLabel("Repository address").fill(`http://127.0.0.1:${(repo.address() as AddressInfo).port}/`);
+    await page.getByLabel("Repository address").fill(`http://127.0.0.1:${(repo!.address() as AddressInfo).port}/`);
     await page.getByLabel("Trust").click();
     await page.getByRole("option", { name: /^Verified/ }).click();
     await page.getByRole("button", { name: "Add repository" }).click();
     await page.getByRole("button", { name: /^Sync / }).click();
-    // The fixture's NAO6 has the robotId of our own first-party plugin: refused, not shadowed.
+    // All three of HRIStudio's plugins are added, its NAO6 beside our first-party one of the same robotId and version.
+    const report = page.getByRole("region", { name: "What the last sync changed" });
+    for (const added of [
+      "nao6-ros2: added (version 3.0.0)",
+      "turtlebot3-burger: added (version 2.0.0)",
+      "turtlebot3-waffle: added (version 2.0.0)",
+    ])
+      await report.getByRole("listitem").filter({ hasText: added }).waitFor();
+    await report
+      .getByText(
+        /^nao6-ros2 is also provided by nao6-ros2 3\.0\.0 from the first-party plugins \([0-9a-f]{12}\) with the same version, 3\.0\.0: both are kept, told apart by their source and hash/,
+      )
+      .waitFor();
+    // The catalogue tells the two NAO6 documents apart, and says which one experiments run unless they choose.
     await page
-      .getByText("nao6-ros2 is already provided by the first-party plugins; this repository's copy was not installed.")
+      .getByRole("row", {
+        name: /nao6-ros2\s*3\.0\.0\s*[0-9a-f]{12}.*the first-party plugins.*Run by experiments that have not chosen/,
+      })
+      .waitFor();
+    await page
+      .getByRole("row", {
+        name: /nao6-ros2\s*3\.0\.0\s*[0-9a-f]{12}.*HRIStudio Official Robot Plugins.*Run only by experiments that choose it/,
+      })
       .waitFor();
     await page.getByText("HRIStudio Official Robot Plugins", { exact: true }).waitFor();
     // Its repository.json says official; the administrator's choice stands.
@@ -65,12 +89,39 @@ describe.sequential("the platform foundation, in the browser", () => {
       .getByText("verified")
       .waitFor();
     await screenshot(page, "admin-plugins");
-    // Removed, it leaves the list (robots already published with it keep their pinned files).
-    page.once("dialog", (dialog) => void dialog.accept());
-    await page.getByRole("button", { name: "Remove: HRIStudio Official Robot Plugins" }).click();
-    await page.getByText("No repositories yet.").waitFor();
     await page.context().close();
-    repo.close();
+  });
+
+  it("lets a researcher choose which NAO6 document an experiment runs, named by source, version and short hash, and never swaps in another", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
+    // Named to sort after the demo's Interactive Storyteller, which later tests pick first.
+    await new Researcher(page).createExperiment("Storyteller on HRIStudio's NAO6");
+    const designerUrl = page.url();
+    const choice = page.getByLabel("Plugin document");
+    const chosen = () => choice.locator("option:checked").textContent();
+    // Not chosen yet: the first-party document, said as such.
+    await expect.poll(chosen).toMatch(/^the first-party plugins · 3\.0\.0 · [0-9a-f]{12}$/);
+    const theirs = await choice.locator("option", { hasText: "HRIStudio Official Robot Plugins" }).textContent();
+    expect(theirs).toMatch(/^the repository "HRIStudio Official Robot Plugins" · 3\.0\.0 · [0-9a-f]{12}$/);
+    await choice.selectOption({ label: theirs! });
+    await expect.poll(chosen).toBe(theirs);
+    // Recorded on the experiment, not only on the page.
+    await page.reload();
+    await expect.poll(chosen).toBe(theirs);
+
+    // Removed, the repository leaves the list (versions already published with it keep their pinned files)...
+    const admin = await (await newContext(browser, app.url)).newPage();
+    await signInAs(admin, "admin@demo.hristudio", DEMO_PASSWORD);
+    await admin.goto("/admin/plugins");
+    admin.once("dialog", (dialog) => void dialog.accept());
+    await admin.getByRole("button", { name: "Remove: HRIStudio Official Robot Plugins" }).click();
+    await admin.getByText("No repositories yet.").waitFor();
+    await admin.context().close();
+    // ...and the experiment that chose it is told, never given the first-party document in its place.
+    await page.goto(designerUrl);
+    await expect.poll(chosen).toBe("No longer installed from the source chosen: choose one");
+    await page.context().close();
   });
 
   it("refuses a wrong password in plain language", async () => {

@@ -48,4 +48,14 @@ describe("is the draft what was last published?", () => {
   ])("%s", (_, draft, expected, version) => {
     expect(unchangedSince(draft, version)).toBe(expected);
   });
+
+  const pinned = { ...latest, pluginHash: "a".repeat(64) };
+  it.each<[string, typeof pinned | typeof latest, string | undefined, number | null]>([
+    ["the same draft on the same plugin document", pinned, "a".repeat(64), 3],
+    ["the same draft on another document (another source chosen, or a newer sync)", pinned, "b".repeat(64), null],
+    ["the same draft, the document it runs not known yet", pinned, undefined, 3],
+    ["the same draft, the version from before pinning", latest, "b".repeat(64), 3],
+  ])("%s", (_, version, pluginHash, expected) => {
+    expect(unchangedSince(structuredClone(published), version, pluginHash)).toBe(expected);
+  });
 });

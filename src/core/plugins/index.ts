@@ -25,7 +25,18 @@ export { audioPlayer, audioPlayerText, type AudioPlayer } from "./audio";
 export { shellCommand, shellWords, quoteWord, type ShellCommand, type ShellWords } from "./shell";
 export { httpRequest, type HttpRequest } from "./http";
 export { pluginChanges, type PluginChange } from "./changes";
-export { effectiveTrust, chooseProviders, shadowing, FIRST_PARTY, type ProvidedPlugin } from "./identity";
+export {
+  alsoProvided,
+  chooseDocument,
+  describeDocument,
+  effectiveTrust,
+  FIRST_PARTY,
+  identityKey,
+  latestPerSource,
+  shortHash,
+  type PluginIdentity,
+  type ProvidedPlugin,
+} from "./identity";
 export {
   completionOf,
   expectedDone,

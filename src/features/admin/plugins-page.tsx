@@ -1,8 +1,11 @@
 "use client";
 // Administrators add plugin repositories and sync them; what changed is shown
-// in plain words, and the robots every experiment can target are listed.
+// in plain words, and every plugin document experiments can run is listed by
+// its identity: source, version and a short hash, with which one an
+// experiment that has not chosen runs when several sources offer a robot.
 import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
 import { useState, type FormEvent } from "react";
+import { shortHash } from "@/core/plugins";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Field, Input } from "@/ui/field";
@@ -86,6 +89,16 @@ export function PluginsPage() {
               </li>
             ))}
           </ul>
+          {sync.data.notices.length > 0 && (
+            <div className="mt-3">
+              <p className="font-medium">Installed beside another source's plugin:</p>
+              <ul className="list-disc pl-5">
+                {sync.data.notices.map((n) => (
+                  <li key={n}>{n}</li>
+                ))}
+              </ul>
+            </div>
+          )}
           {sync.data.errors.length > 0 && (
             <div className="mt-3">
               <p className="font-medium text-red-700">Not installed:</p>
@@ -165,21 +178,39 @@ export function PluginsPage() {
           <tr>
             <Th>Robot</Th>
             <Th>Version</Th>
+            <Th>Document</Th>
             <Th>Trust</Th>
             <Th>Connects by</Th>
             <Th>From</Th>
           </tr>
         </thead>
         <tbody>
-          {robots.data?.robots.map((r) => (
-            <tr key={r.robotId}>
-              <Td className="font-medium">{r.name}</Td>
+          {robots.data?.robots.map((r, _, all) => (
+            <tr key={`${r.sourceId} ${r.robotId}`}>
+              <Td>
+                <div className="font-medium">{r.name}</div>
+                <code className="text-xs text-slate-500">{r.robotId}</code>
+              </Td>
               <Td>{r.version}</Td>
+              <Td>
+                <code className="text-xs" title={r.hash}>
+                  {shortHash(r.hash)}
+                </code>
+              </Td>
               <Td>
                 <Badge tone={TRUST_TONE[r.trustLevel as keyof typeof TRUST_TONE] ?? "slate"}>{r.trustLevel}</Badge>
               </Td>
               <Td>{r.transport}</Td>
-              <Td>{r.sourceName}</Td>
+              <Td>
+                {r.sourceName}
+                {all.some((o) => o.robotId === r.robotId && o !== r) && (
+                  <div className="text-xs text-slate-500">
+                    {r.isDefault
+                      ? "Run by experiments that have not chosen"
+                      : "Run only by experiments that choose it in the designer"}
+                  </div>
+                )}
+              </Td>
             </tr>
           ))}
         </tbody>

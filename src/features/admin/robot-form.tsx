@@ -71,11 +71,14 @@ export function RobotForm({ robot, onDone }: { robot: RegisteredRobot | null; on
           {(p) => (
             <NativeSelect {...p} value={form.pluginRobotId} onChange={(e) => set({ pluginRobotId: e.target.value })}>
               <option value={ANY_PLUGIN}>Any plugin (a simulated robot or stand-in)</option>
-              {plugins.data?.robots.map((r) => (
-                <option key={r.robotId} value={r.robotId}>
-                  {r.name} ({r.robotId})
-                </option>
-              ))}
+              {/* One entry per robotId: a physical robot serves every source's document of it. */}
+              {plugins.data?.robots
+                .filter((r) => r.isDefault)
+                .map((r) => (
+                  <option key={r.robotId} value={r.robotId}>
+                    {r.name} ({r.robotId})
+                  </option>
+                ))}
             </NativeSelect>
           )}
         </Field>

@@ -33,6 +33,7 @@ import { Tabs } from "@/ui/tabs";
 import { FlowMap } from "./flow-map";
 import { IssuesPanel } from "./issues-panel";
 import { LibraryPanel } from "./library-panel";
+import { documentsOf, PluginChoice } from "./plugin-choice";
 import { PropertiesPanel } from "./properties-panel";
 import { ProtocolTimeline, type Marks, type Selection } from "./protocol-timeline";
 import { RehearsalPreview } from "./rehearsal-preview";
@@ -53,8 +54,17 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
     enabled: Boolean(designer.loaded.data),
   });
   const robots = useQuery(trpc.plugins.list.queryOptions());
+  // The stored choice is of the stored robot's documents: a robot changed since (saving clears it) runs the default.
+  const stored = designer.loaded.data;
+  const pluginSource = stored && stored.robotId === draft?.robotId ? stored.pluginSource : null;
+  const robotSaved = designer.save.kind === "saved" && stored?.robotId !== draft?.robotId;
+  const { refetch } = designer.loaded;
+  // Once a new robot is saved, read the stored experiment again: its documents can then be chosen.
+  useEffect(() => {
+    if (robotSaved) void refetch();
+  }, [robotSaved, refetch]);
   const pluginQuery = useQuery({
-    ...trpc.plugins.get.queryOptions({ robotId: draft?.robotId ?? "" }),
+    ...trpc.plugins.get.queryOptions({ robotId: draft?.robotId ?? "", source: pluginSource }),
     enabled: Boolean(draft?.robotId),
   });
   const plugin = (pluginQuery.data ?? null) as Plugin | null;
@@ -218,6 +228,10 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   if (designer.loaded.isPending || (!draft && !designer.loaded.error)) return <Spinner label="Opening the designer…" />;
   if (designer.loaded.error || !draft) return <Problem error={designer.loaded.error} />;
   const robotName = robots.data?.robots.find((r) => r.robotId === draft.robotId)?.name ?? draft.robotId;
+  // One entry per robot: several sources may offer the same robotId (the plugin choice tells them apart).
+  const robotChoices = robots.data?.robots.filter((r) => r.isDefault) ?? [];
+  // The document the draft runs now: a version is worth publishing when only this changed.
+  const runs = documentsOf(robots.data?.robots ?? [], draft.robotId, pluginSource).used;
   const errors = hasErrors(issues);
 
   return (
@@ -247,13 +261,22 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
             disabled={!canEdit}
             onChange={(e) => run(commands.setRobot(e.target.value))}
           >
-            {robots.data?.robots.map((r) => (
+            {robotChoices.map((r) => (
               <option key={r.robotId} value={r.robotId}>
                 {r.name}
               </option>
             ))}
           </NativeSelect>
         </label>
+        {robots.data && (
+          <PluginChoice
+            experimentId={experimentId}
+            robotId={draft.robotId}
+            chosenSource={pluginSource}
+            documents={robots.data.robots}
+            canChoose={canEdit && stored?.robotId === draft.robotId}
+          />
+        )}
         <div className="ml-auto flex items-center gap-2">
           <SaveStatus save={designer.save} />
           <Button
@@ -385,6 +408,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
             <VersionsPanel
               experimentId={experimentId}
               draft={draft}
+              pluginHash={runs?.hash}
               canPublish={canPublish}
               blocked={
                 errors

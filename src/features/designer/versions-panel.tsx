@@ -19,9 +19,12 @@ export function VersionsPanel({
   canPublish,
   blocked: problems,
   beforePublish,
+  pluginHash,
 }: {
   experimentId: string;
   draft: DesignDraft;
+  /** The plugin document the draft runs now; undefined while not known. */
+  pluginHash: string | undefined;
   canPublish: boolean;
   blocked: string | null;
   beforePublish: () => Promise<void>;
@@ -55,7 +58,7 @@ export function VersionsPanel({
     ...trpc.versions.get.queryOptions({ versionId: list[0]?.id ?? "" }),
     enabled: Boolean(list[0]),
   });
-  const unchanged = latest.data && list[0] ? unchangedSince(draft, latest.data as PublishedVersion) : null;
+  const unchanged = latest.data && list[0] ? unchangedSince(draft, latest.data as PublishedVersion, pluginHash) : null;
   const blocked =
     problems ?? (unchanged === null ? null : `Published as version ${unchanged}; change the draft to publish again.`);
   return (

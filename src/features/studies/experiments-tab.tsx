@@ -131,11 +131,14 @@ function NewExperimentDialog({ studyId, onCreated }: { studyId: string; onCreate
         <Field label="Robot" required hint="Its actions appear in the designer; another robot can be chosen later.">
           {(p) => (
             <NativeSelect {...p} value={robot} onChange={(e) => setRobot(e.target.value)}>
-              {robots.data?.robots.map((r) => (
-                <option key={r.robotId} value={r.robotId}>
-                  {r.name} ({r.version})
-                </option>
-              ))}
+              {/* One entry per robot; the designer chooses among several sources' documents of it. */}
+              {robots.data?.robots
+                .filter((r) => r.isDefault)
+                .map((r) => (
+                  <option key={r.robotId} value={r.robotId}>
+                    {r.name} ({r.version})
+                  </option>
+                ))}
             </NativeSelect>
           )}
         </Field>

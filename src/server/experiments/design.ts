@@ -63,8 +63,18 @@ export async function bumpRevision(tx: Tx, experimentId: string, userId: string,
 export async function saveDesign(db: Database, input: DesignInput, userId: string) {
   return db.transaction(async (tx) => {
     await bumpRevision(tx, input.experimentId, userId, input.baseRevision);
-    if (input.details && Object.keys(input.details).length)
-      await tx.update(experiments).set(input.details).where(eq(experiments.id, input.experimentId));
+    if (input.details && Object.keys(input.details).length) {
+      const [before] = await tx
+        .select({ robotId: experiments.robotId })
+        .from(experiments)
+        .where(eq(experiments.id, input.experimentId));
+      // A chosen plugin source was a choice among the old robot's documents, not the new one's.
+      const robotChanged = input.details.robotId !== undefined && input.details.robotId !== before?.robotId;
+      await tx
+        .update(experiments)
+        .set(robotChanged ? { ...input.details, pluginSource: null } : input.details)
+        .where(eq(experiments.id, input.experimentId));
+    }
     const current = await loadDesign(tx, input.experimentId);
     const ownStepIds = new Set(current.steps.map((s) => s.id));
     const ownActionIds = new Set(current.steps.flatMap((s) => s.actions.map((a) => a.id)));

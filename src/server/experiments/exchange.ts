@@ -45,7 +45,8 @@ export async function duplicate(db: Database | Tx, experimentId: string, userId:
   // An exported draft always imports: the round trip is tested byte for byte in the core.
   if (!copied.ok) throw new Error(`The experiment ${experimentId} did not survive its own export`);
   const name = sameStudy ? `${design.name} (copy)`.slice(0, 200) : design.name;
-  return storeNew(db, intoStudyId ?? design.studyId, { ...copied.draft, name }, userId);
+  // A copy runs the same robot's document as its original: plugins are the server's, not the study's.
+  return storeNew(db, intoStudyId ?? design.studyId, { ...copied.draft, name }, userId, design.pluginSource);
 }
 
 /**
@@ -54,19 +55,32 @@ export async function duplicate(db: Database | Tx, experimentId: string, userId:
  * (a repository removed since), rather than leaving a design nobody can run.
  */
 async function assertRobotInstalled(db: Database | Tx, design: { name: string; robotId: string }) {
-  if (await findPlugin(db, design.robotId)) return;
+  if (await findPlugin(db, design.robotId, null)) return;
   throw new TRPCError({
     code: "PRECONDITION_FAILED",
     message: `“${design.name}” is for the robot “${design.robotId}”, whose plugin is not installed on this server: an administrator can install it under Administration → Robot plugins before it is copied.`,
   });
 }
 
-async function storeNew(db: Database | Tx, studyId: string, draft: DesignDraft, userId: string) {
+async function storeNew(
+  db: Database | Tx,
+  studyId: string,
+  draft: DesignDraft,
+  userId: string,
+  pluginSource: string | null = null,
+) {
   // Inside a larger transaction (a study from a template) this is a savepoint of it.
   return db.transaction(async (tx) => {
     const [experiment] = await tx
       .insert(experiments)
-      .values({ studyId, name: draft.name, description: draft.description, robotId: draft.robotId, updatedBy: userId })
+      .values({
+        studyId,
+        name: draft.name,
+        description: draft.description,
+        robotId: draft.robotId,
+        pluginSource,
+        updatedBy: userId,
+      })
       .returning();
     await insertSteps(tx, experiment!.id, draft.steps);
     return loadDesign(tx, experiment!.id);

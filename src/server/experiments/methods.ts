@@ -68,7 +68,7 @@ async function pinnedPlugin(db: Reader, version: VersionRow): Promise<Plugin | n
       .where(eq(pluginDocuments.hash, version.pluginHash));
     if (document) return document.definition as Plugin;
   }
-  return (await findPlugin(db, version.robotId)) ?? null;
+  return (await findPlugin(db, version.robotId, version.pluginSource)) ?? null;
 }
 
 /** Questionnaires attached before or after the trial, each as participants see it: its latest published version, else its draft. */

@@ -22,8 +22,9 @@ export async function publish(db: Database, experimentId: string, userId: string
         message: "This experiment has no steps yet: add at least one step before publishing.",
       });
     }
-    // The exact plugin document the design was published against: its trials run with it, whatever is installed later.
-    const known = await knownPlugin(tx, design.robotId);
+    // The exact plugin document the design was published against (the source
+    // the experiment chose): its trials run with it, whatever is installed later.
+    const known = await knownPlugin(tx, design.robotId, design.pluginSource);
     const plugin = known?.plugin;
     const issues = validateDesign(draftFrom(design), plugin ?? null);
     // The designer only warns of an action the robot cannot do; a version that trials run must not hold one.
@@ -75,6 +76,7 @@ export async function publish(db: Database, experimentId: string, userId: string
         robotId: design.robotId,
         pluginVersion: plugin?.version ?? null,
         pluginHash: known?.hash ?? null,
+        pluginSource: known?.source ?? null,
         publishedBy: userId,
       })
       .returning();

@@ -1,8 +1,8 @@
 // Plugin repositories an administrator adds: synced over HTTP through the
 // public loader, stored per plugin version (repository, robotId, version,
 // content hash) with no more trust than the administrator gave the
-// repository, and reported as what changed. A repository never installs a
-// robot that another source provides.
+// repository, and reported as what changed. A robot another source also
+// provides is installed beside it, and the report says so in plain words.
 import { TRPCError } from "@trpc/server";
 import { and, desc, eq, sql } from "drizzle-orm";
 import { hashCanonical } from "@/core/protocol/canonical";
@@ -10,7 +10,7 @@ import {
   effectiveTrust,
   formatPluginError,
   pluginChanges,
-  shadowing,
+  alsoProvided,
   type Plugin,
   type PluginChange,
 } from "@/core/plugins";
@@ -31,17 +31,13 @@ export async function syncRepository(
   const fetched = await fetchRepository(repository.url, fetchFn);
   const errors = fetched.errors.map(formatPluginError);
   let changes: PluginChange[] = [];
+  // Not errors: what the administrator should know about what was installed.
+  const notices: string[] = [];
 
   await db.transaction(async (tx) => {
-    // One sync at a time decides who provides a robot: two repositories offering
-    // the same new robotId at once cannot both take it.
+    // One sync at a time decides which source is a robot's default: the first to install it.
     await tx.execute(sql`select pg_advisory_xact_lock(hashtext('hristudio.plugin-sync'))`);
-    const { plugins: owners } = await pluginCatalog(tx);
-    const offered = fetched.plugins.filter(({ plugin }) => {
-      const refusal = shadowing(plugin.robotId, repositoryId, owners);
-      if (refusal) errors.push(refusal);
-      return !refusal;
-    });
+    const { plugins: current } = await pluginCatalog(tx);
     const stored = await tx
       .select()
       .from(installedPlugins)
@@ -51,9 +47,9 @@ export async function syncRepository(
     for (const row of stored) if (!latest.has(row.robotId)) latest.set(row.robotId, row.definition as Plugin);
     changes = pluginChanges(
       [...latest.values()],
-      offered.map((f) => f.plugin),
+      fetched.plugins.map((f) => f.plugin),
     );
-    for (const { plugin, trust } of offered) {
+    for (const { plugin, trust } of fetched.plugins) {
       const hash = hashCanonical(plugin);
       const [same] = await tx
         .select()
@@ -72,6 +68,17 @@ export async function syncRepository(
         );
         continue;
       }
+      const notice = alsoProvided(
+        {
+          source: repositoryId,
+          sourceName: `the repository "${fetched.repository?.name ?? repository.name}"`,
+          robotId: plugin.robotId,
+          version: plugin.version,
+          hash,
+        },
+        current,
+      );
+      if (notice) notices.push(notice);
       // What the files claim (the lower of plugin and repository.json), capped by what the administrator chose.
       const trustLevel = effectiveTrust(repository.trust, trust);
       if (!same)
@@ -98,8 +105,8 @@ export async function syncRepository(
       actorId,
       action: "plugins.sync",
       target: repositoryId,
-      details: { changes: changes.filter((c) => c.change !== "unchanged"), errors },
+      details: { changes: changes.filter((c) => c.change !== "unchanged"), errors, notices },
     });
   });
-  return { changes, errors };
+  return { changes, errors, notices };
 }

@@ -16,6 +16,10 @@ export const experiments = pgTable(
     description: text("description").notNull().default(""),
     // The robot plugin the experiment targets, by the plugin's robotId.
     robotId: text("robot_id").notNull(),
+    // Whose document of that robot it runs when several sources offer it:
+    // "first-party" or a repository's id; null: the default (first-party
+    // first, then the repository that installed the robot first).
+    pluginSource: text("plugin_source"),
     // Bumped by every saved design, so a save based on an older draft is refused.
     draftRevision: integer("draft_revision").notNull().default(0),
     createdAt: createdAt(),
@@ -77,6 +81,8 @@ export const experimentVersions = pgTable(
     pluginVersion: text("plugin_version"),
     // The exact plugin document (plugin_documents.hash) this version was published against.
     pluginHash: text("plugin_hash"),
+    // Where that document came from ("first-party" or a repository's id): with robotId, pluginVersion and pluginHash, its identity.
+    pluginSource: text("plugin_source"),
     publishedBy: text("published_by").references(() => user.id, { onDelete: "set null" }),
     publishedAt: timestamp("published_at", { withTimezone: true }).notNull().defaultNow(),
   },

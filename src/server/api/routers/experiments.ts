@@ -6,6 +6,7 @@ import { experimentVersions, experiments, steps } from "@/store/schema";
 import { duplicate, exportFile, importFile } from "../../experiments/exchange";
 import { loadDesign, saveDesign } from "../../experiments/design";
 import { qualified } from "@/store/qualified";
+import { knownPlugin } from "@/robots/catalog";
 import { authorize, router, studyProcedure } from "../trpc";
 import { id } from "../validation";
 import { designInput, experimentDetails } from "./design-input";
@@ -43,6 +44,29 @@ export const experimentsRouter = router({
       .values({ ...input, studyId: ctx.studyId, updatedBy: ctx.user.id })
       .returning();
     return row!;
+  }),
+
+  /**
+   * Which source's document of its robot the experiment runs, when several
+   * sources offer it: "first-party" or a repository's id, or null for the
+   * default. Its next published version pins that document.
+   */
+  choosePlugin: studyProcedure(
+    "experiment.edit",
+    "experiment",
+    z.object({ experimentId: id, source: z.string().max(200).nullable() }),
+  ).mutation(async ({ ctx, input }) => {
+    const chosen = await knownPlugin(ctx.db, ctx.row.robotId, input.source);
+    if (!chosen)
+      throw new TRPCError({
+        code: "BAD_REQUEST",
+        message: `That source does not provide the robot "${ctx.row.robotId}": choose one of the plugin documents listed for it.`,
+      });
+    await ctx.db
+      .update(experiments)
+      .set({ pluginSource: input.source, updatedAt: new Date(), updatedBy: ctx.user.id })
+      .where(eq(experiments.id, ctx.row.id));
+    return { source: chosen.source, sourceName: chosen.sourceName, version: chosen.version, hash: chosen.hash };
   }),
 
   /** The experiment as a file another lab can import. */

@@ -1,7 +1,7 @@
 import { TRPCError } from "@trpc/server";
 import { asc, eq } from "drizzle-orm";
 import { z } from "zod";
-import { FIRST_PARTY } from "@/core/plugins";
+import { chooseDocument, FIRST_PARTY } from "@/core/plugins";
 import { audit } from "../../audit";
 import { pluginRepositories } from "@/store/schema";
 import { findPlugin, pluginCatalog } from "@/robots/catalog";
@@ -18,8 +18,11 @@ const repositoryUrl = z
 
 export const pluginsRouter = router({
   /**
-   * The robots an experiment can target, the plugin files that could not be
-   * loaded (with why), and the ways to a robot this server's settings open.
+   * The plugin documents an experiment can target, every source's current
+   * one of each robot (several sources may offer one robotId; `isDefault` marks
+   * the one an experiment that has not chosen runs), the plugin files that
+   * could not be loaded (with why), and the ways to a robot this server's
+   * settings open.
    */
   list: guarded("plugin.read").query(async ({ ctx }) => {
     const { plugins, problems } = await pluginCatalog(ctx.db);
@@ -30,8 +33,11 @@ export const pluginsRouter = router({
         version: p.version,
         trustLevel: trust,
         source: source === FIRST_PARTY ? ("first-party" as const) : ("repository" as const),
+        // FIRST_PARTY or the repository's id: what an experiment records as its choice.
+        sourceId: source,
         sourceName,
         hash,
+        isDefault: chooseDocument(plugins, p.robotId, null)?.source === source,
         transport: p.transport ?? "rosbridge",
         capabilities: p.capabilities ?? [],
       })),
@@ -40,13 +46,21 @@ export const pluginsRouter = router({
     };
   }),
 
-  /** One robot's whole plugin: the designer's library lists its actions with their forms. */
+  /**
+   * One robot's whole plugin, from `source` (an experiment's choice) or, with
+   * none, the default source: the designer's library lists its actions with their forms.
+   */
   get: guarded("plugin.read")
-    .input(z.object({ robotId: z.string().max(200) }))
+    .input(z.object({ robotId: z.string().max(200), source: z.string().max(200).nullable().default(null) }))
     .query(async ({ ctx, input }) => {
-      const plugin = await findPlugin(ctx.db, input.robotId);
+      const plugin = await findPlugin(ctx.db, input.robotId, input.source);
       if (!plugin)
-        throw new TRPCError({ code: "NOT_FOUND", message: `No robot plugin called "${input.robotId}" is installed.` });
+        throw new TRPCError({
+          code: "NOT_FOUND",
+          message: input.source
+            ? `No robot plugin called "${input.robotId}" is installed from the source this experiment chose; choose another in the designer.`
+            : `No robot plugin called "${input.robotId}" is installed.`,
+        });
       return plugin;
     }),
 

@@ -22,6 +22,7 @@ export const versionsRouter = router({
         robotId: experimentVersions.robotId,
         pluginVersion: experimentVersions.pluginVersion,
         pluginHash: experimentVersions.pluginHash,
+        pluginSource: experimentVersions.pluginSource,
         publishedAt: experimentVersions.publishedAt,
         publishedBy: user.name,
       })
