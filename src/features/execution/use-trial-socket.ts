@@ -128,8 +128,11 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         else if (m.type === "signal") {
           if (signalListeners.current.size === 0) unheardSignals.current.push([m.peerId, m.signal]);
           for (const listen of signalListeners.current) listen(m.peerId, m.signal);
-        }
-        else if ((m.type === "ack" || m.type === "rejected") && m.requestId && signalRequests.current.has(m.requestId))
+        } else if (
+          (m.type === "ack" || m.type === "rejected") &&
+          m.requestId &&
+          signalRequests.current.has(m.requestId)
+        )
           signalRequests.current.delete(m.requestId);
         else if (m.type === "codes")
           setCodes((c) => [...c.filter((x) => !m.codes.some((y) => y.id === x.id)), ...m.codes]);
