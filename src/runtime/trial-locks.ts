@@ -8,6 +8,7 @@
 // connection that died under it can fail, or never answer at all: either way
 // the client is dropped and the query runs once more on a new one.
 import type postgres from "postgres";
+import { connectionLost, NO_ANSWER } from "@/store/client";
 
 export interface TrialLocks {
   /** Whether this process now owns the trial (locks count: each take needs a release). */
@@ -59,7 +60,7 @@ export function trialLocks(
     try {
       return await answered(work());
     } catch (error) {
-      if (!isConnectionLost(error)) throw error;
+      if (!connectionLost(error)) throw error;
       void session.end({ timeout: 0 }).catch(() => {});
       session = newSession();
       return answered(work());
@@ -99,8 +100,7 @@ export function trialLocks(
   };
 }
 
-const NO_ANSWER = "NO_ANSWER";
-
+/** The query, or a NO_ANSWER error once the connection has been silent for ANSWER_MS. */
 function answered<T>(query: Promise<T>): Promise<T> {
   let timer: ReturnType<typeof setTimeout> | undefined;
   const silence = new Promise<never>((_, reject) => {
@@ -110,18 +110,4 @@ function answered<T>(query: Promise<T>): Promise<T> {
     );
   });
   return Promise.race([query, silence]).finally(() => clearTimeout(timer));
-}
-
-/** Errors that mean the connection itself went (or went silent), not that the query was wrong. */
-function isConnectionLost(error: unknown): boolean {
-  const e = error as { code?: string };
-  return [
-    NO_ANSWER,
-    "CONNECTION_CLOSED",
-    "CONNECTION_ENDED",
-    "CONNECTION_DESTROYED",
-    "57P01",
-    "ECONNRESET",
-    "ECONNREFUSED",
-  ].includes(e?.code ?? "");
 }

@@ -52,3 +52,20 @@ export function neverReachedDatabase(error: unknown): boolean {
 export function refusedByDatabase(error: unknown): boolean {
   return typeof (error as { severity?: unknown } | null)?.severity === "string";
 }
+
+/** The code a caller gives its own error for a connection that went silent (its query timed out). */
+export const NO_ANSWER = "NO_ANSWER";
+
+/** The connection itself went, or went silent (`NO_ANSWER`): not that the statement was wrong. */
+export function connectionLost(error: unknown): boolean {
+  const code = (error as { code?: string } | null)?.code ?? "";
+  return [
+    NO_ANSWER,
+    "CONNECTION_CLOSED",
+    "CONNECTION_ENDED",
+    "CONNECTION_DESTROYED",
+    "57P01",
+    "ECONNRESET",
+    "ECONNREFUSED",
+  ].includes(code);
+}
