@@ -104,6 +104,25 @@ describe.sequential("recording a trial", () => {
       .poll(() => video.evaluate((v: HTMLVideoElement) => v.currentTime))
       .toBeCloseTo(-recording!.offsetMs! / 1000, 0);
     await analysis.getByTestId("playhead").waitFor();
+    // The robot's joint angles share the clock: a click on their chart seeks the video there, and their
+    // playhead stands where it was clicked. Two clicks a fifth of the chart apart move the video by a
+    // fifth of the chart's span (its label gives the span in whole seconds: within a second).
+    const joints = analysis.getByRole("img", { name: /^Joint angles of / });
+    await joints.scrollIntoViewIfNeeded();
+    const span = Number(/over (\d+) s$/.exec((await joints.getAttribute("aria-label")) ?? "")?.[1]);
+    const box = (await joints.boundingBox())!;
+    const seekAt = async (fraction: number) => {
+      const before = await video.evaluate((v: HTMLVideoElement) => v.currentTime);
+      await joints.click({ position: { x: box.width * fraction, y: box.height / 2 } });
+      await expect.poll(() => video.evaluate((v: HTMLVideoElement) => v.currentTime)).not.toBe(before);
+      await expect
+        .poll(async () => Number(await analysis.getByTestId("samples-playhead").getAttribute("x1")))
+        .toBeCloseTo(1000 * fraction, -1);
+      return video.evaluate((v: HTMLVideoElement) => v.currentTime);
+    };
+    const early = await seekAt(0.2);
+    const later = await seekAt(0.4);
+    expect(Math.abs(later - early - span / 5)).toBeLessThan(1);
     // An annotation made afterwards, at the playhead, then edited.
     const marked = analysis.getByRole("region", { name: "Annotations" });
     await marked.getByLabel("What happened").fill("Participant leans in");

@@ -41,9 +41,12 @@ describe("problems the robot's bridge reports", async () => {
   async function open(drives = plugin) {
     sim = await startSimulator({ port: 0, nodes: simulatedRobot(nao, { msPerChar: 1 }), statusFrames: true });
     const trialId = await bareTrial(db);
-    host = await TrialHost.open(db, trialId, protocol, pluginRobot(drives, new RosbridgeTransport({ url: sim.url })));
+    const robot = pluginRobot(drives, new RosbridgeTransport({ url: sim.url }));
+    // What the wizard is told (the host's onRobotStatus is the link's onConnection), heard from the first
+    // moment: a refusal can come while the host is still reading the log, before a listener of the host's.
     const wizard: string[] = [];
-    host.onRobotStatus((_, detail) => detail && wizard.push(detail));
+    robot.onConnection((_, detail) => detail && wizard.push(detail));
+    host = await TrialHost.open(db, trialId, protocol, robot);
     const problems = async () =>
       (await eventsSince(db, trialId)).flatMap((e) => (e.type === "robot.problem" ? [e.text] : []));
     return { trialId, wizard, problems };

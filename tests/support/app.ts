@@ -74,7 +74,11 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
       fail(new Error(`The launcher exited with ${code}:\n${output}`));
     });
   });
-  await waitForHttp(`${url}/api/auth/ok`);
+  await waitForHttp(`${url}/api/auth/ok`).catch((error: Error) => {
+    // Why, in the app's own words (a web app that stopped says so in its output).
+    process.kill(-child.pid!, "SIGKILL");
+    throw new Error(`${error.message}. The app's output:\n${output.split("\n").slice(-40).join("\n")}`);
+  });
   const exited = new Promise<void>((ok) => child.once("exit", () => ok()));
   return {
     url,
@@ -94,14 +98,15 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
   };
 }
 
-// A minute: a loaded machine can take that long to start the web app; a stuck one never answers.
+// Two minutes: a loaded machine can take a minute to start the web app; a stuck one never answers.
 async function waitForHttp(url: string) {
-  for (let i = 0; i < 600; i++) {
+  const deadline = Date.now() + 120_000;
+  while (Date.now() < deadline) {
     try {
-      const res = await fetch(url);
+      const res = await fetch(url, { signal: AbortSignal.timeout(5000) });
       if (res.ok) return;
     } catch {
-      // Not listening yet.
+      // Not listening yet, or not answering yet.
     }
     await new Promise((r) => setTimeout(r, 100));
   }

@@ -2,16 +2,27 @@
 // page they reach is checked against WCAG 2.1 AA (./accessibility): the
 // sign-in form, each screenshot, and each page as a test leaves it.
 import { chromium, type Browser, type BrowserContext, type Page } from "playwright-core";
-import { mkdirSync } from "node:fs";
+import { mkdirSync, mkdtempSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { checkPagesOnClose, expectAccessible } from "./accessibility";
 import { CHROMIUM_ARGS, findChromium } from "./chromium";
 
 const root = resolve(import.meta.dirname, "..", "..");
 
-export async function launchBrowser(): Promise<Browser> {
-  const executablePath = findChromium();
-  if (!executablePath) throw new Error("Chromium not found: install Debian's chromium package or set HRI_CHROMIUM.");
+/**
+ * Debian's Chromium, headless. `lowPriority` runs it, and every process it starts, at the lowest CPU
+ * priority (nice 19): a bench's stand-in for browsers on other computers, so that what it measures is
+ * the server's own cost, not many browsers and the server sharing two cores.
+ */
+export async function launchBrowser({ lowPriority = false } = {}): Promise<Browser> {
+  const found = findChromium();
+  if (!found) throw new Error("Chromium not found: install Debian's chromium package or set HRI_CHROMIUM.");
+  let executablePath = found;
+  if (lowPriority) {
+    executablePath = join(mkdtempSync(join(tmpdir(), "hri-chromium-")), "chromium");
+    writeFileSync(executablePath, `#!/bin/sh\nexec nice -n 19 ${JSON.stringify(found)} "$@"\n`, { mode: 0o755 });
+  }
   return chromium.launch({ executablePath, args: CHROMIUM_ARGS, headless: true });
 }
 

@@ -38,8 +38,10 @@ export async function replay(lines: Line[], url: string, tailMs = 400): Promise<
   const got: Got[] = [];
   const sockets = new Map<number, WebSocket>();
   const start = performance.now();
-  // Before a connection is closed, its answers recorded so far must have
-  // arrived: on a loaded machine they can lag the recorded times.
+  // Before a frame is sent or a connection closed, the answers the real server
+  // gave before that moment must have arrived: on a loaded machine they can lag
+  // the recorded times, and a reply recorded 1 ms before the next send (05's
+  // slow service) would otherwise swap places with that send's reply.
   const settled = async (conn: number, upTo: number) => {
     const expected = lines
       .slice(0, upTo)
@@ -56,7 +58,7 @@ export async function replay(lines: Line[], url: string, tailMs = 400): Promise<
     const conn = line.conn ?? 1;
     if (line.dir === "recv") continue;
     await sleepUntil(start, line.t_ms);
-    if (line.event === "terminate" || line.event === "close") await settled(conn, index);
+    if (line.event === "terminate" || line.event === "close" || line.dir === "send") await settled(conn, index);
     if (line.event === "open") {
       const socket = new WebSocket(url, { perMessageDeflate: false });
       socket.on("message", (data) =>
