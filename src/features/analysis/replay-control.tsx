@@ -7,6 +7,7 @@ import { type RefObject, useEffect, useRef, useState } from "react";
 import { Button } from "@/ui/button";
 import { seconds } from "@/ui/format";
 import { Card } from "@/ui/surface";
+import { isTyping, useKeys } from "@/ui/use-keys";
 import { followVideo, type VideoEvent } from "@/core/analysis/replay-follow";
 import { type Recording, trialMs } from "./recording-player";
 import { useReplay } from "./use-replay";
@@ -72,18 +73,10 @@ export function ReplayControl({
     void replay.stop();
   };
   const toggle = () => (on && playing ? stop() : start());
-  const latestToggle = useRef(toggle);
-  latestToggle.current = toggle;
-
-  useEffect(() => {
-    const onKey = (e: KeyboardEvent) => {
-      const typing = e.target instanceof HTMLInputElement || e.target instanceof HTMLTextAreaElement;
-      if (typing || e.ctrlKey || e.metaKey || e.altKey || e.key.toLowerCase() !== "r") return;
-      latestToggle.current();
-    };
-    window.addEventListener("keydown", onKey);
-    return () => window.removeEventListener("keydown", onKey);
-  }, []);
+  useKeys((e) => {
+    if (isTyping(e.target) || e.ctrlKey || e.metaKey || e.altKey || e.key.toLowerCase() !== "r") return;
+    toggle();
+  });
 
   const chooseSpeed = (s: number) => {
     setSpeed(s);

@@ -4,17 +4,15 @@
 // for screen readers. Keys typed into a field (the annotation form) are text,
 // not codes. What I code is mine alone: nobody else's codes are shown here.
 import { useQuery } from "@tanstack/react-query";
-import { useEffect, useMemo, useState } from "react";
+import { useMemo, useState } from "react";
 import { codeForKey, type Scheme } from "@/core/coding/scheme";
 import { useTRPC } from "@/lib/trpc";
 import { NativeSelect } from "@/ui/field";
 import { Card } from "@/ui/surface";
+import { isTyping, useKeys } from "@/ui/use-keys";
 import type { LiveCode } from "../execution/use-trial-socket";
 
 type Send = (mark: { schemeVersionId: string; setId: string; codeId: string }) => Promise<{ ok: boolean }>;
-
-const typing = (target: EventTarget | null) =>
-  target instanceof HTMLElement && (target.isContentEditable || /^(INPUT|TEXTAREA|SELECT)$/.test(target.tagName));
 
 export function LiveCodingPanel({ trialId, codes, send }: { trialId: string; codes: LiveCode[]; send: Send }) {
   const trpc = useTRPC();
@@ -30,21 +28,15 @@ export function LiveCodingPanel({ trialId, codes, send }: { trialId: string; cod
     return [...byId.values()].filter((c) => c.versionId === current?.versionId);
   }, [loaded.data, codes, current]);
 
-  useEffect(() => {
-    if (!current) return;
-    const scheme = current.definition as Scheme;
-    const onKey = (e: KeyboardEvent) => {
-      if (e.repeat || e.ctrlKey || e.metaKey || e.altKey || typing(e.target)) return;
-      const found = codeForKey(scheme, e.key);
-      if (!found) return;
-      e.preventDefault();
-      void send({ schemeVersionId: current.versionId, setId: found.set.id, codeId: found.code.id }).then((r) => {
-        if (r.ok) setLast(found.code.name);
-      });
-    };
-    window.addEventListener("keydown", onKey);
-    return () => window.removeEventListener("keydown", onKey);
-  }, [current, send]);
+  useKeys((e) => {
+    if (!current || e.repeat || e.ctrlKey || e.metaKey || e.altKey || isTyping(e.target)) return;
+    const found = codeForKey(current.definition as Scheme, e.key);
+    if (!found) return;
+    e.preventDefault();
+    void send({ schemeVersionId: current.versionId, setId: found.set.id, codeId: found.code.id }).then((r) => {
+      if (r.ok) setLast(found.code.name);
+    });
+  });
 
   if (!current) return null;
   const scheme = current.definition as Scheme;

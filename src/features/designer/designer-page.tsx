@@ -26,6 +26,7 @@ import { abstractAction, audioPlayer, type Plugin } from "@/core/plugins";
 import { newId } from "@/lib/new-id";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
+import { isTyping, useKeys } from "@/ui/use-keys";
 import { Input, NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
 import { Spinner } from "@/ui/surface";
@@ -502,28 +503,22 @@ function useDesignerKeys(keys: {
   remove: () => void;
   enabled: boolean;
 }) {
-  useEffect(() => {
+  useKeys((e) => {
     if (!keys.enabled) return;
-    const onKey = (e: KeyboardEvent) => {
-      const typing =
-        e.target instanceof HTMLElement &&
-        (e.target.isContentEditable || ["INPUT", "TEXTAREA", "SELECT"].includes(e.target.tagName));
-      const mod = e.ctrlKey || e.metaKey;
-      if (mod && e.key.toLowerCase() === "z" && !typing) {
-        e.preventDefault();
-        (e.shiftKey ? keys.redo : keys.undo)();
-      } else if (mod && e.key.toLowerCase() === "y" && !typing) {
-        e.preventDefault();
-        keys.redo();
-      } else if (e.altKey && (e.key === "ArrowUp" || e.key === "ArrowDown")) {
-        e.preventDefault();
-        keys.move(e.key === "ArrowUp" ? -1 : 1);
-      } else if ((e.key === "Delete" || e.key === "Backspace") && !typing) {
-        e.preventDefault();
-        keys.remove();
-      }
-    };
-    window.addEventListener("keydown", onKey);
-    return () => window.removeEventListener("keydown", onKey);
-  }, [keys]);
+    const typing = isTyping(e.target);
+    const mod = e.ctrlKey || e.metaKey;
+    if (mod && e.key.toLowerCase() === "z" && !typing) {
+      e.preventDefault();
+      (e.shiftKey ? keys.redo : keys.undo)();
+    } else if (mod && e.key.toLowerCase() === "y" && !typing) {
+      e.preventDefault();
+      keys.redo();
+    } else if (e.altKey && (e.key === "ArrowUp" || e.key === "ArrowDown")) {
+      e.preventDefault();
+      keys.move(e.key === "ArrowUp" ? -1 : 1);
+    } else if ((e.key === "Delete" || e.key === "Backspace") && !typing) {
+      e.preventDefault();
+      keys.remove();
+    }
+  });
 }

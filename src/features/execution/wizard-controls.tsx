@@ -2,13 +2,14 @@
 // The wizard's controls: the next scripted action as the big button, answer
 // choices by number, and everything off script one key away.
 import { exitOf } from "@/core/protocol/flow";
-import { useEffect, useId, useRef, useState } from "react";
+import { useId, useRef, useState } from "react";
 import { actionName, type ActionNames } from "@/core/designer/action-name";
 import { answerOptions, nextUnit, type TrialProtocol, type TrialState } from "@/core/trial";
 import { controlsOffBecause } from "@/core/trial/refusals";
 import type { WizardCommand } from "@/core/socket/messages";
 import { Button } from "@/ui/button";
 import { Input } from "@/ui/field";
+import { isTyping, useKeys } from "@/ui/use-keys";
 import { UnscriptedAction } from "./unscripted-action";
 
 type Send = (c: WizardCommand) => Promise<{ ok: boolean }>;
@@ -59,28 +60,23 @@ export function WizardControls({
   const offId = useId();
   const next = () => void send(state.status === "scheduled" ? { kind: "start" } : { kind: "next" });
 
-  useEffect(() => {
-    const onKey = (e: KeyboardEvent) => {
-      if (e.key === "Escape") {
-        if (!ended) void send({ kind: "emergency_stop" });
-        return;
-      }
-      const typing = e.target instanceof HTMLInputElement || e.target instanceof HTMLTextAreaElement;
-      if (typing || e.ctrlKey || e.metaKey || e.altKey || ended) return;
-      const key = e.key.toLowerCase();
-      if (key === "n" && !question) next();
-      else if (key === "s" && running) void send({ kind: "skip" });
-      else if (key === "p") void send({ kind: state.status === "paused" ? "resume" : "pause" });
-      else if (key === "u") {
-        e.preventDefault();
-        speech.current?.focus();
-      } else if (/^[1-9]$/.test(key) && question) {
-        const option = options[Number(key) - 1];
-        if (option) void send({ kind: "answer", actionId: question.id, optionId: option.id });
-      }
-    };
-    window.addEventListener("keydown", onKey);
-    return () => window.removeEventListener("keydown", onKey);
+  useKeys((e) => {
+    if (e.key === "Escape") {
+      if (!ended) void send({ kind: "emergency_stop" });
+      return;
+    }
+    if (isTyping(e.target) || e.ctrlKey || e.metaKey || e.altKey || ended) return;
+    const key = e.key.toLowerCase();
+    if (key === "n" && !question) next();
+    else if (key === "s" && running) void send({ kind: "skip" });
+    else if (key === "p") void send({ kind: state.status === "paused" ? "resume" : "pause" });
+    else if (key === "u") {
+      e.preventDefault();
+      speech.current?.focus();
+    } else if (/^[1-9]$/.test(key) && question) {
+      const option = options[Number(key) - 1];
+      if (option) void send({ kind: "answer", actionId: question.id, optionId: option.id });
+    }
   });
 
   const say = async () => {
