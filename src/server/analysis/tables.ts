@@ -17,10 +17,10 @@ import {
   experiments,
   participants,
   questionnaireLinks,
-  trialSamples,
   trials,
   user,
 } from "@/store/schema";
+import { samplesOfTrials } from "@/store/samples";
 import { submitted } from "../questionnaires/responses";
 import { trialsEventsOf } from "../trials/files";
 
@@ -85,18 +85,7 @@ export const studyEventsTable = async (db: Database, studyId: string) => eventsT
 
 export async function samplesTable(db: Database, studyId: string): Promise<Table> {
   const trialIds = await ids(db, studyId);
-  const rows = trialIds.length
-    ? await db
-        .select({
-          trialId: trialSamples.trialId,
-          topic: trialSamples.topic,
-          relMs: trialSamples.relMs,
-          data: trialSamples.data,
-        })
-        .from(trialSamples)
-        .where(inArray(trialSamples.trialId, trialIds))
-        .orderBy(asc(trialSamples.trialId), asc(trialSamples.relMs), asc(trialSamples.id))
-    : [];
+  const rows = await samplesOfTrials(db, trialIds);
   return tableOf(
     SAMPLE_COLUMNS,
     rows.map((s) => ({ trial_id: s.trialId, topic: s.topic, rel_ms: s.relMs, data: JSON.stringify(s.data) })),

@@ -12,18 +12,11 @@ import { codesTable } from "@/core/coding/export";
 import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent } from "@/core/trial";
 import type { Database } from "@/store/client";
-import {
-  annotations,
-  experimentVersions,
-  mediaRecordings,
-  questionnaireLinks,
-  trialSamples,
-  trials,
-  user,
-} from "@/store/schema";
+import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/store/schema";
 import { recordingFileName } from "../media/recordings";
 import { submitted } from "../questionnaires/responses";
 import { eventsOfTrials } from "@/store/event-store";
+import { samplesOfTrials } from "@/store/samples";
 import type { ActionNames } from "@/core/designer/action-name";
 import { trialActionNames } from "./action-names";
 import { trialMcap } from "./mcap";
@@ -120,18 +113,7 @@ export async function readTrials(db: Database, trialIds: string[]) {
           .orderBy(asc(mediaRecordings.createdAt))
       : [],
     trialIds.length ? submitted(db, inArray(questionnaireLinks.trialId, trialIds)) : [],
-    trialIds.length
-      ? db
-          .select({
-            trialId: trialSamples.trialId,
-            topic: trialSamples.topic,
-            relMs: trialSamples.relMs,
-            data: trialSamples.data,
-          })
-          .from(trialSamples)
-          .where(inArray(trialSamples.trialId, trialIds))
-          .orderBy(asc(trialSamples.relMs), asc(trialSamples.id))
-      : [],
+    samplesOfTrials(db, trialIds),
     codeRowsOf(db, trialIds),
   ]);
   const markedBy = byTrial(trialIds, marked);
