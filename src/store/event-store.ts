@@ -144,14 +144,44 @@ function rowOf(
   };
 }
 
-/** The events after `afterSeq`, in order: what a reconnecting client missed. */
-export async function eventsSince(db: Database, trialId: string, afterSeq = 0): Promise<StoredEvent[]> {
-  const rows = await db
+/**
+ * The events after `afterSeq`, in order: what a reconnecting client missed.
+ * With a `page`, at most `limit` of them (of one `type` if given): a log too
+ * large to hold is read a page at a time, each after the last one's seq.
+ */
+export async function eventsSince(
+  db: Database,
+  trialId: string,
+  afterSeq = 0,
+  page?: { limit: number; type?: EngineEvent["type"] },
+): Promise<StoredEvent[]> {
+  const query = db
     .select()
     .from(trialEvents)
-    .where(and(eq(trialEvents.trialId, trialId), gt(trialEvents.seq, afterSeq)))
-    .orderBy(asc(trialEvents.seq));
-  return rows.map(toStored);
+    .where(
+      and(
+        eq(trialEvents.trialId, trialId),
+        gt(trialEvents.seq, afterSeq),
+        page?.type ? eq(trialEvents.type, page.type) : undefined,
+      ),
+    )
+    .orderBy(asc(trialEvents.seq))
+    .$dynamic();
+  return (await (page ? query.limit(page.limit) : query)).map(toStored);
+}
+
+/** A trial's events page by page (see eventsSince), each page read when the last has been taken. */
+export async function* eventPages(
+  db: Database,
+  trialId: string,
+  page: { limit: number; type?: EngineEvent["type"] },
+): AsyncGenerator<StoredEvent[]> {
+  for (let afterSeq = 0; ; ) {
+    const events = await eventsSince(db, trialId, afterSeq, page);
+    if (events.length) yield events;
+    if (events.length < page.limit) return;
+    afterSeq = events.at(-1)!.seq;
+  }
 }
 
 /** The seqs each request of the trial's wizard was answered with: what a request sent again is answered from. */

@@ -103,10 +103,56 @@ export interface TrialRecord {
   codes: Array<Record<string, unknown>>;
 }
 
+/** The record's events as its JSON holds them: each with the names of its step and action. */
+export function namedEvents(events: StoredEvent[], names: TrialNames) {
+  return events.map((e) => ({ ...e, ...names.of(e) }));
+}
+
+/**
+ * A JSON array written a batch of items at a time, byte for byte as
+ * JSON.stringify(…, null, 2) writes it as the value of a key at `depth`
+ * (1: a key of the document's top object): a record too large to hold goes
+ * out as it is read. Literal newlines only ever occur between tokens (a
+ * string's are escaped), so indenting an item is replacing them.
+ */
+export function jsonArrayWriter(depth: number) {
+  const pad = `\n${"  ".repeat(depth + 1)}`;
+  let written = 0;
+  return {
+    items: (items: unknown[]) =>
+      items
+        .map((item) => `${written++ ? "," : "["}${pad}${JSON.stringify(item, null, 2).replaceAll("\n", pad)}`)
+        .join(""),
+    end: () => (written ? `\n${"  ".repeat(depth)}]` : "[]"),
+  };
+}
+
+/**
+ * The trial record's JSON around its events: the text before them and the
+ * text after. The events go between as a jsonArrayWriter(1) writes them, so
+ * the record can be written a batch of events at a time.
+ */
+export function trialRecordFrame(record: Omit<TrialRecord, "schemaVersion" | "events">) {
+  // The events after the protocol, as TrialRecord lists them.
+  const { trial, protocol, ...rest } = record;
+  const whole = JSON.stringify(
+    { schemaVersion: TRIAL_RECORD_SCHEMA_VERSION, trial, protocol, events: [], ...rest },
+    null,
+    2,
+  );
+  // A newline and two spaces before a quote start a key of the top object only (deeper keys are
+  // indented further, a string's newlines are escaped), and its keys are unique.
+  const key = '\n  "events": ';
+  const at = whole.indexOf(`${key}[]`);
+  return { before: whole.slice(0, at + key.length), after: whole.slice(at + key.length + 2) };
+}
+
 export function trialRecordJson(
   record: Omit<TrialRecord, "schemaVersion" | "events"> & { events: StoredEvent[] },
   names: TrialNames,
 ): string {
-  const events = record.events.map((e) => ({ ...e, ...names.of(e) }));
-  return JSON.stringify({ schemaVersion: TRIAL_RECORD_SCHEMA_VERSION, ...record, events }, null, 2);
+  const { events, ...rest } = record;
+  const { before, after } = trialRecordFrame(rest);
+  const array = jsonArrayWriter(1);
+  return before + array.items(namedEvents(events, names)) + array.end() + after;
 }
