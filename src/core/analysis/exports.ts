@@ -6,7 +6,6 @@ import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { csvDocument, type CsvValue } from "@/core/csv/csv";
 import type { StoredEvent } from "@/core/trial";
 import type { TrialNames } from "./names";
-import { SAMPLE_COLUMNS } from "./api";
 
 // 2: the protocol is snapshot schema 2 (robotId; steps say where they lead), the version names its robotId.
 // 3: observers' codes (`codes`, one record per code event as in the codes CSV).
@@ -70,6 +69,10 @@ export function eventRows(
     ];
   });
 }
+
+/** The samples CSV's columns, the analysis API's samples table's too. (Here, not in api.ts, which imports
+ * this file: a cycle either way round would leave one of them undefined when the other loads first.) */
+export const SAMPLE_COLUMNS = ["trial_id", "topic", "rel_ms", "data"] as const;
 
 /** A robot state sample as logged: its topic, when (ms from t0) and the message as the robot sent it. */
 export interface Sample {

@@ -4,8 +4,8 @@
 import { codesTable as tableOfCodes } from "@/core/coding/export";
 import { codeRowsOf } from "../coding/rows";
 import { and, asc, eq, inArray, ne } from "drizzle-orm";
-import { ANNOTATION_COLUMNS, SAMPLE_COLUMNS, TRIAL_COLUMNS } from "@/core/analysis/api";
-import { EVENT_COLUMNS, eventRows } from "@/core/analysis/exports";
+import { ANNOTATION_COLUMNS, TRIAL_COLUMNS } from "@/core/analysis/api";
+import { EVENT_COLUMNS, eventRows, SAMPLE_COLUMNS } from "@/core/analysis/exports";
 import { trialNames } from "@/core/analysis/names";
 import { type Table, tableOf } from "@/core/analysis/table";
 import { ANSWER_COLUMNS, answerRows } from "@/core/questionnaires/export";
