@@ -170,17 +170,26 @@ export async function eventsSince(
   return (await (page ? query.limit(page.limit) : query)).map(toStored);
 }
 
-/** A trial's events page by page (see eventsSince), each page read when the last has been taken. */
+/**
+ * A trial's events page by page (see eventsSince). The next page is read while
+ * the reader works on this one, so the database and the reader overlap, and at
+ * most two pages are held.
+ */
 export async function* eventPages(
   db: Database,
   trialId: string,
   page: { limit: number; type?: EngineEvent["type"] },
 ): AsyncGenerator<StoredEvent[]> {
-  for (let afterSeq = 0; ; ) {
-    const events = await eventsSince(db, trialId, afterSeq, page);
+  const read = (afterSeq: number) => {
+    const events = eventsSince(db, trialId, afterSeq, page);
+    // A reader that stops early leaves the page read ahead unread: its failure is nobody's to hear.
+    events.catch(() => {});
+    return events;
+  };
+  for (let next: Promise<StoredEvent[]> | null = read(0); next; ) {
+    const events: StoredEvent[] = await next;
+    next = events.length === page.limit ? read(events.at(-1)!.seq) : null;
     if (events.length) yield events;
-    if (events.length < page.limit) return;
-    afterSeq = events.at(-1)!.seq;
   }
 }
 
