@@ -2,7 +2,7 @@ import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { bareTrial, freshDatabase } from "../../tests/support/db";
 import { trials } from "./schema";
-import { appendEvents, eventPages, eventsSince, NOTIFY_CHANNEL, type TrialCursor } from "./event-store";
+import { appendEvents, eventPages, eventsSince, lastSeqOf, NOTIFY_CHANNEL, type TrialCursor } from "./event-store";
 
 describe("the trial event store", async () => {
   const { db, sql, close } = await freshDatabase();
@@ -101,6 +101,9 @@ describe("the trial event store", async () => {
       [4, 5],
     ]);
     expect(await pages({ limit: 2, type: "trial.completed" })).toEqual([]);
+    expect(await pages({ limit: 2, upTo: 3 })).toEqual([[1, 2], [3]]);
+    expect(await lastSeqOf(db, trialId)).toBe(5);
+    expect(await lastSeqOf(db, await newTrial())).toBe(0);
   });
 
   it("notifies listeners after the commit", async () => {

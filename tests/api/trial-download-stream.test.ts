@@ -105,6 +105,24 @@ it("streams a trial without events as the whole files are", async () => {
   expect(await (await download(trial.id, "json")).text()).toBe(whole!.files[1]!.body);
 });
 
+it("holds the log as it stood when the download began, while a live trial goes on", async () => {
+  const trial = await seededTrial(EVENTS);
+  const sql = db.$client;
+  for (const [i, format] of (["csv", "json"] as const).entries()) {
+    const [whole] = await trialsFiles(db, [trial.id], [format]);
+    const res = await download(trial.id, format);
+    const reader = res.body!.getReader();
+    const first = await reader.read();
+    // A line the wizard adds after the download began: a new unscripted action, and its request.
+    const seq = EVENTS + 1 + i;
+    const payload = { type: "action.requested", actionId: `late${i}`, actionType: "say", parameters: { text: "Late" } };
+    await sql`insert into trial_events (trial_id, seq, type, server_time, payload) values (${trial.id}, ${seq}, 'action.requested', now(), ${JSON.stringify(payload)}::jsonb)`;
+    const chunks = [first.value!];
+    for (let read = await reader.read(); !read.done; read = await reader.read()) chunks.push(read.value);
+    expect(Buffer.concat(chunks).toString("utf8")).toBe(whole!.files[0]!.body);
+  }
+});
+
 it("fails the download when the events cannot be read part-way: the file never looks complete", async () => {
   const trial = await seededTrial(EVENTS);
   const sql = db.$client;

@@ -27,7 +27,7 @@ import type { Database } from "@/store/client";
 import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/store/schema";
 import { recordingFileName } from "../media/recordings";
 import { submitted } from "../questionnaires/responses";
-import { eventPages, eventsOfTrials } from "@/store/event-store";
+import { eventPages, eventsOfTrials, lastSeqOf } from "@/store/event-store";
 import { samplesOfTrials } from "@/store/samples";
 import type { ActionNames } from "@/core/designer/action-name";
 import { trialActionNames } from "./action-names";
@@ -252,20 +252,23 @@ export const EVENTS_PER_READ = 5000;
  * a trial of 100k events never sits in the server's memory whole.
  */
 async function streamedFile(db: Database, trialId: string, format: "csv" | "json") {
-  const [[read], besides] = await Promise.all([
+  // The file holds the log as it stood when the download began: what a live trial adds later is
+  // in neither the events nor the names of the file.
+  const [upTo, [read], besides] = await Promise.all([
+    lastSeqOf(db, trialId),
     trialsOf(db, [trialId]),
     format === "json" ? besidesEvents(db, [trialId]) : undefined,
   ]);
   const { trial, people, protocol, names } = read!;
+  const page = { limit: EVENTS_PER_READ, upTo };
   async function* pieces() {
     const frame = besides && trialRecordFrame(recordOf({ ...read!, ...besides(trialId) }));
     yield frame ? frame.before : csvLines([EVENT_COLUMNS]);
     // Unscripted actions are named by their requests: all of them are learnt before any event is named.
     const named = trialNames(protocol, [], names);
-    for await (const requests of eventPages(db, trialId, { limit: EVENTS_PER_READ, type: "action.requested" }))
-      named.learn(requests);
+    for await (const requests of eventPages(db, trialId, { ...page, type: "action.requested" })) named.learn(requests);
     const array = jsonArrayWriter(1);
-    for await (const events of eventPages(db, trialId, { limit: EVENTS_PER_READ }))
+    for await (const events of eventPages(db, trialId, page))
       yield frame ? array.items(namedEvents(events, named)) : csvLines(eventRows(trial.id, events, people, named));
     if (frame) yield array.end() + frame.after;
   }
