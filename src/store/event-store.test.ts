@@ -2,7 +2,7 @@ import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { bareTrial, freshDatabase } from "../../tests/support/db";
 import { trials } from "./schema";
-import { appendEvents, eventsSince, NOTIFY_CHANNEL, type TrialCursor } from "./event-store";
+import { appendEvents, eventPages, eventsSince, lastSeqOf, NOTIFY_CHANNEL, type TrialCursor } from "./event-store";
 
 describe("the trial event store", async () => {
   const { db, sql, close } = await freshDatabase();
@@ -73,6 +73,37 @@ describe("the trial event store", async () => {
     expect((await eventsSince(db, trialId)).map((e) => [e.seq, e.type === "note.added" && e.text])).toEqual([
       [1, "first"],
     ]);
+  });
+
+  it("reads a log a page at a time, each after the last page's seq, of one type if asked", async () => {
+    const trialId = await newTrial();
+    await appendEvents(
+      db,
+      await cursor(trialId),
+      [
+        { type: "note.added", text: "1" },
+        { type: "trial.started" },
+        { type: "note.added", text: "3" },
+        { type: "note.added", text: "4" },
+        { type: "note.added", text: "5" },
+      ],
+      null,
+    );
+    const pages = async (page: Parameters<typeof eventPages>[2]) => {
+      const seqs: number[][] = [];
+      for await (const events of eventPages(db, trialId, page)) seqs.push(events.map((e) => e.seq));
+      return seqs;
+    };
+    expect(await pages({ limit: 2 })).toEqual([[1, 2], [3, 4], [5]]);
+    expect(await pages({ limit: 5 })).toEqual([[1, 2, 3, 4, 5]]);
+    expect(await pages({ limit: 2, type: "note.added" })).toEqual([
+      [1, 3],
+      [4, 5],
+    ]);
+    expect(await pages({ limit: 2, type: "trial.completed" })).toEqual([]);
+    expect(await pages({ limit: 2, upTo: 3 })).toEqual([[1, 2], [3]]);
+    expect(await lastSeqOf(db, trialId)).toBe(5);
+    expect(await lastSeqOf(db, await newTrial())).toBe(0);
   });
 
   it("notifies listeners after the commit", async () => {

@@ -1,6 +1,6 @@
 // The trial's append-only log in PostgreSQL. An event exists once its
 // transaction commits; only then may anyone be told about it.
-import { and, asc, eq, gt, inArray, isNotNull } from "drizzle-orm";
+import { and, asc, eq, gt, inArray, isNotNull, lte, max } from "drizzle-orm";
 import type { EngineEvent, StoredEvent } from "@/core/trial";
 import type { Database } from "./client";
 import { trialEvents, type trials } from "./schema";
@@ -144,14 +144,57 @@ function rowOf(
   };
 }
 
-/** The events after `afterSeq`, in order: what a reconnecting client missed. */
-export async function eventsSince(db: Database, trialId: string, afterSeq = 0): Promise<StoredEvent[]> {
-  const rows = await db
+type Page = { limit: number; type?: EngineEvent["type"]; upTo?: number };
+
+/** The seq of the trial's last event (0 before the first): where a file read page by page stops. */
+export async function lastSeqOf(db: Database, trialId: string): Promise<number> {
+  const [row] = await db
+    .select({ seq: max(trialEvents.seq) })
+    .from(trialEvents)
+    .where(eq(trialEvents.trialId, trialId));
+  return row?.seq ?? 0;
+}
+
+/**
+ * The events after `afterSeq`, in order: what a reconnecting client missed.
+ * With a `page`, at most `limit` of them (of one `type` if given, none after
+ * seq `upTo` if given): a log too large to hold is read a page at a time, each
+ * after the last one's seq.
+ */
+export async function eventsSince(db: Database, trialId: string, afterSeq = 0, page?: Page): Promise<StoredEvent[]> {
+  const query = db
     .select()
     .from(trialEvents)
-    .where(and(eq(trialEvents.trialId, trialId), gt(trialEvents.seq, afterSeq)))
-    .orderBy(asc(trialEvents.seq));
-  return rows.map(toStored);
+    .where(
+      and(
+        eq(trialEvents.trialId, trialId),
+        gt(trialEvents.seq, afterSeq),
+        page?.type ? eq(trialEvents.type, page.type) : undefined,
+        page?.upTo !== undefined ? lte(trialEvents.seq, page.upTo) : undefined,
+      ),
+    )
+    .orderBy(asc(trialEvents.seq))
+    .$dynamic();
+  return (await (page ? query.limit(page.limit) : query)).map(toStored);
+}
+
+/**
+ * A trial's events page by page (see eventsSince). The next page is read while
+ * the reader works on this one, so the database and the reader overlap, and at
+ * most two pages are held.
+ */
+export async function* eventPages(db: Database, trialId: string, page: Page): AsyncGenerator<StoredEvent[]> {
+  const read = (afterSeq: number) => {
+    const events = eventsSince(db, trialId, afterSeq, page);
+    // A reader that stops early leaves the page read ahead unread: its failure is nobody's to hear.
+    events.catch(() => {});
+    return events;
+  };
+  for (let next: Promise<StoredEvent[]> | null = read(0); next; ) {
+    const events: StoredEvent[] = await next;
+    next = events.length === page.limit ? read(events.at(-1)!.seq) : null;
+    if (events.length) yield events;
+  }
 }
 
 /** The seqs each request of the trial's wizard was answered with: what a request sent again is answered from. */

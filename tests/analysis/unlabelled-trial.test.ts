@@ -139,7 +139,9 @@ describe("a trial whose actions have no labels", () => {
   });
 
   it("names the step and the action of every row of the events CSV", async () => {
-    const [header, ...rows] = parseCsv((await owner.trials.export({ trialId, format: "csv" })).body as string);
+    const [header, ...rows] = parseCsv(
+      await new Response((await owner.trials.export({ trialId, format: "csv" })).body).text(),
+    );
     const column = (name: string) => header!.indexOf(name);
     const about = rows.filter((r) => r[column("action_id")] || r[column("step_id")]);
     expect(about.length).toBeGreaterThan(20);
@@ -157,7 +159,9 @@ describe("a trial whose actions have no labels", () => {
   });
 
   it("names them in the trial record (JSON)", async () => {
-    const record = JSON.parse((await owner.trials.export({ trialId, format: "json" })).body as string) as {
+    const record = JSON.parse(
+      await new Response((await owner.trials.export({ trialId, format: "json" })).body).text(),
+    ) as {
       events: Array<{ type: string; actionId?: string; stepId?: string; actionName?: string; stepName?: string }>;
     };
     for (const e of record.events) {

@@ -183,7 +183,9 @@ describe("coding schemes", () => {
     const csv = await owner.trials.export({ trialId: coded.id, format: "codes" });
     expect(csv.filename).toBe(`trial-${coded.id}-codes.csv`);
     expect(parseCsv(csv.body as string)).toEqual([[...CODE_COLUMNS], ...rows]);
-    const record = JSON.parse((await owner.trials.export({ trialId: coded.id, format: "json" })).body as string);
+    const record = JSON.parse(
+      await new Response((await owner.trials.export({ trialId: coded.id, format: "json" })).body).text(),
+    );
     expect(record.schemaVersion).toBe(3);
     expect(record.codes).toEqual([
       expect.objectContaining({ observer: "researcher", set: "Gaze", code: "Away", start_ms: 0, end_ms: 900 }),

@@ -94,7 +94,7 @@ describe("the trial events CSV", () => {
       ],
       f.people.owner.id,
     );
-    const csv = (await owner.trials.export({ trialId: trial.id, format: "csv" })).body as string;
+    const csv = await new Response((await owner.trials.export({ trialId: trial.id, format: "csv" })).body).text();
     expect(inert(csv)).toEqual([]);
     const [header, ...rows] = parseCsv(csv);
     // Cells by column name: the columns grow as the exports learn more.

@@ -48,16 +48,22 @@ describe("the wizard and the creator, two named fields wherever the trial is sho
     expect(await owner.trials.get({ trialId: trial.id })).toMatchObject(names);
     expect((await owner.trials.list({ studyId: study.id }))[0]).toMatchObject(names);
 
-    const [header, row] = parseCsv((await owner.trials.export({ trialId: trial.id, format: "csv" })).body as string);
+    const [header, row] = parseCsv(
+      await new Response((await owner.trials.export({ trialId: trial.id, format: "csv" })).body).text(),
+    );
     // No events yet: the header alone, so log one to see a row.
     expect(header!.slice(0, 3)).toEqual(["trial_id", "wizard", "created_by"]);
     expect(row).toBeUndefined();
     await appendEvents(db, { id: trial.id, lastSeq: 0, t0: null }, [{ type: "trial.started" }], f.people.wizard.id);
     const csvRows = (body: string) => parseCsv(body).slice(1);
     expect(
-      csvRows((await owner.trials.export({ trialId: trial.id, format: "csv" })).body as string)[0]!.slice(0, 3),
+      csvRows(
+        await new Response((await owner.trials.export({ trialId: trial.id, format: "csv" })).body).text(),
+      )[0]!.slice(0, 3),
     ).toEqual([trial.id, f.people.wizard.name, f.people.owner.name]);
-    const record = JSON.parse((await owner.trials.export({ trialId: trial.id, format: "json" })).body as string);
+    const record = JSON.parse(
+      await new Response((await owner.trials.export({ trialId: trial.id, format: "json" })).body).text(),
+    );
     expect(record.trial).toMatchObject({ wizardId: f.people.wizard.id, createdBy: f.people.owner.id, ...names });
 
     const archive = await unzipArchive(await owner.studies.exportArchive({ studyId: study.id }));

@@ -3,7 +3,7 @@
 // the test that every route is described all read this list.
 import { CODE_COLUMNS } from "@/core/coding/export";
 import { ANSWER_COLUMNS } from "@/core/questionnaires/export";
-import { EVENT_COLUMNS } from "./exports";
+import { EVENT_COLUMNS, SAMPLE_COLUMNS } from "./exports";
 
 export const API_BASE = "/api/v1";
 
@@ -20,7 +20,6 @@ export const TRIAL_COLUMNS = [
   "ended_at",
   "duration_ms",
 ] as const;
-export const SAMPLE_COLUMNS = ["trial_id", "topic", "rel_ms", "data"] as const;
 export const ANNOTATION_COLUMNS = ["trial_id", "rel_ms", "label", "note", "author"] as const;
 
 export interface Endpoint {

@@ -1,7 +1,17 @@
 import { describe, expect, it } from "vitest";
 import { parseCsv } from "../../../tests/support/csv";
 import type { StoredEvent } from "@/core/trial";
-import { eventsCsv, samplesCsv, trialRecordJson } from "./exports";
+import { csvLines } from "@/core/csv/csv";
+import {
+  EVENT_COLUMNS,
+  eventRows,
+  eventsCsv,
+  jsonArrayWriter,
+  namedEvents,
+  samplesCsv,
+  trialRecordFrame,
+  trialRecordJson,
+} from "./exports";
 import { trialNames } from "./names";
 
 const events: StoredEvent[] = [
@@ -29,7 +39,7 @@ const events: StoredEvent[] = [
   },
 ];
 
-const names = trialNames({ steps: [{ id: "s1", name: "Welcome", actions: [] }] }, events);
+const names = trialNames({ steps: [{ id: "s1", name: "Welcome", description: "", actions: [] }] }, events);
 const people = { wizard: "Wim Wizard", createdBy: "Rita Researcher" };
 
 describe("the events CSV", () => {
@@ -102,6 +112,59 @@ describe("the trial record", () => {
       { stepName: undefined, actionName: undefined },
       { stepName: "Welcome", actionName: 'Say: She said "hi", then left; {{x}}…' },
     ]);
+  });
+});
+
+describe("the trial record and events CSV written a page of events at a time", () => {
+  const record = {
+    trial: { id: "t1", note: 'a "quoted"\n  "events": [] line', gone: undefined, at: new Date(0) },
+    protocol: {
+      schemaVersion: 2 as const,
+      experiment: {} as never,
+      steps: [{ id: "s1", name: "Welcome", description: "", actions: [] }],
+    },
+    annotations: [{ relMs: 5, label: "Looks away", note: "", authorName: null }],
+    questionnaires: [],
+    recordings: [{ nested: { deeper: [1, [2, {}], []] } }],
+    samples: [{ topic: "/joint_states", relMs: 1, data: { position: [0.5] } }],
+    codes: [],
+  };
+  const many = Array.from({ length: 7 }, (_, i) => ({ ...events[i % 2]!, seq: i + 1 }));
+  it.each([
+    ["no events", [], []],
+    ["one page", events, [2]],
+    ["pages of one, three and three", many as StoredEvent[], [1, 3, 3]],
+  ] as const)("%s: the same bytes as the whole record and the whole CSV", (_, all, pages) => {
+    const frame = trialRecordFrame(record);
+    const array = jsonArrayWriter(1);
+    let json = frame.before;
+    let csv = csvLines([EVENT_COLUMNS]);
+    let at = 0;
+    for (const size of pages) {
+      const page = all.slice(at, (at += size));
+      json += array.items(namedEvents(page, names));
+      csv += csvLines(eventRows("t1", page, people, names));
+    }
+    json += array.end() + frame.after;
+    // What the paged writer must match: the whole record in one JSON.stringify, events after the protocol.
+    const expected = JSON.stringify(
+      {
+        schemaVersion: 3,
+        trial: record.trial,
+        protocol: record.protocol,
+        events: namedEvents([...all], names),
+        annotations: record.annotations,
+        questionnaires: record.questionnaires,
+        recordings: record.recordings,
+        samples: record.samples,
+        codes: record.codes,
+      },
+      null,
+      2,
+    );
+    expect(json).toBe(expected);
+    expect(trialRecordJson({ ...record, events: [...all] }, names)).toBe(expected);
+    expect(csv).toBe(eventsCsv("t1", [...all], people, names));
   });
 });
 

@@ -6,7 +6,6 @@ import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { csvDocument, type CsvValue } from "@/core/csv/csv";
 import type { StoredEvent } from "@/core/trial";
 import type { TrialNames } from "./names";
-import { SAMPLE_COLUMNS } from "./api";
 
 // 2: the protocol is snapshot schema 2 (robotId; steps say where they lead), the version names its robotId.
 // 3: observers' codes (`codes`, one record per code event as in the codes CSV).
@@ -71,6 +70,10 @@ export function eventRows(
   });
 }
 
+/** The samples CSV's columns, the analysis API's samples table's too. (Here, not in api.ts, which imports
+ * this file: a cycle either way round would leave one of them undefined when the other loads first.) */
+export const SAMPLE_COLUMNS = ["trial_id", "topic", "rel_ms", "data"] as const;
+
 /** A robot state sample as logged: its topic, when (ms from t0) and the message as the robot sent it. */
 export interface Sample {
   topic: string;
@@ -103,10 +106,56 @@ export interface TrialRecord {
   codes: Array<Record<string, unknown>>;
 }
 
+/** The record's events as its JSON holds them: each with the names of its step and action. */
+export function namedEvents(events: StoredEvent[], names: TrialNames) {
+  return events.map((e) => ({ ...e, ...names.of(e) }));
+}
+
+/**
+ * A JSON array written a batch of items at a time, byte for byte as
+ * JSON.stringify(…, null, 2) writes it as the value of a key at `depth`
+ * (1: a key of the document's top object): a record too large to hold goes
+ * out as it is read. Literal newlines only ever occur between tokens (a
+ * string's are escaped), so indenting an item is replacing them.
+ */
+export function jsonArrayWriter(depth: number) {
+  const pad = `\n${"  ".repeat(depth + 1)}`;
+  let written = 0;
+  return {
+    items: (items: unknown[]) =>
+      items
+        .map((item) => `${written++ ? "," : "["}${pad}${JSON.stringify(item, null, 2).replaceAll("\n", pad)}`)
+        .join(""),
+    end: () => (written ? `\n${"  ".repeat(depth)}]` : "[]"),
+  };
+}
+
+/**
+ * The trial record's JSON around its events: the text before them and the
+ * text after. The events go between as a jsonArrayWriter(1) writes them, so
+ * the record can be written a batch of events at a time.
+ */
+export function trialRecordFrame(record: Omit<TrialRecord, "schemaVersion" | "events">) {
+  // The events after the protocol, as TrialRecord lists them.
+  const { trial, protocol, ...rest } = record;
+  const whole = JSON.stringify(
+    { schemaVersion: TRIAL_RECORD_SCHEMA_VERSION, trial, protocol, events: [], ...rest },
+    null,
+    2,
+  );
+  // A newline and two spaces before a quote start a key of the top object only (deeper keys are
+  // indented further, a string's newlines are escaped), and its keys are unique.
+  const key = '\n  "events": ';
+  const at = whole.indexOf(`${key}[]`);
+  return { before: whole.slice(0, at + key.length), after: whole.slice(at + key.length + 2) };
+}
+
 export function trialRecordJson(
   record: Omit<TrialRecord, "schemaVersion" | "events"> & { events: StoredEvent[] },
   names: TrialNames,
 ): string {
-  const events = record.events.map((e) => ({ ...e, ...names.of(e) }));
-  return JSON.stringify({ schemaVersion: TRIAL_RECORD_SCHEMA_VERSION, ...record, events }, null, 2);
+  const { events, ...rest } = record;
+  const { before, after } = trialRecordFrame(rest);
+  const array = jsonArrayWriter(1);
+  return before + array.items(namedEvents(events, names)) + array.end() + after;
 }

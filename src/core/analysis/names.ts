@@ -13,15 +13,28 @@ export interface TrialNames {
 
 type Named = { stepId?: string | null; actionId?: string; actionType?: string; parameters?: Record<string, unknown> };
 
-export function trialNames(protocol: TrialProtocol, events: readonly object[], names?: ActionNames): TrialNames {
+/**
+ * The names of a trial's steps and actions. `learn` takes more of its events
+ * (in log order): a log too large to hold is learnt a batch at a time before
+ * its events are named.
+ */
+export function trialNames(
+  protocol: TrialProtocol,
+  events: readonly object[],
+  names?: ActionNames,
+): TrialNames & { learn(events: readonly object[]): void } {
   const steps = new Map(protocol.steps.map((s) => [s.id, s.name]));
   const actions = new Map(protocol.steps.flatMap((s) => s.actions.map((a) => [a.id, actionName(a, names)])));
-  for (const e of events as Array<TrialEvent & Named>)
-    if (e.type === "action.requested" && e.actionId && !actions.has(e.actionId))
-      actions.set(e.actionId, actionName({ type: e.actionType ?? "", parameters: e.parameters }, names));
+  const learn = (events: readonly object[]) => {
+    for (const e of events as Array<TrialEvent & Named>)
+      if (e.type === "action.requested" && e.actionId && !actions.has(e.actionId))
+        actions.set(e.actionId, actionName({ type: e.actionType ?? "", parameters: e.parameters }, names));
+  };
+  learn(events);
   const step = (id: string | null | undefined) => (id ? steps.get(id) : undefined);
   const action = (id: string | null | undefined) => (id ? actions.get(id) : undefined);
   return {
+    learn,
     step,
     action,
     of: (event) => {

@@ -19,7 +19,12 @@ export function csvCell(value: CsvValue): string {
   return /[",\r\n]/.test(text) ? `"${text.replaceAll('"', '""')}"` : text;
 }
 
+/** Rows as lines of a document, each ended by CRLF: a document written a batch of rows at a time. */
+export function csvLines(rows: ReadonlyArray<readonly CsvValue[]>): string {
+  return rows.map((row) => `${row.map(csvCell).join(",")}\r\n`).join("");
+}
+
 /** A whole document: the header, then one line per row, each line ended by CRLF. */
 export function csvDocument(header: readonly string[], rows: ReadonlyArray<readonly CsvValue[]>): string {
-  return [header, ...rows].map((row) => row.map(csvCell).join(",")).join("\r\n") + "\r\n";
+  return csvLines([header, ...rows]);
 }

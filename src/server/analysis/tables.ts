@@ -4,8 +4,8 @@
 import { codesTable as tableOfCodes } from "@/core/coding/export";
 import { codeRowsOf } from "../coding/rows";
 import { and, asc, eq, inArray, ne } from "drizzle-orm";
-import { ANNOTATION_COLUMNS, SAMPLE_COLUMNS, TRIAL_COLUMNS } from "@/core/analysis/api";
-import { EVENT_COLUMNS, eventRows } from "@/core/analysis/exports";
+import { ANNOTATION_COLUMNS, TRIAL_COLUMNS } from "@/core/analysis/api";
+import { EVENT_COLUMNS, eventRows, SAMPLE_COLUMNS } from "@/core/analysis/exports";
 import { trialNames } from "@/core/analysis/names";
 import { type Table, tableOf } from "@/core/analysis/table";
 import { ANSWER_COLUMNS, answerRows } from "@/core/questionnaires/export";
@@ -17,10 +17,10 @@ import {
   experiments,
   participants,
   questionnaireLinks,
-  trialSamples,
   trials,
   user,
 } from "@/store/schema";
+import { samplesOfTrials } from "@/store/samples";
 import { submitted } from "../questionnaires/responses";
 import { trialsEventsOf } from "../trials/files";
 
@@ -85,18 +85,7 @@ export const studyEventsTable = async (db: Database, studyId: string) => eventsT
 
 export async function samplesTable(db: Database, studyId: string): Promise<Table> {
   const trialIds = await ids(db, studyId);
-  const rows = trialIds.length
-    ? await db
-        .select({
-          trialId: trialSamples.trialId,
-          topic: trialSamples.topic,
-          relMs: trialSamples.relMs,
-          data: trialSamples.data,
-        })
-        .from(trialSamples)
-        .where(inArray(trialSamples.trialId, trialIds))
-        .orderBy(asc(trialSamples.trialId), asc(trialSamples.relMs), asc(trialSamples.id))
-    : [];
+  const rows = await samplesOfTrials(db, trialIds);
   return tableOf(
     SAMPLE_COLUMNS,
     rows.map((s) => ({ trial_id: s.trialId, topic: s.topic, rel_ms: s.relMs, data: JSON.stringify(s.data) })),

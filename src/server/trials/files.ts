@@ -3,30 +3,36 @@
 // recordings, robot state samples, codes), its robot state samples or its
 // codes as tidy CSV, an ELAN document for video coding (codes included), or
 // an MCAP file for robotics tools. The trial's download
-// and the study's archive both take them from here, reading the trial once.
+// and the study's archive both take them from here, reading the trial once:
+// the archive a batch of trials whole, the trial's events CSV and record a
+// page of events at a time (the same bytes), as the download is written.
 import { asc, eq, inArray } from "drizzle-orm";
 import { elanDocument } from "@/core/analysis/elan";
-import { eventsCsv, samplesCsv, trialRecordJson } from "@/core/analysis/exports";
+import {
+  EVENT_COLUMNS,
+  eventRows,
+  eventsCsv,
+  jsonArrayWriter,
+  namedEvents,
+  samplesCsv,
+  trialRecordFrame,
+  trialRecordJson,
+} from "@/core/analysis/exports";
+import { csvLines } from "@/core/csv/csv";
 import { tableCsv, tableRecords } from "@/core/analysis/table";
 import { codesTable } from "@/core/coding/export";
 import { trialNames } from "@/core/analysis/names";
 import type { TrialEvent } from "@/core/trial";
 import type { Database } from "@/store/client";
-import {
-  annotations,
-  experimentVersions,
-  mediaRecordings,
-  questionnaireLinks,
-  trialSamples,
-  trials,
-  user,
-} from "@/store/schema";
+import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/store/schema";
 import { recordingFileName } from "../media/recordings";
 import { submitted } from "../questionnaires/responses";
-import { eventsOfTrials } from "@/store/event-store";
+import { eventPages, eventsOfTrials, lastSeqOf } from "@/store/event-store";
+import { samplesOfTrials } from "@/store/samples";
 import type { ActionNames } from "@/core/designer/action-name";
 import { trialActionNames } from "./action-names";
 import { trialMcap } from "./mcap";
+import { textStream } from "./text-stream";
 import { codeRowsOf } from "../coding/rows";
 
 export type TrialFormat = "csv" | "json" | "eaf" | "samples" | "codes";
@@ -53,7 +59,7 @@ function byTrial<T extends { trialId: string | null }>(trialIds: string[], rows:
  * whole batch (not per trial), so a study of 1,000 trials costs a handful of
  * queries per batch; the action names are looked up once per version.
  */
-export async function trialsEventsOf(db: Database, trialIds: string[]) {
+async function trialsOf(db: Database, trialIds: string[]) {
   if (!trialIds.length) return [];
   const trialRows = await db.select().from(trials).where(inArray(trials.id, trialIds));
   const versionIds = [...new Set(trialRows.flatMap((t) => (t.versionId ? [t.versionId] : [])))];
@@ -64,7 +70,6 @@ export async function trialsEventsOf(db: Database, trialIds: string[]) {
     db,
     trialRows.flatMap((t) => [t.wizardId, t.createdBy]),
   );
-  const events = await eventsOfTrials(db, trialIds);
   const namesByRun = new Map<string, Promise<ActionNames>>();
   const order = new Map(trialIds.map((id, i) => [id, i]));
   return Promise.all(
@@ -87,17 +92,21 @@ export async function trialsEventsOf(db: Database, trialIds: string[]) {
           },
           version,
           protocol,
-          events: events.get(trial.id)!,
           names: await namesByRun.get(run)!,
         };
       }),
   );
 }
 
-/** Everything of these trials that their files hold, read in one query per kind of row. */
-export async function readTrials(db: Database, trialIds: string[]) {
-  const [read, marked, recordings, questionnaires, samples, codes] = await Promise.all([
-    trialsEventsOf(db, trialIds),
+/** These trials as trialsOf reads them, each with all its events. */
+export async function trialsEventsOf(db: Database, trialIds: string[]) {
+  const [read, events] = await Promise.all([trialsOf(db, trialIds), eventsOfTrials(db, trialIds)]);
+  return read.map((r) => ({ ...r, events: events.get(r.trial.id)! }));
+}
+
+/** What these trials' files hold besides their events, by trial: one query per kind of row. */
+async function besidesEvents(db: Database, trialIds: string[]) {
+  const [marked, recordings, questionnaires, samples, codes] = await Promise.all([
     trialIds.length
       ? db
           .select({
@@ -120,18 +129,7 @@ export async function readTrials(db: Database, trialIds: string[]) {
           .orderBy(asc(mediaRecordings.createdAt))
       : [],
     trialIds.length ? submitted(db, inArray(questionnaireLinks.trialId, trialIds)) : [],
-    trialIds.length
-      ? db
-          .select({
-            trialId: trialSamples.trialId,
-            topic: trialSamples.topic,
-            relMs: trialSamples.relMs,
-            data: trialSamples.data,
-          })
-          .from(trialSamples)
-          .where(inArray(trialSamples.trialId, trialIds))
-          .orderBy(asc(trialSamples.relMs), asc(trialSamples.id))
-      : [],
+    samplesOfTrials(db, trialIds),
     codeRowsOf(db, trialIds),
   ]);
   const markedBy = byTrial(trialIds, marked);
@@ -139,28 +137,39 @@ export async function readTrials(db: Database, trialIds: string[]) {
   const questionnairesBy = byTrial(trialIds, questionnaires);
   const samplesBy = byTrial(trialIds, samples);
   const codesBy = byTrial(trialIds, codes);
-  return read.map((r) => ({
-    ...r,
-    marked: markedBy.get(r.trial.id)!.map(({ trialId: _, ...a }) => a),
-    recordings: recordingsBy.get(r.trial.id)!,
-    questionnaires: questionnairesBy.get(r.trial.id)!,
-    samples: samplesBy.get(r.trial.id)!.map(({ trialId: _, ...sample }) => sample),
-    codes: codesBy.get(r.trial.id)!,
-  }));
+  return (trialId: string) => ({
+    marked: markedBy.get(trialId)!.map(({ trialId: _, ...a }) => a),
+    recordings: recordingsBy.get(trialId)!,
+    questionnaires: questionnairesBy.get(trialId)!,
+    samples: samplesBy.get(trialId)!.map(({ trialId: _, ...sample }) => sample),
+    codes: codesBy.get(trialId)!,
+  });
+}
+
+/** Everything of these trials that their files hold, read in one query per kind of row. */
+export async function readTrials(db: Database, trialIds: string[]) {
+  const [read, besides] = await Promise.all([trialsEventsOf(db, trialIds), besidesEvents(db, trialIds)]);
+  return read.map((r) => ({ ...r, ...besides(r.trial.id) }));
 }
 
 type ReadTrial = Awaited<ReturnType<typeof readTrials>>[number];
 
-function fileOf(
-  { trial, people, version, protocol, events, marked, recordings, questionnaires, names, samples, codes }: ReadTrial,
-  format: TrialFormat,
-) {
+type Besides = Omit<ReadTrial, "events">;
+
+/** The events CSV's and the record's names and types, whole (the archive's) or streamed (the trial's download). */
+const FILES = {
+  csv: { suffix: "-events.csv", contentType: "text/csv; charset=utf-8" },
+  json: { suffix: ".json", contentType: "application/json" },
+};
+
+function fileOf(read: ReadTrial, format: TrialFormat) {
+  const { trial, people, protocol, events, marked, recordings, names, samples, codes } = read;
   const name = `trial-${trial.id}`;
   const named = trialNames(protocol, events, names);
   if (format === "csv")
     return {
-      filename: `${name}-events.csv`,
-      contentType: "text/csv; charset=utf-8",
+      filename: name + FILES.csv.suffix,
+      contentType: FILES.csv.contentType,
       body: eventsCsv(trial.id, events, people, named),
     };
   if (format === "samples")
@@ -191,46 +200,87 @@ function fileOf(
     });
     return { filename: `${name}.eaf`, contentType: "application/xml; charset=utf-8", body };
   }
-  const record = trialRecordJson(
-    {
-      trial: {
-        ...trial,
-        wizardName: people.wizard,
-        createdByName: people.createdBy,
-        rehearsalSnapshot: undefined,
-        version: version
-          ? {
-              id: version.id,
-              number: version.version,
-              hash: version.hash,
-              robotId: version.robotId,
-              pluginVersion: version.pluginVersion,
-            }
-          : null,
-      },
-      protocol,
-      events,
-      annotations: marked,
-      questionnaires,
-      recordings: recordings.map((m) => ({
-        id: m.id,
-        kind: m.kind,
-        mimeType: m.mimeType,
-        status: m.status,
-        sizeBytes: m.sizeBytes,
-        offsetMs: m.offsetMs,
-        durationMs: m.durationMs,
-        url: `/api/recordings/${m.id}/media`,
-      })),
-      samples,
-      codes: tableRecords(codesTable(codes)),
+  return {
+    filename: name + FILES.json.suffix,
+    contentType: FILES.json.contentType,
+    body: trialRecordJson({ ...recordOf(read), events }, named),
+  };
+}
+
+/** The trial record (see TrialRecord) but its events: what is written around them. */
+function recordOf({ trial, people, version, protocol, marked, recordings, questionnaires, samples, codes }: Besides) {
+  return {
+    trial: {
+      ...trial,
+      wizardName: people.wizard,
+      createdByName: people.createdBy,
+      rehearsalSnapshot: undefined,
+      version: version
+        ? {
+            id: version.id,
+            number: version.version,
+            hash: version.hash,
+            robotId: version.robotId,
+            pluginVersion: version.pluginVersion,
+          }
+        : null,
     },
-    named,
-  );
-  return { filename: `${name}.json`, contentType: "application/json", body: record };
+    protocol,
+    annotations: marked,
+    questionnaires,
+    recordings: recordings.map((m) => ({
+      id: m.id,
+      kind: m.kind,
+      mimeType: m.mimeType,
+      status: m.status,
+      sizeBytes: m.sizeBytes,
+      offsetMs: m.offsetMs,
+      durationMs: m.durationMs,
+      url: `/api/recordings/${m.id}/media`,
+    })),
+    samples,
+    codes: tableRecords(codesTable(codes)),
+  };
+}
+
+/** How many events a streamed file reads at a time (and one more page ahead): its memory bound. */
+export const EVENTS_PER_READ = 5000;
+
+/**
+ * The trial's events CSV or its record as JSON, written as its events are
+ * read, a page at a time (the same bytes as the study archive's copy of them):
+ * a trial of 100k events never sits in the server's memory whole.
+ */
+async function streamedFile(db: Database, trialId: string, format: "csv" | "json") {
+  // The file holds the log as it stood when the download began: what a live trial adds later is
+  // in neither the events nor the names of the file.
+  const [upTo, [read], besides] = await Promise.all([
+    lastSeqOf(db, trialId),
+    trialsOf(db, [trialId]),
+    format === "json" ? besidesEvents(db, [trialId]) : undefined,
+  ]);
+  const { trial, people, protocol, names } = read!;
+  const page = { limit: EVENTS_PER_READ, upTo };
+  async function* pieces() {
+    const frame = besides && trialRecordFrame(recordOf({ ...read!, ...besides(trialId) }));
+    yield frame ? frame.before : csvLines([EVENT_COLUMNS]);
+    // Unscripted actions are named by their requests: all of them are learnt before any event is named.
+    const named = trialNames(protocol, [], names);
+    for await (const requests of eventPages(db, trialId, { ...page, type: "action.requested" })) named.learn(requests);
+    const array = jsonArrayWriter(1);
+    for await (const events of eventPages(db, trialId, page))
+      yield frame ? array.items(namedEvents(events, named)) : csvLines(eventRows(trial.id, events, people, named));
+    if (frame) yield array.end() + frame.after;
+  }
+  return {
+    filename: `trial-${trial.id}${FILES[format].suffix}`,
+    contentType: FILES[format].contentType,
+    body: textStream(pieces(), `The ${format === "csv" ? "events CSV" : "record"} of trial ${trial.id}`),
+  };
 }
 
 export async function trialFile(db: Database, trialId: string, format: TrialFormat | "mcap") {
+  if (format === "csv" || format === "json") return streamedFile(db, trialId, format);
   const [read] = await readTrials(db, [trialId]);
   if (format !== "mcap") return fileOf(read!, format);
   const { trial, events, samples } = read!;
