@@ -36,8 +36,10 @@ type File = {
 };
 
 export function download(req: Request, file: (api: Caller) => Promise<File>): Promise<Response> {
-  return apiRoute(req, async (api) => {
-    const { body, contentType, filename, trials } = await file(api);
+  return apiRoute(req, async (_, context) => {
+    const { body, contentType, filename, trials } = await file(
+      appRouter.createCaller({ ...context, streamsFiles: true }),
+    );
     const headers: Record<string, string> = {
       "content-type": contentType,
       "content-disposition": `attachment; filename="${filename}"`,

@@ -38,6 +38,8 @@ export interface Context {
   media: { storage: MediaStorage; maxBytes: number };
   /** The ways to the robot this server's settings open: what the designer may call runnable. */
   robotChannels: Channels;
+  /** Set by the download routes, which send a file as it is made: only they are given a streamed body. */
+  streamsFiles?: boolean;
   /**
    * Set when the caller came with a personal access token (the analysis API)
    * rather than a signed-in page: `user` is the token's owner as the account

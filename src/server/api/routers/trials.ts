@@ -194,7 +194,11 @@ export const trialsRouter = router({
     }),
   ).query(async ({ ctx, input }) => {
     await assertNotWithdrawn(ctx.db, ctx.row.id);
-    return trialFile(ctx.db, ctx.row.id, input.format);
+    const file = await trialFile(ctx.db, ctx.row.id, input.format);
+    // A tRPC answer over HTTP is one JSON document: a streamed body is read whole, except for the download route.
+    return file.body instanceof ReadableStream && !ctx.streamsFiles
+      ? { ...file, body: await new Response(file.body).text() }
+      : file;
   }),
 
   /** Robot state logged during the trial, in time order. */
