@@ -31,6 +31,11 @@ export function checkPagesOnClose(context: BrowserContext) {
 }
 
 async function axeViolations(page: Page): Promise<Violations> {
+  // Judged once the page has loaded and named itself: Next.js streams a page's title after its first
+  // paint, and a page caught before that is not yet the page a person reads. A title that never comes
+  // is still reported, by axe, below.
+  await page.waitForLoadState("load").catch(() => {});
+  await page.waitForFunction(() => document.title !== "", undefined, { timeout: 5000 }).catch(() => {});
   // Evaluated through the DevTools protocol, not a <script>: the page's Content-Security-Policy stays as served.
   if (!(await page.evaluate(() => "axe" in window))) await page.evaluate(AXE_SOURCE);
   return page.evaluate(async (tags) => {
