@@ -123,6 +123,8 @@ function print(
 try {
   const f = await buildFixture(db);
   const owner = f.api("owner");
+  /** As the download routes call: the files come as streams. */
+  const downloads = f.routeApi("owner");
   console.log(
     `Machine load (1, 5, 15 min): ${(await Bun.file("/proc/loadavg").text()).split(" ").slice(0, 3).join(" ")}`,
   );
@@ -182,7 +184,7 @@ try {
       STUDY_SIZES,
       "trials",
       await byStudy(async (studyId) => {
-        const { body } = await owner.studies.exportArchive({ studyId });
+        const { body } = await downloads.studies.exportArchive({ studyId });
         const reader = body.getReader();
         await reader.read();
         await reader.cancel();
@@ -195,7 +197,7 @@ try {
       STUDY_SIZES,
       "trials",
       await byStudy(async (studyId) => {
-        zipBytes.push(await drain((await owner.studies.exportArchive({ studyId })).body));
+        zipBytes.push(await drain((await downloads.studies.exportArchive({ studyId })).body));
       }),
     );
     console.log(`  (zip sizes: ${[0, 1, 2].map((i) => `${(zipBytes[i * RUNS]! / 1e6).toFixed(1)} MB`).join(", ")})`);
@@ -235,7 +237,7 @@ try {
       TRIAL_SIZES,
       "events",
       await byTrial(async (trialId) => {
-        const reader = streamed((await owner.trials.export({ trialId, format })).body).getReader();
+        const reader = streamed((await downloads.trials.export({ trialId, format })).body).getReader();
         await reader.read();
         await reader.cancel();
       }),
@@ -247,7 +249,7 @@ try {
       TRIAL_SIZES,
       "events",
       await byTrial(async (trialId) => {
-        bytes.push(await drain(streamed((await owner.trials.export({ trialId, format })).body)));
+        bytes.push(await drain(streamed((await downloads.trials.export({ trialId, format })).body)));
       }),
       2000,
     );
@@ -259,7 +261,7 @@ try {
       TRIAL_SIZES,
       "events",
       await byTrial(async (trialId) => {
-        const reader = streamed((await owner.trials.export({ trialId, format })).body).getReader();
+        const reader = streamed((await downloads.trials.export({ trialId, format })).body).getReader();
         for (let read = await reader.read(); !read.done; read = await reader.read()) Bun.gc(true);
       }),
     );

@@ -191,7 +191,7 @@ describe("coding schemes", () => {
       expect.objectContaining({ observer: "researcher", set: "Gaze", code: "Away", start_ms: 0, end_ms: 900 }),
       expect.objectContaining({ observer: "observer", code: "Hesitation", end_ms: null, modifiers: "verbal; gesture" }),
     ]);
-    const archive = await unzipArchive(await owner.studies.exportArchive({ studyId: study.id }));
+    const archive = await unzipArchive(await f.routeApi("owner").studies.exportArchive({ studyId: study.id }));
     expect(parseCsv(strFromU8(archive["codes.csv"]!))).toEqual([[...CODE_COLUMNS], ...rows]);
   });
 

@@ -105,7 +105,7 @@ describe("the trial events CSV", () => {
     // Speech text, notes and names sit inside the payload's JSON, a cell that starts with "{".
     expect(cell("note.added", "payload")).toMatch(/^\{.*HYPERLINK/);
 
-    const archive = await unzipArchive(await owner.studies.exportArchive({ studyId: study.id }));
+    const archive = await unzipArchive(await f.routeApi("owner").studies.exportArchive({ studyId: study.id }));
     const files = Object.entries(archive).filter(([name]) => name.endsWith(".csv"));
     expect(files.map(([name]) => name).sort()).toEqual([
       "codes.csv",

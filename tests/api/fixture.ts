@@ -57,6 +57,8 @@ export async function buildFixture(db: Database) {
   });
   const context = (caller: Caller) => contextOf(caller === "anonymous" ? null : people[caller]);
   const api = (caller: Caller) => callerFactory(context(caller));
+  /** The API as the routes outside tRPC call it (downloads): a file may come as a stream. */
+  const routeApi = (caller: Caller) => callerFactory({ ...context(caller), streamsFiles: true });
   /** The API as anyone else, e.g. the owner of a second study. */
   const apiAs = (user: SignedInUser) => callerFactory(contextOf(user));
   /** An active study (it runs trials) whose members are the four study-role callers. */
@@ -89,7 +91,7 @@ export async function buildFixture(db: Database) {
     };
     return body.error ?? null;
   }
-  return { db, people, api, apiAs, newStudy, httpError, media };
+  return { db, people, api, routeApi, apiAs, newStudy, httpError, media };
 }
 
 export type Fixture = Awaited<ReturnType<typeof buildFixture>>;

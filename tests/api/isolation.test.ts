@@ -196,7 +196,8 @@ function variants(input: unknown): Array<[string, unknown]> {
 }
 
 async function call(caller: Caller, path: string, input: unknown) {
-  let target: unknown = f.api(caller);
+  // As the download routes call: a file procedure answers as it would be downloaded.
+  let target: unknown = f.routeApi(caller);
   for (const part of path.split(".")) target = (target as Record<string, unknown>)[part];
   return (target as (i: unknown) => Promise<unknown>)(input).then(
     (result) => ({ ok: true as const, result }),

@@ -183,7 +183,7 @@ describe("the study archive", () => {
       steps: [{ name: "Hi", actions: [{ type: "nod" }] }],
     });
     const twinVersion = await owner.versions.publish({ experimentId: twin.id });
-    const archive = await owner.studies.exportArchive({ studyId: study.id });
+    const archive = await f.routeApi("owner").studies.exportArchive({ studyId: study.id });
     expect(archive).toMatchObject({ filename: "fixture-study.zip", contentType: "application/zip" });
     const files = await unzipArchive(archive);
     expect(Object.keys(files).sort()).toEqual([
@@ -229,7 +229,7 @@ describe("the study archive", () => {
       studyId: study.id,
       settings: { blinding: { conditionsFromWizards: false, resultsUntilComplete: true } },
     });
-    await expect(f.api("researcher").studies.exportArchive({ studyId: study.id })).rejects.toMatchObject({
+    await expect(f.routeApi("researcher").studies.exportArchive({ studyId: study.id })).rejects.toMatchObject({
       code: "FORBIDDEN",
     });
   });

@@ -83,7 +83,7 @@ it("a study's zip, streamed in batches, reads back whole with every trial's file
     })),
   );
 
-  const archive = await owner.studies.exportArchive({ studyId: study.id });
+  const archive = await f.routeApi("owner").studies.exportArchive({ studyId: study.id });
   expect(archive.trials).toBe(3);
   const files = await unzipArchive(archive);
   for (const [i, trial] of trials.entries()) {
@@ -112,4 +112,12 @@ it("a study's zip, streamed in batches, reads back whole with every trial's file
     1,
   );
   expect(Object.keys(files)).toEqual(expect.arrayContaining(["README.txt", "study.json", "questionnaire-answers.csv"]));
+});
+
+it("over tRPC's own link, where an answer is one JSON document, the zip is refused plainly: it is a download", async () => {
+  const study = await f.newStudy("Zip over the link");
+  await expect(f.api("owner").studies.exportArchive({ studyId: study.id })).rejects.toMatchObject({
+    code: "BAD_REQUEST",
+    message: "This file is a download: fetch it from its download link",
+  });
 });

@@ -66,7 +66,7 @@ describe("the wizard and the creator, two named fields wherever the trial is sho
     );
     expect(record.trial).toMatchObject({ wizardId: f.people.wizard.id, createdBy: f.people.owner.id, ...names });
 
-    const archive = await unzipArchive(await owner.studies.exportArchive({ studyId: study.id }));
+    const archive = await unzipArchive(await f.routeApi("owner").studies.exportArchive({ studyId: study.id }));
     expect(JSON.parse(strFromU8(archive[`trials/${trial.id}.json`]!)).trial).toMatchObject(names);
     expect(csvRows(strFromU8(archive[`trials/${trial.id}-events.csv`]!))[0]!.slice(1, 3)).toEqual([
       f.people.wizard.name,

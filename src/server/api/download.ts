@@ -17,7 +17,8 @@ export async function apiRoute(
   handle: (api: Caller, context: Context) => Promise<Response>,
 ): Promise<Response> {
   try {
-    const context = await contextFromHeaders(req.headers);
+    // A route answers with a Response of its own, which can carry a file as it is made.
+    const context: Context = { ...(await contextFromHeaders(req.headers)), streamsFiles: true };
     return await handle(appRouter.createCaller(context), context);
   } catch (error) {
     // A procedure's unexpected failure arrives wrapped as INTERNAL_SERVER_ERROR with the original message.
@@ -36,10 +37,8 @@ type File = {
 };
 
 export function download(req: Request, file: (api: Caller) => Promise<File>): Promise<Response> {
-  return apiRoute(req, async (_, context) => {
-    const { body, contentType, filename, trials } = await file(
-      appRouter.createCaller({ ...context, streamsFiles: true }),
-    );
+  return apiRoute(req, async (api) => {
+    const { body, contentType, filename, trials } = await file(api);
     const headers: Record<string, string> = {
       "content-type": contentType,
       "content-disposition": `attachment; filename="${filename}"`,

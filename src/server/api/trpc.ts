@@ -38,7 +38,7 @@ export interface Context {
   media: { storage: MediaStorage; maxBytes: number };
   /** The ways to the robot this server's settings open: what the designer may call runnable. */
   robotChannels: Channels;
-  /** Set by the download routes, which send a file as it is made: only they are given a streamed body. */
+  /** Set for the routes outside tRPC, which answer with their own Response: only they are given a streamed body. */
   streamsFiles?: boolean;
   /**
    * Set when the caller came with a personal access token (the analysis API)

@@ -19,6 +19,7 @@ import { studyFromTemplate } from "../../studies/template";
 import { studyFigures, studyResultsByCondition } from "../../studies/summary";
 import { experiments, participants, studies, studyMembers, trials } from "@/store/schema";
 import { qualified } from "@/store/qualified";
+import { fileAnswer } from "../file-answer";
 import { guarded, router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 
@@ -140,8 +141,8 @@ export const studiesRouter = router({
   })),
 
   /** Everything of the study as one zip, for the lab's archive or a paper's data. */
-  exportArchive: studyProcedure("data.read", "study", z.object({ studyId: id })).query(({ ctx }) =>
-    studyArchive(ctx.db, ctx.studyId),
+  exportArchive: studyProcedure("data.read", "study", z.object({ studyId: id })).query(async ({ ctx }) =>
+    fileAnswer(ctx, await studyArchive(ctx.db, ctx.studyId)),
   ),
 
   delete: studyProcedure(

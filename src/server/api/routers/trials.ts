@@ -16,6 +16,7 @@ import { assertNotWithdrawn } from "../../trials/withdrawn";
 import { assertRunsTrials } from "../../studies/status-gate";
 import { signSocketToken } from "@/store/socket-token";
 import { qualified } from "@/store/qualified";
+import { fileAnswer } from "../file-answer";
 import { router, studyProcedure } from "../trpc";
 import { liveNow } from "./live-now";
 import { id, text } from "../validation";
@@ -194,11 +195,7 @@ export const trialsRouter = router({
     }),
   ).query(async ({ ctx, input }) => {
     await assertNotWithdrawn(ctx.db, ctx.row.id);
-    const file = await trialFile(ctx.db, ctx.row.id, input.format);
-    // A tRPC answer over HTTP is one JSON document: a streamed body is read whole, except for the download route.
-    return file.body instanceof ReadableStream && !ctx.streamsFiles
-      ? { ...file, body: await new Response(file.body).text() }
-      : file;
+    return fileAnswer(ctx, await trialFile(ctx.db, ctx.row.id, input.format));
   }),
 
   /** Robot state logged during the trial, in time order. */
