@@ -10,14 +10,17 @@ import { SOCKET_MESSAGES_VERSION } from "../src/core/socket/messages";
 import { freePort } from "../src/store/embedded";
 import { createAccount } from "../src/server/auth/accounts";
 import { createDatabase } from "../src/store/client";
-import { experimentVersions, experiments, studies, studyMembers, trials } from "../src/store/schema";
+import { experimentVersions, experiments, robots, studies, studyMembers, trials } from "../src/store/schema";
 import { signSocketToken } from "../src/store/socket-token";
 import { scratchDatabase } from "./support";
 
 export async function startLiveBench() {
   const SECRET = "bench-secret".padEnd(40, "x");
   let refused = 0;
+  const reasons = new Set<string>();
   const OBSERVERS = 10;
+  /** The most trials a bench runs at once (50), and the warm-up's. */
+  const ROBOTS = 51;
 
   const database = await scratchDatabase();
   const { db, close } = createDatabase(database.url, { max: 4 });
@@ -61,6 +64,15 @@ export async function startLiveBench() {
     password: "bench-password",
     role: "observer",
   });
+  // A robot drives one live trial at a time: as many robots as trials run at once, all the one simulator.
+  await db.insert(robots).values(
+    Array.from({ length: ROBOTS }, (_, i) => ({
+      name: `Bench robot ${i + 1}`,
+      simulated: true,
+      rosbridgeUrl: sim.url,
+      allStudies: true,
+    })),
+  );
   const [study] = await db.insert(studies).values({ title: "Bench", status: "active" }).returning();
   // The runtime looks each caller's role up in the study at hello.
   await db.insert(studyMembers).values([
@@ -94,7 +106,12 @@ export async function startLiveBench() {
         const message = JSON.parse(String(m.data));
         if (message.type === "welcome") ok();
         if (message.type === "events") onEvents(message.events);
-        if (message.type === "rejected") refused++;
+        if (message.type === "rejected") {
+          refused++;
+          // Each reason once: a bench that is refused should say why.
+          if (!reasons.has(message.reason)) console.error(`refused: ${message.reason}`);
+          reasons.add(message.reason);
+        }
         if (message.type === "ack" || message.type === "rejected") pending.get(message.requestId)?.();
       };
     });
@@ -159,6 +176,8 @@ export async function startLiveBench() {
       const rest = paceMs - (performance.now() - sent);
       if (rest > 0) await new Promise((r) => setTimeout(r, rest));
     }
+    // Ended, so that its robot is free for the next trial.
+    await wizard.command({ kind: "complete" });
     [wizard, ...observers].forEach((s) => s.close());
   }
 

@@ -89,6 +89,22 @@ export function trialHosts(
     }
   }
 
+  /**
+   * A robot another trial open here drives is not chosen for a new one, started or not. One choice at a
+   * time, held from the moment it is made: trials opened together would otherwise all take the same robot.
+   */
+  let choosing: Promise<unknown> = Promise.resolve();
+  function chooseRobot(trialId: string, robotId: string) {
+    const choice = choosing.then(async () => {
+      const heldHere = new Set([...robotOf].filter(([t]) => t !== trialId).map(([, r]) => r.id));
+      const made = await robotOfTrial(db, trialId, robotId, heldHere);
+      if (made.ok) robotOf.set(trialId, made.robot);
+      return made;
+    });
+    choosing = choice.catch(() => {});
+    return choice;
+  }
+
   async function hostFor(trialId: string) {
     const [row] = await db
       .select({ snapshot: experimentVersions.snapshot, rehearsal: trials.rehearsalSnapshot, status: trials.status })
@@ -109,16 +125,24 @@ export function trialHosts(
     let registered: RobotRecord | null = null;
     if (ended) robot = unavailableRobot("the trial has ended");
     else {
-      // A robot another trial open here drives is not chosen for a new one, started or not.
-      const heldHere = new Set([...robotOf].filter(([t]) => t !== trialId).map(([, r]) => r.id));
-      const choice = await robotOfTrial(db, trialId, chosen.robotId, heldHere);
+      const choice = await chooseRobot(trialId, chosen.robotId);
       registered = choice.ok ? choice.robot : null;
-      robot = await robotFor(chosen.plugin, chosen.robotId, choice);
+      try {
+        robot = await robotFor(chosen.plugin, chosen.robotId, choice);
+      } catch (error) {
+        robotOf.delete(trialId);
+        throw error;
+      }
     }
-    const host = await TrialHost.open(db, trialId, protocol, robot, log);
+    let host: TrialHost;
+    try {
+      host = await TrialHost.open(db, trialId, protocol, robot, log);
+    } catch (error) {
+      robotOf.delete(trialId);
+      throw error;
+    }
     if (registered) {
       const own = registered;
-      robotOf.set(trialId, own);
       host.robotName = own.name;
       host.guardStart((start) => startOn(own, trialId, start));
     }

@@ -307,6 +307,68 @@ describe.sequential("a live trial in two browsers", () => {
     await page.context().close();
   });
 
+  it("asks again, after a dropped connection, what became of a command: carried out once, and the page hears so", async () => {
+    const [version] = await researcherApi.versions.list.query({
+      experimentId: (
+        await researcherApi.experiments.list.query({
+          studyId: (await researcherApi.studies.mine.query())[0]!.id,
+        })
+      )[0]!.id,
+    });
+    const trial = await wizardApi.trials.create.mutate({ versionId: version!.id });
+    const wizard = await (await newContext(browser, app.url)).newPage();
+    // Between the page and the runtime: the answer to one command is lost with its connection, as a
+    // network drop would lose it after the runtime had carried the command out.
+    const sent: Array<{ requestId?: string; retry?: boolean; type: string }> = [];
+    const answers: Array<{ type: string; requestId?: string }> = [];
+    let loseNextAck = false;
+    await wizard.routeWebSocket(/.*/, (page) => {
+      const runtime = page.connectToServer();
+      page.onMessage((m) => {
+        sent.push(JSON.parse(String(m)));
+        runtime.send(m);
+      });
+      runtime.onMessage((m) => {
+        const message = JSON.parse(String(m));
+        if (loseNextAck && message.type === "ack") {
+          loseNextAck = false;
+          page.close();
+          runtime.close();
+          return;
+        }
+        answers.push(message);
+        page.send(m);
+      });
+    });
+    await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
+    await wizard.goto(`/trials/${trial.id}`);
+    await wizard.getByText("robot connected").waitFor();
+    await wizard.keyboard.press("n");
+    await expect.poll(() => currentStep(wizard)).toBe("Introduction");
+
+    await wizard.getByText("Unscripted robot action").click();
+    await wizard.getByLabel("Action").selectOption({ label: "Say Text" });
+    await wizard.getByLabel("Text").fill("Said once");
+    loseNextAck = true;
+    await wizard.getByRole("button", { name: /Send “Say Text”/ }).click();
+    await wizard.getByText("reconnecting", { exact: true }).waitFor();
+    await wizard.getByText("live", { exact: true }).waitFor({ timeout: 20_000 });
+
+    // The page asked again by the same request id, and heard that it was done: the form is cleared for the next line.
+    const command = sent.find((m) => m.type === "command" && !m.retry && JSON.stringify(m).includes("Said once"));
+    await expect.poll(() => sent.filter((m) => m.retry && m.requestId === command?.requestId).length).toBe(1);
+    await expect.poll(() => answers.some((m) => m.type === "ack" && m.requestId === command?.requestId)).toBe(true);
+    await expect.poll(() => wizard.getByLabel("Text").inputValue()).toBe("");
+    expect(await wizard.getByText("The connection dropped before the server confirmed this.").count()).toBe(0);
+    // Carried out once: one request in the log, one line to the robot.
+    const events = await researcherApi.trials.events.query({ trialId: trial.id });
+    const said = events.filter(
+      (e) => e.type === "action.requested" && JSON.stringify(e.parameters).includes("Said once"),
+    );
+    expect(said).toHaveLength(1);
+    await wizard.context().close();
+  });
+
   it("tells the wizard at once when the robot bridge drops, and when it is back", async () => {
     const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
     const [study] = await researcher.studies.mine.query();

@@ -117,13 +117,13 @@ describe("robots as records, in the runtime", () => {
   let two: TrialSocket;
   let first: string;
 
-  it("gives two trials two robots, each named to its wizard before starting, and drives both at once", {
+  it("gives two trials opened at once two robots, each named to its wizard before starting, and drives both at once", {
     timeout: 60_000,
   }, async () => {
     first = await newTrial("Hello from trial one", "P1");
     const second = await newTrial("Hello from trial two", "P2");
-    one = await open(first);
-    two = await open(second);
+    // Opened at the same moment: each must still take a robot the other has not.
+    [one, two] = await Promise.all([open(first), open(second)]);
     const named = async (s: TrialSocket) => (await s.next((m) => m.type === "robot" && "name" in m)).name;
     const names = [await named(one), await named(two)];
     expect(names.sort()).toEqual(["Sim A", "Sim B"]);

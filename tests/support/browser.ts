@@ -12,7 +12,7 @@ const root = resolve(import.meta.dirname, "..", "..");
 
 /**
  * Debian's Chromium, headless. `lowPriority` runs it, and every process it starts, at the lowest CPU
- * priority (nice 19): a bench's stand-in for browsers on other computers, so that what it measures is
+ * priority (nice 19, for its session too): a bench's stand-in for browsers on other computers, so that what it measures is
  * the server's own cost, not many browsers and the server sharing two cores.
  */
 export async function launchBrowser({ lowPriority = false } = {}): Promise<Browser> {
@@ -21,7 +21,13 @@ export async function launchBrowser({ lowPriority = false } = {}): Promise<Brows
   let executablePath = found;
   if (lowPriority) {
     executablePath = join(mkdtempSync(join(tmpdir(), "hri-chromium-")), "chromium");
-    writeFileSync(executablePath, `#!/bin/sh\nexec nice -n 19 ${JSON.stringify(found)} "$@"\n`, { mode: 0o755 });
+    // Playwright starts the browser in a session of its own, and the kernel's autogroup scheduling shares
+    // the CPU between sessions before it looks at nice: the session's own weight must be lowered too.
+    writeFileSync(
+      executablePath,
+      `#!/bin/sh\necho 19 > /proc/self/autogroup 2>/dev/null\nexec nice -n 19 ${JSON.stringify(found)} "$@"\n`,
+      { mode: 0o755 },
+    );
   }
   return chromium.launch({ executablePath, args: CHROMIUM_ARGS, headless: true });
 }
