@@ -117,7 +117,7 @@ it("streams a trial without events as the whole files are", async () => {
   expect(await (await download(trial.id, "json")).text()).toBe(whole!.files[1]!.body);
 });
 
-it("holds the log as it stood when the download began, while a live trial goes on", async () => {
+it("holds the log and the samples as they stood when the download began, while a live trial goes on", async () => {
   const trial = await seededTrial(EVENTS);
   const sql = db.$client;
   for (const [i, format] of (["csv", "json"] as const).entries()) {
@@ -129,6 +129,8 @@ it("holds the log as it stood when the download began, while a live trial goes o
     const seq = EVENTS + 1 + i;
     const payload = { type: "action.requested", actionId: `late${i}`, actionType: "say", parameters: { text: "Late" } };
     await sql`insert into trial_events (trial_id, seq, type, server_time, payload) values (${trial.id}, ${seq}, 'action.requested', now(), ${JSON.stringify(payload)}::jsonb)`;
+    // And the robot's state meanwhile, at the start of the trial's time (where a page of samples could take it in).
+    await db.insert(trialSamples).values({ trialId: trial.id, topic: "/joint_states", relMs: 0, data: { late: i } });
     const chunks = [first.value!];
     for (let read = await reader.read(); !read.done; read = await reader.read()) chunks.push(read.value);
     expect(Buffer.concat(chunks).toString("utf8")).toBe(whole!.files[0]!.body);
