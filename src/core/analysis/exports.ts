@@ -140,7 +140,7 @@ const isBatches = (value: unknown): value is Batches<unknown> =>
  * A JSON object written a piece at a time, byte for byte as
  * JSON.stringify(object, null, 2) writes it whole: a value given as Batches is
  * written as an array a batch at a time (the rest whole, indented as a key of
- * the top object). Each piece ends with a batch: memory holds one batch.
+ * the top object). Memory holds one batch and what lies between two lists.
  */
 export async function* jsonPieces(object: Record<string, unknown>): AsyncGenerator<string> {
   let text = "";
@@ -154,6 +154,9 @@ export async function* jsonPieces(object: Record<string, unknown>): AsyncGenerat
       text += whole!.replaceAll("\n", "\n  ");
       continue;
     }
+    // What comes before the list goes out before its first batch is read: the first byte waits for no read.
+    yield text;
+    text = "";
     const array = jsonArrayWriter(1);
     for await (const batch of value) {
       text += array.items(batch);
