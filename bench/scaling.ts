@@ -8,12 +8,14 @@
 // Results tab and first byte of the zip under 1 s; at 100k events opening the
 // trial under 1 s and the exports under 2 s, their first byte under 1 s. The
 // analysis page in Chromium is bench/analysis (it needs the built app).
-// `bun bench/scaling.ts trials` measures the trials of 1k to 100k events only.
+// `bun bench/scaling.ts trials` measures the trials of 1k to 100k events and the
+// trials of 1.8k to 180k robot state samples only; `… samples` the latter only.
 import { eventsSince } from "../src/store/event-store";
 import { createDatabase } from "../src/store/client";
 import { fold } from "../src/core/trial/fold";
 import type { TrialEvent, TrialProtocol } from "../src/core/trial";
 import { trialsFiles } from "../src/server/trials/files";
+import { trialSamples } from "../src/store/schema";
 import { buildFixture, publishedVersion } from "../tests/api/fixture";
 import { percentile, scratchDatabase, unscriptedLog } from "./support";
 
@@ -21,7 +23,10 @@ const RUNS = 3;
 const STUDY_SIZES = [10, 100, 1000];
 const EVENTS_PER_TRIAL = 200;
 const TRIAL_SIZES = [1000, 10_000, 100_000];
-const TRIALS_ONLY = process.argv[2] === "trials";
+/** Robot state samples of a trial (1k events each): a 30-minute trial at 100 Hz logs 180,000. */
+const SAMPLE_SIZES = [1800, 18_000, 180_000];
+const TRIALS_ONLY = process.argv[2] === "trials" || process.argv[2] === "samples";
+const SAMPLES_ONLY = process.argv[2] === "samples";
 
 const database = await scratchDatabase();
 const { db, close } = createDatabase(database.url, { max: 4 });
@@ -70,6 +75,23 @@ async function seedStudy(f: Awaited<ReturnType<typeof buildFixture>>, count: num
   }
   for (const id of trialIds) await insertEvents(eventRows(id, events, t0));
   return { study, version, trialIds };
+}
+
+/** `count` joint-state samples of the trial, one every 10 ms, as a robot's state subscription logs them. */
+async function insertSamples(trialId: string, count: number) {
+  const joints = ["HeadYaw", "HeadPitch", "LShoulderPitch", "LShoulderRoll", "RShoulderPitch", "RShoulderRoll"];
+  for (let start = 0; start < count; start += 5000) {
+    const rows = Array.from({ length: Math.min(5000, count - start) }, (_, k) => {
+      const i = start + k;
+      return {
+        trialId,
+        topic: "/joint_states",
+        relMs: i * 10,
+        data: { name: joints, position: joints.map((_, j) => Math.sin(i / 100 + j)), effort: [] },
+      };
+    });
+    await db.insert(trialSamples).values(rows);
+  }
 }
 
 /** Runs `path` RUNS times: the median time and the largest peak of memory above where it started. */
@@ -132,7 +154,13 @@ try {
   const studiesBySize: Awaited<ReturnType<typeof seedStudy>>[] = [];
   if (!TRIALS_ONLY) for (const size of STUDY_SIZES) studiesBySize.push(await seedStudy(f, size, EVENTS_PER_TRIAL));
   const trialsBySize: Awaited<ReturnType<typeof seedStudy>>[] = [];
-  for (const size of TRIAL_SIZES) trialsBySize.push(await seedStudy(f, 1, size));
+  if (!SAMPLES_ONLY) for (const size of TRIAL_SIZES) trialsBySize.push(await seedStudy(f, 1, size));
+  const sampledBySize: Awaited<ReturnType<typeof seedStudy>>[] = [];
+  for (const size of SAMPLE_SIZES) {
+    const seeded = await seedStudy(f, 1, 1000);
+    await insertSamples(seeded.trialIds[0]!, size);
+    sampledBySize.push(seeded);
+  }
   await sql`analyze`;
 
   const byStudy = async (path: (studyId: string) => Promise<unknown>) => {
@@ -140,9 +168,12 @@ try {
     for (const { study } of studiesBySize) results.push(await measure(() => path(study.id)));
     return results;
   };
-  const byTrial = async (path: (trialId: string, protocol: TrialProtocol) => Promise<unknown>) => {
+  const byTrial = async (
+    path: (trialId: string, protocol: TrialProtocol) => Promise<unknown>,
+    trials: typeof trialsBySize = trialsBySize,
+  ) => {
     const results = [];
-    for (const { trialIds, version } of trialsBySize)
+    for (const { trialIds, version } of trials)
       results.push(await measure(() => path(trialIds[0]!, version.snapshot as TrialProtocol)));
     return results;
   };
@@ -212,67 +243,109 @@ try {
     );
   }
 
-  console.log(`\nTrials of ${TRIAL_SIZES.join(", ")} events (unscripted lines):`);
-  print(
-    "Opening the trial (its events read and folded)",
-    TRIAL_SIZES,
-    "events",
-    await byTrial(async (trialId, protocol) =>
-      fold(protocol, (await eventsSince(db, trialId)) as unknown as TrialEvent[]),
-    ),
-    1000,
-  );
-  print(
-    "Analysis page's data (trials.get and trials.events)",
-    TRIAL_SIZES,
-    "events",
-    await byTrial((trialId) => Promise.all([owner.trials.get({ trialId }), owner.trials.events({ trialId })])),
-  );
-  for (const [format, name] of [
-    ["csv", "Events export (CSV)"],
-    ["json", "Trial record export (JSON)"],
-  ] as const) {
+  if (!SAMPLES_ONLY) await trials();
+  await sampled();
+
+  /** The trial-sized paths: opening the trial, the analysis page's data, the events CSV and the record. */
+  async function trials() {
+    console.log(`\nTrials of ${TRIAL_SIZES.join(", ")} events (unscripted lines):`);
     print(
-      `${name}: first byte`,
+      "Opening the trial (its events read and folded)",
       TRIAL_SIZES,
       "events",
-      await byTrial(async (trialId) => {
-        const reader = streamed((await downloads.trials.export({ trialId, format })).body).getReader();
-        await reader.read();
-        await reader.cancel();
-      }),
+      await byTrial(async (trialId, protocol) =>
+        fold(protocol, (await eventsSince(db, trialId)) as unknown as TrialEvent[]),
+      ),
       1000,
     );
-    const bytes: number[] = [];
     print(
-      `${name}: whole, streamed`,
+      "Analysis page's data (trials.get and trials.events)",
       TRIAL_SIZES,
       "events",
+      await byTrial((trialId) => Promise.all([owner.trials.get({ trialId }), owner.trials.events({ trialId })])),
+    );
+    for (const [format, name] of [
+      ["csv", "Events export (CSV)"],
+      ["json", "Trial record export (JSON)"],
+    ] as const) {
+      print(
+        `${name}: first byte`,
+        TRIAL_SIZES,
+        "events",
+        await byTrial(async (trialId) => {
+          const reader = streamed((await downloads.trials.export({ trialId, format })).body).getReader();
+          await reader.read();
+          await reader.cancel();
+        }),
+        1000,
+      );
+      const bytes: number[] = [];
+      print(
+        `${name}: whole, streamed`,
+        TRIAL_SIZES,
+        "events",
+        await byTrial(async (trialId) => {
+          bytes.push(await drain(streamed((await downloads.trials.export({ trialId, format })).body)));
+        }),
+        2000,
+      );
+      console.log(`  (sizes: ${[0, 1, 2].map((i) => `${(bytes[i * RUNS]! / 1e6).toFixed(1)} MB`).join(", ")})`);
+      // The peak above counts garbage the collector has not yet reclaimed; with a full collection after
+      // each piece it is what the download holds (its time is then the collector's, not the download's).
+      print(
+        `${name}: whole, streamed, collected after each piece (memory held)`,
+        TRIAL_SIZES,
+        "events",
+        await byTrial(async (trialId) => {
+          const reader = streamed((await downloads.trials.export({ trialId, format })).body).getReader();
+          for (let read = await reader.read(); !read.done; read = await reader.read()) Bun.gc(true);
+        }),
+      );
+      // The same bytes built whole in memory, as the study's zip takes a batch of trials: what the download did before.
+      print(
+        `${name}: built whole in memory (the zip's batch path)`,
+        TRIAL_SIZES,
+        "events",
+        await byTrial((trialId) => trialsFiles(db, [trialId], [format])),
+      );
+    }
+  }
+
+  /** The record of a trial whose robot state samples outnumber its events: they are streamed as its events are. */
+  async function sampled() {
+    console.log(`\nTrials of 1,000 events and ${SAMPLE_SIZES.join(", ")} robot state samples:`);
+    const bytes: number[] = [];
+    const print3 = (name: string, results: { ms: number; peakMb: number }[], targetMs?: number) =>
+      print(`Trial record export (JSON): ${name}`, SAMPLE_SIZES, "samples", results, targetMs);
+    print3(
+      "first byte",
       await byTrial(async (trialId) => {
-        bytes.push(await drain(streamed((await downloads.trials.export({ trialId, format })).body)));
-      }),
-      2000,
+        const reader = streamed((await downloads.trials.export({ trialId, format: "json" })).body).getReader();
+        await reader.read();
+        await reader.cancel();
+      }, sampledBySize),
+      1000,
+    );
+    print3(
+      "whole, streamed",
+      await byTrial(async (trialId) => {
+        bytes.push(await drain(streamed((await downloads.trials.export({ trialId, format: "json" })).body)));
+      }, sampledBySize),
     );
     console.log(`  (sizes: ${[0, 1, 2].map((i) => `${(bytes[i * RUNS]! / 1e6).toFixed(1)} MB`).join(", ")})`);
-    // The peak above counts garbage the collector has not yet reclaimed; with a full collection after
-    // each piece it is what the download holds (its time is then the collector's, not the download's).
-    print(
-      `${name}: whole, streamed, collected after each piece (memory held)`,
-      TRIAL_SIZES,
-      "events",
+    print3(
+      "whole, streamed, collected after each piece (memory held)",
       await byTrial(async (trialId) => {
-        const reader = streamed((await downloads.trials.export({ trialId, format })).body).getReader();
+        const reader = streamed((await downloads.trials.export({ trialId, format: "json" })).body).getReader();
         for (let read = await reader.read(); !read.done; read = await reader.read()) Bun.gc(true);
-      }),
+      }, sampledBySize),
     );
-    // The same bytes built whole in memory, as the study's zip takes a batch of trials: what the download did before.
-    print(
-      `${name}: built whole in memory (the zip's batch path)`,
-      TRIAL_SIZES,
-      "events",
-      await byTrial((trialId) => trialsFiles(db, [trialId], [format])),
+    print3(
+      "built whole in memory (the zip's batch path)",
+      await byTrial((trialId) => trialsFiles(db, [trialId], ["json"]), sampledBySize),
     );
   }
+
   console.log(
     `\nMachine load after (1, 5, 15 min): ${(await Bun.file("/proc/loadavg").text()).split(" ").slice(0, 3).join(" ")}`,
   );

@@ -75,7 +75,7 @@ describe("the trial event store", async () => {
     ]);
   });
 
-  it("reads a log a page at a time, each after the last page's seq, of one type if asked", async () => {
+  it("reads a log a page at a time, each after the last page's seq, up to a seq if asked", async () => {
     const trialId = await newTrial();
     await appendEvents(
       db,
@@ -96,11 +96,6 @@ describe("the trial event store", async () => {
     };
     expect(await pages({ limit: 2 })).toEqual([[1, 2], [3, 4], [5]]);
     expect(await pages({ limit: 5 })).toEqual([[1, 2, 3, 4, 5]]);
-    expect(await pages({ limit: 2, type: "note.added" })).toEqual([
-      [1, 3],
-      [4, 5],
-    ]);
-    expect(await pages({ limit: 2, type: "trial.completed" })).toEqual([]);
     expect(await pages({ limit: 2, upTo: 3 })).toEqual([[1, 2], [3]]);
     expect(await lastSeqOf(db, trialId)).toBe(5);
     expect(await lastSeqOf(db, await newTrial())).toBe(0);

@@ -3,6 +3,7 @@
 import { and, asc, eq, gt, inArray, isNotNull, lte, max } from "drizzle-orm";
 import type { EngineEvent, StoredEvent } from "@/core/trial";
 import type { Database } from "./client";
+import { keyedPages } from "./pages";
 import { trialEvents, type trials } from "./schema";
 
 export const NOTIFY_CHANNEL = "hri_trial_events";
@@ -144,7 +145,7 @@ function rowOf(
   };
 }
 
-type Page = { limit: number; type?: EngineEvent["type"]; upTo?: number };
+type Page = { limit: number; upTo?: number };
 
 /** The seq of the trial's last event (0 before the first): where a file read page by page stops. */
 export async function lastSeqOf(db: Database, trialId: string): Promise<number> {
@@ -157,9 +158,8 @@ export async function lastSeqOf(db: Database, trialId: string): Promise<number> 
 
 /**
  * The events after `afterSeq`, in order: what a reconnecting client missed.
- * With a `page`, at most `limit` of them (of one `type` if given, none after
- * seq `upTo` if given): a log too large to hold is read a page at a time, each
- * after the last one's seq.
+ * With a `page`, at most `limit` of them (none after seq `upTo` if given): a
+ * log too large to hold is read a page at a time, each after the last one's seq.
  */
 export async function eventsSince(db: Database, trialId: string, afterSeq = 0, page?: Page): Promise<StoredEvent[]> {
   const query = db
@@ -169,7 +169,6 @@ export async function eventsSince(db: Database, trialId: string, afterSeq = 0, p
       and(
         eq(trialEvents.trialId, trialId),
         gt(trialEvents.seq, afterSeq),
-        page?.type ? eq(trialEvents.type, page.type) : undefined,
         page?.upTo !== undefined ? lte(trialEvents.seq, page.upTo) : undefined,
       ),
     )
@@ -178,23 +177,13 @@ export async function eventsSince(db: Database, trialId: string, afterSeq = 0, p
   return (await (page ? query.limit(page.limit) : query)).map(toStored);
 }
 
-/**
- * A trial's events page by page (see eventsSince). The next page is read while
- * the reader works on this one, so the database and the reader overlap, and at
- * most two pages are held.
- */
-export async function* eventPages(db: Database, trialId: string, page: Page): AsyncGenerator<StoredEvent[]> {
-  const read = (afterSeq: number) => {
-    const events = eventsSince(db, trialId, afterSeq, page);
-    // A reader that stops early leaves the page read ahead unread: its failure is nobody's to hear.
-    events.catch(() => {});
-    return events;
-  };
-  for (let next: Promise<StoredEvent[]> | null = read(0); next; ) {
-    const events: StoredEvent[] = await next;
-    next = events.length === page.limit ? read(events.at(-1)!.seq) : null;
-    if (events.length) yield events;
-  }
+/** A trial's events page by page (see eventsSince and keyedPages): at most two pages are held. */
+export function eventPages(db: Database, trialId: string, page: Page): AsyncGenerator<StoredEvent[]> {
+  return keyedPages(
+    (after) => eventsSince(db, trialId, (after?.[0] as number | undefined) ?? 0, page),
+    (e) => [e.seq],
+    page.limit,
+  );
 }
 
 /** The seqs each request of the trial's wizard was answered with: what a request sent again is answered from. */

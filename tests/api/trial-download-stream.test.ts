@@ -1,11 +1,20 @@
-// A trial's events CSV and its record as JSON are streamed as their events are
-// read, a page at a time: the same bytes as the whole file the study archive
-// holds, and a download that fails part-way fails, rather than ending as a
-// shorter file that looks complete.
+// A trial's events CSV and its record as JSON are streamed as their rows are
+// read (events, robot state samples, annotations, answers, codes), a page at a
+// time: the same bytes as the whole file the study archive holds, and a
+// download that fails part-way fails, rather than ending as a shorter file
+// that looks complete.
 import { afterAll, expect, it } from "vitest";
 import { unscriptedLog } from "../../bench/support";
-import { trialSamples } from "../../src/store/schema";
-import { EVENTS_PER_READ, trialsFiles } from "../../src/server/trials/files";
+import { eq } from "drizzle-orm";
+import {
+  annotations,
+  codeEvents,
+  questionnaireLinks,
+  questionnaireResponses,
+  questionnaireVersions,
+  trialSamples,
+} from "../../src/store/schema";
+import { ROWS_PER_READ, trialsFiles } from "../../src/server/trials/files";
 import { ORIGIN, routeServer } from "../support/routes";
 import { publishedVersion } from "./fixture";
 
@@ -16,12 +25,15 @@ const owner = f.api("owner");
 const route = await import("../../src/app/api/trials/[trialId]/export/route");
 
 /** Three pages of events and a part of a fourth. */
-const EVENTS = 3 * EVENTS_PER_READ + 1_001;
+const EVENTS = 3 * ROWS_PER_READ + 1_001;
+
+// Signed in once: the sign-in route refuses too many sign-ins in a row.
+const signedIn = await s.signIn("owner");
 
 /** The trial's download as the browser asks for it, signed in as the study's owner. */
 async function download(trialId: string, format: "csv" | "json") {
   const res = await route.GET(
-    new Request(`${ORIGIN}/api/trials/${trialId}/export?format=${format}`, { headers: await s.signIn("owner") }),
+    new Request(`${ORIGIN}/api/trials/${trialId}/export?format=${format}`, { headers: signedIn }),
     { params: Promise.resolve({ trialId }) },
   );
   expect(res.status).toBe(200);
@@ -86,11 +98,11 @@ it("streams the events CSV and the record as JSON with the very bytes of the who
   const record = JSON.parse(jsonText);
   expect(record.events).toHaveLength(EVENTS);
   // The first line completed on the second page is named by its request, read on the first.
-  const completed = record.events.slice(EVENTS_PER_READ).find((e: { type: string }) => e.type === "action.completed");
+  const completed = record.events.slice(ROWS_PER_READ).find((e: { type: string }) => e.type === "action.completed");
   const request = record.events.find(
     (e: { type: string; actionId?: string }) => e.type === "action.requested" && e.actionId === completed.actionId,
   );
-  expect(request.seq).toBeLessThanOrEqual(EVENTS_PER_READ);
+  expect(request.seq).toBeLessThanOrEqual(ROWS_PER_READ);
   expect(completed.actionName).toMatch(new RegExp(`Line ${request.seq - 1}$`));
   expect(record.samples).toHaveLength(50);
   expect(record.annotations).toMatchObject([{ label: "Looks away" }]);
@@ -105,7 +117,7 @@ it("streams a trial without events as the whole files are", async () => {
   expect(await (await download(trial.id, "json")).text()).toBe(whole!.files[1]!.body);
 });
 
-it("holds the log as it stood when the download began, while a live trial goes on", async () => {
+it("holds the log and the samples as they stood when the download began, while a live trial goes on", async () => {
   const trial = await seededTrial(EVENTS);
   const sql = db.$client;
   for (const [i, format] of (["csv", "json"] as const).entries()) {
@@ -117,6 +129,8 @@ it("holds the log as it stood when the download began, while a live trial goes o
     const seq = EVENTS + 1 + i;
     const payload = { type: "action.requested", actionId: `late${i}`, actionType: "say", parameters: { text: "Late" } };
     await sql`insert into trial_events (trial_id, seq, type, server_time, payload) values (${trial.id}, ${seq}, 'action.requested', now(), ${JSON.stringify(payload)}::jsonb)`;
+    // And the robot's state meanwhile, at the start of the trial's time (where a page of samples could take it in).
+    await db.insert(trialSamples).values({ trialId: trial.id, topic: "/joint_states", relMs: 0, data: { late: i } });
     const chunks = [first.value!];
     for (let read = await reader.read(); !read.done; read = await reader.read()) chunks.push(read.value);
     expect(Buffer.concat(chunks).toString("utf8")).toBe(whole!.files[0]!.body);
@@ -126,7 +140,7 @@ it("holds the log as it stood when the download began, while a live trial goes o
 it("fails the download when the events cannot be read part-way: the file never looks complete", async () => {
   const trial = await seededTrial(EVENTS);
   const sql = db.$client;
-  // After the header only (while the requests are read for the names), and after a page of events.
+  // After the header only, and after a page of events.
   for (const [format, pieces] of [
     ["csv", 1],
     ["json", 1],
@@ -149,6 +163,166 @@ it("fails the download when the events cannot be read part-way: the file never l
       expect((failed as Error).message).not.toMatch(/relation|trial_events_away|select/i);
     } finally {
       await sql`alter table trial_events_away rename to trial_events`;
+    }
+  }
+});
+
+/** Enough rows of a kind for three pages, with ties of the order's first key across their boundaries. */
+const ROWS = 2 * ROWS_PER_READ + 123;
+
+/**
+ * A trial of a few events whose robot state samples, annotations, submitted
+ * answers and codes each fill more than a page: written out of order, with
+ * ties (the same time, the same participant and questionnaire) that only the
+ * rows' ids order, a page boundary among them. And a withdrawn participant's
+ * answers, which no file holds.
+ */
+async function trialOfManyRows() {
+  const study = await f.newStudy();
+  const { version } = await publishedVersion(owner, study.id);
+  const participant = await owner.participants.create({
+    studyId: study.id,
+    code: "P01",
+    consentStatus: "given",
+    consentDate: new Date(),
+  });
+  const withdrawn = await owner.participants.create({ studyId: study.id, code: "P00", consentStatus: "withdrawn" });
+  const trial = await owner.trials.create({ versionId: version.id, participantId: participant.id });
+  const sql = db.$client;
+  const t0 = new Date(Date.now() - 3_600_000);
+  const log = unscriptedLog(trial.id, 30, t0, (i) => i * 100);
+  await sql`insert into trial_events ${sql(log, "trial_id", "seq", "type", "server_time", "rel_ms", "actor_id", "step_id", "action_id", "payload", "deviation")}`;
+  await sql`update trials set status = 'completed', t0 = ${t0.toISOString()}::timestamptz where id = ${trial.id}`;
+  // Backwards in time, seven to a millisecond: the order is the time's, then the order they were written in.
+  const backwards = Array.from({ length: ROWS }, (_, i) => ROWS - 1 - i);
+  for (let start = 0; start < ROWS; start += 2_500)
+    await db.insert(trialSamples).values(
+      backwards.slice(start, start + 2_500).map((i) => ({
+        trialId: trial.id,
+        topic: i % 2 ? "/joint_states" : "/battery_state",
+        relMs: Math.floor(i / 7) + 0.5,
+        data: { position: [i / 10, -i], name: `joint "${i}"\n` },
+      })),
+    );
+  for (let start = 0; start < ROWS; start += 2_500)
+    await db.insert(annotations).values(
+      backwards.slice(start, start + 2_500).map((i) => ({
+        trialId: trial.id,
+        authorId: i % 3 ? f.people.owner.id : null,
+        relMs: Math.floor(i / 3) * 10,
+        label: `Looks "away" ${i}`,
+        note: i % 5 ? "" : "during, the\nline",
+      })),
+    );
+  const { id: schemeId } = await owner.coding.createScheme({ studyId: study.id, template: "participant-engagement" });
+  const { id: versionId } = await owner.coding.publishScheme({ codingSchemeId: schemeId });
+  for (let start = 0; start < ROWS; start += 2_500)
+    await db.insert(codeEvents).values(
+      backwards.slice(start, start + 2_500).map((i) => ({
+        trialId: trial.id,
+        observerId: i % 4 ? f.people.observer.id : null,
+        versionId,
+        setId: i % 2 ? "gaze" : "expression",
+        codeId: i % 2 ? "robot" : "smile",
+        kind: i % 2 ? ("state" as const) : ("point" as const),
+        startMs: Math.floor(i / 11) * 100,
+        endMs: i % 2 ? Math.floor(i / 11) * 100 + 50 : null,
+        modifiers: i % 3 ? [] : ["laugh", "loud"],
+      })),
+    );
+  const sus = await owner.questionnaires.create({ studyId: study.id, instrument: "sus" });
+  await owner.questionnaires.publish({ questionnaireId: sus.id });
+  const [shown] = await db
+    .select({ id: questionnaireVersions.id })
+    .from(questionnaireVersions)
+    .where(eq(questionnaireVersions.questionnaireId, sus.id));
+  // One questionnaire, one participant: a page of answers ends among ties ordered by their ids alone.
+  const answered = ROWS_PER_READ + 7;
+  for (let start = 0; start < answered; start += 2_500) {
+    const links = Array.from({ length: Math.min(2_500, answered - start) }, (_, k) => ({
+      tokenHash: crypto.randomUUID(),
+      studyId: study.id,
+      versionId: shown!.id,
+      participantId: start + k === 3 ? withdrawn.id : participant.id,
+      trialId: trial.id,
+      expiresAt: new Date(Date.now() + 3_600_000),
+    }));
+    const made = await db.insert(questionnaireLinks).values(links).returning({ id: questionnaireLinks.id });
+    await db.insert(questionnaireResponses).values(
+      made.map((link, k) => ({
+        linkId: link.id,
+        answers: { q1: (start + k) % 5, q2: [1, "two"] },
+        status: "submitted" as const,
+        score: { total: start + k },
+        submittedAt: new Date(t0.getTime() + start + k),
+      })),
+    );
+  }
+  return { trial, answered };
+}
+
+it("streams a record of many samples, annotations, answers and codes with the very bytes of the whole record", async () => {
+  const { trial, answered } = await trialOfManyRows();
+  const [whole] = await trialsFiles(db, [trial.id], ["json"]);
+  const text = await (await download(trial.id, "json")).text();
+  expect(text).toBe(whole!.files[0]!.body);
+  const record = JSON.parse(text);
+  expect(record.samples).toHaveLength(ROWS);
+  expect(record.annotations).toHaveLength(ROWS);
+  expect(record.codes).toHaveLength(ROWS);
+  // The withdrawn participant's answers are left out.
+  expect(record.questionnaires).toHaveLength(answered - 1);
+  expect(record.samples.slice(0, 8).map((s: { relMs: number }) => s.relMs)).toEqual([
+    0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 1.5,
+  ]);
+  // Written backwards: ties are in the order they were written.
+  expect(record.samples.slice(0, 2).map((s: { data: { position: number[] } }) => s.data.position[1])).toEqual([-6, -5]);
+  // Annotations at one time in the order of their ids (random): the three at 0 ms, each with its author's name.
+  expect(
+    record.annotations
+      .slice(0, 3)
+      .map((a: { relMs: number; label: string; authorName: string | null }) => [a.relMs, a.label, a.authorName])
+      .sort(),
+  ).toEqual([
+    [0, 'Looks "away" 0', null],
+    [0, 'Looks "away" 1', f.people.owner.name],
+    [0, 'Looks "away" 2', f.people.owner.name],
+  ]);
+  // Codes in time order (ties in the order of their ids, random): the eleven at 0 ms first.
+  expect(record.codes.slice(0, 12).map((c: { start_ms: number }) => c.start_ms)).toEqual([...Array(11).fill(0), 100]);
+  expect(record.questionnaires[0]).toMatchObject({ questionnaire: expect.any(String), participantCode: "P01" });
+  expect(Object.keys(record)).toEqual([
+    "schemaVersion",
+    "trial",
+    "protocol",
+    "events",
+    "annotations",
+    "questionnaires",
+    "recordings",
+    "samples",
+    "codes",
+  ]);
+});
+
+it("fails the record's download when its samples, annotations, answers or codes cannot be read part-way", async () => {
+  const { trial } = await trialOfManyRows();
+  const sql = db.$client;
+  for (const table of ["annotations", "questionnaire_responses", "trial_samples", "code_events"]) {
+    const reader = (await download(trial.id, "json")).body!.getReader();
+    // The first piece: the record's head, before any list is read.
+    expect((await reader.read()).done).toBe(false);
+    await sql`alter table ${sql(table)} rename to gone_away`;
+    try {
+      let failed: unknown;
+      try {
+        for (let read = await reader.read(); !read.done; read = await reader.read());
+      } catch (error) {
+        failed = error;
+      }
+      expect(failed, table).toBeInstanceOf(Error);
+      expect((failed as Error).message).toMatch(/^The record of trial .+ could not be finished$/);
+    } finally {
+      await sql`alter table gone_away rename to ${sql(table)}`;
     }
   }
 });

@@ -6,11 +6,11 @@ import {
   EVENT_COLUMNS,
   eventRows,
   eventsCsv,
-  jsonArrayWriter,
+  jsonPieces,
   namedEvents,
   samplesCsv,
-  trialRecordFrame,
   trialRecordJson,
+  trialRecordPieces,
 } from "./exports";
 import { trialNames } from "./names";
 
@@ -115,7 +115,7 @@ describe("the trial record", () => {
   });
 });
 
-describe("the trial record and events CSV written a page of events at a time", () => {
+describe("the trial record and events CSV written a batch at a time", () => {
   const record = {
     trial: { id: "t1", note: 'a "quoted"\n  "events": [] line', gone: undefined, at: new Date(0) },
     protocol: {
@@ -123,29 +123,47 @@ describe("the trial record and events CSV written a page of events at a time", (
       experiment: {} as never,
       steps: [{ id: "s1", name: "Welcome", description: "", actions: [] }],
     },
-    annotations: [{ relMs: 5, label: "Looks away", note: "", authorName: null }],
-    questionnaires: [],
+    annotations: [
+      { relMs: 5, label: "Looks away", note: "", authorName: null },
+      { relMs: 5, label: "Laughs\n", note: 'said "no"', authorName: "Olga" },
+      { relMs: 9, label: "Waves", note: "🪨", authorName: null },
+    ],
+    questionnaires: [{ questionnaire: "Godspeed", answers: { q1: 4, q2: [1, 2] }, score: null, at: new Date(0) }],
     recordings: [{ nested: { deeper: [1, [2, {}], []] } }],
-    samples: [{ topic: "/joint_states", relMs: 1, data: { position: [0.5] } }],
-    codes: [],
+    samples: [
+      { topic: "/joint_states", relMs: 1, data: { position: [0.5] } },
+      { topic: "/battery_state", relMs: 1, data: { percentage: 0.8, empty: {}, none: [] } },
+      { topic: "/joint_states", relMs: 2, data: { position: [-0.25] } },
+    ],
+    codes: [{ trial_id: "t1", code: "Gaze", end_ms: null }],
   };
   const many = Array.from({ length: 7 }, (_, i) => ({ ...events[i % 2]!, seq: i + 1 }));
-  it.each([
-    ["no events", [], []],
-    ["one page", events, [2]],
-    ["pages of one, three and three", many as StoredEvent[], [1, 3, 3]],
-  ] as const)("%s: the same bytes as the whole record and the whole CSV", (_, all, pages) => {
-    const frame = trialRecordFrame(record);
-    const array = jsonArrayWriter(1);
-    let json = frame.before;
-    let csv = csvLines([EVENT_COLUMNS]);
+  /** `all` in batches of the sizes given, as a paged read gives them. */
+  async function* batches<T>(all: readonly T[], sizes: readonly number[]) {
     let at = 0;
-    for (const size of pages) {
-      const page = all.slice(at, (at += size));
-      json += array.items(namedEvents(page, names));
-      csv += csvLines(eventRows("t1", page, people, names));
-    }
-    json += array.end() + frame.after;
+    for (const size of sizes) yield all.slice(at, (at += size));
+  }
+  it.each([
+    ["no events, every list in one batch", [], [], [3]],
+    ["one page of events, no samples", events, [2], []],
+    ["pages of one, three and three; lists in batches of one and two", many as StoredEvent[], [1, 3, 3], [1, 2]],
+    ["empty batches among the rest", many as StoredEvent[], [0, 7, 0], [0, 3, 0]],
+  ] as const)("%s: the same bytes as the whole record and the whole CSV", async (_, all, pages, sizes) => {
+    // A list split as `sizes` asks, its last items in one more batch.
+    const split = <T>(list: readonly T[]) => batches(list, [...sizes, list.length]);
+    const streamed = trialRecordPieces({
+      ...record,
+      events: batches(namedEvents([...all], names), pages),
+      annotations: split(record.annotations),
+      questionnaires: split(record.questionnaires),
+      samples: sizes.length ? split(record.samples) : [],
+      codes: split(record.codes),
+    });
+    let json = "";
+    for await (const piece of streamed) json += piece;
+    let csv = csvLines([EVENT_COLUMNS]);
+    for await (const page of batches(all, pages)) csv += csvLines(eventRows("t1", page, people, names));
+    const samples = sizes.length ? record.samples : [];
     // What the paged writer must match: the whole record in one JSON.stringify, events after the protocol.
     const expected = JSON.stringify(
       {
@@ -156,15 +174,25 @@ describe("the trial record and events CSV written a page of events at a time", (
         annotations: record.annotations,
         questionnaires: record.questionnaires,
         recordings: record.recordings,
-        samples: record.samples,
+        samples,
         codes: record.codes,
       },
       null,
       2,
     );
     expect(json).toBe(expected);
-    expect(trialRecordJson({ ...record, events: [...all] }, names)).toBe(expected);
+    expect(trialRecordJson({ ...record, samples, events: [...all] }, names)).toBe(expected);
     expect(csv).toBe(eventsCsv("t1", [...all], people, names));
+  });
+
+  it.each([
+    ["an empty object", {}],
+    ["values JSON leaves out", { a: undefined, b: () => 1, c: 1 }],
+    ["a top-level string with a newline", { a: "x\ny", b: [] }],
+  ])("writes %s as JSON.stringify does", async (_, object) => {
+    let json = "";
+    for await (const piece of jsonPieces(object)) json += piece;
+    expect(json).toBe(JSON.stringify(object, null, 2));
   });
 });
 

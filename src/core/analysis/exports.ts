@@ -118,7 +118,7 @@ export function namedEvents(events: StoredEvent[], names: TrialNames) {
  * out as it is read. Literal newlines only ever occur between tokens (a
  * string's are escaped), so indenting an item is replacing them.
  */
-export function jsonArrayWriter(depth: number) {
+function jsonArrayWriter(depth: number) {
   const pad = `\n${"  ".repeat(depth + 1)}`;
   let written = 0;
   return {
@@ -130,32 +130,76 @@ export function jsonArrayWriter(depth: number) {
   };
 }
 
+/** A list given a batch of items at a time: a part of a record too large to hold, read as it is written. */
+export type Batches<T> = AsyncIterable<T[]>;
+
+const isBatches = (value: unknown): value is Batches<unknown> =>
+  typeof value === "object" && value !== null && Symbol.asyncIterator in value;
+
 /**
- * The trial record's JSON around its events: the text before them and the
- * text after. The events go between as a jsonArrayWriter(1) writes them, so
- * the record can be written a batch of events at a time.
+ * A JSON object written a piece at a time, byte for byte as
+ * JSON.stringify(object, null, 2) writes it whole: a value given as Batches is
+ * written as an array a batch at a time (the rest whole, indented as a key of
+ * the top object). Memory holds one batch and what lies between two lists.
  */
-export function trialRecordFrame(record: Omit<TrialRecord, "schemaVersion" | "events">) {
-  // The events after the protocol, as TrialRecord lists them.
-  const { trial, protocol, ...rest } = record;
-  const whole = JSON.stringify(
-    { schemaVersion: TRIAL_RECORD_SCHEMA_VERSION, trial, protocol, events: [], ...rest },
-    null,
-    2,
-  );
-  // A newline and two spaces before a quote start a key of the top object only (deeper keys are
-  // indented further, a string's newlines are escaped), and its keys are unique.
-  const key = '\n  "events": ';
-  const at = whole.indexOf(`${key}[]`);
-  return { before: whole.slice(0, at + key.length), after: whole.slice(at + key.length + 2) };
+export async function* jsonPieces(object: Record<string, unknown>): AsyncGenerator<string> {
+  let text = "";
+  let keys = 0;
+  for (const [key, value] of Object.entries(object)) {
+    const whole = isBatches(value) ? undefined : JSON.stringify(value, null, 2);
+    // JSON.stringify leaves out a key whose value it cannot write (undefined, a function).
+    if (!isBatches(value) && whole === undefined) continue;
+    text += `${keys++ ? "," : "{"}\n  ${JSON.stringify(key)}: `;
+    if (!isBatches(value)) {
+      text += whole!.replaceAll("\n", "\n  ");
+      continue;
+    }
+    // What comes before the list goes out before its first batch is read: the first byte waits for no read.
+    yield text;
+    text = "";
+    const array = jsonArrayWriter(1);
+    for await (const batch of value) {
+      text += array.items(batch);
+      if (text) yield text;
+      text = "";
+    }
+    text += array.end();
+  }
+  yield keys ? `${text}\n}` : "{}";
+}
+
+type Whole = Omit<TrialRecord, "schemaVersion">;
+
+/** The record's lists given whole or a batch at a time (events named, codes as records, as the record holds them). */
+export type StreamedRecord = { [K in keyof Whole]: Whole[K] extends (infer I)[] ? Whole[K] | Batches<I> : Whole[K] };
+
+/** The record's keys in the order its JSON lists them: the events after the protocol, as TrialRecord lists them. */
+function inRecordOrder<R extends StreamedRecord>(record: R) {
+  const { trial, protocol, events, annotations, questionnaires, recordings, samples, codes } = record;
+  return {
+    schemaVersion: TRIAL_RECORD_SCHEMA_VERSION,
+    trial,
+    protocol,
+    events,
+    annotations,
+    questionnaires,
+    recordings,
+    samples,
+    codes,
+  };
+}
+
+/**
+ * The trial record as JSON, a piece at a time: the same bytes as
+ * trialRecordJson, its lists written as their batches are read.
+ */
+export function trialRecordPieces(record: StreamedRecord): AsyncGenerator<string> {
+  return jsonPieces(inRecordOrder(record));
 }
 
 export function trialRecordJson(
   record: Omit<TrialRecord, "schemaVersion" | "events"> & { events: StoredEvent[] },
   names: TrialNames,
 ): string {
-  const { events, ...rest } = record;
-  const { before, after } = trialRecordFrame(rest);
-  const array = jsonArrayWriter(1);
-  return before + array.items(namedEvents(events, names)) + array.end() + after;
+  return JSON.stringify(inRecordOrder({ ...record, events: namedEvents(record.events, names) }), null, 2);
 }

@@ -15,8 +15,10 @@ type Named = { stepId?: string | null; actionId?: string; actionType?: string; p
 
 /**
  * The names of a trial's steps and actions. `learn` takes more of its events
- * (in log order): a log too large to hold is learnt a batch at a time before
- * its events are named.
+ * (in log order). An unscripted action's events all follow its request (the
+ * engine refuses a report on an action never requested), so a log too large to
+ * hold is named a page at a time, each page learnt before it is named: every
+ * event gets the name the whole log would give it, in one pass over the log.
  */
 export function trialNames(
   protocol: TrialProtocol,

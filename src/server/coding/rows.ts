@@ -1,14 +1,16 @@
 // The code events of some trials, each with its observer's name and the
 // scheme version it was coded with: what every export of codes is made from.
-import { asc, eq, inArray } from "drizzle-orm";
+// By trial, then by start (ties in id order).
+import { and, asc, eq, inArray, type SQL } from "drizzle-orm";
 import type { CodeRowInput } from "@/core/coding/export";
 import type { Scheme } from "@/core/coding/scheme";
 import type { Database } from "@/store/client";
+import { after, keyedPages } from "@/store/pages";
 import { codeEvents, codingSchemeVersions, user } from "@/store/schema";
 
-export async function codeRowsOf(db: Pick<Database, "select">, trialIds: string[]): Promise<CodeRowInput[]> {
-  if (!trialIds.length) return [];
-  const rows = await db
+/** The code events `where` picks, at most `limit` of them if given; each with its id, the key a page ends at. */
+async function codeRows(db: Pick<Database, "select">, where: SQL | undefined, limit?: number) {
+  const query = db
     .select({
       code: codeEvents,
       observer: user.name,
@@ -18,9 +20,10 @@ export async function codeRowsOf(db: Pick<Database, "select">, trialIds: string[
     .from(codeEvents)
     .innerJoin(codingSchemeVersions, eq(codingSchemeVersions.id, codeEvents.versionId))
     .leftJoin(user, eq(user.id, codeEvents.observerId))
-    .where(inArray(codeEvents.trialId, trialIds))
-    .orderBy(asc(codeEvents.trialId), asc(codeEvents.startMs), asc(codeEvents.id));
-  return rows.map((r) => ({
+    .where(where)
+    .orderBy(asc(codeEvents.trialId), asc(codeEvents.startMs), asc(codeEvents.id))
+    .$dynamic();
+  return (await (limit ? query.limit(limit) : query)).map((r): CodeRowInput & { id: string } => ({
     trialId: r.code.trialId,
     observer: r.observer ?? "(former member)",
     scheme: r.definition as Scheme,
@@ -31,5 +34,20 @@ export async function codeRowsOf(db: Pick<Database, "select">, trialIds: string[
     startMs: r.code.startMs,
     endMs: r.code.endMs,
     modifiers: r.code.modifiers,
+    id: r.code.id,
   }));
+}
+
+export async function codeRowsOf(db: Pick<Database, "select">, trialIds: string[]): Promise<CodeRowInput[]> {
+  return trialIds.length ? codeRows(db, inArray(codeEvents.trialId, trialIds)) : [];
+}
+
+/** One trial's code events a page at a time (see keyedPages), in codeRowsOf's order. */
+export function codePages(db: Pick<Database, "select">, trialId: string, limit: number) {
+  const key = [codeEvents.startMs, codeEvents.id];
+  return keyedPages(
+    (from) => codeRows(db, and(eq(codeEvents.trialId, trialId), after(key, from)), limit),
+    (c) => [c.startMs, c.id],
+    limit,
+  );
 }

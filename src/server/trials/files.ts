@@ -5,35 +5,36 @@
 // an MCAP file for robotics tools. The trial's download
 // and the study's archive both take them from here, reading the trial once:
 // the archive a batch of trials whole, the trial's events CSV and record a
-// page of events at a time (the same bytes), as the download is written.
-import { asc, eq, inArray } from "drizzle-orm";
+// page of rows at a time (the same bytes), as the download is written.
+import { asc, inArray } from "drizzle-orm";
 import { elanDocument } from "@/core/analysis/elan";
 import {
+  type Batches,
   EVENT_COLUMNS,
   eventRows,
   eventsCsv,
-  jsonArrayWriter,
   namedEvents,
   samplesCsv,
-  trialRecordFrame,
   trialRecordJson,
+  trialRecordPieces,
 } from "@/core/analysis/exports";
 import { csvLines } from "@/core/csv/csv";
 import { tableCsv, tableRecords } from "@/core/analysis/table";
 import { codesTable } from "@/core/coding/export";
 import { trialNames } from "@/core/analysis/names";
-import type { TrialEvent } from "@/core/trial";
+import type { StoredEvent, TrialEvent } from "@/core/trial";
 import type { Database } from "@/store/client";
-import { annotations, experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/store/schema";
+import { experimentVersions, mediaRecordings, questionnaireLinks, trials, user } from "@/store/schema";
 import { recordingFileName } from "../media/recordings";
-import { submitted } from "../questionnaires/responses";
+import { submitted, submittedPages } from "../questionnaires/responses";
 import { eventPages, eventsOfTrials, lastSeqOf } from "@/store/event-store";
-import { samplesOfTrials } from "@/store/samples";
+import { lastSampleOf, samplePages, samplesOfTrials } from "@/store/samples";
 import type { ActionNames } from "@/core/designer/action-name";
 import { trialActionNames } from "./action-names";
+import { annotationPages, annotationsOf } from "./annotations";
 import { trialMcap } from "./mcap";
 import { textStream } from "./text-stream";
-import { codeRowsOf } from "../coding/rows";
+import { codePages, codeRowsOf } from "../coding/rows";
 
 export type TrialFormat = "csv" | "json" | "eaf" | "samples" | "codes";
 
@@ -104,30 +105,22 @@ export async function trialsEventsOf(db: Database, trialIds: string[]) {
   return read.map((r) => ({ ...r, events: events.get(r.trial.id)! }));
 }
 
+/** These trials' recordings, by trial, in the order they were made. */
+async function recordingsOf(db: Database, trialIds: string[]) {
+  return trialIds.length
+    ? db
+        .select()
+        .from(mediaRecordings)
+        .where(inArray(mediaRecordings.trialId, trialIds))
+        .orderBy(asc(mediaRecordings.createdAt))
+    : [];
+}
+
 /** What these trials' files hold besides their events, by trial: one query per kind of row. */
 async function besidesEvents(db: Database, trialIds: string[]) {
   const [marked, recordings, questionnaires, samples, codes] = await Promise.all([
-    trialIds.length
-      ? db
-          .select({
-            trialId: annotations.trialId,
-            relMs: annotations.relMs,
-            label: annotations.label,
-            note: annotations.note,
-            authorName: user.name,
-          })
-          .from(annotations)
-          .leftJoin(user, eq(user.id, annotations.authorId))
-          .where(inArray(annotations.trialId, trialIds))
-          .orderBy(asc(annotations.relMs))
-      : [],
-    trialIds.length
-      ? db
-          .select()
-          .from(mediaRecordings)
-          .where(inArray(mediaRecordings.trialId, trialIds))
-          .orderBy(asc(mediaRecordings.createdAt))
-      : [],
+    annotationsOf(db, trialIds),
+    recordingsOf(db, trialIds),
     trialIds.length ? submitted(db, inArray(questionnaireLinks.trialId, trialIds)) : [],
     samplesOfTrials(db, trialIds),
     codeRowsOf(db, trialIds),
@@ -138,7 +131,7 @@ async function besidesEvents(db: Database, trialIds: string[]) {
   const samplesBy = byTrial(trialIds, samples);
   const codesBy = byTrial(trialIds, codes);
   return (trialId: string) => ({
-    marked: markedBy.get(trialId)!.map(({ trialId: _, ...a }) => a),
+    marked: markedBy.get(trialId)!.map(({ trialId: _, id: _id, ...a }) => a),
     recordings: recordingsBy.get(trialId)!,
     questionnaires: questionnairesBy.get(trialId)!,
     samples: samplesBy.get(trialId)!.map(({ trialId: _, ...sample }) => sample),
@@ -153,8 +146,6 @@ export async function readTrials(db: Database, trialIds: string[]) {
 }
 
 type ReadTrial = Awaited<ReturnType<typeof readTrials>>[number];
-
-type Besides = Omit<ReadTrial, "events">;
 
 /** The events CSV's and the record's names and types, whole (the archive's) or streamed (the trial's download). */
 const FILES = {
@@ -203,12 +194,25 @@ function fileOf(read: ReadTrial, format: TrialFormat) {
   return {
     filename: name + FILES.json.suffix,
     contentType: FILES.json.contentType,
-    body: trialRecordJson({ ...recordOf(read), events }, named),
+    body: trialRecordJson(
+      {
+        ...recordOf(read, recordings),
+        events,
+        annotations: marked,
+        questionnaires: read.questionnaires,
+        samples,
+        codes: tableRecords(codesTable(codes)),
+      },
+      named,
+    ),
   };
 }
 
-/** The trial record (see TrialRecord) but its events: what is written around them. */
-function recordOf({ trial, people, version, protocol, marked, recordings, questionnaires, samples, codes }: Besides) {
+/** The trial record's parts that are not lists of rows (see TrialRecord): its trial, protocol and recordings. */
+function recordOf(
+  { trial, people, version, protocol }: Awaited<ReturnType<typeof trialsOf>>[number],
+  recordings: Awaited<ReturnType<typeof recordingsOf>>,
+) {
   return {
     trial: {
       ...trial,
@@ -226,8 +230,6 @@ function recordOf({ trial, people, version, protocol, marked, recordings, questi
         : null,
     },
     protocol,
-    annotations: marked,
-    questionnaires,
     recordings: recordings.map((m) => ({
       id: m.id,
       kind: m.kind,
@@ -238,44 +240,67 @@ function recordOf({ trial, people, version, protocol, marked, recordings, questi
       durationMs: m.durationMs,
       url: `/api/recordings/${m.id}/media`,
     })),
-    samples,
-    codes: tableRecords(codesTable(codes)),
   };
 }
 
-/** How many events a streamed file reads at a time (and one more page ahead): its memory bound. */
-export const EVENTS_PER_READ = 5000;
+/** Each page of `pages` as `made` makes it. */
+async function* mapped<T, U>(pages: Batches<T>, made: (page: T[]) => U[]): Batches<U> {
+  for await (const page of pages) yield made(page);
+}
+
+/** How many rows (events, samples…) a streamed file reads at a time (and one more page ahead): its memory bound. */
+export const ROWS_PER_READ = 5000;
 
 /**
- * The trial's events CSV or its record as JSON, written as its events are
- * read, a page at a time (the same bytes as the study archive's copy of them):
- * a trial of 100k events never sits in the server's memory whole.
+ * The trial's events CSV or its record as JSON, written as its rows are read,
+ * a page at a time (the same bytes as the study archive's copy of them): a
+ * trial of 100k events or 180k robot state samples never sits in the
+ * server's memory whole. The events are read once: each page's requests name
+ * its unscripted actions before its events are named (see trialNames).
  */
 async function streamedFile(db: Database, trialId: string, format: "csv" | "json") {
-  // The file holds the log as it stood when the download began: what a live trial adds later is
-  // in neither the events nor the names of the file.
-  const [upTo, [read], besides] = await Promise.all([
+  // The file holds the log (and the samples) as they stood when the download began: what a live
+  // trial adds later is in neither the events nor the names of the file.
+  const [upTo, lastSample, [read], recordings] = await Promise.all([
     lastSeqOf(db, trialId),
+    format === "json" ? lastSampleOf(db, trialId) : 0,
     trialsOf(db, [trialId]),
-    format === "json" ? besidesEvents(db, [trialId]) : undefined,
+    format === "json" ? recordingsOf(db, [trialId]) : [],
   ]);
   const { trial, people, protocol, names } = read!;
-  const page = { limit: EVENTS_PER_READ, upTo };
-  async function* pieces() {
-    const frame = besides && trialRecordFrame(recordOf({ ...read!, ...besides(trialId) }));
-    yield frame ? frame.before : csvLines([EVENT_COLUMNS]);
-    // Unscripted actions are named by their requests: all of them are learnt before any event is named.
-    const named = trialNames(protocol, [], names);
-    for await (const requests of eventPages(db, trialId, { ...page, type: "action.requested" })) named.learn(requests);
-    const array = jsonArrayWriter(1);
-    for await (const events of eventPages(db, trialId, page))
-      yield frame ? array.items(namedEvents(events, named)) : csvLines(eventRows(trial.id, events, people, named));
-    if (frame) yield array.end() + frame.after;
+  const named = trialNames(protocol, [], names);
+  const events = <T>(made: (events: StoredEvent[]) => T[]) =>
+    mapped(eventPages(db, trialId, { limit: ROWS_PER_READ, upTo }), (page) => {
+      named.learn(page);
+      return made(page);
+    });
+  async function* csv() {
+    yield csvLines([EVENT_COLUMNS]);
+    for await (const rows of events((page) => eventRows(trial.id, page, people, named))) yield csvLines(rows);
   }
+  // Each list is read only once the one before it is written.
+  const record = () =>
+    trialRecordPieces({
+      ...recordOf(read!, recordings),
+      events: events((page) => namedEvents(page, named)),
+      annotations: mapped(annotationPages(db, trialId, ROWS_PER_READ), (page) =>
+        page.map(({ trialId: _, id: _id, ...a }) => a),
+      ),
+      questionnaires: mapped(submittedPages(db, trialId, ROWS_PER_READ), (page) =>
+        page.map(({ responseId: _, ...q }) => q),
+      ),
+      samples: mapped(samplePages(db, trialId, { limit: ROWS_PER_READ, upTo: lastSample }), (page) =>
+        page.map(({ id: _, ...sample }) => sample),
+      ),
+      codes: mapped(codePages(db, trialId, ROWS_PER_READ), (page) => tableRecords(codesTable(page))),
+    });
   return {
     filename: `trial-${trial.id}${FILES[format].suffix}`,
     contentType: FILES[format].contentType,
-    body: textStream(pieces(), `The ${format === "csv" ? "events CSV" : "record"} of trial ${trial.id}`),
+    body: textStream(
+      format === "csv" ? csv() : record(),
+      `The ${format === "csv" ? "events CSV" : "record"} of trial ${trial.id}`,
+    ),
   };
 }
 

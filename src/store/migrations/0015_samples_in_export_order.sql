@@ -1,0 +1,1 @@
+CREATE INDEX "trial_samples_order_idx" ON "trial_samples" USING btree ("trial_id","rel_ms","id");
