@@ -8,7 +8,8 @@
 // Results tab and first byte of the zip under 1 s; at 100k events opening the
 // trial under 1 s and the exports under 2 s, their first byte under 1 s. The
 // analysis page in Chromium is bench/analysis (it needs the built app).
-// `bun bench/scaling.ts trials` measures the trials of 1k to 100k events only.
+// `bun bench/scaling.ts trials` measures the trials of 1k to 100k events only,
+// `bun bench/scaling.ts studies` the studies of 10 to 1,000 trials only.
 import { eventsSince } from "../src/store/event-store";
 import { createDatabase } from "../src/store/client";
 import { fold } from "../src/core/trial/fold";
@@ -22,6 +23,7 @@ const STUDY_SIZES = [10, 100, 1000];
 const EVENTS_PER_TRIAL = 200;
 const TRIAL_SIZES = [1000, 10_000, 100_000];
 const TRIALS_ONLY = process.argv[2] === "trials";
+const STUDIES_ONLY = process.argv[2] === "studies";
 
 const database = await scratchDatabase();
 const { db, close } = createDatabase(database.url, { max: 4 });
@@ -72,11 +74,12 @@ async function seedStudy(f: Awaited<ReturnType<typeof buildFixture>>, count: num
   return { study, version, trialIds };
 }
 
-/** Runs `path` RUNS times: the median time and the largest peak of memory above where it started. */
-async function measure(path: () => Promise<unknown>) {
+/** Runs `path` RUNS times (each after `setup`, untimed): the median time and the largest peak of memory above where it started. */
+async function measure(path: () => Promise<unknown>, setup?: () => Promise<unknown>) {
   const times: number[] = [];
   let peakMb = 0;
   for (let i = 0; i < RUNS; i++) {
+    await setup?.();
     Bun.gc(true);
     const before = process.memoryUsage().rss;
     let peak = before;
@@ -132,12 +135,16 @@ try {
   const studiesBySize: Awaited<ReturnType<typeof seedStudy>>[] = [];
   if (!TRIALS_ONLY) for (const size of STUDY_SIZES) studiesBySize.push(await seedStudy(f, size, EVENTS_PER_TRIAL));
   const trialsBySize: Awaited<ReturnType<typeof seedStudy>>[] = [];
-  for (const size of TRIAL_SIZES) trialsBySize.push(await seedStudy(f, 1, size));
+  if (!STUDIES_ONLY) for (const size of TRIAL_SIZES) trialsBySize.push(await seedStudy(f, 1, size));
   await sql`analyze`;
 
-  const byStudy = async (path: (studyId: string) => Promise<unknown>) => {
+  const byStudy = async (
+    path: (studyId: string) => Promise<unknown>,
+    setup?: (studyId: string) => Promise<unknown>,
+  ) => {
     const results = [];
-    for (const { study } of studiesBySize) results.push(await measure(() => path(study.id)));
+    for (const { study } of studiesBySize)
+      results.push(await measure(() => path(study.id), setup && (() => setup(study.id))));
     return results;
   };
   const byTrial = async (path: (trialId: string, protocol: TrialProtocol) => Promise<unknown>) => {
@@ -170,13 +177,24 @@ try {
       await byStudy((studyId) => owner.trials.list({ studyId })),
       1000,
     );
+    const resultsTab = (studyId: string) =>
+      Promise.all([owner.studies.figures({ studyId }), owner.studies.resultsByCondition({ studyId })]);
+    // Each ended trial's figures are folded once and kept: the first call after trials end folds their logs.
+    print(
+      "Results tab, first call after the trials ended (no figures kept yet: every log folded)",
+      STUDY_SIZES,
+      "trials",
+      await byStudy(
+        resultsTab,
+        (studyId) =>
+          sql`delete from trial_figures using trials where trials.id = trial_id and trials.study_id = ${studyId}`,
+      ),
+    );
     print(
       "Results tab (studies.figures and resultsByCondition)",
       STUDY_SIZES,
       "trials",
-      await byStudy((studyId) =>
-        Promise.all([owner.studies.figures({ studyId }), owner.studies.resultsByCondition({ studyId })]),
-      ),
+      await byStudy(resultsTab),
       1000,
     );
     print(
@@ -212,66 +230,71 @@ try {
     );
   }
 
-  console.log(`\nTrials of ${TRIAL_SIZES.join(", ")} events (unscripted lines):`);
-  print(
-    "Opening the trial (its events read and folded)",
-    TRIAL_SIZES,
-    "events",
-    await byTrial(async (trialId, protocol) =>
-      fold(protocol, (await eventsSince(db, trialId)) as unknown as TrialEvent[]),
-    ),
-    1000,
-  );
-  print(
-    "Analysis page's data (trials.get and trials.events)",
-    TRIAL_SIZES,
-    "events",
-    await byTrial((trialId) => Promise.all([owner.trials.get({ trialId }), owner.trials.events({ trialId })])),
-  );
-  for (const [format, name] of [
-    ["csv", "Events export (CSV)"],
-    ["json", "Trial record export (JSON)"],
-  ] as const) {
+  if (!STUDIES_ONLY) await trialPaths();
+
+  /** The trial-sized paths: opening a trial, the analysis page's data, the exports. */
+  async function trialPaths() {
+    console.log(`\nTrials of ${TRIAL_SIZES.join(", ")} events (unscripted lines):`);
     print(
-      `${name}: first byte`,
+      "Opening the trial (its events read and folded)",
       TRIAL_SIZES,
       "events",
-      await byTrial(async (trialId) => {
-        const reader = streamed((await downloads.trials.export({ trialId, format })).body).getReader();
-        await reader.read();
-        await reader.cancel();
-      }),
+      await byTrial(async (trialId, protocol) =>
+        fold(protocol, (await eventsSince(db, trialId)) as unknown as TrialEvent[]),
+      ),
       1000,
     );
-    const bytes: number[] = [];
     print(
-      `${name}: whole, streamed`,
+      "Analysis page's data (trials.get and trials.events)",
       TRIAL_SIZES,
       "events",
-      await byTrial(async (trialId) => {
-        bytes.push(await drain(streamed((await downloads.trials.export({ trialId, format })).body)));
-      }),
-      2000,
+      await byTrial((trialId) => Promise.all([owner.trials.get({ trialId }), owner.trials.events({ trialId })])),
     );
-    console.log(`  (sizes: ${[0, 1, 2].map((i) => `${(bytes[i * RUNS]! / 1e6).toFixed(1)} MB`).join(", ")})`);
-    // The peak above counts garbage the collector has not yet reclaimed; with a full collection after
-    // each piece it is what the download holds (its time is then the collector's, not the download's).
-    print(
-      `${name}: whole, streamed, collected after each piece (memory held)`,
-      TRIAL_SIZES,
-      "events",
-      await byTrial(async (trialId) => {
-        const reader = streamed((await downloads.trials.export({ trialId, format })).body).getReader();
-        for (let read = await reader.read(); !read.done; read = await reader.read()) Bun.gc(true);
-      }),
-    );
-    // The same bytes built whole in memory, as the study's zip takes a batch of trials: what the download did before.
-    print(
-      `${name}: built whole in memory (the zip's batch path)`,
-      TRIAL_SIZES,
-      "events",
-      await byTrial((trialId) => trialsFiles(db, [trialId], [format])),
-    );
+    for (const [format, name] of [
+      ["csv", "Events export (CSV)"],
+      ["json", "Trial record export (JSON)"],
+    ] as const) {
+      print(
+        `${name}: first byte`,
+        TRIAL_SIZES,
+        "events",
+        await byTrial(async (trialId) => {
+          const reader = streamed((await downloads.trials.export({ trialId, format })).body).getReader();
+          await reader.read();
+          await reader.cancel();
+        }),
+        1000,
+      );
+      const bytes: number[] = [];
+      print(
+        `${name}: whole, streamed`,
+        TRIAL_SIZES,
+        "events",
+        await byTrial(async (trialId) => {
+          bytes.push(await drain(streamed((await downloads.trials.export({ trialId, format })).body)));
+        }),
+        2000,
+      );
+      console.log(`  (sizes: ${[0, 1, 2].map((i) => `${(bytes[i * RUNS]! / 1e6).toFixed(1)} MB`).join(", ")})`);
+      // The peak above counts garbage the collector has not yet reclaimed; with a full collection after
+      // each piece it is what the download holds (its time is then the collector's, not the download's).
+      print(
+        `${name}: whole, streamed, collected after each piece (memory held)`,
+        TRIAL_SIZES,
+        "events",
+        await byTrial(async (trialId) => {
+          const reader = streamed((await downloads.trials.export({ trialId, format })).body).getReader();
+          for (let read = await reader.read(); !read.done; read = await reader.read()) Bun.gc(true);
+        }),
+      );
+      // The same bytes built whole in memory, as the study's zip takes a batch of trials: what the download did before.
+      print(
+        `${name}: built whole in memory (the zip's batch path)`,
+        TRIAL_SIZES,
+        "events",
+        await byTrial((trialId) => trialsFiles(db, [trialId], [format])),
+      );
+    }
   }
   console.log(
     `\nMachine load after (1, 5, 15 min): ${(await Bun.file("/proc/loadavg").text()).split(" ").slice(0, 3).join(" ")}`,
