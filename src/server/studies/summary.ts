@@ -3,32 +3,19 @@
 // the same trials with the questionnaire scores, compared by condition.
 //
 // A trial's figures are folded from its log once, when first asked for after
-// it ended, and kept (src/store/trial-figures.ts); later reads take the kept
+// it ended, and kept (./fold-figures.ts); later reads take the kept
 // copy while it is current, so the Results tab reads a row per trial rather
 // than every trial's events. Who counts (withdrawn, rehearsal, condition) is
 // decided here at each read, never kept.
 import { and, asc, eq, inArray, ne, sql } from "drizzle-orm";
 import { resultsByCondition } from "@/core/analysis/by-condition";
-import { fidelityReport } from "@/core/analysis/fidelity";
 import { studySummary, type TrialFigures } from "@/core/analysis/study-summary";
-import { type ReportFigures, reportFigures } from "@/core/analysis/trial-figures";
-import type { TrialEvent } from "@/core/trial";
+import type { ReportFigures } from "@/core/analysis/trial-figures";
 import type { Database } from "@/store/client";
-import {
-  conditions,
-  experimentVersions,
-  participants,
-  questionnaireLinks,
-  trialEvents,
-  trialFigures,
-  trials,
-} from "@/store/schema";
-import { eventsOfTrials } from "@/store/event-store";
-import { isCurrent, type KeptFigures, keepFigures } from "@/store/trial-figures";
+import { conditions, participants, questionnaireLinks, trialEvents, trialFigures, trials } from "@/store/schema";
+import { isCurrent } from "@/store/trial-figures";
 import { submitted } from "../questionnaires/responses";
-
-/** A hundred trials' events are read in one query, folded, and let go before the next hundred. */
-const FOLD_BATCH = 100;
+import { foldFigures } from "./fold-figures";
 
 async function finishedTrials(db: Database, studyId: string): Promise<TrialFigures[]> {
   const rows = await db
@@ -62,60 +49,18 @@ async function finishedTrials(db: Database, studyId: string): Promise<TrialFigur
       ),
     )
     .orderBy(asc(trials.createdAt));
-  const figures = new Map<string, ReportFigures>();
-  const stale: typeof rows = [];
-  for (const r of rows) {
-    // A trial that is not a rehearsal always has a published version.
-    if (isCurrent(r.kept, { versionId: r.versionId!, lastSeq: r.lastSeq }))
-      figures.set(r.id, r.kept!.figures as ReportFigures);
-    else stale.push(r);
-  }
-  for (const kept of await foldAndKeep(
+  // A trial that is not a rehearsal always has a published version.
+  const stale = rows.filter((r) => !isCurrent(r.kept, { versionId: r.versionId!, lastSeq: r.lastSeq }));
+  const folded = await foldFigures(
     db,
-    stale.map((r) => ({ id: r.id, versionId: r.versionId! })),
-  ))
-    figures.set(kept.trialId, kept.figures);
+    stale.map((r) => ({ id: r.id, versionId: r.versionId!, lastSeq: r.lastSeq })),
+  );
   return rows.map((r) => ({
     trialId: r.id,
     participantCode: r.code,
     condition: r.condition,
-    report: figures.get(r.id)!,
+    report: folded.get(r.id) ?? (r.kept!.figures as ReportFigures),
   }));
-}
-
-/** Folds these trials' logs into their figures, a batch at a time, and keeps them. */
-async function foldAndKeep(db: Database, stale: Array<{ id: string; versionId: string }>): Promise<KeptFigures[]> {
-  if (!stale.length) return [];
-  const versionIds = [...new Set(stale.map((t) => t.versionId))];
-  const protocols = new Map(
-    (
-      await db
-        .select({ id: experimentVersions.id, snapshot: experimentVersions.snapshot })
-        .from(experimentVersions)
-        .where(inArray(experimentVersions.id, versionIds))
-    ).map((v) => [v.id, v.snapshot]),
-  );
-  const kept: KeptFigures[] = [];
-  for (let start = 0; start < stale.length; start += FOLD_BATCH) {
-    const batch = stale.slice(start, start + FOLD_BATCH);
-    const events = await eventsOfTrials(
-      db,
-      batch.map((t) => t.id),
-    );
-    const folded = batch.map(({ id, versionId }) => {
-      const log = events.get(id)!;
-      return {
-        trialId: id,
-        versionId,
-        // The last event folded, not the one seen before reading: an event appended meanwhile makes it stale.
-        lastSeq: log.at(-1)?.seq ?? 0,
-        figures: reportFigures(fidelityReport(protocols.get(versionId)!, log as unknown as TrialEvent[])),
-      };
-    });
-    await keepFigures(db, folded);
-    kept.push(...folded);
-  }
-  return kept;
 }
 
 export async function studyFigures(db: Database, studyId: string) {
