@@ -6,10 +6,9 @@
 import { inArray } from "drizzle-orm";
 import { fidelityReport } from "@/core/analysis/fidelity";
 import { type ReportFigures, reportFigures } from "@/core/analysis/trial-figures";
-import type { TrialEvent } from "@/core/trial";
 import type { Database } from "@/store/client";
 import { logUnexpected } from "@/store/error-reference";
-import { eventsOfTrials } from "@/store/event-store";
+import { foldableEventsOfTrials } from "@/store/event-store";
 import { experimentVersions } from "@/store/schema";
 import { type KeptFigures, keepFigures } from "@/store/trial-figures";
 
@@ -62,7 +61,7 @@ async function foldBatch(
   batch: TrialToFold[],
   protocols: Awaited<ReturnType<typeof protocolsOf>>,
 ): Promise<Map<string, ReportFigures>> {
-  const events = await eventsOfTrials(
+  const events = await foldableEventsOfTrials(
     db,
     batch.map((t) => t.id),
   );
@@ -73,7 +72,7 @@ async function foldBatch(
       versionId,
       // The last event folded, not the one seen before reading: an event appended meanwhile leaves the copy stale.
       lastSeq: log.at(-1)?.seq ?? 0,
-      figures: reportFigures(fidelityReport(protocols.get(versionId)!, log as unknown as TrialEvent[])),
+      figures: reportFigures(fidelityReport(protocols.get(versionId)!, log)),
     };
   });
   // The figures stand whether or not they could be kept (a trial deleted meanwhile): the next read folds again.
