@@ -67,7 +67,12 @@ beforeAll(async () => {
   await (await trial("P1"))({ kind: "start" }, { kind: "next" }, ...done, { kind: "complete" });
   lateWave = await trial("P2");
   await lateWave({ kind: "start" }, { kind: "next" }, done[0]!, { kind: "complete" });
-  await (await trial("P3"))({ kind: "start" }, { kind: "skip", actionId: waveId }, { kind: "abort", reason: "ill" });
+  await (await trial("P3"))(
+    { kind: "start" },
+    { kind: "unscripted", actionId: "extra", actionType: "nod", parameters: {} },
+    { kind: "skip", actionId: waveId },
+    { kind: "abort", reason: "ill" },
+  );
   await (await trial("P4"))({ kind: "start" });
   const rehearsal = (await owner.trials.rehearse({ experimentId: experiment.id })).id;
   trialOf.rehearsal = rehearsal;
@@ -118,6 +123,8 @@ describe("the figures kept for the Results tab", () => {
       ["P3", 0],
     ]);
     expect(await owner.studies.resultsByCondition({ studyId })).toEqual(resultsByCondition(reports, []));
+    // The deviation kinds in the order the trials met them, as the tab lists them (not sorted by the database).
+    expect(Object.keys(fromKept.consistency.deviationsByKind)).toEqual(["unscripted", "skipped"]);
     await db.delete(trialFigures);
     // Both at once, as the Results tab asks for them: one fold of each log, shared, and the same tables.
     const [folded, byCondition] = await Promise.all([

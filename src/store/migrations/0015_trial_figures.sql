@@ -3,7 +3,7 @@ CREATE TABLE "trial_figures" (
 	"figures_version" integer NOT NULL,
 	"version_id" text NOT NULL,
 	"last_seq" bigint NOT NULL,
-	"figures" jsonb NOT NULL,
+	"figures" json NOT NULL,
 	"computed_at" timestamp with time zone DEFAULT now() NOT NULL
 );
 --> statement-breakpoint

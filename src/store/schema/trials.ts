@@ -6,6 +6,7 @@ import {
   doublePrecision,
   index,
   integer,
+  json,
   jsonb,
   pgTable,
   primaryKey,
@@ -147,6 +148,7 @@ export const trialFigures = pgTable("trial_figures", {
   figuresVersion: integer("figures_version").notNull(),
   versionId: text("version_id").notNull(),
   lastSeq: bigint("last_seq", { mode: "number" }).notNull(),
-  figures: jsonb("figures").notNull(),
+  // json, not jsonb: kept as written, so the deviation kinds come back in the order the trial met them.
+  figures: json("figures").notNull(),
   computedAt: timestamp("computed_at", { withTimezone: true }).notNull().defaultNow(),
 });
