@@ -9,7 +9,8 @@
 // trial under 1 s and the exports under 2 s, their first byte under 1 s. The
 // analysis page in Chromium is bench/analysis (it needs the built app).
 // `bun bench/scaling.ts trials` measures the trials of 1k to 100k events only,
-// `bun bench/scaling.ts studies` the studies of 10 to 1,000 trials only.
+// `bun bench/scaling.ts studies` the studies of 10 to 1,000 trials only, and
+// `bun bench/scaling.ts results` their Trials and Results tabs only (a minute).
 import { eventsSince } from "../src/store/event-store";
 import { createDatabase } from "../src/store/client";
 import { fold } from "../src/core/trial/fold";
@@ -23,7 +24,8 @@ const STUDY_SIZES = [10, 100, 1000];
 const EVENTS_PER_TRIAL = 200;
 const TRIAL_SIZES = [1000, 10_000, 100_000];
 const TRIALS_ONLY = process.argv[2] === "trials";
-const STUDIES_ONLY = process.argv[2] === "studies";
+const TABS_ONLY = process.argv[2] === "results";
+const STUDIES_ONLY = process.argv[2] === "studies" || TABS_ONLY;
 
 const database = await scratchDatabase();
 const { db, close } = createDatabase(database.url, { max: 4 });
@@ -197,6 +199,7 @@ try {
       await byStudy(resultsTab),
       1000,
     );
+    if (TABS_ONLY) return;
     print(
       "Study zip: first byte",
       STUDY_SIZES,
