@@ -9,7 +9,9 @@
 // trial under 1 s and the exports under 2 s, their first byte under 1 s. The
 // analysis page in Chromium is bench/analysis (it needs the built app).
 // `bun bench/scaling.ts trials` measures the trials of 1k to 100k events and the
-// trials of 1.8k to 180k robot state samples only; `… samples` the latter only.
+// trials of 1.8k to 180k robot state samples only; `… samples` the latter only;
+// `… studies` the studies of 10 to 1,000 trials only, and `… results` their
+// Trials and Results tabs only (a minute).
 import { eventsSince } from "../src/store/event-store";
 import { createDatabase } from "../src/store/client";
 import { fold } from "../src/core/trial/fold";
@@ -27,6 +29,8 @@ const TRIAL_SIZES = [1000, 10_000, 100_000];
 const SAMPLE_SIZES = [1800, 18_000, 180_000];
 const TRIALS_ONLY = process.argv[2] === "trials" || process.argv[2] === "samples";
 const SAMPLES_ONLY = process.argv[2] === "samples";
+const TABS_ONLY = process.argv[2] === "results";
+const STUDIES_ONLY = process.argv[2] === "studies" || TABS_ONLY;
 
 const database = await scratchDatabase();
 const { db, close } = createDatabase(database.url, { max: 4 });
@@ -94,11 +98,12 @@ async function insertSamples(trialId: string, count: number) {
   }
 }
 
-/** Runs `path` RUNS times: the median time and the largest peak of memory above where it started. */
-async function measure(path: () => Promise<unknown>) {
+/** Runs `path` RUNS times (each after `setup`, untimed): the median time and the largest peak of memory above where it started. */
+async function measure(path: () => Promise<unknown>, setup?: () => Promise<unknown>) {
   const times: number[] = [];
   let peakMb = 0;
   for (let i = 0; i < RUNS; i++) {
+    await setup?.();
     Bun.gc(true);
     const before = process.memoryUsage().rss;
     let peak = before;
@@ -154,18 +159,23 @@ try {
   const studiesBySize: Awaited<ReturnType<typeof seedStudy>>[] = [];
   if (!TRIALS_ONLY) for (const size of STUDY_SIZES) studiesBySize.push(await seedStudy(f, size, EVENTS_PER_TRIAL));
   const trialsBySize: Awaited<ReturnType<typeof seedStudy>>[] = [];
-  if (!SAMPLES_ONLY) for (const size of TRIAL_SIZES) trialsBySize.push(await seedStudy(f, 1, size));
+  if (!SAMPLES_ONLY && !STUDIES_ONLY) for (const size of TRIAL_SIZES) trialsBySize.push(await seedStudy(f, 1, size));
   const sampledBySize: Awaited<ReturnType<typeof seedStudy>>[] = [];
-  for (const size of SAMPLE_SIZES) {
-    const seeded = await seedStudy(f, 1, 1000);
-    await insertSamples(seeded.trialIds[0]!, size);
-    sampledBySize.push(seeded);
-  }
+  if (!STUDIES_ONLY)
+    for (const size of SAMPLE_SIZES) {
+      const seeded = await seedStudy(f, 1, 1000);
+      await insertSamples(seeded.trialIds[0]!, size);
+      sampledBySize.push(seeded);
+    }
   await sql`analyze`;
 
-  const byStudy = async (path: (studyId: string) => Promise<unknown>) => {
+  const byStudy = async (
+    path: (studyId: string) => Promise<unknown>,
+    setup?: (studyId: string) => Promise<unknown>,
+  ) => {
     const results = [];
-    for (const { study } of studiesBySize) results.push(await measure(() => path(study.id)));
+    for (const { study } of studiesBySize)
+      results.push(await measure(() => path(study.id), setup && (() => setup(study.id))));
     return results;
   };
   const byTrial = async (
@@ -201,15 +211,27 @@ try {
       await byStudy((studyId) => owner.trials.list({ studyId })),
       1000,
     );
+    const resultsTab = (studyId: string) =>
+      Promise.all([owner.studies.figures({ studyId }), owner.studies.resultsByCondition({ studyId })]);
+    // Each ended trial's figures are folded once and kept: the first call after trials end folds their logs.
+    print(
+      "Results tab, first call after the trials ended (no figures kept yet: every log folded)",
+      STUDY_SIZES,
+      "trials",
+      await byStudy(
+        resultsTab,
+        (studyId) =>
+          sql`delete from trial_figures using trials where trials.id = trial_id and trials.study_id = ${studyId}`,
+      ),
+    );
     print(
       "Results tab (studies.figures and resultsByCondition)",
       STUDY_SIZES,
       "trials",
-      await byStudy((studyId) =>
-        Promise.all([owner.studies.figures({ studyId }), owner.studies.resultsByCondition({ studyId })]),
-      ),
+      await byStudy(resultsTab),
       1000,
     );
+    if (TABS_ONLY) return;
     print(
       "Study zip: first byte",
       STUDY_SIZES,
@@ -243,8 +265,8 @@ try {
     );
   }
 
-  if (!SAMPLES_ONLY) await trials();
-  await sampled();
+  if (!SAMPLES_ONLY && !STUDIES_ONLY) await trials();
+  if (!STUDIES_ONLY) await sampled();
 
   /** The trial-sized paths: opening the trial, the analysis page's data, the events CSV and the record. */
   async function trials() {

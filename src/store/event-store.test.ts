@@ -2,7 +2,16 @@ import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { bareTrial, freshDatabase } from "../../tests/support/db";
 import { trials } from "./schema";
-import { appendEvents, eventPages, eventsSince, lastSeqOf, NOTIFY_CHANNEL, type TrialCursor } from "./event-store";
+import {
+  appendEvents,
+  eventPages,
+  eventsOfTrials,
+  eventsSince,
+  foldableEventsOfTrials,
+  lastSeqOf,
+  NOTIFY_CHANNEL,
+  type TrialCursor,
+} from "./event-store";
 
 describe("the trial event store", async () => {
   const { db, sql, close } = await freshDatabase();
@@ -99,6 +108,25 @@ describe("the trial event store", async () => {
     expect(await pages({ limit: 2, upTo: 3 })).toEqual([[1, 2], [3]]);
     expect(await lastSeqOf(db, trialId)).toBe(5);
     expect(await lastSeqOf(db, await newTrial())).toBe(0);
+  });
+
+  it("reads several trials' logs in one go, whole for exports and as the engine folds them", async () => {
+    const [a, b, empty] = [await newTrial(), await newTrial(), await newTrial()];
+    await appendEvents(db, await cursor(a), [{ type: "trial.started" }, { type: "note.added", text: "a" }], null);
+    await appendEvents(db, await cursor(b), [{ type: "note.added", text: "b" }], null);
+    const whole = await eventsOfTrials(db, [a, b, empty]);
+    const foldable = await foldableEventsOfTrials(db, [a, b, empty]);
+    expect([...foldable.keys()]).toEqual([a, b, empty]);
+    for (const id of [a, b, empty])
+      expect(foldable.get(id)).toEqual(
+        whole.get(id)!.map(({ trialId: _t, serverTime: _s, actorId: _a, ...event }) => event),
+      );
+    expect(foldable.get(a)!.map((e) => [e.seq, e.type])).toEqual([
+      [1, "trial.started"],
+      [2, "note.added"],
+    ]);
+    expect(foldable.get(empty)).toEqual([]);
+    expect(await foldableEventsOfTrials(db, [])).toEqual(new Map());
   });
 
   it("notifies listeners after the commit", async () => {

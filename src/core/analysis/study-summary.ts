@@ -2,13 +2,14 @@
 // timing across participants, and how consistently the protocol was run.
 // Published reviews find that WoZ studies rarely report wizard error; this is
 // the number to report.
-import type { FidelityReport } from "./fidelity";
+import type { ReportFigures } from "./trial-figures";
 
 export interface TrialFigures {
   trialId: string;
   participantCode: string | null;
   condition: string | null;
-  report: FidelityReport;
+  /** Its fidelity report, or the part of it these tables read. */
+  report: ReportFigures;
 }
 
 export interface Spread {

@@ -1,15 +1,21 @@
 // The study-level figures: every finished, non-rehearsal trial of a
 // participant who has not withdrawn, folded into its fidelity report; and
 // the same trials with the questionnaire scores, compared by condition.
-import { and, asc, eq, inArray, ne } from "drizzle-orm";
+//
+// A trial's figures are folded from its log once, when first asked for after
+// it ended, and kept (./fold-figures.ts); later reads take the kept
+// copy while it is current, so the Results tab reads a row per trial rather
+// than every trial's events. Who counts (withdrawn, rehearsal, condition) is
+// decided here at each read, never kept.
+import { and, asc, eq, inArray, ne, sql } from "drizzle-orm";
 import { resultsByCondition } from "@/core/analysis/by-condition";
-import { fidelityReport } from "@/core/analysis/fidelity";
 import { studySummary, type TrialFigures } from "@/core/analysis/study-summary";
-import type { TrialEvent } from "@/core/trial";
+import type { ReportFigures } from "@/core/analysis/trial-figures";
 import type { Database } from "@/store/client";
-import { conditions, experimentVersions, participants, questionnaireLinks, trials } from "@/store/schema";
-import { eventsOfTrials } from "@/store/event-store";
+import { conditions, participants, questionnaireLinks, trialEvents, trialFigures, trials } from "@/store/schema";
+import { isCurrent } from "@/store/trial-figures";
 import { submitted } from "../questionnaires/responses";
+import { foldFigures } from "./fold-figures";
 
 async function finishedTrials(db: Database, studyId: string): Promise<TrialFigures[]> {
   const rows = await db
@@ -17,12 +23,23 @@ async function finishedTrials(db: Database, studyId: string): Promise<TrialFigur
       id: trials.id,
       code: participants.code,
       condition: conditions.name,
-      protocol: experimentVersions.snapshot,
+      versionId: trials.versionId,
+      // The primary key's index answers this with one probe per trial.
+      lastSeq:
+        sql<number>`coalesce((select max(${trialEvents.seq}) from ${trialEvents} where ${trialEvents.trialId} = ${trials.id}), 0)`.mapWith(
+          Number,
+        ),
+      kept: {
+        figuresVersion: trialFigures.figuresVersion,
+        versionId: trialFigures.versionId,
+        lastSeq: trialFigures.lastSeq,
+        figures: trialFigures.figures,
+      },
     })
     .from(trials)
-    .innerJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
     .innerJoin(participants, eq(participants.id, trials.participantId))
     .leftJoin(conditions, eq(conditions.id, participants.conditionId))
+    .leftJoin(trialFigures, eq(trialFigures.trialId, trials.id))
     .where(
       and(
         eq(trials.studyId, studyId),
@@ -32,24 +49,18 @@ async function finishedTrials(db: Database, studyId: string): Promise<TrialFigur
       ),
     )
     .orderBy(asc(trials.createdAt));
-  // A hundred trials' events in one query at a time (not a query per trial), each batch
-  // folded into reports and let go before the next is read.
-  const figures: TrialFigures[] = [];
-  for (let start = 0; start < rows.length; start += 100) {
-    const batch = rows.slice(start, start + 100);
-    const events = await eventsOfTrials(
-      db,
-      batch.map((r) => r.id),
-    );
-    for (const r of batch)
-      figures.push({
-        trialId: r.id,
-        participantCode: r.code,
-        condition: r.condition,
-        report: fidelityReport(r.protocol, events.get(r.id) as unknown as TrialEvent[]),
-      });
-  }
-  return figures;
+  // A trial that is not a rehearsal always has a published version.
+  const stale = rows.filter((r) => !isCurrent(r.kept, { versionId: r.versionId!, lastSeq: r.lastSeq }));
+  const folded = await foldFigures(
+    db,
+    stale.map((r) => ({ id: r.id, versionId: r.versionId!, lastSeq: r.lastSeq })),
+  );
+  return rows.map((r) => ({
+    trialId: r.id,
+    participantCode: r.code,
+    condition: r.condition,
+    report: folded.get(r.id) ?? (r.kept!.figures as ReportFigures),
+  }));
 }
 
 export async function studyFigures(db: Database, studyId: string) {

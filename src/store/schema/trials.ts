@@ -6,6 +6,7 @@ import {
   doublePrecision,
   index,
   integer,
+  json,
   jsonb,
   pgTable,
   primaryKey,
@@ -140,3 +141,18 @@ export const mediaRecordings = pgTable(
   },
   (t) => [index("media_recordings_trial_idx").on(t.trialId)],
 );
+
+// Each ended trial's figures for the study's tables, folded once from its log (src/server/studies/summary.ts).
+// A copy stands while its figures version, the trial's protocol version and its last seq are still the trial's:
+// a robot's late report after the end, or a new way of computing, makes it again.
+export const trialFigures = pgTable("trial_figures", {
+  trialId: text("trial_id")
+    .primaryKey()
+    .references(() => trials.id, { onDelete: "cascade" }),
+  figuresVersion: integer("figures_version").notNull(),
+  versionId: text("version_id").notNull(),
+  lastSeq: bigint("last_seq", { mode: "number" }).notNull(),
+  // json, not jsonb: kept as written, so the deviation kinds come back in the order the trial met them.
+  figures: json("figures").notNull(),
+  computedAt: timestamp("computed_at", { withTimezone: true }).notNull().defaultNow(),
+});
