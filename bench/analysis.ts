@@ -1,16 +1,19 @@
-// bench/analysis: the analysis of a 60-minute trial with 2,000 events and
-// 180,000 robot samples (joint states at 50 Hz). Measures the data (the
-// trial, its events and its samples thinned for the chart, over HTTP as the
-// page loads them) and,
-// in Chromium, the page until it is interactive (figures, table and chart
-// drawn). Targets: data under 500 ms, page under 2 s.
+// bench/analysis: the analysis of a 60-minute trial with 2,000 events (or as
+// many as the first argument says: `bun bench/analysis.ts 100000`) and 180,000
+// robot samples (joint states at 50 Hz). Measures the data (the trial, its
+// events and its samples thinned for the chart, over HTTP as the page loads
+// them) and, in Chromium, the page until it is interactive (figures, table
+// and chart drawn). Targets: data under 500 ms, page under 2 s (issue 15 asks
+// the page under 2 s at 100k events too).
 import { launchBrowser, newContext, signInAs } from "../tests/support/browser";
 import { DEMO_PASSWORD, startApp } from "../tests/support/app";
 import { apiClient, signIn } from "../tests/support/http";
+import { loadavg } from "node:os";
 import { createDatabase } from "../src/store/client";
 import { report, scratchDatabase, unscriptedLog } from "./support";
 
-const EVENTS = 2000;
+const EVENTS = Number(process.argv[2] ?? 2000);
+if (!Number.isInteger(EVENTS) || EVENTS < 2) throw new Error("bench/analysis takes the number of events, at least 2");
 const SAMPLES = 180_000;
 const MINUTES = 60;
 const RUNS = 7;
@@ -31,7 +34,9 @@ try {
   const span = MINUTES * 60_000;
   const events = unscriptedLog(trial.id, EVENTS, t0, (i) => Math.round((i / EVENTS) * span));
   const sql = db.$client;
-  await sql`insert into trial_events ${sql(events)}`;
+  // In batches: one statement carries at most 65,535 parameters.
+  for (let start = 0; start < events.length; start += 5000)
+    await sql`insert into trial_events ${sql(events.slice(start, start + 5000))}`;
   const names = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
   for (let start = 0; start < SAMPLES; start += 10_000) {
     const rows = Array.from({ length: Math.min(10_000, SAMPLES - start) }, (_, k) => {
@@ -58,7 +63,12 @@ try {
     data.push(performance.now() - started);
   }
 
-  console.log(`A ${MINUTES}-minute trial with ${EVENTS} events and ${SAMPLES} robot samples:`);
+  // The machine is shared: its load says how far to trust the figures.
+  const load = () =>
+    loadavg()
+      .map((n) => n.toFixed(2))
+      .join(" ");
+  console.log(`A ${MINUTES}-minute trial with ${EVENTS} events and ${SAMPLES} robot samples (load average ${load()}):`);
   report("trial, events and samples loaded over HTTP", data, 500);
 
   const browser = await launchBrowser();
@@ -69,11 +79,16 @@ try {
     const started = performance.now();
     await page.goto(`/trials/${trial.id}/analysis`);
     await page.getByRole("heading", { name: "Robot joint angles" }).waitFor({ timeout: 60_000 });
-    await page.getByText("trial.completed").waitFor({ timeout: 60_000 });
+    // Interactive: the events list answers the keyboard, End reaching the last event (the list draws only what is in view).
+    const list = page.getByRole("group", { name: /^Events and annotations/ });
+    await list.getByRole("button", { name: /trial\.started/ }).focus({ timeout: 60_000 });
+    await page.keyboard.press("End");
+    await list.getByRole("button", { name: /trial\.completed/ }).waitFor({ timeout: 60_000 });
     interactive.push(performance.now() - started);
   }
   await browser.close();
   report("analysis page in Chromium until interactive", interactive, 2000);
+  console.log(`load average at the end: ${load()}`);
 } finally {
   await close();
   await app.stop();
