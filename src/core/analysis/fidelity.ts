@@ -78,7 +78,17 @@ type E = TrialEvent & {
 /** `names`: the robot plugin's names of its own actions, so unlabelled actions read as the library shows them. */
 export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], names?: ActionNames): FidelityReport {
   const log = events as E[];
-  const first = (type: string, actionId: string) => log.find((e) => e.type === type && e.actionId === actionId);
+  // Each action's events, in log order: looked up per planned action, not searched for in the whole log
+  // (a log of 100k events searched a dozen times per action took longer than everything else on the page).
+  const byAction = new Map<string, E[]>();
+  for (const e of log) {
+    if (e.actionId === undefined) continue;
+    const events = byAction.get(e.actionId);
+    if (events) events.push(e);
+    else byAction.set(e.actionId, [e]);
+  }
+  const ofAction = (actionId: string) => byAction.get(actionId) ?? [];
+  const first = (type: string, actionId: string) => ofAction(actionId).find((e) => e.type === type);
   const entries = log.filter((e) => e.type === "step.entered");
   const end =
     log.find((e) => e.type === "trial.completed" || e.type === "trial.aborted")?.relMs ?? log.at(-1)?.relMs ?? null;
@@ -127,7 +137,7 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
         type: a.type,
         name: actionName(a, names),
         outcome,
-        outOfOrder: log.some((e) => e.actionId === a.id && e.deviation === "out_of_order"),
+        outOfOrder: ofAction(a.id).some((e) => e.deviation === "out_of_order"),
         requestedMs: at(requested),
         durationMs:
           requested && finished && at(finished) !== null && at(requested) !== null
