@@ -11,15 +11,16 @@ export const NOTIFY_CHANNEL = "hri_trial_events";
 type Row = typeof trialEvents.$inferSelect;
 
 function toStored(row: Row): StoredEvent {
-  return {
-    // The payload is the engine's event itself, deviation kind included.
-    ...(row.payload as EngineEvent),
-    seq: row.seq,
-    relMs: row.relMs,
-    trialId: row.trialId,
-    serverTime: row.serverTime,
-    actorId: row.actorId,
-  };
+  return { ...toTrialEvent(row), trialId: row.trialId, serverTime: row.serverTime, actorId: row.actorId };
+}
+
+/**
+ * An event as the fold reads it: its body (the payload is the engine's event
+ * itself, deviation kind included) with its seq and time since t0, without
+ * the trial, server time and actor every stored event repeats.
+ */
+function toTrialEvent(row: Pick<Row, "seq" | "relMs" | "payload">): TrialEvent {
+  return { ...(row.payload as EngineEvent), seq: row.seq, relMs: row.relMs };
 }
 
 /** The trial status each event moves the trial to (the rest leave it as it is). */
@@ -177,6 +178,20 @@ export async function eventsSince(db: Database, trialId: string, afterSeq = 0, p
   return (await (page ? query.limit(page.limit) : query)).map(toStored);
 }
 
+/**
+ * The events after `afterSeq`, in order, as the fold reads them (see
+ * toTrialEvent). A trial of 100k events is half the bytes to read, send and
+ * parse (what the analysis page loads).
+ */
+export async function trialLog(db: Database, trialId: string, afterSeq = 0): Promise<TrialEvent[]> {
+  const rows = await db
+    .select({ seq: trialEvents.seq, relMs: trialEvents.relMs, payload: trialEvents.payload })
+    .from(trialEvents)
+    .where(and(eq(trialEvents.trialId, trialId), gt(trialEvents.seq, afterSeq)))
+    .orderBy(asc(trialEvents.seq));
+  return rows.map(toTrialEvent);
+}
+
 /** A trial's events page by page (see eventsSince and keyedPages): at most two pages are held. */
 export function eventPages(db: Database, trialId: string, page: Page): AsyncGenerator<StoredEvent[]> {
   return keyedPages(
@@ -215,12 +230,7 @@ export async function eventsOfTrials(db: Database, trialIds: string[]): Promise<
  * figures are folded from, a batch of trials at a time.
  */
 export async function foldableEventsOfTrials(db: Database, trialIds: string[]): Promise<Map<string, TrialEvent[]>> {
-  const toEvent = (row: { seq: number; relMs: number | null; payload: unknown }): TrialEvent => ({
-    ...(row.payload as EngineEvent),
-    seq: row.seq,
-    relMs: row.relMs,
-  });
-  if (!trialIds.length) return byTrial(trialIds, [], toEvent);
+  if (!trialIds.length) return byTrial(trialIds, [], toTrialEvent);
   const rows = await db
     .select({
       trialId: trialEvents.trialId,
@@ -231,7 +241,7 @@ export async function foldableEventsOfTrials(db: Database, trialIds: string[]): 
     .from(trialEvents)
     .where(inArray(trialEvents.trialId, trialIds))
     .orderBy(asc(trialEvents.trialId), asc(trialEvents.seq));
-  return byTrial(trialIds, rows, toEvent);
+  return byTrial(trialIds, rows, toTrialEvent);
 }
 
 /** Rows read in trial order, grouped by trial: every trial asked for has its list, empty if it has no events. */

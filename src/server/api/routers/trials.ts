@@ -8,7 +8,7 @@ import { blindTrial } from "@/core/studies/blinding";
 import { annotations, experimentVersions, experiments, participants, trialSamples, trials, user } from "@/store/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "@/core/protocol/snapshot";
-import { eventsSince } from "@/store/event-store";
+import { trialLog } from "@/store/event-store";
 import { trialFile } from "../../trials/files";
 import { trialActionNames } from "../../trials/action-names";
 import { assertMayTakePart } from "../../studies/consent-gate";
@@ -119,14 +119,14 @@ export const trialsRouter = router({
     return ctx.blinding.conditionsHidden ? shown.map(blindTrial) : shown;
   }),
 
-  /** The trial's event log in order: what reports, exports and replays fold. */
+  /** The trial's event log in order, as the fold reads it (seq, time since t0, body): what the analysis page folds. */
   events: studyProcedure(
     "data.read",
     "trial",
     z.object({ trialId: id, afterSeq: z.number().int().min(0).default(0) }),
   ).query(async ({ ctx, input }) => {
     await assertNotWithdrawn(ctx.db, ctx.row.id);
-    return eventsSince(ctx.db, ctx.row.id, input.afterSeq);
+    return trialLog(ctx.db, ctx.row.id, input.afterSeq);
   }),
 
   /** Annotations observers and wizards made, on the trial's clock. */
