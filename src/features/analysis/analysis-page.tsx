@@ -6,7 +6,7 @@ import Link from "next/link";
 import { useMemo, useRef, useState } from "react";
 import { fidelityReport } from "@/core/analysis/fidelity";
 import { trialNames } from "@/core/analysis/names";
-import type { TrialEvent, TrialProtocol } from "@/core/trial";
+import type { TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
 import { QuestionnaireAnswers } from "./questionnaire-answers";
 import { AgreementPanel } from "../coding/agreement-panel";
@@ -14,23 +14,13 @@ import { CodeTiers } from "../coding/code-tiers";
 import { AnnotationsEditor } from "./annotations-editor";
 import { TimelineChart } from "./timeline-chart";
 import { EventList, type TimelineItem } from "./event-list";
+import { PlannedTable } from "./planned-table";
 import { RecordingPlayer, useTrialRecording, videoSeconds } from "./recording-player";
 import { Problem } from "@/ui/problem";
-import { Badge, Card, Spinner, type Tone } from "@/ui/surface";
-import { Table, Td, Th } from "@/ui/table";
-import { seconds } from "@/ui/format";
+import { Badge, Card, Spinner } from "@/ui/surface";
 import { JointAngles } from "./joint-angles";
 import { ReplayControl } from "./replay-control";
 import { TrialPeople } from "@/features/execution/trial-people";
-
-const OUTCOME_TONE: Record<string, Tone> = {
-  executed: "green",
-  skipped: "amber",
-  failed: "red",
-  timed_out: "red",
-  not_reached: "slate",
-  running: "blue",
-};
 
 export function AnalysisPage({ trialId }: { trialId: string }) {
   const trpc = useTRPC();
@@ -47,11 +37,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   const report = useMemo(
     () =>
       trial.data && events.data
-        ? fidelityReport(
-            trial.data.protocol as TrialProtocol,
-            events.data as unknown as TrialEvent[],
-            trial.data.actionNames,
-          )
+        ? fidelityReport(trial.data.protocol as TrialProtocol, events.data, trial.data.actionNames)
         : null,
     [trial.data, events.data],
   );
@@ -61,6 +47,22 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         ? trialNames(trial.data.protocol as TrialProtocol, events.data, trial.data.actionNames)
         : null,
     [trial.data, events.data],
+  );
+  // Every event and annotation in time order, and the deviations: built once per load, not on every move of the playhead.
+  const timeline = useMemo<TimelineItem[]>(
+    () =>
+      [
+        ...(events.data ?? []).map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })),
+        ...(annotations.data ?? []).map((m) => ({ at: m.relMs, kind: "annotation" as const, m })),
+      ].sort((a, b) => a.at - b.at),
+    [events.data, annotations.data],
+  );
+  const deviations = useMemo(
+    () =>
+      (events.data ?? [])
+        .filter((e) => e.deviation && e.relMs !== null)
+        .map((e) => ({ at: e.relMs!, kind: String(e.deviation) })),
+    [events.data],
   );
   if (trial.isPending || events.isPending) return <Spinner label="Loading the trial…" />;
   if (trial.error || events.error) return <Problem error={trial.error ?? events.error} />;
@@ -72,10 +74,6 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
     const problem = e as { type?: string; text?: string };
     return actionName ?? stepName ?? (problem.type === "robot.problem" ? problem.text : undefined);
   };
-  const timeline: TimelineItem[] = [
-    ...events.data.map((e) => ({ at: e.relMs ?? 0, kind: "event" as const, e })),
-    ...(annotations.data ?? []).map((m) => ({ at: m.relMs, kind: "annotation" as const, m })),
-  ].sort((a, b) => a.at - b.at);
   // One time axis for the timeline and the robot's state: to the last event, annotation or sample.
   const endMs = Math.max(timeline.at(-1)?.at ?? 0, (samples.data ?? []).at(-1)?.relMs ?? 0);
   // A moment of the trial chosen on the timeline: the recording goes there, or (with none) the replay's playhead.
@@ -137,50 +135,13 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
       <QuestionnaireAnswers trialId={trialId} studyId={t.studyId} />
       <section aria-label="Planned versus executed">
         <h2 className="mb-2 text-lg font-semibold">Planned versus executed</h2>
-        <Table>
-          <thead>
-            <tr>
-              <Th>Step</Th>
-              <Th>Action</Th>
-              <Th>Outcome</Th>
-              <Th>At</Th>
-              <Th>Took</Th>
-              <Th>To robot</Th>
-            </tr>
-          </thead>
-          <tbody>
-            {r.actions.map((a) => (
-              <tr key={a.actionId}>
-                <Td>{r.steps.find((s) => s.stepId === a.stepId)?.name}</Td>
-                <Td>{a.name}</Td>
-                <Td>
-                  <Badge tone={OUTCOME_TONE[a.outcome]}>{a.outcome.replace("_", " ")}</Badge>{" "}
-                  {a.outOfOrder && <Badge tone="amber">out of order</Badge>}
-                </Td>
-                <Td>{seconds(a.requestedMs)}</Td>
-                <Td>
-                  {seconds(a.durationMs)}
-                  {/* The robot did not say when it was done: the time is an estimate or a delivery, not its own. */}
-                  {a.confirmation === "unconfirmed" && (
-                    <>
-                      {" "}
-                      <Badge tone="amber">unconfirmed</Badge>
-                    </>
-                  )}
-                </Td>
-                <Td>{a.dispatchLatencyMs === null ? "—" : `${a.dispatchLatencyMs.toFixed(0)} ms`}</Td>
-              </tr>
-            ))}
-          </tbody>
-        </Table>
+        <PlannedTable report={r} />
       </section>
       <section aria-label="Timeline">
         <h2 className="mb-2 text-lg font-semibold">Timeline</h2>
         <TimelineChart
           report={r}
-          deviations={events.data
-            .filter((e) => e.deviation && e.relMs !== null)
-            .map((e) => ({ at: e.relMs!, kind: String(e.deviation) }))}
+          deviations={deviations}
           annotations={(annotations.data ?? []).map((m) => ({ at: m.relMs, label: m.label }))}
           endMs={endMs}
           playheadMs={playheadMs}

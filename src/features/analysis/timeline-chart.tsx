@@ -6,7 +6,7 @@
 // button. Actions and deviations can be tens of thousands in a long trial:
 // their lanes are drawn (one SVG path per colour) with one button that the
 // arrow keys move from bar to bar.
-import { useState } from "react";
+import { useMemo, useState } from "react";
 import type { FidelityReport } from "@/core/analysis/fidelity";
 import { cn } from "@/ui/cn";
 import { seconds } from "@/ui/format";
@@ -25,6 +25,33 @@ const BAND = ["bg-sky-100 text-sky-900", "bg-indigo-100 text-indigo-900"];
 
 export function TimelineChart({ report, deviations, annotations, endMs, playheadMs, onSeek }: Props) {
   const total = Math.max(1, endMs);
+  // Thousands in a long trial: made once, not on every move of the playhead.
+  const actionMarks = useMemo(
+    (): Mark[] =>
+      report.actions
+        .filter((a) => a.requestedMs !== null)
+        .map((a) => ({
+          at: a.requestedMs!,
+          to: a.requestedMs! + (a.durationMs ?? 0),
+          tone: a.outcome === "executed" ? "executed" : a.outcome === "skipped" ? "skipped" : "failed",
+          label: `Action ${a.name} at ${seconds(a.requestedMs)}`,
+          title: `${a.name}: ${a.outcome}`,
+        })),
+    [report.actions],
+  );
+  const deviationMarks = useMemo(
+    () =>
+      deviations.map(
+        (d): Mark => ({
+          at: d.at,
+          to: d.at,
+          tone: "deviation",
+          label: `Deviation: ${d.kind.replace("_", " ")} at ${seconds(d.at)}`,
+          title: d.kind.replace("_", " "),
+        }),
+      ),
+    [deviations],
+  );
   const left = (ms: number) => `${Math.min(100, Math.max(0, (ms / total) * 100))}%`;
   const width = (from: number, to: number) => `max(3px, ${Math.min(100, ((to - from) / total) * 100)}%)`;
   const seek = (ms: number) => onSeek?.(ms);
@@ -70,38 +97,8 @@ export function TimelineChart({ report, deviations, annotations, endMs, playhead
             </button>
           )),
       )}
-      {lane(
-        "Actions",
-        <DrawnMarks
-          name="Action"
-          total={total}
-          onSeek={seek}
-          marks={report.actions
-            .filter((a) => a.requestedMs !== null)
-            .map((a) => ({
-              at: a.requestedMs!,
-              to: a.requestedMs! + (a.durationMs ?? 0),
-              tone: a.outcome === "executed" ? "executed" : a.outcome === "skipped" ? "skipped" : "failed",
-              label: `Action ${a.name} at ${seconds(a.requestedMs)}`,
-              title: `${a.name}: ${a.outcome}`,
-            }))}
-        />,
-      )}
-      {lane(
-        "Deviations",
-        <DrawnMarks
-          name="Deviation"
-          total={total}
-          onSeek={seek}
-          marks={deviations.map((d) => ({
-            at: d.at,
-            to: d.at,
-            tone: "deviation",
-            label: `Deviation: ${d.kind.replace("_", " ")} at ${seconds(d.at)}`,
-            title: d.kind.replace("_", " "),
-          }))}
-        />,
-      )}
+      {lane("Actions", <DrawnMarks name="Action" total={total} onSeek={seek} marks={actionMarks} />)}
+      {lane("Deviations", <DrawnMarks name="Deviation" total={total} onSeek={seek} marks={deviationMarks} />)}
       {lane(
         "Annotations",
         annotations.map((m, i) => (
@@ -164,14 +161,19 @@ function DrawnMarks({
 }) {
   const [chosen, setChosen] = useState(0);
   const x = (ms: number) => (Math.min(total, Math.max(0, ms)) / total) * WIDE;
-  const paths = new Map<string, string[]>();
-  for (const m of marks) {
-    const d = paths.get(m.tone) ?? [];
-    d.push(
-      `M${x(m.at).toFixed(2)} 0h${Math.max(2, x(m.to) - x(m.at)).toFixed(2)}v1h-${Math.max(2, x(m.to) - x(m.at)).toFixed(2)}z`,
-    );
-    paths.set(m.tone, d);
-  }
+  // The drawing changes with the marks and the time axis only; the playhead moves often.
+  // biome-ignore lint/correctness/useExhaustiveDependencies: x follows from total, listed
+  const paths = useMemo(() => {
+    const paths = new Map<string, string[]>();
+    for (const m of marks) {
+      const d = paths.get(m.tone) ?? [];
+      d.push(
+        `M${x(m.at).toFixed(2)} 0h${Math.max(2, x(m.to) - x(m.at)).toFixed(2)}v1h-${Math.max(2, x(m.to) - x(m.at)).toFixed(2)}z`,
+      );
+      paths.set(m.tone, d);
+    }
+    return paths;
+  }, [marks, total]);
   const mark = marks[Math.min(chosen, marks.length - 1)];
   return (
     <>
