@@ -11,6 +11,7 @@ import {
   lastSeqOf,
   NOTIFY_CHANNEL,
   type TrialCursor,
+  trialLog,
 } from "./event-store";
 
 describe("the trial event store", async () => {
@@ -62,6 +63,28 @@ describe("the trial event store", async () => {
       t0: new Date("2026-01-01T10:00:01Z"),
       endedAt: new Date("2026-01-01T10:00:03.500Z"),
     });
+  });
+
+  it("reads the log as the fold reads it: each event's body, seq and time since t0, nothing each event repeats", async () => {
+    const trialId = await newTrial();
+    const now = () => new Date("2026-01-01T10:00:00Z");
+    await appendEvents(db, await cursor(trialId), [{ type: "trial.started" }], null, { now });
+    await appendEvents(
+      db,
+      await cursor(trialId),
+      [{ type: "action.skipped", stepId: "s1", actionId: "a1", deviation: "skipped" }],
+      null,
+      { now },
+    );
+    expect(await trialLog(db, trialId)).toEqual([
+      { type: "trial.started", seq: 1, relMs: 0 },
+      { type: "action.skipped", stepId: "s1", actionId: "a1", deviation: "skipped", seq: 2, relMs: 0 },
+    ]);
+    expect(await trialLog(db, trialId, 1)).toEqual([expect.objectContaining({ seq: 2 })]);
+    // The same events as the stored log, less the trial, server time and actor.
+    expect(await trialLog(db, trialId)).toEqual(
+      (await eventsSince(db, trialId)).map(({ trialId: _, serverTime: __, actorId: ___, ...event }) => event),
+    );
   });
 
   it("never lets two writers both write seq N: a stale cursor's append fails whole", async () => {
