@@ -50,6 +50,8 @@ export async function startLiveBench() {
     stdio: ["ignore", "pipe", "inherit"],
   });
   await new Promise<void>((ok) => runtime.stdout!.on("data", (d) => String(d).includes("listening") && ok()));
+  // A bench that fails takes its runtime with it, rather than leave it running on its own.
+  process.on("exit", () => runtime.kill("SIGKILL"));
   const url = `ws://127.0.0.1:${runtimePort}`;
 
   const wizardUser = await createAccount(db, {
@@ -99,9 +101,12 @@ export async function startLiveBench() {
     onEvents: (events: Array<{ type: string; parameters?: { text?: string } }>) => void,
   ) {
     const ws = new WebSocket(url);
-    const pending = new Map<string, () => void>();
+    /** Each command's answer: null once acknowledged, else why it was refused. */
+    const pending = new Map<string, (refusal: string | null) => void>();
     await new Promise((ok) => (ws.onopen = ok));
-    const welcomed = new Promise<void>((ok) => {
+    const welcomed = new Promise<void>((ok, fail) => {
+      // Shut before its welcome (an expired link, an overloaded runtime): the bench says why rather than wait.
+      ws.onclose = (e) => fail(new Error(`The runtime closed a socket before its welcome: ${e.reason || e.code}`));
       ws.onmessage = (m) => {
         const message = JSON.parse(String(m.data));
         if (message.type === "welcome") ok();
@@ -112,7 +117,8 @@ export async function startLiveBench() {
           if (!reasons.has(message.reason)) console.error(`refused: ${message.reason}`);
           reasons.add(message.reason);
         }
-        if (message.type === "ack" || message.type === "rejected") pending.get(message.requestId)?.();
+        if (message.type === "ack") pending.get(message.requestId)?.(null);
+        if (message.type === "rejected") pending.get(message.requestId)?.(String(message.reason));
       };
     });
     ws.send(
@@ -126,7 +132,7 @@ export async function startLiveBench() {
     await welcomed;
     return {
       command: (command: Record<string, unknown>) =>
-        new Promise<void>((ok) => {
+        new Promise<string | null>((ok) => {
           const requestId = crypto.randomUUID();
           pending.set(requestId, ok);
           ws.send(JSON.stringify({ type: "command", requestId, command }));
@@ -159,7 +165,8 @@ export async function startLiveBench() {
       Array.from({ length: observing }, () => socket(trial!.id, observerUser.id, observe)),
     );
     const wizard = await socket(trial!.id, wizardUser.id, () => {});
-    await wizard.command({ kind: "start" });
+    const notStarted = await wizard.command({ kind: "start" });
+    if (notStarted) throw new Error(`The runtime refused to start a trial: ${notStarted}`);
     for (let i = 0; i < commands; i++) {
       const text = `line ${trial!.id} ${i}`;
       const sent = performance.now();
@@ -171,14 +178,20 @@ export async function startLiveBench() {
           ? ok()
           : seen.set(text, { left: observing, done: (at) => (toObservers.push(at - sent), seen.delete(text), ok()) }),
       );
-      await wizard.command({ kind: "unscripted", actionType: "say", parameters: { text } });
-      await Promise.all([robot, everyone]);
+      // A line refused (counted, its reason said) never reaches the robot: the next is sent.
+      if (!(await wizard.command({ kind: "unscripted", actionType: "say", parameters: { text } })))
+        await Promise.all([robot, everyone]);
+      else {
+        heard.delete(text);
+        seen.delete(text);
+      }
       const rest = paceMs - (performance.now() - sent);
       if (rest > 0) await new Promise((r) => setTimeout(r, rest));
     }
     // Ended, so that its robot is free for the next trial.
     await wizard.command({ kind: "complete" });
     [wizard, ...observers].forEach((s) => s.close());
+    return trial!.id;
   }
 
   return {
@@ -186,6 +199,20 @@ export async function startLiveBench() {
     /** The runtime's resident memory now, in MiB. */
     runtimeMemoryMiB: () =>
       Number(/VmRSS:\s+(\d+)/.exec(readFileSync(`/proc/${runtime.pid}/status`, "utf8"))![1]) / 1024,
+    /**
+     * What the trials' logs cost in commits: rows of one transaction share its xmin. `perTrial`: the
+     * commits that wrote each trial's events, summed (what one trial waits through); `overall`: the
+     * transactions that wrote any of them (one commit carries many trials'); and the actions requested.
+     */
+    async commits(trialIds: string[]) {
+      const ids = db.$client(trialIds);
+      const [row] = await db.$client<Array<{ per_trial: string; overall: string; actions: string }>>`
+        select
+          (select count(*) from (select distinct trial_id, xmin::text from trial_events where trial_id in ${ids}) t) as per_trial,
+          (select count(distinct xmin::text) from trial_events where trial_id in ${ids}) as overall,
+          (select count(*) from trial_events where trial_id in ${ids} and type = 'action.requested') as actions`;
+      return { perTrial: Number(row!.per_trial), overall: Number(row!.overall), actions: Number(row!.actions) };
+    },
     /** Commands the runtime refused so far. */
     refused: () => refused,
     async stop() {

@@ -35,6 +35,35 @@ describe("the group writer", async () => {
     expect(new Set(await writtenBy(trials)).size).toBe(2);
   });
 
+  it("makes an append given as a function up as its commit begins, and fails only the one that cannot be made up", async () => {
+    const writer = groupWriter(db);
+    const [busy, late, broken] = await Promise.all([bareTrial(db), bareTrial(db), bareTrial(db)]);
+    const words = ["asked"];
+    const opening = writer.append({ cursor: at(busy!), events: note("opening"), actorId: null });
+    // Waits behind the commit under way: what its trial learns meanwhile is in it.
+    const later = writer.append(() => ({ cursor: at(late!), events: words.map((w) => note(w)[0]!), actorId: null }));
+    const failing = writer
+      .append(() => {
+        throw new Error("no events to make");
+      })
+      .then(
+        () => "made",
+        (error: Error) => error.message,
+      );
+    words.push("learnt meanwhile");
+    await opening;
+    expect(await later).toMatchObject([
+      { seq: 1, text: "asked" },
+      { seq: 2, text: "learnt meanwhile" },
+    ]);
+    expect(await failing).toBe("no events to make");
+    expect(await eventsSince(db, broken!)).toEqual([]);
+    // The writer carries on.
+    expect(await writer.append({ cursor: at(broken!), events: note("after"), actorId: null })).toMatchObject([
+      { seq: 1, text: "after" },
+    ]);
+  });
+
   it("fails only the trial whose cursor is stale: the others in its commit are stored", async () => {
     const writer = groupWriter(db);
     const [busy, stale, fine] = await Promise.all([bareTrial(db), bareTrial(db), bareTrial(db)]);

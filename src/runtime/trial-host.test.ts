@@ -2,7 +2,8 @@ import { afterAll, describe, expect, it } from "vitest";
 import { bareTrial, freshDatabase } from "../../tests/support/db";
 import { eventsSince } from "@/store/event-store";
 import type { TrialProtocol } from "@/core/trial";
-import type { RobotLink } from "./robot";
+import { groupWriter } from "./log-writer";
+import type { RobotLink, RobotReport } from "./robot";
 import { TrialHost } from "./trial-host";
 
 const protocol: TrialProtocol = {
@@ -204,6 +205,74 @@ describe("a live trial host", async () => {
     // The host carries on from the log as it is.
     expect(await host.command({ kind: "note", text: "after" }, null)).toMatchObject({ ok: true });
     await host.close();
+  });
+
+  /** The transaction that wrote each of the trial's events, by seq: events of one commit share it. */
+  const transactions = async (trialId: string) =>
+    (
+      await db.$client<Array<{ xmin: string }>>`
+      select xmin::text from trial_events where trial_id = ${trialId} order by seq`
+    ).map((r) => r.xmin);
+
+  it("writes an action's outcomes that happen together in one append: a completion with the dispatch", async () => {
+    const trialId = await newTrialId();
+    const atOnce: RobotLink = {
+      ...timekeeperRobot(),
+      perform(request, report) {
+        report({ kind: "dispatched", actionId: request.actionId });
+        report({ kind: "completed", actionId: request.actionId });
+      },
+    };
+    const host = await TrialHost.open(db, trialId, protocol, atOnce);
+    await host.command({ kind: "start" }, null);
+    await host.command(say("at-once"), null);
+    await settle(host, () => host.current.actions["at-once"]?.status === "done");
+    const log = await eventsSince(db, trialId);
+    expect(log.slice(2).map((e) => [e.seq, e.type])).toEqual([
+      [3, "action.requested"],
+      [4, "action.dispatched"],
+      [5, "action.completed"],
+    ]);
+    const [, , requested, dispatched, completed] = await transactions(trialId);
+    expect(completed).toBe(dispatched);
+    // Requested is committed before the robot is told: never in the same commit as what the robot did.
+    expect(requested).not.toBe(dispatched);
+    await host.close();
+  });
+
+  it("joins a report that comes while its action's last one waits behind another trial's commit", async () => {
+    const [trialId, otherId] = [await newTrialId(), await newTrialId()];
+    let release = () => {};
+    const held = withNextAppend((append) => new Promise<void>((r) => (release = r)).then(append));
+    const log = groupWriter(held.db);
+    let tell: (report: RobotReport) => void = () => {};
+    const robot: RobotLink = { ...timekeeperRobot(), perform: (_, report) => (tell = report) };
+    const host = await TrialHost.open(held.db, trialId, protocol, robot, log);
+    const other = await TrialHost.open(held.db, otherId, protocol, timekeeperRobot(), log);
+    await host.command({ kind: "start" }, null);
+    await host.command(say("later"), null);
+    // Another trial's commit is under way (held): what this trial's robot reports meanwhile waits for the next.
+    held.arm();
+    const note = other.command({ kind: "note", text: "meanwhile" }, null);
+    tell({ kind: "dispatched", actionId: "later" });
+    // A moment apart (not a measure of anything): the dispatch is waiting for its commit when the completion comes.
+    await new Promise((r) => setTimeout(r, 20));
+    tell({ kind: "completed", actionId: "later" });
+    release();
+    expect(await note).toMatchObject({ ok: true, seqs: [1] });
+    await settle(host, () => host.current.actions.later?.status === "done");
+    expect((await eventsSince(db, trialId)).map((e) => [e.seq, e.type])).toEqual([
+      [1, "trial.started"],
+      [2, "step.entered"],
+      [3, "action.requested"],
+      [4, "action.dispatched"],
+      [5, "action.completed"],
+    ]);
+    const [, , , dispatched, completed] = await transactions(trialId);
+    expect(completed).toBe(dispatched);
+    expect((await transactions(otherId))[0]).not.toBe(dispatched);
+    await host.close();
+    await other.close();
   });
 
   it("carries out a request once, answering the same id again with its first outcome, after a restart too", async () => {

@@ -4,6 +4,7 @@
 import {
   applyInPlace,
   decide,
+  decideReports,
   fold,
   type Command,
   type EngineEvent,
@@ -14,9 +15,10 @@ import {
 import { type Database, neverReachedDatabase } from "@/store/client";
 import { answeredRequests, eventsSince, type TrialCursor } from "@/store/event-store";
 import { directWriter, type LogWriter } from "./log-writer";
+import { logUnexpected } from "@/store/error-reference";
 import { areTheseEvents } from "@/core/trial/landed";
 import { CONTROL_TYPES } from "@/core/trial/types";
-import type { CameraFrame, RobotLink } from "./robot";
+import type { CameraFrame, RobotLink, RobotReport } from "./robot";
 import { sampleRecorder } from "./samples";
 import { foldLiveState, UNKNOWN_STATE, type LiveRobotState } from "@/core/robots/live-state";
 
@@ -128,6 +130,8 @@ export class TrialHost {
   private t0: number | null;
   /** The log as read to open the trial, kept up to date, until the hello that opened it takes it. */
   private opening: StoredEvent[] | null;
+  /** The robot's reports waiting for their append to be made up: any that come before it is, join it. */
+  private reports: RobotReport[] | null = null;
   /** Each request's outcome by its id, so a request sent again is answered, never carried out twice. */
   private readonly requests = new Map<string, Promise<CommandResult>>();
   /** What the wizard sees of the robot now (speaking, gesture, posture, battery), and who is told of changes. */
@@ -309,11 +313,7 @@ export class TrialHost {
     if (before) return { ok: false, reason: before === "stopped" ? NOT_CARRIED_OUT : LOG_UNAVAILABLE };
     const decision = decide(this.protocol, this.state, command);
     if (!decision.ok) return decision;
-    const cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
-    this.writingSince = Date.now();
-    const written = await this.write(cursor, decision.events, actorId, requestId).finally(() => {
-      this.writingSince = null;
-    });
+    const written = await this.write(() => decision.events, actorId, requestId);
     const halting = command.kind === "emergency_stop" || command.kind === "abort";
     if (written === "refused") return { ok: false, reason: halting ? STOP_NOT_LOGGED : LOG_UNAVAILABLE };
     if (written === "unknown") return { ok: false, reason: halting ? STOP_UNCONFIRMED : NOT_ANSWERED };
@@ -329,6 +329,52 @@ export class TrialHost {
     const after = this.overtaken(command, halts, asked);
     this.take(written.events, after && NOT_SENT[after]);
     return { ok: true, seqs: written.events.map((e) => e.seq) };
+  }
+
+  /**
+   * What the robot's side reports (dispatched, completed, failed, timed out),
+   * logged in turn like a command, never refused for lateness. Reports that
+   * come until their append is made up (the group writer makes it up as its
+   * commit begins) are decided together and written in that one append: an
+   * action's outcomes that happen together, such as a completion right after
+   * the dispatch, cost one commit, not one each.
+   */
+  private report(report: RobotReport) {
+    if (report.kind === "dispatched" && report.detail?.playedBy === "browser") this.browserPlays.add(report.actionId);
+    if (this.reports) {
+      this.reports.push(report);
+      return;
+    }
+    const together = [report];
+    this.reports = together;
+    const run = this.queue.then(() => this.writeReports(together));
+    this.queue = run.catch(
+      (error: unknown) => void logUnexpected(error, `logging the robot's reports of trial ${this.trialId}`),
+    );
+  }
+
+  private async writeReports(together: RobotReport[]): Promise<void> {
+    const seal = () => {
+      if (this.reports === together) this.reports = null;
+    };
+    // Reports after the host closed: the trial is no longer run from here.
+    if (this.shut) return seal();
+    const written = await this.write(
+      () => {
+        seal();
+        return decideReports(this.state, together);
+      },
+      null,
+      null,
+    );
+    // The log is away: like any command refused, the reports are not in it (an action left running is
+    // marked failed when the trial is opened again).
+    if (written === "refused" || written === "unknown") return;
+    if (written.earlier) {
+      this.take(written.events, NOT_SENT.late);
+      return this.writeReports(together);
+    }
+    if (written.events.length) this.take(written.events, null);
   }
 
   /**
@@ -353,28 +399,40 @@ export class TrialHost {
   }
 
   /**
-   * Appends, and when the append fails, finds out what the log holds: a
-   * commit whose reply was lost is still a commit. Only this host writes the
-   * trial (it holds the lock), so events past its cursor are its own: this
+   * Appends what `decideEvents` gives as the writer makes the append up
+   * (after the trial's cursor as it stands then), and when the append fails,
+   * finds out what the log holds: a commit whose reply was lost is still a
+   * commit. Only this host writes the trial (it holds the lock), so events past its cursor are its own: this
    * command's (taken as its outcome, never written twice), or an earlier
    * command's that landed late (`earlier`). "refused" when the statement
    * never reached the database; "unknown" when the log cannot be read either:
    * a later append meets whatever landed.
    */
   private async write(
-    cursor: TrialCursor,
-    events: EngineEvent[],
+    decideEvents: () => EngineEvent[],
     actorId: string | null,
     requestId: string | null,
   ): Promise<{ events: StoredEvent[]; earlier: boolean } | "refused" | "unknown"> {
+    let cursor: TrialCursor | null = null;
+    let events: EngineEvent[] = [];
+    const append = () => {
+      cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
+      events = decideEvents();
+      return { cursor, events, actorId, requestId };
+    };
+    this.writingSince = Date.now();
     try {
-      return { events: await this.log.append({ cursor, events, actorId, requestId }), earlier: false };
+      return { events: await this.log.append(append), earlier: false };
     } catch (error) {
-      if (neverReachedDatabase(error)) return "refused";
-      const landed = await eventsSince(this.db, this.trialId, cursor.lastSeq).catch(() => null);
+      // Never made up (no cursor): the writer sent nothing of it.
+      if (neverReachedDatabase(error) || cursor === null) return "refused";
+      const after = (cursor as TrialCursor).lastSeq;
+      const landed = await eventsSince(this.db, this.trialId, after).catch(() => null);
       if (landed === null) return "unknown";
       if (landed.length === 0) throw error;
       return { events: landed, earlier: !areTheseEvents(landed, events) };
+    } finally {
+      this.writingSince = null;
     }
   }
 
@@ -396,11 +454,7 @@ export class TrialHost {
   private carryOut(events: EngineEvent[]) {
     for (const event of events) {
       if (event.type !== "action.requested") continue;
-      const report = (command: Command) => {
-        if (command.kind === "dispatched" && command.detail?.playedBy === "browser")
-          this.browserPlays.add(command.actionId);
-        void this.command(command, null);
-      };
+      const report = (r: RobotReport) => this.report(r);
       if (event.actionType === "pause") {
         // The clock starts once "dispatched" is stored, so the logged hold is never shorter than designed.
         const seconds = Number(event.parameters.seconds ?? 0);

@@ -98,4 +98,9 @@ function fieldAt(message: unknown, path: string): unknown {
   return node;
 }
 
-const sameJson = (a: unknown, b: unknown) => JSON.stringify(a) === JSON.stringify(b);
+/**
+ * Two strings (a say's text, the usual match) compared as they are, without
+ * serialising: every done message is matched against every action waiting.
+ */
+const sameJson = (a: unknown, b: unknown) =>
+  typeof a === "string" && typeof b === "string" ? a === b : JSON.stringify(a) === JSON.stringify(b);

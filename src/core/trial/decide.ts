@@ -2,6 +2,7 @@
 // the wizard can read. Pure: the runtime supplies ids, clock and robot.
 import { actionName } from "../designer/action-name";
 import { exitOf } from "../protocol/flow";
+import { applyInPlace } from "./fold";
 import { answerOptions, branchTarget, findAction, findStep, nextUnit } from "./protocol";
 import type { Command, Decision, DeviationKind, EngineEvent, ProtocolAction, TrialProtocol, TrialState } from "./types";
 
@@ -185,10 +186,33 @@ function answer(protocol: TrialProtocol, state: TrialState, actionId: string, op
   return ok(...events);
 }
 
-function robotReport(
-  state: TrialState,
-  command: Extract<Command, { kind: "dispatched" | "completed" | "failed" | "timed_out" }>,
-): Decision {
+export type RobotReportCommand = Extract<Command, { kind: "dispatched" | "completed" | "failed" | "timed_out" }>;
+
+/**
+ * Reports of the robot's side that came together (a completion right after
+ * its dispatch), each decided as if the ones before it were in the log
+ * already: the events of those accepted, in order, to be written as one.
+ * A refused report (on an action already finished) is left out, as alone.
+ * It reads the reported actions only: no copy of every action of the trial.
+ */
+export function decideReports(state: TrialState, reports: readonly RobotReportCommand[]): EngineEvent[] {
+  const seen: TrialState = { ...state, actions: {} };
+  const events: EngineEvent[] = [];
+  for (const report of reports) {
+    const action = seen.actions[report.actionId] ?? state.actions[report.actionId];
+    if (action) seen.actions[report.actionId] = action;
+    const decision = robotReport(seen, report);
+    if (!decision.ok) continue;
+    events.push(...decision.events);
+    applyInPlace(
+      seen,
+      decision.events.map((event) => ({ ...event, seq: state.lastSeq, relMs: null })),
+    );
+  }
+  return events;
+}
+
+function robotReport(state: TrialState, command: RobotReportCommand): Decision {
   const action = state.actions[command.actionId];
   if (!action || action.status === "waiting") return no("The robot reported on an action that was never requested.");
   if (FINISHED.has(action.status)) return no("The robot reported on an action that has already finished.");

@@ -3,10 +3,12 @@ import {
   apply,
   applyAll,
   applyInPlace,
+  decideReports,
   fold,
   simulate,
   type Command,
   type EngineEvent,
+  type RobotReportCommand,
   type TrialProtocol,
 } from "./index";
 
@@ -290,6 +292,72 @@ describe("the trial engine", () => {
       { kind: "completed", actionId: "hello" },
     ]);
     expect(state.actions.hello).toEqual({ status: "done", requestedAt: 20, finishedAt: 50 });
+  });
+});
+
+describe("robot reports that came together", () => {
+  // Both lines of the introduction requested, neither dispatched yet.
+  const requested = [...start, { kind: "next" } as const];
+  it.each<[string, RobotReportCommand[], unknown]>([
+    [
+      "a dispatch and its completion, decided one after the other",
+      [
+        { kind: "dispatched", actionId: "hello" },
+        { kind: "completed", actionId: "hello" },
+      ],
+      [
+        ["action.dispatched", "hello", null],
+        ["action.completed", "hello", null],
+      ],
+    ],
+    [
+      "two actions' outcomes, interleaved as they came",
+      [
+        { kind: "dispatched", actionId: "hello" },
+        { kind: "dispatched", actionId: "wave" },
+        { kind: "failed", actionId: "wave", reason: "no arms" },
+        { kind: "completed", actionId: "hello" },
+      ],
+      [
+        ["action.dispatched", "hello", null],
+        ["action.dispatched", "wave", null],
+        ["action.failed", "wave", null],
+        ["action.completed", "hello", null],
+      ],
+    ],
+    [
+      "a report after its action finished in the same batch is left out, as it would be alone",
+      [
+        { kind: "timed_out", actionId: "hello" },
+        { kind: "completed", actionId: "hello" },
+      ],
+      [["action.timed_out", "hello", null]],
+    ],
+    [
+      "a second dispatch is left out",
+      [
+        { kind: "dispatched", actionId: "hello" },
+        { kind: "dispatched", actionId: "hello" },
+      ],
+      [["action.dispatched", "hello", null]],
+    ],
+    ["a report on an action never requested is left out", [{ kind: "completed", actionId: "nod" }], []],
+  ])("%s", (_name, reports, expected) => {
+    const { state, log } = run(requested);
+    expect(brief(decideReports(state, reports))).toEqual(expected);
+    // The same events as each report decided alone, in turn, after the others were logged.
+    const oneByOne = simulate(protocol, [...requested, ...reports]).log.slice(log.length);
+    expect(decideReports(state, reports)).toEqual(oneByOne.map(({ seq: _, relMs: __, ...event }) => event));
+  });
+
+  it("leaves the state it was given as it was", () => {
+    const { state } = run(requested);
+    const before = structuredClone(state);
+    decideReports(state, [
+      { kind: "dispatched", actionId: "hello" },
+      { kind: "completed", actionId: "hello" },
+    ]);
+    expect(state).toEqual(before);
   });
 });
 

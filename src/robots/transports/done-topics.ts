@@ -25,9 +25,8 @@ export class DoneTopics {
       const fresh = new Set<Waiter>();
       this.waiters.set(topic, (waiters = fresh));
       this.subscribe(topic, messageType, (message) => {
-        // The oldest action this message matches is the one it answers.
-        const answered = [...fresh].find((w) => matchesDone(w.match, message));
-        answered?.settle({ message });
+        // The oldest action this message matches is the one it answers (a set keeps the order waits began).
+        for (const waiter of fresh) if (matchesDone(waiter.match, message)) return waiter.settle({ message });
       });
     }
     const set = waiters;
