@@ -149,10 +149,7 @@ export async function startLiveBench() {
     paceMs = 0,
     observing = OBSERVERS,
   ) {
-    const [trial] = await db
-      .insert(trials)
-      .values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id })
-      .returning();
+    const trial = await newTrial();
     const seen = new Map<string, { left: number; done: (at: number) => void }>();
     const observe = (events: Array<{ type: string; parameters?: { text?: string } }>) => {
       const at = performance.now();
@@ -194,7 +191,40 @@ export async function startLiveBench() {
     return trial!.id;
   }
 
+  /** A new trial of the bench's study, not yet started. */
+  async function newTrial() {
+    const [trial] = await db
+      .insert(trials)
+      .values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id })
+      .returning();
+    return trial!;
+  }
+
   return {
+    db,
+    newTrial,
+    /**
+     * How many events the welcome of an observer's hello carries, once it has come. Counted in its text,
+     * not parsed: parsing a 10 MB welcome here would stall this process, the simulated robot's too.
+     */
+    async welcomeOf(trialId: string) {
+      const ws = new WebSocket(url);
+      await new Promise((ok) => (ws.onopen = ok));
+      const welcome = new Promise<string>((ok) => {
+        ws.onmessage = (m) => String(m.data).startsWith('{"type":"welcome"') && ok(String(m.data));
+      });
+      ws.send(
+        JSON.stringify({
+          type: "hello",
+          version: SOCKET_MESSAGES_VERSION,
+          token: signSocketToken({ userId: observerUser.id, trialId }, SECRET),
+          lastSeq: 0,
+        }),
+      );
+      const text = await welcome;
+      ws.close();
+      return text.split('"seq":').length - 1;
+    },
     runTrial,
     /** The runtime's resident memory now, in MiB. */
     runtimeMemoryMiB: () =>

@@ -81,6 +81,22 @@ export interface RuntimeOptions {
 const EXPIRED = 4401;
 const SHUT_OUT = 4403;
 
+/** Events written into a welcome's text at a time: a few milliseconds of work each. */
+const WELCOME_PAGE = 2000;
+
+/**
+ * Events as the text of a JSON list, a page at a time: a long trial's welcome
+ * is written without holding the event loop from the other trials' clients.
+ */
+async function eventsJson(events: StoredEvent[]): Promise<string> {
+  const pages: string[] = [];
+  for (let start = 0; start < events.length; start += WELCOME_PAGE) {
+    if (start) await new Promise((next) => setImmediate(next));
+    pages.push(JSON.stringify(events.slice(start, start + WELCOME_PAGE).map(toWire)).slice(1, -1));
+  }
+  return `[${pages.join(",")}]`;
+}
+
 // Every client of a trial gets the same batch: serialise it once, not once per client.
 const serialised = new WeakMap<StoredEvent[], string>();
 function eventsMessage(events: StoredEvent[]): string {
@@ -173,27 +189,36 @@ export function startRuntimeServer({
     const log = host?.takeOpeningLog(lastSeq) ?? (await eventsSince(db, trialId, lastSeq));
     if (ws.data.closed) return;
     const shown = mayReadTrialLog(ws.data.access) ? log : [];
-    const push = (events: StoredEvent[]) => {
+    // Until the welcome is sent, what the trial logs meanwhile waits, in order, behind it.
+    let held: StoredEvent[][] | null = [];
+    const deliver = (events: StoredEvent[]) => {
       const now = ws.data.access!;
       if (mayReadTrialLog(now)) ws.send(eventsMessage(events));
       // Follow the trial's status, so a log that becomes results stops flowing.
       const status = events.reduce((s, e) => STATUS_AFTER[e.type] ?? s, now.trial.status);
       if (status !== now.trial.status) ws.data.access = { ...now, trial: { ...now.trial, status } };
     };
+    const push = (events: StoredEvent[]) => (held ? held.push(events) : deliver(events));
     // Owned here: straight from the host. Owned by another process: through the relay.
     ws.data.unsubscribe = host ? host.subscribe(push) : relay.follow(trialId, log.at(-1)?.seq ?? lastSeq, push);
+    const events = await eventsJson(shown);
+    if (ws.data.closed) return;
     const now = ws.data.access;
-    send(ws, {
+    const welcome = JSON.stringify({
       type: "welcome",
       version: SOCKET_MESSAGES_VERSION,
       trialId,
       role: now.studyRole!,
       mayRun: mayRun(now),
-      events: shown.map(toWire),
+      events: [],
       viewers: presence(trialId),
       peerId: ws.data.peerId,
       iceServers,
-    });
+    } satisfies ServerMessage);
+    // The events' text goes where the empty list is: the first one, as "events" comes before any name.
+    ws.send(welcome.replace('"events":[]', () => `"events":${events}`));
+    for (const events of held) deliver(events);
+    held = null;
     if (host) {
       send(ws, { type: "robot", connected: host.robotStatus(), ...(host.robotName ? { name: host.robotName } : {}) });
       if (mayReadTrialLog(ws.data.access!)) send(ws, { type: "robotState", ...host.robotState });

@@ -13,7 +13,7 @@ import {
   type TrialState,
 } from "@/core/trial";
 import { type Database, neverReachedDatabase } from "@/store/client";
-import { answeredRequests, eventsSince, type TrialCursor } from "@/store/event-store";
+import { answeredRequests, eventPages, eventsSince, type TrialCursor } from "@/store/event-store";
 import { directWriter, type LogWriter } from "./log-writer";
 import { logUnexpected } from "@/store/error-reference";
 import { areTheseEvents } from "@/core/trial/landed";
@@ -99,6 +99,9 @@ const MOVES_THE_ROBOT = new Set<Command["kind"]>([
  */
 const DEADLINE_MARGIN_MS = 250;
 
+/** Events read and folded at a time when a trial opens: a few milliseconds of work each. */
+const OPENING_PAGE = 2000;
+
 function answeredBy(run: Promise<CommandResult>, at: number): Promise<CommandResult> {
   let timer: ReturnType<typeof setTimeout> | undefined;
   const late = new Promise<CommandResult>((resolve) => {
@@ -148,9 +151,10 @@ export class TrialHost {
     readonly protocol: TrialProtocol,
     private readonly robot: RobotLink,
     history: StoredEvent[],
+    state: TrialState,
     private readonly log: LogWriter,
   ) {
-    this.state = fold(protocol, history);
+    this.state = state;
     this.t0 = startedAt(history);
     this.opening = history;
     this.samples = sampleRecorder(db, trialId, (error) =>
@@ -181,7 +185,14 @@ export class TrialHost {
     robot: RobotLink,
     log: LogWriter = directWriter(db),
   ) {
-    const host = new TrialHost(db, trialId, protocol, robot, await eventsSince(db, trialId), log);
+    // Read and folded a page at a time: between pages, the event loop serves the other trials of this process.
+    const history: StoredEvent[] = [];
+    const state = fold(protocol, []);
+    for await (const page of eventPages(db, trialId, { limit: OPENING_PAGE })) {
+      for (const event of page) history.push(event);
+      applyInPlace(state, page);
+    }
+    const host = new TrialHost(db, trialId, protocol, robot, history, state, log);
     for (const [id, seqs] of await answeredRequests(db, trialId))
       host.requests.set(id, Promise.resolve({ ok: true, seqs }));
     const interrupted = Object.entries(host.state.actions).filter(

@@ -85,6 +85,30 @@ describe.sequential("a live trial through the runtime", () => {
     expect(forged.messages).toEqual([]);
   });
 
+  it("sends a long log's welcome whole, and what is logged while it is written after it, in order", {
+    timeout: 120_000,
+  }, async () => {
+    const wizard = await open(wizardApi);
+    // More events than one page of a welcome's text (the runtime writes it a page at a time), a hundred at a time.
+    for (let batch = 0; batch < 22; batch++)
+      await Promise.all(
+        Array.from({ length: 100 }, (_, i) =>
+          wizard.command(`n${batch}-${i}`, { kind: "note", text: `Note ${batch}-${i}` }),
+        ),
+      );
+    const more = Promise.all(
+      Array.from({ length: 100 }, (_, i) => wizard.command(`m${i}`, { kind: "note", text: `More ${i}` })),
+    );
+    const observer = await open(observerApi);
+    await more;
+    const last = Math.max(...((await wizard.command("last", { kind: "note", text: "Last" })).seqs as number[]));
+    await observer.next(() => seqsOf(observer).includes(last));
+    const seen = seqsOf(observer);
+    expect(seen).toEqual(Array.from({ length: last }, (_, i) => i + 1));
+    wizard.close();
+    observer.close();
+  });
+
   it("survives kill -9 of the runtime: the wizard resumes with nothing lost or repeated", async () => {
     const wizard = await open(wizardApi);
     const r2 = await wizard.command("r2", { kind: "next" });
