@@ -16,6 +16,16 @@ import {
 } from "../../src/store/schema";
 import { ROWS_PER_READ, trialsFiles } from "../../src/server/trials/files";
 import { ORIGIN, routeServer } from "../support/routes";
+
+/** What a download fails with, read to its end; undefined if it ends without failing. */
+async function failureOf(reader: ReadableStreamDefaultReader<Uint8Array>): Promise<unknown> {
+  try {
+    for (let read = await reader.read(); !read.done; read = await reader.read());
+  } catch (error) {
+    return error;
+  }
+  return undefined;
+}
 import { publishedVersion } from "./fixture";
 
 const s = await routeServer();
@@ -152,12 +162,7 @@ it("fails the download when the events cannot be read part-way: the file never l
     // The log goes away after the first bytes have left (the headers with them).
     await sql`alter table trial_events rename to trial_events_away`;
     try {
-      let failed: unknown;
-      try {
-        for (let read = await reader.read(); !read.done; read = await reader.read());
-      } catch (error) {
-        failed = error;
-      }
+      const failed = await failureOf(reader);
       expect(failed).toBeInstanceOf(Error);
       expect((failed as Error).message).toMatch(/^The (events CSV|record) of trial .+ could not be finished$/);
       expect((failed as Error).message).not.toMatch(/relation|trial_events_away|select/i);
@@ -313,12 +318,7 @@ it("fails the record's download when its samples, annotations, answers or codes 
     expect((await reader.read()).done).toBe(false);
     await sql`alter table ${sql(table)} rename to gone_away`;
     try {
-      let failed: unknown;
-      try {
-        for (let read = await reader.read(); !read.done; read = await reader.read());
-      } catch (error) {
-        failed = error;
-      }
+      const failed = await failureOf(reader);
       expect(failed, table).toBeInstanceOf(Error);
       expect((failed as Error).message).toMatch(/^The record of trial .+ could not be finished$/);
     } finally {
