@@ -10,7 +10,7 @@ import { DEMO_PASSWORD, startApp } from "../tests/support/app";
 import { apiClient, signIn } from "../tests/support/http";
 import { loadavg } from "node:os";
 import { createDatabase } from "../src/store/client";
-import { report, scratchDatabase, unscriptedLog } from "./support";
+import { insertLog, report, scratchDatabase, unscriptedLog } from "./support";
 
 const EVENTS = Number(process.argv[2] ?? 2000);
 if (!Number.isInteger(EVENTS) || EVENTS < 2) throw new Error("bench/analysis takes the number of events, at least 2");
@@ -34,9 +34,7 @@ try {
   const span = MINUTES * 60_000;
   const events = unscriptedLog(trial.id, EVENTS, t0, (i) => Math.round((i / EVENTS) * span));
   const sql = db.$client;
-  // In batches: one statement carries at most 65,535 parameters.
-  for (let start = 0; start < events.length; start += 5000)
-    await sql`insert into trial_events ${sql(events.slice(start, start + 5000))}`;
+  await insertLog(db, events);
   const names = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
   for (let start = 0; start < SAMPLES; start += 10_000) {
     const rows = Array.from({ length: Math.min(10_000, SAMPLES - start) }, (_, k) => {

@@ -6,7 +6,7 @@
 // Everything real: PostgreSQL, the runtime process, the simulated robot.
 import { trialEvents, trials } from "../src/store/schema";
 import { eq } from "drizzle-orm";
-import { percentile, report, unscriptedLog } from "./support";
+import { insertLog, percentile, report, unscriptedLog } from "./support";
 import { startLiveBench } from "./support-live";
 
 const EVENTS = 100_000;
@@ -23,8 +23,7 @@ await live.runTrial(30, [], [], 0, 0); // warm-up
 async function largeTrial() {
   const trial = await live.newTrial();
   const rows = unscriptedLog(trial.id, EVENTS, new Date(Date.now() - 3_600_000), (i) => i * 30);
-  for (let start = 0; start < rows.length; start += 5000)
-    await live.db.$client`insert into trial_events ${live.db.$client(rows.slice(start, start + 5000))}`;
+  await insertLog(live.db, rows);
   await live.db.update(trials).set({ status: "completed" }).where(eq(trials.id, trial.id));
   // As autovacuum would after so many inserts: without statistics the planner sorts the rest of the log for each page.
   await live.db.$client`analyze trial_events`;

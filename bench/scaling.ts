@@ -19,7 +19,7 @@ import type { TrialEvent, TrialProtocol } from "../src/core/trial";
 import { trialsFiles } from "../src/server/trials/files";
 import { trialSamples } from "../src/store/schema";
 import { buildFixture, publishedVersion } from "../tests/api/fixture";
-import { percentile, scratchDatabase, unscriptedLog } from "./support";
+import { insertLog, percentile, scratchDatabase, unscriptedLog } from "./support";
 
 const RUNS = 3;
 const STUDY_SIZES = [10, 100, 1000];
@@ -38,12 +38,6 @@ const sql = db.$client;
 
 /** A trial's log of unscripted lines, as bench/analysis seeds it, an event every 100 ms. */
 const eventRows = (trialId: string, count: number, t0: Date) => unscriptedLog(trialId, count, t0, (i) => i * 100);
-
-async function insertEvents(rows: ReturnType<typeof eventRows>) {
-  for (let start = 0; start < rows.length; start += 5000) {
-    await sql`insert into trial_events ${sql(rows.slice(start, start + 5000), "trial_id", "seq", "type", "server_time", "rel_ms", "action_id", "payload", "deviation")}`;
-  }
-}
 
 /** `count` completed trials of a new study, each with its consenting participant and `events` events. */
 async function seedStudy(f: Awaited<ReturnType<typeof buildFixture>>, count: number, events: number) {
@@ -77,7 +71,7 @@ async function seedStudy(f: Awaited<ReturnType<typeof buildFixture>>, count: num
     await sql`insert into trials ${sql(rows)}`;
     trialIds.push(...rows.map((r) => r.id));
   }
-  for (const id of trialIds) await insertEvents(eventRows(id, events, t0));
+  for (const id of trialIds) await insertLog(db, eventRows(id, events, t0));
   return { study, version, trialIds };
 }
 

@@ -4,6 +4,7 @@ import { mkdtemp, rm } from "node:fs/promises";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { startEmbeddedPostgres } from "../src/store/embedded";
+import type { Database } from "../src/store/client";
 import { migrateDatabase } from "../src/store/migrate";
 
 export async function scratchDatabase() {
@@ -76,4 +77,11 @@ export function unscriptedLog(trialId: string, count: number, t0: Date, relMsOf:
       deviation: "deviation" in body,
     };
   });
+}
+
+/** Stores a seeded log (unscriptedLog's rows) in batches: one statement carries at most 65,535 parameters. */
+export async function insertLog(db: Database, rows: ReturnType<typeof unscriptedLog>) {
+  const sql = db.$client;
+  for (let start = 0; start < rows.length; start += 5000)
+    await sql`insert into trial_events ${sql(rows.slice(start, start + 5000))}`;
 }
