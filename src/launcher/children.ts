@@ -4,7 +4,7 @@
 // number to the next program that starts. So each child is remembered with
 // when it started, and a later start signals only a process that has both the
 // pid and that start: one of ours, never a stranger that inherited the number.
-import { spawnSync } from "node:child_process";
+import { type ChildProcess, spawnSync } from "node:child_process";
 import { existsSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 import { startTimeOf } from "../core/processes/start-time";
@@ -82,4 +82,17 @@ export function stopOrphanedChildren(dataDir: string): { stopped: number[]; left
   }
   forgetChildren(dataDir);
   return { stopped, leftAlone };
+}
+
+/** Asks a child to stop and resolves once it has; one that ignores it for 10 s is killed. */
+export function stopChild(child: ChildProcess): Promise<void> {
+  if (child.exitCode !== null || child.signalCode !== null) return Promise.resolve();
+  return new Promise((done) => {
+    const kill = setTimeout(() => child.kill("SIGKILL"), 10_000);
+    child.once("exit", () => {
+      clearTimeout(kill);
+      done();
+    });
+    child.kill("SIGTERM");
+  });
 }
