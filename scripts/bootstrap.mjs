@@ -18,6 +18,7 @@ const commands = {
   bench: "bench/run.ts",
   backup: "src/launcher/backup.ts",
   restore: "src/launcher/restore.ts",
+  screenshots: "scripts/screenshots.ts",
 };
 
 /** The commands that run the platform until stopped. */
