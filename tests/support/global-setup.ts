@@ -1,7 +1,7 @@
 // One real PostgreSQL for the whole run; every test file gets its own database
 // cloned from a migrated template. The run writes under a folder of its own
-// (./scratch), removed at its end with the server's data in it; one left by a
-// run that was killed is removed by the next.
+// (see scratch.ts), removed at its end with the server's data in it; one left
+// by a run that was killed is removed by the next.
 import type { TestProject } from "vitest/node";
 import { chmod, mkdir, mkdtemp, readdir, readFile, rm, writeFile } from "node:fs/promises";
 import { join } from "node:path";
