@@ -2,7 +2,7 @@
 // Entry point of `npm start`, `npm test` and the other commands below. It needs only Node and npm:
 // it installs the project's dependencies with bun (fetched from npm) when the
 // lockfile changed, then hands over to the bun script for the command.
-import { spawnSync } from "node:child_process";
+import { spawn, spawnSync } from "node:child_process";
 import { createHash } from "node:crypto";
 import { existsSync, readFileSync, writeFileSync } from "node:fs";
 import { dirname, join } from "node:path";
@@ -18,7 +18,11 @@ const commands = {
   bench: "bench/run.ts",
   backup: "src/launcher/backup.ts",
   restore: "src/launcher/restore.ts",
+  screenshots: "scripts/screenshots.ts",
 };
+
+/** The commands that run the platform until stopped. */
+const SERVES = new Set(["start", "dev"]);
 
 const command = process.argv[2];
 if (!commands[command]) {
@@ -67,5 +71,11 @@ if (!bun) {
   console.error("bun was not installed into node_modules; delete node_modules and try again.");
   process.exit(1);
 }
-const status = run(bun, ["run", commands[command], ...process.argv.slice(3)]);
-process.exit(status);
+const args = ["run", commands[command], ...process.argv.slice(3)];
+if (!SERVES.has(command)) process.exit(run(bun, args));
+// The platform runs in a process group of its own, so Ctrl+C reaches the launcher alone, passed on from
+// here: the terminal would otherwise send it to every process at once, and PostgreSQL would stop under
+// the runtime and the web app while they were still writing (the launcher stops them first).
+const platform = spawn(bun, args, { cwd: root, stdio: ["ignore", "inherit", "inherit"], env, detached: true });
+for (const signal of ["SIGINT", "SIGTERM", "SIGHUP"]) process.on(signal, () => platform.kill(signal));
+platform.on("exit", (code) => process.exit(code ?? 1));

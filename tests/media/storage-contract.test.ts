@@ -1,19 +1,17 @@
 // One contract, both media stores: a folder on disk and a real S3-compatible
 // server (moto, over a loopback socket) through the `minio` client.
-import { mkdtempSync } from "node:fs";
-import { tmpdir } from "node:os";
-import { join } from "node:path";
 import { afterAll, describe, expect, it } from "vitest";
 import { LocalStorage } from "../../src/server/media/local-storage";
 import { S3Storage } from "../../src/server/media/s3-storage";
 import type { MediaStorage } from "../../src/server/media/storage";
 import { startS3Server } from "../support/python";
+import { scratchFolder } from "../support/scratch";
 
 const stops: Array<() => void> = [];
 afterAll(() => stops.forEach((stop) => stop()));
 
 async function local(): Promise<MediaStorage> {
-  return new LocalStorage(mkdtempSync(join(tmpdir(), "hri-media-")));
+  return new LocalStorage(scratchFolder("media-"));
 }
 
 async function s3(): Promise<MediaStorage> {

@@ -5,7 +5,7 @@
 // stops no other test; the runtime is the real process, the robot the
 // simulated one, reached over the real roslib client.
 import { execFileSync } from "node:child_process";
-import { mkdtemp, readFile, rm } from "node:fs/promises";
+import { readFile, rm } from "node:fs/promises";
 import { join } from "node:path";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
@@ -18,6 +18,7 @@ import { experimentVersions, experiments, studies, studyMembers, trials } from "
 import { signSocketToken } from "../../src/store/socket-token";
 import { firstPartyPlugin } from "../support/plugins";
 import { startRuntime } from "../support/runtime";
+import { scratchFolder } from "../support/scratch";
 import { connectTrial, type TrialSocket } from "../support/socket";
 
 const SECRET = "stop-without-database-secret".padEnd(40, "x");
@@ -65,7 +66,7 @@ const signalDatabase = async (signal: "SIGSTOP" | "SIGCONT") => {
 };
 
 beforeAll(async () => {
-  dataDir = await mkdtemp(join(process.cwd(), ".tmp", "stop-pg-"));
+  dataDir = scratchFolder("stop-pg-");
   pg = await startEmbeddedPostgres({ dataDir });
   await migrateDatabase(pg.url);
   database = createDatabase(pg.url);

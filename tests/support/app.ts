@@ -2,9 +2,10 @@
 // does, with its own data folder and port: embedded PostgreSQL, migrations,
 // demo seed and the built web app.
 import { spawn, type ChildProcess } from "node:child_process";
-import { mkdirSync, mkdtempSync, readFileSync } from "node:fs";
+import { readFileSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { freePort } from "../../src/store/embedded";
+import { scratchFolder } from "./scratch";
 
 const root = resolve(import.meta.dirname, "..", "..");
 export const BUN = join(root, "node_modules", "@oven", `bun-${process.platform}-${process.arch}`, "bin", "bun");
@@ -20,8 +21,15 @@ export interface RunningApp {
   dataDir: string;
   process: ChildProcess;
   output: () => string;
-  /** Ctrl+C: the launcher stops the web app and PostgreSQL cleanly. */
+  /** What the processes wrote to stderr alone. */
+  errors: () => string;
+  /** SIGINT to the launcher: it stops the web app and PostgreSQL cleanly. */
   stop(): Promise<void>;
+  /**
+   * Ctrl+C in the terminal the app was started from: SIGINT to every process of its foreground group;
+   * resolves once every process writing to its output has ended.
+   */
+  interrupt(): Promise<void>;
   /**
    * kill -9, as a crash would: of the launcher alone (its web app and
    * PostgreSQL run on as orphans), or of every process it started.
@@ -30,17 +38,28 @@ export interface RunningApp {
 }
 
 export function newDataDir(): string {
-  mkdirSync(join(root, ".tmp"), { recursive: true });
-  return mkdtempSync(join(root, ".tmp", "app-"));
+  return scratchFolder("app-");
 }
 
-export async function startApp(options: { dataDir?: string; env?: Record<string, string> } = {}): Promise<RunningApp> {
+export async function startApp(
+  options: {
+    dataDir?: string;
+    env?: Record<string, string>;
+    /** Through `npm start`'s own way in (scripts/bootstrap.mjs) rather than the launcher itself. */
+    npmStart?: boolean;
+  } = {},
+): Promise<RunningApp> {
   const dataDir = options.dataDir ?? newDataDir();
   const port = await freePort();
   const runtimePort = await freePort();
   const simulatorPort = await freePort();
   let output = "";
-  const child = spawn(BUN, ["run", "src/launcher/start.ts"], {
+  let errors = "";
+  const [command, args] = options.npmStart
+    ? ["node", ["scripts/bootstrap.mjs", "start"]]
+    : [BUN, ["run", "src/launcher/start.ts"]];
+  // In a process group of its own, as a terminal starts a command.
+  const child = spawn(command, args, {
     cwd: root,
     detached: true,
     stdio: ["ignore", "pipe", "pipe"],
@@ -59,7 +78,10 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
     },
   });
   child.stdout!.on("data", (d) => (output += d));
-  child.stderr!.on("data", (d) => (output += d));
+  child.stderr!.on("data", (d) => {
+    output += d;
+    errors += d;
+  });
   const url = await new Promise<string>((ok, fail) => {
     const timer = setTimeout(() => fail(new Error(`The app did not start in time:\n${output}`)), 120_000);
     child.stdout!.on("data", () => {
@@ -80,6 +102,8 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
     throw new Error(`${error.message}. The app's output:\n${output.split("\n").slice(-40).join("\n")}`);
   });
   const exited = new Promise<void>((ok) => child.once("exit", () => ok()));
+  // Once every process that shares its output (the launcher's children too) has ended.
+  const closed = new Promise<void>((ok) => child.once("close", () => ok()));
   return {
     url,
     runtimeUrl: `ws://127.0.0.1:${runtimePort}`,
@@ -87,9 +111,14 @@ export async function startApp(options: { dataDir?: string; env?: Record<string,
     dataDir,
     process: child,
     output: () => output,
+    errors: () => errors,
     async stop() {
       if (child.exitCode === null) child.kill("SIGINT");
       await exited;
+    },
+    async interrupt() {
+      if (child.exitCode === null) process.kill(-child.pid!, "SIGINT");
+      await closed;
     },
     async crash(what) {
       process.kill(what === "launcher" ? child.pid! : -child.pid!, "SIGKILL");
@@ -115,14 +144,18 @@ async function waitForHttp(url: string) {
 
 /** The pid of the launcher's child running `script` (e.g. "runtime/main.ts"), as the launcher recorded it. */
 export function childPid(app: RunningApp, script: string): number {
-  const pids: number[] = JSON.parse(readFileSync(join(app.dataDir, "launcher-children.json"), "utf8"));
-  const pid = pids.find((p) => {
-    try {
-      return readFileSync(`/proc/${p}/cmdline`, "utf8").includes(script);
-    } catch {
-      return false;
-    }
-  });
+  const children: Array<{ pid: number }> = JSON.parse(
+    readFileSync(join(app.dataDir, "launcher-children.json"), "utf8"),
+  );
+  const pid = children
+    .map((c) => c.pid)
+    .find((p) => {
+      try {
+        return readFileSync(`/proc/${p}/cmdline`, "utf8").includes(script);
+      } catch {
+        return false;
+      }
+    });
   if (!pid) throw new Error(`The launcher has no child running ${script}.`);
   return pid;
 }

@@ -7,6 +7,7 @@ import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { checkPagesOnClose, expectAccessible } from "./accessibility";
 import { CHROMIUM_ARGS, findChromium } from "./chromium";
+import { scratchRoot } from "./scratch";
 
 const root = resolve(import.meta.dirname, "..", "..");
 
@@ -60,10 +61,23 @@ export async function signInAs(page: Page, email: string, password: string) {
   await page.waitForURL((url) => !url.pathname.startsWith("/sign-in"));
 }
 
-/** Screenshots the docs use: docs/screenshots/<name>.png. What they show is checked first. */
+/** Set to 1 (`npm run screenshots`), the browser tests refresh the screenshots committed under docs/. */
+export const REFRESH_SCREENSHOTS = "HRI_REFRESH_SCREENSHOTS";
+
+/**
+ * Where screenshots go: the run's own folder, so that a test run leaves the committed docs as they are;
+ * docs/screenshots when they are being refreshed on purpose.
+ */
+export function screenshotFolder(): string {
+  return process.env[REFRESH_SCREENSHOTS] === "1"
+    ? join(root, "docs", "screenshots")
+    : join(scratchRoot(), "screenshots");
+}
+
+/** Screenshots the docs use, as <name>.png (see screenshotFolder). What they show is checked first. */
 export async function screenshot(page: Page, name: string) {
   await expectAccessible(page, `screenshot ${name}`);
-  const dir = join(root, "docs", "screenshots");
+  const dir = screenshotFolder();
   mkdirSync(dir, { recursive: true });
   await page.screenshot({ path: join(dir, `${name}.png`) });
 }

@@ -2,10 +2,8 @@
 // server's shared parts from the environment (server() in
 // src/server/context.ts), so this points the environment at a fresh database
 // and a throwaway media folder first; every test file runs in its own process.
-import { mkdtempSync } from "node:fs";
-import { tmpdir } from "node:os";
-import { join } from "node:path";
 import { freshDatabase } from "./db";
+import { scratchFolder } from "./scratch";
 import { buildFixture, TEST_SECRET, type Caller } from "../api/fixture";
 
 export const ORIGIN = "http://localhost:3000";
@@ -16,7 +14,7 @@ export async function routeServer() {
     DATABASE_URL: database.url,
     BETTER_AUTH_SECRET: TEST_SECRET,
     BETTER_AUTH_URL: ORIGIN,
-    HRI_MEDIA_DIR: mkdtempSync(join(tmpdir(), "hri-route-media-")),
+    HRI_MEDIA_DIR: scratchFolder("route-media-"),
     HRI_MEDIA_S3_URL: "",
   });
   const { server, contextFromHeaders } = await import("../../src/server/context");

@@ -1,10 +1,11 @@
 // A real OpenSSH server on loopback for the SSH transport's tests, with a
 // recording `qicli` stand-in first on the PATH of every session.
 import { spawn, spawnSync, type ChildProcess } from "node:child_process";
-import { chmodSync, existsSync, mkdtempSync, readFileSync, writeFileSync } from "node:fs";
-import { tmpdir, userInfo } from "node:os";
+import { chmodSync, existsSync, readFileSync, writeFileSync } from "node:fs";
+import { userInfo } from "node:os";
 import { join } from "node:path";
 import { freePort } from "../../src/store/embedded";
+import { scratchFolder } from "./scratch";
 
 export const SSHD = "/usr/sbin/sshd";
 
@@ -23,7 +24,7 @@ export async function startSshd(): Promise<TestSshd> {
     throw new Error(
       "openssh-server is needed for the SSH tests: apt-get install openssh-server (npm test installs it as root).",
     );
-  const dir = mkdtempSync(join(tmpdir(), "hri-sshd-"));
+  const dir = scratchFolder("sshd-");
   chmodSync(dir, 0o755);
   const key = (name: string, type: string) =>
     spawnSync("ssh-keygen", ["-q", "-t", type, "-N", "", "-f", join(dir, name)]);

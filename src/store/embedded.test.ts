@@ -1,0 +1,29 @@
+// A restart after a crash stops the PostgreSQL server its folder's
+// postmaster.pid names, and only that: a pid another program holds now is left
+// alone, and the stale file goes so that our own server can start.
+import { spawn } from "node:child_process";
+import { existsSync, mkdirSync, writeFileSync } from "node:fs";
+import { join } from "node:path";
+import { afterAll, describe, expect, it } from "vitest";
+import { scratchFolder } from "../../tests/support/scratch";
+import { stopOrphan } from "./embedded";
+
+describe("a postmaster.pid left by a crash", () => {
+  const stranger = spawn("sleep", ["60"], { stdio: "ignore" });
+  const ended = new Promise<NodeJS.Signals | null>((ok) => stranger.once("exit", (_code, signal) => ok(signal)));
+  afterAll(() => stranger.kill("SIGKILL"));
+
+  it("naming another program's pid: leaves it running and removes the stale file", async () => {
+    const pgDir = join(scratchFolder("orphan-"), "postgres");
+    mkdirSync(pgDir);
+    const pidFile = join(pgDir, "postmaster.pid");
+    writeFileSync(pidFile, `${stranger.pid}\n${pgDir}\n1700000000\n5432\n`);
+
+    expect(await stopOrphan(pgDir)).toBeNull();
+
+    expect(existsSync(pidFile)).toBe(false);
+    // Still running, untouched: the signal that ends it is the one sent now.
+    stranger.kill("SIGKILL");
+    expect(await ended).toBe("SIGKILL");
+  });
+});
