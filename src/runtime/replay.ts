@@ -53,10 +53,8 @@ export function simulatorReplays(db: Database, claims: RobotClaims): Replays {
   /** How to stop each replay playing here. */
   const replaying = new Set<(detail: string) => void>();
 
-  /** The first simulated robot available to the trial's study that nothing holds, claimed; or why there is none. */
-  async function takeRobot(trialId: string, robotId: string): Promise<Taken | string> {
-    const { available, any } = await simulatedRobotsFor(db, trialId, robotId);
-    if (!available.length) return any ? NONE_FOR_STUDY : NO_SIMULATOR;
+  /** The first of the simulated robots that nothing holds, claimed; or why there is none. */
+  async function takeRobot(available: RobotRecord[]): Promise<Taken | string> {
     let busy: string | null = null;
     for (const robot of available) {
       let lost = () => {};
@@ -84,13 +82,15 @@ export function simulatorReplays(db: Database, claims: RobotClaims): Replays {
   async function prepare(trialId: string, speed: number) {
     const withdrawn = await withdrawnFrom(db, trialId);
     if (withdrawn) return withdrawn;
-    if (!(REPLAY_SPEEDS as readonly number[]).includes(speed))
-      return `A replay plays at ${REPLAY_SPEEDS.map((s) => `×${s}`).join(", ")}, not ×${speed}.`;
     const chosen = await trialPlugin(db, trialId);
     if (!chosen.ok) return chosen.reason;
+    const { available, any } = await simulatedRobotsFor(db, trialId, chosen.robotId);
+    if (!available.length) return any ? NONE_FOR_STUDY : NO_SIMULATOR;
+    if (!(REPLAY_SPEEDS as readonly number[]).includes(speed))
+      return `A replay plays at ${REPLAY_SPEEDS.map((s) => `×${s}`).join(", ")}, not ×${speed}.`;
     if (!chosen.plugin)
       return `No robot plugin "${chosen.robotId}" is installed, so this trial's robot messages cannot be made again.`;
-    const taken = await takeRobot(trialId, chosen.robotId);
+    const taken = await takeRobot(available);
     if (typeof taken === "string") return taken;
     const url = taken.robot.rosbridgeUrl!;
     let sim = links.get(url);

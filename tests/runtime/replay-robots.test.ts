@@ -4,7 +4,8 @@
 // of his own is refused in plain words that do not name A's trial, and the
 // robot (and A's wizard) hear nothing of B; once A's trial has ended the replay
 // plays; while it plays, a second replay and a trial starting on the robot are
-// refused; once it is stopped, the trial starts.
+// refused; once it is stopped, the trial starts. A study no simulated robot
+// is available to replays on none.
 import { readFileSync } from "node:fs";
 import { and, eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -205,5 +206,20 @@ describe.sequential("a replay takes its robot the way a trial does", () => {
     expect(await wizard.command("c1", { kind: "start" })).toMatchObject({ type: "ack" });
     const [row] = await db.select({ status: trials.status }).from(trials).where(eq(trials.id, next));
     expect(row!.status).toBe("in_progress");
+  });
+
+  it("is refused when no simulated robot is available to the study, saying who can make one available", async () => {
+    await db.update(robots).set({ allStudies: false });
+    try {
+      const { reply } = await replay("observerB", trialB, "r4");
+      expect(reply).toEqual({
+        type: "rejected",
+        requestId: "r4",
+        reason:
+          "No simulated robot is available to this study, so the replay did not start: an administrator makes one available (Administration → Robots).",
+      });
+    } finally {
+      await db.update(robots).set({ allStudies: true });
+    }
   });
 });
