@@ -206,8 +206,7 @@ export function trialHosts(
     async closeAll() {
       for (const host of hosts.values()) await (await host.catch(() => null))?.close();
       hosts.clear();
-      await locks.close();
-      await claims.close();
+      await Promise.all([locks.close(), claims.close()]);
     },
   };
 }
