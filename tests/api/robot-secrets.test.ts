@@ -70,7 +70,7 @@ describe("the names the robot form may give", () => {
   it("lists the robot variables of the server by name, never a value nor another variable", async () => {
     const names = await admin.robots.secretNames();
     expect(names).toEqual(expect.arrayContaining(Object.keys(set)));
-    expect(names.every((n) => n.startsWith("HRI_ROBOT_SECRET_") || n === "HRI_ROBOT_SSH_PASSWORD")).toBe(true);
+    expect(names.every((n) => n.startsWith("HRI_ROBOT_SECRET_"))).toBe(true);
     expect(JSON.stringify(names)).not.toMatch(/window-password|pepper-password|BETTER_AUTH_SECRET|DATABASE_URL/);
   });
 });

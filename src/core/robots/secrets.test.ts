@@ -33,7 +33,7 @@ describe("secret references", () => {
   });
 });
 
-it("lists the variables a robot may name, and no other", () => {
+it("offers the robot variables by name, and no other", () => {
   expect(
     robotSecretNames([
       "PATH",
@@ -44,5 +44,5 @@ it("lists the variables a robot may name, and no other", () => {
       "DATABASE_URL",
       "HRI_ROBOT_SSH_HOST",
     ]),
-  ).toEqual(["HRI_ROBOT_SECRET_NAO_A", "HRI_ROBOT_SECRET_PEPPER", "HRI_ROBOT_SSH_PASSWORD"]);
+  ).toEqual(["HRI_ROBOT_SECRET_NAO_A", "HRI_ROBOT_SECRET_PEPPER"]);
 });

@@ -20,8 +20,12 @@ export const isRobotSecret = (name: string) =>
   (name.startsWith(ROBOT_SECRET_PREFIX) && name.length > ROBOT_SECRET_PREFIX.length) ||
   name === ENVIRONMENT_ROBOT_PASSWORD;
 
-/** The variables of an environment a robot record may name, sorted: names only, never values. */
-export const robotSecretNames = (names: Iterable<string>) => [...names].filter(isRobotSecret).sort();
+/**
+ * The robot variables of an environment, sorted, for the form to offer: names only, never values. Not the
+ * environment robot's password: its record names it already (and the launcher sets it for the web app alone).
+ */
+export const robotSecretNames = (names: Iterable<string>) =>
+  [...names].filter((n) => isRobotSecret(n) && n.startsWith(ROBOT_SECRET_PREFIX)).sort();
 
 /**
  * Reads "env:HRI_ROBOT_SECRET_…" or "file:/absolute/path"; anything else is refused with the reason, which
