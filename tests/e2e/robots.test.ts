@@ -119,7 +119,7 @@ describe.sequential("two robots, two wizards", () => {
     // Names only: the value never reaches the page.
     await page.getByText(/Variables this server has for robots: HRI_ROBOT_SECRET_NAO_WINDOW\./).waitFor();
     expect(await page.content()).not.toContain("the-window-nao-password");
-    await page.getByLabel("Name", { exact: true }).fill("NAO by the door");
+    await page.getByLabel("Name").fill("NAO by the door");
     await page.getByLabel("SSH host").fill("192.0.2.66");
     await page.getByLabel("SSH user").fill("nao");
     await secret.fill("env:BETTER_AUTH_SECRET");
