@@ -19,12 +19,14 @@ export interface RobotClaims {
   close(): Promise<void>;
 }
 
-const key = (robotId: string) => `robot:${robotId}`;
+/** A robot's lock among the trials' (trial ids are bare uuids, so the two never meet). */
+const PREFIX = "robot:";
+const key = (robotId: string) => `${PREFIX}${robotId}`;
 
 export function robotClaims(newSession: () => postgres.Sql): RobotClaims {
   const held = new Map<string, { holder: RobotHolder; lost?: () => void }>();
   const locks = trialLocks(newSession, (locked) => {
-    const robotId = locked.slice("robot:".length);
+    const robotId = locked.slice(PREFIX.length);
     const claim = held.get(robotId);
     held.delete(robotId);
     claim?.lost?.();
