@@ -3,9 +3,9 @@
 // trial drives the one simulated robot, a member of study B replaying a trial
 // of his own is refused in plain words that do not name A's trial, and the
 // robot (and A's wizard) hear nothing of B; once A's trial has ended the replay
-// plays; while it plays, a second replay and a trial starting on the robot are
-// refused; once it is stopped, the trial starts. A study no simulated robot
-// is available to replays on none.
+// plays; while it plays, a second replay (in this runtime process or another)
+// and a trial starting on the robot are refused; once it is stopped, the trial
+// starts. A study no simulated robot is available to replays on none.
 import { readFileSync } from "node:fs";
 import { and, eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -56,6 +56,8 @@ const url = await freshDatabaseUrl();
 const { db, close } = createDatabase(url, { max: 4 });
 let sim: Simulator;
 let runtime: Awaited<ReturnType<typeof startRuntime>>;
+/** A second runtime process on the same database, as a scaled-out deployment has. */
+let other: Awaited<ReturnType<typeof startRuntime>>;
 const sockets: TrialSocket[] = [];
 const people: Record<string, string> = {};
 
@@ -90,8 +92,8 @@ async function study(title: string, line: string, members: Record<string, "wizar
     )[0]!.id;
 }
 
-async function open(who: string, trialId: string) {
-  const socket = await connectTrial(runtime.url, signSocketToken({ userId: people[who]!, trialId }, SECRET));
+async function open(who: string, trialId: string, on = runtime) {
+  const socket = await connectTrial(on.url, signSocketToken({ userId: people[who]!, trialId }, SECRET));
   sockets.push(socket);
   return socket;
 }
@@ -107,8 +109,8 @@ const spokenSince = (from: number) =>
     .filter((h) => h.topic === "/speech")
     .map((h) => (h.msg as { data: string }).data);
 
-async function replay(who: string, trialId: string, requestId: string) {
-  const socket = await open(who, trialId);
+async function replay(who: string, trialId: string, requestId: string, on = runtime) {
+  const socket = await open(who, trialId, on);
   socket.send({ type: "replay", requestId, fromMs: 0, speed: 0.5 });
   return { socket, reply: await socket.next((m) => m.requestId === requestId) };
 }
@@ -130,6 +132,7 @@ beforeAll(async () => {
   });
   // HRI_SIMULATOR_URL as the launcher sets it: before, every replay went there, whoever drove the robot.
   runtime = await startRuntime(url, SECRET, { HRI_SIMULATOR_URL: sim.url });
+  other = await startRuntime(url, SECRET, { HRI_SIMULATOR_URL: sim.url });
 
   // Study B's trial, run to its end on the robot.
   trialB = await startB();
@@ -149,6 +152,7 @@ beforeAll(async () => {
 afterAll(async () => {
   for (const s of sockets) s.close();
   runtime?.child.kill("SIGKILL");
+  other?.child.kill("SIGKILL");
   await sim?.close();
   await close();
 });
@@ -189,6 +193,13 @@ describe.sequential("a replay takes its robot the way a trial does", () => {
   it("while it plays, a second replay is refused, and so is a trial starting on its robot", async () => {
     const { reply } = await replay("researcherB", trialB, "r3");
     expect(reply).toEqual({ type: "rejected", requestId: "r3", reason: BUSY("playing another replay") });
+    // Another runtime process sees the robot held too (it cannot tell by whom).
+    const elsewhere = await replay("researcherB", trialB, "r3b", other);
+    expect(elsewhere.reply).toEqual({
+      type: "rejected",
+      requestId: "r3b",
+      reason: BUSY("busy with another trial or replay"),
+    });
 
     const next = await startA();
     const wizard = await open("wizardA", next);
