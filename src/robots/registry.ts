@@ -3,7 +3,8 @@
 // study), who holds a robot now, and the live health the runtime writes.
 // The rules themselves are pure (src/core/robots/registry.ts).
 import { and, asc, eq, inArray, isNull, ne, or } from "drizzle-orm";
-import { chooseRobot, parseSecretReference, robotTaken } from "@/core/robots/registry";
+import { chooseRobot, robotTaken, runsPlugin } from "@/core/robots/registry";
+import { parseSecretReference, type SecretReference } from "@/core/robots/secrets";
 import type { Database } from "@/store/client";
 import { experiments, participants, robotStudies, robots, trials } from "@/store/schema";
 import type { TransportConfig } from "./transports";
@@ -12,6 +13,16 @@ export type RobotRecord = typeof robots.$inferSelect;
 
 const LIVE = ["in_progress", "paused"] as const;
 
+/**
+ * Where the robot's SSH secret is read (null: it has none), or why the record cannot be used: one saved
+ * before robot secrets had their own variables may name any (`parseSecretReference`).
+ */
+export function secretOf(robot: RobotRecord): SecretReference | null | { error: string } {
+  if (!robot.sshSecret) return null;
+  const secret = parseSecretReference(robot.sshSecret);
+  return "error" in secret ? { error: `The SSH secret of "${robot.name}" ${secret.error}.` } : secret;
+}
+
 /** The ways to reach a registered robot, its SSH secret read from where the record says. */
 export function connectionOf(
   robot: RobotRecord,
@@ -19,9 +30,9 @@ export function connectionOf(
 ): { ok: true; config: TransportConfig } | { ok: false; reason: string } {
   let password: string | undefined;
   let privateKeyFile: string | undefined;
-  if (robot.sshSecret) {
-    const secret = parseSecretReference(robot.sshSecret);
-    if ("error" in secret) return { ok: false, reason: `The SSH secret of "${robot.name}" ${secret.error}.` };
+  const secret = secretOf(robot);
+  if (secret) {
+    if ("error" in secret) return { ok: false, reason: secret.error };
     if (secret.kind === "env") {
       password = env[secret.name];
       if (!password)
@@ -108,6 +119,31 @@ export async function robotOfTrial(
     .innerJoin(trials, eq(trials.assignedRobotId, robots.id))
     .where(eq(trials.id, trialId));
   return kept ? { ok: true, robot: kept.robots } : { ok: true, robot: chosen };
+}
+
+/**
+ * The simulated robots a replay of the trial may use: those available to its study that run its plugin,
+ * by name; and whether this server has a simulated robot at all (for the words of a refusal).
+ */
+export async function simulatedRobotsFor(
+  db: Database,
+  trialId: string,
+  robotId: string,
+): Promise<{ available: RobotRecord[]; any: boolean }> {
+  const [trial] = await db.select({ studyId: trials.studyId }).from(trials).where(eq(trials.id, trialId));
+  const [any] = await db.select({ id: robots.id }).from(robots).where(eq(robots.simulated, true)).limit(1);
+  const ofStudy = trial ? await robotsOfStudy(db, trial.studyId) : [];
+  return { available: ofStudy.filter((r) => r.simulated && r.rosbridgeUrl && runsPlugin(r, robotId)), any: !!any };
+}
+
+/** Whether a live trial (in progress or paused, of any study and any process) drives the robot. */
+export async function drivenByLiveTrial(db: Database, robotId: string): Promise<boolean> {
+  const [live] = await db
+    .select({ id: trials.id })
+    .from(trials)
+    .where(and(eq(trials.assignedRobotId, robotId), inArray(trials.status, [...LIVE])))
+    .limit(1);
+  return !!live;
 }
 
 /**

@@ -56,8 +56,8 @@ const hosts = trialHosts(
   (...args) => announceRobotState(...args),
 );
 const relay = await eventRelay(db, sql);
-// Replays go to the simulated robot only (HRI_SIMULATOR_URL), never to the robot settings above.
-const replays = simulatorReplays(db, config.HRI_SIMULATOR_URL);
+// Replays go to simulated robots only, taken as trials take theirs: never one a trial or replay holds.
+const replays = simulatorReplays(db, hosts.claims);
 const runtime = startRuntimeServer({
   db,
   hosts,
@@ -89,8 +89,8 @@ const stop = async () => {
   }, SHUTDOWN_MS).unref();
   clearInterval(purge);
   server.stop(true);
-  await hosts.closeAll();
   await replays.close();
+  await hosts.closeAll();
   // Ending the pool ends the listening connection too; unlistening first is a courtesy that a database
   // already gone (stopped, or crashed) answers with an error worth nothing at this point.
   await Promise.allSettled([relay.close(), access.close()]);

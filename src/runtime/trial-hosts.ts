@@ -6,22 +6,23 @@
 // ever opened. A finished trial is opened without a robot at all.
 //
 // Each trial drives the registered robot it was given (src/robots/registry.ts),
-// and one robot is never driven by two live trials: a start is refused while
-// another trial holds the trial's robot, in this process (a start under way)
-// and in the database (a live trial of any process; its unique index is the
-// last word when two processes start at the same moment).
+// and one robot is never driven by two at once: a start is refused while a
+// start under way or a replay holds the trial's robot (`robotClaims`, in any
+// process), and while another live trial does (the database; its unique index
+// is the last word when two processes start at the same moment).
 import { eq } from "drizzle-orm";
 import type postgres from "postgres";
 import { cannotStart, type Plugin } from "@/core/plugins";
 import type { Database } from "@/store/client";
 import { experimentVersions, trials } from "@/store/schema";
 import { trialPlugin } from "@/robots/trial-plugin";
-import { isRobotTakenError, robotHeldBy, robotOfTrial, type RobotRecord } from "@/robots/registry";
-import { robotTaken } from "@/core/robots/registry";
+import { isRobotTakenError, robotHeldBy, robotOfTrial, secretOf, type RobotRecord } from "@/robots/registry";
+import { robotClaimed, robotTaken } from "@/core/robots/registry";
 import type { LiveRobotState } from "@/core/robots/live-state";
 import type { RobotLink } from "./robot";
 import { unavailableRobot } from "./robot-link";
 import { trialLocks } from "./trial-locks";
+import { robotClaims, type RobotClaims } from "./robot-claims";
 import { logUnexpected } from "@/store/error-reference";
 import { TrialHost, type CommandResult } from "./trial-host";
 import { groupWriter } from "./log-writer";
@@ -36,6 +37,8 @@ export interface TrialHosts {
   closeAll(): Promise<void>;
   /** How many trials this process holds open now (with their robot links and locks). */
   readonly size: number;
+  /** Who holds a robot while a trial starts on it or a replay plays on it; replays take theirs here too. */
+  readonly claims: RobotClaims;
 }
 
 export function trialHosts(
@@ -58,8 +61,8 @@ export function trialHosts(
   const log = groupWriter(db);
   /** The registered robot of each trial open here. */
   const robotOf = new Map<string, RobotRecord>();
-  /** Robots whose trial is starting now, not yet live in the database: robot → trial. */
-  const starting = new Map<string, string>();
+  /** Robots whose trial is starting now (not yet live in the database), or that a replay plays on. */
+  const claims = robotClaims(lockSession);
   // A lock lost with its connection and taken by another process: that process runs the trial now.
   const locks = trialLocks(lockSession, (trialId) => {
     void hosts
@@ -163,11 +166,13 @@ export function trialHosts(
     return host;
   }
 
-  /** Starts the trial unless another trial drives its robot, here or anywhere. */
+  /** Starts the trial unless its robot's record cannot be used, or another trial or a replay drives it. */
   async function startOn(robot: RobotRecord, trialId: string, start: () => Promise<CommandResult>) {
-    const other = starting.get(robot.id);
-    if (other && other !== trialId) return refused(robotTaken(robot.name, "a trial that is starting now"));
-    starting.set(robot.id, trialId);
+    // A record saved before robot secrets had their own variables may name the platform's: nothing is sent.
+    const secret = secretOf(robot);
+    if (secret && "error" in secret) return refused(secret.error);
+    const claim = await claims.take(robot.id, "starting trial");
+    if (!claim.ok) return refused(robotClaimed(robot.name, claim.holder));
     try {
       const held = await robotHeldBy(db, robot, trialId);
       if (held) return refused(held);
@@ -176,7 +181,7 @@ export function trialHosts(
       if (!isRobotTakenError(error)) throw error;
       return refused((await robotHeldBy(db, robot, trialId)) ?? robotTaken(robot.name, "another trial"));
     } finally {
-      if (starting.get(robot.id) === trialId) starting.delete(robot.id);
+      claim.release();
     }
   }
 
@@ -197,10 +202,11 @@ export function trialHosts(
     get size() {
       return hosts.size;
     },
+    claims,
     async closeAll() {
       for (const host of hosts.values()) await (await host.catch(() => null))?.close();
       hosts.clear();
-      await locks.close();
+      await Promise.all([locks.close(), claims.close()]);
     },
   };
 }

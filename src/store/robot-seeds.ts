@@ -5,6 +5,7 @@
 // change each time), never adds a second one.
 import { resolve } from "node:path";
 import { and, like, notInArray } from "drizzle-orm";
+import { ROBOT_SECRET_PREFIX } from "../core/robots/secrets";
 import type { Database } from "./client";
 import type { Config } from "./config";
 import { robots } from "./schema";
@@ -72,8 +73,11 @@ export function environmentSeed(config: Config): RobotSeed | null {
   };
 }
 
-/** The environment variable the launcher puts simulated robot `n`'s SSH password in (fresh at every start). */
-export const simulatorPasswordVariable = (n: number) => `HRI_SIMULATED_ROBOT_${n}_SSH_PASSWORD`;
+/**
+ * The environment variable the launcher puts simulated robot `n`'s SSH password in (fresh at every start),
+ * among the robots' secrets: a record may name no other (src/core/robots/secrets.ts).
+ */
+export const simulatorPasswordVariable = (n: number) => `${ROBOT_SECRET_PREFIX}SIMULATED_ROBOT_${n}`;
 
 export function simulatorSeed(n: number, rosbridgeUrl: string, sshPort: number): RobotSeed {
   return {

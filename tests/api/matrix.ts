@@ -68,7 +68,7 @@ const robotInput = (b: Base) => ({
   rosbridgeUrl: "ws://192.0.2.10:9090",
   sshHost: "192.0.2.10",
   sshUser: "nao",
-  sshSecret: "env:NAO_SSH_PASSWORD",
+  sshSecret: "env:HRI_ROBOT_SECRET_NAO",
   studyIds: [b.study.id],
 });
 
@@ -375,6 +375,7 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "admin.auditLog": [ADMIN, () => ({ limit: 10 })],
   "robots.list": [ADMIN, () => undefined],
   "robots.studies": [ADMIN, () => undefined],
+  "robots.secretNames": [ADMIN, () => undefined],
   "robots.register": [ADMIN, (_f, b) => robotInput(b)],
   "robots.update": [
     ADMIN,

@@ -2,13 +2,15 @@
 // wizards in two browsers, each trial on its own robot: each wizard sees which
 // robot before starting, and what it is doing while the trial runs; each
 // robot hears its own trial's speech, once; the administrator sees both robots'
-// health; the analysis times each robot's speech as the robot spoke it.
+// health; the analysis times each robot's speech as the robot spoke it. The
+// robot form lists the robot variables a password may be read from, by name.
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { fidelityReport } from "../../src/core/analysis/fidelity";
 import { DEMO_PASSWORD, SIMULATOR_MS_PER_CHAR, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
+import { expectAccessible } from "../support/accessibility";
 import { explained } from "../support/explain";
 import { listenToSpeech } from "../support/robot-ears";
 
@@ -20,7 +22,9 @@ describe.sequential("two robots, two wizards", () => {
   const trialPaths: string[] = [];
 
   beforeAll(async () => {
-    app = await startApp({ env: { HRI_SIMULATED_ROBOTS: "2" } });
+    app = await startApp({
+      env: { HRI_SIMULATED_ROBOTS: "2", HRI_ROBOT_SECRET_NAO_WINDOW: "the-window-nao-password" },
+    });
     browser = await launchBrowser();
     const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
     const wizard = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
@@ -105,4 +109,28 @@ describe.sequential("two robots, two wizards", () => {
     for (const ear of ears) ear.close();
     for (const page of [...pages, adminPage]) await page.context().close();
   }, 120_000);
+
+  it("the robot form lists the robot variables it may name, and refuses the platform's own secret", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "admin@demo.hristudio", DEMO_PASSWORD);
+    await page.goto("/admin/robots");
+    await page.getByRole("button", { name: "Register a robot" }).click();
+    const secret = page.getByLabel("SSH secret (where to read it)");
+    // Names only: the value never reaches the page.
+    await page.getByText(/Variables this server has for robots: HRI_ROBOT_SECRET_NAO_WINDOW\./).waitFor();
+    expect(await page.content()).not.toContain("the-window-nao-password");
+    await page.getByLabel("Name").fill("NAO by the door");
+    await page.getByLabel("SSH host").fill("192.0.2.66");
+    await page.getByLabel("SSH user").fill("nao");
+    await secret.fill("env:BETTER_AUTH_SECRET");
+    await page.getByRole("button", { name: "Register robot" }).click();
+    await page
+      .getByText(
+        "The SSH secret refers to BETTER_AUTH_SECRET, which is not a robot secret; name a variable starting HRI_ROBOT_SECRET_",
+      )
+      .waitFor();
+    expect(await secret.getAttribute("aria-invalid")).toBe("true");
+    await expectAccessible(page, "the robot form refusing a secret");
+    await page.context().close();
+  }, 60_000);
 });

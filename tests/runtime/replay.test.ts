@@ -18,7 +18,15 @@ import { SNAPSHOT_SCHEMA_VERSION } from "../../src/core/protocol/document";
 import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/store/client";
-import { experimentVersions, experiments, studies, studyMembers, trialEvents, trials } from "../../src/store/schema";
+import {
+  experimentVersions,
+  experiments,
+  robots,
+  studies,
+  studyMembers,
+  trialEvents,
+  trials,
+} from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { startRuntime } from "../support/runtime";
@@ -146,7 +154,11 @@ describe.sequential("a finished trial replayed on the simulated robot", () => {
       .values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id, wizardId: people.wizard })
       .returning();
     trialId = trial!.id;
-    const runtime = await startRuntime(url, SECRET, { HRI_ROSBRIDGE_URL: sim.url, HRI_SIMULATOR_URL: sim.url });
+    // The simulated robot as npm start registers it: the live trial and its replays both take it.
+    await db
+      .insert(robots)
+      .values({ name: "Simulated robot 1", simulated: true, rosbridgeUrl: sim.url, allStudies: true });
+    const runtime = await startRuntime(url, SECRET);
     stopRuntime = () => runtime.child.kill("SIGKILL");
     open = (userId) => connectTrial(runtime.url, signSocketToken({ userId, trialId }, SECRET));
 

@@ -1,25 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { chooseRobot, parseSecretReference, runsPlugin } from "./registry";
-
-describe("secret references", () => {
-  it.each([
-    ["env:NAO_A_SSH_PASSWORD", { kind: "env", name: "NAO_A_SSH_PASSWORD" }],
-    ["file:/etc/hristudio/nao-a.key", { kind: "file", path: "/etc/hristudio/nao-a.key" }],
-    ["file:/c:/odd:name", { kind: "file", path: "/c:/odd:name" }],
-  ])("%s is read as a reference", (reference, expected) => {
-    expect(parseSecretReference(reference)).toEqual(expected);
-  });
-
-  it.each([
-    ["a plain password", "hunter2", "must be env:VARIABLE or file:/path"],
-    ["a password after env:", "env:p@ss word", "must name an environment variable"],
-    ["a relative key path", "file:keys/nao.key", "absolute path"],
-    ["nothing after the kind", "env:", "must name an environment variable"],
-  ])("%s is refused", (_, reference, reason) => {
-    const parsed = parseSecretReference(reference);
-    expect("error" in parsed && parsed.error).toContain(reason);
-  });
-});
+import { chooseRobot, replayBusy, robotClaimed, runsPlugin } from "./registry";
 
 const nao = (id: string) => ({ id, name: `NAO ${id}`, pluginRobotId: "nao6-ros2" });
 const sim = (id: string) => ({ id, name: `Simulated ${id}`, pluginRobotId: null });
@@ -41,5 +21,24 @@ describe("choosing a robot for a trial", () => {
   it("a simulated robot runs every plugin, a real one only its own", () => {
     expect(runsPlugin(sim("s"), "pepper-ros2")).toBe(true);
     expect(runsPlugin(nao("a"), "pepper-ros2")).toBe(false);
+  });
+});
+
+describe("the words when a robot is busy", () => {
+  it.each([
+    ["live trial", 'The simulated robot "Sim 1" is running another trial; replay when it is free.'],
+    ["starting trial", 'The simulated robot "Sim 1" is running another trial; replay when it is free.'],
+    ["replay", 'The simulated robot "Sim 1" is playing another replay; replay when it is free.'],
+    ["elsewhere", 'The simulated robot "Sim 1" is busy with another trial or replay; replay when it is free.'],
+  ] as const)("a replay refused while %s holds the robot", (holder, words) => {
+    expect(replayBusy("Sim 1", holder)).toBe(words);
+  });
+
+  it.each([
+    ["starting trial", "another live trial (a trial that is starting now)"],
+    ["replay", "a replay of a finished trial"],
+    ["elsewhere", "a replay, or a trial starting in another runtime"],
+  ] as const)("a start refused while %s holds the robot", (holder, words) => {
+    expect(robotClaimed("Sim 1", holder)).toContain(`"Sim 1" is being driven by ${words}`);
   });
 });

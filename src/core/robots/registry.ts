@@ -1,30 +1,6 @@
-// The robot registry's rules, with no I/O: how a record names its secret,
-// which registered robots can run a plugin, and the words a wizard reads when
-// a robot is taken. The database and the runtime apply them.
-
-/** Where a robot's SSH secret is read: an environment variable (a password) or a file (a private key). */
-export type SecretReference = { kind: "env"; name: string } | { kind: "file"; path: string };
-
-const ENV_NAME = /^[A-Za-z_][A-Za-z0-9_]*$/;
-
-/** Reads "env:NAME" or "file:/absolute/path"; anything else is refused with the reason (a secret itself never fits). */
-export function parseSecretReference(reference: string): SecretReference | { error: string } {
-  const [kind, ...rest] = reference.split(":");
-  const value = rest.join(":");
-  if (kind === "env") {
-    return ENV_NAME.test(value)
-      ? { kind: "env", name: value }
-      : { error: "must name an environment variable, e.g. env:NAO_A_SSH_PASSWORD" };
-  }
-  if (kind === "file") {
-    return value.startsWith("/")
-      ? { kind: "file", path: value }
-      : { error: "must give the absolute path of a key file, e.g. file:/etc/hristudio/nao-a.key" };
-  }
-  return {
-    error: "must be env:VARIABLE or file:/path (the secret itself is never stored; say where the server reads it)",
-  };
-}
+// The robot registry's rules, with no I/O: which registered robots can run a
+// plugin, and the words a wizard reads when a robot is taken. The database and
+// the runtime apply them. How a record names its secret: secrets.ts.
 
 export interface RegisteredRobot {
   id: string;
@@ -58,4 +34,31 @@ export function chooseRobot<R extends RegisteredRobot>(
 /** The refusal a wizard reads when the trial's robot is driven by another live trial. */
 export function robotTaken(robotName: string, holder: string): string {
   return `The robot "${robotName}" is being driven by another live trial (${holder}). This trial can start once that one has ended.`;
+}
+
+/**
+ * Who holds a robot besides its live trial: a trial starting in this runtime process, a replay playing in
+ * it, or either in another runtime process (an advisory lock says only that it is held).
+ */
+export type RobotHolder = "starting trial" | "replay" | "elsewhere";
+
+/** The refusal a wizard reads when the trial's robot is held by a start or a replay. */
+export function robotClaimed(robotName: string, holder: RobotHolder): string {
+  if (holder === "starting trial") return robotTaken(robotName, "a trial that is starting now");
+  const by = holder === "replay" ? "a replay of a finished trial" : "a replay, or a trial starting in another runtime";
+  return `The robot "${robotName}" is being driven by ${by}. This trial can start once it is free.`;
+}
+
+/**
+ * The refusal a replay gets when its simulated robot is busy. The trial that holds it is never named: it
+ * may be another study's.
+ */
+export function replayBusy(robotName: string, holder: RobotHolder | "live trial"): string {
+  const doing =
+    holder === "replay"
+      ? "playing another replay"
+      : holder === "elsewhere"
+        ? "busy with another trial or replay"
+        : "running another trial";
+  return `The simulated robot "${robotName}" is ${doing}; replay when it is free.`;
 }

@@ -1,10 +1,11 @@
 "use client";
 // Registering a robot, or changing one: its name, the plugin that drives it,
-// its ways in, where its SSH secret is read (never the secret itself), and the
-// studies that may use it.
+// its ways in, where its SSH secret is read (never the secret itself; the
+// variables it may name are listed by name), and the studies that may use it.
 import { useMutation, useQuery } from "@tanstack/react-query";
 import { useState, type FormEvent } from "react";
 import type { inferRouterOutputs } from "@trpc/server";
+import { ROBOT_SECRET_PREFIX } from "@/core/robots/secrets";
 import type { AppRouter } from "@/server/api/root";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
@@ -35,6 +36,7 @@ export function RobotForm({ robot, onDone }: { robot: RegisteredRobot | null; on
   const trpc = useTRPC();
   const plugins = useQuery(trpc.plugins.list.queryOptions());
   const studies = useQuery(trpc.robots.studies.queryOptions());
+  const secretNames = useQuery(trpc.robots.secretNames.queryOptions());
   const [form, setForm] = useState(() => initial(robot));
   const set = (changes: Partial<typeof form>) => setForm((f) => ({ ...f, ...changes }));
   const register = useMutation(trpc.robots.register.mutationOptions({ onSuccess: onDone }));
@@ -111,9 +113,13 @@ export function RobotForm({ robot, onDone }: { robot: RegisteredRobot | null; on
           <Field
             label="SSH secret (where to read it)"
             error={fieldError(error, "sshSecret")}
-            hint="env:VARIABLE for a password in the runtime's environment, or file:/path for a private key. The secret itself is never stored."
+            hint={`env:${ROBOT_SECRET_PREFIX}NAME for a password in the runtime's environment (only such variables, never the platform's own settings), or file:/path for a private key. The secret itself is never stored. ${
+              secretNames.data?.length
+                ? `Variables this server has for robots: ${secretNames.data.join(", ")}.`
+                : `This server has no variable starting ${ROBOT_SECRET_PREFIX} yet: set one where the platform is started.`
+            }`}
           >
-            {(p) => <Input {...p} placeholder="env:NAO_WINDOW_SSH_PASSWORD" {...text("sshSecret")} />}
+            {(p) => <Input {...p} placeholder={`env:${ROBOT_SECRET_PREFIX}NAO_WINDOW`} {...text("sshSecret")} />}
           </Field>
         </div>
         <fieldset className="md:col-span-2 space-y-2 text-sm">

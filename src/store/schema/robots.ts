@@ -17,7 +17,7 @@ export const robots = pgTable("robots", {
   sshHost: text("ssh_host"),
   sshPort: integer("ssh_port").notNull().default(22),
   sshUser: text("ssh_user"),
-  // "env:NAME" or "file:/path": where the SSH password or private key is read (src/core/robots/secret-reference.ts).
+  // "env:NAME" or "file:/path": where the SSH password or private key is read (src/core/robots/secrets.ts).
   sshSecret: text("ssh_secret"),
   httpUrl: text("http_url"),
   // Available to every study (the simulated robots by default); otherwise only to those in robot_studies.

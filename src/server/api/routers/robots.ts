@@ -5,7 +5,7 @@
 import { TRPCError } from "@trpc/server";
 import { and, asc, eq, inArray } from "drizzle-orm";
 import { z } from "zod";
-import { parseSecretReference } from "@/core/robots/registry";
+import { parseSecretReference, robotSecretNames } from "@/core/robots/secrets";
 import { robotStudies, robots, studies, trials } from "@/store/schema";
 import { audit } from "../../audit";
 import { guarded, router } from "../trpc";
@@ -89,6 +89,9 @@ export const robotsRouter = router({
       studies: availability.filter((a) => a.robotId === robot.id).map(({ studyId, title }) => ({ id: studyId, title })),
     }));
   }),
+
+  /** The variables a robot's SSH password may be read from, as this server has them: names, never values. */
+  secretNames: guarded("admin.robots").query(() => robotSecretNames(Object.keys(process.env))),
 
   /** Every study, for choosing where a robot is available. */
   studies: guarded("admin.robots").query(({ ctx }) =>
