@@ -6,12 +6,14 @@ import { mkdtempSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { freshDatabase } from "./db";
+import type { Database } from "../../src/store/client";
 import { buildFixture, TEST_SECRET, type Caller } from "../api/fixture";
 
 export const ORIGIN = "http://localhost:3000";
 
-export async function routeServer() {
-  const database = await freshDatabase();
+/** With `database`, on that one (a PostgreSQL of the test's own); else on a fresh database of the suite's server. */
+export async function routeServer(database?: { url: string; db: Database; close: () => Promise<void> }) {
+  database ??= await freshDatabase();
   Object.assign(process.env, {
     DATABASE_URL: database.url,
     BETTER_AUTH_SECRET: TEST_SECRET,

@@ -17,7 +17,7 @@ import { assertOneStudy } from "../access/membership";
 import { studyAccessOf } from "@/store/study-access";
 import { keyOf, loadResource, nameOf, type Resource, type ResourceRow } from "../access/resources";
 import type { MediaStorage } from "../media/storage";
-import { logUnexpected, unexpectedMessage } from "@/store/error-reference";
+import { failure } from "@/store/error-reference";
 import { describeIssues, fieldIssues, type FieldIssue } from "./errors";
 
 export interface SignedInUser {
@@ -72,7 +72,7 @@ const t = initTRPC
       const message = issues
         ? `Please correct: ${describeIssues(issues)}`
         : error.code === "INTERNAL_SERVER_ERROR"
-          ? unexpectedMessage(logUnexpected(error.cause ?? error, `procedure ${path ?? "(unknown)"}`))
+          ? failure(error.cause ?? error, `procedure ${path ?? "(unknown)"}`).message
           : shape.message;
       return {
         ...shape,
