@@ -3,7 +3,7 @@ import { readConfig } from "@/store/config";
 import { createAuth, type Auth } from "./auth/auth";
 import { answered, createDatabase, type Database } from "@/store/client";
 import { mediaStorage } from "./media";
-import { browserRuntimeUrl } from "./runtime-url";
+import { appUrl, browserRuntimeUrl } from "./runtime-url";
 import type { Context, SignedInUser } from "./api/trpc";
 import { SYSTEM_ROLES, type SystemRole } from "@/core/access/policy";
 import { channelsOf, transportConfig } from "@/robots/transports/settings";
@@ -28,7 +28,7 @@ export function server(): Server {
   const auth = createAuth({
     db,
     secret: config.BETTER_AUTH_SECRET,
-    baseURL: config.BETTER_AUTH_URL ?? `http://${config.HOST}:${config.PORT ?? 3000}`,
+    baseURL: appUrl(config),
     allowSignUp: config.HRI_ALLOW_SIGNUP,
     signInPerMinute: config.HRI_SIGNIN_PER_MINUTE,
     accountLimit: {

@@ -2,9 +2,9 @@
 // server's shared parts from the environment (server() in
 // src/server/context.ts), so this points the environment at a fresh database
 // and a throwaway media folder first; every test file runs in its own process.
-import { mkdtempSync } from "node:fs";
+import { mkdtempSync, readdirSync, statSync } from "node:fs";
 import { tmpdir } from "node:os";
-import { join } from "node:path";
+import { join, relative } from "node:path";
 import { freshDatabase } from "./db";
 import type { Database } from "../../src/store/client";
 import { buildFixture, TEST_SECRET, type Caller } from "../api/fixture";
@@ -67,4 +67,15 @@ export function endlessBody(piece = 64 * 1024) {
     { highWaterMark: 0 },
   );
   return { body, counted };
+}
+
+const API = join(import.meta.dirname, "..", "..", "src", "app", "api");
+
+/** Every route under src/app/api, as its folder below it ("studies/[studyId]/audio"). */
+export function apiRouteFiles(dir = API): string[] {
+  return readdirSync(dir).flatMap((name) => {
+    const path = join(dir, name);
+    if (statSync(path).isDirectory()) return apiRouteFiles(path);
+    return name === "route.ts" ? [relative(API, dir)] : [];
+  });
 }

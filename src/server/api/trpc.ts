@@ -1,6 +1,6 @@
 import { initTRPC, TRPCError } from "@trpc/server";
 import { ZodError, type z } from "zod";
-import { nulPath } from "@/core/access/input";
+import { nulPath, nulRefusal } from "@/core/access/input";
 import {
   decide,
   isStudyOperation,
@@ -88,11 +88,7 @@ export const createCallerFactory = t.createCallerFactory;
 /** PostgreSQL cannot store a NUL character: refused here with where it was, before any handler. */
 const noNul = t.middleware(async ({ getRawInput, next }) => {
   const at = nulPath(await getRawInput());
-  if (at)
-    throw new TRPCError({
-      code: "BAD_REQUEST",
-      message: `Please correct: ${at}: must not contain the NUL character (\\0)`,
-    });
+  if (at) throw new TRPCError({ code: "BAD_REQUEST", message: nulRefusal(at) });
   return next();
 });
 
