@@ -196,8 +196,20 @@ describe.sequential("a live trial in two browsers", () => {
       { app, trialIds: [wizard.url().split("/").pop()!], pages: [wizard] },
     );
 
-    process.kill(childPid(app, "runtime/main.ts"), "SIGKILL");
-    await wizard.getByText("reconnecting", { exact: true }).waitFor();
+    // The launcher held (SIGSTOP) so the runtime stays down while the page is looked at.
+    process.kill(app.process.pid!, "SIGSTOP");
+    try {
+      process.kill(childPid(app, "runtime/main.ts"), "SIGKILL");
+      await wizard.getByText("reconnecting", { exact: true }).waitFor();
+      // Each as it is: what the runtime said of the robot no longer holds; the database still answers.
+      await expect.poll(() => wizard.getByTestId("robot-status").textContent()).toBe("unknown");
+      await expect.poll(() => wizard.getByTestId("database-status").textContent()).toBe("connected");
+      await wizard.getByText(/^The trial runtime is not connected: nothing can be sent/).waitFor();
+      expect(await wizard.getByRole("button", { name: /Go to “Story”/ }).isDisabled()).toBe(true);
+      expect(await wizard.getByRole("button", { name: "Emergency stop (Esc)" }).isDisabled()).toBe(true);
+    } finally {
+      process.kill(app.process.pid!, "SIGCONT");
+    }
     await wizard.getByText("live", { exact: true }).waitFor({ timeout: 20_000 });
     // Same point, same state: the next action is still "Go to Story".
     await wizard.getByRole("button", { name: /Go to “Story”/ }).waitFor();

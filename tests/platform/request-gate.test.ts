@@ -34,39 +34,35 @@ for (const route of apiRouteFiles()) {
   for (const method of CHANGES) if (typeof handlers[method] === "function") changing.push([route, method]);
 }
 const pathOf = (route: string) =>
-  `/api/${route.replace(/\[([.\w]+)\]/g, (_, name: string) => (name === "studyId" ? studyId : (PARAMS[name] ?? crypto.randomUUID())))}`;
+  `/api/${route.replace(/\[([.\w]+)\]/g, (_, name: string) => (name === "studyId" && studyId ? studyId : (PARAMS[name] ?? crypto.randomUUID())))}`;
 
-/** A request as Node sends it: fetch cannot send TRACE, nor keep writing a body after the answer. */
+/**
+ * A request as Node sends it (fetch cannot send TRACE). With `declared`, the
+ * headers announce a body of that length and none of it is sent until the
+ * server has answered: a server that waits for the body never answers.
+ */
 function raw(
   method: string,
   path: string,
-  headers: Record<string, string> = {},
-  body?: { declared: number },
-): Promise<{ status: number; headers: Record<string, unknown>; text: string; written: number }> {
+  declared?: number,
+): Promise<{ status: number; headers: Record<string, unknown>; text: string }> {
   return new Promise((resolve, reject) => {
-    let written = 0;
     const req = request(`${app.url}${path}`, {
       method,
-      headers: body ? { ...headers, "content-length": String(body.declared) } : headers,
+      headers: declared === undefined ? {} : { "content-length": String(declared) },
     });
     req.on("response", (res) => {
       let text = "";
       res.setEncoding("utf8");
       res.on("data", (d) => (text += d));
-      res.on("end", () => resolve({ status: res.statusCode!, headers: res.headers, text, written }));
+      res.on("end", () => {
+        resolve({ status: res.statusCode!, headers: res.headers, text });
+        req.destroy();
+      });
     });
     req.on("error", reject);
-    if (!body) return void req.end();
-    // Writes until the server answers or closes: never more than the declared length.
-    const piece = Buffer.alloc(1024 * 1024, 120);
-    const pump = () => {
-      while (written < body.declared && !req.destroyed) {
-        written += piece.length;
-        if (!req.write(piece)) return void req.once("drain", pump);
-      }
-    };
-    req.on("response", () => req.destroy());
-    pump();
+    if (declared === undefined) req.end();
+    else req.flushHeaders();
   });
 }
 
@@ -133,11 +129,11 @@ describe("the web server's gate", () => {
   });
 
   it("refuses a page read that carries a body (1 GB declared) without reading it", async () => {
-    const res = await raw("GET", "/sign-in", {}, { declared: 1024 * 1024 * 1024 });
+    const res = await raw("GET", "/sign-in", 1024 * 1024 * 1024);
     expect(res.status).toBe(413);
     expect(res.text).toBe("A page takes no request body.");
-    // What the socket took before the answer came: nowhere near the gigabyte.
-    expect(res.written).toBeLessThan(64 * 1024 * 1024);
+    // The connection ends with the answer: the body is never read.
+    expect(res.headers.connection).toBe("close");
   });
 
   it("tells someone not signed in nothing of the deployment's addresses", async () => {
