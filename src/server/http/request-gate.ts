@@ -8,15 +8,15 @@ import { API_CSP, COMMON_HEADERS } from "./security-headers";
 /** Answers a refused request and says true; says false for one Next.js may have. */
 export function refused(req: IncomingMessage, res: ServerResponse, origin: string): boolean {
   const path = (req.url ?? "/").split("?")[0]!;
-  const refused = refusal({ method: req.method ?? "GET", path, headers: req.headers, origin });
-  if (!refused) return false;
-  res.writeHead(refused.status, {
+  const why = refusal({ method: req.method ?? "GET", path, headers: req.headers, origin });
+  if (!why) return false;
+  res.writeHead(why.status, {
     ...COMMON_HEADERS,
     "content-security-policy": API_CSP,
     "content-type": "text/plain; charset=utf-8",
     connection: "close",
-    ...(refused.allow ? { allow: refused.allow } : {}),
+    ...(why.allow ? { allow: why.allow } : {}),
   });
-  res.end(refused.message);
+  res.end(why.message);
   return true;
 }
