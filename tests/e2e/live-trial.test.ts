@@ -4,6 +4,7 @@
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { childPid, DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { signalDatabase } from "../support/frozen-postgres";
 import { expectAccessible } from "../support/accessibility";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
@@ -403,6 +404,31 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.getByText(/robot disconnected/).waitFor({ timeout: 2000 });
     await screenshot(wizard, "robot-disconnected");
     await wizard.getByText("robot connected").waitFor({ timeout: 15_000 });
+    await wizard.context().close();
+  });
+
+  it("shows the database as unavailable while it is frozen, beside the runtime and the robot as they are", async () => {
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await researcher.studies.mine.query();
+    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
+    const [version] = await researcher.versions.list.query({ experimentId: experiment!.id });
+    const trial = await wizardApi.trials.create.mutate({ versionId: version!.id });
+    const wizard = await (await newContext(browser, app.url)).newPage();
+    await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
+    await wizard.goto(`/trials/${trial.id}`);
+    await wizard.getByText("robot connected").waitFor();
+    const status = (what: string) => wizard.getByTestId(`${what}-status`).textContent();
+    await expect.poll(() => status("database")).toBe("connected");
+    await signalDatabase(app.dataDir, "SIGSTOP");
+    try {
+      // Asked every 5 s, and answered "unavailable" within 5 s of asking.
+      await expect.poll(() => status("database"), { timeout: 30_000 }).toBe("unavailable");
+      expect(await status("runtime")).toBe("live");
+      expect(await status("robot")).toBe("connected");
+    } finally {
+      await signalDatabase(app.dataDir, "SIGCONT");
+    }
+    await expect.poll(() => status("database"), { timeout: 30_000 }).toBe("connected");
     await wizard.context().close();
   });
 });
