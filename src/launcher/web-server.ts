@@ -3,23 +3,30 @@
 // socket visible. Before Next.js sees a request, the client's address (the
 // socket, or what trusted proxies vouch for) goes into one header that only
 // this server sets; sign-in limits and session records read that header.
+// What no route or page may be sent (src/core/network/request-gate.ts) is
+// refused here too, before Next.js reads any of it.
 // The launcher bundles this file for Node (see web-bundle.ts) and runs it as
 // `node web-server.mjs [--dev]`.
 import { createServer } from "node:http";
 import next from "next";
 import { CLIENT_ADDRESS_HEADER, clientAddress } from "../core/network/client-address";
 import { readConfig } from "../store/config";
+import { refused } from "../server/http/request-gate";
+import { appUrl } from "../server/runtime-url";
 
 const dev = process.argv.includes("--dev");
 const dir = process.cwd();
 const config = readConfig();
 const port = config.PORT ?? 3000;
+// Where the app's pages are served from, as the sign-in library knows it.
+const origin = appUrl(config);
 
 const app = next({ dev, dir, hostname: config.HOST, port });
 const handle = app.getRequestHandler();
 
 await app.prepare();
 const server = createServer((req, res) => {
+  if (refused(req, res, origin)) return;
   req.headers[CLIENT_ADDRESS_HEADER] = clientAddress({
     socketAddress: req.socket.remoteAddress,
     forwardedFor: req.headers["x-forwarded-for"],

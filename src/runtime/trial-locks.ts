@@ -8,7 +8,7 @@
 // connection that died under it can fail, or never answer at all: either way
 // the client is dropped and the query runs once more on a new one.
 import type postgres from "postgres";
-import { connectionLost, NO_ANSWER } from "@/store/client";
+import { answered as within, connectionLost } from "@/store/client";
 
 export interface TrialLocks {
   /** Whether this process now owns the trial (locks count: each take needs a release). */
@@ -16,9 +16,6 @@ export interface TrialLocks {
   release(trialId: string): Promise<void>;
   close(): Promise<void>;
 }
-
-/** Long enough for a loaded database, short enough that a dead connection is not waited on for long. */
-const ANSWER_MS = 5000;
 
 export function trialLocks(
   /** A new session client (see `createSessionClient`), each time the one before is dropped. */
@@ -100,14 +97,4 @@ export function trialLocks(
   };
 }
 
-/** The query, or a NO_ANSWER error once the connection has been silent for ANSWER_MS. */
-function answered<T>(query: Promise<T>): Promise<T> {
-  let timer: ReturnType<typeof setTimeout> | undefined;
-  const silence = new Promise<never>((_, reject) => {
-    timer = setTimeout(
-      () => reject(Object.assign(new Error("The lock connection did not answer."), { code: NO_ANSWER })),
-      ANSWER_MS,
-    );
-  });
-  return Promise.race([query, silence]).finally(() => clearTimeout(timer));
-}
+const answered = <T>(query: Promise<T>) => within(query, "The lock connection did not answer.");

@@ -1,9 +1,9 @@
 // The server's shared parts for the Next.js process, built once from the environment.
 import { readConfig } from "@/store/config";
 import { createAuth, type Auth } from "./auth/auth";
-import { createDatabase, type Database } from "@/store/client";
+import { answered, createDatabase, type Database } from "@/store/client";
 import { mediaStorage } from "./media";
-import { browserRuntimeUrl } from "./runtime-url";
+import { appUrl, browserRuntimeUrl } from "./runtime-url";
 import type { Context, SignedInUser } from "./api/trpc";
 import { SYSTEM_ROLES, type SystemRole } from "@/core/access/policy";
 import { channelsOf, transportConfig } from "@/robots/transports/settings";
@@ -28,7 +28,7 @@ export function server(): Server {
   const auth = createAuth({
     db,
     secret: config.BETTER_AUTH_SECRET,
-    baseURL: config.BETTER_AUTH_URL ?? `http://${config.HOST}:${config.PORT ?? 3000}`,
+    baseURL: appUrl(config),
     allowSignUp: config.HRI_ALLOW_SIGNUP,
     signInPerMinute: config.HRI_SIGNIN_PER_MINUTE,
     accountLimit: {
@@ -56,8 +56,21 @@ export function toSignedInUser(u: {
   return { id: u.id, name: u.name, email: u.email, role };
 }
 
+/**
+ * Who the request's session belongs to, or null. This is every request's
+ * first question to the database, so a database that does not answer (a
+ * frozen server keeps its connections open and says nothing) fails it here,
+ * with NO_ANSWER, within seconds and before anything of the request was done.
+ */
+export async function signedInUser(headers: Headers): Promise<SignedInUser | null> {
+  const signedIn = await answered(
+    server().auth.api.getSession({ headers }),
+    "The database did not answer the session lookup.",
+  );
+  return signedIn ? toSignedInUser(signedIn.user) : null;
+}
+
 export async function contextFromHeaders(headers: Headers): Promise<Context> {
-  const { db, auth, secret, runtimeUrl, media, robotChannels } = server();
-  const signedIn = await auth.api.getSession({ headers });
-  return { db, user: signedIn ? toSignedInUser(signedIn.user) : null, secret, runtimeUrl, media, robotChannels };
+  const { db, secret, runtimeUrl, media, robotChannels } = server();
+  return { db, user: await signedInUser(headers), secret, runtimeUrl, media, robotChannels };
 }

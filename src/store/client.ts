@@ -56,6 +56,36 @@ export function refusedByDatabase(error: unknown): boolean {
 /** The code a caller gives its own error for a connection that went silent (its query timed out). */
 export const NO_ANSWER = "NO_ANSWER";
 
+/** Long enough for a loaded database, short enough that a silent one (frozen, unreachable) is not waited on for long. */
+export const ANSWER_MS = 5000;
+
+/**
+ * The query, or a NO_ANSWER error once the database has been silent for
+ * `ms`. A frozen server keeps its connections open and answers nothing, so
+ * neither the driver nor the server's own timeouts ever end such a query.
+ */
+export function answered<T>(query: Promise<T>, silent: string, ms = ANSWER_MS): Promise<T> {
+  let timer: ReturnType<typeof setTimeout> | undefined;
+  const silence = new Promise<never>((_, reject) => {
+    timer = setTimeout(() => reject(Object.assign(new Error(silent), { code: NO_ANSWER })), ms);
+  });
+  return Promise.race([query, silence]).finally(() => clearTimeout(timer));
+}
+
+/** What a person is told while the database cannot be reached. */
+export const DATABASE_UNAVAILABLE = "The database is unavailable; try again in a moment.";
+
+/**
+ * The database could not be reached, or did not answer: nobody's fault, and
+ * worth trying again shortly. Libraries wrap the driver's error (the query
+ * builder, the sign-in library), so its causes are looked through too.
+ */
+export function databaseUnavailable(error: unknown): boolean {
+  for (let e = error, depth = 0; e && depth < 5; e = (e as { cause?: unknown }).cause, depth++)
+    if (neverReachedDatabase(e) || connectionLost(e)) return true;
+  return false;
+}
+
 /** The connection itself went, or went silent (`NO_ANSWER`): not that the statement was wrong. */
 export function connectionLost(error: unknown): boolean {
   const code = (error as { code?: string } | null)?.code ?? "";

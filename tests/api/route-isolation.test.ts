@@ -3,11 +3,9 @@
 // study A, called (a) with A's ids, (b) with study B's, and (c) with B's ids in
 // the path and A's smuggled beside them in the query. B's answer never comes
 // back, and nothing of B is written.
-import { readdirSync, statSync } from "node:fs";
-import { join, relative } from "node:path";
 import { afterAll, describe, expect, it } from "vitest";
 import { newPerson, type Caller } from "./fixture";
-import { ORIGIN, routeServer } from "../support/routes";
+import { apiRouteFiles, ORIGIN, routeServer } from "../support/routes";
 import { appRouter } from "../../src/server/api/root";
 import { contextFromHeaders } from "../../src/server/context";
 import { addAudio } from "../../src/server/media/audio";
@@ -16,7 +14,6 @@ import { silentWav } from "../support/audio";
 const s = await routeServer();
 afterAll(s.close);
 
-const API = join(import.meta.dirname, "..", "..", "src", "app", "api");
 /**
  * auth and trpc are the doors the other tests walk through; the analysis API's
  * two routes that take no id (its study list and its description) are
@@ -24,14 +21,7 @@ const API = join(import.meta.dirname, "..", "..", "src", "app", "api");
  */
 const OWN_TESTS = new Set(["auth/[...all]", "trpc/[trpc]", "v1/studies", "v1/openapi.json"]);
 
-function routeFiles(dir: string): string[] {
-  return readdirSync(dir).flatMap((name) => {
-    const path = join(dir, name);
-    if (statSync(path).isDirectory()) return routeFiles(path);
-    return name === "route.ts" ? [relative(API, dir)] : [];
-  });
-}
-const routes = routeFiles(API).filter((r) => !OWN_TESTS.has(r));
+const routes = apiRouteFiles().filter((r) => !OWN_TESTS.has(r));
 
 /** A study with a finished recording and a recording still taking parts, built by `api`. */
 async function studyWithRows(api: Awaited<ReturnType<typeof s.apiAs>>, studyId: string, code: string) {

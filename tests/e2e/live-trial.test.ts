@@ -4,6 +4,7 @@
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { childPid, DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { signalDatabase } from "../support/frozen-postgres";
 import { expectAccessible } from "../support/accessibility";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
@@ -196,8 +197,20 @@ describe.sequential("a live trial in two browsers", () => {
       { app, trialIds: [wizard.url().split("/").pop()!], pages: [wizard] },
     );
 
-    process.kill(childPid(app, "runtime/main.ts"), "SIGKILL");
-    await wizard.getByText("reconnecting", { exact: true }).waitFor();
+    // The launcher held (SIGSTOP) so the runtime stays down while the page is looked at.
+    process.kill(app.process.pid!, "SIGSTOP");
+    try {
+      process.kill(childPid(app, "runtime/main.ts"), "SIGKILL");
+      await wizard.getByText("reconnecting", { exact: true }).waitFor();
+      // Each as it is: what the runtime said of the robot no longer holds; the database still answers.
+      await expect.poll(() => wizard.getByTestId("robot-status").textContent()).toBe("unknown");
+      await expect.poll(() => wizard.getByTestId("database-status").textContent()).toBe("connected");
+      await wizard.getByText(/^The trial runtime is not connected: nothing can be sent/).waitFor();
+      expect(await wizard.getByRole("button", { name: /Go to “Story”/ }).isDisabled()).toBe(true);
+      expect(await wizard.getByRole("button", { name: "Emergency stop (Esc)" }).isDisabled()).toBe(true);
+    } finally {
+      process.kill(app.process.pid!, "SIGCONT");
+    }
     await wizard.getByText("live", { exact: true }).waitFor({ timeout: 20_000 });
     // Same point, same state: the next action is still "Go to Story".
     await wizard.getByRole("button", { name: /Go to “Story”/ }).waitFor();
@@ -391,6 +404,31 @@ describe.sequential("a live trial in two browsers", () => {
     await wizard.getByText(/robot disconnected/).waitFor({ timeout: 2000 });
     await screenshot(wizard, "robot-disconnected");
     await wizard.getByText("robot connected").waitFor({ timeout: 15_000 });
+    await wizard.context().close();
+  });
+
+  it("shows the database as unavailable while it is frozen, beside the runtime and the robot as they are", async () => {
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await researcher.studies.mine.query();
+    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
+    const [version] = await researcher.versions.list.query({ experimentId: experiment!.id });
+    const trial = await wizardApi.trials.create.mutate({ versionId: version!.id });
+    const wizard = await (await newContext(browser, app.url)).newPage();
+    await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
+    await wizard.goto(`/trials/${trial.id}`);
+    await wizard.getByText("robot connected").waitFor();
+    const status = (what: string) => wizard.getByTestId(`${what}-status`).textContent();
+    await expect.poll(() => status("database")).toBe("connected");
+    await signalDatabase(app.dataDir, "SIGSTOP");
+    try {
+      // Asked every 5 s, and answered "unavailable" within 5 s of asking.
+      await expect.poll(() => status("database"), { timeout: 30_000 }).toBe("unavailable");
+      expect(await status("runtime")).toBe("live");
+      expect(await status("robot")).toBe("connected");
+    } finally {
+      await signalDatabase(app.dataDir, "SIGCONT");
+    }
+    await expect.poll(() => status("database"), { timeout: 30_000 }).toBe("connected");
     await wizard.context().close();
   });
 });

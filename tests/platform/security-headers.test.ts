@@ -20,8 +20,14 @@ const COMMON = {
 };
 
 describe("security headers", () => {
-  it("on a page: a policy that allows the trial runtime's socket and no framing", async () => {
-    const res = await fetch(`${app.url}/sign-in`);
+  it("on a page: a policy that allows the trial runtime's socket (to someone signed in only) and no framing", async () => {
+    const anonymous = await fetch(`${app.url}/sign-in`);
+    expect(anonymous.status).toBe(200);
+    expect(Object.fromEntries(anonymous.headers)).toMatchObject(COMMON);
+    expect(anonymous.headers.get("content-security-policy")).toContain("connect-src 'self'; ");
+
+    const cookie = await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD);
+    const res = await fetch(`${app.url}/studies`, { headers: { cookie } });
     expect(res.status).toBe(200);
     expect(Object.fromEntries(res.headers)).toMatchObject(COMMON);
     const csp = res.headers.get("content-security-policy")!;

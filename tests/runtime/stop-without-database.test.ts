@@ -4,9 +4,7 @@
 // robot after it. The database here is a PostgreSQL of its own, so freezing it
 // stops no other test; the runtime is the real process, the robot the
 // simulated one, reached over the real roslib client.
-import { execFileSync } from "node:child_process";
-import { readFile, rm } from "node:fs/promises";
-import { join } from "node:path";
+import { rm } from "node:fs/promises";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
@@ -16,6 +14,7 @@ import { startEmbeddedPostgres, type EmbeddedDatabase } from "../../src/store/em
 import { migrateDatabase } from "../../src/store/migrate";
 import { experimentVersions, experiments, studies, studyMembers, trials } from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
+import { signalDatabase as signalToDatabase } from "../support/frozen-postgres";
 import { firstPartyPlugin } from "../support/plugins";
 import { startRuntime } from "../support/runtime";
 import { scratchFolder } from "../support/scratch";
@@ -52,18 +51,7 @@ let sim: Simulator;
 let runtime: Awaited<ReturnType<typeof startRuntime>>;
 let wizard: TrialSocket;
 
-/** The postmaster and every backend it started: the whole database server. */
-async function postgresProcesses(): Promise<number[]> {
-  const postmaster = Number((await readFile(join(dataDir, "postgres", "postmaster.pid"), "utf8")).split("\n")[0]);
-  const children = execFileSync("ps", ["-o", "pid=", "--ppid", String(postmaster)], { encoding: "utf8" })
-    .split("\n")
-    .map((l) => Number(l.trim()))
-    .filter((pid) => pid > 0);
-  return [postmaster, ...children];
-}
-const signalDatabase = async (signal: "SIGSTOP" | "SIGCONT") => {
-  for (const pid of await postgresProcesses()) process.kill(pid, signal);
-};
+const signalDatabase = (signal: "SIGSTOP" | "SIGCONT") => signalToDatabase(dataDir, signal);
 
 beforeAll(async () => {
   dataDir = scratchFolder("stop-pg-");

@@ -2,14 +2,18 @@
 // server's shared parts from the environment (server() in
 // src/server/context.ts), so this points the environment at a fresh database
 // and a throwaway media folder first; every test file runs in its own process.
+import { readdirSync, statSync } from "node:fs";
+import { join, relative } from "node:path";
 import { freshDatabase } from "./db";
 import { scratchFolder } from "./scratch";
+import type { Database } from "../../src/store/client";
 import { buildFixture, TEST_SECRET, type Caller } from "../api/fixture";
 
 export const ORIGIN = "http://localhost:3000";
 
-export async function routeServer() {
-  const database = await freshDatabase();
+/** With `database`, on that one (a PostgreSQL of the test's own); else on a fresh database of the suite's server. */
+export async function routeServer(database?: { url: string; db: Database; close: () => Promise<void> }) {
+  database ??= await freshDatabase();
   Object.assign(process.env, {
     DATABASE_URL: database.url,
     BETTER_AUTH_SECRET: TEST_SECRET,
@@ -63,4 +67,15 @@ export function endlessBody(piece = 64 * 1024) {
     { highWaterMark: 0 },
   );
   return { body, counted };
+}
+
+const API = join(import.meta.dirname, "..", "..", "src", "app", "api");
+
+/** Every route under src/app/api, as its folder below it ("studies/[studyId]/audio"). */
+export function apiRouteFiles(dir = API): string[] {
+  return readdirSync(dir).flatMap((name) => {
+    const path = join(dir, name);
+    if (statSync(path).isDirectory()) return apiRouteFiles(path);
+    return name === "route.ts" ? [relative(API, dir)] : [];
+  });
 }

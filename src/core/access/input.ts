@@ -34,6 +34,9 @@ export function nulPath(input: unknown): string | null {
   return hit;
 }
 
+/** What a caller is told of a NUL at `path`: the same sentence from the API and from every route. */
+export const nulRefusal = (path: string) => `Please correct: ${path}: must not contain the NUL character (\\0)`;
+
 function visit(value: unknown, path: string, depth: number, see: (path: string, key: string, value: unknown) => void) {
   if (depth > MAX_DEPTH || value === null || typeof value !== "object") return;
   const entries = Array.isArray(value) ? value.map((v, i) => [String(i), v] as const) : Object.entries(value);

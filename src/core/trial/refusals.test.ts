@@ -110,4 +110,11 @@ describe("an ended trial's controls", () => {
     if (reason === null) expect(off).toBeNull();
     else expect(off).toMatch(reason);
   });
+
+  it.each<[string, TrialState, RegExp]>([
+    ["a running trial", stateAfter(...started), /^The trial runtime is not connected: nothing can be sent/],
+    ["a completed one says so first", stateAfter(...started, { type: "trial.completed" }), /^This trial is completed/],
+  ])("with the runtime away: %s", (_name, state, reason) => {
+    expect(controlsOffBecause(state, false)).toMatch(reason);
+  });
 });

@@ -4,7 +4,8 @@
 // for that reason, and goes once the cause has ended (the pause is over, the
 // trial moved to another step or ended). A refusal the engine did not make
 // (who may run the trial) lasts until anything happens in the trial. An ended
-// trial's controls are all off, with one plain reason.
+// trial's controls are all off, with one plain reason; so are they while the
+// page is not connected to the trial runtime.
 import { decide } from "./decide";
 import type { Command, TrialProtocol, TrialState } from "./types";
 
@@ -25,11 +26,16 @@ export function refusalInForce(refusal: Refusal | null, protocol: TrialProtocol,
   return !now.ok && now.reason === refusal.reason ? refusal : null;
 }
 
-/** Why none of the wizard's controls work, emergency stop included; null while the trial can be commanded. */
-export function controlsOffBecause(state: TrialState): string | null {
+/**
+ * Why none of the wizard's controls work, emergency stop included; null while
+ * the trial can be commanded. Without the runtime nothing reaches the trial.
+ */
+export function controlsOffBecause(state: TrialState, runtimeConnected = true): string | null {
   if (state.status === "completed")
     return "This trial is completed: nothing more can be sent to it or to its robot. Its record is in the analysis.";
   if (state.status === "aborted")
     return "This trial was aborted: nothing more can be sent to it or to its robot. Its record is in the analysis.";
+  if (!runtimeConnected)
+    return "The trial runtime is not connected: nothing can be sent to the trial or its robot until the page has reconnected.";
   return null;
 }

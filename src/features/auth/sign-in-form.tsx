@@ -1,5 +1,4 @@
 "use client";
-import { useRouter } from "next/navigation";
 import { useState, type FormEvent } from "react";
 import { authClient } from "@/lib/auth-client";
 import { Button } from "@/ui/button";
@@ -13,7 +12,6 @@ const MESSAGES: Record<number, string> = {
 };
 
 export function SignInForm() {
-  const router = useRouter();
   const [email, setEmail] = useState("");
   const [password, setPassword] = useState("");
   const [error, setError] = useState<string | null>(null);
@@ -26,8 +24,9 @@ export function SignInForm() {
     const { error } = await authClient.signIn.email({ email, password });
     setBusy(false);
     if (error) return setError(MESSAGES[error.status] ?? error.message ?? "Sign-in failed. Please try again.");
-    router.replace("/studies");
-    router.refresh();
+    // Loaded whole, not routed to: a page loaded before signing in keeps the stranger's security policy,
+    // which lets it reach nothing but this site (src/proxy.ts), not the trial runtime.
+    window.location.replace("/studies");
   }
 
   return (

@@ -5,6 +5,7 @@ import { useCallback, useEffect, useMemo, useState } from "react";
 import { studyRoleMay } from "@/core/access/policy";
 import type { ActionNames } from "@/core/designer/action-name";
 import { actionProblems, type TrialProtocol } from "@/core/trial";
+import { indicators } from "@/core/trial/connections";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
@@ -19,6 +20,7 @@ import { RecordingPanel } from "@/features/recording/recording-panel";
 import { RobotStatePanel } from "./robot-state-panel";
 import { TrialClock } from "./trial-clock";
 import { TrialPeople } from "./trial-people";
+import { useDatabaseState } from "./use-database-state";
 import { useTrialSocket } from "./use-trial-socket";
 import { SHORTCUTS, WizardControls } from "./wizard-controls";
 
@@ -53,8 +55,11 @@ type Trial = {
 
 function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: TrialProtocol; refresh: () => void }) {
   const live = useTrialSocket(trial.id, protocol);
+  const database = useDatabaseState();
   // The runtime decides (a wizard runs only the trials assigned to them); until it has said, the study role guides.
   const wizard = live.mayRun ?? studyRoleMay(trial.myRole, "trial.run");
+  // Without the runtime nothing reaches the trial: the controls that would send are off (the wizard's say why).
+  const send = wizard && live.connected;
   const started = live.events.find((e) => e.type === "trial.started");
   const problems = useMemo(() => actionProblems(live.events), [live.events]);
   const ended = live.state.status === "completed" || live.state.status === "aborted";
@@ -96,17 +101,11 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
             </Badge>
           ))}
         <span className="ml-auto flex items-center gap-4">
-          {live.robot && (
-            // A connected robot's detail is an error its side reported (e.g. a refused subscription): shown, not hidden.
-            <Badge tone={live.robot.connected ? (live.robot.detail ? "amber" : "green") : "red"}>
-              <span data-testid="robot-status">
-                {live.robot.connected
-                  ? `robot connected${live.robot.detail ? ` (${live.robot.detail})` : ""}`
-                  : `robot disconnected${live.robot.detail ? ` (${live.robot.detail})` : ""}`}
-              </span>
+          {indicators({ runtime: live.connected, robot: live.robot, database }).map(({ what, state, tone }) => (
+            <Badge key={what} tone={tone}>
+              {what} <span data-testid={`${what}-status`}>{state}</span>
             </Badge>
-          )}
-          <Badge tone={live.connected ? "green" : "red"}>{live.connected ? "live" : "reconnecting"}</Badge>
+          ))}
           <TrialClock startedAt={started?.serverTime ?? null} stopped={ended} />
         </span>
       </div>
@@ -122,7 +121,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           <StepList
             protocol={protocol}
             state={live.state}
-            onJump={wizard ? (stepId) => void live.command({ kind: "jump", stepId }) : undefined}
+            onJump={send ? (stepId) => void live.command({ kind: "jump", stepId }) : undefined}
           />
         </Card>
         <div className="space-y-6">
@@ -131,13 +130,19 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
             names={trial.actionNames}
             state={live.state}
             problems={problems}
-            onTrigger={wizard ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined}
+            onTrigger={send ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined}
             notes={wizard}
           />
           {wizard && <BrowserAudio events={live.events} state={live.state} send={live.command} />}
           <OffScript events={live.events} names={trial.actionNames} state={live.state} problems={problems} />
           {wizard && (
-            <WizardControls protocol={protocol} names={trial.actionNames} state={live.state} send={live.command} />
+            <WizardControls
+              protocol={protocol}
+              names={trial.actionNames}
+              state={live.state}
+              connected={live.connected}
+              send={live.command}
+            />
           )}
         </div>
         <div className="space-y-4">

@@ -39,11 +39,14 @@ export function WizardControls({
   protocol,
   names,
   state,
+  connected,
   send,
 }: {
   protocol: TrialProtocol;
   names: ActionNames;
   state: TrialState;
+  /** Whether the page is connected to the trial runtime: without it nothing can be sent. */
+  connected: boolean;
   send: Send;
 }) {
   const speech = useRef<HTMLInputElement>(null);
@@ -54,18 +57,20 @@ export function WizardControls({
   const question = unit[0]?.type === "record_answer" ? unit[0] : null;
   const options = question ? answerOptions(question) : [];
   const running = state.status === "in_progress";
-  // An ended trial takes no command, emergency stop included: every control is off, and the page says why.
-  const offBecause = controlsOffBecause(state);
-  const ended = offBecause !== null;
+  // An ended trial takes no command, emergency stop included, and nothing is sent without the runtime:
+  // every control is off, and the page says why.
+  const offBecause = controlsOffBecause(state, connected);
+  const off = offBecause !== null;
+  const ended = state.status === "completed" || state.status === "aborted";
   const offId = useId();
   const next = () => void send(state.status === "scheduled" ? { kind: "start" } : { kind: "next" });
 
   useKeys((e) => {
     if (e.key === "Escape") {
-      if (!ended) void send({ kind: "emergency_stop" });
+      if (!off) void send({ kind: "emergency_stop" });
       return;
     }
-    if (isTyping(e.target) || e.ctrlKey || e.metaKey || e.altKey || ended) return;
+    if (isTyping(e.target) || e.ctrlKey || e.metaKey || e.altKey || off) return;
     const key = e.key.toLowerCase();
     if (key === "n" && !question) next();
     else if (key === "s" && running) void send({ kind: "skip" });
@@ -101,7 +106,7 @@ export function WizardControls({
           {offBecause}
         </p>
       )}
-      <fieldset disabled={ended} aria-describedby={ended ? offId : undefined} className="min-w-0 space-y-4">
+      <fieldset disabled={off} aria-describedby={off ? offId : undefined} className="min-w-0 space-y-4">
         <legend className="sr-only">Wizard controls</legend>
         {question ? (
           <div className="rounded-lg border-2 border-brand-500 bg-brand-50 p-4">
@@ -119,12 +124,7 @@ export function WizardControls({
             </div>
           </div>
         ) : (
-          <Button
-            size="lg"
-            className="h-16 w-full text-lg"
-            disabled={ended || state.status === "paused"}
-            onClick={next}
-          >
+          <Button size="lg" className="h-16 w-full text-lg" disabled={off || state.status === "paused"} onClick={next}>
             <kbd className="rounded bg-white/20 px-1.5 text-xs">N</kbd>{" "}
             {ended ? "Trial ended" : nextLabel(protocol, state, names)}
           </Button>

@@ -7,7 +7,7 @@ import { getHTTPStatusCodeFromError } from "@trpc/server/http";
 import { chooseFormat, type EndpointName } from "@/core/analysis/api";
 import { type Table, tableCsv, tableJson } from "@/core/analysis/table";
 import { TOKEN_REFUSALS } from "@/core/access/access-token";
-import { logUnexpected, unexpectedMessage } from "@/store/error-reference";
+import { failure } from "@/store/error-reference";
 import { appRouter } from "../api/root";
 import { contextFromToken } from "../tokens/context";
 
@@ -48,6 +48,7 @@ export async function v1Route(req: Request, name: EndpointName, params: Promise<
     // A procedure's unexpected failure arrives wrapped as INTERNAL_SERVER_ERROR with the original message.
     if (error instanceof TRPCError && error.code !== "INTERNAL_SERVER_ERROR")
       return problem(getHTTPStatusCodeFromError(error), error.message);
-    return problem(500, unexpectedMessage(logUnexpected(error, request)));
+    const { status, message } = failure(error, request);
+    return problem(status, message);
   }
 }

@@ -5,6 +5,7 @@
 // never the error's own text, which can hold SQL, parameters or paths.
 import { TRPCError } from "@trpc/server";
 import { getHTTPStatusCodeFromError } from "@trpc/server/http";
+import { nulPath, nulRefusal } from "@/core/access/input";
 import { contextFromHeaders } from "../context";
 import { unexpectedResponse } from "@/store/error-reference";
 import type { Context } from "./trpc";
@@ -16,6 +17,10 @@ export async function apiRoute(
   req: Request,
   handle: (api: Caller, context: Context) => Promise<Response>,
 ): Promise<Response> {
+  // What the query names (a sound's name…) is text like any other: no NUL, which PostgreSQL cannot store.
+  const nul = nulPath(Object.fromEntries(new URL(req.url).searchParams));
+  if (nul)
+    return new Response(nulRefusal(nul), { status: 400, headers: { "content-type": "text/plain; charset=utf-8" } });
   try {
     // A route answers with a Response of its own, which can carry a file as it is made.
     const context: Context = { ...(await contextFromHeaders(req.headers)), streamsFiles: true };

@@ -1,6 +1,6 @@
 import { initTRPC, TRPCError } from "@trpc/server";
 import { ZodError, type z } from "zod";
-import { nulPath } from "@/core/access/input";
+import { nulPath, nulRefusal } from "@/core/access/input";
 import {
   decide,
   isStudyOperation,
@@ -17,7 +17,7 @@ import { assertOneStudy } from "../access/membership";
 import { studyAccessOf } from "@/store/study-access";
 import { keyOf, loadResource, nameOf, type Resource, type ResourceRow } from "../access/resources";
 import type { MediaStorage } from "../media/storage";
-import { logUnexpected, unexpectedMessage } from "@/store/error-reference";
+import { failure } from "@/store/error-reference";
 import { describeIssues, fieldIssues, type FieldIssue } from "./errors";
 
 export interface SignedInUser {
@@ -72,7 +72,7 @@ const t = initTRPC
       const message = issues
         ? `Please correct: ${describeIssues(issues)}`
         : error.code === "INTERNAL_SERVER_ERROR"
-          ? unexpectedMessage(logUnexpected(error.cause ?? error, `procedure ${path ?? "(unknown)"}`))
+          ? failure(error.cause ?? error, `procedure ${path ?? "(unknown)"}`).message
           : shape.message;
       return {
         ...shape,
@@ -88,11 +88,7 @@ export const createCallerFactory = t.createCallerFactory;
 /** PostgreSQL cannot store a NUL character: refused here with where it was, before any handler. */
 const noNul = t.middleware(async ({ getRawInput, next }) => {
   const at = nulPath(await getRawInput());
-  if (at)
-    throw new TRPCError({
-      code: "BAD_REQUEST",
-      message: `Please correct: ${at}: must not contain the NUL character (\\0)`,
-    });
+  if (at) throw new TRPCError({ code: "BAD_REQUEST", message: nulRefusal(at) });
   return next();
 });
 

@@ -19,6 +19,10 @@ describe("the pages' Content-Security-Policy", () => {
     );
   });
 
+  it("lets a page reach this site only when it names no runtime (someone not signed in)", () => {
+    expect(directives(pageCsp())["connect-src"]).toBe("'self'");
+  });
+
   it("forbids framing and plugins, allows blob: media and data: images, and scripts from this site only", () => {
     const csp = directives(pageCsp("ws://127.0.0.1:3001"));
     expect(csp).toMatchObject({

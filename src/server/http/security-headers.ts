@@ -25,9 +25,10 @@ function origin(url: string): string {
 
 /**
  * For pages; `runtimeUrl` is where browsers reach the trial runtime, and
- * `simulatorUrl` (when `npm start` runs the simulated robot) the robot page's feed.
+ * `simulatorUrl` (when `npm start` runs the simulated robot) the robot page's
+ * feed. Without either, a page reaches this site only.
  */
-export function pageCsp(runtimeUrl: string, simulatorUrl?: string): string {
+export function pageCsp(runtimeUrl?: string, simulatorUrl?: string): string {
   return [
     "default-src 'self'",
     // Next.js writes inline scripts (no nonce: pages are static). Eval: Ajv compiles each robot
@@ -38,10 +39,7 @@ export function pageCsp(runtimeUrl: string, simulatorUrl?: string): string {
     "img-src 'self' blob: data:",
     "media-src 'self' blob:",
     "font-src 'self' data:",
-    `connect-src 'self' ${[runtimeUrl, simulatorUrl]
-      .filter((u): u is string => Boolean(u))
-      .map(origin)
-      .join(" ")}`,
+    ["connect-src 'self'", ...[runtimeUrl, simulatorUrl].filter((u): u is string => Boolean(u)).map(origin)].join(" "),
     "worker-src 'self' blob:",
     "object-src 'none'",
     "base-uri 'self'",

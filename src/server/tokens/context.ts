@@ -5,7 +5,7 @@
 import { and, eq, isNull, ne, or } from "drizzle-orm";
 import { bearerSecret, type TOKEN_REFUSALS, tokenState } from "@/core/access/access-token";
 import { hashTokenSecret } from "@/core/access/token-secret";
-import type { Database } from "@/store/client";
+import { answered, type Database } from "@/store/client";
 import { accessTokenStudies, accessTokens, user } from "@/store/schema";
 import type { Context } from "../api/trpc";
 import { audit } from "../audit";
@@ -20,11 +20,15 @@ export async function contextFromToken(
   const secret = bearerSecret(headers.get("authorization"));
   if (!secret) return { refused: "missing" };
   const { db, auth: _, ...parts } = server();
-  const [found] = await db
-    .select({ token: accessTokens, owner: user })
-    .from(accessTokens)
-    .innerJoin(user, eq(user.id, accessTokens.userId))
-    .where(eq(accessTokens.secretHash, hashTokenSecret(secret)));
+  // The request's first question to the database: one that does not answer fails it here (see signedInUser).
+  const [found] = await answered(
+    db
+      .select({ token: accessTokens, owner: user })
+      .from(accessTokens)
+      .innerJoin(user, eq(user.id, accessTokens.userId))
+      .where(eq(accessTokens.secretHash, hashTokenSecret(secret))),
+    "The database did not answer the access token lookup.",
+  );
   if (!found) return { refused: "unknown" };
   const state = tokenState(found.token, new Date());
   if (state !== "active") return { refused: state };
