@@ -4,14 +4,14 @@
 // it thaws they work again. The server is a PostgreSQL of the test's own, so
 // freezing it stops no other test; the handlers are the real ones, called
 // in-process as Next.js calls them.
-import { mkdtemp, rm } from "node:fs/promises";
-import { join } from "node:path";
+import { rm } from "node:fs/promises";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { createDatabase } from "../../src/store/client";
 import { startEmbeddedPostgres, type EmbeddedDatabase } from "../../src/store/embedded";
 import { migrateDatabase } from "../../src/store/migrate";
 import { signalDatabase } from "../support/frozen-postgres";
 import { ORIGIN, routeServer } from "../support/routes";
+import { scratchFolder } from "../support/scratch";
 
 let dataDir = "";
 let pg: EmbeddedDatabase;
@@ -20,7 +20,7 @@ let cookie: Headers;
 let studyId = "";
 
 beforeAll(async () => {
-  dataDir = await mkdtemp(join(process.cwd(), ".tmp", "frozen-pg-"));
+  dataDir = scratchFolder("frozen-pg-");
   pg = await startEmbeddedPostgres({ dataDir });
   await migrateDatabase(pg.url);
   s = await routeServer({ url: pg.url, ...createDatabase(pg.url) });
