@@ -3,12 +3,16 @@
 // socket visible. Before Next.js sees a request, the client's address (the
 // socket, or what trusted proxies vouch for) goes into one header that only
 // this server sets; sign-in limits and session records read that header.
-// The launcher bundles this file for Node (see web-bundle.ts) and runs it as
-// `node web-server.mjs [--dev]`.
+// It also finishes recordings whose page went away (left-over.ts), at start
+// and every little while after. The launcher bundles this file for Node (see
+// web-bundle.ts) and runs it as `node web-server.mjs [--dev]`.
 import { createServer } from "node:http";
 import next from "next";
 import { CLIENT_ADDRESS_HEADER, clientAddress } from "../core/network/client-address";
 import { readConfig } from "../store/config";
+import { createDatabase } from "../store/client";
+import { configuredMedia } from "../server/media";
+import { keepFinishingLeftOver } from "../server/media/left-over";
 
 const dev = process.argv.includes("--dev");
 const dir = process.cwd();
@@ -28,6 +32,11 @@ const server = createServer((req, res) => {
   void handle(req, res);
 });
 server.listen(port, config.HOST);
+
+if (config.DATABASE_URL) {
+  const { db } = createDatabase(config.DATABASE_URL, { max: 2 });
+  keepFinishingLeftOver(db, configuredMedia(config), (line) => console.log(`[hristudio] ${line}`));
+}
 
 // Stopped by the launcher (or by a later launcher, for an orphan): exit at once,
 // as `next start` does; requests in flight are not waited for.

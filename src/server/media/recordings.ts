@@ -2,7 +2,10 @@
 // as it comes, so a crashed tab loses at most the last few seconds) and is
 // joined into one file when it is finished, with its duration written in.
 import { TRPCError } from "@trpc/server";
+import { and, eq, sql } from "drizzle-orm";
 import { withWebmDuration } from "@/core/media/webm-duration";
+import type { Database } from "@/store/client";
+import { mediaRecordings } from "@/store/schema";
 import type { MediaStorage } from "./storage";
 
 /** Larger than a few seconds of camera video at any sensible bitrate. */
@@ -15,6 +18,14 @@ export const fileKey = (storageKey: string, mimeType: string) => `${storageKey}.
 /** The name a downloaded recording has, and the ELAN document links to. */
 export const recordingFileName = (recordingId: string, mimeType: string) =>
   `recording-${recordingId}.${extension(mimeType)}`;
+
+/** Notes that part `index` is stored: the recorder is still there (left-over.ts looks for those that are not). */
+export async function partArrived(db: Database, recordingId: string, index: number) {
+  await db
+    .update(mediaRecordings)
+    .set({ lastPartAt: new Date(), chunkCount: sql`greatest(${mediaRecordings.chunkCount}, ${index + 1})` })
+    .where(and(eq(mediaRecordings.id, recordingId), eq(mediaRecordings.status, "recording")));
+}
 
 /** Joins the chunks in order; refuses a gap (a chunk that never arrived) by naming it. */
 export async function joinChunks(storage: MediaStorage, storageKey: string, maxBytes: number): Promise<Uint8Array> {
