@@ -14,7 +14,11 @@ const second = part("b", 90_000, 60_000);
 describe("a recording in parts", () => {
   it.each([
     ["one part stopped by the wizard", [part("a", 0, 10_000)], []],
-    ["one part cut off: not recorded to the trial's end", [first], [{ fromMs: 60_000, toMs: 200_000, cause: PAGE_CLOSED }]],
+    [
+      "one part cut off: not recorded to the trial's end",
+      [first],
+      [{ fromMs: 60_000, toMs: 200_000, cause: PAGE_CLOSED }],
+    ],
     [
       "cut off, then recorded again (in any order)",
       [second, first],

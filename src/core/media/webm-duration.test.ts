@@ -79,8 +79,16 @@ const inGroup = (ms: number) => [0xa0, 0x8a, ...block(ms, 0xa1)];
 
 describe("WebM's last frame", () => {
   it.each([
-    ["clusters of unknown size", recorded(timedCluster(0, [block(0), block(33)]), timedCluster(1000, [block(500)])), 1500],
-    ["clusters of known size", recorded(timedCluster(0, [block(40)], "known"), timedCluster(2000, [block(7)], "known")), 2007],
+    [
+      "clusters of unknown size",
+      recorded(timedCluster(0, [block(0), block(33)]), timedCluster(1000, [block(500)])),
+      1500,
+    ],
+    [
+      "clusters of known size",
+      recorded(timedCluster(0, [block(40)], "known"), timedCluster(2000, [block(7)], "known")),
+      2007,
+    ],
     ["blocks in block groups", recorded(timedCluster(3000, [inGroup(0), inGroup(250)])), 3250],
     [
       "a last part cut in the middle of a block",

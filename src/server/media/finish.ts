@@ -28,7 +28,7 @@ export async function finishRecording(
       .from(mediaRecordings)
       .where(eq(mediaRecordings.id, recordingId))
       .for("update", cutOff ? { skipLocked: true } : {});
-    if (!r || r.status !== "recording") return r ?? null;
+    if (r?.status !== "recording") return r ?? null;
     let joined: Uint8Array;
     try {
       joined = await joinChunks(media.storage, r.storageKey, media.maxBytes);

@@ -41,11 +41,7 @@ export async function finishLeftOver(
         options.trialId ? eq(mediaRecordings.trialId, options.trialId) : undefined,
         or(
           silentFor(options.quietMs ?? GONE_AFTER_MS),
-          and(
-            inArray(trials.status, [...ENDED]),
-            silentFor(LAST_PART_MS),
-            lt(trials.endedAt, before(LAST_PART_MS)),
-          ),
+          and(inArray(trials.status, [...ENDED]), silentFor(LAST_PART_MS), lt(trials.endedAt, before(LAST_PART_MS))),
         ),
       ),
     );
@@ -62,9 +58,12 @@ export async function finishLeftOver(
 
 /** The web server's watch: left-over recordings at once, then every LOOK_EVERY_MS. Returns its stop. */
 export function keepFinishingLeftOver(db: Database, media: Media, log: (line: string) => void): () => void {
-  let looking: Promise<void> | null = null;
+  // One look at a time: a slow one is not overtaken by the next.
+  let looking = false;
   const look = () => {
-    looking ??= finishLeftOver(db, media)
+    if (looking) return;
+    looking = true;
+    void finishLeftOver(db, media)
       .then((done) => {
         for (const r of done)
           log(
@@ -75,7 +74,7 @@ export function keepFinishingLeftOver(db: Database, media: Media, log: (line: st
       })
       .catch((error: unknown) => void logUnexpected(error, "looking for recordings left open"))
       .finally(() => {
-        looking = null;
+        looking = false;
       });
   };
   look();
