@@ -63,5 +63,8 @@ describe("a recording in parts", () => {
     expect(cutOffWords("14:02", 180_000)).toBe(
       "The recording stopped when the page closed at 14:02; the 3 minutes before are kept.",
     );
+    expect(cutOffWords("9:15", null)).toBe(
+      "The recording stopped when the page closed at 9:15; none of it had reached the server.",
+    );
   });
 });

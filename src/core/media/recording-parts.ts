@@ -62,6 +62,6 @@ export function lengthWords(ms: number): string {
   return `${Math.round(s / 60)} minutes`;
 }
 
-/** What the reopened wizard page says of a recording its page's closing cut off. */
-export const cutOffWords = (stoppedAt: string, durationMs: number) =>
-  `The recording stopped when the page closed at ${stoppedAt}; the ${lengthWords(durationMs)} before are kept.`;
+/** What the reopened wizard page says of a recording its page's closing cut off (no length: nothing of it arrived). */
+export const cutOffWords = (stoppedAt: string, durationMs: number | null) =>
+  `The recording stopped when the page closed at ${stoppedAt}; ${durationMs === null ? "none of it had reached the server" : `the ${lengthWords(durationMs)} before are kept`}.`;
