@@ -27,8 +27,8 @@ export function useTrialRecording(trialId: string, enabled: boolean) {
   const parts = inOrder((list.data ?? []).filter((r) => r.status === "complete" && r.kind === "video"));
   const [index, setIndex] = useState(0);
   const video = useRef<HTMLVideoElement>(null);
-  // Where to go in a part once it has loaded, when a seek chose another part.
-  const pending = useRef<number | null>(null);
+  // Where to go in a part once it has loaded, when a seek chose another part (and whether to play on).
+  const pending = useRef<{ seconds: number; play: boolean } | null>(null);
   const current = parts[Math.min(index, parts.length - 1)] ?? null;
   /** Shows the trial's moment `ms`: in the part recorded then (or, in a gap, the next one). */
   const seek = (ms: number) => {
@@ -36,7 +36,7 @@ export function useTrialRecording(trialId: string, enabled: boolean) {
     if (!at) return;
     if (parts[at.index] === current && video.current) video.current.currentTime = at.seconds;
     else {
-      pending.current = at.seconds;
+      pending.current = { seconds: at.seconds, play: false };
       setIndex(at.index);
     }
   };
@@ -72,7 +72,8 @@ export function RecordingPlayer({
         src={`/api/recordings/${current.id}/media`}
         onLoadedMetadata={(e) => {
           if (pending.current === null) return;
-          e.currentTarget.currentTime = pending.current;
+          e.currentTarget.currentTime = pending.current.seconds;
+          if (pending.current.play) void e.currentTarget.play().catch(() => undefined);
           pending.current = null;
         }}
         onTimeUpdate={(e) => report(e.currentTarget)}
@@ -80,9 +81,8 @@ export function RecordingPlayer({
         // The next part follows on.
         onEnded={() => {
           if (index + 1 >= parts.length) return;
-          pending.current = 0;
+          pending.current = { seconds: 0, play: true };
           choose(index + 1);
-          requestAnimationFrame(() => void video.current?.play().catch(() => undefined));
         }}
       />
       <div className="space-y-1 px-4 py-2 text-xs text-slate-600">
