@@ -165,7 +165,20 @@ describe("a recording whose page went away", () => {
     await expect.poll(() => said.join("\n")).toContain(`The recording ${recordingId}`);
   });
 
-  it("tells the wizard's reopened page, and is failed, its parts kept, when none usable arrived", async () => {
+  it("keeps the parts before one that never arrived, and is failed, its parts kept, when none usable arrived", async () => {
+    const gapped = await leftBehind({ sent: 2 });
+    await f.media.storage.put(chunkKey(`recordings/${gapped.recordingId}`, 3), parts[2]!, "video/webm");
+    await finishLeftOver(db, f.media, { now: later(GONE_AFTER_MS + 1000) });
+    expect(await row(gapped.recordingId)).toMatchObject({ status: "complete", cutOff: true, durationMs: 5000 });
+
+    const empty = await leftBehind({ sent: 0 });
+    await f.media.storage.put(chunkKey(`recordings/${empty.recordingId}`, 1), parts[1]!, "video/webm");
+    await finishLeftOver(db, f.media, { now: later(GONE_AFTER_MS + 1000) });
+    expect(await row(empty.recordingId)).toMatchObject({ status: "failed", cutOff: true });
+    expect(await f.media.storage.list(`recordings/${empty.recordingId}/`)).toHaveLength(1);
+  });
+
+  it("tells the wizard's reopened page", async () => {
     const cut = await leftBehind({ sent: 2 });
     const wizard = f.api("wizard");
     // Its page has just closed: the reopened page sees it still open.
@@ -177,11 +190,5 @@ describe("a recording whose page went away", () => {
     const [told] = await wizard.recordings.cutOff({ trialId: cut.trialId });
     expect(told).toMatchObject({ id: cut.recordingId, status: "complete", cutOff: true, durationMs: 5000 });
     expect(told!.stoppedAt).toBeInstanceOf(Date);
-
-    const empty = await leftBehind({ sent: 0 });
-    await f.media.storage.put(chunkKey(`recordings/${empty.recordingId}`, 1), parts[1]!, "video/webm");
-    await finishLeftOver(db, f.media, { now: later(GONE_AFTER_MS + 1000) });
-    expect(await row(empty.recordingId)).toMatchObject({ status: "failed", cutOff: true });
-    expect(await f.media.storage.list(`recordings/${empty.recordingId}/`)).toHaveLength(1);
   });
 });

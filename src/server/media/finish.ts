@@ -31,7 +31,7 @@ export async function finishRecording(
     if (r?.status !== "recording") return r ?? null;
     let joined: Uint8Array;
     try {
-      joined = await joinChunks(media.storage, r.storageKey, media.maxBytes);
+      joined = await joinChunks(media.storage, r.storageKey, media.maxBytes, { upToGap: cutOff });
     } catch (error) {
       // Nothing arrived, or too much: the server cannot make a file of it. It stays failed, its parts kept.
       if (!cutOff || !(error instanceof TRPCError)) throw error;
