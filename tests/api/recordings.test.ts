@@ -157,12 +157,12 @@ describe("a recording whose page went away", () => {
     const said: string[] = [];
     const stop = keepFinishingLeftOver(db, f.media, (line) => said.push(line));
     try {
-      await expect.poll(async () => (await row(recordingId)).status).toBe("complete");
+      // Said once it is finished, its parts removed.
+      await expect.poll(() => said.join("\n"), { timeout: 20_000 }).toContain(`The recording ${recordingId}`);
     } finally {
       stop();
     }
     await expectFinishedFromParts(recordingId);
-    await expect.poll(() => said.join("\n")).toContain(`The recording ${recordingId}`);
   });
 
   it("keeps the parts before one that never arrived, and is failed, its parts kept, when none usable arrived", async () => {
