@@ -2,7 +2,7 @@
 import { readConfig } from "@/store/config";
 import { createAuth, type Auth } from "./auth/auth";
 import { answered, createDatabase, type Database } from "@/store/client";
-import { mediaStorage } from "./media";
+import { configuredMedia } from "./media";
 import { appUrl, browserRuntimeUrl } from "./runtime-url";
 import type { Context, SignedInUser } from "./api/trpc";
 import { SYSTEM_ROLES, type SystemRole } from "@/core/access/policy";
@@ -37,7 +37,7 @@ export function server(): Server {
     },
   });
   const runtimeUrl = browserRuntimeUrl(config);
-  const media = { storage: mediaStorage(config), maxBytes: config.HRI_MEDIA_MAX_MB * 1024 * 1024 };
+  const media = configuredMedia(config);
   // The runtime reaches the robot with the same settings (src/runtime/main.ts).
   const robotChannels = channelsOf(transportConfig(config));
   globalForServer.hriServer = { db, auth, secret: config.BETTER_AUTH_SECRET, runtimeUrl, media, robotChannels };

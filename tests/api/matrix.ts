@@ -333,6 +333,7 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "audio.uploadTarget": [EDITORS, (_f, b) => ({ studyId: b.study.id })],
   "audio.remove": [EDITORS, (f, b) => freshAudio(f, b.study.id, f.people.owner.id)],
   "audio.media": [RUNNERS, (f, b) => freshAudio(f, b.study.id, f.people.owner.id)],
+  "recordings.cutOff": [RUNNERS, (_f, b) => ({ trialId: b.trial.id })],
   "recordings.list": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
   "recordings.media": [["owner", "researcher", "observer"], async (f, b) => freshRecording(f, b, true)],
   "trials.annotate": [MEMBERS, (_f, b) => ({ trialId: b.trial.id, relMs: 1500, label: "Smiled" })],

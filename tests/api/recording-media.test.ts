@@ -1,13 +1,18 @@
 // A finished recording is streamed from media storage by its route, in byte
 // ranges so the player can seek (200 whole, 206 a part, 416 past the end),
 // with ?download naming the file; the policy still decides who may play it.
+// A part stored through its route tells the server its recorder is still there.
+import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
+import { finishLeftOver, GONE_AFTER_MS } from "../../src/server/media/left-over";
+import { mediaRecordings } from "../../src/store/schema";
 import { ORIGIN, routeServer } from "../support/routes";
 import { publishedVersion } from "./fixture";
 
 const s = await routeServer();
 afterAll(s.close);
 const media = await import("../../src/app/api/recordings/[recordingId]/media/route");
+const chunks = await import("../../src/app/api/recordings/[recordingId]/chunks/[index]/route");
 const owner = await s.signIn("owner");
 const observer = await s.signIn("observer");
 const outsider = await s.signIn("outsider");
@@ -91,5 +96,31 @@ describe("a recording's media route", () => {
     const gone = await get(id, owner);
     expect(gone.status).toBe(404);
     expect(await gone.text()).toBe("This recording's file is missing from media storage.");
+  });
+});
+
+describe("a recording's chunk route", () => {
+  it("keeps a recording whose parts still come from being finished as left behind", async () => {
+    const api = await s.apiAs(owner);
+    const study = await s.f.newStudy();
+    const { version } = await publishedVersion(api, study.id);
+    const trial = await api.trials.create({ versionId: version.id });
+    const { recordingId } = await api.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/mp4" });
+    // Started long ago: only the part that has just come says its recorder is there.
+    const longAgo = new Date(Date.now() - 5 * GONE_AFTER_MS);
+    await s.db.update(mediaRecordings).set({ createdAt: longAgo }).where(eq(mediaRecordings.id, recordingId));
+    const put = await chunks.PUT(
+      new Request(`${ORIGIN}/api/recordings/${recordingId}/chunks/3`, {
+        method: "PUT",
+        headers: { cookie: owner.get("cookie")!, "content-type": "video/mp4" },
+        body: bytes.subarray(0, 1000),
+      }),
+      { params: Promise.resolve({ recordingId, index: "3" }) },
+    );
+    expect(put.status).toBe(200);
+    const row = async () => (await s.db.select().from(mediaRecordings).where(eq(mediaRecordings.id, recordingId)))[0]!;
+    expect(await row()).toMatchObject({ chunkCount: 4, lastPartAt: expect.any(Date) });
+    expect((await finishLeftOver(s.db, s.server.media)).map((r) => r.id)).not.toContain(recordingId);
+    expect((await row()).status).toBe("recording");
   });
 });

@@ -1,13 +1,17 @@
 // Recording in a real Chromium (its fake camera and microphone feed
 // MediaRecorder): parts reach the server while the trial runs (and wait, then
 // go, while the upload is cut off), the trial's end saves the recording, it plays with a real duration on the analysis page
-// where the timeline seeks it; a crashed tab keeps every part already sent.
+// where the timeline seeks it. A tab closed mid-recording loses nothing sent:
+// the server finishes the recording from its parts, the reopened page says so
+// and records again, and the analysis page plays both parts with the gap marked.
 import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
+import { expectAccessible } from "../support/accessibility";
 import { runWholeTrial } from "../support/run-trial";
+import { connectTrial } from "../support/socket";
 
 describe.sequential("recording a trial", () => {
   let app: RunningApp;
@@ -136,19 +140,58 @@ describe.sequential("recording a trial", () => {
     await Promise.all([wizard.context().close(), analysis.context().close()]);
   }, 180_000);
 
-  it("keeps every part already sent when the wizard's tab crashes, and the recording can still be finished", async () => {
+  it("finishes a recording cut off by a closed tab from its parts, says so on the reopened page, and plays both parts", async () => {
     const trial = await wizardApi.trials.create.mutate({ versionId, participantId });
+    const { url, token } = await wizardApi.trials.socketToken.mutate({ trialId: trial.id });
+    const socket = await connectTrial(url, token);
+    await socket.command("start", { kind: "start" });
+    socket.close();
     const wizard = await wizardPage(trial.id);
     await wizard.getByRole("button", { name: "Start recording" }).click();
     await partsSaved(wizard, 2);
     await wizard.context().close(); // the tab is gone, mid-recording
-    const [recording] = await researcher.recordings.list.query({ trialId: trial.id });
-    expect(recording!.status).toBe("recording");
-    await wizardApi.recordings.finish.mutate({ recordingId: recording!.id, durationMs: 6000 });
-    const [saved] = await researcher.recordings.list.query({ trialId: trial.id });
-    expect(saved).toMatchObject({ status: "complete" });
-    expect(saved!.sizeBytes).toBeGreaterThan(10_000);
-  }, 120_000);
+
+    // The wizard opens the trial again: the server finishes what the closed page left, and the page says so.
+    const again = await wizardPage(trial.id);
+    const told = again.getByTestId("recording-cut-off");
+    await told.waitFor({ timeout: 60_000 });
+    expect(await told.textContent()).toMatch(
+      /^The recording stopped when the page closed at \d{1,2}:\d{2}.*; the \d+ seconds before are kept\.$/,
+    );
+    await expectAccessible(again, "the wizard's page after a recording was cut off");
+    await again.getByRole("button", { name: "Record again" }).click();
+    await partsSaved(again, 1);
+    await runWholeTrial(wizardApi, trial.id);
+    await again.getByText("The recording is saved with this trial.").waitFor({ timeout: 30_000 });
+    const recordings = await researcher.recordings.list.query({ trialId: trial.id });
+    expect(recordings).toMatchObject([
+      { status: "complete", cutOff: true },
+      { status: "complete", cutOff: false },
+    ]);
+    expect(recordings[0]!.durationMs).toBeGreaterThan(2000);
+
+    // The analysis page plays the cut-off part first, then the second; the gap between them says why.
+    const analysis = await (await newContext(browser, app.url)).newPage();
+    await signInAs(analysis, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await analysis.goto(`/trials/${trial.id}/analysis`);
+    const video = analysis.getByTestId("trial-video");
+    const playable = () =>
+      expect
+        .poll(() => video.evaluate((v: HTMLVideoElement) => (v.readyState >= 1 ? v.duration : 0)), { timeout: 15_000 })
+        .toBeGreaterThan(0);
+    await playable();
+    expect(await video.getAttribute("src")).toBe(`/api/recordings/${recordings[0]!.id}/media`);
+    await analysis.getByText("The recording is in 2 parts").waitFor();
+    await analysis
+      .getByTestId("recording-gap")
+      .getByText(/: the wizard's page closed\.$/)
+      .waitFor();
+    await analysis.getByRole("button", { name: /^Not recorded from .*: the wizard's page closed$/ }).waitFor();
+    await analysis.getByRole("button", { name: /^Part 2/ }).click();
+    await expect.poll(() => video.getAttribute("src")).toBe(`/api/recordings/${recordings[1]!.id}/media`);
+    await playable();
+    await Promise.all([again.context().close(), analysis.context().close()]);
+  }, 240_000);
 
   it("refuses parts of the wrong type or over the size limit, saying why", async () => {
     const trial = await wizardApi.trials.create.mutate({ versionId, participantId });

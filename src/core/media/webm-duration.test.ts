@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { webmDuration, withWebmDuration } from "./webm-duration";
+import { webmDuration, webmLastFrameMs, withWebmDuration } from "./webm-duration";
 
 // Minimal WebM files shaped like Chrome's MediaRecorder output: EBML header,
 // a Segment (unknown or known size), Info with a TimecodeScale, one Cluster.
@@ -63,5 +63,41 @@ describe("WebM duration", () => {
     ["a header without a Segment", new Uint8Array([...ebmlHeader, ...cluster]), /no Segment/],
   ])("refuses %s with a reason", (_name, file, reason) => {
     expect(() => withWebmDuration(file, 1000)).toThrow(reason);
+  });
+});
+
+// Clusters as a live recorder writes them: of unknown size (or known), a time, then blocks timed from it.
+const UNKNOWN = [0x01, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff];
+const block = (ms: number, id = 0xa3) => [id, 0x88, 0x81, (ms >> 8) & 0xff, ms & 0xff, 0x80, 1, 2, 3, 4];
+const timedCluster = (ms: number, blocks: number[][], size: "unknown" | "known" = "unknown") => {
+  const data = [0xe7, 0x82, (ms >> 8) & 0xff, ms & 0xff, ...blocks.flat()];
+  return [0x1f, 0x43, 0xb6, 0x75, ...(size === "unknown" ? UNKNOWN : [0x80 | data.length]), ...data];
+};
+const recorded = (...clusters: number[][]) =>
+  new Uint8Array([...ebmlHeader, 0x18, 0x53, 0x80, 0x67, ...UNKNOWN, ...info(), ...clusters.flat()]);
+const inGroup = (ms: number) => [0xa0, 0x8a, ...block(ms, 0xa1)];
+
+describe("WebM's last frame", () => {
+  it.each([
+    [
+      "clusters of unknown size",
+      recorded(timedCluster(0, [block(0), block(33)]), timedCluster(1000, [block(500)])),
+      1500,
+    ],
+    [
+      "clusters of known size",
+      recorded(timedCluster(0, [block(40)], "known"), timedCluster(2000, [block(7)], "known")),
+      2007,
+    ],
+    ["blocks in block groups", recorded(timedCluster(3000, [inGroup(0), inGroup(250)])), 3250],
+    [
+      "a last part cut in the middle of a block",
+      recorded(timedCluster(0, [block(0)]), timedCluster(4000, [block(100), block(200)])).slice(0, -3),
+      4100,
+    ],
+    ["a file cut inside a cluster's header", recorded(timedCluster(0, [block(90)]), [0x1f, 0x43]), 90],
+    ["no frame at all", recorded(), null],
+  ])("is read from %s", (_name, file, ms) => {
+    expect(webmLastFrameMs(file)).toBe(ms);
   });
 });

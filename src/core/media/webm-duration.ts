@@ -9,6 +9,11 @@ const SEGMENT = 0x18538067;
 const INFO = 0x1549a966;
 const TIMECODE_SCALE = 0x2ad7b1;
 const DURATION = 0x4489;
+const CLUSTER = 0x1f43b675;
+const CLUSTER_TIMECODE = 0xe7;
+const BLOCK_GROUP = 0xa0;
+const BLOCK = 0xa1;
+const SIMPLE_BLOCK = 0xa3;
 
 interface Element {
   id: number;
@@ -97,6 +102,47 @@ export function webmDuration(bytes: Uint8Array): number | null {
   const view = new DataView(bytes.buffer, bytes.byteOffset + duration.dataStart, duration.size!);
   const ticks = duration.size === 4 ? view.getFloat32(0) : view.getFloat64(0);
   return (ticks * nsPerTick) / 1e6;
+}
+
+/** The element at `at`, or null when the bytes end (or turn to garbage) inside its ID or size. */
+function wholeHeader(bytes: Uint8Array, at: number): Element | null {
+  try {
+    const element = readElement(bytes, at);
+    return element.dataStart <= bytes.length ? element : null;
+  } catch {
+    return null;
+  }
+}
+
+/**
+ * When the file's last frame starts, in ms: the length of a recording whose
+ * recorder went away before it could say. Its last part may end anywhere, so
+ * the walk stops at the first element the bytes do not hold whole. Null when
+ * no frame is found.
+ */
+export function webmLastFrameMs(bytes: Uint8Array): number | null {
+  const { segment, nsPerTick } = locateInfo(bytes);
+  let clusterTicks = 0;
+  let last: number | null = null;
+  for (let at = segment.dataStart; at < bytes.length; ) {
+    const element = wholeHeader(bytes, at);
+    if (!element) break;
+    // A cluster (often of unknown size while live) and a block group hold what is read next: step into them.
+    if (element.id === CLUSTER || element.id === BLOCK_GROUP) {
+      at = element.dataStart;
+      continue;
+    }
+    if (element.size === null || element.dataStart + element.size > bytes.length) break;
+    if (element.id === CLUSTER_TIMECODE) clusterTicks = readUint(bytes, element);
+    if ((element.id === SIMPLE_BLOCK || element.id === BLOCK) && element.size >= 4) {
+      // A block: its track number (a variable-length integer), then its time from the cluster's, a signed 16 bits.
+      const timeAt = element.dataStart + vintLength(bytes[element.dataStart]!);
+      const ticks = clusterTicks + new DataView(bytes.buffer, bytes.byteOffset + timeAt, 2).getInt16(0);
+      last = Math.max(last ?? 0, (ticks * nsPerTick) / 1e6);
+    }
+    at = element.dataStart + element.size;
+  }
+  return last;
 }
 
 /** The same file, declaring `durationMs`. */

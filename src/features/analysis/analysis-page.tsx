@@ -3,7 +3,7 @@
 // deviations and annotations, and the robot's logged joint angles.
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
-import { useMemo, useRef, useState } from "react";
+import { useMemo, useState } from "react";
 import { fidelityReport } from "@/core/analysis/fidelity";
 import { trialNames } from "@/core/analysis/names";
 import type { TrialProtocol } from "@/core/trial";
@@ -15,7 +15,8 @@ import { AnnotationsEditor } from "./annotations-editor";
 import { TimelineChart } from "./timeline-chart";
 import { EventList, type TimelineItem } from "./event-list";
 import { PlannedTable } from "./planned-table";
-import { RecordingPlayer, useTrialRecording, videoSeconds } from "./recording-player";
+import { recordingGaps } from "@/core/media/recording-parts";
+import { RecordingPlayer, useTrialRecording } from "./recording-player";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, Spinner } from "@/ui/surface";
 import { JointAngles } from "./joint-angles";
@@ -28,7 +29,6 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   const events = useQuery(trpc.trials.events.queryOptions({ trialId }));
   const annotations = useQuery(trpc.trials.annotations.queryOptions({ trialId }));
   const recording = useTrialRecording(trialId, trial.data?.myRole !== "wizard");
-  const video = useRef<HTMLVideoElement>(null);
   const [playheadMs, setPlayheadMs] = useState<number | null>(null);
   const samples = useQuery({
     ...trpc.trials.samples.queryOptions({ trialId, topic: "/joint_states", maxPoints: 2000 }),
@@ -76,9 +76,10 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   };
   // One time axis for the timeline and the robot's state: to the last event, annotation or sample.
   const endMs = Math.max(timeline.at(-1)?.at ?? 0, (samples.data ?? []).at(-1)?.relMs ?? 0);
+  const gaps = recordingGaps(recording.parts, endMs);
   // A moment of the trial chosen on the timeline: the recording goes there, or (with none) the replay's playhead.
   const seekTo = (ms: number) => {
-    if (recording && video.current) video.current.currentTime = videoSeconds(recording, ms);
+    if (recording.current) recording.seek(ms);
     else setPlayheadMs(ms);
   };
   // The row the playhead is in: the last one at or before it.
@@ -128,9 +129,14 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         <Figure label="Deviations" value={String(Object.values(r.deviations).reduce((a, b) => a + b, 0))} />
         <Figure label="Branches by answer / by hand" value={`${r.branches.byLogic} / ${r.branches.byHand}`} />
       </div>
-      {recording && <RecordingPlayer recording={recording} video={video} onTime={setPlayheadMs} />}
+      <RecordingPlayer recording={recording} gaps={gaps} onTime={setPlayheadMs} />
       {(t.status === "completed" || t.status === "aborted") && (
-        <ReplayControl trialId={trialId} playheadMs={playheadMs} recording={recording} video={video} />
+        <ReplayControl
+          trialId={trialId}
+          playheadMs={playheadMs}
+          recording={recording.current}
+          video={recording.video}
+        />
       )}
       <QuestionnaireAnswers trialId={trialId} studyId={t.studyId} />
       <section aria-label="Planned versus executed">
@@ -143,6 +149,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           report={r}
           deviations={deviations}
           annotations={(annotations.data ?? []).map((m) => ({ at: m.relMs, label: m.label }))}
+          recording={recording.parts.length ? { parts: recording.parts, gaps } : null}
           endMs={endMs}
           playheadMs={playheadMs}
           onSeek={seekTo}

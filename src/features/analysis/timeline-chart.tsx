@@ -1,6 +1,7 @@
 "use client";
 // The trial at a glance, on one time axis under the video: step bands, action
-// bars from requested to finished, deviations and annotations. Clicking
+// bars from requested to finished, deviations and annotations, and what of
+// the trial the recording holds (with its gaps, and why). Clicking
 // anything seeks the recording there; the playhead shows where it is.
 // Steps and annotations are few (the protocol's, the researchers'): each is a
 // button. Actions and deviations can be tens of thousands in a long trial:
@@ -8,6 +9,7 @@
 // arrow keys move from bar to bar.
 import { useMemo, useState } from "react";
 import type { FidelityReport } from "@/core/analysis/fidelity";
+import type { RecordingGap, RecordingPart } from "@/core/media/recording-parts";
 import { cn } from "@/ui/cn";
 import { seconds } from "@/ui/format";
 import { Card } from "@/ui/surface";
@@ -16,6 +18,8 @@ interface Props {
   report: FidelityReport;
   deviations: Array<{ at: number; kind: string }>;
   annotations: Array<{ at: number; label: string }>;
+  /** The recording's parts and the gaps between them; null when the trial has none. */
+  recording: { parts: RecordingPart[]; gaps: RecordingGap[] } | null;
   endMs: number;
   playheadMs: number | null;
   onSeek: ((ms: number) => void) | null;
@@ -23,7 +27,7 @@ interface Props {
 
 const BAND = ["bg-sky-100 text-sky-900", "bg-indigo-100 text-indigo-900"];
 
-export function TimelineChart({ report, deviations, annotations, endMs, playheadMs, onSeek }: Props) {
+export function TimelineChart({ report, deviations, annotations, recording, endMs, playheadMs, onSeek }: Props) {
   const total = Math.max(1, endMs);
   // Thousands in a long trial: made once, not on every move of the playhead.
   const actionMarks = useMemo(
@@ -113,6 +117,31 @@ export function TimelineChart({ report, deviations, annotations, endMs, playhead
           />
         )),
       )}
+      {recording &&
+        lane("Recording", [
+          ...recording.parts.map((p) => (
+            <div
+              key={p.id}
+              aria-hidden
+              className="pointer-events-none absolute top-1 bottom-1 rounded-sm bg-slate-300"
+              style={{
+                left: left(p.offsetMs ?? 0),
+                width: width(p.offsetMs ?? 0, (p.offsetMs ?? 0) + (p.durationMs ?? 0)),
+              }}
+            />
+          )),
+          ...recording.gaps.map((g) => (
+            <button
+              key={`gap-${g.fromMs}`}
+              type="button"
+              title={`Not recorded: ${g.cause}`}
+              aria-label={`Not recorded from ${seconds(g.fromMs)} to ${seconds(g.toMs)}: ${g.cause}`}
+              className="absolute top-1 bottom-1 rounded-sm border border-dashed border-red-700 bg-red-100"
+              style={{ left: left(g.fromMs), width: width(g.fromMs, g.toMs) }}
+              onClick={() => seek(g.toMs)}
+            />
+          )),
+        ])}
       {playheadMs !== null && (
         <div
           className="pointer-events-none absolute inset-y-3 w-0.5 bg-red-600"

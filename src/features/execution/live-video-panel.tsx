@@ -10,8 +10,8 @@ import { useVideoSource, useVideoWatcher, type VideoChannel } from "./use-live-v
 
 const TONE = { good: "text-emerald-800", fair: "text-amber-800", poor: "text-red-700" } as const;
 
-export function WatchVideo({ video }: { video: VideoChannel | null }) {
-  const { stream, quality } = useVideoWatcher(video);
+export function WatchVideo({ video, viewers }: { video: VideoChannel | null; viewers: Viewer[] }) {
+  const { stream, quality } = useVideoWatcher(video, viewers);
   const element = useRef<HTMLVideoElement>(null);
   // Browsers play a video with sound only after a click: it starts muted, one click brings the sound.
   const [muted, setMuted] = useState(true);

@@ -97,29 +97,43 @@ export function useVideoSource(video: VideoChannel | null, viewers: Viewer[], st
   return { sending };
 }
 
-/** A watcher's side: answers the wizard's offer, and measures how the video arrives. */
-export function useVideoWatcher(video: VideoChannel | null) {
+/**
+ * A watcher's side: answers the wizard's offer, and measures how the video
+ * arrives. `viewers` are the trial's connections: when the wizard's page
+ * leaves them (closed, crashed), its picture goes at once, not once the
+ * connection times out.
+ */
+export function useVideoWatcher(video: VideoChannel | null, viewers: Viewer[]) {
   const [stream, setStream] = useState<MediaStream | null>(null);
   const [quality, setQuality] = useState<VideoQuality | null>(null);
+  const watched = useRef<(ReturnType<typeof connect> & { from: string }) | null>(null);
+  useEffect(() => {
+    const peer = watched.current;
+    if (!peer || viewers.some((v) => v.peerId === peer.from)) return;
+    peer.pc.close();
+    watched.current = null;
+    setStream(null);
+  }, [viewers]);
   useEffect(() => {
     if (!video) return;
-    let peer: (ReturnType<typeof connect> & { from: string }) | null = null;
     let last: VideoReading | null = null;
     const off = video.onSignal((from, signal) => {
       // A new offer (the wizard started again, or another tab) replaces the connection.
       if (signal.kind === "description" && signal.description.type === "offer") {
-        peer?.pc.close();
-        peer = { ...connect(video, from), from };
+        watched.current?.pc.close();
+        const peer = { ...connect(video, from), from };
+        watched.current = peer;
         last = null;
         peer.pc.ontrack = (e) => setStream(e.streams[0] ?? new MediaStream([e.track]));
         peer.pc.onconnectionstatechange = () => {
-          if (peer?.pc.connectionState === "failed" || peer?.pc.connectionState === "closed") setStream(null);
+          if (peer.pc.connectionState === "failed" || peer.pc.connectionState === "closed") setStream(null);
         };
       }
+      const peer = watched.current;
       if (peer?.from === from) void peer.receive(signal).catch(() => {});
     });
     const timer = setInterval(() => {
-      const pc = peer?.pc;
+      const pc = watched.current?.pc;
       if (pc?.connectionState !== "connected") return setQuality(null);
       void pc
         .getStats()
@@ -133,7 +147,8 @@ export function useVideoWatcher(video: VideoChannel | null) {
     return () => {
       off();
       clearInterval(timer);
-      peer?.pc.close();
+      watched.current?.pc.close();
+      watched.current = null;
       setStream(null);
       setQuality(null);
     };

@@ -1,12 +1,14 @@
 "use client";
 // The wizard's recorder: choose the camera and microphone, start, and see at
-// a glance that it is recording and that its parts reach the server.
+// a glance that it is recording and that its parts reach the server. A page
+// opened again after the last one closed mid-recording says what was kept.
 import { Circle, Square, Video } from "lucide-react";
 import { useEffect, useState } from "react";
 import { Button } from "@/ui/button";
 import { NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
 import { Card } from "@/ui/surface";
+import { useCutOff } from "./use-cut-off";
 import { useRecorder } from "./use-recorder";
 
 const clock = (ms: number) =>
@@ -33,6 +35,7 @@ export function RecordingPanel({
   const cameras = recorder.devices.filter((d) => d.kind === "videoinput");
   const microphones = recorder.devices.filter((d) => d.kind === "audioinput");
   const active = recorder.state === "recording" || recorder.state === "finishing";
+  const cutOff = useCutOff(trialId, !active && recorder.state !== "starting");
   return (
     <Card className="space-y-3 p-4 text-sm">
       <h2 className="flex items-center gap-2 font-semibold">
@@ -48,6 +51,11 @@ export function RecordingPanel({
           </span>
         )}
       </h2>
+      {cutOff.words && (
+        <p role="status" className="text-amber-900" data-testid="recording-cut-off">
+          {cutOff.words}
+        </p>
+      )}
       {!active && recorder.state !== "saved" && (
         <>
           <NativeSelect aria-label="Camera" value={camera} onChange={(e) => setCamera(e.target.value)}>
@@ -71,7 +79,8 @@ export function RecordingPanel({
             disabled={recorder.state === "starting" || ended}
             onClick={() => void recorder.start(camera, microphone)}
           >
-            <Circle className="h-3.5 w-3.5 fill-current" aria-hidden /> Start recording
+            <Circle className="h-3.5 w-3.5 fill-current" aria-hidden />{" "}
+            {cutOff.words && !ended ? "Record again" : "Start recording"}
           </Button>
         </>
       )}

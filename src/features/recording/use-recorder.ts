@@ -66,6 +66,21 @@ export function useRecorder(
           setSent((n) => n + 1);
           setWaiting(queue.current.length);
           delay = RETRY_MS.first;
+        } else if (response?.status === 409) {
+          // Finished by the server meanwhile: it heard nothing from this page for too long and kept what it had.
+          const gone = recording.current;
+          recording.current = null;
+          queue.current = [];
+          setWaiting(0);
+          gone.recorder.ondataavailable = null;
+          if (gone.recorder.state !== "inactive") gone.recorder.stop();
+          gone.stream.getTracks().forEach((t) => t.stop());
+          setStream(null);
+          setProblem(
+            "The server finished this recording while this page could not reach it; what reached it is kept. Record again to go on.",
+          );
+          setState("failed");
+          return;
         } else if (response && response.status < 500 && response.status !== 408 && response.status !== 429) {
           setProblem(`A part of the recording was refused: ${await response.text()}`);
           setState("failed");

@@ -24,3 +24,9 @@ export function mediaStorage(config: Config): MediaStorage {
   }
   return chosen;
 }
+
+/** The store and the largest recording it takes, as every server's context carries them. */
+export const configuredMedia = (config: Config) => ({
+  storage: mediaStorage(config),
+  maxBytes: config.HRI_MEDIA_MAX_MB * 1024 * 1024,
+});

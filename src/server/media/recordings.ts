@@ -2,7 +2,10 @@
 // as it comes, so a crashed tab loses at most the last few seconds) and is
 // joined into one file when it is finished, with its duration written in.
 import { TRPCError } from "@trpc/server";
+import { and, eq, sql } from "drizzle-orm";
 import { withWebmDuration } from "@/core/media/webm-duration";
+import type { Database } from "@/store/client";
+import { mediaRecordings } from "@/store/schema";
 import type { MediaStorage } from "./storage";
 
 /** Larger than a few seconds of camera video at any sensible bitrate. */
@@ -16,15 +19,35 @@ export const fileKey = (storageKey: string, mimeType: string) => `${storageKey}.
 export const recordingFileName = (recordingId: string, mimeType: string) =>
   `recording-${recordingId}.${extension(mimeType)}`;
 
-/** Joins the chunks in order; refuses a gap (a chunk that never arrived) by naming it. */
-export async function joinChunks(storage: MediaStorage, storageKey: string, maxBytes: number): Promise<Uint8Array> {
-  const keys = await storage.list(`${storageKey}/`);
+/** Notes that part `index` is stored: the recorder is still there (left-over.ts looks for those that are not). */
+export async function partArrived(db: Database, recordingId: string, index: number) {
+  await db
+    .update(mediaRecordings)
+    .set({ lastPartAt: new Date(), chunkCount: sql`greatest(${mediaRecordings.chunkCount}, ${index + 1})` })
+    .where(and(eq(mediaRecordings.id, recordingId), eq(mediaRecordings.status, "recording")));
+}
+
+/**
+ * Joins the chunks in order. A gap (a chunk that never arrived) is refused by
+ * naming it, for a recorder that will send it again; `upToGap` joins those
+ * before it, for a recording whose recorder has gone.
+ */
+export async function joinChunks(
+  storage: MediaStorage,
+  storageKey: string,
+  maxBytes: number,
+  { upToGap = false } = {},
+): Promise<Uint8Array> {
+  const stored = await storage.list(`${storageKey}/`);
+  const index = (key: string) => Number(key.slice(key.lastIndexOf("-") + 1));
+  const firstGap = stored.findIndex((key, i) => index(key) !== i);
+  const keys = upToGap && firstGap !== -1 ? stored.slice(0, firstGap) : stored;
   if (!keys.length)
     throw new TRPCError({
       code: "PRECONDITION_FAILED",
       message: "No part of this recording arrived: nothing to finish.",
     });
-  const indices = keys.map((k) => Number(k.slice(k.lastIndexOf("-") + 1)));
+  const indices = keys.map(index);
   const missing = indices.at(-1)! + 1 - indices.length;
   if (indices[0] !== 0 || missing > 0) {
     const gaps = Array.from({ length: indices.at(-1)! + 1 }, (_, i) => i).filter((i) => !indices.includes(i));

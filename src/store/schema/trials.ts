@@ -137,9 +137,17 @@ export const mediaRecordings = pgTable(
     durationMs: doublePrecision("duration_ms"),
     chunkCount: integer("chunk_count").notNull().default(0),
     createdAt: createdAt(),
+    // When its last part arrived: a recorder that has sent nothing for a while has gone (its page closed).
+    lastPartAt: timestamp("last_part_at", { withTimezone: true }),
+    // Finished by the server from the parts it held, because the page recording it went away.
+    cutOff: boolean("cut_off").notNull().default(false),
     finishedAt: timestamp("finished_at", { withTimezone: true }),
   },
-  (t) => [index("media_recordings_trial_idx").on(t.trialId)],
+  (t) => [
+    index("media_recordings_trial_idx").on(t.trialId),
+    // The server's look for recordings left open: only those still open.
+    index("media_recordings_open_idx").on(t.createdAt).where(sql`${t.status} = 'recording'`),
+  ],
 );
 
 // Each ended trial's figures for the study's tables, folded once from its log (src/server/studies/summary.ts).

@@ -1,11 +1,14 @@
 // Recordings of a trial: started by the wizard's browser, filled chunk by
 // chunk through /api/recordings/<id>/chunks/<n>, finished into one playable
-// file, and played back on the analysis page.
+// file (by the recorder, or by the server when its page went away), and
+// played back on the analysis page, part after part.
 import { TRPCError } from "@trpc/server";
-import { and, asc, eq } from "drizzle-orm";
+import { asc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
 import { mediaRecordings } from "@/store/schema";
-import { CHUNK_LIMIT_BYTES, fileKey, joinChunks, playable, RECORDING_TYPES } from "../../media/recordings";
+import { finishRecording } from "../../media/finish";
+import { finishLeftOver, LAST_PART_MS } from "../../media/left-over";
+import { CHUNK_LIMIT_BYTES, fileKey, RECORDING_TYPES } from "../../media/recordings";
 import { router, studyProcedure } from "../trpc";
 import { id } from "../validation";
 
@@ -60,23 +63,36 @@ export const recordingsRouter = router({
     "recording",
     recordingId.extend({ durationMs: z.number().finite().min(0).max(86_400_000) }),
   ).mutation(async ({ ctx, input }) => {
-    const r = ctx.row;
-    if (r.status === "complete") return { recordingId: r.id, sizeBytes: r.sizeBytes };
-    const { storage, maxBytes } = ctx.media;
-    const joined = await joinChunks(storage, r.storageKey, maxBytes);
-    const file = playable(joined, r.mimeType, input.durationMs);
-    await storage.put(fileKey(r.storageKey, r.mimeType), file, r.mimeType);
-    await ctx.db
-      .update(mediaRecordings)
-      .set({ status: "complete", sizeBytes: file.length, durationMs: input.durationMs, finishedAt: new Date() })
-      .where(and(eq(mediaRecordings.id, r.id), eq(mediaRecordings.status, "recording")));
-    // The parts go only once the whole file is safely stored.
-    for (const key of await storage.list(`${r.storageKey}/`)) await storage.remove(key);
-    return { recordingId: r.id, sizeBytes: file.length };
+    const r = await finishRecording(ctx.db, ctx.media, ctx.row.id, { durationMs: input.durationMs });
+    return { recordingId: ctx.row.id, sizeBytes: r?.sizeBytes ?? 0 };
   }),
 
-  list: studyProcedure("data.read", "trial", z.object({ trialId: id })).query(({ ctx }) =>
-    ctx.db
+  /**
+   * For the wizard's page as it opens: the trial's recordings a closed page
+   * cut off (finished now if their recorder has been silent a little while).
+   */
+  cutOff: studyProcedure("trial.run", "trial", z.object({ trialId: id })).query(async ({ ctx }) => {
+    await finishLeftOver(ctx.db, ctx.media, { trialId: ctx.row.id, quietMs: LAST_PART_MS });
+    const rows = await ctx.db
+      .select({
+        id: mediaRecordings.id,
+        status: mediaRecordings.status,
+        cutOff: mediaRecordings.cutOff,
+        durationMs: mediaRecordings.durationMs,
+        stoppedAt: sql<Date>`coalesce(${mediaRecordings.lastPartAt}, ${mediaRecordings.createdAt})`.mapWith(
+          mediaRecordings.createdAt,
+        ),
+      })
+      .from(mediaRecordings)
+      .where(eq(mediaRecordings.trialId, ctx.row.id))
+      .orderBy(asc(mediaRecordings.createdAt));
+    return rows.filter((r) => r.cutOff || r.status === "recording");
+  }),
+
+  list: studyProcedure("data.read", "trial", z.object({ trialId: id })).query(async ({ ctx }) => {
+    // Those whose page went away are finished first, so the trial's media is whole when it is looked at.
+    await finishLeftOver(ctx.db, ctx.media, { trialId: ctx.row.id });
+    return ctx.db
       .select({
         id: mediaRecordings.id,
         kind: mediaRecordings.kind,
@@ -85,11 +101,12 @@ export const recordingsRouter = router({
         sizeBytes: mediaRecordings.sizeBytes,
         offsetMs: mediaRecordings.offsetMs,
         durationMs: mediaRecordings.durationMs,
+        cutOff: mediaRecordings.cutOff,
       })
       .from(mediaRecordings)
       .where(eq(mediaRecordings.trialId, ctx.row.id))
-      .orderBy(asc(mediaRecordings.createdAt)),
-  ),
+      .orderBy(asc(mediaRecordings.createdAt));
+  }),
 
   /**
    * Where the finished file is, for the media route, which streams it from

@@ -2,7 +2,7 @@
 // replaces it, so a recorder that lost its connection simply resends.
 import { apiRoute } from "@/server/api/download";
 import { readBody } from "@/server/http/body-limit";
-import { chunkKey, CHUNK_LIMIT_BYTES } from "@/server/media/recordings";
+import { chunkKey, CHUNK_LIMIT_BYTES, partArrived } from "@/server/media/recordings";
 
 const refuse = (status: number, message: string) => new Response(message, { status });
 const baseType = (type: string | null) => (type ?? "").split(";")[0]!.trim();
@@ -24,6 +24,7 @@ export async function PUT(req: Request, { params }: { params: Promise<{ recordin
     if (body instanceof Response) return body;
     if (body.length === 0) return refuse(400, "This part of the recording is empty.");
     await context.media.storage.put(chunkKey(target.storageKey, n), body, target.mimeType);
+    await partArrived(context.db, recordingId, n);
     return Response.json({ stored: n, bytes: body.length });
   });
 }
