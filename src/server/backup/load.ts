@@ -2,7 +2,7 @@
 // nothing), parents before children, then the sequences where they were.
 import { pipeline } from "node:stream/promises";
 import type postgres from "postgres";
-import { tableFile, type BackupManifest } from "@/core/backup/manifest";
+import { formatBytes, tableFile, type BackupManifest } from "@/core/backup/manifest";
 import type { BackupReader } from "./archive";
 import { fixTextFormats, quoteIdent } from "./catalog";
 
@@ -15,13 +15,17 @@ export async function loadDatabase(
   await sql.begin(async (tx) => {
     await fixTextFormats(tx);
     for (const [i, table] of manifest.tables.entries()) {
-      progress(`tables ${i + 1}/${manifest.tables.length} (${table.name}, ${table.rows} rows)`);
+      const file = tableFile(table.name);
+      progress(
+        `tables ${i + 1}/${manifest.tables.length} (${table.name}): ${table.rows.toLocaleString("en")} rows, ${formatBytes(reader.size(file))}`,
+      );
       if (table.rows === 0) continue;
       try {
         const copy = await tx
           .unsafe(`COPY ${quoteIdent(table.name)} (${table.columns.map(quoteIdent).join(", ")}) FROM STDIN`)
           .writable();
-        await pipeline(reader.stream(tableFile(table.name)), copy);
+        // The file is read as PostgreSQL takes it in: the writable's callbacks are the socket's.
+        await pipeline(reader.stream(file), copy);
       } catch (error) {
         throw new Error(
           `Could not load the table ${table.name}: ${error instanceof Error ? error.message : String(error)}`,
