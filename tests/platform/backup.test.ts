@@ -16,7 +16,7 @@ import { DEMO_CHANNELS } from "../api/fixture";
 import { appRouter } from "../../src/server/api/root";
 import { BackupReader, BackupWriter } from "../../src/server/backup/archive";
 import { readJournal, migrateTo } from "../../src/server/backup/migrations";
-import { MANIFEST_FILE, parseManifest } from "../../src/core/backup/manifest";
+import { MANIFEST_FILE, mediaFile, parseManifest, tableFile } from "../../src/core/backup/manifest";
 import { createDatabase } from "../../src/store/client";
 import { startEmbeddedPostgres, type EmbeddedDatabase } from "../../src/store/embedded";
 import { migrateDatabase } from "../../src/store/migrate";
@@ -251,6 +251,26 @@ describe("npm run backup, then npm run restore into a fresh data folder", async 
     const result = await command("restore", [notBackup], { HRI_DATA_DIR: folder() });
     expect(result.code).toBe(1);
     expect(result.stderr).toContain("is damaged at byte 0");
+  });
+
+  it("refuses a backup whose table lost rows, saying the file is damaged", { timeout: 60_000 }, async () => {
+    const reader = await BackupReader.open(file);
+    const manifest = parseManifest((await reader.bytes(MANIFEST_FILE)).toString("utf8"));
+    // The same backup with the events cut after their first row, at a row's end, so COPY alone would take it.
+    const cut = join(folder(), "cut.tar");
+    const writer = BackupWriter.create({ file: cut });
+    for (const { name } of manifest.tables) {
+      const rows = await reader.bytes(tableFile(name));
+      await writer.add(tableFile(name), [name === "trial_events" ? rows.subarray(0, rows.indexOf("\n") + 1) : rows]);
+    }
+    for (const { key } of manifest.media) await writer.add(mediaFile(key), [await reader.bytes(mediaFile(key))]);
+    await writer.add(MANIFEST_FILE, [await reader.bytes(MANIFEST_FILE)]);
+    writer.finish();
+    const result = await command("restore", [cut], { HRI_DATA_DIR: folder() });
+    expect(result.stderr).toContain(
+      "The table trial_events came back with 1 rows where the backup counted 3: the backup file is damaged.",
+    );
+    expect(result.code).toBe(1);
   });
 
   it("refuses a data folder without a database, and writes no file", { timeout: 60_000 }, async () => {

@@ -20,6 +20,9 @@ export async function loadDatabase(
         `tables ${i + 1}/${manifest.tables.length} (${table.name}): ${table.rows.toLocaleString("en")} rows, ${formatBytes(reader.size(file))}`,
       );
       if (table.rows === 0) continue;
+      const rows = async () =>
+        Number((await tx.unsafe<Array<{ n: string }>>(`SELECT count(*) AS n FROM ${quoteIdent(table.name)}`))[0]!.n);
+      const before = await rows();
       try {
         const copy = await tx
           .unsafe(`COPY ${quoteIdent(table.name)} (${table.columns.map(quoteIdent).join(", ")}) FROM STDIN`)
@@ -31,6 +34,12 @@ export async function loadDatabase(
           `Could not load the table ${table.name}: ${error instanceof Error ? error.message : String(error)}`,
         );
       }
+      // Each row the backup counted, no fewer: a file cut or damaged inside a table is refused here.
+      const loaded = (await rows()) - before;
+      if (loaded !== table.rows)
+        throw new Error(
+          `The table ${table.name} came back with ${loaded} rows where the backup counted ${table.rows}: the backup file is damaged.`,
+        );
     }
     for (const s of manifest.sequences) {
       await tx`SELECT setval(${`public.${quoteIdent(s.name)}`}::regclass, ${s.value}::bigint, ${s.called})`;
