@@ -28,18 +28,19 @@ const code = (error: unknown) => (error as NodeJS.ErrnoException).code;
 
 /** One entry being written: bytes go in as they come, synchronously (see dump.ts for why). */
 export class EntryWriter {
-  private readonly buffer = new Uint8Array(BUFFER);
   private held = 0;
   size = 0;
 
   constructor(
     private readonly archive: BackupWriter,
     private readonly start: number,
+    /** The archive's one buffer: entries are written one at a time. */
+    private readonly buffer: Uint8Array,
   ) {}
 
   write(chunk: Uint8Array) {
-    if (this.held + chunk.byteLength > BUFFER) this.flush();
-    if (chunk.byteLength >= BUFFER) this.archive.writeAt(chunk, this.start + BLOCK + this.size);
+    if (this.held + chunk.byteLength > this.buffer.byteLength) this.flush();
+    if (chunk.byteLength >= this.buffer.byteLength) this.archive.writeAt(chunk, this.start + BLOCK + this.size);
     else {
       this.buffer.set(chunk, this.held);
       this.held += chunk.byteLength;
@@ -56,6 +57,7 @@ export class EntryWriter {
 export class BackupWriter {
   private at = 0;
   private closed = false;
+  private readonly buffer = new Uint8Array(BUFFER);
 
   private constructor(
     private readonly fd: number,
@@ -82,7 +84,7 @@ export class BackupWriter {
   /** Starts an entry; end it with `end` before the next one. */
   begin(): EntryWriter {
     this.writeAt(new Uint8Array(BLOCK), this.at);
-    return new EntryWriter(this, this.at);
+    return new EntryWriter(this, this.at, this.buffer);
   }
 
   /** Writes the entry's header now that its size is known; returns its size in bytes. */
@@ -226,9 +228,23 @@ export class BackupReader {
   }
 
   async bytes(name: string): Promise<Buffer> {
-    const chunks: Buffer[] = [];
-    for await (const chunk of this.stream(name)) chunks.push(chunk as Buffer);
-    return Buffer.concat(chunks);
+    return Buffer.from(await this.readInto(name, new Uint8Array(this.entry(name).size)));
+  }
+
+  /** The entry's bytes read into `buffer` (at least the entry's size), so one buffer serves entry after entry. */
+  async readInto(name: string, buffer: Uint8Array): Promise<Uint8Array> {
+    const { offset, size } = this.entry(name);
+    const file = await open(this.path, "r");
+    try {
+      for (let done = 0; done < size; ) {
+        const { bytesRead } = await file.read(buffer, done, size - done, offset + done);
+        if (bytesRead === 0) throw new Error(`The backup file ${this.path} ends inside "${name}": it is incomplete.`);
+        done += bytesRead;
+      }
+    } finally {
+      await file.close();
+    }
+    return buffer.subarray(0, size);
   }
 
   private entry(name: string) {

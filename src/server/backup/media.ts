@@ -29,8 +29,10 @@ export async function restoreMedia(
   media: BackupManifest["media"],
   progress: (line: string) => void,
 ) {
+  // One buffer, as large as the largest recording, for them all: memory does not follow their number.
+  const buffer = new Uint8Array(media.reduce((most, m) => Math.max(most, reader.size(mediaFile(m.key))), 0));
   for (const [i, { key }] of media.entries()) {
     progress(`media files ${i + 1}/${media.length} (${key})`);
-    await storage.put(key, await reader.bytes(mediaFile(key)), contentType(key));
+    await storage.put(key, await reader.readInto(mediaFile(key), buffer), contentType(key));
   }
 }
