@@ -3,7 +3,7 @@
 import { pipeline } from "node:stream/promises";
 import type postgres from "postgres";
 import { formatBytes, tableFile, type BackupManifest } from "@/core/backup/manifest";
-import type { BackupReader } from "./archive";
+import type { BackupReader } from "./archive-reader";
 import { fixTextFormats, quoteIdent } from "./catalog";
 
 export async function loadDatabase(

@@ -2,7 +2,8 @@
 // ones still being recorded) into the backup file, and back.
 import { mediaFile, type BackupManifest } from "@/core/backup/manifest";
 import type { MediaStorage } from "../media/storage";
-import type { BackupReader, BackupWriter } from "./archive";
+import type { BackupWriter } from "./archive";
+import type { BackupReader } from "./archive-reader";
 
 const CONTENT_TYPES: Record<string, string> = { webm: "video/webm", mp4: "video/mp4", ogg: "audio/ogg" };
 const contentType = (key: string) => CONTENT_TYPES[key.slice(key.lastIndexOf(".") + 1)] ?? "application/octet-stream";
