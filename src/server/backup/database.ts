@@ -4,11 +4,12 @@
 // The one file here that uses the database layer, so a move of it touches only this.
 import { existsSync, readFileSync } from "node:fs";
 import { join } from "node:path";
+import { connectionLost } from "@/store/client";
 import { startEmbeddedPostgres } from "@/store/embedded";
 import { migrateDatabase, MIGRATIONS_DIR } from "@/store/migrate";
 import { connectionUrl } from "@/store/url";
 
-export { migrateDatabase, MIGRATIONS_DIR };
+export { connectionLost, migrateDatabase, MIGRATIONS_DIR };
 
 export interface OpenDatabase {
   url: string;

@@ -2,7 +2,8 @@
 // ones still being recorded) into the backup file, and back.
 import { mediaFile, type BackupManifest } from "@/core/backup/manifest";
 import type { MediaStorage } from "../media/storage";
-import type { BackupReader, BackupWriter } from "./archive";
+import type { BackupWriter } from "./archive";
+import type { BackupReader } from "./archive-reader";
 
 const CONTENT_TYPES: Record<string, string> = { webm: "video/webm", mp4: "video/mp4", ogg: "audio/ogg" };
 const contentType = (key: string) => CONTENT_TYPES[key.slice(key.lastIndexOf(".") + 1)] ?? "application/octet-stream";
@@ -29,8 +30,10 @@ export async function restoreMedia(
   media: BackupManifest["media"],
   progress: (line: string) => void,
 ) {
+  // One buffer, as large as the largest recording, for them all: memory does not follow their number.
+  const buffer = new Uint8Array(media.reduce((most, m) => Math.max(most, reader.size(mediaFile(m.key))), 0));
   for (const [i, { key }] of media.entries()) {
     progress(`media files ${i + 1}/${media.length} (${key})`);
-    await storage.put(key, await reader.bytes(mediaFile(key)), contentType(key));
+    await storage.put(key, await reader.readInto(mediaFile(key), buffer), contentType(key));
   }
 }

@@ -4,7 +4,7 @@ import postgres from "postgres";
 import { MANIFEST_FILE, parseManifest, type BackupManifest } from "@/core/backup/manifest";
 import { checkRestoreLevels } from "@/core/backup/migration-level";
 import type { MediaStorage } from "../media/storage";
-import { BackupReader } from "./archive";
+import { BackupReader } from "./archive-reader";
 import { appliedLevel, tablesWithRows } from "./catalog";
 import { migrateDatabase, openDatabase } from "./database";
 import { loadDatabase } from "./load";
