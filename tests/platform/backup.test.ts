@@ -84,7 +84,7 @@ async function mediaOf(dir: string) {
 
 const running: EmbeddedDatabase[] = [];
 const folders: string[] = [];
-/** A new folder under .tmp, removed when the file's tests are done. */
+/** A new folder under the run's folder, removed when the file's tests are done. */
 const folder = () => {
   folders.push(newDataDir());
   return folders.at(-1)!;
