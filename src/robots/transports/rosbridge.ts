@@ -25,6 +25,7 @@ import {
   type Plugin,
   type PluginAction,
 } from "../../core/plugins";
+import { linkProblem } from "../../core/robots/link-problem";
 import { DoneTopics } from "./done-topics";
 import {
   backoffDelay,
@@ -77,7 +78,7 @@ export class RosbridgeTransport extends LinkedTransport {
     if (this.status.state === "closed") return Promise.reject(new Error("transport closed"));
     if (this.status.state !== "connected") this.open();
     return this.connectedWithin(Date.now() + 10_000).then((ros) => {
-      if (!ros) throw new Error(`cannot reach rosbridge at ${this.options.url}`);
+      if (!ros) throw new Error(`cannot reach rosbridge at ${this.options.url}: ${this.lostReason()}`);
     });
   }
 
@@ -96,7 +97,7 @@ export class RosbridgeTransport extends LinkedTransport {
         : action.retryable
           ? await this.connectedWithin(started + timeoutMs)
           : null;
-    if (!ros) return unreached(action, started, "robot not connected");
+    if (!ros) return unreached(action, started, `robot not connected: ${this.lostReason()}`);
     if (outgoing.kind === "publish")
       return this.published(ros, action, checked.parameters, outgoing, started + timeoutMs);
     if (outgoing.kind === "goal") return sendGoal(ros, outgoing, started + timeoutMs);
@@ -228,7 +229,8 @@ export class RosbridgeTransport extends LinkedTransport {
     });
     this.ros = ros;
     this.topics = new Map();
-    this.setState("connecting");
+    // Why the last try failed stays told while the next one is made.
+    this.setState("connecting", this.status.reason);
     ros.on("connection", () => {
       if (this.ros !== ros) return;
       this.status.attempts = 0;
@@ -236,7 +238,9 @@ export class RosbridgeTransport extends LinkedTransport {
       this.subscriptions.forEach((s) => this.listen(ros, s));
       this.waiting.forEach((wake) => wake());
     });
-    ros.connect(this.options.url).catch((error: Error) => lost(`cannot reach rosbridge: ${error.message}`));
+    ros
+      .connect(this.options.url)
+      .catch((error: unknown) => lost(`cannot reach the robot's bridge at ${this.options.url}: ${linkProblem(error)}`));
   }
 
   override health() {
@@ -252,7 +256,10 @@ export class RosbridgeTransport extends LinkedTransport {
   }
 
   private lostReason() {
-    return this.status.reason ?? "the robot's bridge did not answer";
+    if (this.status.reason) return this.status.reason;
+    return this.status.state === "connecting"
+      ? "the link to the robot's bridge is still being opened"
+      : "the robot's bridge did not answer";
   }
 
   private reconnectLater() {
