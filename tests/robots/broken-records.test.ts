@@ -129,7 +129,12 @@ const RECORDS: Array<[TransportKind, string, () => TransportConfig, Expected]> =
   ...(["rosbridge", "simulated"] as const).flatMap(
     (kind): Array<[TransportKind, string, () => TransportConfig, Expected]> => [
       [kind, "an address that is not a URL", () => ros(() => "not a url")(kind), /not a URL/],
-      [kind, "an address of another scheme", () => ros(() => "ftp://robot.local/")(kind), /protocol must be one of/],
+      [
+        kind,
+        "an address of another scheme",
+        () => ros(() => "ftp://robot.local/")(kind),
+        /"ftp:\/\/robot.local\/" is not a ws:\/\/ or wss:\/\/ or http:\/\/ or https:\/\/ address/,
+      ],
       [
         kind,
         "a host that does not exist",
@@ -177,7 +182,7 @@ const RECORDS: Array<[TransportKind, string, () => TransportConfig, Expected]> =
     () => ssh({ host: "no-such-robot.invalid" }),
     /no host named "no-such-robot.invalid"/,
   ],
-  ["ssh", "a port out of range", () => ssh({ port: 70_000 }), /not a port number/],
+  ["ssh", "a port out of range", () => ssh({ port: 70_000 }), /the SSH port 70000 is not a port number/],
   ["ssh", "a port nothing listens on", () => ssh({ port: closed }), /connection was refused/],
   ["ssh", "a host that never answers", () => ssh({ port: silent }), /did not answer in time/],
   ["http", "an address that is not a URL", () => ({ httpBaseUrl: "not a url" }), /"not a url" is not a URL/],
@@ -185,7 +190,7 @@ const RECORDS: Array<[TransportKind, string, () => TransportConfig, Expected]> =
     "http",
     "an address of another scheme",
     () => ({ httpBaseUrl: "ftp://robot.local/" }),
-    /not an http:\/\/ or https:\/\/ address/,
+    /"ftp:\/\/robot.local\/" is not a http:\/\/ or https:\/\/ address/,
   ],
   [
     "http",

@@ -4,21 +4,8 @@
 // base URL is probed as a heartbeat, so a robot gone away is reported at once.
 import { httpRequest, type PluginAction } from "../../core/plugins";
 import { linkProblem } from "../../core/robots/link-problem";
-import { checkedParameters, LinkedTransport, timeoutOf, untilDeadline } from "./link";
+import { addressProblem, checkedParameters, LinkedTransport, timeoutOf, untilDeadline } from "./link";
 import type { DispatchOutcome } from "./transport";
-
-/** Why the robot's API address cannot be used, or null: fetch's own words for it are not a wizard's. */
-function addressProblem(baseUrl: string): string | null {
-  let url: URL;
-  try {
-    url = new URL(baseUrl);
-  } catch {
-    return `the robot's API address "${baseUrl}" is not a URL`;
-  }
-  if (url.protocol !== "http:" && url.protocol !== "https:")
-    return `the robot's API address "${baseUrl}" is not an http:// or https:// address`;
-  return null;
-}
 
 export interface HttpOptions {
   baseUrl: string;
@@ -43,7 +30,7 @@ export class HttpTransport extends LinkedTransport {
     const checked = checkedParameters(action, parameters);
     if (!checked.ok) return checked.outcome;
     if (!action.http) return { status: "failed", reason: `action "${action.id}" has no HTTP request` };
-    const address = addressProblem(this.options.baseUrl);
+    const address = addressProblem("the robot's API", this.options.baseUrl, ["http:", "https:"]);
     if (address) return { status: "failed", reason: address };
     const request = httpRequest(action.http, this.options.baseUrl, checked.parameters);
     if (!request.ok) return { status: "failed", reason: request.reason };
@@ -90,7 +77,7 @@ export class HttpTransport extends LinkedTransport {
   }
 
   private async probe(): Promise<boolean> {
-    const address = addressProblem(this.options.baseUrl);
+    const address = addressProblem("the robot's API", this.options.baseUrl, ["http:", "https:"]);
     if (address) {
       this.setState("disconnected", address);
       return false;

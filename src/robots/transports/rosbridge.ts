@@ -28,6 +28,7 @@ import {
 import { linkProblem } from "../../core/robots/link-problem";
 import { DoneTopics } from "./done-topics";
 import {
+  addressProblem,
   backoffDelay,
   checkedParameters,
   LinkedTransport,
@@ -91,6 +92,9 @@ export class RosbridgeTransport extends LinkedTransport {
     if (outgoing.kind === "none") return { status: "failed", reason: outgoing.reason };
     if (outgoing.kind === "ssh")
       return { status: "failed", reason: `action "${action.id}" runs over SSH, not rosbridge` };
+    // ws takes http(s) addresses too, and some records have them.
+    const address = addressProblem("the robot's bridge", this.options.url, ["ws:", "wss:", "http:", "https:"]);
+    if (address) return { status: "failed", reason: address };
     const ros =
       this.status.state === "connected"
         ? this.ros

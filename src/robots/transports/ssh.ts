@@ -60,6 +60,8 @@ export class SshTransport extends LinkedTransport {
     const built = shellCommand(outgoing.command, checked.parameters);
     if (!built.ok) return { status: "failed", reason: built.reason };
     const timeoutMs = timeoutOf(action);
+    const usable = this.settings();
+    if (!usable.ok) return { status: "failed", reason: `cannot reach the robot over SSH: ${usable.reason}` };
     const client = action.retryable
       ? await untilDeadline(started + timeoutMs, () => this.connection())
       : await this.connection();
@@ -168,9 +170,14 @@ export class SshTransport extends LinkedTransport {
     }));
   }
 
-  /** What ssh2 is given, the key read from its file; or why the robot's record cannot be used. */
+  /**
+   * What ssh2 is given, the key read from its file; or why the robot's record cannot be used. Checked before
+   * each action too: no wait and no retry can mend a record, so even a retryable action fails at once.
+   */
   private settings(): { ok: true; value: ConnectConfig } | { ok: false; reason: string } {
     const { host, port = 22, username, password, privateKeyFile } = this.options;
+    if (!Number.isInteger(port) || port < 1 || port > 65_535)
+      return { ok: false, reason: `the SSH port ${port} is not a port number (1–65535)` };
     let privateKey: Buffer | undefined;
     if (privateKeyFile) {
       try {
