@@ -26,6 +26,13 @@ import {
   type ServerMessage,
   type Viewer,
 } from "@/core/socket/messages";
+import {
+  beforeHelloRefusal,
+  HELLO_DEADLINE_MS,
+  LARGEST_FRAME_BYTES,
+  sizeRefusal,
+  UNGREETED_PER_ADDRESS,
+} from "@/core/socket/limits";
 import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
 import { logUnexpected } from "@/store/error-reference";
 import type { LiveRobotState } from "@/core/robots/live-state";
@@ -55,6 +62,12 @@ interface Connection {
   stopReplay?: () => void;
   /** The connection's replay messages, one after another. */
   replayQueue?: Promise<unknown>;
+  /** Where it comes from: connections that have not said hello are counted per address. */
+  address: string;
+  /** Counted among its address's connections that have not said hello (see limits.ts). */
+  waiting: boolean;
+  /** Closes it if no hello comes in time. */
+  helloDeadline?: ReturnType<typeof setTimeout>;
 }
 
 type Socket = {
@@ -80,6 +93,10 @@ export interface RuntimeOptions {
 /** Close codes the browser acts on: 4401 fetch a fresh token and retry; 4403 stop and say why. */
 const EXPIRED = 4401;
 const SHUT_OUT = 4403;
+/** Close codes of the limits (RFC 6455): the browser reconnects after them, as after any other drop. */
+const POLICY = 1008;
+const TOO_BIG = 1009;
+const TRY_LATER = 1013;
 
 /** Events written into a welcome's text at a time: a few milliseconds of work each. */
 const WELCOME_PAGE = 2000;
@@ -146,8 +163,21 @@ export function startRuntimeServer({
     return list;
   };
 
+  /** Connections not yet greeted, per address (only addresses with some). */
+  const waiting = new Map<string, number>();
+  /** The connection said hello (or went away): it no longer counts against its address. */
+  function greeted(ws: Socket) {
+    clearTimeout(ws.data.helloDeadline);
+    if (!ws.data.waiting) return;
+    ws.data.waiting = false;
+    const left = (waiting.get(ws.data.address) ?? 1) - 1;
+    if (left > 0) waiting.set(ws.data.address, left);
+    else waiting.delete(ws.data.address);
+  }
+
   /** Drops everything the socket held, at once, whoever closes it. */
   function release(ws: Socket) {
+    greeted(ws);
     if (ws.data.closed) return;
     ws.data.closed = true;
     ws.data.unsubscribe?.();
@@ -170,6 +200,7 @@ export function startRuntimeServer({
       });
     }
     ws.data.greeted = true;
+    greeted(ws);
     const claims = verifySocketToken(token, secret);
     if (!claims) return shut(ws, EXPIRED, "Your link to this trial has expired. Reload the page.");
     if (!(await spendToken(db, claims)))
@@ -377,11 +408,21 @@ export function startRuntimeServer({
     send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
   }
 
-  async function onMessage(ws: Socket, text: string): Promise<void> {
+  async function onMessage(ws: Socket, text: string, bytes: number): Promise<void> {
     if (ws.data.closed) return;
+    // Before hello, a frame larger than a hello is not even read.
+    const unasked = ws.data.greeted ? null : beforeHelloRefusal(bytes);
+    if (unasked) return shut(ws, TOO_BIG, unasked);
     const parsed = parseClientMessage(text);
     if (!parsed.ok) return send(ws, { type: "rejected", requestId: null, reason: parsed.reason });
     const message = parsed.message;
+    const tooLarge = sizeRefusal(message.type, bytes);
+    if (tooLarge)
+      return send(ws, {
+        type: "rejected",
+        requestId: "requestId" in message ? message.requestId : null,
+        reason: tooLarge,
+      });
     if (message.type === "ping") return send(ws, { type: "pong" });
     if (message.type === "hello") {
       // A hello that fails half way must not leave a connection that follows nothing.
@@ -427,6 +468,8 @@ export function startRuntimeServer({
             claims: null,
             access: null,
             reloads: 0,
+            address: server.requestIP(req)?.address ?? "unknown",
+            waiting: false,
           },
         })
       )
@@ -434,10 +477,28 @@ export function startRuntimeServer({
       return new Response("This is the HRIStudio trial runtime: connect with a WebSocket.", { status: 426 });
     },
     websocket: {
+      // Bun reads a whole frame before handing it over: nothing larger than the largest message is read.
+      maxPayloadLength: LARGEST_FRAME_BYTES,
+      open(ws) {
+        const { address } = ws.data;
+        const already = waiting.get(address) ?? 0;
+        if (already >= UNGREETED_PER_ADDRESS)
+          return shut(
+            ws,
+            TRY_LATER,
+            "Too many connections from your address have not said hello yet: try again in a few seconds.",
+          );
+        waiting.set(address, already + 1);
+        ws.data.waiting = true;
+        ws.data.helloDeadline = setTimeout(
+          () => shut(ws, POLICY, `No hello came within ${HELLO_DEADLINE_MS / 1000} s, so the connection was closed.`),
+          HELLO_DEADLINE_MS,
+        );
+      },
       async message(ws, raw): Promise<void> {
         const text = typeof raw === "string" ? raw : new TextDecoder().decode(raw);
         try {
-          await onMessage(ws, text);
+          await onMessage(ws, text, typeof raw === "string" ? Buffer.byteLength(raw) : raw.byteLength);
         } catch (error) {
           // One failed message must never take the trial down for everyone else.
           const ref = logUnexpected(error, "trial socket message");
