@@ -26,17 +26,12 @@ import {
   type ServerMessage,
   type Viewer,
 } from "@/core/socket/messages";
-import {
-  beforeHelloRefusal,
-  HELLO_DEADLINE_MS,
-  LARGEST_FRAME_BYTES,
-  sizeRefusal,
-  UNGREETED_PER_ADDRESS,
-} from "@/core/socket/limits";
+import { beforeHelloRefusal, LARGEST_FRAME_BYTES, sizeRefusal } from "@/core/socket/limits";
 import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
 import { logUnexpected } from "@/store/error-reference";
 import type { LiveRobotState } from "@/core/robots/live-state";
 import { annotate } from "./annotations";
+import { helloDoor } from "./hello-door";
 import { codeLive } from "./coding";
 import type { EventRelay } from "./relay";
 import type { Replays } from "./replay";
@@ -64,10 +59,8 @@ interface Connection {
   replayQueue?: Promise<unknown>;
   /** Where it comes from: connections that have not said hello are counted per address. */
   address: string;
-  /** Counted among its address's connections that have not said hello (see limits.ts). */
-  waiting: boolean;
-  /** Closes it if no hello comes in time. */
-  helloDeadline?: ReturnType<typeof setTimeout>;
+  /** Until hello: takes it off its address's count of waiting connections, and stops its deadline. */
+  leaveDoor?: () => void;
 }
 
 type Socket = {
@@ -93,10 +86,8 @@ export interface RuntimeOptions {
 /** Close codes the browser acts on: 4401 fetch a fresh token and retry; 4403 stop and say why. */
 const EXPIRED = 4401;
 const SHUT_OUT = 4403;
-/** Close codes of the limits (RFC 6455): the browser reconnects after them, as after any other drop. */
-const POLICY = 1008;
+/** A frame before hello larger than a hello (RFC 6455's "message too big"): the browser reconnects after it. */
 const TOO_BIG = 1009;
-const TRY_LATER = 1013;
 
 /** Events written into a welcome's text at a time: a few milliseconds of work each. */
 const WELCOME_PAGE = 2000;
@@ -163,21 +154,11 @@ export function startRuntimeServer({
     return list;
   };
 
-  /** Connections not yet greeted, per address (only addresses with some). */
-  const waiting = new Map<string, number>();
-  /** The connection said hello (or went away): it no longer counts against its address. */
-  function greeted(ws: Socket) {
-    clearTimeout(ws.data.helloDeadline);
-    if (!ws.data.waiting) return;
-    ws.data.waiting = false;
-    const left = (waiting.get(ws.data.address) ?? 1) - 1;
-    if (left > 0) waiting.set(ws.data.address, left);
-    else waiting.delete(ws.data.address);
-  }
+  const door = helloDoor();
 
   /** Drops everything the socket held, at once, whoever closes it. */
   function release(ws: Socket) {
-    greeted(ws);
+    ws.data.leaveDoor?.();
     if (ws.data.closed) return;
     ws.data.closed = true;
     ws.data.unsubscribe?.();
@@ -200,7 +181,7 @@ export function startRuntimeServer({
       });
     }
     ws.data.greeted = true;
-    greeted(ws);
+    ws.data.leaveDoor?.();
     const claims = verifySocketToken(token, secret);
     if (!claims) return shut(ws, EXPIRED, "Your link to this trial has expired. Reload the page.");
     if (!(await spendToken(db, claims)))
@@ -469,7 +450,6 @@ export function startRuntimeServer({
             access: null,
             reloads: 0,
             address: server.requestIP(req)?.address ?? "unknown",
-            waiting: false,
           },
         })
       )
@@ -480,20 +460,7 @@ export function startRuntimeServer({
       // Bun reads a whole frame before handing it over: nothing larger than the largest message is read.
       maxPayloadLength: LARGEST_FRAME_BYTES,
       open(ws) {
-        const { address } = ws.data;
-        const already = waiting.get(address) ?? 0;
-        if (already >= UNGREETED_PER_ADDRESS)
-          return shut(
-            ws,
-            TRY_LATER,
-            "Too many connections from your address have not said hello yet: try again in a few seconds.",
-          );
-        waiting.set(address, already + 1);
-        ws.data.waiting = true;
-        ws.data.helloDeadline = setTimeout(
-          () => shut(ws, POLICY, `No hello came within ${HELLO_DEADLINE_MS / 1000} s, so the connection was closed.`),
-          HELLO_DEADLINE_MS,
-        );
+        ws.data.leaveDoor = door.enter(ws.data.address, (code, reason) => shut(ws, code, reason)) ?? undefined;
       },
       async message(ws, raw): Promise<void> {
         const text = typeof raw === "string" ? raw : new TextDecoder().decode(raw);
