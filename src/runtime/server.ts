@@ -38,6 +38,8 @@ import type { Replays } from "./replay";
 import type { TrialHosts } from "./trial-hosts";
 import type { CameraFrame } from "./robot";
 import type { IceServer } from "@/core/network/ice-servers";
+import { clientAddress } from "@/core/network/client-address";
+import type { IpRange } from "@/core/network/ip";
 
 interface Connection {
   /** Names this connection to the others of its trial, for live video's signals. */
@@ -81,6 +83,8 @@ export interface RuntimeOptions {
   port: number;
   /** STUN/TURN servers the browsers use for live video (HRI_ICE_SERVERS). */
   iceServers?: IceServer[];
+  /** Proxies whose X-Forwarded-For is believed (HRI_TRUSTED_PROXIES): limits per address count browsers, not the proxy. */
+  trustedProxies?: IpRange[];
 }
 
 /** Close codes the browser acts on: 4401 fetch a fresh token and retry; 4403 stop and say why. */
@@ -138,6 +142,7 @@ export function startRuntimeServer({
   hostname,
   port,
   iceServers = [],
+  trustedProxies = [],
 }: RuntimeOptions) {
   /** Admitted sockets by trial: presence, annotations and access changes reach them. */
   const viewers = new Map<string, Set<Socket>>();
@@ -449,7 +454,11 @@ export function startRuntimeServer({
             claims: null,
             access: null,
             reloads: 0,
-            address: server.requestIP(req)?.address ?? "unknown",
+            address: clientAddress({
+              socketAddress: server.requestIP(req)?.address,
+              forwardedFor: req.headers.get("x-forwarded-for") ?? undefined,
+              trustedProxies,
+            }),
           },
         })
       )
