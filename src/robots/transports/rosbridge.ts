@@ -77,6 +77,12 @@ export class RosbridgeTransport extends LinkedTransport {
 
   connect(): Promise<void> {
     if (this.status.state === "closed") return Promise.reject(new Error("transport closed"));
+    // No wait mends an address that is not one: the trial's first action is not held for it.
+    const address = this.addressProblem();
+    if (address) {
+      this.setState("disconnected", address);
+      return Promise.reject(new Error(address));
+    }
     if (this.status.state !== "connected") this.open();
     return this.connectedWithin(Date.now() + 10_000).then((ros) => {
       if (!ros) throw new Error(`cannot reach rosbridge at ${this.options.url}: ${this.lostReason()}`);
@@ -92,8 +98,7 @@ export class RosbridgeTransport extends LinkedTransport {
     if (outgoing.kind === "none") return { status: "failed", reason: outgoing.reason };
     if (outgoing.kind === "ssh")
       return { status: "failed", reason: `action "${action.id}" runs over SSH, not rosbridge` };
-    // ws takes http(s) addresses too, and some records have them.
-    const address = addressProblem("the robot's bridge", this.options.url, ["ws:", "wss:", "http:", "https:"]);
+    const address = this.addressProblem();
     if (address) return { status: "failed", reason: address };
     const ros =
       this.status.state === "connected"
@@ -259,6 +264,10 @@ export class RosbridgeTransport extends LinkedTransport {
     );
   }
 
+  // ws takes http(s) addresses too, and some records have them.
+  private addressProblem = () =>
+    addressProblem("the robot's bridge", this.options.url, ["ws:", "wss:", "http:", "https:"]);
+
   private lostReason() {
     if (this.status.reason) return this.status.reason;
     return this.status.state === "connecting"
@@ -345,7 +354,11 @@ export class RosbridgeTransport extends LinkedTransport {
         if (this.status.state === "connected") return finish(this.ros);
         if (this.status.state === "closed" || Date.now() >= deadline) return finish(null);
       };
-      const timer = setTimeout(check, Math.max(0, deadline - Date.now()));
+      // At the deadline whatever the clock says: a timer may fire a millisecond early, and nothing else would wake this.
+      const timer = setTimeout(
+        () => finish(this.status.state === "connected" ? this.ros : null),
+        Math.max(0, deadline - Date.now()),
+      );
       const finish = (ros: ROSLIB.Ros | null) => {
         clearTimeout(timer);
         this.waiting.delete(check);
