@@ -88,6 +88,8 @@ export class SshTransport extends LinkedTransport {
       try {
         client.exec(command, (error, stream) => {
           if (error) return failed(error);
+          // A stream's error with no listener would be thrown, and end the runtime with every trial in it.
+          stream.on("error", failed);
           let stderr = "";
           stream.stderr.on("data", (d: Buffer) => (stderr += d.toString()));
           stream.on("data", () => {});
