@@ -67,6 +67,7 @@ const runtime = startRuntimeServer({
   hostname: config.HOST,
   port: config.HRI_RUNTIME_PORT,
   iceServers: config.HRI_ICE_SERVERS,
+  trustedProxies: config.HRI_TRUSTED_PROXIES,
 });
 announceRobot = runtime.announceRobot;
 announceRobotState = runtime.announceRobotState;

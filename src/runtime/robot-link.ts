@@ -3,6 +3,7 @@
 // its outcome reported back as the trial's action events. One path, no other.
 import { resolveAction, type Plugin } from "@/core/plugins";
 import type { Transport } from "@/robots/transports";
+import { logUnexpected } from "@/store/error-reference";
 import type { CameraFrame, RobotLink, RobotReport, RobotRequest } from "./robot";
 
 /** 5 frames a second unless the plugin says otherwise: what a lab's network holds for several watchers. */
@@ -39,14 +40,27 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
     else report({ kind: "timed_out", actionId: request.actionId });
   };
   return {
-    perform: (request, report) => void perform(request, report),
+    // Whatever a robot's record or transport does wrong ends as this action's failure, never as the
+    // runtime's: every other trial goes on.
+    perform: (request, report) =>
+      void perform(request, report).catch((error: unknown) => {
+        const ref = logUnexpected(error, `${plugin.name}: action ${request.actionType}`);
+        report({
+          kind: "failed",
+          actionId: request.actionId,
+          reason: `${plugin.name} could not be sent this action (reference ${ref}).`,
+        });
+      }),
     // Every halting action at once, not one after another: speech and animation stop with the wheels.
     halt() {
       const halting = plugin.halt?.length
         ? plugin.halt.map((id) => resolveAction(plugin, `${plugin.robotId}.${id}`, {}))
         : [resolveAction(plugin, "stop", {})];
       for (const stop of halting)
-        if (stop.status === "supported") void transport.dispatch(stop.action, stop.parameters);
+        if (stop.status === "supported")
+          void transport
+            .dispatch(stop.action, stop.parameters)
+            .catch((error: unknown) => logUnexpected(error, `${plugin.name}: halting`));
     },
     connected: () => transport.health().state === "connected",
     onConnection(listener) {
@@ -84,7 +98,7 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
       );
     },
     close() {
-      void transport.close();
+      void transport.close().catch((error: unknown) => logUnexpected(error, `${plugin.name}: closing its link`));
     },
   };
 }

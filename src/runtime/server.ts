@@ -26,16 +26,20 @@ import {
   type ServerMessage,
   type Viewer,
 } from "@/core/socket/messages";
+import { beforeHelloRefusal, LARGEST_FRAME_BYTES, sizeRefusal } from "@/core/socket/limits";
 import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
 import { logUnexpected } from "@/store/error-reference";
 import type { LiveRobotState } from "@/core/robots/live-state";
 import { annotate } from "./annotations";
+import { helloDoor } from "./hello-door";
 import { codeLive } from "./coding";
 import type { EventRelay } from "./relay";
 import type { Replays } from "./replay";
 import type { TrialHosts } from "./trial-hosts";
 import type { CameraFrame } from "./robot";
 import type { IceServer } from "@/core/network/ice-servers";
+import { clientAddress } from "@/core/network/client-address";
+import type { IpRange } from "@/core/network/ip";
 
 interface Connection {
   /** Names this connection to the others of its trial, for live video's signals. */
@@ -55,6 +59,10 @@ interface Connection {
   stopReplay?: () => void;
   /** The connection's replay messages, one after another. */
   replayQueue?: Promise<unknown>;
+  /** Where it comes from: connections that have not said hello are counted per address. */
+  address: string;
+  /** Until hello: takes it off its address's count of waiting connections, and stops its deadline. */
+  leaveDoor?: () => void;
 }
 
 type Socket = {
@@ -75,11 +83,15 @@ export interface RuntimeOptions {
   port: number;
   /** STUN/TURN servers the browsers use for live video (HRI_ICE_SERVERS). */
   iceServers?: IceServer[];
+  /** Proxies whose X-Forwarded-For is believed (HRI_TRUSTED_PROXIES): limits per address count browsers, not the proxy. */
+  trustedProxies?: IpRange[];
 }
 
 /** Close codes the browser acts on: 4401 fetch a fresh token and retry; 4403 stop and say why. */
 const EXPIRED = 4401;
 const SHUT_OUT = 4403;
+/** A frame before hello larger than a hello (RFC 6455's "message too big"): the browser reconnects after it. */
+const TOO_BIG = 1009;
 
 /** Events written into a welcome's text at a time: a few milliseconds of work each. */
 const WELCOME_PAGE = 2000;
@@ -130,6 +142,7 @@ export function startRuntimeServer({
   hostname,
   port,
   iceServers = [],
+  trustedProxies = [],
 }: RuntimeOptions) {
   /** Admitted sockets by trial: presence, annotations and access changes reach them. */
   const viewers = new Map<string, Set<Socket>>();
@@ -146,8 +159,11 @@ export function startRuntimeServer({
     return list;
   };
 
+  const door = helloDoor();
+
   /** Drops everything the socket held, at once, whoever closes it. */
   function release(ws: Socket) {
+    ws.data.leaveDoor?.();
     if (ws.data.closed) return;
     ws.data.closed = true;
     ws.data.unsubscribe?.();
@@ -170,6 +186,7 @@ export function startRuntimeServer({
       });
     }
     ws.data.greeted = true;
+    ws.data.leaveDoor?.();
     const claims = verifySocketToken(token, secret);
     if (!claims) return shut(ws, EXPIRED, "Your link to this trial has expired. Reload the page.");
     if (!(await spendToken(db, claims)))
@@ -377,11 +394,21 @@ export function startRuntimeServer({
     send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
   }
 
-  async function onMessage(ws: Socket, text: string): Promise<void> {
+  async function onMessage(ws: Socket, text: string, bytes: number): Promise<void> {
     if (ws.data.closed) return;
+    // Before hello, a frame larger than a hello is not even read.
+    const unasked = ws.data.greeted ? null : beforeHelloRefusal(bytes);
+    if (unasked) return shut(ws, TOO_BIG, unasked);
     const parsed = parseClientMessage(text);
     if (!parsed.ok) return send(ws, { type: "rejected", requestId: null, reason: parsed.reason });
     const message = parsed.message;
+    const tooLarge = sizeRefusal(message.type, bytes);
+    if (tooLarge)
+      return send(ws, {
+        type: "rejected",
+        requestId: "requestId" in message ? message.requestId : null,
+        reason: tooLarge,
+      });
     if (message.type === "ping") return send(ws, { type: "pong" });
     if (message.type === "hello") {
       // A hello that fails half way must not leave a connection that follows nothing.
@@ -427,6 +454,11 @@ export function startRuntimeServer({
             claims: null,
             access: null,
             reloads: 0,
+            address: clientAddress({
+              socketAddress: server.requestIP(req)?.address,
+              forwardedFor: req.headers.get("x-forwarded-for") ?? undefined,
+              trustedProxies,
+            }),
           },
         })
       )
@@ -434,10 +466,15 @@ export function startRuntimeServer({
       return new Response("This is the HRIStudio trial runtime: connect with a WebSocket.", { status: 426 });
     },
     websocket: {
+      // Bun reads a whole frame before handing it over: nothing larger than the largest message is read.
+      maxPayloadLength: LARGEST_FRAME_BYTES,
+      open(ws) {
+        ws.data.leaveDoor = door.enter(ws.data.address, (code, reason) => shut(ws, code, reason)) ?? undefined;
+      },
       async message(ws, raw): Promise<void> {
         const text = typeof raw === "string" ? raw : new TextDecoder().decode(raw);
         try {
-          await onMessage(ws, text);
+          await onMessage(ws, text, typeof raw === "string" ? Buffer.byteLength(raw) : raw.byteLength);
         } catch (error) {
           // One failed message must never take the trial down for everyone else.
           const ref = logUnexpected(error, "trial socket message");

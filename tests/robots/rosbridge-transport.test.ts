@@ -189,7 +189,7 @@ describe("connection health", () => {
     const stop = fixture.actions.find((a) => a.id === "stop_walking")!;
     expect(await transport.dispatch({ ...stop, retryable: false }, {})).toEqual({
       status: "failed",
-      reason: "robot not connected",
+      reason: expect.stringMatching(/^robot not connected: the robot's bridge closed the connection/),
     });
     const pending = transport.dispatch(stop, {});
     setTimeout(() => sim.faults.refuseConnections(false), 300);

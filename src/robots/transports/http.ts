@@ -3,7 +3,8 @@
 // robot's answer, no answer within the plugin's timeout timed out. The API's
 // base URL is probed as a heartbeat, so a robot gone away is reported at once.
 import { httpRequest, type PluginAction } from "../../core/plugins";
-import { checkedParameters, LinkedTransport, timeoutOf, untilDeadline } from "./link";
+import { linkProblem } from "../../core/robots/link-problem";
+import { addressProblem, checkedParameters, LinkedTransport, timeoutOf, untilDeadline } from "./link";
 import type { DispatchOutcome } from "./transport";
 
 export interface HttpOptions {
@@ -19,7 +20,8 @@ export class HttpTransport extends LinkedTransport {
   }
 
   async connect() {
-    if (!(await this.probe())) throw new Error(`cannot reach the robot's API at ${this.options.baseUrl}`);
+    if (!(await this.probe()))
+      throw new Error(`cannot reach the robot's API at ${this.options.baseUrl}: ${this.status.reason ?? "no answer"}`);
     this.heartbeat ??= setInterval(() => void this.probe(), this.options.heartbeatEveryMs ?? 2000);
   }
 
@@ -28,6 +30,8 @@ export class HttpTransport extends LinkedTransport {
     const checked = checkedParameters(action, parameters);
     if (!checked.ok) return checked.outcome;
     if (!action.http) return { status: "failed", reason: `action "${action.id}" has no HTTP request` };
+    const address = addressProblem("the robot's API", this.options.baseUrl, ["http:", "https:"]);
+    if (address) return { status: "failed", reason: address };
     const request = httpRequest(action.http, this.options.baseUrl, checked.parameters);
     if (!request.ok) return { status: "failed", reason: request.reason };
     const deadline = started + timeoutOf(action);
@@ -43,7 +47,7 @@ export class HttpTransport extends LinkedTransport {
       untilDeadline(deadline, () =>
         send().catch((error: Error) => {
           if (error.name === "TimeoutError") throw error;
-          this.setState("disconnected");
+          this.setState("disconnected", linkProblem(error));
           return null;
         }),
       );
@@ -62,8 +66,8 @@ export class HttpTransport extends LinkedTransport {
       return { status: "failed", reason: `the robot answered HTTP ${response.status}${text ? `: ${text}` : ""}` };
     } catch (error) {
       if ((error as Error).name === "TimeoutError") return { status: "timed_out", afterMs: Date.now() - started };
-      this.setState("disconnected");
-      return { status: "failed", reason: `the robot's API did not answer: ${(error as Error).message}` };
+      this.setState("disconnected", linkProblem(error));
+      return { status: "failed", reason: `the robot's API did not answer: ${linkProblem(error)}` };
     }
   }
 
@@ -73,6 +77,11 @@ export class HttpTransport extends LinkedTransport {
   }
 
   private async probe(): Promise<boolean> {
+    const address = addressProblem("the robot's API", this.options.baseUrl, ["http:", "https:"]);
+    if (address) {
+      this.setState("disconnected", address);
+      return false;
+    }
     const started = Date.now();
     try {
       await fetch(this.options.baseUrl, { method: "GET", signal: AbortSignal.timeout(1500) });
@@ -80,9 +89,9 @@ export class HttpTransport extends LinkedTransport {
       this.status.attempts = 0;
       this.setState("connected");
       return true;
-    } catch {
+    } catch (error) {
       this.status.attempts++;
-      this.setState("disconnected");
+      this.setState("disconnected", linkProblem(error));
       return false;
     }
   }

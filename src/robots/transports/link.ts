@@ -31,6 +31,22 @@ export function checkedParameters(
   return { ok: true, parameters: withDefaults(action.parameterSchema, parameters) };
 }
 
+/**
+ * Why a robot's address cannot be used, or null. Checked before each action: no wait and no retry can mend
+ * a record, so even a retryable action fails at once, in these words rather than a client library's.
+ */
+export function addressProblem(what: string, address: string, schemes: string[]): string | null {
+  let url: URL;
+  try {
+    url = new URL(address);
+  } catch {
+    return `${what} address "${address}" is not a URL`;
+  }
+  if (!schemes.includes(url.protocol))
+    return `${what} address "${address}" is not a ${schemes.map((s) => `${s}//`).join(" or ")} address`;
+  return null;
+}
+
 /** The robot was not reached: a retryable action has waited its whole timeout for it; any other fails at once rather than arriving late. */
 export function unreached(action: PluginAction, started: number, reason: string): DispatchOutcome {
   return action.retryable ? { status: "timed_out", afterMs: Date.now() - started } : { status: "failed", reason };

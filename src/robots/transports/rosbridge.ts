@@ -25,8 +25,10 @@ import {
   type Plugin,
   type PluginAction,
 } from "../../core/plugins";
+import { linkProblem } from "../../core/robots/link-problem";
 import { DoneTopics } from "./done-topics";
 import {
+  addressProblem,
   backoffDelay,
   checkedParameters,
   LinkedTransport,
@@ -75,9 +77,15 @@ export class RosbridgeTransport extends LinkedTransport {
 
   connect(): Promise<void> {
     if (this.status.state === "closed") return Promise.reject(new Error("transport closed"));
+    // No wait mends an address that is not one: the trial's first action is not held for it.
+    const address = this.addressProblem();
+    if (address) {
+      this.setState("disconnected", address);
+      return Promise.reject(new Error(address));
+    }
     if (this.status.state !== "connected") this.open();
     return this.connectedWithin(Date.now() + 10_000).then((ros) => {
-      if (!ros) throw new Error(`cannot reach rosbridge at ${this.options.url}`);
+      if (!ros) throw new Error(`cannot reach rosbridge at ${this.options.url}: ${this.lostReason()}`);
     });
   }
 
@@ -90,13 +98,15 @@ export class RosbridgeTransport extends LinkedTransport {
     if (outgoing.kind === "none") return { status: "failed", reason: outgoing.reason };
     if (outgoing.kind === "ssh")
       return { status: "failed", reason: `action "${action.id}" runs over SSH, not rosbridge` };
+    const address = this.addressProblem();
+    if (address) return { status: "failed", reason: address };
     const ros =
       this.status.state === "connected"
         ? this.ros
         : action.retryable
           ? await this.connectedWithin(started + timeoutMs)
           : null;
-    if (!ros) return unreached(action, started, "robot not connected");
+    if (!ros) return unreached(action, started, `robot not connected: ${this.lostReason()}`);
     if (outgoing.kind === "publish")
       return this.published(ros, action, checked.parameters, outgoing, started + timeoutMs);
     if (outgoing.kind === "goal") return sendGoal(ros, outgoing, started + timeoutMs);
@@ -228,7 +238,8 @@ export class RosbridgeTransport extends LinkedTransport {
     });
     this.ros = ros;
     this.topics = new Map();
-    this.setState("connecting");
+    // Why the last try failed stays told while the next one is made.
+    this.setState("connecting", this.status.reason);
     ros.on("connection", () => {
       if (this.ros !== ros) return;
       this.status.attempts = 0;
@@ -236,7 +247,9 @@ export class RosbridgeTransport extends LinkedTransport {
       this.subscriptions.forEach((s) => this.listen(ros, s));
       this.waiting.forEach((wake) => wake());
     });
-    ros.connect(this.options.url).catch((error: Error) => lost(`cannot reach rosbridge: ${error.message}`));
+    ros
+      .connect(this.options.url)
+      .catch((error: unknown) => lost(`cannot reach the robot's bridge at ${this.options.url}: ${linkProblem(error)}`));
   }
 
   override health() {
@@ -251,8 +264,15 @@ export class RosbridgeTransport extends LinkedTransport {
     );
   }
 
+  // ws takes http(s) addresses too, and some records have them.
+  private addressProblem = () =>
+    addressProblem("the robot's bridge", this.options.url, ["ws:", "wss:", "http:", "https:"]);
+
   private lostReason() {
-    return this.status.reason ?? "the robot's bridge did not answer";
+    if (this.status.reason) return this.status.reason;
+    return this.status.state === "connecting"
+      ? "the link to the robot's bridge is still being opened"
+      : "the robot's bridge did not answer";
   }
 
   private reconnectLater() {
@@ -334,7 +354,11 @@ export class RosbridgeTransport extends LinkedTransport {
         if (this.status.state === "connected") return finish(this.ros);
         if (this.status.state === "closed" || Date.now() >= deadline) return finish(null);
       };
-      const timer = setTimeout(check, Math.max(0, deadline - Date.now()));
+      // At the deadline whatever the clock says: a timer may fire a millisecond early, and nothing else would wake this.
+      const timer = setTimeout(
+        () => finish(this.status.state === "connected" ? this.ros : null),
+        Math.max(0, deadline - Date.now()),
+      );
       const finish = (ros: ROSLIB.Ros | null) => {
         clearTimeout(timer);
         this.waiting.delete(check);

@@ -12,6 +12,7 @@
 // may be lost, and the action is failed rather than called completed.
 import { AbstractTransport } from "roslib";
 import { WebSocket } from "ws";
+import { linkProblem } from "../../core/robots/link-problem";
 import { parsePythonJson } from "../../core/robots/python-json";
 
 export interface Liveness {
@@ -40,7 +41,8 @@ export class WatchedSocket extends AbstractTransport {
     private readonly onLost: (reason: string) => void,
   ) {
     super();
-    this.socket = new WebSocket(url, { perMessageDeflate: false });
+    // A host that takes the connection and never answers is given up like one that stops answering pings.
+    this.socket = new WebSocket(url, { perMessageDeflate: false, handshakeTimeout: liveness.timeoutMs });
     this.socket.binaryType = "arraybuffer";
     this.socket.on("open", () => {
       this.emit("open", undefined);
@@ -56,7 +58,7 @@ export class WatchedSocket extends AbstractTransport {
     });
     this.socket.on("error", (error) => {
       this.emit("error", error);
-      this.lose(`the robot's bridge cannot be reached: ${error.message}`);
+      this.lose(`the robot's bridge cannot be reached: ${linkProblem(error)}`);
     });
   }
 
