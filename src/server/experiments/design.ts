@@ -9,6 +9,13 @@ import type { DesignInput } from "../api/routers/design-input";
 
 export type Tx = Parameters<Parameters<Database["transaction"]>[0]>[0];
 
+/**
+ * Steps whose actions are read in one query: at most 2,000 rows, so reading
+ * the largest design is many short answers rather than one that holds the
+ * server while its 50,000 rows are turned into objects.
+ */
+const STEPS_PER_READ = 4;
+
 export async function loadDesign(db: Database | Tx, experimentId: string) {
   const [experiment] = await db.select().from(experiments).where(eq(experiments.id, experimentId));
   if (!experiment) throw new TRPCError({ code: "NOT_FOUND", message: "Experiment not found." });
@@ -17,25 +24,25 @@ export async function loadDesign(db: Database | Tx, experimentId: string) {
     .from(steps)
     .where(eq(steps.experimentId, experimentId))
     .orderBy(asc(steps.position));
-  const actionRows = stepRows.length
-    ? await db
-        .select()
-        .from(actions)
-        .where(
-          inArray(
-            actions.stepId,
-            stepRows.map((s) => s.id),
-          ),
-        )
-        .orderBy(asc(actions.position))
-    : [];
+  const actionsOf = new Map(stepRows.map((s) => [s.id, [] as Array<typeof actions.$inferSelect>]));
+  for (let start = 0; start < stepRows.length; start += STEPS_PER_READ) {
+    const rows = await db
+      .select()
+      .from(actions)
+      .where(
+        inArray(
+          actions.stepId,
+          stepRows.slice(start, start + STEPS_PER_READ).map((s) => s.id),
+        ),
+      )
+      .orderBy(asc(actions.position));
+    for (const row of rows) actionsOf.get(row.stepId)!.push(row);
+  }
   return {
     ...experiment,
     steps: stepRows.map((s) => ({
       ...s,
-      actions: actionRows
-        .filter((a) => a.stepId === s.id)
-        .map((a) => ({ ...a, parameters: a.parameters as Record<string, unknown> })),
+      actions: actionsOf.get(s.id)!.map((a) => ({ ...a, parameters: a.parameters as Record<string, unknown> })),
     })),
   };
 }
@@ -75,9 +82,20 @@ export async function saveDesign(db: Database, input: DesignInput, userId: strin
         .set(robotChanged ? { ...input.details, pluginSource: null } : input.details)
         .where(eq(experiments.id, input.experimentId));
     }
-    const current = await loadDesign(tx, input.experimentId);
-    const ownStepIds = new Set(current.steps.map((s) => s.id));
-    const ownActionIds = new Set(current.steps.flatMap((s) => s.actions.map((a) => a.id)));
+    const ownStepIds = new Set(
+      (await tx.select({ id: steps.id }).from(steps).where(eq(steps.experimentId, input.experimentId))).map(
+        (s) => s.id,
+      ),
+    );
+    const ownActionIds = new Set(
+      (
+        await tx
+          .select({ id: actions.id })
+          .from(actions)
+          .innerJoin(steps, eq(steps.id, actions.stepId))
+          .where(eq(steps.experimentId, input.experimentId))
+      ).map((a) => a.id),
+    );
     const checkId = (given: string | undefined, own: Set<string>) => {
       if (given !== undefined && !own.has(given)) assertFreshId(given);
       return given ?? crypto.randomUUID();
@@ -88,7 +106,7 @@ export async function saveDesign(db: Database, input: DesignInput, userId: strin
       actions: s.actions.map((a) => ({ ...a, id: checkId(a.id, ownActionIds) })),
     }));
     // Delete and re-insert under the same ids: references from branches stay valid.
-    if (current.steps.length) await tx.delete(steps).where(eq(steps.experimentId, input.experimentId));
+    if (ownStepIds.size) await tx.delete(steps).where(eq(steps.experimentId, input.experimentId));
     await insertSteps(tx, input.experimentId, draftSteps);
     return loadDesign(tx, input.experimentId);
   });
@@ -116,8 +134,19 @@ export async function insertSteps(tx: Tx, experimentId: string, draftSteps: Desi
       note: a.note ?? "",
     })),
   );
-  if (stepRows.length) await tx.insert(steps).values(stepRows);
-  if (actionRows.length) await tx.insert(actions).values(actionRows);
+  await inBatches(stepRows, (batch) => tx.insert(steps).values(batch));
+  await inBatches(actionRows, (batch) => tx.insert(actions).values(batch));
+}
+
+/**
+ * Rows per insert: a statement carries at most 65,535 parameters, and one of
+ * 50,000 rows overflows the stack while it is built.
+ */
+const ROWS_PER_INSERT = 1000;
+
+async function inBatches<T>(rows: T[], insert: (batch: T[]) => Promise<unknown>) {
+  for (let start = 0; start < rows.length; start += ROWS_PER_INSERT)
+    await insert(rows.slice(start, start + ROWS_PER_INSERT));
 }
 
 /** A client may name a new block's id itself (so branches can point at it), but only a fresh UUID. */

@@ -2,12 +2,13 @@
 // another lab as one file, and a copy within a study is made the same way.
 // The format lives in the core (exchange.ts).
 import { TRPCError } from "@trpc/server";
-import { exportExperiment, importExperiment } from "@/core/designer/exchange";
+import { exportExperiment, importing } from "@/core/designer/exchange";
 import { draftFrom } from "@/core/designer/model";
 import type { DesignDraft } from "@/core/designer/types";
 import type { Database } from "@/store/client";
 import { experiments } from "@/store/schema";
 import { fileSlug } from "../file-slug";
+import { sliced } from "../sliced";
 import { findPlugin } from "@/robots/catalog";
 import { insertSteps, loadDesign, type Tx } from "./design";
 
@@ -21,7 +22,7 @@ export async function exportFile(db: Database, experimentId: string) {
 
 /** A new experiment in the study from a file; a bad file changes nothing and says where it is wrong. */
 export async function importFile(db: Database, studyId: string, text: string, userId: string) {
-  const result = importExperiment(text, () => crypto.randomUUID());
+  const result = await sliced(importing(text, () => crypto.randomUUID()));
   if (!result.ok) {
     const shown = result.problems.slice(0, 10).map((p) => `${p.path}: ${p.message}`);
     const more = result.problems.length > 10 ? ` (and ${result.problems.length - 10} more)` : "";
@@ -41,7 +42,7 @@ export async function duplicate(db: Database | Tx, experimentId: string, userId:
   const design = await loadDesign(db, experimentId);
   const sameStudy = intoStudyId === undefined || intoStudyId === design.studyId;
   if (!sameStudy) await assertRobotInstalled(db, design);
-  const copied = importExperiment(exportExperiment(draftFrom(design)), () => crypto.randomUUID());
+  const copied = await sliced(importing(exportExperiment(draftFrom(design)), () => crypto.randomUUID()));
   // An exported draft always imports: the round trip is tested byte for byte in the core.
   if (!copied.ok) throw new Error(`The experiment ${experimentId} did not survive its own export`);
   const name = sameStudy ? `${design.name} (copy)`.slice(0, 200) : design.name;
