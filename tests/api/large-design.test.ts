@@ -42,7 +42,8 @@ const shape = (design: { steps: Array<{ name: string; actions: Array<{ name: str
 describe("a design of 100 steps of 500 actions", () => {
   it("is imported, saved, published, and a trial of it starts in the runtime", async () => {
     const study = await f.newStudy();
-    const imported = await owner.experiments.importFile({ studyId: study.id, text: largeExperimentFile(100, 500) });
+    const { id } = await owner.experiments.importFile({ studyId: study.id, text: largeExperimentFile(100, 500) });
+    const imported = await owner.experiments.get({ experimentId: id });
     expect(shape(imported)).toEqual(shape({ steps: largeSteps(100, 500) }));
 
     // Saved again with its ids, the last step's actions in reverse.

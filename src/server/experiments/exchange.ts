@@ -20,7 +20,11 @@ export async function exportFile(db: Database, experimentId: string) {
   };
 }
 
-/** A new experiment in the study from a file; a bad file changes nothing and says where it is wrong. */
+/**
+ * A new experiment in the study from a file; a bad file changes nothing and
+ * says where it is wrong. It answers with the experiment, not its steps: the
+ * page opens it by its id, and the largest design is 8 MB to send back.
+ */
 export async function importFile(db: Database, studyId: string, text: string, userId: string) {
   const result = await sliced(importing(text, () => crypto.randomUUID()));
   if (!result.ok) {
@@ -47,7 +51,14 @@ export async function duplicate(db: Database | Tx, experimentId: string, userId:
   if (!copied.ok) throw new Error(`The experiment ${experimentId} did not survive its own export`);
   const name = sameStudy ? `${design.name} (copy)`.slice(0, 200) : design.name;
   // A copy runs the same robot's document as its original: plugins are the server's, not the study's.
-  return storeNew(db, intoStudyId ?? design.studyId, { ...copied.draft, name }, userId, design.pluginSource);
+  const copy = await storeNew(
+    db,
+    intoStudyId ?? design.studyId,
+    { ...copied.draft, name },
+    userId,
+    design.pluginSource,
+  );
+  return loadDesign(db, copy.id);
 }
 
 /**
@@ -84,6 +95,6 @@ async function storeNew(
       })
       .returning();
     await insertSteps(tx, experiment!.id, draft.steps);
-    return loadDesign(tx, experiment!.id);
+    return experiment!;
   });
 }
