@@ -123,52 +123,50 @@ export async function insertSteps(tx: Tx, experimentId: string, draftSteps: Desi
     description: s.description,
     after: s.after ?? { to: "next" },
   }));
-  const actionRows = draftSteps.flatMap((s) =>
-    s.actions.map((a, position) => ({
-      id: a.id,
-      step_id: s.id,
-      position,
-      type: a.type,
-      name: a.name,
-      parameters: a.parameters,
-      parallel_group: a.parallelGroup,
-      note: a.note ?? "",
-    })),
-  );
-  await insertRows(
-    tx,
-    steps,
-    "id text, experiment_id text, position integer, name text, description text, after jsonb",
-    stepRows,
-  );
-  await insertRows(
-    tx,
-    actions,
-    "id text, step_id text, position integer, type text, name text, parameters jsonb, parallel_group text, note text",
-    actionRows,
-  );
+  await insertRows(tx, steps, STEP_COLUMNS, stepRows);
+  // Rows are made a batch at a time, as they are stored, not all 50,000 at once.
+  let batch: object[] = [];
+  for (const s of draftSteps) {
+    for (const [position, a] of s.actions.entries()) {
+      batch.push({
+        id: a.id,
+        step_id: s.id,
+        position,
+        type: a.type,
+        name: a.name,
+        parameters: a.parameters,
+        parallel_group: a.parallelGroup,
+        note: a.note ?? "",
+      });
+    }
+    if (batch.length >= ROWS_PER_INSERT) {
+      await insertRows(tx, actions, ACTION_COLUMNS, batch);
+      batch = [];
+    }
+  }
+  await insertRows(tx, actions, ACTION_COLUMNS, batch);
 }
 
-/** Rows per insert: each is a few milliseconds of work, and the server answers others in between. */
+/** Rows per insert (a step's actions may take one a little past it): a few milliseconds of work each. */
 const ROWS_PER_INSERT = 1000;
+const STEP_COLUMNS = "id text, experiment_id text, position integer, name text, description text, after jsonb";
+const ACTION_COLUMNS =
+  "id text, step_id text, position integer, type text, name text, parameters jsonb, parallel_group text, note text";
 
 /**
- * Inserts rows (keys named as `columns`) a batch at a time, each batch one
- * JSON text that PostgreSQL takes apart. Drizzle's insert of many rows would
- * take 0.1 ms a row to build while holding the server (100 ms per 1,000), and
- * overflows the stack at 50,000.
+ * Inserts rows (keys named as `columns`) as one JSON text that PostgreSQL
+ * takes apart. Drizzle's insert of many rows takes 0.1 ms a row to build
+ * while holding the server (100 ms per 1,000), and overflows the stack at 50,000.
  */
 async function insertRows(tx: Tx, table: PgTable, columns: string, rows: object[]) {
+  if (!rows.length) return;
   const names = columns
     .split(", ")
     .map((column) => column.split(" ")[0])
     .join(", ");
-  for (let start = 0; start < rows.length; start += ROWS_PER_INSERT) {
-    const batch = JSON.stringify(rows.slice(start, start + ROWS_PER_INSERT));
-    await tx.execute(
-      sql`insert into ${table} (${sql.raw(names)}) select * from jsonb_to_recordset(${batch}::jsonb) as r(${sql.raw(columns)})`,
-    );
-  }
+  await tx.execute(
+    sql`insert into ${table} (${sql.raw(names)}) select * from jsonb_to_recordset(${JSON.stringify(rows)}::jsonb) as r(${sql.raw(columns)})`,
+  );
 }
 
 /** A client may name a new block's id itself (so branches can point at it), but only a fresh UUID. */
