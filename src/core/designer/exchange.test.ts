@@ -390,6 +390,18 @@ describe("importing a bad file", () => {
       [["$.steps[1].actions", "has 501 actions; a step can have at most 500"]],
     ],
     [
+      "more actions in all than a design may hold, every step within its own limit",
+      edit(
+        (f) =>
+          (f.steps = Array.from({ length: 101 }, (_, i) => ({
+            key: `step-${i + 1}`,
+            name: "S",
+            actions: Array(500).fill({ type: "nod" }),
+          }))),
+      ),
+      [["$.steps", "The design has 50,500 actions; the limit is 50,000."]],
+    ],
+    [
       "a name too long",
       edit((f) => (f.experiment.name = "n".repeat(201))),
       [["$.experiment.name", "must be at most 200 characters (it has 201)"]],
