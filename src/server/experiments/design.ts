@@ -7,6 +7,7 @@ import type { Database } from "@/store/client";
 import { actions, experiments, steps } from "@/store/schema";
 import type { DesignStep } from "@/core/designer/types";
 import type { DesignInput } from "../api/routers/design-input";
+import { inTurn, LARGE_DESIGN } from "./turns";
 
 export type Tx = Parameters<Parameters<Database["transaction"]>[0]>[0];
 
@@ -68,7 +69,12 @@ export async function bumpRevision(tx: Tx, experimentId: string, userId: string,
 }
 
 /** Replaces the whole draft in one transaction, keeping the ids it was given. */
-export async function saveDesign(db: Database, input: DesignInput, userId: string) {
+export function saveDesign(db: Database, input: DesignInput, userId: string) {
+  const actionCount = input.steps.reduce((n, s) => n + s.actions.length, 0);
+  return inTurn(actionCount >= LARGE_DESIGN, () => saveNow(db, input, userId));
+}
+
+async function saveNow(db: Database, input: DesignInput, userId: string) {
   return db.transaction(async (tx) => {
     await bumpRevision(tx, input.experimentId, userId, input.baseRevision);
     if (input.details && Object.keys(input.details).length) {

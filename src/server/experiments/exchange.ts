@@ -9,6 +9,7 @@ import type { Database } from "@/store/client";
 import { experiments } from "@/store/schema";
 import { fileSlug } from "../file-slug";
 import { sliced } from "../sliced";
+import { inTurn, LARGE_FILE } from "./turns";
 import { findPlugin } from "@/robots/catalog";
 import { insertSteps, loadDesign, type Tx } from "./design";
 
@@ -25,7 +26,11 @@ export async function exportFile(db: Database, experimentId: string) {
  * says where it is wrong. It answers with the experiment, not its steps: the
  * page opens it by its id, and the largest design is 8 MB to send back.
  */
-export async function importFile(db: Database, studyId: string, text: string, userId: string) {
+export function importFile(db: Database, studyId: string, text: string, userId: string) {
+  return inTurn(text.length >= LARGE_FILE, () => importNow(db, studyId, text, userId));
+}
+
+async function importNow(db: Database, studyId: string, text: string, userId: string) {
   const result = await sliced(importing(text, () => crypto.randomUUID()));
   if (!result.ok) {
     const shown = result.problems.slice(0, 10).map((p) => `${p.path}: ${p.message}`);

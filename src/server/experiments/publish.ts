@@ -6,16 +6,26 @@ import { validating } from "@/core/designer/validate";
 import { hashing } from "@/core/protocol/canonical";
 import { snapshotOf } from "@/core/protocol/snapshot";
 import type { Database } from "@/store/client";
-import { experimentVersions, experiments, pluginDocuments } from "@/store/schema";
+import { actions, experimentVersions, experiments, pluginDocuments, steps } from "@/store/schema";
 import { knownPlugin } from "@/robots/catalog";
 import { soundProblems } from "../media/audio";
 import { sliced } from "../sliced";
 import { loadDesign } from "./design";
+import { inTurn, LARGE_DESIGN } from "./turns";
 
 // The snapshot is not read back: it is the one in hand, 5 MB of text to parse again for the largest design.
 const { snapshot: _, ...columnsButSnapshot } = getTableColumns(experimentVersions);
 
 export async function publish(db: Database, experimentId: string, userId: string) {
+  const [{ actionCount }] = (await db
+    .select({ actionCount: sql<number>`count(*)::int` })
+    .from(actions)
+    .innerJoin(steps, eq(steps.id, actions.stepId))
+    .where(eq(steps.experimentId, experimentId))) as [{ actionCount: number }];
+  return inTurn(actionCount >= LARGE_DESIGN, () => publishNow(db, experimentId, userId));
+}
+
+async function publishNow(db: Database, experimentId: string, userId: string) {
   return db.transaction(async (tx) => {
     // Locks the experiment so two publishes cannot take the same number.
     await tx.select({ id: experiments.id }).from(experiments).where(eq(experiments.id, experimentId)).for("update");
