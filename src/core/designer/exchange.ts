@@ -31,7 +31,7 @@
 import { parseJsonText } from "../plugins/json-text";
 import { actionCountProblem, DESIGN_LIMITS } from "../protocol/document";
 import { finish, type Work } from "../work";
-import type { DesignDraft, NewId, After } from "./types";
+import type { After, DesignDraft, DesignStep, NewId } from "./types";
 
 const FORMAT = "hristudio.experiment";
 const FORMAT_VERSION = 2;
@@ -63,7 +63,7 @@ interface FileStep {
   actions: FileAction[];
 }
 
-interface ExperimentFile {
+export interface ExperimentFile {
   format: typeof FORMAT;
   formatVersion: typeof FORMAT_VERSION;
   experiment: { name: string; description?: string; robot: string };
@@ -111,6 +111,21 @@ export function importExperiment(text: string, newId: NewId): ImportResult {
 
 /** importExperiment as work that yields after each step, for the server to run in slices. */
 export function* importing(text: string, newId: NewId): Work<ImportResult> {
+  const checked = yield* checking(text);
+  if (!checked.ok) return checked;
+  const { steps, ...experiment } = draftOf(checked.file, newId);
+  const made: DesignStep[] = [];
+  for (const step of steps) {
+    made.push(step);
+    yield;
+  }
+  return { ok: true, draft: { ...experiment, steps: made } };
+}
+
+export type CheckResult = { ok: true; file: ExperimentFile } | { ok: false; problems: ImportProblem[] };
+
+/** The file read and its shape checked, as work that yields after each step, for the server to run in slices. */
+export function* checking(text: string): Work<CheckResult> {
   if (text.length > MAX_BYTES || new TextEncoder().encode(text).length > MAX_BYTES) {
     return {
       ok: false,
@@ -136,40 +151,47 @@ export function* importing(text: string, newId: NewId): Work<ImportResult> {
   const tooMany = actionCountProblem(steps);
   if (tooMany) return { ok: false, problems: [{ path: "$.steps", message: tooMany }] };
   const problems = yield* check(parsed.value);
-  if (problems.length) return { ok: false, problems };
-  return { ok: true, draft: yield* build(parsed.value as ExperimentFile, newId) };
+  return problems.length ? { ok: false, problems } : { ok: true, file: parsed.value as ExperimentFile };
 }
 
-function* build(file: ExperimentFile, newId: NewId): Work<DesignDraft> {
+/**
+ * A checked file as a draft whose steps are made (with fresh ids) one at a
+ * time as they are read: the server stores a large design as it is made,
+ * never holding all 50,000 new actions at once.
+ */
+export function draftOf(
+  file: ExperimentFile,
+  newId: NewId,
+): Omit<DesignDraft, "steps"> & { steps: Iterable<DesignStep> } {
   const ids = new Map(file.steps.map((step) => [`@${step.key}`, newId()]));
   const groups = new Map<string, string>();
   const group = (name: string) => groups.get(name) ?? groups.set(name, newId()).get(name)!;
-  const steps: DesignDraft["steps"] = [];
-  for (const step of file.steps) {
-    steps.push({
-      id: ids.get(`@${step.key}`)!,
-      name: step.name,
-      description: step.description ?? "",
-      after: draftAfter(step.after, ids),
-      actions: step.actions.map((action) => ({
-        id: newId(),
-        type: action.type,
-        name: action.name ?? "",
-        parameters:
-          action.type === "branch"
-            ? swapTargets(action.parameters ?? {}, (key) => ids.get(key))
-            : (action.parameters ?? {}),
-        parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
-        ...(action.note ? { note: action.note } : {}),
-      })),
-    });
-    yield;
+  function* steps(): Generator<DesignStep, void, void> {
+    for (const step of file.steps) {
+      yield {
+        id: ids.get(`@${step.key}`)!,
+        name: step.name,
+        description: step.description ?? "",
+        after: draftAfter(step.after, ids),
+        actions: step.actions.map((action) => ({
+          id: newId(),
+          type: action.type,
+          name: action.name ?? "",
+          parameters:
+            action.type === "branch"
+              ? swapTargets(action.parameters ?? {}, (key) => ids.get(key))
+              : (action.parameters ?? {}),
+          parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
+          ...(action.note ? { note: action.note } : {}),
+        })),
+      };
+    }
   }
   return {
     name: file.experiment.name,
     description: file.experiment.description ?? "",
     robotId: file.experiment.robot,
-    steps,
+    steps: steps(),
   };
 }
 

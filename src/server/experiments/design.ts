@@ -119,25 +119,33 @@ async function saveNow(db: Database, input: DesignInput, userId: string) {
   });
 }
 
-/** Stores a draft's steps and actions, in order, under the ids they carry. */
-export async function insertSteps(tx: Tx, experimentId: string, draftSteps: DesignStep[]) {
-  const stepRows = draftSteps.map((s, position) => ({
-    id: s.id,
-    experiment_id: experimentId,
-    position,
-    name: s.name,
-    description: s.description,
-    after: s.after ?? { to: "next" },
-  }));
-  await insertRows(tx, steps, STEP_COLUMNS, stepRows);
+/** Stores a draft's steps and actions, in order, under the ids they carry, as the steps come. */
+export async function insertSteps(tx: Tx, experimentId: string, draftSteps: Iterable<DesignStep>) {
   // Rows are made a batch at a time, as they are stored, not all 50,000 at once.
-  let batch: object[] = [];
+  let stepRows: object[] = [];
+  let actionRows: object[] = [];
+  const store = async () => {
+    // A batch's steps first: its actions point at them.
+    await insertRows(tx, steps, STEP_COLUMNS, stepRows);
+    await insertRows(tx, actions, ACTION_COLUMNS, actionRows);
+    stepRows = [];
+    actionRows = [];
+  };
+  let position = 0;
   for (const s of draftSteps) {
-    for (const [position, a] of s.actions.entries()) {
-      batch.push({
+    stepRows.push({
+      id: s.id,
+      experiment_id: experimentId,
+      position: position++,
+      name: s.name,
+      description: s.description,
+      after: s.after ?? { to: "next" },
+    });
+    for (const [at, a] of s.actions.entries()) {
+      actionRows.push({
         id: a.id,
         step_id: s.id,
-        position,
+        position: at,
         type: a.type,
         name: a.name,
         parameters: a.parameters,
@@ -145,12 +153,9 @@ export async function insertSteps(tx: Tx, experimentId: string, draftSteps: Desi
         note: a.note ?? "",
       });
     }
-    if (batch.length >= ROWS_PER_INSERT) {
-      await insertRows(tx, actions, ACTION_COLUMNS, batch);
-      batch = [];
-    }
+    if (actionRows.length >= ROWS_PER_INSERT) await store();
   }
-  await insertRows(tx, actions, ACTION_COLUMNS, batch);
+  await store();
 }
 
 /** Rows per insert (a step's actions may take one a little past it): a few milliseconds of work each. */

@@ -2,9 +2,9 @@
 // another lab as one file, and a copy within a study is made the same way.
 // The format lives in the core (exchange.ts).
 import { TRPCError } from "@trpc/server";
-import { exportExperiment, importing } from "@/core/designer/exchange";
+import { checking, draftOf, exportExperiment, importing } from "@/core/designer/exchange";
 import { draftFrom } from "@/core/designer/model";
-import type { DesignDraft } from "@/core/designer/types";
+import type { DesignDraft, DesignStep } from "@/core/designer/types";
 import type { Database } from "@/store/client";
 import { experiments } from "@/store/schema";
 import { fileSlug } from "../file-slug";
@@ -31,13 +31,18 @@ export function importFile(db: Database, studyId: string, text: string, userId: 
 }
 
 async function importNow(db: Database, studyId: string, text: string, userId: string) {
-  const result = await sliced(importing(text, () => crypto.randomUUID()));
+  const result = await sliced(checking(text));
   if (!result.ok) {
     const shown = result.problems.slice(0, 10).map((p) => `${p.path}: ${p.message}`);
     const more = result.problems.length > 10 ? ` (and ${result.problems.length - 10} more)` : "";
     throw new TRPCError({ code: "BAD_REQUEST", message: `This file cannot be imported. ${shown.join("; ")}${more}` });
   }
-  return storeNew(db, studyId, result.draft, userId);
+  return storeNew(
+    db,
+    studyId,
+    draftOf(result.file, () => crypto.randomUUID()),
+    userId,
+  );
 }
 
 /**
@@ -82,7 +87,7 @@ async function assertRobotInstalled(db: Database | Tx, design: { name: string; r
 async function storeNew(
   db: Database | Tx,
   studyId: string,
-  draft: DesignDraft,
+  draft: Omit<DesignDraft, "steps"> & { steps: Iterable<DesignStep> },
   userId: string,
   pluginSource: string | null = null,
 ) {
