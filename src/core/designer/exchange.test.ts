@@ -1,6 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { storytellerDraft } from "../../server/seed/storyteller";
-import { exportExperiment, importExperiment } from "./exchange";
+import { finish } from "../work";
+import { checking, draftOf, exportExperiment, importExperiment } from "./exchange";
 import type { DesignDraft } from "./types";
 
 function ids(prefix = "new") {
@@ -257,6 +258,17 @@ describe("exporting and importing an experiment", () => {
     expect(a!.actions[0]!.parallelGroup).toBe("new-5");
     expect(c!.actions.map((x) => x.parallelGroup)).toEqual(["new-11", "new-5", null]);
     expect(a!.actions[4]!.parameters).toEqual({ targets: { "7": "new-3", constructor: "new-1" } });
+  });
+
+  it("makes a checked file's steps one at a time, as they are read, with the ids an import gives", () => {
+    const checked = finish(checking(exportExperiment(awkward)));
+    if (!checked.ok) throw new Error("the file did not check");
+    const newId = ids();
+    const draft = draftOf(checked.file, newId);
+    // Only the steps' own ids exist before the steps are read: their actions are made as each step is.
+    expect(newId()).toBe("new-4");
+    const [first] = draft.steps;
+    expect(first!.actions.map((x) => x.id)).toEqual(["new-5", "new-7", "new-8", "new-9", "new-10"]);
   });
 
   it("keeps a parameter named __proto__ as a plain value", () => {
