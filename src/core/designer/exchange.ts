@@ -28,9 +28,9 @@
 //
 // Import checks the file's shape, not its actions: the imported draft goes
 // through validateDesign like any other, against whatever robot is at hand.
-import { parseJsonText } from "../plugins/json-text";
 import { actionCountProblem, DESIGN_LIMITS } from "../protocol/document";
 import { finish, type Work } from "../work";
+import { parsingFile } from "./file-parse";
 import type { After, DesignDraft, DesignStep, NewId } from "./types";
 
 const FORMAT = "hristudio.experiment";
@@ -137,7 +137,7 @@ export function* checking(text: string): Work<CheckResult> {
       ],
     };
   }
-  const parsed = parseJsonText(text);
+  const parsed = yield* parsingFile(text);
   if (!parsed.ok) {
     return {
       ok: false,
