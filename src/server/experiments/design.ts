@@ -105,16 +105,23 @@ async function saveNow(db: Database, input: DesignInput, userId: string) {
     );
     const checkId = (given: string | undefined, own: Set<string>) => {
       if (given !== undefined && !own.has(given)) assertFreshId(given);
-      return given ?? crypto.randomUUID();
     };
-    const draftSteps = input.steps.map((s) => ({
-      ...s,
-      id: checkId(s.id, ownStepIds),
-      actions: s.actions.map((a) => ({ ...a, id: checkId(a.id, ownActionIds) })),
-    }));
+    for (const s of input.steps) {
+      checkId(s.id, ownStepIds);
+      for (const a of s.actions) checkId(a.id, ownActionIds);
+    }
+    // Made a step at a time as they are stored, not all at once.
+    function* draftSteps() {
+      for (const s of input.steps)
+        yield {
+          ...s,
+          id: s.id ?? crypto.randomUUID(),
+          actions: s.actions.map((a) => ({ ...a, id: a.id ?? crypto.randomUUID() })),
+        };
+    }
     // Delete and re-insert under the same ids: references from branches stay valid.
     if (ownStepIds.size) await tx.delete(steps).where(eq(steps.experimentId, input.experimentId));
-    await insertSteps(tx, input.experimentId, draftSteps);
+    await insertSteps(tx, input.experimentId, draftSteps());
     return loadDesign(tx, input.experimentId);
   });
 }
