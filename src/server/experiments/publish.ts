@@ -1,7 +1,6 @@
 // Publishing freezes the draft into an immutable, numbered, hashed version.
 import { TRPCError } from "@trpc/server";
 import { eq, getTableColumns, sql } from "drizzle-orm";
-import { draftFrom } from "@/core/designer/model";
 import { validating } from "@/core/designer/validate";
 import { hashing } from "@/core/protocol/canonical";
 import { snapshotOf } from "@/core/protocol/snapshot";
@@ -40,7 +39,10 @@ async function publishNow(db: Database, experimentId: string, userId: string) {
     // the experiment chose): its trials run with it, whatever is installed later.
     const known = await knownPlugin(tx, design.robotId, design.pluginSource);
     const plugin = known?.plugin;
-    const issues = await sliced(validating(draftFrom(design), plugin ?? null));
+    // The published form, made once: checked, searched for sounds and hashed as it is.
+    const snapshot = snapshotOf(design);
+    const draft = { ...snapshot.experiment, steps: snapshot.steps };
+    const issues = await sliced(validating(draft, plugin ?? null));
     // The designer only warns of an action the robot cannot do; a version that trials run must not hold one.
     const cannot = issues.filter((i) => i.code === "unsupported_on_robot");
     if (cannot.length) {
@@ -60,7 +62,7 @@ async function publishNow(db: Database, experimentId: string, userId: string) {
         message: `This experiment cannot be published until ${problems.length === 1 ? "this problem is" : `these ${problems.length} problems are`} fixed: ${listed}`,
       });
     }
-    const sounds = await soundProblems(tx, design.studyId, draftFrom(design));
+    const sounds = await soundProblems(tx, design.studyId, draft);
     if (sounds.length)
       throw new TRPCError({ code: "BAD_REQUEST", message: `This experiment cannot be published: ${sounds.join(" ")}` });
     if (known) {
@@ -75,7 +77,6 @@ async function publishNow(db: Database, experimentId: string, userId: string) {
         })
         .onConflictDoNothing();
     }
-    const snapshot = snapshotOf(design);
     const canonical = await sliced(hashing(snapshot));
     const [{ next }] = (await tx
       .select({ next: sql<number>`coalesce(max(${experimentVersions.version}), 0)::int + 1` })
