@@ -90,8 +90,8 @@ export function actionCountProblem(steps: ReadonlyArray<unknown>): string | null
  * A design's steps, their number and their actions counted first: a design
  * over a limit is refused with the limit named, before any step is checked.
  */
-export function countedSteps<T extends z.ZodType>(steps: T) {
-  return z
+export function countedSteps<T extends z.ZodType>(steps: T): T {
+  const counted = z
     .unknown()
     .superRefine((value, ctx) => {
       if (!Array.isArray(value)) return;
@@ -102,6 +102,8 @@ export function countedSteps<T extends z.ZodType>(steps: T) {
       if (problem) ctx.addIssue({ code: "custom", message: problem });
     })
     .pipe(steps);
+  // Typed as the steps it passes on: callers (the designer's API client too) still see what a step is.
+  return counted as unknown as T;
 }
 
 export const draftSchema = experimentFields.extend({
