@@ -21,13 +21,11 @@ describe("work run in slices", () => {
     expect(await sliced(busy(50, seen))).toBe(true);
   });
 
-  it("gives the result of work that never yields", async () => {
-    expect(
-      await sliced(
-        (function* (): Work<string> {
-          return "done";
-        })(),
-      ),
-    ).toBe("done");
+  it.each([0, 1, 1000])("gives the result of work that yields %i times", async (times) => {
+    function* counting(): Work<number> {
+      for (let i = 0; i < times; i++) yield;
+      return times;
+    }
+    expect(await sliced(counting())).toBe(times);
   });
 });
