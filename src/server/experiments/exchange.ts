@@ -8,7 +8,7 @@ import type { DesignDraft, DesignStep } from "@/core/designer/types";
 import type { Database } from "@/store/client";
 import { experiments } from "@/store/schema";
 import { fileSlug } from "../file-slug";
-import { sliced } from "../sliced";
+import { sliced } from "@/store/sliced";
 import { inTurn, LARGE_FILE } from "./turns";
 import { findPlugin } from "@/robots/catalog";
 import { insertSteps, loadDesign, type Tx } from "./design";

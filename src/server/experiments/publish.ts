@@ -8,7 +8,7 @@ import type { Database } from "@/store/client";
 import { actions, experimentVersions, experiments, pluginDocuments, steps } from "@/store/schema";
 import { knownPlugin } from "@/robots/catalog";
 import { soundProblems } from "../media/audio";
-import { sliced } from "../sliced";
+import { sliced } from "@/store/sliced";
 import { loadDesign } from "./design";
 import { inTurn, LARGE_DESIGN } from "./turns";
 

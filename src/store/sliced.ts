@@ -1,6 +1,7 @@
 // Runs the core's long work (../core/work.ts) a few milliseconds at a time,
 // handing the event loop back in between: a large design imported or
-// published by one researcher does not hold up anyone else's request.
+// published by one researcher does not hold up anyone else's request, nor
+// does a trial of it opening in the runtime hold up the other trials.
 import type { Work } from "@/core/work";
 
 /** Long enough that the hand-backs cost little, short enough that no one waiting notices. */
