@@ -12,7 +12,8 @@
 // is the last word when two processes start at the same moment).
 import { eq } from "drizzle-orm";
 import type postgres from "postgres";
-import { cannotStart, type Plugin } from "@/core/plugins";
+import { checkingStart, type Plugin } from "@/core/plugins";
+import { sliced } from "@/store/sliced";
 import type { Database } from "@/store/client";
 import { experimentVersions, trials } from "@/store/schema";
 import { trialPlugin } from "@/robots/trial-plugin";
@@ -121,7 +122,9 @@ export function trialHosts(
     // A robot whose plugin lacks an action of the version would fail it mid-trial: refused before the first step.
     // (A rehearsal pilots a draft, whose checks only warn.)
     const missing =
-      row?.snapshot && row.status === "scheduled" && chosen.plugin ? cannotStart(row.snapshot, chosen.plugin) : null;
+      row?.snapshot && row.status === "scheduled" && chosen.plugin
+        ? await sliced(checkingStart(row.snapshot, chosen.plugin))
+        : null;
     if (missing) throw new Error(missing);
     const ended = row?.status === "completed" || row?.status === "aborted";
     let robot: RobotLink;

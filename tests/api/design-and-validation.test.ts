@@ -216,7 +216,8 @@ describe("publishing, files and versions", () => {
     const other = await f.newStudy();
     const imported = await owner.experiments.importFile({ studyId: other.id, text: exported.text });
     expect(imported.studyId).toBe(other.id);
-    expect(imported.steps[0]!.actions[0]!.parameters).toEqual({ text: hostile });
+    const copy = await owner.experiments.get({ experimentId: imported.id });
+    expect(copy.steps[0]!.actions[0]!.parameters).toEqual({ text: hostile });
     expect((await owner.experiments.exportFile({ experimentId: imported.id })).text).toBe(exported.text);
   });
 

@@ -86,7 +86,9 @@ it("imports a file with its Thens", async () => {
   const { study, experiment } = await quiz();
   const { text } = await owner.experiments.exportFile({ experimentId: experiment.id });
   const imported = await owner.experiments.importFile({ studyId: study.id, text });
-  expect(shape(imported)).toEqual(shape(await owner.experiments.get({ experimentId: experiment.id })));
+  expect(shape(await owner.experiments.get({ experimentId: imported.id }))).toEqual(
+    shape(await owner.experiments.get({ experimentId: experiment.id })),
+  );
 });
 
 it("is refused to wizards and observers, and for another study's experiment", async () => {

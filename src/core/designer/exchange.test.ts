@@ -1,6 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { storytellerDraft } from "../../server/seed/storyteller";
-import { exportExperiment, importExperiment } from "./exchange";
+import { finish } from "../work";
+import { checking, draftOf, exportExperiment, importExperiment } from "./exchange";
 import type { DesignDraft } from "./types";
 
 function ids(prefix = "new") {
@@ -259,6 +260,17 @@ describe("exporting and importing an experiment", () => {
     expect(a!.actions[4]!.parameters).toEqual({ targets: { "7": "new-3", constructor: "new-1" } });
   });
 
+  it("makes a checked file's steps one at a time, as they are read, with the ids an import gives", () => {
+    const checked = finish(checking(exportExperiment(awkward)));
+    if (!checked.ok) throw new Error("the file did not check");
+    const newId = ids();
+    const draft = draftOf(checked.file, newId);
+    // Only the steps' own ids exist before the steps are read: their actions are made as each step is.
+    expect(newId()).toBe("new-4");
+    const [first] = draft.steps;
+    expect(first!.actions.map((x) => x.id)).toEqual(["new-5", "new-7", "new-8", "new-9", "new-10"]);
+  });
+
   it("keeps a parameter named __proto__ as a plain value", () => {
     const text = exportExperiment(awkward).replace('"__proto__x"', '"__proto__"');
     const draft = imported(text);
@@ -388,6 +400,18 @@ describe("importing a bad file", () => {
       "too many actions",
       edit((f) => (f.steps[1].actions = Array(501).fill({ type: "nod" }))),
       [["$.steps[1].actions", "has 501 actions; a step can have at most 500"]],
+    ],
+    [
+      "more actions in all than a design may hold, every step within its own limit",
+      edit(
+        (f) =>
+          (f.steps = Array.from({ length: 101 }, (_, i) => ({
+            key: `step-${i + 1}`,
+            name: "S",
+            actions: Array(500).fill({ type: "nod" }),
+          }))),
+      ),
+      [["$.steps", "The design has 50,500 actions; the limit is 50,000."]],
     ],
     [
       "a name too long",

@@ -28,16 +28,18 @@
 //
 // Import checks the file's shape, not its actions: the imported draft goes
 // through validateDesign like any other, against whatever robot is at hand.
-import { parseJsonText } from "../plugins/json-text";
-import type { DesignDraft, NewId, After } from "./types";
+import { actionCountProblem, DESIGN_LIMITS } from "../protocol/document";
+import { finish, type Work } from "../work";
+import { parsingFile } from "./file-parse";
+import type { After, DesignDraft, DesignStep, NewId } from "./types";
 
 const FORMAT = "hristudio.experiment";
 const FORMAT_VERSION = 2;
 /** Versions this reader understands: 1 is 2 without "after". */
 const READABLE = [1, 2];
 const MAX_BYTES = 2 * 1024 * 1024;
-const MAX_STEPS = 500;
-const MAX_ACTIONS = 500;
+const MAX_STEPS = DESIGN_LIMITS.steps;
+const MAX_ACTIONS = DESIGN_LIMITS.actionsPerStep;
 const MAX_NAME = 200;
 const MAX_TEXT = 5000;
 const MAX_NOTE = 2000;
@@ -61,7 +63,7 @@ interface FileStep {
   actions: FileAction[];
 }
 
-interface ExperimentFile {
+export interface ExperimentFile {
   format: typeof FORMAT;
   formatVersion: typeof FORMAT_VERSION;
   experiment: { name: string; description?: string; robot: string };
@@ -104,6 +106,26 @@ export function exportExperiment(draft: DesignDraft): string {
 
 /** Never throws: a file that cannot be imported comes back as its problems, each with its place in the file. */
 export function importExperiment(text: string, newId: NewId): ImportResult {
+  return finish(importing(text, newId));
+}
+
+/** importExperiment as work that yields after each step, for the server to run in slices. */
+export function* importing(text: string, newId: NewId): Work<ImportResult> {
+  const checked = yield* checking(text);
+  if (!checked.ok) return checked;
+  const { steps, ...experiment } = draftOf(checked.file, newId);
+  const made: DesignStep[] = [];
+  for (const step of steps) {
+    made.push(step);
+    yield;
+  }
+  return { ok: true, draft: { ...experiment, steps: made } };
+}
+
+export type CheckResult = { ok: true; file: ExperimentFile } | { ok: false; problems: ImportProblem[] };
+
+/** The file read and its shape checked, as work that yields after each step, for the server to run in slices. */
+export function* checking(text: string): Work<CheckResult> {
   if (text.length > MAX_BYTES || new TextEncoder().encode(text).length > MAX_BYTES) {
     return {
       ok: false,
@@ -115,7 +137,7 @@ export function importExperiment(text: string, newId: NewId): ImportResult {
       ],
     };
   }
-  const parsed = parseJsonText(text);
+  const parsed = yield* parsingFile(text);
   if (!parsed.ok) {
     return {
       ok: false,
@@ -124,36 +146,52 @@ export function importExperiment(text: string, newId: NewId): ImportResult {
       ],
     };
   }
-  const problems = check(parsed.value);
-  if (problems.length) return { ok: false, problems };
-  return { ok: true, draft: build(parsed.value as ExperimentFile, newId) };
+  // Counted before anything else is read: a file over the limit costs no more than its parse.
+  const steps = isObject(parsed.value) && Array.isArray(parsed.value.steps) ? parsed.value.steps : [];
+  const tooMany = actionCountProblem(steps);
+  if (tooMany) return { ok: false, problems: [{ path: "$.steps", message: tooMany }] };
+  const problems = yield* check(parsed.value);
+  return problems.length ? { ok: false, problems } : { ok: true, file: parsed.value as ExperimentFile };
 }
 
-function build(file: ExperimentFile, newId: NewId): DesignDraft {
+/**
+ * A checked file as a draft whose steps are made (with fresh ids) one at a
+ * time as they are read: the server stores a large design as it is made,
+ * never holding all 50,000 new actions at once.
+ */
+export function draftOf(
+  file: ExperimentFile,
+  newId: NewId,
+): Omit<DesignDraft, "steps"> & { steps: Iterable<DesignStep> } {
   const ids = new Map(file.steps.map((step) => [`@${step.key}`, newId()]));
   const groups = new Map<string, string>();
   const group = (name: string) => groups.get(name) ?? groups.set(name, newId()).get(name)!;
+  function* steps(): Generator<DesignStep, void, void> {
+    for (const step of file.steps) {
+      yield {
+        id: ids.get(`@${step.key}`)!,
+        name: step.name,
+        description: step.description ?? "",
+        after: draftAfter(step.after, ids),
+        actions: step.actions.map((action) => ({
+          id: newId(),
+          type: action.type,
+          name: action.name ?? "",
+          parameters:
+            action.type === "branch"
+              ? swapTargets(action.parameters ?? {}, (key) => ids.get(key))
+              : (action.parameters ?? {}),
+          parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
+          ...(action.note ? { note: action.note } : {}),
+        })),
+      };
+    }
+  }
   return {
     name: file.experiment.name,
     description: file.experiment.description ?? "",
     robotId: file.experiment.robot,
-    steps: file.steps.map((step) => ({
-      id: ids.get(`@${step.key}`)!,
-      name: step.name,
-      description: step.description ?? "",
-      after: draftAfter(step.after, ids),
-      actions: step.actions.map((action) => ({
-        id: newId(),
-        type: action.type,
-        name: action.name ?? "",
-        parameters:
-          action.type === "branch"
-            ? swapTargets(action.parameters ?? {}, (key) => ids.get(key))
-            : (action.parameters ?? {}),
-        parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
-        ...(action.note ? { note: action.note } : {}),
-      })),
-    })),
+    steps: steps(),
   };
 }
 
@@ -208,7 +246,7 @@ const EXPERIMENT = ["name", "description", "robot"];
 const STEP = ["key", "name", "description", "after", "actions"];
 const ACTION = ["type", "name", "parameters", "runTogether", "note"];
 
-function check(file: unknown): ImportProblem[] {
+function* check(file: unknown): Work<ImportProblem[]> {
   const problems: ImportProblem[] = [];
   const flag = (path: string, message: string): false => {
     problems.push({ path, message });
@@ -291,8 +329,9 @@ function check(file: unknown): ImportProblem[] {
       flag(at, 'must be "end" or name a step by "@" and its key, such as "@step-2"');
     else if (!keys.has(step.after.slice(1))) flag(at, `"${step.after}" names no step of this file`);
   });
-  file.steps.forEach((step, s) => {
-    if (!isObject(step) || !list(step.actions, `$.steps[${s}].actions`, MAX_ACTIONS, "actions", "a step")) return;
+  for (const [s, step] of file.steps.entries()) {
+    yield;
+    if (!isObject(step) || !list(step.actions, `$.steps[${s}].actions`, MAX_ACTIONS, "actions", "a step")) continue;
     step.actions.forEach((action, a) => {
       const path = `$.steps[${s}].actions[${a}]`;
       if (!object(action, path, ACTION)) return;
@@ -316,7 +355,7 @@ function check(file: unknown): ImportProblem[] {
         }
       }
     });
-  });
+  }
   return problems;
 }
 

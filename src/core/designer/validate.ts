@@ -2,7 +2,15 @@
 // researcher can fix in the designer, placed on its step and action and said
 // without the engine's vocabulary. The flow checks walk the draft the way the
 // trial engine does (../trial/decide.ts).
-import { parseActionType, portability, validateParameters, type Channels, type Plugin } from "../plugins";
+import {
+  type ActionPortability,
+  parseActionType,
+  portability,
+  validateParameters,
+  type Channels,
+  type Plugin,
+} from "../plugins";
+import { finish, type Work } from "../work";
 import { exitOf } from "../protocol/flow";
 import { blockFor, type Block } from "./blocks";
 import type { DesignAction, DesignDraft, DesignStep } from "./types";
@@ -37,6 +45,11 @@ type Route = { option: Option; to: number } | { option: Option; to: null; why: "
 
 /** With `channels` (this server's ways to the robot), an action none of them carries is said not to run here. */
 export function validateDesign(draft: DesignDraft, plugin: Plugin | null, channels?: Channels): DesignIssue[] {
+  return finish(validating(draft, plugin, channels));
+}
+
+/** validateDesign as work that yields after each action, for the server to run in slices. */
+export function* validating(draft: DesignDraft, plugin: Plugin | null, channels?: Channels): Work<DesignIssue[]> {
   if (draft.steps.length === 0) {
     return [
       {
@@ -49,7 +62,7 @@ export function validateDesign(draft: DesignDraft, plugin: Plugin | null, channe
   const placed: Placed[] = [];
   const indexById = new Map(draft.steps.map((s, i) => [s.id, i]));
   const reported = new Set<string>();
-  draft.steps.forEach((step, s) => {
+  for (const [s, step] of draft.steps.entries()) {
     const add = (action: number, issue: Omit<DesignIssue, "stepId">) =>
       placed.push({ step: s, action, issue: { ...issue, stepId: step.id } });
     const where = stepLabel(step, s);
@@ -61,7 +74,8 @@ export function validateDesign(draft: DesignDraft, plugin: Plugin | null, channe
       });
     }
     const end = step.actions.findIndex((a) => a.type === "end_trial");
-    step.actions.forEach((action, a) => {
+    for (const [a, action] of step.actions.entries()) {
+      yield;
       const block = blockFor(action.type, plugin);
       const name = actionLabel(action, block);
       const at = (issue: Omit<DesignIssue, "stepId" | "actionId">) => add(a, { ...issue, actionId: action.id });
@@ -107,7 +121,7 @@ export function validateDesign(draft: DesignDraft, plugin: Plugin | null, channe
           seen.add(label);
         }
       }
-      if (action.type !== "branch") return;
+      if (action.type !== "branch") continue;
       const routes = routesOf(step, a, indexById);
       if (!routes) {
         at({
@@ -124,10 +138,10 @@ export function validateDesign(draft: DesignDraft, plugin: Plugin | null, channe
             : `${name}: the answer "${route.option.label}" leads to a step that is no longer in the experiment. Choose another step.`;
         at({ severity: "error", code: "branch_target_missing", parameter: "targets", message });
       }
-    });
-  });
+    }
+  }
   placed.push(...flowIssues(draft, indexById));
-  if (plugin) placed.push(...robotIssues(draft, plugin, reported, channels));
+  if (plugin) placed.push(...(yield* robotIssues(draft, plugin, reported, channels)));
   return placed.sort((x, y) => x.step - y.step || x.action - y.action).map((p) => p.issue);
 }
 
@@ -256,11 +270,19 @@ function runsInto(draft: DesignDraft, from: number, answers: Map<number, string>
   return null;
 }
 
-function robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>, channels?: Channels): Placed[] {
+function* robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>, channels?: Channels): Work<Placed[]> {
   const position = new Map(
     draft.steps.flatMap((step, s) => step.actions.map((action, a) => [action.id, { step, s, action, a }] as const)),
   );
-  return portability(draft, plugin, channels).actions.flatMap((result): Placed[] => {
+  const placed: Placed[] = [];
+  // A step at a time: the report of 50,000 actions at once would hold the server for most of a second.
+  for (const step of draft.steps) {
+    yield;
+    placed.push(...portability({ steps: [step] }, plugin, channels).actions.flatMap(placedOf));
+  }
+  return placed;
+
+  function placedOf(result: ActionPortability): Placed[] {
     const { step, s, action, a } = position.get(result.actionId)!;
     const block = blockFor(action.type, plugin);
     if (!block) return []; // already an unknown block
@@ -289,7 +311,7 @@ function robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>, 
           message: `${name} on ${plugin.name}: ${titled(p.message, p.parameter, block)}.`,
         }),
       );
-  });
+  }
 }
 
 function unknownMessage(action: DesignAction, name: string, plugin: Plugin | null): string {

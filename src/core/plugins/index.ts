@@ -14,6 +14,7 @@ export { unavailableActions, unavailableReason, type UnavailableAction } from ".
 export { resolveAction, type Resolution } from "./resolve";
 export {
   cannotStart,
+  checkingStart,
   portability,
   type PortableExperiment,
   type PortabilityReport,

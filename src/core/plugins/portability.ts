@@ -6,6 +6,7 @@ import type { ParameterProblem } from "./parameters";
 import { unreachable, type Channels } from "./reach";
 import { resolveAction } from "./resolve";
 import type { Plugin } from "./types";
+import { finish, type Work } from "../work";
 
 /** The experiment shape the report reads: steps of typed actions. */
 export interface PortableExperiment {
@@ -81,7 +82,17 @@ export function portability(experiment: PortableExperiment, plugin: Plugin, chan
  * plain words; null when it can do them all.
  */
 export function cannotStart(protocol: PortableExperiment, plugin: Plugin): string | null {
-  const missing = portability(protocol, plugin).actions.filter((a) => a.status === "unsupported");
+  return finish(checkingStart(protocol, plugin));
+}
+
+/** cannotStart as work that yields after each step, for the runtime to run in slices beside its other trials. */
+export function* checkingStart(protocol: PortableExperiment, plugin: Plugin): Work<string | null> {
+  const missing: ActionPortability[] = [];
+  for (const [stepIndex, step] of protocol.steps.entries()) {
+    const report = portability({ steps: [step] }, plugin);
+    for (const a of report.actions) if (a.status === "unsupported") missing.push({ ...a, stepIndex });
+    yield;
+  }
   if (!missing.length) return null;
   const listed = missing.map((a) => {
     const step = protocol.steps[a.stepIndex]!;

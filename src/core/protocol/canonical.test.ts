@@ -1,5 +1,6 @@
 import { describe, expect, it } from "vitest";
-import { canonicalJson, hashCanonical } from "./canonical";
+import { finish } from "../work";
+import { canonicalJson, canonicalPieces, hashCanonical, hashing } from "./canonical";
 
 describe("canonical JSON", () => {
   it.each<[string, unknown, string]>([
@@ -19,6 +20,28 @@ describe("canonical JSON", () => {
     expect(() => canonicalJson({ steps: [{ seconds: bad }] })).toThrow(
       `$.steps[0].seconds: ${bad} cannot be stored as JSON`,
     );
+  });
+
+  it("writes a value nested 100,000 deep, and the deepest bad number's place", () => {
+    // Deeper than JSON.stringify itself can go, so the expected text is made the same way, from the inside out.
+    let deep: unknown = 1;
+    let expected = "1";
+    for (let i = 0; i < 100_000; i++) {
+      deep = i % 2 ? [deep] : { k: deep };
+      expected = i % 2 ? `[${expected}]` : `{"k":${expected}}`;
+    }
+    expect(canonicalJson(deep) === expected).toBe(true);
+    let bad: unknown = Number.NaN;
+    for (let i = 0; i < 3; i++) bad = { k: [bad] };
+    expect(() => canonicalJson(bad)).toThrow("$.k[0].k[0].k[0]: NaN cannot be stored as JSON");
+  });
+
+  it("comes in pieces that make the whole text, hashed as the whole", () => {
+    const large = { steps: Array.from({ length: 20_000 }, (_, i) => ({ id: `s${i}`, text: "x".repeat(20) })) };
+    const pieces = [...canonicalPieces(large)];
+    expect(pieces.length).toBeGreaterThan(1);
+    expect(pieces.join("")).toBe(canonicalJson(large));
+    expect(finish(hashing(large))).toEqual({ text: canonicalJson(large), hash: hashCanonical(large) });
   });
 
   it("hashes equal designs equally, whatever their key order", () => {

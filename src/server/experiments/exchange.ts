@@ -2,12 +2,14 @@
 // another lab as one file, and a copy within a study is made the same way.
 // The format lives in the core (exchange.ts).
 import { TRPCError } from "@trpc/server";
-import { exportExperiment, importExperiment } from "@/core/designer/exchange";
+import { checking, draftOf, exportExperiment, importing } from "@/core/designer/exchange";
 import { draftFrom } from "@/core/designer/model";
-import type { DesignDraft } from "@/core/designer/types";
+import type { DesignDraft, DesignStep } from "@/core/designer/types";
 import type { Database } from "@/store/client";
 import { experiments } from "@/store/schema";
 import { fileSlug } from "../file-slug";
+import { sliced } from "@/store/sliced";
+import { inTurn, LARGE_FILE } from "./turns";
 import { findPlugin } from "@/robots/catalog";
 import { insertSteps, loadDesign, type Tx } from "./design";
 
@@ -19,15 +21,28 @@ export async function exportFile(db: Database, experimentId: string) {
   };
 }
 
-/** A new experiment in the study from a file; a bad file changes nothing and says where it is wrong. */
-export async function importFile(db: Database, studyId: string, text: string, userId: string) {
-  const result = importExperiment(text, () => crypto.randomUUID());
+/**
+ * A new experiment in the study from a file; a bad file changes nothing and
+ * says where it is wrong. It answers with the experiment, not its steps: the
+ * page opens it by its id, and the largest design is 8 MB to send back.
+ */
+export function importFile(db: Database, studyId: string, text: string, userId: string) {
+  return inTurn(text.length >= LARGE_FILE, () => importNow(db, studyId, text, userId));
+}
+
+async function importNow(db: Database, studyId: string, text: string, userId: string) {
+  const result = await sliced(checking(text));
   if (!result.ok) {
     const shown = result.problems.slice(0, 10).map((p) => `${p.path}: ${p.message}`);
     const more = result.problems.length > 10 ? ` (and ${result.problems.length - 10} more)` : "";
     throw new TRPCError({ code: "BAD_REQUEST", message: `This file cannot be imported. ${shown.join("; ")}${more}` });
   }
-  return storeNew(db, studyId, result.draft, userId);
+  return storeNew(
+    db,
+    studyId,
+    draftOf(result.file, () => crypto.randomUUID()),
+    userId,
+  );
 }
 
 /**
@@ -41,12 +56,19 @@ export async function duplicate(db: Database | Tx, experimentId: string, userId:
   const design = await loadDesign(db, experimentId);
   const sameStudy = intoStudyId === undefined || intoStudyId === design.studyId;
   if (!sameStudy) await assertRobotInstalled(db, design);
-  const copied = importExperiment(exportExperiment(draftFrom(design)), () => crypto.randomUUID());
+  const copied = await sliced(importing(exportExperiment(draftFrom(design)), () => crypto.randomUUID()));
   // An exported draft always imports: the round trip is tested byte for byte in the core.
   if (!copied.ok) throw new Error(`The experiment ${experimentId} did not survive its own export`);
   const name = sameStudy ? `${design.name} (copy)`.slice(0, 200) : design.name;
   // A copy runs the same robot's document as its original: plugins are the server's, not the study's.
-  return storeNew(db, intoStudyId ?? design.studyId, { ...copied.draft, name }, userId, design.pluginSource);
+  const copy = await storeNew(
+    db,
+    intoStudyId ?? design.studyId,
+    { ...copied.draft, name },
+    userId,
+    design.pluginSource,
+  );
+  return loadDesign(db, copy.id);
 }
 
 /**
@@ -65,7 +87,7 @@ async function assertRobotInstalled(db: Database | Tx, design: { name: string; r
 async function storeNew(
   db: Database | Tx,
   studyId: string,
-  draft: DesignDraft,
+  draft: Omit<DesignDraft, "steps"> & { steps: Iterable<DesignStep> },
   userId: string,
   pluginSource: string | null = null,
 ) {
@@ -83,6 +105,6 @@ async function storeNew(
       })
       .returning();
     await insertSteps(tx, experiment!.id, draft.steps);
-    return loadDesign(tx, experiment!.id);
+    return experiment!;
   });
 }

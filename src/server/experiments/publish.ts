@@ -1,17 +1,30 @@
 // Publishing freezes the draft into an immutable, numbered, hashed version.
 import { TRPCError } from "@trpc/server";
-import { eq, sql } from "drizzle-orm";
-import { draftFrom } from "@/core/designer/model";
-import { validateDesign } from "@/core/designer/validate";
-import { hashCanonical } from "@/core/protocol/canonical";
+import { eq, getTableColumns, sql } from "drizzle-orm";
+import { validating } from "@/core/designer/validate";
+import { hashing } from "@/core/protocol/canonical";
 import { snapshotOf } from "@/core/protocol/snapshot";
 import type { Database } from "@/store/client";
-import { experimentVersions, experiments, pluginDocuments } from "@/store/schema";
+import { actions, experimentVersions, experiments, pluginDocuments, steps } from "@/store/schema";
 import { knownPlugin } from "@/robots/catalog";
 import { soundProblems } from "../media/audio";
+import { sliced } from "@/store/sliced";
 import { loadDesign } from "./design";
+import { inTurn, LARGE_DESIGN } from "./turns";
+
+// The snapshot is not read back: it is the one in hand, 5 MB of text to parse again for the largest design.
+const { snapshot: _, ...columnsButSnapshot } = getTableColumns(experimentVersions);
 
 export async function publish(db: Database, experimentId: string, userId: string) {
+  const [{ actionCount }] = (await db
+    .select({ actionCount: sql<number>`count(*)::int` })
+    .from(actions)
+    .innerJoin(steps, eq(steps.id, actions.stepId))
+    .where(eq(steps.experimentId, experimentId))) as [{ actionCount: number }];
+  return inTurn(actionCount >= LARGE_DESIGN, () => publishNow(db, experimentId, userId));
+}
+
+async function publishNow(db: Database, experimentId: string, userId: string) {
   return db.transaction(async (tx) => {
     // Locks the experiment so two publishes cannot take the same number.
     await tx.select({ id: experiments.id }).from(experiments).where(eq(experiments.id, experimentId)).for("update");
@@ -26,7 +39,10 @@ export async function publish(db: Database, experimentId: string, userId: string
     // the experiment chose): its trials run with it, whatever is installed later.
     const known = await knownPlugin(tx, design.robotId, design.pluginSource);
     const plugin = known?.plugin;
-    const issues = validateDesign(draftFrom(design), plugin ?? null);
+    // The published form, made once: checked, searched for sounds and hashed as it is.
+    const snapshot = snapshotOf(design);
+    const draft = { ...snapshot.experiment, steps: snapshot.steps };
+    const issues = await sliced(validating(draft, plugin ?? null));
     // The designer only warns of an action the robot cannot do; a version that trials run must not hold one.
     const cannot = issues.filter((i) => i.code === "unsupported_on_robot");
     if (cannot.length) {
@@ -46,7 +62,7 @@ export async function publish(db: Database, experimentId: string, userId: string
         message: `This experiment cannot be published until ${problems.length === 1 ? "this problem is" : `these ${problems.length} problems are`} fixed: ${listed}`,
       });
     }
-    const sounds = await soundProblems(tx, design.studyId, draftFrom(design));
+    const sounds = await soundProblems(tx, design.studyId, draft);
     if (sounds.length)
       throw new TRPCError({ code: "BAD_REQUEST", message: `This experiment cannot be published: ${sounds.join(" ")}` });
     if (known) {
@@ -61,7 +77,7 @@ export async function publish(db: Database, experimentId: string, userId: string
         })
         .onConflictDoNothing();
     }
-    const snapshot = snapshotOf(design);
+    const canonical = await sliced(hashing(snapshot));
     const [{ next }] = (await tx
       .select({ next: sql<number>`coalesce(max(${experimentVersions.version}), 0)::int + 1` })
       .from(experimentVersions)
@@ -71,16 +87,17 @@ export async function publish(db: Database, experimentId: string, userId: string
       .values({
         experimentId,
         version: next,
-        snapshot,
-        hash: hashCanonical(snapshot),
+        // The text just hashed, so the snapshot is not written out a second time.
+        snapshot: sql`${canonical.text}::jsonb`,
+        hash: canonical.hash,
         robotId: design.robotId,
         pluginVersion: plugin?.version ?? null,
         pluginHash: known?.hash ?? null,
         pluginSource: known?.source ?? null,
         publishedBy: userId,
       })
-      .returning();
-    return version!;
+      .returning(columnsButSnapshot);
+    return { ...version!, snapshot };
   });
 }
 

@@ -1,7 +1,7 @@
 // Inputs of the design procedures: the experiment document (declared once in
 // core/protocol/document.ts) as the designer saves it.
 import { z } from "zod";
-import { actionSchema, experimentFields, stepSchema } from "@/core/protocol/document";
+import { actionSchema, countedSteps, DESIGN_LIMITS, experimentFields, stepSchema } from "@/core/protocol/document";
 import { id } from "../validation";
 
 export const experimentDetails = experimentFields.extend({
@@ -14,14 +14,14 @@ export const designInput = z.object({
   experimentId: id,
   baseRevision: z.number().int().min(0),
   details: experimentDetails.partial().optional(),
-  steps: z
-    .array(
+  steps: countedSteps(
+    z.array(
       stepSchema.extend({
         id: id.optional(),
-        actions: z.array(actionSchema.extend({ id: id.optional() })).max(500),
+        actions: z.array(actionSchema.extend({ id: id.optional() })).max(DESIGN_LIMITS.actionsPerStep),
       }),
-    )
-    .max(500),
+    ),
+  ),
 });
 
 export type DesignInput = z.infer<typeof designInput>;
