@@ -159,7 +159,12 @@ export function simulatorReplays(db: Database, claims: RobotClaims): Replays {
       for (const command of commands)
         timers.push(
           setTimeout(() => {
-            void sim.dispatch(command.action, command.parameters);
+            // A dispatch that throws (a plugin the simulator cannot map) ends this replay, never the runtime.
+            sim
+              .dispatch(command.action, command.parameters)
+              .catch(() =>
+                finish("The simulated robot could not take one of the trial's actions; the replay stopped."),
+              );
             sent++;
             positionMs = command.trialMs;
             announce(true);
