@@ -42,11 +42,16 @@ const floors = Array.from({ length: Math.floor(running / WINDOW_S) }, (_, w) =>
   Math.min(...memory.filter((m) => m.s >= w * WINDOW_S && m.s < (w + 1) * WINDOW_S).map((m) => m.mib)),
 );
 console.log(`soak: runtime memory floor of each 2 minutes (MiB): ${floors.map((f) => f.toFixed(0)).join(" ")}`);
-const [steady, last] = [floors[1]!, floors.at(-1)!];
-const growth = (last - steady) / steady;
-console.log(
-  `soak: runtime memory with 50 trials running: floor of minutes 2–4 ${steady.toFixed(1)} MiB, of the last two ${last.toFixed(1)} MiB; growth ${(growth * 100).toFixed(1)} %  target < 10 %: ${growth < 0.1 ? "met" : "NOT met"} (ratio ${(growth / 0.1).toFixed(2)})`,
-);
+if (floors.length < 3) {
+  // Growth is judged from the second window to the last: a shorter run has nothing to compare.
+  console.log(`soak: runtime memory growth needs SOAK_MINUTES of 6 or more to be judged (this run: ${MINUTES})`);
+} else {
+  const [steady, last] = [floors[1]!, floors.at(-1)!];
+  const growth = (last - steady) / steady;
+  console.log(
+    `soak: runtime memory with 50 trials running: floor of minutes 2–4 ${steady.toFixed(1)} MiB, of the last two ${last.toFixed(1)} MiB; growth ${(growth * 100).toFixed(1)} %  target < 10 %: ${growth < 0.1 ? "met" : "NOT met"} (ratio ${(growth / 0.1).toFixed(2)})`,
+  );
+}
 console.log(
   `soak: runtime memory idle before the trials ${idle.toFixed(1)} MiB, most ${Math.max(...memory.map((m) => m.mib)).toFixed(1)} MiB, after the back-to-back wizards ${memory.at(-1)!.mib.toFixed(1)} MiB`,
 );

@@ -14,6 +14,9 @@ import { experimentVersions, experiments, robots, studies, studyMembers, trials 
 import { signSocketToken } from "../src/store/socket-token";
 import { scratchDatabase } from "./support";
 
+/** Bun's client takes headers; the DOM's typing of WebSocket, which the project's types include, does not say so. */
+const BunWebSocket = WebSocket as unknown as new (url: string, options: Bun.WebSocketOptions) => WebSocket;
+
 export async function startLiveBench() {
   const SECRET = "bench-secret".padEnd(40, "x");
   let refused = 0;
@@ -46,6 +49,10 @@ export async function startLiveBench() {
       HRI_RUNTIME_PORT: String(runtimePort),
       HOST: "127.0.0.1",
       HRI_ROSBRIDGE_URL: sim.url,
+      // Each socket stands in for a browser of its own: the bench says which, as a lab's proxy
+      // would, so the runtime's cap on connections per address that have not said hello counts
+      // browsers rather than this one process.
+      HRI_TRUSTED_PROXIES: "127.0.0.1",
     },
     stdio: ["ignore", "pipe", "inherit"],
   });
@@ -53,6 +60,7 @@ export async function startLiveBench() {
   // A bench that fails takes its runtime with it, rather than leave it running on its own.
   process.on("exit", () => runtime.kill("SIGKILL"));
   const url = `ws://127.0.0.1:${runtimePort}`;
+  let browsers = 0;
 
   const wizardUser = await createAccount(db, {
     name: "Wizard",
@@ -100,7 +108,9 @@ export async function startLiveBench() {
     userId: string,
     onEvents: (events: Array<{ type: string; parameters?: { text?: string } }>) => void,
   ) {
-    const ws = new WebSocket(url);
+    browsers++;
+    // A documentation address (192.0.2.0/24) per socket, only ever a header: nothing is sent there.
+    const ws = new BunWebSocket(url, { headers: { "x-forwarded-for": `192.0.2.${browsers % 250}` } });
     /** Each command's answer: null once acknowledged, else why it was refused. */
     const pending = new Map<string, (refusal: string | null) => void>();
     await new Promise((ok) => (ws.onopen = ok));
