@@ -6,11 +6,8 @@
 // plays; while it plays, a second replay (in this runtime process or another)
 // and a trial starting on the robot are refused; once it is stopped, the trial
 // starts. A study no simulated robot is available to replays on none.
-import { readFileSync } from "node:fs";
 import { and, eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { loadPlugin, type Plugin } from "../../src/core/plugins";
-import { SNAPSHOT_SCHEMA_VERSION } from "../../src/core/protocol/document";
 import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/store/client";
@@ -27,26 +24,13 @@ import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { startRuntime } from "../support/runtime";
 import { connectTrial, type TrialSocket } from "../support/socket";
+import { firstPartyPlugin } from "../support/plugins";
+import { oneStep } from "../support/protocols";
 
 const SECRET = "replay-robots-test-secret".padEnd(40, "x");
-const nao = (() => {
-  const loaded = loadPlugin("nao6-ros2.json", readFileSync("plugins/nao6-ros2.json", "utf8"));
-  if (!loaded.ok) throw new Error("plugins/nao6-ros2.json does not load");
-  return loaded.value as Plugin;
-})();
+const nao = firstPartyPlugin("nao6-ros2.json");
 
-const saying = (text: string) => ({
-  schemaVersion: SNAPSHOT_SCHEMA_VERSION as typeof SNAPSHOT_SCHEMA_VERSION,
-  experiment: { id: "e", name: "Greeting", description: "", robotId: "nao6-ros2" },
-  steps: [
-    {
-      id: "s1",
-      name: "Greet",
-      description: "",
-      actions: [{ id: "hi", type: "say", name: "hi", parameters: { text }, parallelGroup: null }],
-    },
-  ],
-});
+const saying = (text: string) => oneStep([{ id: "hi", type: "say", parameters: { text } }]);
 
 const A_LINE = "Study A's participant hears this.";
 const B_LINE = "Study B's line, replayed.";

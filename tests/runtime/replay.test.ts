@@ -9,10 +9,8 @@
 // not the log's dispatch times the replay is scheduled from: what the robot
 // received is the thing a replay must reproduce, so the test measures the
 // replay against it (the dispatch times stand in for it, and this checks they do).
-import { readFileSync } from "node:fs";
 import { asc, eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
-import { loadPlugin, type Plugin } from "../../src/core/plugins";
 import { REPLAY_TOPIC } from "../../src/core/robots/robot-state";
 import { SNAPSHOT_SCHEMA_VERSION } from "../../src/core/protocol/document";
 import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
@@ -31,15 +29,12 @@ import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { startRuntime } from "../support/runtime";
 import { connectTrial, type TrialSocket } from "../support/socket";
+import { firstPartyPlugin } from "../support/plugins";
 
 const SECRET = "replay-test-secret".padEnd(40, "x");
 const TOLERANCE_MS = 50;
 const ROBOT_TOPICS = ["/speech", "/animation", "/joint_angles"];
-const nao = (() => {
-  const loaded = loadPlugin("nao6-ros2.json", readFileSync("plugins/nao6-ros2.json", "utf8"));
-  if (!loaded.ok) throw new Error("plugins/nao6-ros2.json does not load");
-  return loaded.value as Plugin;
-})();
+const nao = firstPartyPlugin("nao6-ros2.json");
 
 const action = (
   id: string,

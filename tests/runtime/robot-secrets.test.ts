@@ -5,10 +5,7 @@
 // where robot secrets go, and nothing at all is sent: not to the robot's
 // rosbridge, not to its SSH address (a listener that counts who knocks).
 import { createServer, type Server } from "node:net";
-import { readFileSync } from "node:fs";
 import { afterAll, beforeAll, expect, it } from "vitest";
-import { loadPlugin, type Plugin } from "../../src/core/plugins";
-import { SNAPSHOT_SCHEMA_VERSION } from "../../src/core/protocol/document";
 import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/store/client";
@@ -18,9 +15,11 @@ import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { startRuntime } from "../support/runtime";
 import { connectTrial, type TrialSocket } from "../support/socket";
+import { firstPartyPlugin } from "../support/plugins";
+import { oneStep } from "../support/protocols";
 
 const SECRET = "robot-secrets-test-secret".padEnd(40, "x");
-const nao = (loadPlugin("nao6-ros2.json", readFileSync("plugins/nao6-ros2.json", "utf8")) as { value: Plugin }).value;
+const nao = firstPartyPlugin("nao6-ros2.json");
 const REFUSED =
   'The SSH secret of "NAO by the door" refers to BETTER_AUTH_SECRET, which is not a robot secret; name a variable starting HRI_ROBOT_SECRET_.';
 
@@ -64,21 +63,10 @@ beforeAll(async () => {
     .insert(experiments)
     .values({ studyId: study!.id, name: "Greeting", robotId: "nao6-ros2" })
     .returning();
-  const snapshot = {
-    schemaVersion: SNAPSHOT_SCHEMA_VERSION as typeof SNAPSHOT_SCHEMA_VERSION,
-    experiment: { id: "e", name: "Greeting", description: "", robotId: "nao6-ros2" },
-    steps: [
-      {
-        id: "s1",
-        name: "Greet",
-        description: "",
-        actions: [
-          { id: "hi", type: "say", name: "hi", parameters: { text: "Hello" }, parallelGroup: null },
-          { id: "up", type: "nao6-ros2.wake_up", name: "up", parameters: {}, parallelGroup: null },
-        ],
-      },
-    ],
-  };
+  const snapshot = oneStep([
+    { id: "hi", type: "say", parameters: { text: "Hello" } },
+    { id: "up", type: "nao6-ros2.wake_up" },
+  ]);
   const [version] = await db
     .insert(experimentVersions)
     .values({ experimentId: experiment!.id, version: 1, snapshot, hash: "door", robotId: "nao6-ros2" })
