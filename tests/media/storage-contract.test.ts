@@ -1,24 +1,15 @@
 // One contract, both media stores: a folder on disk and a real S3-compatible
 // server (moto, over a loopback socket) through the `minio` client.
 import { createHash } from "node:crypto";
-import { setFlagsFromString } from "node:v8";
-import { runInNewContext } from "node:vm";
 import { afterAll, describe, expect, it } from "vitest";
 import { LocalStorage } from "../../src/server/media/local-storage";
 import { S3Storage } from "../../src/server/media/s3-storage";
 import type { MediaStorage } from "../../src/server/media/storage";
+import { liveBuffers } from "../support/memory";
 import { startS3Server } from "../support/python";
 import { scratchFolder } from "../support/scratch";
 
 const stops: Array<() => void> = [];
-
-// What a store holds in memory is what is still reachable after a full collection.
-setFlagsFromString("--expose-gc");
-const collect = runInNewContext("gc") as () => void;
-const liveBuffers = () => {
-  collect();
-  return process.memoryUsage().arrayBuffers;
-};
 
 const MB = 1024 * 1024;
 
