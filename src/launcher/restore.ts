@@ -2,7 +2,7 @@
 // or an empty database (DATABASE_URL), with its recordings. See README.md, "Backups".
 import { countsOf, describeCounts } from "@/core/backup/manifest";
 import { restore } from "../server/backup/restore";
-import { backupContext, typedPath } from "./backup-context";
+import { backupContext, interruption, typedPath } from "./backup-context";
 
 const args = process.argv.slice(2);
 if (args.length !== 1 || args[0] === "--help" || args[0] === "-h") {
@@ -18,6 +18,7 @@ try {
     ...context,
     file: typedPath(args[0]!),
     progress: context.progress,
+    signal: interruption(),
   });
   console.log(
     `Restored ${describeCounts(countsOf(manifest))}, backed up ${manifest.createdAt}, into ${into}; the database is at migration ${migration}.`,

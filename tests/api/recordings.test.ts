@@ -7,9 +7,13 @@ import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { webmDuration } from "../../src/core/media/webm-duration";
 import { finishLeftOver, GONE_AFTER_MS, keepFinishingLeftOver, LAST_PART_MS } from "../../src/server/media/left-over";
+import { finishRecording } from "../../src/server/media/finish";
+import { LocalStorage } from "../../src/server/media/local-storage";
 import { chunkKey, partArrived } from "../../src/server/media/recordings";
 import { mediaRecordings, trials } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
+import { heldDuring } from "../support/memory";
+import { scratchFolder } from "../support/scratch";
 import { buildFixture, publishedVersion } from "./fixture";
 
 const { db, close } = await freshDatabase();
@@ -56,6 +60,23 @@ describe("recordings", () => {
       { id: recordingId, status: "complete", offsetMs: -140, durationMs: 4200, sizeBytes: bytes.length },
     ]);
     await expect(owner.recordings.chunkTarget({ recordingId })).rejects.toMatchObject({ code: "CONFLICT" });
+  });
+
+  it("joins a long recording a part at a time, never holding the whole of it", async () => {
+    const t = await trial();
+    const { recordingId } = await owner.recordings.start({ trialId: t.id, kind: "video", mimeType: "video/webm" });
+    const media = { storage: new LocalStorage(scratchFolder("media-")), maxBytes: 64 * 1024 * 1024 };
+    const key = `recordings/${recordingId}`;
+    const part = new Uint8Array(1024 * 1024).map((_, i) => (i * 7) % 256);
+    await media.storage.put(chunkKey(key, 0), webm);
+    for (let i = 1; i <= 32; i++) await media.storage.put(chunkKey(key, i), part);
+    const { result, held } = await heldDuring(() => finishRecording(db, media, recordingId, { durationMs: 60_000 }));
+    const file = (await media.storage.get(`${result!.storageKey}.webm`))!;
+    expect(file.length).toBe(result!.sizeBytes);
+    expect(webmDuration(file)).toBeCloseTo(60_000, 3);
+    expect(Buffer.compare(file.subarray(-part.length), Buffer.from(part))).toBe(0);
+    // A part or two of 1 MB, far from the 32 MB of the recording.
+    expect(held).toBeLessThan(8 * 1024 * 1024);
   });
 
   it("refuses a recording larger than the limit, and a type that is not video or audio", async () => {

@@ -22,11 +22,13 @@ import { createDatabase } from "../../src/store/client";
 import { startEmbeddedPostgres, type EmbeddedDatabase } from "../../src/store/embedded";
 import { migrateDatabase } from "../../src/store/migrate";
 import { LocalStorage } from "../../src/server/media/local-storage";
+import { S3Storage } from "../../src/server/media/s3-storage";
 import { seedDemo } from "../../src/server/seed/demo";
 import { appendEvents } from "../../src/store/event-store";
 import { newPerson, TEST_SECRET } from "../api/fixture";
 import { BUN, newDataDir } from "../support/app";
 import { bareTrial, freshDatabaseUrl } from "../support/db";
+import { startS3Server } from "../support/python";
 
 const root = join(import.meta.dirname, "..", "..");
 const TRICKY = 'tab\there, a newline\nand a backslash \\ , quotes "\'" , ünïcödé 😀, \\N (not a null)';
@@ -431,6 +433,48 @@ describe("a study far past any buffer, backed up while a trial appends", async (
       expect(readdirSync(out)).toEqual([]);
     },
   );
+
+  it("a restore stopped by SIGINT among its media files removes them, rolls its rows back and says so", {
+    timeout: 180_000,
+  }, async () => {
+    const out = folder();
+    expect((await command("backup", ["--out", `${out}/`], env)).code).toBe(0);
+    const file = join(out, readdirSync(out)[0]!);
+    // Into a database and an S3 bucket: each recording goes up part by part, so the signal lands among them.
+    const s3 = await startS3Server();
+    const bucket = { url: s3.url, bucket: "restored", accessKey: "test", secretKey: "test-secret" };
+    const into = {
+      DATABASE_URL: await freshDatabaseUrl(),
+      HRI_DATA_DIR: folder(),
+      HRI_MEDIA_S3_URL: bucket.url,
+      HRI_MEDIA_S3_BUCKET: bucket.bucket,
+      HRI_MEDIA_S3_ACCESS_KEY: bucket.accessKey,
+      HRI_MEDIA_S3_SECRET_KEY: bucket.secretKey,
+    };
+    const tablesWithRows = async () =>
+      Object.entries(await digests(into.DATABASE_URL)).filter(([, digest]) => !digest.startsWith("0 rows"));
+    try {
+      let sent = false;
+      const stopped = await command("restore", [file], into, (stderr, kill) => {
+        if (sent || !stderr.includes("media files 1/")) return;
+        sent = true;
+        kill("SIGINT");
+      });
+      expect(stopped.stderr).toContain(
+        "Stopped: Interrupted by SIGINT. Nothing was restored: the rows loaded so far were rolled back",
+      );
+      expect(stopped.stderr).not.toMatch(/Error\b|\n\s+at /);
+      expect(stopped.code).toBe(1);
+      expect(await new S3Storage(bucket).list("")).toEqual([]);
+      expect(await tablesWithRows()).toEqual([]);
+      // Left as it was: the same restore, let run, fills it.
+      expect((await command("restore", [file], into)).code).toBe(0);
+      expect(await new S3Storage(bucket).list("")).toHaveLength(4);
+      expect(await tablesWithRows()).not.toEqual([]);
+    } finally {
+      s3.stop();
+    }
+  });
 
   it("fails when its database connection is cut mid-table, and leaves no file", { timeout: 60_000 }, async () => {
     const out = folder();

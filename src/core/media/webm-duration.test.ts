@@ -51,6 +51,18 @@ describe("WebM duration", () => {
     expect(webmDuration(withWebmDuration(fixed, 99_000))).toBeCloseTo(99_000, 3);
   });
 
+  it.each([
+    ["a live recording", live(info())],
+    ["a Segment of known size", known(info())],
+    ["a file with a duration already", live(info([0x44, 0x89, 0x88, 0, 0, 0, 0, 0, 0, 0, 0]))],
+  ])("is written the same into any head of %s that holds its Info, the rest following unchanged", (_name, file) => {
+    const whole = withWebmDuration(file, 7_000);
+    const infoEnd = file.length - cluster.length;
+    for (let cut = infoEnd; cut <= file.length; cut++)
+      expect([...withWebmDuration(file.subarray(0, cut), 7_000), ...file.subarray(cut)]).toEqual([...whole]);
+    for (let cut = 0; cut < infoEnd; cut++) expect(() => withWebmDuration(file.subarray(0, cut), 7_000)).toThrow();
+  });
+
   it("overwrites a duration that is already there, in place", () => {
     const file = live(info([0x44, 0x89, 0x88, 0, 0, 0, 0, 0, 0, 0, 0]));
     const fixed = withWebmDuration(file, 5000);

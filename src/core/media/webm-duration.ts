@@ -1,7 +1,9 @@
 // Chrome's MediaRecorder writes WebM files with no duration (it cannot know
 // it while recording), so players cannot seek them. When a recording is
 // finished we know its length: this writes the Duration element into the
-// Segment's Info, in place when there is one, else inserted.
+// Segment's Info, in place when there is one, else inserted. The file's head
+// up to the end of its Info is enough: the rest follows unchanged, so a long
+// recording is patched in its first part and streamed.
 // WebM is EBML: elements of (ID, size, data), IDs and sizes as variable-length integers.
 
 const EBML = 0x1a45dfa3;
@@ -72,8 +74,10 @@ function readUint(bytes: Uint8Array, element: Element): number {
 
 function children(bytes: Uint8Array, parent: Element, end: number): Element[] {
   const found: Element[] = [];
-  for (let at = parent.dataStart; at < end; ) {
-    const child = readElement(bytes, at);
+  for (let at = parent.dataStart; at < Math.min(end, bytes.length); ) {
+    // A head of the file may end inside the next element's ID or size: what came before is all there is.
+    const child = wholeHeader(bytes, at);
+    if (!child) break;
     found.push(child);
     if (child.size === null) break;
     at = child.dataStart + child.size;
@@ -89,6 +93,8 @@ function locateInfo(bytes: Uint8Array) {
   const segmentEnd = segment.size === null ? bytes.length : segment.dataStart + segment.size;
   const info = children(bytes, segment, segmentEnd).find((e) => e.id === INFO);
   if (!info || info.size === null) throw new Error("not a WebM file: its Segment has no Info");
+  // Written as a negation so that a size read past the bytes' end (NaN) is refused too.
+  if (!(info.dataStart + info.size <= bytes.length)) throw new Error("the WebM file's head is cut off inside its Info");
   const fields = children(bytes, info, info.dataStart + info.size);
   const scale = fields.find((e) => e.id === TIMECODE_SCALE);
   return { segment, info, fields, nsPerTick: scale ? readUint(bytes, scale) : 1_000_000 };

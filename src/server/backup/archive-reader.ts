@@ -59,8 +59,8 @@ export class BackupReader {
     return Buffer.from(await this.readInto(name, new Uint8Array(this.entry(name).size)));
   }
 
-  /** The entry's bytes read into `buffer` (at least the entry's size), so one buffer serves entry after entry. */
-  async readInto(name: string, buffer: Uint8Array): Promise<Uint8Array> {
+  /** The entry's bytes read into `buffer` (at least the entry's size). */
+  private async readInto(name: string, buffer: Uint8Array): Promise<Uint8Array> {
     const { offset, size } = this.entry(name);
     const file = await open(this.path, "r");
     try {

@@ -1,5 +1,6 @@
 // A backup's rows into an empty database, in one transaction (all of it or
-// nothing), parents before children, then the sequences where they were.
+// nothing), parents before children, then the sequences where they were;
+// `beforeCommit` (the media) runs inside it, so a failure there undoes the rows too.
 import { pipeline } from "node:stream/promises";
 import type postgres from "postgres";
 import { formatBytes, tableFile, type BackupManifest } from "@/core/backup/manifest";
@@ -11,10 +12,13 @@ export async function loadDatabase(
   reader: BackupReader,
   manifest: BackupManifest,
   progress: (line: string) => void,
+  signal: AbortSignal,
+  beforeCommit: () => Promise<void>,
 ) {
   await sql.begin(async (tx) => {
     await fixTextFormats(tx);
     for (const [i, table] of manifest.tables.entries()) {
+      signal.throwIfAborted();
       const file = tableFile(table.name);
       progress(
         `tables ${i + 1}/${manifest.tables.length} (${table.name}): ${table.rows.toLocaleString("en")} rows, ${formatBytes(reader.size(file))}`,
@@ -28,8 +32,9 @@ export async function loadDatabase(
           .unsafe(`COPY ${quoteIdent(table.name)} (${table.columns.map(quoteIdent).join(", ")}) FROM STDIN`)
           .writable();
         // The file is read as PostgreSQL takes it in: the writable's callbacks are the socket's.
-        await pipeline(reader.stream(file), copy);
+        await pipeline(reader.stream(file), copy, { signal });
       } catch (error) {
+        signal.throwIfAborted();
         throw new Error(
           `Could not load the table ${table.name}: ${error instanceof Error ? error.message : String(error)}`,
         );
@@ -44,5 +49,7 @@ export async function loadDatabase(
     for (const s of manifest.sequences) {
       await tx`SELECT setval(${`public.${quoteIdent(s.name)}`}::regclass, ${s.value}::bigint, ${s.called})`;
     }
+    await beforeCommit();
+    signal.throwIfAborted();
   });
 }

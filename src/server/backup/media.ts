@@ -1,5 +1,6 @@
 // Every object of the media store (finished recordings, and the parts of
 // ones still being recorded) into the backup file, and back.
+import { addAbortSignal } from "node:stream";
 import { mediaFile, type BackupManifest } from "@/core/backup/manifest";
 import type { MediaStorage } from "../media/storage";
 import type { BackupWriter } from "./archive";
@@ -24,16 +25,31 @@ export async function dumpMedia(
   return media;
 }
 
+/**
+ * Each media file streamed from the backup into the store, a chunk at a time
+ * (a recording of any length takes a chunk's memory). `written` hears each
+ * file once it is stored, so a restore that stops can remove them.
+ */
 export async function restoreMedia(
   storage: MediaStorage,
   reader: BackupReader,
   media: BackupManifest["media"],
   progress: (line: string) => void,
+  written: string[],
+  signal: AbortSignal,
 ) {
-  // One buffer, as large as the largest recording, for them all: memory does not follow their number.
-  const buffer = new Uint8Array(media.reduce((most, m) => Math.max(most, reader.size(mediaFile(m.key))), 0));
   for (const [i, { key }] of media.entries()) {
+    signal.throwIfAborted();
     progress(`media files ${i + 1}/${media.length} (${key})`);
-    await storage.put(key, await reader.readInto(mediaFile(key), buffer), contentType(key));
+    const file = mediaFile(key);
+    try {
+      await storage.putStream(key, addAbortSignal(signal, reader.stream(file)), reader.size(file), contentType(key));
+    } catch (error) {
+      signal.throwIfAborted();
+      throw new Error(
+        `Could not restore the media file ${key}: ${error instanceof Error ? error.message : String(error)}`,
+      );
+    }
+    written.push(key);
   }
 }

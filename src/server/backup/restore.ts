@@ -1,5 +1,8 @@
 // `npm run restore`: a backup file into an empty data folder or database.
 // It never overwrites: a target holding any row or media object is refused.
+// All or nothing: the rows commit only once every media file is stored, and a
+// restore that fails or is interrupted before then rolls the rows back and
+// removes the media files it wrote.
 import postgres from "postgres";
 import { MANIFEST_FILE, parseManifest, type BackupManifest } from "@/core/backup/manifest";
 import { checkRestoreLevels } from "@/core/backup/migration-level";
@@ -17,6 +20,8 @@ export interface RestoreOptions {
   media: { storage: MediaStorage; where: string };
   file: string;
   progress: (line: string) => void;
+  /** Aborted (Ctrl+C, a service manager's stop): the restore stops and undoes what it wrote. */
+  signal?: AbortSignal;
 }
 
 export async function restore(
@@ -37,6 +42,10 @@ export async function restore(
     purpose: "restore",
   });
   const sql = postgres(database.url, { max: 1, onnotice: () => {} });
+  const signal = options.signal ?? new AbortController().signal;
+  const written: string[] = [];
+  let loading = false;
+  let committed = false;
   try {
     const full = await tablesWithRows(sql);
     if (full.length) {
@@ -45,23 +54,34 @@ export async function restore(
       );
     }
     checkRestoreLevels(journal, manifest.migrations, await appliedLevel(sql, journal));
+    signal.throwIfAborted();
+    loading = true;
     options.progress(
       `Restoring into ${database.where}: the schema as the backup had it (${manifest.migrations.last ?? "none"})…`,
     );
     await migrateTo(database.url, manifest.migrations.level);
-    await loadDatabase(sql, reader, manifest, options.progress);
+    await loadDatabase(sql, reader, manifest, options.progress, signal, () =>
+      restoreMedia(options.media.storage, reader, manifest.media, options.progress, written, signal),
+    );
+    committed = true;
     if (manifest.migrations.level < journal.length) {
       options.progress(`Migrating from ${manifest.migrations.last ?? "nothing"} up to ${journal.at(-1)!.tag}…`);
       await migrateDatabase(database.url);
     }
-    try {
-      await restoreMedia(options.media.storage, reader, manifest.media, options.progress);
-    } catch (error) {
-      throw new Error(
-        `The database is restored, but not every media file: ${error instanceof Error ? error.message : String(error)}. Empty the data folder or database and ${options.media.where}, then restore again.`,
-      );
-    }
     return { manifest, into: database.where, migration: journal.at(-1)!.tag };
+  } catch (error) {
+    if (committed) throw error;
+    for (const key of written) await options.media.storage.remove(key);
+    const reason = signal.aborted
+      ? (signal.reason as Error).message
+      : error instanceof Error
+        ? error.message
+        : String(error);
+    if (!loading) throw signal.aborted ? new Error(`${reason} Nothing was restored.`) : error;
+    const undone = written.length
+      ? `the rows loaded so far were rolled back and the ${written.length} media files written so far removed`
+      : "the rows loaded so far were rolled back";
+    throw new Error(`${reason} Nothing was restored: ${undone}.`);
   } finally {
     await sql.end({ timeout: 5 });
     await database.close();

@@ -7,7 +7,7 @@ import { eq } from "drizzle-orm";
 import { webmLastFrameMs } from "@/core/media/webm-duration";
 import type { Database } from "@/store/client";
 import { mediaRecordings, trials } from "@/store/schema";
-import { fileKey, joinChunks, playable } from "./recordings";
+import { chunkBytes, chunksToJoin, fileKey, playable } from "./recordings";
 import type { MediaStorage } from "./storage";
 
 export type Recording = typeof mediaRecordings.$inferSelect;
@@ -29,9 +29,9 @@ export async function finishRecording(
       .where(eq(mediaRecordings.id, recordingId))
       .for("update", cutOff ? { skipLocked: true } : {});
     if (r?.status !== "recording") return r ?? null;
-    let joined: Uint8Array;
+    let chunks: { keys: string[]; size: number };
     try {
-      joined = await joinChunks(media.storage, r.storageKey, media.maxBytes, { upToGap: cutOff });
+      chunks = await chunksToJoin(media.storage, r.storageKey, media.maxBytes, { upToGap: cutOff });
     } catch (error) {
       // Nothing arrived, or too much: the server cannot make a file of it. It stays failed, its parts kept.
       if (!cutOff || !(error instanceof TRPCError)) throw error;
@@ -42,14 +42,15 @@ export async function finishRecording(
         .returning();
       return failed!;
     }
-    const durationMs = cutOff ? measuredLength(joined, r) : length.durationMs;
-    const file = playable(joined, r.mimeType, durationMs);
-    await media.storage.put(fileKey(r.storageKey, r.mimeType), file, r.mimeType);
+    const durationMs = cutOff ? await measuredLength(media.storage, chunks, r) : length.durationMs;
+    // Streamed from its parts into one file: a recording of any length takes a part's memory.
+    const file = await playable(media.storage, chunks, r.mimeType, durationMs);
+    await media.storage.putStream(fileKey(r.storageKey, r.mimeType), file.bytes, file.size, r.mimeType);
     const [done] = await tx
       .update(mediaRecordings)
       .set({
         status: "complete",
-        sizeBytes: file.length,
+        sizeBytes: file.size,
         durationMs,
         offsetMs: r.offsetMs ?? (cutOff ? await offsetFromCreation(tx, r) : null),
         cutOff,
@@ -65,12 +66,18 @@ export async function finishRecording(
   return finished;
 }
 
-/** A cut-off WebM's length is its last frame's time; another format's, the time from its start to its last part. */
-function measuredLength(bytes: Uint8Array, r: Recording): number {
+/**
+ * A cut-off WebM's length is its last frame's time; another format's, the
+ * time from its start to its last part. The walk over its frames reads what
+ * arrived as one buffer (a cut-off WebM only; HRI_MEDIA_MAX_MB bounds it).
+ */
+async function measuredLength(storage: MediaStorage, chunks: { keys: string[] }, r: Recording): Promise<number> {
   const byClock = (r.lastPartAt ?? r.createdAt).getTime() - r.createdAt.getTime();
   if (!/webm/.test(r.mimeType)) return byClock;
   try {
-    return webmLastFrameMs(bytes) ?? byClock;
+    const parts: Uint8Array[] = [];
+    for await (const part of chunkBytes(storage, chunks.keys)) parts.push(part);
+    return webmLastFrameMs(Buffer.concat(parts)) ?? byClock;
   } catch {
     return byClock;
   }

@@ -4,25 +4,36 @@
 import { mkdir, open, readdir, readFile, rename, rm, stat } from "node:fs/promises";
 import { dirname, join } from "node:path";
 import type { ByteRange } from "@/core/media/byte-range";
-import { checkKey, webStream, type MediaStorage } from "./storage";
+import { type Chunks, checkKey, exactly, webStream, type MediaStorage } from "./storage";
 
 const missing = (error: unknown) => (error as NodeJS.ErrnoException).code === "ENOENT";
 
 export class LocalStorage implements MediaStorage {
   constructor(private readonly root: string) {}
 
-  async put(key: string, data: Uint8Array) {
+  put(key: string, data: Uint8Array) {
+    return this.putStream(key, [data], data.byteLength);
+  }
+
+  async putStream(key: string, data: Chunks, size: number) {
     const file = join(this.root, checkKey(key));
     await mkdir(dirname(file), { recursive: true });
     const temporary = `${file}.${process.pid}.${Date.now()}.part`;
-    const handle = await open(temporary, "w");
     try {
-      await handle.writeFile(data);
-      await handle.sync();
-    } finally {
-      await handle.close();
+      const handle = await open(temporary, "w");
+      try {
+        for await (const chunk of exactly(data, size, key))
+          for (let done = 0; done < chunk.byteLength; )
+            done += (await handle.write(chunk, done, chunk.byteLength - done)).bytesWritten;
+        await handle.sync();
+      } finally {
+        await handle.close();
+      }
+      await rename(temporary, file);
+    } catch (error) {
+      await rm(temporary, { force: true });
+      throw error;
     }
-    await rename(temporary, file);
   }
 
   async get(key: string) {

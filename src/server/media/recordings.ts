@@ -28,16 +28,16 @@ export async function partArrived(db: Database, recordingId: string, index: numb
 }
 
 /**
- * Joins the chunks in order. A gap (a chunk that never arrived) is refused by
- * naming it, for a recorder that will send it again; `upToGap` joins those
- * before it, for a recording whose recorder has gone.
+ * The chunks to join, in order, and their size together. A gap (a chunk that
+ * never arrived) is refused by naming it, for a recorder that will send it
+ * again; `upToGap` takes those before it, for a recording whose recorder has gone.
  */
-export async function joinChunks(
+export async function chunksToJoin(
   storage: MediaStorage,
   storageKey: string,
   maxBytes: number,
   { upToGap = false } = {},
-): Promise<Uint8Array> {
+): Promise<{ keys: string[]; size: number }> {
   const stored = await storage.list(`${storageKey}/`);
   const index = (key: string) => Number(key.slice(key.lastIndexOf("-") + 1));
   const firstGap = stored.findIndex((key, i) => index(key) !== i);
@@ -56,23 +56,54 @@ export async function joinChunks(
       message: `Parts ${gaps.slice(0, 10).join(", ")} of this recording have not arrived yet; the recorder sends them again when it can.`,
     });
   }
-  const parts = await Promise.all(keys.map((k) => storage.get(k)));
-  const size = parts.reduce((n, p) => n + (p?.length ?? 0), 0);
+  const size = (await Promise.all(keys.map((k) => storage.size(k)))).reduce<number>((n, s) => n + (s ?? 0), 0);
   if (size > maxBytes)
     throw new TRPCError({
       code: "PAYLOAD_TOO_LARGE",
       message: `This recording is ${(size / 1048576).toFixed(0)} MB; the limit is ${(maxBytes / 1048576).toFixed(0)} MB (HRI_MEDIA_MAX_MB).`,
     });
-  const joined = new Uint8Array(size);
-  let at = 0;
-  for (const part of parts) {
-    joined.set(part!, at);
-    at += part!.length;
-  }
-  return joined;
+  return { keys, size };
 }
 
-/** WebM gets its duration written in, so players can seek; other formats carry their own. */
-export function playable(bytes: Uint8Array, mimeType: string, durationMs: number): Uint8Array {
-  return /webm/.test(mimeType) ? withWebmDuration(bytes, durationMs) : bytes;
+async function chunk(storage: MediaStorage, key: string): Promise<Buffer> {
+  const bytes = await storage.get(key);
+  if (!bytes) throw new Error(`The part ${key} of this recording went missing while it was being finished.`);
+  return bytes;
+}
+
+/** The chunks' bytes in order, one chunk in memory at a time. */
+export async function* chunkBytes(storage: MediaStorage, keys: string[]): AsyncGenerator<Uint8Array> {
+  for (const key of keys) yield await chunk(storage, key);
+}
+
+/**
+ * The finished file as chunks, with its size. WebM gets its duration written
+ * into its head (the first chunk, or the first few until they hold its Info),
+ * so players can seek; other formats carry their own.
+ */
+export async function playable(
+  storage: MediaStorage,
+  chunks: { keys: string[]; size: number },
+  mimeType: string,
+  durationMs: number,
+): Promise<{ size: number; bytes: AsyncIterable<Uint8Array> }> {
+  if (!/webm/.test(mimeType)) return { size: chunks.size, bytes: chunkBytes(storage, chunks.keys) };
+  let head = Buffer.alloc(0);
+  for (const [i, key] of chunks.keys.entries()) {
+    head = Buffer.concat([head, await chunk(storage, key)]);
+    let patched: Uint8Array;
+    try {
+      patched = withWebmDuration(head, durationMs);
+    } catch (error) {
+      if (i === chunks.keys.length - 1) throw error;
+      continue;
+    }
+    const rest = chunkBytes(storage, chunks.keys.slice(i + 1));
+    async function* file() {
+      yield patched;
+      yield* rest;
+    }
+    return { size: chunks.size - head.length + patched.length, bytes: file() };
+  }
+  throw new Error("A recording with no parts cannot be finished.");
 }

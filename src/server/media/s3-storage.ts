@@ -2,7 +2,29 @@
 // The bucket is made on first use.
 import { Client } from "minio";
 import type { ByteRange } from "@/core/media/byte-range";
-import { checkKey, webStream, type MediaStorage } from "./storage";
+import { type Chunks, checkKey, exactly, webStream, type MediaStorage } from "./storage";
+
+/** An upload part: S3 takes at least 5 MB a part (but the last) and at most 10,000 parts. */
+const PART_BYTES = 8 * 1024 * 1024;
+const MOST_PARTS = 10_000;
+
+/** The chunks gathered into parts of `partSize` (the last shorter), in one buffer reused once a part is taken. */
+async function* inParts(chunks: AsyncIterable<Uint8Array>, partSize: number) {
+  const part = Buffer.alloc(partSize);
+  let held = 0;
+  for await (const chunk of chunks)
+    for (let at = 0; at < chunk.byteLength; ) {
+      const taken = Math.min(partSize - held, chunk.byteLength - at);
+      part.set(chunk.subarray(at, at + taken), held);
+      held += taken;
+      at += taken;
+      if (held === partSize) {
+        yield part;
+        held = 0;
+      }
+    }
+  if (held) yield part.subarray(0, held);
+}
 
 const missing = (error: unknown) => ["NoSuchKey", "NotFound"].includes((error as { code?: string }).code ?? "");
 
@@ -43,11 +65,46 @@ export class S3Storage implements MediaStorage {
     return this.bucketReady;
   }
 
-  async put(key: string, data: Uint8Array, contentType: string) {
+  put(key: string, data: Uint8Array, contentType: string) {
+    return this.putStream(key, [data], data.byteLength, contentType);
+  }
+
+  /** One request for what fits a part; a multipart upload, part by part, for more, aborted if the stream fails. */
+  async putStream(key: string, data: Chunks, size: number, contentType: string) {
+    const name = checkKey(key);
     await this.bucket();
-    await this.client.putObject(this.options.bucket, checkKey(key), Buffer.from(data), data.byteLength, {
-      "Content-Type": contentType,
-    });
+    const partSize = Math.max(PART_BYTES, Math.ceil(size / MOST_PARTS));
+    const parts = inParts(exactly(data, size, key), partSize);
+    const headers = { "Content-Type": contentType };
+    if (size <= partSize) {
+      let whole = Buffer.alloc(0);
+      for await (const part of parts) whole = Buffer.from(part);
+      await this.client.putObject(this.options.bucket, name, whole, size, headers);
+      return;
+    }
+    const uploadID = await this.client.initiateNewMultipartUpload(this.options.bucket, name, headers);
+    try {
+      const etags: Array<{ part: number; etag: string }> = [];
+      for await (const part of parts) {
+        const partNumber = etags.length + 1;
+        const { etag } = await this.client.uploadPart(
+          {
+            bucketName: this.options.bucket,
+            objectName: name,
+            uploadID,
+            partNumber,
+            headers: { "Content-Length": part.length },
+          },
+          part,
+        );
+        etags.push({ part: partNumber, etag });
+      }
+      await this.client.completeMultipartUpload(this.options.bucket, name, uploadID, etags);
+    } catch (error) {
+      // Its parts would stay in the bucket, unseen but kept.
+      await this.client.abortMultipartUpload(this.options.bucket, name, uploadID).catch(() => {});
+      throw error;
+    }
   }
 
   async get(key: string) {

@@ -4,9 +4,20 @@
 import { Readable } from "node:stream";
 import type { ByteRange } from "@/core/media/byte-range";
 
+/** Bytes in chunks: a Node stream, a generator, an array. */
+export type Chunks = AsyncIterable<Uint8Array> | Iterable<Uint8Array>;
+
 export interface MediaStorage {
   /** Stores bytes under a key, replacing what was there; durable when it resolves. */
   put(key: string, data: Uint8Array, contentType: string): Promise<void>;
+  /**
+   * Stores `size` bytes read from `data` as it yields them, pulling the next
+   * chunk only once the last is written (a recording of any length takes a
+   * chunk's memory, or one upload part's). The object appears whole when it
+   * resolves, or not at all: a stream that fails, or yields other than `size`
+   * bytes, leaves what was under the key as it was.
+   */
+  putStream(key: string, data: Chunks, size: number, contentType: string): Promise<void>;
   /** The bytes under a key, or null when there are none. */
   get(key: string): Promise<Buffer | null>;
   /** The size in bytes of what is under a key, or null when there is nothing. */
@@ -32,6 +43,21 @@ export function checkKey(key: string): string {
     );
   }
   return key;
+}
+
+/** The stream's chunks, refused in plain words once it proves longer or shorter than it was said to be. */
+export async function* exactly(data: Chunks, size: number, key: string) {
+  let seen = 0;
+  const refuse = () =>
+    new Error(
+      `The bytes for the media file "${key}" were ${seen > size ? "more" : "fewer"} than the ${size} expected.`,
+    );
+  for await (const chunk of data) {
+    seen += chunk.byteLength;
+    if (seen > size) throw refuse();
+    yield chunk;
+  }
+  if (seen !== size) throw refuse();
 }
 
 /** A Node stream as the web stream both stores hand out (Node's and the DOM's stream types differ only on paper). */
