@@ -120,7 +120,7 @@ describe("what a bridge's status frame refused", () => {
 });
 
 describe("an action's topic the bridge would not carry", () => {
-  it.each<[string, string | null, string, string]>([
+  it.each<[string, string, string, string]>([
     [
       "std_msgs/msg/String",
       "std_msgs/msg/String is not a valid type string",
