@@ -112,7 +112,7 @@ describe("silent topics, against the recorded ROS 1 rosbridge", () => {
     ros1.transport.subscribe("/joint_states", "sensor_msgs/JointState", (m) => joints.push(m), { throttleRate: 100 });
     await expect.poll(() => ros2.problems, { timeout: 10_000 }).toHaveLength(1);
     expect(ros2.problems).toEqual([
-      "The robot never sent /joint_states (expected about every 0.1 s; nothing in 1 s): the usual cause is a ROS 1 bridge, which refuses the ROS 2 type name sensor_msgs/msg/JointState without telling us (it names it sensor_msgs/JointState).",
+      "The robot never sent /joint_states (expected about every 0.1 s; nothing in 1 s): the usual causes are a ROS 1 bridge, which refuses the ROS 2 type name sensor_msgs/msg/JointState without telling us (it names it sensor_msgs/JointState), or nothing on the robot publishing /joint_states.",
     ]);
     expect(ros2.transport.health().state).toBe("connected");
     // Twenty messages at the recorded 10 Hz span two silence windows of 1 s.
@@ -145,7 +145,7 @@ describe("silent topics, against the recorded ROS 1 rosbridge", () => {
     const { transport, problems } = await connect(url, 600_000);
     expect(await transport.dispatch({ ...say, timeout: 300 }, { text: "hi" })).toMatchObject({ status: "timed_out" });
     expect(problems).toEqual([
-      "The robot never sent /speech_done (expected after each action that waits for it; an action waited for it until its timeout): the usual cause is a ROS 1 bridge, which refuses the ROS 2 type name std_msgs/msg/String without telling us (it names it std_msgs/String).",
+      "The robot never sent /speech_done (expected after each action that waits for it; an action waited for it until its timeout): the usual causes are a ROS 1 bridge, which refuses the ROS 2 type name std_msgs/msg/String without telling us (it names it std_msgs/String), or nothing on the robot publishing /speech_done.",
     ]);
   });
 });

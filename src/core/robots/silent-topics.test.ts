@@ -27,7 +27,7 @@ describe("which declared topics are silent, and why", () => {
       "a ROS 2 type name never heard: the ROS 1 bridge is the usual cause",
       joints,
       5_000,
-      "The robot never sent /joint_states (expected about every 0.1 s; nothing in 5 s): the usual cause is a ROS 1 bridge, which refuses the ROS 2 type name sensor_msgs/msg/JointState without telling us (it names it sensor_msgs/JointState).",
+      "The robot never sent /joint_states (expected about every 0.1 s; nothing in 5 s): the usual causes are a ROS 1 bridge, which refuses the ROS 2 type name sensor_msgs/msg/JointState without telling us (it names it sensor_msgs/JointState), or nothing on the robot publishing /joint_states.",
     ],
     [
       "a ROS 1 type name never heard: nothing publishes it",
@@ -64,7 +64,7 @@ describe("which declared topics are silent, and why", () => {
       "a completion topic an action waited on to its timeout, never heard",
       { ...done, waitedOut: true },
       60_000,
-      "The robot never sent /speech_done (expected after each action that waits for it; an action waited for it until its timeout): the usual cause is a ROS 1 bridge, which refuses the ROS 2 type name std_msgs/msg/String without telling us (it names it std_msgs/String).",
+      "The robot never sent /speech_done (expected after each action that waits for it; an action waited for it until its timeout): the usual causes are a ROS 1 bridge, which refuses the ROS 2 type name std_msgs/msg/String without telling us (it names it std_msgs/String), or nothing on the robot publishing /speech_done.",
     ],
     [
       "a completion topic that has answered before: a timeout is the action's own",

@@ -70,7 +70,7 @@ function ros1Name(messageType: string): string | null {
 function usualCause(t: WatchedTopic): string {
   const ros1 = ros1Name(t.messageType);
   if (ros1)
-    return `the usual cause is a ROS 1 bridge, which refuses the ROS 2 type name ${t.messageType} without telling us (it names it ${ros1})`;
+    return `the usual causes are a ROS 1 bridge, which refuses the ROS 2 type name ${t.messageType} without telling us (it names it ${ros1}), or nothing on the robot publishing ${t.topic}`;
   return `the usual cause is that nothing on the robot publishes ${t.topic}, or publishes it as another type than ${t.messageType}`;
 }
 
