@@ -85,6 +85,11 @@ export function RobotsPage() {
                   <div className="mt-1 text-xs text-slate-500">
                     {r.lastSeenAt ? `last seen ${new Date(r.lastSeenAt).toLocaleString()}` : "never seen by a trial"}
                   </div>
+                  {r.problems.map((problem) => (
+                    <p key={problem} className="mt-1 max-w-md text-xs text-amber-800" data-testid="robot-problem">
+                      {problem}
+                    </p>
+                  ))}
                 </Td>
                 <Td className="text-xs text-slate-600">
                   {[r.rosbridgeUrl, r.sshHost && `SSH ${r.sshUser}@${r.sshHost}:${r.sshPort}`, r.httpUrl]

@@ -9,7 +9,10 @@
 //   logged): a bridge that stops answering is given up within
 //   heartbeatTimeoutMs + heartbeatEveryMs, its socket terminated;
 // - a `status` frame of level error or warning (servers that send them) is
-//   told to the trial as the robot's problem.
+//   told to the trial as the robot's problem;
+// - a subscribed topic that stays silent past its expected rate, or whose
+//   subscription the bridge refused, is told in plain words (topic-silence.ts):
+//   a ROS 1 bridge refuses ROS 2 type names and says so only in its log.
 // Server state belongs to one connection (transcript 09): after every
 // reconnect a fresh roslib.Ros is made and state subscriptions are re-sent.
 import * as ROSLIB from "roslib";
@@ -26,6 +29,7 @@ import {
   type PluginAction,
 } from "../../core/plugins";
 import { linkProblem } from "../../core/robots/link-problem";
+import { refusalOf, refusedAdvertise, type WatchedTopic } from "../../core/robots/silent-topics";
 import { DoneTopics } from "./done-topics";
 import {
   addressProblem,
@@ -38,6 +42,7 @@ import {
   type Backoff,
 } from "./link";
 import { holdThenStop, readOnce, sendGoal } from "./ros2-goal";
+import { TopicSilence } from "./topic-silence";
 import type { DispatchOutcome } from "./transport";
 import { WatchedSocket } from "./watched-socket";
 
@@ -49,15 +54,19 @@ export interface RosbridgeOptions {
   backoffMs?: Backoff;
   /** The robot's plugin, for what an action needs of the robot as a whole (its top turning speed). */
   plugin?: Pick<Plugin, "actions">;
+  /** A topic is called silent after at least this long with nothing (default SILENT_FLOOR_MS). */
+  silentFloorMs?: number;
 }
 
 interface StateSubscription {
   topic: string;
   messageType: string;
   throttleRate: number;
+  kind: WatchedTopic["kind"];
   onMessage: (message: unknown) => void;
-  /** The roslib topic on the live connection. */
+  /** The roslib topic on the live connection, and what it calls there. */
   current?: ROSLIB.Topic;
+  heard?: (message: unknown) => void;
 }
 
 export class RosbridgeTransport extends LinkedTransport {
@@ -67,12 +76,14 @@ export class RosbridgeTransport extends LinkedTransport {
   private timers = new Set<NodeJS.Timeout>();
   private socket: WatchedSocket | null = null;
   private readonly done = new DoneTopics((topic, messageType, onMessage) =>
-    this.subscribe(topic, messageType, onMessage),
+    this.watch({ topic, messageType, onMessage, throttleRate: 0, kind: "completion" }),
   );
   private waiting = new Set<() => void>();
+  private readonly silence: TopicSilence;
 
   constructor(private readonly options: RosbridgeOptions) {
     super();
+    this.silence = new TopicSilence((problem) => this.tell(problem), options.silentFloorMs);
   }
 
   connect(): Promise<void> {
@@ -150,7 +161,10 @@ export class RosbridgeTransport extends LinkedTransport {
     const detail = (confirmation: Confirmation) => ({ topic: outgoing.topic, confirmation });
     if (done && rule.kind === "done_topic") {
       const answer = await done.answer;
-      if (answer === "timeout") return { status: "timed_out", afterMs: Date.now() - started };
+      if (answer === "timeout") {
+        this.silence.waitedOut(rule.topic);
+        return { status: "timed_out", afterMs: Date.now() - started };
+      }
       if (answer === "lost")
         return {
           status: "failed",
@@ -195,18 +209,23 @@ export class RosbridgeTransport extends LinkedTransport {
     onMessage: (message: unknown) => void,
     options: { throttleRate?: number } = {},
   ) {
-    const subscription: StateSubscription = { topic, messageType, onMessage, throttleRate: options.throttleRate ?? 0 };
+    return this.watch({ topic, messageType, onMessage, throttleRate: options.throttleRate ?? 0, kind: "state" });
+  }
+
+  private watch(subscription: StateSubscription) {
     this.subscriptions.add(subscription);
     if (this.ros && this.status.state === "connected") this.listen(this.ros, subscription);
     return () => {
       this.subscriptions.delete(subscription);
-      if (this.status.state === "connected") subscription.current?.unsubscribe(subscription.onMessage);
+      if (this.status.state === "connected") subscription.current?.unsubscribe(subscription.heard);
+      if (![...this.subscriptions].some((s) => s.topic === subscription.topic)) this.silence.forget(subscription.topic);
     };
   }
 
   async close() {
     this.setState("closed");
     this.timers.forEach(clearTimeout);
+    this.silence.stop();
     this.socket?.terminate("the connection was closed");
     this.done.lose();
     this.ros = null;
@@ -224,6 +243,7 @@ export class RosbridgeTransport extends LinkedTransport {
       if (this.ros !== ros || this.status.state === "closed") return;
       this.ros = null;
       this.socket = null;
+      this.silence.reset();
       this.setState("disconnected", reason);
       this.done.lose();
       this.reconnectLater();
@@ -231,7 +251,7 @@ export class RosbridgeTransport extends LinkedTransport {
     const ros = new ROSLIB.Ros({
       transportFactory: async (url) => {
         socket = new WatchedSocket(url, liveness, lost);
-        socket.on("message", (message) => this.bridgeSaid(message as { op?: string; level?: string; msg?: string }));
+        socket.on("message", (message) => this.bridgeSaid(message as { op?: unknown; level?: unknown; msg?: unknown }));
         this.socket = socket;
         return socket;
       },
@@ -244,6 +264,7 @@ export class RosbridgeTransport extends LinkedTransport {
       if (this.ros !== ros) return;
       this.status.attempts = 0;
       this.setState("connected");
+      this.silence.reset();
       this.subscriptions.forEach((s) => this.listen(ros, s));
       this.waiting.forEach((wake) => wake());
     });
@@ -256,11 +277,22 @@ export class RosbridgeTransport extends LinkedTransport {
     return { ...super.health(), lastHeartbeatMs: this.socket?.lastRoundTripMs ?? this.status.lastHeartbeatMs };
   }
 
-  /** A `status` frame (rosbridge's protocol; not every server sends them): errors and warnings are the robot's problems. */
-  private bridgeSaid(message: { op?: string; level?: string; msg?: string }) {
+  /**
+   * A `status` frame (rosbridge's protocol; the recorded servers never send one): a refused subscription
+   * or advertise is told as what the wizard will miss; other errors and warnings as the bridge said them.
+   */
+  private bridgeSaid(message: { op?: unknown; level?: unknown; msg?: unknown }) {
     if (message.op !== "status" || (message.level !== "error" && message.level !== "warning")) return;
+    const refusal = refusalOf(message);
+    if (refusal?.op === "subscribe" && this.silence.refused(refusal.topic, refusal.text)) return;
+    if (refusal?.op === "advertise") {
+      const advertised = [...this.topics.keys()].find((key) => key.startsWith(`${refusal.topic}:`));
+      return this.tell(
+        refusedAdvertise(refusal.topic, advertised?.slice(refusal.topic.length + 1) ?? null, refusal.text),
+      );
+    }
     this.tell(
-      `the robot's bridge reported ${message.level === "error" ? "an error" : "a warning"}: ${message.msg ?? "(no text)"}`,
+      `the robot's bridge reported ${message.level === "error" ? "an error" : "a warning"}: ${typeof message.msg === "string" ? message.msg : "(no text)"}`,
     );
   }
 
@@ -337,6 +369,11 @@ export class RosbridgeTransport extends LinkedTransport {
   }
 
   private listen(ros: ROSLIB.Ros, s: StateSubscription) {
+    this.silence.listening(s.topic, s.messageType, s.kind, s.throttleRate);
+    s.heard = (message) => {
+      this.silence.heard(s.topic);
+      s.onMessage(message);
+    };
     s.current = new ROSLIB.Topic({
       ros,
       name: s.topic,
@@ -344,7 +381,7 @@ export class RosbridgeTransport extends LinkedTransport {
       throttle_rate: s.throttleRate,
       reconnect_on_close: false,
     });
-    s.current.subscribe(s.onMessage);
+    s.current.subscribe(s.heard);
   }
 
   /** Resolves with the live connection, or null once the deadline passes. */

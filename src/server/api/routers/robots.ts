@@ -1,12 +1,13 @@
 // The robot registry, for administrators: each physical robot with its plugin,
 // its ways in (rosbridge, SSH, HTTP), where its SSH secret is read (never the
 // secret), the studies it is available to, and its live health as the
-// runtime last wrote it.
+// runtime last wrote it, with what its side reported during its live trial
+// (a silent topic, a refused subscription), read from that trial's log.
 import { TRPCError } from "@trpc/server";
 import { and, asc, eq, inArray } from "drizzle-orm";
 import { z } from "zod";
 import { parseSecretReference, robotSecretNames } from "@/core/robots/secrets";
-import { robotStudies, robots, studies, trials } from "@/store/schema";
+import { robotStudies, robots, studies, trialEvents, trials } from "@/store/schema";
 import { audit } from "../../audit";
 import { guarded, router } from "../trpc";
 import { id, text } from "../validation";
@@ -67,6 +68,9 @@ async function setStudies(db: Parameters<typeof audit>[0], robotId: string, stud
   if (unique.length) await db.insert(robotStudies).values(unique.map((studyId) => ({ robotId, studyId })));
 }
 
+/** A robot's reported problems shown at most: the admin's table is a glance, the trial's log has them all. */
+const PROBLEMS_SHOWN = 3;
+
 const details = ({ studyIds, ...input }: RobotInput) => ({ ...input, studies: studyIds.length });
 
 export const robotsRouter = router({
@@ -78,14 +82,36 @@ export const robotsRouter = router({
       .innerJoin(studies, eq(studies.id, robotStudies.studyId))
       .orderBy(asc(studies.title));
     const live = await ctx.db
-      .select({ robotId: trials.assignedRobotId })
+      .select({ robotId: trials.assignedRobotId, trialId: trials.id })
       .from(trials)
       .where(inArray(trials.status, ["in_progress", "paused"]));
     const driven = new Set(live.map((l) => l.robotId));
+    const reported = live.length
+      ? await ctx.db
+          .select({ trialId: trialEvents.trialId, payload: trialEvents.payload })
+          .from(trialEvents)
+          .where(
+            and(
+              inArray(
+                trialEvents.trialId,
+                live.map((l) => l.trialId),
+              ),
+              eq(trialEvents.type, "robot.problem"),
+            ),
+          )
+          .orderBy(asc(trialEvents.seq))
+      : [];
+    /** The last few different things the robot's side reported during its live trial, oldest first. */
+    const problemsOf = (robotId: string) => {
+      const trialIds = new Set(live.filter((l) => l.robotId === robotId).map((l) => l.trialId));
+      const texts = reported.flatMap((r) => (trialIds.has(r.trialId) ? [(r.payload as { text: string }).text] : []));
+      return [...new Set(texts.reverse())].slice(0, PROBLEMS_SHOWN).reverse();
+    };
     return rows.map(({ seededFrom, ...robot }) => ({
       ...robot,
       seeded: seededFrom !== null,
       inLiveTrial: driven.has(robot.id),
+      problems: problemsOf(robot.id),
       studies: availability.filter((a) => a.robotId === robot.id).map(({ studyId, title }) => ({ id: studyId, title })),
     }));
   }),
