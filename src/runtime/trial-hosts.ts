@@ -41,6 +41,8 @@ type Held = { robotId: string; release: () => void };
 export interface TrialHosts {
   /** The trial's host in this process, or null while another process owns the trial. */
   get(trialId: string): Promise<TrialHost | null>;
+  /** The trial's host if this process runs it already; never opens it (a command forwarded to its owner). */
+  owned(trialId: string): Promise<TrialHost | null>;
   closeAll(): Promise<void>;
   /** How many trials this process holds open now (with their robot links and locks). */
   readonly size: number;
@@ -214,6 +216,7 @@ export function trialHosts(
       }
       return host;
     },
+    owned: async (trialId) => (await hosts.get(trialId)?.catch(() => null)) ?? null,
     get size() {
       return hosts.size;
     },

@@ -131,4 +131,49 @@ describe.sequential("several runtimes, many robots", () => {
     for (const [i, trialId] of ids.entries())
       await expect.poll(async () => published(await simOf(trialId), "/speech")).toEqual([`Hello ${i}`]);
   });
+
+  it("serves, after a restart, every new wizard: commands of trials the other runtime runs reach the robot and are acked", {
+    timeout: 90_000,
+  }, async () => {
+    const killed = runtimes[0]!.child;
+    await new Promise((exited) => {
+      killed.once("exit", exited);
+      killed.kill("SIGKILL");
+    });
+    runtimes[0] = await startRuntime(url, SECRET);
+    // Every trial through the restarted runtime: the other's (odd) through it, the killed one's taken over.
+    const again = await Promise.all(opened.map(({ trialId }) => open(runtimes[0]!.url, trialId)));
+    // Into the second step, then its line.
+    const answers = await Promise.all(
+      again.map(async (s, i) => [
+        await s.command(`on-${i}`, { kind: "next" }),
+        await s.command(`bye-${i}`, { kind: "next" }),
+      ]),
+    );
+    expect(answers.flat().map((a) => [a.type, a.reason])).toEqual(answers.flat().map(() => ["ack", undefined]));
+    for (const [i, { trialId }] of opened.entries())
+      await expect
+        .poll(async () => published(await simOf(trialId), "/speech"))
+        .toEqual([`Hello ${i}`, `Hello ${i}, goodbye`]);
+    expect(again.flatMap((s) => s.messages).filter((m) => /reload/i.test(JSON.stringify(m)))).toEqual([]);
+  });
+
+  it("stops the robot of a trial the other runtime runs, straight from the runtime the stop reached and through the owner", {
+    timeout: 30_000,
+  }, async () => {
+    const { trialId } = opened[1]!;
+    const sim = await simOf(trialId);
+    const wizard = await open(runtimes[0]!.url, trialId);
+    const stopped = await wizard.command("stop", { kind: "emergency_stop" });
+    expect(stopped).toMatchObject({ type: "ack" });
+    await wizard.next((m) => m.type === "halted" && m.requestId === "stop");
+    // Two links sent it: the one this runtime keeps for stops, and the owner's.
+    const senders = () =>
+      new Set(
+        sim.received
+          .filter((r) => r.message.op === "publish" && r.message.topic === "/speech_stop")
+          .map((r) => r.connection),
+      ).size;
+    await expect.poll(senders).toBe(2);
+  });
 });
