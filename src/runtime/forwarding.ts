@@ -8,6 +8,8 @@ import type { CommandResult } from "./trial-host";
 
 const REQUESTS = "hri_trial_commands";
 const ANSWERS = "hri_trial_answers";
+/** Under PostgreSQL's 8,000-byte limit on a notification (the text is ASCII): a larger message goes in parts. */
+const PART_CHARS = 7_000;
 
 /** Longer than an owner takes to log a command (its log deadline), so an owner at work is waited for. */
 const ANSWER_MS = 5_000;
@@ -34,20 +36,36 @@ export async function commandForwarding(
 ) {
   const self = crypto.randomUUID();
   const waiting = new Map<string, (answer: ForwardAnswer) => void>();
-  const requests = await sql.listen(REQUESTS, (payload) => {
-    const request = JSON.parse(payload) as Request;
-    void serve(request)
-      .then((answer) => {
-        if (answer) return notify(ANSWERS, { id: request.id, to: request.from, answer } satisfies Answer);
-      })
-      .catch((error: unknown) => console.error(`[runtime] a forwarded command was not answered: ${String(error)}`));
-  });
-  const answers = await sql.listen(ANSWERS, (payload) => {
-    const { id, to, answer } = JSON.parse(payload) as Answer;
-    if (to === self) waiting.get(id)?.(answer);
-  });
+  const requests = await sql.listen(
+    REQUESTS,
+    whole<Request>((request) => {
+      void serve(request)
+        .then((answer) => {
+          if (answer) return notify(ANSWERS, { id: request.id, to: request.from, answer } satisfies Answer);
+        })
+        .catch((error: unknown) => console.error(`[runtime] a forwarded command was not answered: ${String(error)}`));
+    }),
+  );
+  const answers = await sql.listen(
+    ANSWERS,
+    whole<Answer>(({ id, to, answer }) => {
+      if (to === self) waiting.get(id)?.(answer);
+    }),
+  );
+  /** The message in numbered parts ("key index count text"), sent in one statement. */
   const notify = async (channel: string, message: unknown) => {
-    await sql`select pg_notify(${channel}, ${JSON.stringify(message)})`;
+    // Every character past ASCII escaped, so that a part is cut between characters, never inside one.
+    const text = JSON.stringify(message).replace(
+      /[\u007f-\uffff]/g,
+      (c) => `\\u${c.charCodeAt(0).toString(16).padStart(4, "0")}`,
+    );
+    const key = crypto.randomUUID();
+    const count = Math.max(1, Math.ceil(text.length / PART_CHARS));
+    const parts = Array.from(
+      { length: count },
+      (_, i) => `${key} ${i} ${count} ${text.slice(i * PART_CHARS, (i + 1) * PART_CHARS)}`,
+    );
+    await sql`select pg_notify(${channel}, p) from unnest(${parts}::text[]) as p`;
   };
   return {
     /** The owner's answer, or null when no process answered in time (its owner may have gone). */
@@ -72,3 +90,17 @@ export async function commandForwarding(
 }
 
 export type CommandForwarding = Awaited<ReturnType<typeof commandForwarding>>;
+
+/** A listener of messages sent in parts: each is handed on once its last part is in. */
+function whole<T>(handle: (message: T) => void) {
+  const partial = new Map<string, string[]>();
+  return (payload: string) => {
+    const [key = "", index = "0", count = "1"] = payload.split(" ", 3);
+    const text = payload.slice(key.length + index.length + count.length + 3);
+    const parts = partial.get(key) ?? [];
+    parts[Number(index)] = text;
+    if (parts.filter((p) => p !== undefined).length < Number(count)) return void partial.set(key, parts);
+    partial.delete(key);
+    handle(JSON.parse(parts.join("")) as T);
+  };
+}

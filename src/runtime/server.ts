@@ -356,7 +356,9 @@ export function startRuntimeServer({
       const taken = answer ? null : await hosts.get(claims.trialId);
       if (taken) result = await carryOut(db, taken, claims.trialId, access, message, verdict.claim, tellHalted);
       else if (!answer)
-        return reject("The runtime process running this trial did not answer: nothing was done. Try again.");
+        return reject(
+          "The runtime process running this trial did not answer in time: the trial's log shows whether this was done.",
+        );
       else {
         if (answer.halted) tellHalted();
         result = answer;

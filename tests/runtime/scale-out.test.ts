@@ -85,13 +85,15 @@ describe.sequential("several runtime processes", () => {
       m.type === "events" ? (m.events as Array<{ seq: number }>).map((e) => e.seq) : [],
     );
     expect(seen).toEqual([1, 2, 3]);
-    // A wizard whose page reached the other process: the command goes to the owner, which logs and acks it.
+    // A wizard whose page reached the other process: the command goes to the owner, which logs and acks it,
+    // a long one (in several notifications) with every character as it was written.
     const elsewhere = await connectTrial(b.url, token("wizard"));
-    expect(await elsewhere.command("r3", { kind: "note", text: "Asked through the other runtime" })).toMatchObject({
-      type: "ack",
-      seqs: [4],
-    });
-    await wizard.next((m) => m.type === "events" && (m.events as Array<{ seq: number }>).some((e) => e.seq === 4));
+    const text = "ça va? 😀 ".repeat(490);
+    expect(await elsewhere.command("r3", { kind: "note", text })).toMatchObject({ type: "ack", seqs: [4] });
+    const logged = await wizard.next(
+      (m) => m.type === "events" && (m.events as Array<{ seq: number }>).some((e) => e.seq === 4),
+    );
+    expect(JSON.stringify(logged)).toContain(JSON.stringify(text).slice(1, -1));
     wizard.close();
     observer.close();
     elsewhere.close();
