@@ -1,12 +1,14 @@
 // A wizard's command, already allowed by their access, carried out by the
 // trial's host in this process: from the wizard's own socket, or forwarded by
 // another process whose socket it came on (forwarding.ts). One path for both.
-import type { TrialAccess } from "@/core/access/trial-socket";
-import type { ClientMessage } from "@/core/socket/messages";
+import { commandVerdict, lostAccess, type TrialAccess } from "@/core/access/trial-socket";
+import { parseClientMessage, type ClientMessage } from "@/core/socket/messages";
 import type { Database } from "@/store/client";
 import { logUnexpected } from "@/store/error-reference";
-import { claimTrial, isRecordingOf } from "./access";
+import { claimTrial, isRecordingOf, loadTrialAccess } from "./access";
+import type { ForwardAnswer, Forwarded } from "./forwarding";
 import type { CommandResult, TrialHost } from "./trial-host";
+import type { TrialHosts } from "./trial-hosts";
 
 export type CommandMessage = Extract<ClientMessage, { type: "command" }>;
 
@@ -48,4 +50,27 @@ export async function carryOut(
     };
   });
   return { ...result, claimed };
+}
+
+/** Commands other processes forward: carried out if this process runs the trial, checked as on its own socket. */
+export function forwardedCommands(db: Database, hosts: TrialHosts) {
+  return async (request: Forwarded): Promise<ForwardAnswer | null> => {
+    const host = await hosts.owned(request.trialId);
+    if (!host) return null;
+    const parsed = parseClientMessage(
+      JSON.stringify({ type: "command", requestId: request.requestId, retry: request.retry, command: request.command }),
+    );
+    if (!parsed.ok || parsed.message.type !== "command")
+      return { ok: false, reason: parsed.ok ? "That is not a command." : parsed.reason };
+    const access = await loadTrialAccess(db, request.trialId, request.userId);
+    const lost = access ? lostAccess(access) : "This trial no longer exists.";
+    if (lost || !access) return { ok: false, reason: lost ?? "" };
+    const verdict = commandVerdict(access, parsed.message.command.kind);
+    if (!verdict.allow) return { ok: false, reason: verdict.reason };
+    let halted = false;
+    const result = await carryOut(db, host, request.trialId, access, parsed.message, verdict.claim, () => {
+      halted = true;
+    });
+    return { ...result, halted };
+  };
 }

@@ -12,7 +12,8 @@ import type { LiveRobotState } from "@/core/robots/live-state";
 import { pluginRobot, unavailableRobot } from "./robot-link";
 import { purgeSpentTokens, watchAccess } from "./access";
 import { eventRelay } from "./relay";
-import { commandForwarding, type ForwardAnswer, type Forwarded } from "./forwarding";
+import { commandForwarding } from "./forwarding";
+import { forwardedCommands } from "./carry-out";
 import { stopLinks } from "./stop-links";
 import { simulatorReplays } from "./replay";
 import { startRuntimeServer } from "./server";
@@ -66,8 +67,7 @@ const relay = await eventRelay(db, sql);
 // A trial another process runs: its wizards' stops go straight to the robot from here, and their
 // commands to the owner through PostgreSQL.
 const stops = stopLinks(db, (plugin, robot) => linkFor(plugin, robot).link);
-let serveForwarded: (request: Forwarded) => Promise<ForwardAnswer | null> = async () => null;
-const forwarding = await commandForwarding(sql, (request) => serveForwarded(request));
+const forwarding = await commandForwarding(sql, forwardedCommands(db, hosts));
 // Replays go to simulated robots only, taken as trials take theirs: never one a trial or replay holds.
 const replays = simulatorReplays(db, hosts.claims);
 const runtime = startRuntimeServer({
@@ -84,7 +84,6 @@ const runtime = startRuntimeServer({
   trustedProxies: config.HRI_TRUSTED_PROXIES,
 });
 announceRobot = runtime.announceRobot;
-serveForwarded = runtime.serveForwarded;
 announceRobotState = runtime.announceRobotState;
 // Membership, role, blinding and assigned-wizard changes reach open sockets at once.
 const access = await watchAccess(sql, runtime.accessChanged, runtime.recheckAll);

@@ -29,7 +29,7 @@ import {
 import { beforeHelloRefusal, LARGEST_FRAME_BYTES, sizeRefusal } from "@/core/socket/limits";
 import { loadTrialAccess, spendToken } from "./access";
 import { carryOut } from "./carry-out";
-import type { CommandForwarding, ForwardAnswer, Forwarded } from "./forwarding";
+import type { CommandForwarding } from "./forwarding";
 import type { StopLinks } from "./stop-links";
 import type { CommandResult } from "./trial-host";
 import { logUnexpected } from "@/store/error-reference";
@@ -370,27 +370,6 @@ export function startRuntimeServer({
     else reject(result.reason);
   }
 
-  /** A command another process forwarded: carried out here if this process runs its trial, checked as on a socket. */
-  async function serveForwarded(request: Forwarded): Promise<ForwardAnswer | null> {
-    const host = await hosts.owned(request.trialId);
-    if (!host) return null;
-    const parsed = parseClientMessage(
-      JSON.stringify({ type: "command", requestId: request.requestId, retry: request.retry, command: request.command }),
-    );
-    if (!parsed.ok || parsed.message.type !== "command")
-      return { ok: false, reason: parsed.ok ? "That is not a command." : parsed.reason };
-    const access = await loadTrialAccess(db, request.trialId, request.userId);
-    const lost = access ? lostAccess(access) : "This trial no longer exists.";
-    if (lost || !access) return { ok: false, reason: lost ?? "" };
-    const verdict = commandVerdict(access, parsed.message.command.kind);
-    if (!verdict.allow) return { ok: false, reason: verdict.reason };
-    let halted = false;
-    const result = await carryOut(db, host, request.trialId, access, parsed.message, verdict.claim, () => {
-      halted = true;
-    });
-    return { ...result, halted };
-  }
-
   /** Starts or stops this connection's replay of its (finished) trial on the simulated robot. */
   async function replay(
     ws: Socket,
@@ -529,7 +508,7 @@ export function startRuntimeServer({
       },
     },
   });
-  return { server, announceRobot, announceRobotState, accessChanged, recheckAll, serveForwarded };
+  return { server, announceRobot, announceRobotState, accessChanged, recheckAll };
 }
 
 function logError(error: unknown) {
