@@ -66,7 +66,10 @@ const hosts = trialHosts(
 const relay = await eventRelay(db, sql);
 // A trial another process runs: its wizards' stops go straight to the robot from here, and their
 // commands to the owner through PostgreSQL.
-const stops = stopLinks(db, (plugin, robot) => linkFor(plugin, robot).link);
+const stops = stopLinks(db, (plugin, robot) => {
+  const { link, transport } = linkFor(plugin, robot);
+  return transport ? link : null;
+});
 const forwarding = await commandForwarding(sql, forwardedCommands(db, hosts));
 // Replays go to simulated robots only, taken as trials take theirs: never one a trial or replay holds.
 const replays = simulatorReplays(db, hosts.claims);

@@ -18,7 +18,11 @@ interface Held {
   closed: boolean;
 }
 
-export function stopLinks(db: Database, linkFor: (plugin: Plugin, robot: RobotRecord) => RobotLink) {
+export function stopLinks(
+  db: Database,
+  /** A link to the robot, or null when it cannot be reached (its record says no way to). */
+  linkFor: (plugin: Plugin, robot: RobotRecord) => RobotLink | null,
+) {
   const held = new Map<string, Held>();
 
   async function connect(trialId: string, entry: Held) {
@@ -31,6 +35,7 @@ export function stopLinks(db: Database, linkFor: (plugin: Plugin, robot: RobotRe
     // No plugin or no robot given yet: nothing here can stop (the owner still does).
     if (!chosen.ok || !chosen.plugin || !row) return;
     const link = linkFor(chosen.plugin, row.robots);
+    if (!link) return;
     if (entry.closed) link.close();
     else entry.link = link;
   }
@@ -57,11 +62,12 @@ export function stopLinks(db: Database, linkFor: (plugin: Plugin, robot: RobotRe
         if (held.get(trialId) === own) held.delete(trialId);
       };
     },
-    /** Stops the trial's robot from here now; false when no link to it is open here. */
+    /** Stops the trial's robot from here now; false when no link to it is connected here. */
     halt(trialId: string): boolean {
       const link = held.get(trialId)?.link;
-      link?.halt();
-      return !!link;
+      if (!link?.connected()) return false;
+      link.halt();
+      return true;
     },
     closeAll() {
       for (const entry of held.values()) {
