@@ -3,7 +3,7 @@
 // study), who holds a robot now, and the live health the runtime writes.
 // The rules themselves are pure (src/core/robots/registry.ts).
 import { and, asc, eq, inArray, isNull, ne, or } from "drizzle-orm";
-import { chooseRobot, robotTaken, runsPlugin } from "@/core/robots/registry";
+import { robotPreference, robotTaken, runsPlugin } from "@/core/robots/registry";
 import { parseSecretReference, type SecretReference } from "@/core/robots/secrets";
 import type { Database } from "@/store/client";
 import { experiments, participants, robotStudies, robots, trials } from "@/store/schema";
@@ -79,13 +79,16 @@ export function robotsOfStudy(db: Database, studyId: string) {
 /**
  * The robot the trial drives: the one it was given, or else (chosen now and
  * kept) a robot available to its study that runs its plugin, free ones first
- * (`chooseRobot`). `heldHere`: robots of other trials this runtime has open.
+ * (`robotPreference`): the first free one that `claim` takes, so runtimes
+ * choosing at the same moment each take another; when none can be claimed,
+ * the first of them (its start is refused until it is free). `claim` is also
+ * asked for the robot given before.
  */
 export async function robotOfTrial(
   db: Database,
   trialId: string,
   robotId: string,
-  heldHere: ReadonlySet<string> = new Set(),
+  claim: (robot: RobotRecord) => Promise<boolean>,
 ): Promise<{ ok: true; robot: RobotRecord } | { ok: false; reason: string }> {
   const [trial] = await db
     .select({ studyId: trials.studyId, assigned: trials.assignedRobotId })
@@ -94,20 +97,29 @@ export async function robotOfTrial(
   if (!trial) return { ok: false, reason: "This trial does not exist." };
   if (trial.assigned) {
     const [robot] = await db.select().from(robots).where(eq(robots.id, trial.assigned));
-    if (robot) return { ok: true, robot };
+    if (robot) {
+      await claim(robot);
+      return { ok: true, robot };
+    }
   }
   const available = await robotsOfStudy(db, trial.studyId);
   const live = await db
     .select({ robot: trials.assignedRobotId })
     .from(trials)
     .where(and(inArray(trials.status, [...LIVE]), ne(trials.id, trialId)));
-  const held = new Set([...heldHere, ...live.map((l) => l.robot).filter((r) => r !== null)]);
-  const chosen = chooseRobot(available, robotId, held);
-  if (!chosen)
+  const held = new Set(live.map((l) => l.robot).filter((r) => r !== null));
+  const preferred = robotPreference(available, robotId, held);
+  if (!preferred.length)
     return {
       ok: false,
       reason: `No registered robot available to this study runs the ${robotId} plugin: an administrator registers one (Administration → Robots) and makes it available to the study.`,
     };
+  let chosen = preferred[0]!;
+  for (const robot of preferred.filter((r) => !held.has(r.id))) {
+    if (!(await claim(robot))) continue;
+    chosen = robot;
+    break;
+  }
   // Another opening of the same trial may have chosen first: the first choice stands.
   await db
     .update(trials)
@@ -118,7 +130,7 @@ export async function robotOfTrial(
     .from(robots)
     .innerJoin(trials, eq(trials.assignedRobotId, robots.id))
     .where(eq(trials.id, trialId));
-  return kept ? { ok: true, robot: kept.robots } : { ok: true, robot: chosen };
+  return { ok: true, robot: kept?.robots ?? chosen };
 }
 
 /**

@@ -6,12 +6,15 @@ import { createDatabase, createSessionClient } from "@/store/client";
 import type { Plugin } from "@/core/plugins";
 import { pluginCatalog } from "@/robots/catalog";
 import { transportFor } from "@/robots/transports";
-import { connectionOf } from "@/robots/registry";
+import { connectionOf, type RobotRecord } from "@/robots/registry";
 import { ROBOT_STATE_TOPIC } from "@/core/robots/robot-state";
 import type { LiveRobotState } from "@/core/robots/live-state";
 import { pluginRobot, unavailableRobot } from "./robot-link";
 import { purgeSpentTokens, watchAccess } from "./access";
 import { eventRelay } from "./relay";
+import { commandForwarding } from "./forwarding";
+import { forwardedCommands } from "./carry-out";
+import { stopLinks } from "./stop-links";
 import { simulatorReplays } from "./replay";
 import { startRuntimeServer } from "./server";
 import { trialHosts, type RobotChoice } from "./trial-hosts";
@@ -28,22 +31,27 @@ for (const problem of (await pluginCatalog(db)).problems) console.error(`[runtim
 // The robot the environment names (HRI_ROSBRIDGE_URL, HRI_ROBOT_SSH_*…) is a registered robot like any other.
 const fromEnvironment = environmentSeed(config);
 if (fromEnvironment) await seedRobots(db, [fromEnvironment]);
+/** A plain link to a registered robot over the plugin's transport, or why it cannot be reached. */
+const linkFor = (plugin: Plugin, robot: RobotRecord) => {
+  const connection = connectionOf(robot);
+  if (!connection.ok) return { link: unavailableRobot(connection.reason), transport: null };
+  const choice = transportFor(plugin, connection.config);
+  if (!choice.ok) return { link: unavailableRobot(choice.reason), transport: null };
+  return { link: pluginRobot(plugin, choice.transport), transport: choice.transport };
+};
 // The plugin document is the trial's own (pinned by its version), and the robot the registered one
 // it was given, both chosen in trialHosts; the robot's health goes to its record as it changes.
 const robotFor = (plugin: Plugin | null, robotId: string, robot: RobotChoice) => {
   if (!plugin) return unavailableRobot(`no robot plugin "${robotId}" is installed`);
   if (!robot.ok) return unavailableRobot(robot.reason);
-  const connection = connectionOf(robot.robot);
-  if (!connection.ok) return unavailableRobot(connection.reason);
-  const choice = transportFor(plugin, connection.config);
-  if (!choice.ok) return unavailableRobot(choice.reason);
-  const transport = choice.transport;
+  const { link, transport } = linkFor(plugin, robot.robot);
+  if (!transport) return link;
   // The simulated robot also reports what it is doing (speech, gesture, posture) on a topic of its own.
   const report = robot.robot.simulated
     ? (listener: (topic: string, message: unknown) => void) =>
         transport.subscribe(ROBOT_STATE_TOPIC, "std_msgs/msg/String", (m) => listener(ROBOT_STATE_TOPIC, m))
     : undefined;
-  return withHealth(db, robot.robot.id, pluginRobot(plugin, transport), report);
+  return withHealth(db, robot.robot.id, link, report);
 };
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
 let announceRobotState: (trialId: string, state: LiveRobotState) => void = () => {};
@@ -56,6 +64,13 @@ const hosts = trialHosts(
   (...args) => announceRobotState(...args),
 );
 const relay = await eventRelay(db, sql);
+// A trial another process runs: its wizards' stops go straight to the robot from here, and their
+// commands to the owner through PostgreSQL.
+const stops = stopLinks(db, (plugin, robot) => {
+  const { link, transport } = linkFor(plugin, robot);
+  return transport ? link : null;
+});
+const forwarding = await commandForwarding(sql, forwardedCommands(db, hosts));
 // Replays go to simulated robots only, taken as trials take theirs: never one a trial or replay holds.
 const replays = simulatorReplays(db, hosts.claims);
 const runtime = startRuntimeServer({
@@ -63,6 +78,8 @@ const runtime = startRuntimeServer({
   hosts,
   relay,
   replays,
+  stops,
+  forwarding,
   secret: config.BETTER_AUTH_SECRET,
   hostname: config.HOST,
   port: config.HRI_RUNTIME_PORT,
@@ -91,10 +108,11 @@ const stop = async () => {
   clearInterval(purge);
   server.stop(true);
   await replays.close();
+  stops.closeAll();
   await hosts.closeAll();
   // Ending the pool ends the listening connection too; unlistening first is a courtesy that a database
   // already gone (stopped, or crashed) answers with an error worth nothing at this point.
-  await Promise.allSettled([relay.close(), access.close()]);
+  await Promise.allSettled([relay.close(), forwarding.close(), access.close()]);
   await close();
   process.exit(0);
 };

@@ -1,5 +1,5 @@
-// Who holds a robot besides its live trial: a trial while it starts, a replay
-// while it plays. A live trial's hold is its row (in progress or paused, and
+// Who holds a robot besides its live trial: a trial while it is open (from the
+// moment its robot is chosen) or starts, a replay while it plays. A live trial's hold is its row (in progress or paused, and
 // the unique index on the live trials' robots); these shorter holds are kept
 // in this process and, for every other runtime process, as a PostgreSQL
 // advisory lock on the robot, taken the way trials are owned (`trialLocks`, on
@@ -15,7 +15,7 @@ export type Claim = { ok: true; release: () => void } | { ok: false; holder: Rob
 
 export interface RobotClaims {
   /** Holds the robot until `release`; `lost`: another process took it meanwhile (its session was lost). */
-  take(robotId: string, holder: "starting trial" | "replay", lost?: () => void): Promise<Claim>;
+  take(robotId: string, holder: Exclude<RobotHolder, "elsewhere">, lost?: () => void): Promise<Claim>;
   close(): Promise<void>;
 }
 

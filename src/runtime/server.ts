@@ -27,7 +27,11 @@ import {
   type Viewer,
 } from "@/core/socket/messages";
 import { beforeHelloRefusal, LARGEST_FRAME_BYTES, sizeRefusal } from "@/core/socket/limits";
-import { claimTrial, isRecordingOf, loadTrialAccess, spendToken } from "./access";
+import { loadTrialAccess, spendToken } from "./access";
+import { carryOut } from "./carry-out";
+import type { CommandForwarding } from "./forwarding";
+import type { StopLinks } from "./stop-links";
+import type { CommandResult } from "./trial-host";
 import { logUnexpected } from "@/store/error-reference";
 import type { LiveRobotState } from "@/core/robots/live-state";
 import { annotate } from "./annotations";
@@ -57,6 +61,8 @@ interface Connection {
   stopCamera?: () => void;
   /** Stops this connection's replay, if one is playing. */
   stopReplay?: () => void;
+  /** Lets go of the link that stops the robot of a trial another process runs. */
+  releaseStop?: () => void;
   /** The connection's replay messages, one after another. */
   replayQueue?: Promise<unknown>;
   /** Where it comes from: connections that have not said hello are counted per address. */
@@ -78,6 +84,10 @@ export interface RuntimeOptions {
   hosts: TrialHosts;
   relay: EventRelay;
   replays: Replays;
+  /** Stops from here the robots of trials other processes run. */
+  stops: StopLinks;
+  /** Commands of trials other processes run, to their owners. */
+  forwarding: CommandForwarding;
   secret: string;
   hostname: string;
   port: number;
@@ -138,6 +148,8 @@ export function startRuntimeServer({
   hosts,
   relay,
   replays,
+  stops,
+  forwarding,
   secret,
   hostname,
   port,
@@ -169,6 +181,7 @@ export function startRuntimeServer({
     ws.data.unsubscribe?.();
     ws.data.stopCamera?.();
     ws.data.stopReplay?.();
+    ws.data.releaseStop?.();
     const trialId = ws.data.claims?.trialId;
     if (trialId && viewers.get(trialId)?.delete(ws)) presence(trialId);
   }
@@ -201,6 +214,8 @@ export function startRuntimeServer({
     // Admitted: from here on, access changes reach this socket (and may close it).
     viewers.set(trialId, (viewers.get(trialId) ?? new Set()).add(ws));
     const host = await hosts.get(trialId);
+    // Run by another process: a wizard's stop must reach the robot from here too, with nothing to read first.
+    if (!host && mayRun(access)) ws.data.releaseStop = stops.hold(trialId);
     // Just opened for this hello: the log the host read to open it, kept up to date (one read, not two, and
     // nothing can fall between it and the subscription below). Else the log is read here.
     const log = host?.takeOpeningLog(lastSeq) ?? (await eventsSince(db, trialId, lastSeq));
@@ -318,37 +333,39 @@ export function startRuntimeServer({
       return send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
     }
     const host = await hosts.get(claims.trialId);
-    if (!host) return reject("Another runtime process is running this trial; reload the page to reach it.");
-    if (message.command.kind === "played") {
-      const played = await host.browserPlayed(message.command.actionId, message.command.failed, access.userId);
-      return played.ok
-        ? send(ws, { type: "ack", requestId: message.requestId, seqs: played.seqs })
-        : reject(played.reason);
+    const halting = message.command.kind === "emergency_stop" || message.command.kind === "abort";
+    let halted = false;
+    const tellHalted = () => {
+      if (halted) return;
+      halted = true;
+      send(ws, { type: "halted", requestId: message.requestId });
+    };
+    let result: CommandResult & { claimed?: boolean };
+    if (host) result = await carryOut(db, host, claims.trialId, access, message, verdict.claim, tellHalted);
+    else {
+      // Run by another process: a stop goes to the robot from here too, never waiting on the database.
+      if (halting && !message.retry && stops.halt(claims.trialId)) tellHalted();
+      const answer = await forwarding.forward({
+        trialId: claims.trialId,
+        userId: access.userId,
+        requestId: message.requestId,
+        retry: message.retry,
+        command: message.command,
+      });
+      // No process answered: its owner is gone, and this one takes the trial over.
+      const taken = answer ? null : await hosts.get(claims.trialId);
+      if (taken) result = await carryOut(db, taken, claims.trialId, access, message, verdict.claim, tellHalted);
+      else if (!answer)
+        return reject(
+          "The runtime process running this trial did not answer in time: the trial's log shows whether this was done.",
+        );
+      else {
+        if (answer.halted) tellHalted();
+        result = answer;
+      }
     }
-    const command =
-      message.command.kind === "unscripted" ? { ...message.command, actionId: crypto.randomUUID() } : message.command;
-    // A recording is a row of its own: it must belong to this very trial.
-    if (command.kind === "recording" && !(await isRecordingOf(db, command.recordingId, claims.trialId))) {
-      return reject("That recording belongs to another trial: it was not logged here.");
-    }
-    if (verdict.claim && host.current.status === "scheduled") {
-      if (!(await claimTrial(db, claims.trialId, access.userId)))
-        return reject("Another wizard has just claimed this trial: you may watch it but not run it.");
+    if (result.claimed)
       ws.data.access = { ...ws.data.access!, trial: { ...ws.data.access!.trial, wizardId: access.userId } };
-    }
-    // Safety before logging: the host stops the robot as it takes the command, whatever the database is doing.
-    const logged = host.command(command, access.userId, { id: message.requestId, retry: message.retry });
-    const halting = command.kind === "emergency_stop" || command.kind === "abort";
-    // Asked again, a stop halted the robot the first time it arrived, or not at all (the answer says which).
-    if (halting && !message.retry) send(ws, { type: "halted", requestId: message.requestId });
-    const result = await logged.catch((error: unknown) => {
-      if (!halting) throw error;
-      const ref = logUnexpected(error, "logging a stop");
-      return {
-        ok: false as const,
-        reason: `The robot was stopped, but the stop could not be logged (reference ${ref}).`,
-      };
-    });
     if (result.ok) send(ws, { type: "ack", requestId: message.requestId, seqs: result.seqs });
     else reject(result.reason);
   }

@@ -6,10 +6,13 @@
 // ever opened. A finished trial is opened without a robot at all.
 //
 // Each trial drives the registered robot it was given (src/robots/registry.ts),
-// and one robot is never driven by two at once: a start is refused while a
-// start under way or a replay holds the trial's robot (`robotClaims`, in any
-// process), and while another live trial does (the database; its unique index
-// is the last word when two processes start at the same moment).
+// and one robot is never driven by two at once. A trial open here claims its
+// robot (`robotClaims`, across processes) from the moment it is chosen until
+// the trial closes here, so trials opened at once in several processes each
+// take another robot; a start is refused while another open trial, a start or
+// a replay holds the trial's robot, and while another live trial does (the
+// database; its unique index is the last word when two processes start at the
+// same moment).
 import { eq } from "drizzle-orm";
 import type postgres from "postgres";
 import { checkingStart, type Plugin } from "@/core/plugins";
@@ -32,9 +35,14 @@ export type RobotChoice = { ok: true; robot: RobotRecord } | { ok: false; reason
 
 const refused = (reason: string): CommandResult => ({ ok: false, reason });
 
+/** A robot claim a trial holds while it is open here. */
+type Held = { robotId: string; release: () => void };
+
 export interface TrialHosts {
   /** The trial's host in this process, or null while another process owns the trial. */
   get(trialId: string): Promise<TrialHost | null>;
+  /** The trial's host if this process runs it already; never opens it (a command forwarded to its owner). */
+  owned(trialId: string): Promise<TrialHost | null>;
   closeAll(): Promise<void>;
   /** How many trials this process holds open now (with their robot links and locks). */
   readonly size: number;
@@ -60,8 +68,8 @@ export function trialHosts(
   const hosts = new Map<string, Promise<TrialHost | null>>();
   // Every trial of this process appends through one writer: one commit for what arrives together.
   const log = groupWriter(db);
-  /** The registered robot of each trial open here. */
-  const robotOf = new Map<string, RobotRecord>();
+  /** The robot claim each trial open here holds (none when its robot was claimed elsewhere as it opened). */
+  const claimOf = new Map<string, Held>();
   /** Robots whose trial is starting now (not yet live in the database), or that a replay plays on. */
   const claims = robotClaims(lockSession);
   // A lock lost with its connection and taken by another process: that process runs the trial now.
@@ -76,8 +84,8 @@ export function trialHosts(
     const current = hosts.get(trialId);
     if (!current || (await current.catch(() => null)) !== host) return;
     hosts.delete(trialId);
-    robotOf.delete(trialId);
     await host.close();
+    letGo(trialId);
     // Locks count: this releases exactly the hold this host took.
     if (unlock) await locks.release(trialId);
   }
@@ -93,21 +101,24 @@ export function trialHosts(
     }
   }
 
-  /**
-   * A robot another trial open here drives is not chosen for a new one, started or not. One choice at a
-   * time, held from the moment it is made: trials opened together would otherwise all take the same robot.
-   */
-  let choosing: Promise<unknown> = Promise.resolve();
-  function chooseRobot(trialId: string, robotId: string) {
-    const choice = choosing.then(async () => {
-      const heldHere = new Set([...robotOf].filter(([t]) => t !== trialId).map(([, r]) => r.id));
-      const made = await robotOfTrial(db, trialId, robotId, heldHere);
-      if (made.ok) robotOf.set(trialId, made.robot);
-      return made;
+  /** The trial's robot, claimed for this trial from the moment it is chosen (`robotOfTrial`). */
+  async function chooseRobot(trialId: string, robotId: string) {
+    let taken: Held | null = null;
+    const made = await robotOfTrial(db, trialId, robotId, async (robot) => {
+      const claim = await claims.take(robot.id, "open trial");
+      if (claim.ok) taken = { robotId: robot.id, release: claim.release };
+      return claim.ok;
     });
-    choosing = choice.catch(() => {});
-    return choice;
+    const held = taken as Held | null;
+    if (held && made.ok && made.robot.id === held.robotId) claimOf.set(trialId, held);
+    else held?.release();
+    return made;
   }
+
+  const letGo = (trialId: string) => {
+    claimOf.get(trialId)?.release();
+    claimOf.delete(trialId);
+  };
 
   async function hostFor(trialId: string) {
     const [row] = await db
@@ -136,7 +147,7 @@ export function trialHosts(
       try {
         robot = await robotFor(chosen.plugin, chosen.robotId, choice);
       } catch (error) {
-        robotOf.delete(trialId);
+        letGo(trialId);
         throw error;
       }
     }
@@ -144,7 +155,7 @@ export function trialHosts(
     try {
       host = await TrialHost.open(db, trialId, protocol, robot, log);
     } catch (error) {
-      robotOf.delete(trialId);
+      letGo(trialId);
       throw error;
     }
     if (registered) {
@@ -174,8 +185,11 @@ export function trialHosts(
     // A record saved before robot secrets had their own variables may name the platform's: nothing is sent.
     const secret = secretOf(robot);
     if (secret && "error" in secret) return refused(secret.error);
-    const claim = await claims.take(robot.id, "starting trial");
-    if (!claim.ok) return refused(robotClaimed(robot.name, claim.holder));
+    // Held since the trial opened here; else (claimed elsewhere then) claimed now, for the start only.
+    const own = claimOf.get(trialId)?.robotId === robot.id;
+    const claim = own ? { ok: true as const, release: () => {} } : await claims.take(robot.id, "starting trial");
+    // A live trial holding it is named; it may hold the robot's claim too, while open in some runtime.
+    if (!claim.ok) return refused((await robotHeldBy(db, robot, trialId)) ?? robotClaimed(robot.name, claim.holder));
     try {
       const held = await robotHeldBy(db, robot, trialId);
       if (held) return refused(held);
@@ -202,6 +216,7 @@ export function trialHosts(
       }
       return host;
     },
+    owned: async (trialId) => (await hosts.get(trialId)?.catch(() => null)) ?? null,
     get size() {
       return hosts.size;
     },
@@ -209,6 +224,7 @@ export function trialHosts(
     async closeAll() {
       for (const host of hosts.values()) await (await host.catch(() => null))?.close();
       hosts.clear();
+      claimOf.clear();
       await Promise.all([locks.close(), claims.close()]);
     },
   };

@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { chooseRobot, replayBusy, robotClaimed, runsPlugin } from "./registry";
+import { robotPreference, replayBusy, robotClaimed, runsPlugin } from "./registry";
 
 const nao = (id: string) => ({ id, name: `NAO ${id}`, pluginRobotId: "nao6-ros2" });
 const sim = (id: string) => ({ id, name: `Simulated ${id}`, pluginRobotId: null });
@@ -15,7 +15,16 @@ describe("choosing a robot for a trial", () => {
     ["the plugin's own held robot before a held simulated one", [sim("s1"), nao("a")], "nao6-ros2", ["a", "s1"], "a"],
     ["none of another plugin", [pepper], "nao6-ros2", [], null],
   ])("%s", (_, available, robotId, held, expected) => {
-    expect(chooseRobot(available, robotId, new Set(held))?.id ?? null).toBe(expected);
+    expect(robotPreference(available, robotId, new Set(held))[0]?.id ?? null).toBe(expected);
+  });
+
+  it("orders every fitting robot, so a runtime that finds one claimed elsewhere takes the next", () => {
+    const order = robotPreference(
+      [sim("s1"), nao("a"), pepper, nao("b"), sim("s2")],
+      "nao6-ros2",
+      new Set(["a", "s2"]),
+    );
+    expect(order.map((r) => r.id)).toEqual(["b", "s1", "a", "s2"]);
   });
 
   it("a simulated robot runs every plugin, a real one only its own", () => {
@@ -28,6 +37,7 @@ describe("the words when a robot is busy", () => {
   it.each([
     ["live trial", 'The simulated robot "Sim 1" is running another trial; replay when it is free.'],
     ["starting trial", 'The simulated robot "Sim 1" is running another trial; replay when it is free.'],
+    ["open trial", 'The simulated robot "Sim 1" is running another trial; replay when it is free.'],
     ["replay", 'The simulated robot "Sim 1" is playing another replay; replay when it is free.'],
     ["elsewhere", 'The simulated robot "Sim 1" is busy with another trial or replay; replay when it is free.'],
   ] as const)("a replay refused while %s holds the robot", (holder, words) => {
@@ -37,7 +47,8 @@ describe("the words when a robot is busy", () => {
   it.each([
     ["starting trial", "another live trial (a trial that is starting now)"],
     ["replay", "a replay of a finished trial"],
-    ["elsewhere", "a replay, or a trial starting in another runtime"],
+    ["open trial", "another live trial (a trial open in this runtime)"],
+    ["elsewhere", "a replay, or a trial open in another runtime"],
   ] as const)("a start refused while %s holds the robot", (holder, words) => {
     expect(robotClaimed("Sim 1", holder)).toContain(`"Sim 1" is being driven by ${words}`);
   });

@@ -15,20 +15,23 @@ export function runsPlugin(robot: Pick<RegisteredRobot, "pluginRobotId">, robotI
 }
 
 /**
- * The robot a new trial gets: the first (in the order given) that runs its
- * plugin and that no live trial holds, a robot of the plugin itself before one
- * that runs any plugin. When every such robot is held, the first of them: the
- * wizard sees which, and starting waits until its trial ends (`robotTaken`).
- * Null when none runs the plugin.
+ * The robots a new trial may get, best first: those that run its plugin and
+ * that no live trial holds, a robot of the plugin itself before one that runs
+ * any plugin; then, the same way, the held ones. The runtime takes the first it
+ * can claim; when every free one is claimed elsewhere, the first of them: the
+ * wizard sees which, and starting waits until it is free (`robotTaken`).
  */
-export function chooseRobot<R extends RegisteredRobot>(
+export function robotPreference<R extends RegisteredRobot>(
   available: R[],
   robotId: string,
   held: ReadonlySet<string>,
-): R | null {
+): R[] {
   const fitting = available.filter((r) => runsPlugin(r, robotId));
-  const preferred = (list: R[]) => list.find((r) => r.pluginRobotId === robotId) ?? list[0] ?? null;
-  return preferred(fitting.filter((r) => !held.has(r.id))) ?? preferred(fitting);
+  const ordered = (list: R[]) => [
+    ...list.filter((r) => r.pluginRobotId === robotId),
+    ...list.filter((r) => r.pluginRobotId !== robotId),
+  ];
+  return [...ordered(fitting.filter((r) => !held.has(r.id))), ...ordered(fitting.filter((r) => held.has(r.id)))];
 }
 
 /** The refusal a wizard reads when the trial's robot is driven by another live trial. */
@@ -37,15 +40,16 @@ export function robotTaken(robotName: string, holder: string): string {
 }
 
 /**
- * Who holds a robot besides its live trial: a trial starting in this runtime process, a replay playing in
- * it, or either in another runtime process (an advisory lock says only that it is held).
+ * Who holds a robot besides its live trial: a trial open (not yet live) or starting in this runtime process,
+ * a replay playing in it, or any of them in another runtime process (an advisory lock says only that it is held).
  */
-export type RobotHolder = "starting trial" | "replay" | "elsewhere";
+export type RobotHolder = "open trial" | "starting trial" | "replay" | "elsewhere";
 
 /** The refusal a wizard reads when the trial's robot is held by a start or a replay. */
 export function robotClaimed(robotName: string, holder: RobotHolder): string {
   if (holder === "starting trial") return robotTaken(robotName, "a trial that is starting now");
-  const by = holder === "replay" ? "a replay of a finished trial" : "a replay, or a trial starting in another runtime";
+  if (holder === "open trial") return robotTaken(robotName, "a trial open in this runtime");
+  const by = holder === "replay" ? "a replay of a finished trial" : "a replay, or a trial open in another runtime";
   return `The robot "${robotName}" is being driven by ${by}. This trial can start once it is free.`;
 }
 

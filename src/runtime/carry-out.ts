@@ -1,0 +1,76 @@
+// A wizard's command, already allowed by their access, carried out by the
+// trial's host in this process: from the wizard's own socket, or forwarded by
+// another process whose socket it came on (forwarding.ts). One path for both.
+import { commandVerdict, lostAccess, type TrialAccess } from "@/core/access/trial-socket";
+import { parseClientMessage, type ClientMessage } from "@/core/socket/messages";
+import type { Database } from "@/store/client";
+import { logUnexpected } from "@/store/error-reference";
+import { claimTrial, isRecordingOf, loadTrialAccess } from "./access";
+import type { ForwardAnswer, Forwarded } from "./forwarding";
+import type { CommandResult, TrialHost } from "./trial-host";
+import type { TrialHosts } from "./trial-hosts";
+
+export type CommandMessage = Extract<ClientMessage, { type: "command" }>;
+
+export async function carryOut(
+  db: Database,
+  host: TrialHost,
+  trialId: string,
+  access: TrialAccess,
+  message: CommandMessage,
+  /** The verdict says this command claims a scheduled trial for its wizard. */
+  claim: boolean | undefined,
+  /** Told as soon as the robot was stopped (before the stop is logged). */
+  halted: () => void,
+): Promise<CommandResult & { claimed?: boolean }> {
+  if (message.command.kind === "played")
+    return host.browserPlayed(message.command.actionId, message.command.failed, access.userId);
+  const command =
+    message.command.kind === "unscripted" ? { ...message.command, actionId: crypto.randomUUID() } : message.command;
+  // A recording is a row of its own: it must belong to this very trial.
+  if (command.kind === "recording" && !(await isRecordingOf(db, command.recordingId, trialId)))
+    return { ok: false, reason: "That recording belongs to another trial: it was not logged here." };
+  let claimed = false;
+  if (claim && host.current.status === "scheduled") {
+    if (!(await claimTrial(db, trialId, access.userId)))
+      return { ok: false, reason: "Another wizard has just claimed this trial: you may watch it but not run it." };
+    claimed = true;
+  }
+  // Safety before logging: the host stops the robot as it takes the command, whatever the database is doing.
+  const logged = host.command(command, access.userId, { id: message.requestId, retry: message.retry });
+  const halting = command.kind === "emergency_stop" || command.kind === "abort";
+  // Asked again, a stop halted the robot the first time it arrived, or not at all (the answer says which).
+  if (halting && !message.retry) halted();
+  const result = await logged.catch((error: unknown) => {
+    if (!halting) throw error;
+    const ref = logUnexpected(error, "logging a stop");
+    return {
+      ok: false as const,
+      reason: `The robot was stopped, but the stop could not be logged (reference ${ref}).`,
+    };
+  });
+  return { ...result, claimed };
+}
+
+/** Commands other processes forward: carried out if this process runs the trial, checked as on its own socket. */
+export function forwardedCommands(db: Database, hosts: TrialHosts) {
+  return async (request: Forwarded): Promise<ForwardAnswer | null> => {
+    const host = await hosts.owned(request.trialId);
+    if (!host) return null;
+    const parsed = parseClientMessage(
+      JSON.stringify({ type: "command", requestId: request.requestId, retry: request.retry, command: request.command }),
+    );
+    if (!parsed.ok || parsed.message.type !== "command")
+      return { ok: false, reason: parsed.ok ? "That is not a command." : parsed.reason };
+    const access = await loadTrialAccess(db, request.trialId, request.userId);
+    const lost = access ? lostAccess(access) : "This trial no longer exists.";
+    if (lost || !access) return { ok: false, reason: lost ?? "" };
+    const verdict = commandVerdict(access, parsed.message.command.kind);
+    if (!verdict.allow) return { ok: false, reason: verdict.reason };
+    let halted = false;
+    const result = await carryOut(db, host, request.trialId, access, parsed.message, verdict.claim, () => {
+      halted = true;
+    });
+    return { ...result, halted };
+  };
+}
