@@ -103,9 +103,10 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
         <span className="ml-auto flex items-center gap-4">
           {indicators({ runtime: live.connected, robot: live.robot, database }).map(({ what, state, tone }) => (
             <Badge key={what} tone={tone}>
-              {/* Two items: a badge is a flex box, where a space between them would collapse. */}
-              <span className="mr-1 font-normal capitalize">{what}:</span>
-              <span data-testid={`${what}-status`}>{state}</span>
+              {/* One item: a badge is a flex box, where a space between two items would collapse. */}
+              <span>
+                {what} <span data-testid={`${what}-status`}>{state}</span>
+              </span>
             </Badge>
           ))}
           <TrialClock startedAt={started?.serverTime ?? null} stopped={ended} />
