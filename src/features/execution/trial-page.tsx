@@ -101,7 +101,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
             </Badge>
           ))}
         <span className="ml-auto flex items-center gap-4">
-          {indicators({ runtime: live.connected, robot: live.robot, database }).map(({ what, state, tone }) => (
+          {indicators({ runtime: live.runtime, robot: live.robot, database }).map(({ what, state, tone }) => (
             <Badge key={what} tone={tone}>
               {what} <span data-testid={`${what}-status`}>{state}</span>
             </Badge>
@@ -140,7 +140,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
               protocol={protocol}
               names={trial.actionNames}
               state={live.state}
-              connected={live.connected}
+              runtime={live.runtime}
               send={live.command}
             />
           )}
