@@ -1,14 +1,15 @@
 // The runtime's side of the heartbeat (src/core/socket/heartbeat.ts): it
 // answers each ping at once, keeps each connection's clock offset from them
-// (for the command path to judge the page's times by), and drops a page it
-// has not heard from for too long. Only a connection that has pinged is a
-// page with a heartbeat: scripts and benchmarks that never ping are not dropped.
+// (for the command path to judge the page's times by), asks a page it has not
+// heard from lately, and drops one that stays silent. Only a connection that
+// has pinged is a page with a heartbeat: scripts and benchmarks that never
+// ping are neither asked nor dropped.
 import {
   type ClockOffset,
   clockOffset,
   HEARTBEAT_EVERY_MS,
   PAGE_GONE_AFTER_MS,
-  pageGone,
+  pageCheck,
   watchingSince,
 } from "@/core/socket/heartbeat";
 import type { ClientMessage, ServerMessage } from "@/core/socket/messages";
@@ -38,22 +39,30 @@ export function answer(pulse: Pulse, ping: Extract<ClientMessage, { type: "ping"
 
 const GONE_REASON = `This page sent nothing for ${PAGE_GONE_AFTER_MS / 1000} s, so its connection was closed.`;
 
+export interface Watched {
+  pulse: Pulse;
+  send(message: ServerMessage): void;
+  drop(reason: string): void;
+}
+
 /**
- * Looks at the pages every heartbeat, for as long as the process runs, and drops (`drop`, with a reason) those
- * gone silent. The look is a timer, so after a freeze of the runtime itself it comes late: their silence counts
+ * Looks at the pages every heartbeat, for as long as the process runs: asks the quiet ones, drops those gone
+ * silent. The look is a timer, so after a freeze of the runtime itself it comes late: their silence counts
  * from then.
  */
-export function watchPulses(
-  pages: () => Iterable<{ pulse: Pulse; drop: (reason: string) => void }>,
-  now = () => Date.now(),
-): void {
+export function watchPulses(pages: () => Iterable<Watched>, now = () => Date.now()): void {
   let since = now();
   let lookedAt = since;
   const timer = setInterval(() => {
     const at = now();
     since = watchingSince(since, lookedAt, at);
     lookedAt = at;
-    for (const { pulse, drop } of pages()) if (pulse.pinged && pageGone(pulse.heardAt, since, at)) drop(GONE_REASON);
+    for (const page of pages()) {
+      if (!page.pulse.pinged) continue;
+      const check = pageCheck(page.pulse.heardAt, since, at);
+      if (check === "ask") page.send({ type: "ping" });
+      else if (check === "drop") page.drop(GONE_REASON);
+    }
   }, HEARTBEAT_EVERY_MS);
   // Never what keeps the process alive: it ends with the server.
   timer.unref();

@@ -276,7 +276,11 @@ export function startRuntimeServer({
 
   const admitted = () => [...viewers.values()].flatMap((set) => [...set]);
   watchPulses(() =>
-    admitted().map((ws) => ({ pulse: ws.data.pulse, drop: (reason) => shut(ws, GONE_SILENT, reason) })),
+    admitted().map((ws) => ({
+      pulse: ws.data.pulse,
+      send: (message) => send(ws, message),
+      drop: (reason) => shut(ws, GONE_SILENT, reason),
+    })),
   );
   /** A change PostgreSQL announced: reload the access of the sockets it concerns, at once. */
   const accessChanged = (change: AccessChange) => {

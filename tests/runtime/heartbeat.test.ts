@@ -4,7 +4,7 @@
 // still frozen, and live again on the same connection once it resumes, with
 // nothing lost; the runtime, frozen longer than it waits for a silent page,
 // does not drop its pages for its own silence, but does drop a page that
-// stopped pinging.
+// stopped pinging, and keeps one that pings only when asked (a hidden tab).
 import type { ChildProcess } from "node:child_process";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
@@ -116,15 +116,25 @@ describe("the trial socket's heartbeat", () => {
     page.close();
   });
 
-  it("drops a page that stopped pinging, in plain words", { timeout: 60_000 }, async () => {
-    const page = await open();
-    // A page that pinged once and then went silent (frozen, or its computer asleep).
-    page.send({ type: "ping", at: Date.now() });
-    await page.next((m) => m.type === "pong");
-    await until(() => page.closed !== null, "the runtime dropped the silent page", PAGE_GONE_AFTER_MS * 3);
-    expect(page.closed).toEqual({
+  it("keeps a page that answers when asked (a hidden tab), and drops one that stopped, in plain words", {
+    timeout: 60_000,
+  }, async () => {
+    const gone = await open();
+    const hidden = await open();
+    // Both pinged once. One then went silent (frozen, or its computer asleep); the other's timers are held back
+    // (a hidden tab): it pings only when the runtime asks, from its message handler.
+    for (const page of [gone, hidden]) {
+      page.send({ type: "ping", at: Date.now() });
+      await page.next((m) => m.type === "pong");
+    }
+    hidden.listen((m) => m.type === "ping" && hidden.send({ type: "ping", at: Date.now() }));
+    await until(() => gone.closed !== null, "the runtime dropped the silent page", PAGE_GONE_AFTER_MS * 3);
+    expect(gone.closed).toEqual({
       code: 4408,
       reason: `This page sent nothing for ${PAGE_GONE_AFTER_MS / 1000} s, so its connection was closed.`,
     });
+    expect(hidden.closed).toBeNull();
+    expect(hidden.messages.filter((m) => m.type === "ping").length).toBeGreaterThan(0);
+    hidden.close();
   });
 });

@@ -12,7 +12,8 @@ import type { StoredEvent } from "@/core/trial";
 // "camera": the robot's own camera, frame by frame.
 // Also 4: "code": an observer's key press on a code of a published coding scheme; "codes" answers with their tier's changes.
 // 5: the heartbeat (src/core/socket/heartbeat.ts): "ping" carries the page's clock and its last round trip,
-// "pong" answers it at once with the ping's time, so each end learns when the other stopped.
+// "pong" answers it at once with the ping's time, so each end learns when the other stopped; the runtime's
+// own "ping" asks a quiet page to ping at once.
 export const SOCKET_MESSAGES_VERSION = 5;
 
 /** Every id a message carries is declared with this, so tests can find them all. */
@@ -208,6 +209,8 @@ export const serverMessageSchema = z.discriminatedUnion("type", [
   }),
   // The answer to a "ping": its `at`, so the page measures the round trip.
   z.object({ type: z.literal("pong"), at: z.number() }),
+  // To a page the runtime has not heard from lately: ping now (a hidden tab's timers may be held back).
+  z.object({ type: z.literal("ping") }),
   // The robot's camera (its plugin's `camera`): one compressed image, base64, as the robot sent it.
   z.object({ type: z.literal("camera"), format: z.string().max(100), data: z.string() }),
   // Live video: a signal from another connection of this trial.
