@@ -23,17 +23,17 @@ export interface Pulse {
   clock: ClockOffset | null;
 }
 
-export const newPulse = (now = Date.now()): Pulse => ({ heardAt: now, pinged: false, clock: null });
+export const newPulse = (): Pulse => ({ heardAt: Date.now(), pinged: false, clock: null });
 
 /** Anything read from the connection: it is alive. */
-export function heard(pulse: Pulse, now = Date.now()) {
-  pulse.heardAt = now;
+export function heard(pulse: Pulse) {
+  pulse.heardAt = Date.now();
 }
 
 /** A ping: its offset kept, its answer returned to send at once. */
-export function answer(pulse: Pulse, ping: Extract<ClientMessage, { type: "ping" }>, now = Date.now()): ServerMessage {
+export function answer(pulse: Pulse, ping: Extract<ClientMessage, { type: "ping" }>): ServerMessage {
   pulse.pinged = true;
-  pulse.clock = clockOffset(ping.at, ping.roundTripMs, now) ?? pulse.clock;
+  pulse.clock = clockOffset(ping.at, ping.roundTripMs, Date.now()) ?? pulse.clock;
   return { type: "pong", at: ping.at };
 }
 
@@ -50,11 +50,11 @@ export interface Watched {
  * silent. The look is a timer, so after a freeze of the runtime itself it comes late: their silence counts
  * from then.
  */
-export function watchPulses(pages: () => Iterable<Watched>, now = () => Date.now()): void {
-  let since = now();
+export function watchPulses(pages: () => Iterable<Watched>): void {
+  let since = Date.now();
   let lookedAt = since;
   const timer = setInterval(() => {
-    const at = now();
+    const at = Date.now();
     since = watchingSince(since, lookedAt, at);
     lookedAt = at;
     for (const page of pages()) {
