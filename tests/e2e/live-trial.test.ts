@@ -217,6 +217,9 @@ describe.sequential("a live trial in two browsers", () => {
         { timeout: 15_000 },
       )
       .toBe(true);
+    // Ended, so that its robot is free for the trials after it.
+    await wizard.getByRole("button", { name: "Complete trial" }).click();
+    await expect.poll(() => wizard.getByTestId("trial-status").textContent()).toBe("completed");
     await wizard.context().close();
     await observer.context().close();
   });
