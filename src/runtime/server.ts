@@ -35,6 +35,7 @@ import type { CommandResult } from "./trial-host";
 import { logUnexpected } from "@/store/error-reference";
 import type { LiveRobotState } from "@/core/robots/live-state";
 import { annotate } from "./annotations";
+import { answer, heard, newPulse, type Pulse, watchPulses } from "./heartbeat";
 import { helloDoor } from "./hello-door";
 import { codeLive } from "./coding";
 import type { EventRelay } from "./relay";
@@ -69,6 +70,8 @@ interface Connection {
   address: string;
   /** Until hello: takes it off its address's count of waiting connections, and stops its deadline. */
   leaveDoor?: () => void;
+  /** Its heartbeat: when it was last heard, and its page's clock offset (`pulse.clock`) for the command path. */
+  pulse: Pulse;
 }
 
 type Socket = {
@@ -102,6 +105,8 @@ const EXPIRED = 4401;
 const SHUT_OUT = 4403;
 /** A frame before hello larger than a hello (RFC 6455's "message too big"): the browser reconnects after it. */
 const TOO_BIG = 1009;
+/** A page that stopped pinging: the browser reconnects after it, if it is still there. */
+const GONE_SILENT = 4408;
 
 /** Events written into a welcome's text at a time: a few milliseconds of work each. */
 const WELCOME_PAGE = 2000;
@@ -285,6 +290,13 @@ export function startRuntimeServer({
   }
 
   const admitted = () => [...viewers.values()].flatMap((set) => [...set]);
+  watchPulses(() =>
+    admitted().map((ws) => ({
+      pulse: ws.data.pulse,
+      send: (message) => send(ws, message),
+      drop: (reason) => shut(ws, GONE_SILENT, reason),
+    })),
+  );
   /** A change PostgreSQL announced: reload the access of the sockets it concerns, at once. */
   const accessChanged = (change: AccessChange) => {
     for (const ws of admitted()) {
@@ -413,6 +425,7 @@ export function startRuntimeServer({
 
   async function onMessage(ws: Socket, text: string, bytes: number): Promise<void> {
     if (ws.data.closed) return;
+    heard(ws.data.pulse);
     // Before hello, a frame larger than a hello is not even read.
     const unasked = ws.data.greeted ? null : beforeHelloRefusal(bytes);
     if (unasked) return shut(ws, TOO_BIG, unasked);
@@ -426,7 +439,7 @@ export function startRuntimeServer({
         requestId: "requestId" in message ? message.requestId : null,
         reason: tooLarge,
       });
-    if (message.type === "ping") return send(ws, { type: "pong" });
+    if (message.type === "ping") return send(ws, answer(ws.data.pulse, message));
     if (message.type === "hello") {
       // A hello that fails half way must not leave a connection that follows nothing.
       return hello(ws, message.token, message.lastSeq).catch((error: unknown) => {
@@ -471,6 +484,7 @@ export function startRuntimeServer({
             claims: null,
             access: null,
             reloads: 0,
+            pulse: newPulse(),
             address: clientAddress({
               socketAddress: server.requestIP(req)?.address,
               forwardedFor: req.headers.get("x-forwarded-for") ?? undefined,

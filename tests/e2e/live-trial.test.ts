@@ -19,6 +19,8 @@ describe.sequential("a live trial in two browsers", () => {
   let wizardApi: ReturnType<typeof apiClient>;
   // Reads the log as the analysis does: the trial's data is for researchers, not wizards.
   let researcherApi: ReturnType<typeof apiClient>;
+  // What a new trial of the Storyteller is made from.
+  let newTrial = { versionId: "", participantId: "" };
 
   beforeAll(async () => {
     app = await startApp();
@@ -30,7 +32,8 @@ describe.sequential("a live trial in two browsers", () => {
     const version = await researcher.versions.publish.mutate({ experimentId: experiment!.id });
     const [participant] = await researcher.participants.list.query({ studyId: study!.id });
     wizardApi = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
-    trialPath = `/trials/${(await wizardApi.trials.create.mutate({ versionId: version.id, participantId: participant!.id })).id}`;
+    newTrial = { versionId: version.id, participantId: participant!.id };
+    trialPath = `/trials/${(await wizardApi.trials.create.mutate(newTrial)).id}`;
   });
   afterAll(async () => {
     await browser?.close();
@@ -170,6 +173,54 @@ describe.sequential("a live trial in two browsers", () => {
     await observer.keyboard.press("Escape");
     expect(await observer.getByTestId("trial-status").textContent()).toBe("completed");
     expect(await observer.getByText("emergency stop").count()).toBe(0);
+    await observer.context().close();
+  });
+
+  it("shows the wizard and an observer a frozen runtime as not answering, controls off, and live again once it resumes", async () => {
+    const path = `/trials/${(await wizardApi.trials.create.mutate(newTrial)).id}`;
+    const wizard = await (await newContext(browser, app.url)).newPage();
+    const observer = await (await newContext(browser, app.url)).newPage();
+    await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
+    await signInAs(observer, "observer@demo.hristudio", DEMO_PASSWORD);
+    await wizard.goto(path);
+    await observer.goto(path);
+    await wizard.getByText("robot connected").waitFor();
+    await observer.getByText("live", { exact: true }).waitFor();
+    await wizard.keyboard.press("n");
+    await expect.poll(() => currentStep(wizard)).toBe("Introduction");
+    const next = wizard.getByRole("button", { name: /^N\b/ });
+    expect(await next.isDisabled()).toBe(false);
+    const runtimeIs = (page: Page) => page.getByTestId("runtime-status").textContent();
+
+    // Frozen, its sockets stay open: only the heartbeat can tell the pages. All of this is seen while it is frozen.
+    const runtime = childPid(app, "runtime/main.ts");
+    process.kill(runtime, "SIGSTOP");
+    try {
+      await expect.poll(() => runtimeIs(wizard), { timeout: 10_000 }).toBe("not answering");
+      await expect.poll(() => runtimeIs(observer), { timeout: 10_000 }).toBe("not answering");
+      await wizard.getByText(/^The trial runtime is not answering: nothing can be sent/).waitFor();
+      expect(await next.isDisabled()).toBe(true);
+      expect(await wizard.getByRole("button", { name: "Emergency stop (Esc)" }).isDisabled()).toBe(true);
+      await expect.poll(() => wizard.getByTestId("robot-status").textContent()).toBe("unknown");
+    } finally {
+      process.kill(runtime, "SIGCONT");
+    }
+    // Back without a reload, on the same page: live, and the wizard can go on.
+    await expect.poll(() => runtimeIs(wizard), { timeout: 20_000 }).toBe("live");
+    await expect.poll(() => runtimeIs(observer), { timeout: 20_000 }).toBe("live");
+    await expect.poll(() => next.isDisabled()).toBe(false);
+    await wizard.keyboard.press("n");
+    await expect
+      .poll(
+        async () =>
+          (await wizard.locator('[data-testid^="action-"]').allTextContents()).some((t) => t.startsWith("done")),
+        { timeout: 15_000 },
+      )
+      .toBe(true);
+    // Ended, so that its robot is free for the trials after it.
+    await wizard.getByRole("button", { name: "Complete trial" }).click();
+    await expect.poll(() => wizard.getByTestId("trial-status").textContent()).toBe("completed");
+    await wizard.context().close();
     await observer.context().close();
   });
 

@@ -175,7 +175,7 @@ describe("the trial socket before hello", () => {
     await held[0]!.closed;
     const again = await silent("127.0.0.102");
     for (const { ws } of [other, again]) {
-      ws.send(JSON.stringify({ type: "ping" }));
+      ws.send(JSON.stringify({ type: "ping", at: Date.now() }));
       await new Promise((answered) => ws.once("message", answered));
     }
     for (const { ws } of [...held, other, again]) ws.terminate();

@@ -1,7 +1,7 @@
 // A trial-runtime client for tests: a real WebSocket speaking the socket
 // protocol, checking every message the runtime sends as the browser does.
 import WebSocket from "ws";
-import { parseServerMessage, SOCKET_MESSAGES_VERSION } from "../../src/core/socket/messages";
+import { parseServerMessage, SOCKET_MESSAGES_VERSION, type ServerMessage } from "../../src/core/socket/messages";
 
 export interface TrialSocket {
   messages: Array<Record<string, unknown>>;
@@ -11,6 +11,8 @@ export interface TrialSocket {
   /** Resolves with the first message (already received or future) that matches. */
   next(match: (m: Record<string, unknown>) => boolean, timeoutMs?: number): Promise<Record<string, unknown>>;
   command(requestId: string, command: Record<string, unknown>): Promise<Record<string, unknown>>;
+  /** Calls `listen` with every message from now on, as the page's own handlers see them. */
+  listen(listen: (m: ServerMessage) => void): void;
   close(): void;
 }
 
@@ -18,12 +20,14 @@ export async function connectTrial(url: string, token: string, lastSeq = 0): Pro
   const ws = new WebSocket(url);
   const messages: Array<Record<string, unknown>> = [];
   const waiters = new Set<() => void>();
+  const listeners = new Set<(m: ServerMessage) => void>();
   ws.on("message", (data) => {
     const parsed = parseServerMessage(String(data));
     // Thrown here, it fails the test that received it as an unhandled error.
     if (!parsed.ok)
       throw new Error(`The runtime sent a message the browser would refuse: ${parsed.reason}\n${String(data)}`);
     messages.push(parsed.message);
+    for (const listen of listeners) listen(parsed.message);
     for (const w of [...waiters]) w();
   });
   await new Promise<void>((ok, fail) => {
@@ -57,6 +61,7 @@ export async function connectTrial(url: string, token: string, lastSeq = 0): Pro
       // The outcome: "ack" or "rejected" (a stop's "halted" comes before it and is not one).
       return socket.next((m) => m.requestId === requestId && (m.type === "ack" || m.type === "rejected"));
     },
+    listen: (listen) => void listeners.add(listen),
     close: () => ws.close(),
   };
   const closed = new Promise<void>((ok) =>

@@ -11,7 +11,10 @@ import type { StoredEvent } from "@/core/trial";
 // each connection has a `peerId` (welcome, presence) and the welcome carries the ICE servers;
 // "camera": the robot's own camera, frame by frame.
 // Also 4: "code": an observer's key press on a code of a published coding scheme; "codes" answers with their tier's changes.
-export const SOCKET_MESSAGES_VERSION = 4;
+// 5: the heartbeat (src/core/socket/heartbeat.ts): "ping" carries the page's clock and its last round trip,
+// "pong" answers it at once with the ping's time, so each end learns when the other stopped; the runtime's
+// own "ping" asks a quiet page to ping at once.
+export const SOCKET_MESSAGES_VERSION = 5;
 
 /** Every id a message carries is declared with this, so tests can find them all. */
 export const id = z.string().min(1).max(100);
@@ -92,7 +95,13 @@ export const clientMessageSchema = z.discriminatedUnion("type", [
     codeId: z.string().min(1).max(100),
     modifiers: z.array(z.string().min(1).max(100)).max(20).default([]),
   }),
-  z.object({ type: z.literal("ping") }),
+  // The heartbeat: `at` is the page's clock (ms since 1970) as it sent it; `roundTripMs`, how long its last
+  // ping took to be answered (none before the first answer). The runtime answers at once with a "pong".
+  z.object({
+    type: z.literal("ping"),
+    at: z.number().finite(),
+    roundTripMs: z.number().finite().min(0).max(3_600_000).optional(),
+  }),
   // Replays the finished trial's robot commands on the simulated robot, from a
   // moment of the trial (ms from t0) at a speed (REPLAY_SPEEDS; checked by the
   // runtime, which says which speeds there are). A connection has one replay:
@@ -198,7 +207,10 @@ export const serverMessageSchema = z.discriminatedUnion("type", [
     posture: z.string().nullable(),
     battery: z.number().nullable(),
   }),
-  z.object({ type: z.literal("pong") }),
+  // The answer to a "ping": its `at`, so the page measures the round trip.
+  z.object({ type: z.literal("pong"), at: z.number() }),
+  // To a page the runtime has not heard from lately: ping now (a hidden tab's timers may be held back).
+  z.object({ type: z.literal("ping") }),
   // The robot's camera (its plugin's `camera`): one compressed image, base64, as the robot sent it.
   z.object({ type: z.literal("camera"), format: z.string().max(100), data: z.string() }),
   // Live video: a signal from another connection of this trial.

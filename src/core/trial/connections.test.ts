@@ -7,32 +7,37 @@ describe("what the wizard's page says of the runtime, the robot and the database
   it.each<[string, Connections, string[]]>([
     [
       "all well",
-      { runtime: true, robot: { connected: true }, database: "connected" },
+      { runtime: "live", robot: { connected: true }, database: "connected" },
       ["runtime live (green)", "robot connected (green)", "database connected (green)"],
     ],
     [
       "the runtime away: what it said of the robot no longer holds",
-      { runtime: false, robot: { connected: true }, database: "connected" },
+      { runtime: "reconnecting", robot: { connected: true }, database: "connected" },
       ["runtime reconnecting (red)", "robot unknown (slate)", "database connected (green)"],
     ],
     [
       "the database frozen, the runtime still live",
-      { runtime: true, robot: { connected: true }, database: "unavailable" },
+      { runtime: "live", robot: { connected: true }, database: "unavailable" },
       ["runtime live (green)", "robot connected (green)", "database unavailable (red)"],
     ],
     [
       "a robot that reported trouble while connected",
-      { runtime: true, robot: { connected: true, detail: "camera refused" }, database: "checking" },
+      { runtime: "live", robot: { connected: true, detail: "camera refused" }, database: "checking" },
       ["runtime live (green)", "robot connected (camera refused) (amber)", "database checking (slate)"],
     ],
     [
       "a robot gone",
-      { runtime: true, robot: { connected: false, detail: "no answer" }, database: "connected" },
+      { runtime: "live", robot: { connected: false, detail: "no answer" }, database: "connected" },
       ["runtime live (green)", "robot disconnected (no answer) (red)", "database connected (green)"],
     ],
     [
+      "the runtime connected but not answering (frozen): nothing it said still holds",
+      { runtime: "silent", robot: { connected: true }, database: "connected" },
+      ["runtime not answering (red)", "robot unknown (slate)", "database connected (green)"],
+    ],
+    [
       "no robot said yet",
-      { runtime: false, robot: null, database: "checking" },
+      { runtime: "reconnecting", robot: null, database: "checking" },
       ["runtime reconnecting (red)", "database checking (slate)"],
     ],
   ])("%s", (_, connections, expected) => {

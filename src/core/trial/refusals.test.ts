@@ -1,5 +1,6 @@
 import { describe, expect, it } from "vitest";
 import { fold } from "./fold";
+import type { RuntimeState } from "./connections";
 import { controlsOffBecause, type Refusal, refusalInForce } from "./refusals";
 import type { EngineEvent, TrialProtocol, TrialState } from "./types";
 
@@ -111,10 +112,26 @@ describe("an ended trial's controls", () => {
     else expect(off).toMatch(reason);
   });
 
-  it.each<[string, TrialState, RegExp]>([
-    ["a running trial", stateAfter(...started), /^The trial runtime is not connected: nothing can be sent/],
-    ["a completed one says so first", stateAfter(...started, { type: "trial.completed" }), /^This trial is completed/],
-  ])("with the runtime away: %s", (_name, state, reason) => {
-    expect(controlsOffBecause(state, false)).toMatch(reason);
+  it.each<[string, TrialState, RuntimeState, RegExp]>([
+    [
+      "a running trial",
+      stateAfter(...started),
+      "reconnecting",
+      /^The trial runtime is not connected: nothing can be sent/,
+    ],
+    [
+      "a running trial, the runtime connected but frozen",
+      stateAfter(...started),
+      "silent",
+      /^The trial runtime is not answering: nothing can be sent .* until it answers again/,
+    ],
+    [
+      "a completed one says so first",
+      stateAfter(...started, { type: "trial.completed" }),
+      "silent",
+      /^This trial is completed/,
+    ],
+  ])("with the runtime away: %s", (_name, state, runtime, reason) => {
+    expect(controlsOffBecause(state, runtime)).toMatch(reason);
   });
 });

@@ -5,7 +5,8 @@
 // trial moved to another step or ended). A refusal the engine did not make
 // (who may run the trial) lasts until anything happens in the trial. An ended
 // trial's controls are all off, with one plain reason; so are they while the
-// page is not connected to the trial runtime.
+// page is not connected to the trial runtime, or the runtime is not answering.
+import type { RuntimeState } from "./connections";
 import { decide } from "./decide";
 import type { Command, TrialProtocol, TrialState } from "./types";
 
@@ -30,12 +31,14 @@ export function refusalInForce(refusal: Refusal | null, protocol: TrialProtocol,
  * Why none of the wizard's controls work, emergency stop included; null while
  * the trial can be commanded. Without the runtime nothing reaches the trial.
  */
-export function controlsOffBecause(state: TrialState, runtimeConnected = true): string | null {
+export function controlsOffBecause(state: TrialState, runtime: RuntimeState = "live"): string | null {
   if (state.status === "completed")
     return "This trial is completed: nothing more can be sent to it or to its robot. Its record is in the analysis.";
   if (state.status === "aborted")
     return "This trial was aborted: nothing more can be sent to it or to its robot. Its record is in the analysis.";
-  if (!runtimeConnected)
+  if (runtime === "reconnecting")
     return "The trial runtime is not connected: nothing can be sent to the trial or its robot until the page has reconnected.";
+  if (runtime === "silent")
+    return "The trial runtime is not answering: nothing can be sent to the trial or its robot until it answers again.";
   return null;
 }

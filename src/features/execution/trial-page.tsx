@@ -101,7 +101,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
             </Badge>
           ))}
         <span className="ml-auto flex items-center gap-4">
-          {indicators({ runtime: live.connected, robot: live.robot, database }).map(({ what, state, tone }) => (
+          {indicators({ runtime: live.runtime, robot: live.robot, database }).map(({ what, state, tone }) => (
             <Badge key={what} tone={tone}>
               {/* One item: a badge is a flex box, where a space between two items would collapse. */}
               <span>
@@ -143,7 +143,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
               protocol={protocol}
               names={trial.actionNames}
               state={live.state}
-              connected={live.connected}
+              runtime={live.runtime}
               send={live.command}
             />
           )}

@@ -2,7 +2,8 @@
 // The browser's side of the trial socket: connects with a fresh token (each
 // works once, so every reconnection asks for a new one), resumes from the last
 // event it saw after any drop, and applies the events to the trial's state
-// with the same engine the server uses.
+// with the same engine the server uses. While connected it keeps a heartbeat
+// (heartbeat.ts), so that a runtime that stops answering is shown at once.
 import { useMutation } from "@tanstack/react-query";
 import { useCallback, useEffect, useMemo, useRef, useState } from "react";
 import { applyAll, type Command, fold, type TrialProtocol, type TrialState } from "@/core/trial";
@@ -19,6 +20,8 @@ import {
 } from "@/core/socket/messages";
 import { useTRPC } from "@/lib/trpc";
 import type { LiveRobotState } from "@/core/robots/live-state";
+import type { RuntimeState } from "@/core/trial/connections";
+import { type Heartbeat, startHeartbeat } from "./heartbeat";
 
 export type Annotation = Extract<ServerMessage, { type: "annotation" }>["annotation"];
 /** One of my code events as the runtime confirmed it. */
@@ -36,7 +39,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const [annotations, setAnnotations] = useState<Annotation[]>([]);
   // My own codes as the runtime wrote them this visit (the page merges them with those loaded before).
   const [codes, setCodes] = useState<LiveCode[]>([]);
-  const [connected, setConnected] = useState(false);
+  const [runtime, setRuntime] = useState<RuntimeState>("reconnecting");
   const [robot, setRobot] = useState<{ connected: boolean; detail?: string; name?: string } | null>(null);
   const [robotState, setRobotState] = useState<LiveRobotState | null>(null);
   // About the connection (lost, shut out, another version): stays until the connection changes.
@@ -77,6 +80,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   useEffect(() => {
     let stopped = false;
     let retry = 500;
+    let heartbeat: Heartbeat | null = null;
     const connect = async () => {
       let ticket: { url: string; token: string };
       try {
@@ -101,9 +105,12 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         // A server of another version (the page outlived an upgrade) or a broken message: say so rather than fold it.
         if (!parsed.ok) return setNotice(`${parsed.reason} Reload the page.`);
         const m = parsed.message;
+        heartbeat?.heard(m);
         if (m.type === "welcome") {
           retry = 500;
-          setConnected(true);
+          setRuntime("live");
+          heartbeat?.stop();
+          heartbeat = startHeartbeat((ping) => ws.send(JSON.stringify(ping)), setRuntime);
           setNotice(null);
           setViewers(m.viewers);
           setMayRun(m.mayRun);
@@ -154,7 +161,9 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         }
       };
       ws.onclose = (event) => {
-        setConnected(false);
+        heartbeat?.stop();
+        heartbeat = null;
+        setRuntime("reconnecting");
         setPeer(null);
         signalRequests.current.clear();
         unheardSignals.current = [];
@@ -184,6 +193,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     void connect();
     return () => {
       stopped = true;
+      heartbeat?.stop();
       socket.current?.close();
     };
     // The connection lives as long as the page shows this trial.
@@ -241,7 +251,10 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     viewers,
     annotations,
     codes,
-    connected,
+    /** The trial runtime: live, connected but not answering (frozen), or reconnecting. */
+    runtime,
+    /** Whether anything can reach the trial now: the runtime is connected and answering. */
+    connected: runtime === "live",
     robot,
     /** What the robot is doing now (null until the runtime says). */
     robotState,

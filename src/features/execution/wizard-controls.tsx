@@ -5,6 +5,7 @@ import { exitOf } from "@/core/protocol/flow";
 import { useId, useRef, useState } from "react";
 import { actionName, type ActionNames } from "@/core/designer/action-name";
 import { answerOptions, nextUnit, type TrialProtocol, type TrialState } from "@/core/trial";
+import type { RuntimeState } from "@/core/trial/connections";
 import { controlsOffBecause } from "@/core/trial/refusals";
 import type { WizardCommand } from "@/core/socket/messages";
 import { Button } from "@/ui/button";
@@ -39,14 +40,14 @@ export function WizardControls({
   protocol,
   names,
   state,
-  connected,
+  runtime,
   send,
 }: {
   protocol: TrialProtocol;
   names: ActionNames;
   state: TrialState;
-  /** Whether the page is connected to the trial runtime: without it nothing can be sent. */
-  connected: boolean;
+  /** The page's link to the trial runtime: unless it is live, nothing can be sent. */
+  runtime: RuntimeState;
   send: Send;
 }) {
   const speech = useRef<HTMLInputElement>(null);
@@ -59,7 +60,7 @@ export function WizardControls({
   const running = state.status === "in_progress";
   // An ended trial takes no command, emergency stop included, and nothing is sent without the runtime:
   // every control is off, and the page says why.
-  const offBecause = controlsOffBecause(state, connected);
+  const offBecause = controlsOffBecause(state, runtime);
   const off = offBecause !== null;
   const ended = state.status === "completed" || state.status === "aborted";
   const offId = useId();
