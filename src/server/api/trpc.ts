@@ -120,15 +120,19 @@ const databaseAnswers = t.middleware(async ({ ctx, next }) => {
     const watch = new Promise<"watch">((ok) => {
       timer = setTimeout(() => ok("watch"), WATCH_MS);
     });
-    const done = await Promise.race([work, watch]).finally(() => clearTimeout(timer));
-    if (done !== "watch") {
+    // A procedure that ends while the database is being asked is answered at once, not after the question.
+    const done = await Promise.race([work, watch.then(probe)]).finally(() => clearTimeout(timer));
+    if (done instanceof TRPCError) throw done;
+    if (done !== "answers") {
       if (!done.ok && databaseUnavailable(done.error)) throw unavailable(done.error);
       return done;
     }
-    await answered(ctx.db.execute(sql`select 1`), "The database did not answer during a request.", PROBE_MS).catch(
-      (error: unknown) => {
-        throw unavailable(error);
-      },
+  }
+
+  function probe(): Promise<"answers" | TRPCError> {
+    return answered(ctx.db.execute(sql`select 1`), "The database did not answer during a request.", PROBE_MS).then(
+      () => "answers",
+      (error: unknown) => unavailable(error),
     );
   }
 });
