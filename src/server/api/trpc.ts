@@ -1,4 +1,5 @@
 import { initTRPC, TRPCError } from "@trpc/server";
+import { sql } from "drizzle-orm";
 import { ZodError, type z } from "zod";
 import { nulPath, nulRefusal } from "@/core/access/input";
 import {
@@ -12,7 +13,7 @@ import {
 } from "@/core/access/policy";
 import type { Channels } from "@/core/plugins";
 import type { Blinding } from "@/core/studies/blinding";
-import type { Database } from "@/store/client";
+import { answered, DATABASE_UNAVAILABLE, type Database, databaseUnavailable } from "@/store/client";
 import { assertOneStudy } from "../access/membership";
 import { studyAccessOf } from "@/store/study-access";
 import { keyOf, loadResource, nameOf, type Resource, type ResourceRow } from "../access/resources";
@@ -92,11 +93,57 @@ const noNul = t.middleware(async ({ getRawInput, next }) => {
   return next();
 });
 
+/** How long a procedure works before the database is asked whether it still answers, and then how often. */
+const WATCH_MS = 3000;
+/** A database that answers at all answers `select 1` at once; one that stays silent this long is gone. */
+const PROBE_MS = 2000;
+
+const unavailable = (cause: unknown) =>
+  new TRPCError({ code: "SERVICE_UNAVAILABLE", message: DATABASE_UNAVAILABLE, cause });
+
+/**
+ * Every procedure answers 503 with the plain sentence when the database is
+ * away: at once when a query fails because it could not be reached or its
+ * connection dropped, and within seconds when the database goes silent
+ * partway through (a frozen server keeps its connections open and answers
+ * nothing, so the procedure's own query would wait for good). A procedure
+ * still working after a few seconds makes the database answer a trivial
+ * question; while it does, the procedure is slow but healthy (a large
+ * import) and is left to finish. When it does not, the person is answered
+ * and the procedure left behind: its writes are in transactions, which
+ * commit whole or not at all, and a try again sees whichever it was.
+ */
+const databaseAnswers = t.middleware(async ({ ctx, next }) => {
+  const work = next();
+  for (;;) {
+    let timer: ReturnType<typeof setTimeout> | undefined;
+    const watch = new Promise<"watch">((ok) => {
+      timer = setTimeout(() => ok("watch"), WATCH_MS);
+    });
+    // A procedure that ends while the database is being asked is answered at once, not after the question.
+    const done = await Promise.race([work, watch.then(probe)]).finally(() => clearTimeout(timer));
+    if (done instanceof TRPCError) throw done;
+    if (done !== "answers") {
+      if (!done.ok && databaseUnavailable(done.error)) throw unavailable(done.error);
+      return done;
+    }
+  }
+
+  function probe(): Promise<"answers" | TRPCError> {
+    return answered(ctx.db.execute(sql`select 1`), "The database did not answer during a request.", PROBE_MS).then(
+      () => "answers",
+      (error: unknown) => unavailable(error),
+    );
+  }
+});
+
+const watched = t.procedure.use(databaseAnswers);
+
 /** Only for procedures that need no account (none hold study data). */
-export const publicProcedure = t.procedure.meta({ op: "public" }).use(noNul);
+export const publicProcedure = watched.meta({ op: "public" }).use(noNul);
 
 /** Signed in, and every procedure declares what it does. */
-const signedIn = t.procedure.use(noNul).use(async ({ ctx, meta, next }) => {
+const signedIn = watched.use(noNul).use(async ({ ctx, meta, next }) => {
   if (!meta?.op) throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: "Procedure declares no operation." });
   if (meta.op === "public")
     throw new TRPCError({ code: "INTERNAL_SERVER_ERROR", message: "Public procedures use publicProcedure." });
