@@ -174,5 +174,9 @@ describe("a page of the real app, with its database frozen", () => {
 
     await signalDatabase(app.dataDir, "SIGCONT");
     expect((await page()).status).toBe(200);
+    // The failed session lookup is logged without its query's parameters: the session's token is not in the log.
+    const token = decodeURIComponent(/session_token=([^;]+)/.exec(cookie)![1]!).split(".")[0]!;
+    expect(token.length).toBeGreaterThan(10);
+    expect(app.output()).not.toContain(token);
   });
 });

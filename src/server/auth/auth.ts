@@ -25,6 +25,16 @@ const SIGN_IN = "/sign-in/email";
 export function createAuth(settings: AuthSettings) {
   return betterAuth({
     appName: "HRIStudio",
+    logger: {
+      // The library logs a failed query with the error it got, whose text holds the query's parameters
+      // (a session's token among them): the log keeps its message and the error's code, never that text.
+      log: (level, message, ...args) => {
+        const codes = args.map((a) => (a as { code?: unknown } | null)?.code).filter((c) => typeof c === "string");
+        const line = `[sign-in] ${message}${codes.length ? ` (${codes.join(", ")})` : ""}`;
+        if (level === "error") console.error(line);
+        else console.warn(line);
+      },
+    },
     secret: settings.secret,
     baseURL: settings.baseURL,
     database: drizzleAdapter(settings.db, {
