@@ -12,11 +12,12 @@ import { PAGE_GONE_AFTER_MS, type RuntimeLink } from "../../src/core/socket/hear
 import { startHeartbeat } from "../../src/features/execution/heartbeat";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/store/client";
-import { experimentVersions, experiments, studies, studyMembers, trials } from "../../src/store/schema";
+import { studies, studyMembers } from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { startRuntime } from "../support/runtime";
 import { connectTrial, type TrialSocket } from "../support/socket";
+import { trialOf } from "../support/trial-rows";
 
 const SECRET = "heartbeat-test-secret".padEnd(40, "x");
 
@@ -43,19 +44,7 @@ beforeAll(async () => {
     experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
     steps: [{ id: "s1", name: "One", description: "", actions: [] }],
   };
-  const [experiment] = await db
-    .insert(experiments)
-    .values({ studyId: study!.id, name: "E", robotId: "simulated" })
-    .returning();
-  const [version] = await db
-    .insert(experimentVersions)
-    .values({ experimentId: experiment!.id, version: 1, snapshot, hash: "heartbeat", robotId: "simulated" })
-    .returning();
-  const [trial] = await db
-    .insert(trials)
-    .values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id, wizardId: wizard.id })
-    .returning();
-  trialId = trial!.id;
+  trialId = await trialOf(db, { studyId: study!.id, wizardId: wizard.id, snapshot });
 }, 120_000);
 
 afterAll(async () => {

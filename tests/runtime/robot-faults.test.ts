@@ -12,21 +12,13 @@ import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/store/client";
-import {
-  experimentVersions,
-  experiments,
-  participants,
-  robotStudies,
-  robots,
-  studies,
-  studyMembers,
-  trials,
-} from "../../src/store/schema";
+import { robotStudies, robots, studies, studyMembers } from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { firstPartyPlugin } from "../support/plugins";
 import { startRuntime } from "../support/runtime";
 import { connectTrial, type TrialSocket } from "../support/socket";
+import { trialOf } from "../support/trial-rows";
 
 const SECRET = "robot-faults-test-secret".padEnd(40, "x");
 
@@ -61,24 +53,8 @@ async function studyWith(name: string, robot: typeof robots.$inferInsert, snapsh
   await db.insert(studyMembers).values({ studyId: study!.id, userId: wizard.id, role: "wizard" });
   const [registered] = await db.insert(robots).values(robot).returning();
   await db.insert(robotStudies).values({ robotId: registered!.id, studyId: study!.id });
-  const robotId = snapshot.experiment.robotId;
-  const [experiment] = await db.insert(experiments).values({ studyId: study!.id, name, robotId }).returning();
-  const [version] = await db
-    .insert(experimentVersions)
-    .values({ experimentId: experiment!.id, version: 1, snapshot, hash: name, robotId })
-    .returning();
-  const [participant] = await db.insert(participants).values({ studyId: study!.id, code: "P1" }).returning();
-  const [trial] = await db
-    .insert(trials)
-    .values({
-      studyId: study!.id,
-      experimentId: experiment!.id,
-      versionId: version!.id,
-      participantId: participant!.id,
-      wizardId: wizard.id,
-    })
-    .returning();
-  const socket = await connectTrial(runtime.url, signSocketToken({ userId: wizard.id, trialId: trial!.id }, SECRET));
+  const trialId = await trialOf(db, { studyId: study!.id, wizardId: wizard.id, snapshot, withParticipant: true });
+  const socket = await connectTrial(runtime.url, signSocketToken({ userId: wizard.id, trialId }, SECRET));
   sockets.push(socket);
   return socket;
 }

@@ -7,6 +7,7 @@ import type { ChildProcess } from "node:child_process";
 import { afterAll, beforeAll, expect, it } from "vitest";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import {
+  camera,
   jointStates,
   pluginTopics,
   robotStateReport,
@@ -16,21 +17,13 @@ import {
 } from "../../src/robots/simulator";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/store/client";
-import {
-  experimentVersions,
-  experiments,
-  participants,
-  robotStudies,
-  robots,
-  studies,
-  studyMembers,
-  trials,
-} from "../../src/store/schema";
+import { robotStudies, robots, studies, studyMembers } from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { firstPartyPlugin } from "../support/plugins";
 import { startRuntime } from "../support/runtime";
 import { connectTrial, type TrialSocket } from "../support/socket";
+import { trialOf } from "../support/trial-rows";
 
 const SECRET = "silent-topics-test-secret".padEnd(40, "x");
 const SILENT =
@@ -46,7 +39,14 @@ beforeAll(async () => {
   const nao = firstPartyPlugin("nao6-ros2.json");
   sim = await startSimulator({
     port: 0,
-    nodes: [pluginTopics(nao), speech({ msPerChar: 1 }), jointStates({ hz: 10 }), robotStateReport()],
+    // Every state topic the plugin declares but /battery: the camera too, which the runtime may subscribe.
+    nodes: [
+      pluginTopics(nao),
+      speech({ msPerChar: 1 }),
+      jointStates({ hz: 10 }),
+      robotStateReport(),
+      camera({ hz: 5 }),
+    ],
   });
   runtime = await startRuntime(url, SECRET);
 }, 120_000);
@@ -86,26 +86,8 @@ it("a state topic the robot never publishes is told to the wizard in plain words
       },
     ],
   };
-  const [experiment] = await db
-    .insert(experiments)
-    .values({ studyId: study!.id, name: "E", robotId: "nao6-ros2" })
-    .returning();
-  const [version] = await db
-    .insert(experimentVersions)
-    .values({ experimentId: experiment!.id, version: 1, snapshot, hash: "silent", robotId: "nao6-ros2" })
-    .returning();
-  const [participant] = await db.insert(participants).values({ studyId: study!.id, code: "P1" }).returning();
-  const [trial] = await db
-    .insert(trials)
-    .values({
-      studyId: study!.id,
-      experimentId: experiment!.id,
-      versionId: version!.id,
-      participantId: participant!.id,
-      wizardId: wizard.id,
-    })
-    .returning();
-  socket = await connectTrial(runtime.url, signSocketToken({ userId: wizard.id, trialId: trial!.id }, SECRET));
+  const trialId = await trialOf(db, { studyId: study!.id, wizardId: wizard.id, snapshot, withParticipant: true });
+  socket = await connectTrial(runtime.url, signSocketToken({ userId: wizard.id, trialId }, SECRET));
   expect((await socket.command("c1", { kind: "start" })).type).toBe("ack");
 
   // What the wizard's page shows as "robot connected (…)": the link is up, the topic is not.

@@ -14,11 +14,12 @@ import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import { HELLO_DEADLINE_MS, UNGREETED_PER_ADDRESS } from "../../src/core/socket/limits";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/store/client";
-import { experimentVersions, experiments, studies, studyMembers, trials } from "../../src/store/schema";
+import { studies, studyMembers } from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { startRuntime } from "../support/runtime";
 import { connectTrial } from "../support/socket";
+import { trialOf } from "../support/trial-rows";
 
 const SECRET = "socket-limits-test-secret".padEnd(40, "x");
 const MB = 1024 * 1024;
@@ -197,19 +198,8 @@ describe("the trial socket after hello", () => {
       experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
       steps: [{ id: "s1", name: "One", description: "", actions: [] }],
     };
-    const [experiment] = await db
-      .insert(experiments)
-      .values({ studyId: study!.id, name: "E", robotId: "simulated" })
-      .returning();
-    const [version] = await db
-      .insert(experimentVersions)
-      .values({ experimentId: experiment!.id, version: 1, snapshot, hash: "limits", robotId: "simulated" })
-      .returning();
-    const [trial] = await db
-      .insert(trials)
-      .values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id, wizardId: wizard.id })
-      .returning();
-    const socket = await connectTrial(runtime.url, signSocketToken({ userId: wizard.id, trialId: trial!.id }, SECRET));
+    const trialId = await trialOf(db, { studyId: study!.id, wizardId: wizard.id, snapshot });
+    const socket = await connectTrial(runtime.url, signSocketToken({ userId: wizard.id, trialId }, SECRET));
     expect(socket.messages.some((m) => m.type === "welcome")).toBe(true);
 
     const large = await socket.command("big", {

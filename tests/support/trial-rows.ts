@@ -1,0 +1,28 @@
+// A trial of a study straight in the database, for runtime tests: its
+// experiment, that experiment's published version of `snapshot`, and (for a
+// run that needs one) a participant. The study and its wizard are the test's own.
+import type { ProtocolSnapshot } from "../../src/core/protocol/document";
+import type { Database } from "../../src/store/client";
+import { experimentVersions, experiments, participants, trials } from "../../src/store/schema";
+
+export async function trialOf(
+  db: Database,
+  input: { studyId: string; wizardId: string; snapshot: ProtocolSnapshot; withParticipant?: boolean },
+): Promise<string> {
+  const { studyId, wizardId, snapshot } = input;
+  const robotId = snapshot.experiment.robotId;
+  const name = snapshot.experiment.name;
+  const [experiment] = await db.insert(experiments).values({ studyId, name, robotId }).returning();
+  const [version] = await db
+    .insert(experimentVersions)
+    .values({ experimentId: experiment!.id, version: 1, snapshot, hash: `${name}-1`, robotId })
+    .returning();
+  const participant = input.withParticipant
+    ? (await db.insert(participants).values({ studyId, code: "P1" }).returning())[0]
+    : undefined;
+  const [trial] = await db
+    .insert(trials)
+    .values({ studyId, experimentId: experiment!.id, versionId: version!.id, participantId: participant?.id, wizardId })
+    .returning();
+  return trial!.id;
+}
