@@ -1,7 +1,7 @@
 // The server's shared parts for the Next.js process, built once from the environment.
 import { readConfig } from "@/store/config";
 import { createAuth, type Auth } from "./auth/auth";
-import { answered, createDatabase, type Database } from "@/store/client";
+import { answered, createDatabase, createSessionClient, type Database } from "@/store/client";
 import { configuredMedia } from "./media";
 import { appUrl, browserRuntimeUrl } from "./runtime-url";
 import type { Context, SignedInUser } from "./api/trpc";
@@ -10,6 +10,7 @@ import { channelsOf, transportConfig } from "@/robots/transports/settings";
 
 interface Server {
   db: Database;
+  ping: Context["ping"];
   auth: Auth;
   secret: string;
   runtimeUrl: string;
@@ -25,6 +26,8 @@ export function server(): Server {
   if (!config.DATABASE_URL) throw new Error("DATABASE_URL is not set: start the app with `npm start`.");
   if (!config.BETTER_AUTH_SECRET) throw new Error("BETTER_AUTH_SECRET is not set: start the app with `npm start`.");
   const { db } = createDatabase(config.DATABASE_URL);
+  const probe = createSessionClient(config.DATABASE_URL);
+  const ping = () => probe`select 1`.then(() => undefined);
   const auth = createAuth({
     db,
     secret: config.BETTER_AUTH_SECRET,
@@ -40,7 +43,7 @@ export function server(): Server {
   const media = configuredMedia(config);
   // The runtime reaches the robot with the same settings (src/runtime/main.ts).
   const robotChannels = channelsOf(transportConfig(config));
-  globalForServer.hriServer = { db, auth, secret: config.BETTER_AUTH_SECRET, runtimeUrl, media, robotChannels };
+  globalForServer.hriServer = { db, ping, auth, secret: config.BETTER_AUTH_SECRET, runtimeUrl, media, robotChannels };
   return globalForServer.hriServer;
 }
 
@@ -71,6 +74,6 @@ export async function signedInUser(headers: Headers): Promise<SignedInUser | nul
 }
 
 export async function contextFromHeaders(headers: Headers): Promise<Context> {
-  const { db, secret, runtimeUrl, media, robotChannels } = server();
-  return { db, user: await signedInUser(headers), secret, runtimeUrl, media, robotChannels };
+  const { db, ping, secret, runtimeUrl, media, robotChannels } = server();
+  return { db, ping, user: await signedInUser(headers), secret, runtimeUrl, media, robotChannels };
 }

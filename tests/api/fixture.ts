@@ -6,7 +6,7 @@ import { createCallerFactory, type Context, type SignedInUser } from "../../src/
 import { appRouter } from "../../src/server/api/root";
 import { createAccount } from "../../src/server/auth/accounts";
 import type { Database } from "../../src/store/client";
-import { eq } from "drizzle-orm";
+import { eq, sql } from "drizzle-orm";
 import { unzipSync } from "fflate";
 import { studies, studyMembers } from "../../src/store/schema";
 import { scratchFolder } from "../support/scratch";
@@ -39,6 +39,9 @@ export function testMedia(maxBytes = 8 * 1024 * 1024): Context["media"] {
   return { storage: new LocalStorage(scratchFolder("media-")), maxBytes };
 }
 
+/** The web app asks on a connection of its own (src/server/context.ts); a test's pool does for it. */
+export const pingOf = (db: Database) => () => db.execute(sql`select 1`);
+
 export async function buildFixture(db: Database) {
   const people = {} as Record<Exclude<Caller, "anonymous">, SignedInUser>;
   for (const caller of Object.keys(SYSTEM_ROLE) as Array<keyof typeof SYSTEM_ROLE>) {
@@ -47,6 +50,7 @@ export async function buildFixture(db: Database) {
   const media = testMedia();
   const contextOf = (user: SignedInUser | null) => ({
     db,
+    ping: pingOf(db),
     user,
     secret: TEST_SECRET,
     runtimeUrl: "ws://127.0.0.1:1",

@@ -7,7 +7,7 @@ import { appRouter } from "../../src/server/api/root";
 import { createCallerFactory } from "../../src/server/api/trpc";
 import { seedDemo } from "../../src/server/seed/demo";
 import { freshDatabase } from "../support/db";
-import { buildFixture, DEMO_CHANNELS, TEST_SECRET, testMedia } from "./fixture";
+import { buildFixture, DEMO_CHANNELS, pingOf, TEST_SECRET, testMedia } from "./fixture";
 
 const { db, close } = await freshDatabase();
 await seedDemo(db);
@@ -19,6 +19,7 @@ async function demoOwner() {
   const researcher = (await db.query.user.findMany()).find((u) => u.email === "researcher@demo.hristudio")!;
   return createCallerFactory(appRouter)({
     db,
+    ping: pingOf(db),
     user: { id: researcher.id, name: researcher.name, email: researcher.email, role: "researcher" },
     secret: TEST_SECRET,
     runtimeUrl: "ws://127.0.0.1:1",

@@ -25,7 +25,7 @@ import { LocalStorage } from "../../src/server/media/local-storage";
 import { S3Storage } from "../../src/server/media/s3-storage";
 import { seedDemo } from "../../src/server/seed/demo";
 import { appendEvents } from "../../src/store/event-store";
-import { newPerson, TEST_SECRET } from "../api/fixture";
+import { newPerson, pingOf, TEST_SECRET } from "../api/fixture";
 import { BUN, newDataDir } from "../support/app";
 import { bareTrial, freshDatabaseUrl } from "../support/db";
 import { startS3Server } from "../support/python";
@@ -105,6 +105,7 @@ async function studyData(url: string, mediaDir: string) {
     const storage = new LocalStorage(mediaDir);
     const api = appRouter.createCaller({
       db,
+      ping: pingOf(db),
       user: person,
       secret: TEST_SECRET,
       runtimeUrl: "ws://127.0.0.1:1",

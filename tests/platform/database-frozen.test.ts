@@ -135,6 +135,17 @@ describe("a database that goes away during a procedure", () => {
     expect((await request).status).toBe(200);
   });
 
+  it("slow procedures holding every connection of the pool are left to finish", { timeout: 180_000 }, async () => {
+    const { request, waiting, release } = await queryHeldBy();
+    // The rest of the web app's pool (createDatabase's ten), each request waiting on the same lock.
+    const others = Array.from({ length: 9 }, () => askApi());
+    await expect.poll(() => waiting().then((pids) => pids.length), { timeout: 30_000 }).toBe(10);
+    // Past the watch's question: asked through a pool with no connection free, it went unanswered (a 503).
+    await new Promise((r) => setTimeout(r, 6000));
+    await release();
+    expect((await Promise.all([request, ...others])).map((a) => a.status)).toEqual(Array(10).fill(200));
+  });
+
   it("a connection dropped under a procedure answers 503 at once, not 500", { timeout: 180_000 }, async () => {
     const { request, waiting, release } = await queryHeldBy();
     const [pid] = await waiting();
