@@ -55,7 +55,10 @@ describe.sequential("the experiment designer, in the browser", () => {
     await r.fill(r.properties.getByLabel("Question for the wizard"), "What did the participant answer?");
     await r.fill(r.properties.getByLabel("Answer 1", { exact: true }), "correct (red)");
     await r.fill(r.properties.getByLabel("Answer 2", { exact: true }), "incorrect / don't know");
+    // A question waits for the wizard's choice: it never starts together with the action above.
+    expect(await r.properties.getByLabel("Starts together with the action above").count()).toBe(0);
     await r.drag("branch", "Recall question");
+    expect(await r.properties.getByLabel("Starts together with the action above").count()).toBe(0);
     await expect
       .poll(() => page.getByRole("region", { name: "Checks" }).textContent())
       .toContain('choose the step the answer "correct (red)" leads to');
@@ -73,6 +76,10 @@ describe.sequential("the experiment designer, in the browser", () => {
       await r.gestureWithSpeech(step, gesture);
       await r.drag("end_trial", step);
     }
+    // The last step: going on from it ends the trial, so "End the trial" is offered once.
+    await r.click(page.getByRole("button", { name: /^Step 5: Response/ }).first());
+    const then = await r.properties.getByLabel("Then").locator("option").allTextContents();
+    expect(then.filter((o) => o.startsWith("End the trial"))).toEqual(["End the trial (last step)"]);
 
     const checks = page.getByRole("region", { name: "Checks" });
     await expect.poll(() => checks.textContent()).toContain("Ready to publish");

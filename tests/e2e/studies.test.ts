@@ -3,25 +3,15 @@
 // sessions; a blinded wizard runs all four from "My sessions" and never sees
 // which condition a session was. Then a new study starts from this one as a
 // template, and an experiment is copied back into it.
-import type { Browser, Page } from "playwright-core";
+import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
+import { runToTheEndInPage as runToTheEnd } from "../support/run-trial";
 
 const CONDITIONS = ["Told with gestures", "Told by voice only"];
 const CODES = ["S101", "S102", "S103", "S104"];
-
-/** Runs the open trial to its end the way a wizard does: N for the next action, 1 for the first answer. */
-async function runToTheEnd(wizard: Page) {
-  const status = wizard.getByTestId("trial-status");
-  for (let i = 0; i < 120 && (await status.textContent()) !== "completed"; i++) {
-    if (await wizard.getByText("What did the participant answer?").isVisible()) await wizard.keyboard.press("1");
-    else await wizard.keyboard.press("n");
-    await wizard.waitForTimeout(250);
-  }
-  expect(await status.textContent()).toBe("completed");
-}
 
 describe.sequential("a study with conditions, sessions and a blinded wizard", () => {
   let app: RunningApp;

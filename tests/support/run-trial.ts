@@ -1,6 +1,8 @@
-// Runs a whole trial over the runtime socket as a wizard would: start, then
-// "next" until the end, choosing the first answer when asked. For tests that
-// need a finished trial rather than to test running one.
+// Runs a whole trial as a wizard would: start, then "next" until the end,
+// choosing the first answer when asked; over the runtime socket, for tests
+// that need a finished trial rather than to test running one, or in the
+// wizard's page with its keys.
+import type { Page } from "playwright-core";
 import { expect } from "vitest";
 import type { apiClient } from "./http";
 import { connectTrial } from "./socket";
@@ -31,4 +33,15 @@ export async function runWholeTrial(
   socket.close();
   expect(completed, `the trial did not complete: ${JSON.stringify(socket.messages.slice(-6))}`).toBe(true);
   return socket.messages;
+}
+
+/** Runs the trial open in a wizard's page to its end the way a wizard does: N for the next action, 1 for the first answer. */
+export async function runToTheEndInPage(wizard: Page) {
+  const status = wizard.getByTestId("trial-status");
+  for (let i = 0; i < 120 && (await status.textContent()) !== "completed"; i++) {
+    if (await wizard.getByText("What did the participant answer?").isVisible()) await wizard.keyboard.press("1");
+    else await wizard.keyboard.press("n");
+    await wizard.waitForTimeout(250);
+  }
+  expect(await status.textContent()).toBe("completed");
 }

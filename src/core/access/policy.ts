@@ -108,6 +108,14 @@ export function studyRoleMay(role: StudyRole, op: StudyOperation): boolean {
   return (STUDY_OPERATIONS[op] as readonly StudyRole[]).includes(role);
 }
 
+/**
+ * Whether someone who may run trials runs this one (or this session): owners and researchers run any,
+ * a wizard those assigned to them or to nobody (starting an unassigned one makes it theirs).
+ */
+export function runsAssigned(role: StudyRole, assignedWizardId: string | null, userId: string): boolean {
+  return role !== "wizard" || assignedWizardId === null || assignedWizardId === userId;
+}
+
 function article(word: string) {
   return /^[aeiou]/.test(word) ? "an" : "a";
 }

@@ -5,7 +5,7 @@
 import type { Blinding } from "../studies/blinding";
 import { type StudyStatus, trialRefusal } from "../studies/status";
 import type { TrialState } from "../trial/types";
-import { decide, studyRoleMay, type StudyRole, type SystemRole } from "./policy";
+import { decide, runsAssigned, studyRoleMay, type StudyRole, type SystemRole } from "./policy";
 
 export interface TrialAccess {
   userId: string;
@@ -49,8 +49,7 @@ export function commandVerdict(access: TrialAccess, kind: string): SocketVerdict
   // Whoever starts an unassigned trial runs it: starting records them as its
   // wizard, so the trial is credited to who ran it, not to who created it.
   if (access.trial.wizardId === null) return { allow: true, claim: kind === "start" };
-  // Owners and researchers run any trial of their study; a wizard runs the trials assigned to them.
-  if (role !== "wizard" || access.trial.wizardId === access.userId) return { allow: true, claim: false };
+  if (runsAssigned(role, access.trial.wizardId, access.userId)) return { allow: true, claim: false };
   return refuse("This trial is assigned to another wizard: you may watch it but not run it.");
 }
 

@@ -112,6 +112,12 @@ function robotBlocks(plugin: Plugin): Block[] {
 }
 
 /**
+ * Actions that wait for the wizard's choice start on their own: the wizard's controls put one
+ * question at a time, as the first of what starts next, so one of these never runs together.
+ */
+export const WAITS_FOR_CHOICE: ReadonlySet<string> = new Set(["record_answer", "branch"]);
+
+/**
  * Not an action: a tool that makes an action start together with the one
  * above it (dropped onto it, or with the action selected). The group is then
  * a frame around the actions, each still editable on its own.

@@ -175,6 +175,17 @@ describe("designer commands", () => {
     expect(h.present.steps.map((s) => s.id)).toEqual(["intro", "story", "end"]);
   });
 
+  it.each([
+    ["a question", "record_answer"],
+    ["a branch", "branch"],
+  ])("never starts %s together with the action above, nor an action together with it", (_, type) => {
+    const d = draft();
+    d.steps[0]!.actions.splice(2, 0, { id: "choice", type, name: "Choice", parameters: {}, parallelGroup: null });
+    const h = startHistory(d);
+    for (const id of ["choice", "bow"])
+      expect(() => execute(h, commands.setRunTogether(id, true), ids())).toThrow(/waits for the wizard's choice/);
+  });
+
   it("refuses commands about blocks that are gone, in words, and leaves the draft untouched", () => {
     const h = startHistory(draft());
     const refusals: Command[] = [

@@ -2,6 +2,7 @@
 // and redo. The page only renders a draft and sends commands, so every edit a
 // researcher can make is tested here without a browser.
 import type { DesignAction, DesignDraft, DesignStep, NewId, After } from "./types";
+import { WAITS_FOR_CHOICE } from "./blocks";
 
 export class DesignerError extends Error {}
 
@@ -297,6 +298,11 @@ export const commands = {
       }
       const above = step.actions[index - 1];
       if (!above) throw new DesignerError("The first action of a step has nothing above it to run together with.");
+      const choice = [action, above].find((a) => WAITS_FOR_CHOICE.has(a.type));
+      if (choice)
+        throw new DesignerError(
+          `${choice.name || "A question or branch"} waits for the wizard's choice, so it starts on its own, never together with another action.`,
+        );
       const group = above.parallelGroup ?? newId();
       return replaceStep(d, step.id, (s) => ({
         ...s,

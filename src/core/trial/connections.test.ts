@@ -36,6 +36,11 @@ describe("what the wizard's page says of the runtime, the robot and the database
       ["runtime not answering (red)", "robot unknown (slate)", "database connected (green)"],
     ],
     [
+      "the trial ended: its robot let go on purpose, no alarm",
+      { runtime: "live", robot: { connected: false, detail: "closed" }, database: "connected", ended: true },
+      ["runtime live (green)", "robot released (slate)", "database connected (green)"],
+    ],
+    [
       "no robot said yet",
       { runtime: "reconnecting", robot: null, database: "checking" },
       ["runtime reconnecting (red)", "database checking (slate)"],

@@ -26,6 +26,8 @@ export interface Connections {
   /** As the runtime last said; null while it has said nothing of a robot. */
   robot: { connected: boolean; detail?: string } | null;
   database: DatabaseState;
+  /** The trial has ended: its robot link was closed on purpose, so its absence is no alarm. */
+  ended?: boolean;
 }
 
 function robotIndicator(c: Connections): Indicator | null {
@@ -34,6 +36,7 @@ function robotIndicator(c: Connections): Indicator | null {
   const detail = c.robot.detail ? ` (${c.robot.detail})` : "";
   // A connected robot's detail is an error its side reported (e.g. a refused subscription): shown, not hidden.
   if (c.robot.connected) return { what: "robot", state: `connected${detail}`, tone: detail ? "amber" : "green" };
+  if (c.ended) return { what: "robot", state: "released", tone: "slate" };
   return { what: "robot", state: `disconnected${detail}`, tone: "red" };
 }
 

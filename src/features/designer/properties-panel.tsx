@@ -3,7 +3,7 @@
 // comes from the block's JSON Schema; answers and branch targets have their
 // own editors, so nobody types JSON or an id.
 import { ArrowDown, ArrowUp, Plus, Trash2, X } from "lucide-react";
-import type { Block } from "@/core/designer/blocks";
+import { type Block, WAITS_FOR_CHOICE } from "@/core/designer/blocks";
 import { commands, locateAction, locateStep, type Command } from "@/core/designer/model";
 import type { DesignIssue } from "@/core/designer/validate";
 import type { DesignAction, DesignDraft } from "@/core/designer/types";
@@ -134,7 +134,8 @@ function AfterStep({ draft, stepId, run }: Pick<Props, "draft" | "run"> & { step
               </option>
             ),
           )}
-          <option value="end">End the trial</option>
+          {/* On the last step "next" already ends the trial: one way to say it, unless the step says "end" itself. */}
+          {(following || value === "end") && <option value="end">End the trial</option>}
           {value !== "next" && value !== "end" && !draft.steps.some((s) => s.id === value) && (
             <option value={value}>A step that is no longer in the experiment</option>
           )}
@@ -191,16 +192,18 @@ function ActionProperties({
           problems={problems}
         />
       ) : null}
-      <label className="flex items-center gap-2 text-sm">
-        <input
-          type="checkbox"
-          className="h-4 w-4"
-          disabled={index === 0}
-          checked={Boolean(action.parallelGroup && step.actions[index - 1]?.parallelGroup === action.parallelGroup)}
-          onChange={(e) => run(commands.setRunTogether(action.id, e.target.checked))}
-        />
-        Starts together with the action above
-      </label>
+      {!WAITS_FOR_CHOICE.has(action.type) && !WAITS_FOR_CHOICE.has(step.actions[index - 1]?.type ?? "") && (
+        <label className="flex items-center gap-2 text-sm">
+          <input
+            type="checkbox"
+            className="h-4 w-4"
+            disabled={index === 0}
+            checked={Boolean(action.parallelGroup && step.actions[index - 1]?.parallelGroup === action.parallelGroup)}
+            onChange={(e) => run(commands.setRunTogether(action.id, e.target.checked))}
+          />
+          Starts together with the action above
+        </label>
+      )}
       <Field
         label="Note for the wizard"
         hint="Shown to the wizard beside this action during the trial (what to watch for, when to go on). Not part of the methods text."

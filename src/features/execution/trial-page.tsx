@@ -4,7 +4,7 @@ import Link from "next/link";
 import { useCallback, useEffect, useMemo, useState } from "react";
 import { studyRoleMay } from "@/core/access/policy";
 import type { ActionNames } from "@/core/designer/action-name";
-import { actionProblems, type TrialProtocol } from "@/core/trial";
+import { actionProblems, type TrialProtocol, type TrialState } from "@/core/trial";
 import { indicators } from "@/core/trial/connections";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
@@ -40,6 +40,7 @@ export function TrialPage({ trialId }: { trialId: string }) {
 
 type Trial = {
   id: string;
+  status: TrialState["status"];
   studyId: string;
   experimentName: string;
   participantId: string | null;
@@ -62,7 +63,12 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
   const send = wizard && live.connected;
   const started = live.events.find((e) => e.type === "trial.started");
   const problems = useMemo(() => actionProblems(live.events), [live.events]);
-  const ended = live.state.status === "completed" || live.state.status === "aborted";
+  // A finished trial's log is results: whoever may not read them (a wizard) gets no events, so the
+  // socket's state would say "scheduled" and offer Start. The trial's row says how it ended.
+  const rowEnded = trial.status === "completed" || trial.status === "aborted";
+  const logHidden = rowEnded && live.state.status === "scheduled";
+  const status = logHidden ? trial.status : live.state.status;
+  const ended = status === "completed" || status === "aborted";
   const { command } = live;
   // The camera and microphone the wizard records: also what those watching see live.
   const [camera, setCamera] = useState<MediaStream | null>(null);
@@ -86,8 +92,8 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           {trial.experimentName} · {trial.participantCode ?? "no participant"}
         </h1>
         {trial.isRehearsal ? <Badge tone="amber">rehearsal</Badge> : <Badge>version {trial.version}</Badge>}
-        <Badge tone={STATUS_TONE[live.state.status]}>
-          <span data-testid="trial-status">{live.state.status.replace("_", " ")}</span>
+        <Badge tone={STATUS_TONE[status]}>
+          <span data-testid="trial-status">{status.replace("_", " ")}</span>
         </Badge>
         {/* Red only while it holds a live trial; once the trial has ended it is history. */}
         {live.state.emergencyStopped &&
@@ -101,7 +107,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
             </Badge>
           ))}
         <span className="ml-auto flex items-center gap-4">
-          {indicators({ runtime: live.runtime, robot: live.robot, database }).map(({ what, state, tone }) => (
+          {indicators({ runtime: live.runtime, robot: live.robot, database, ended }).map(({ what, state, tone }) => (
             <Badge key={what} tone={tone}>
               {/* One item: a badge is a flex box, where a space between two items would collapse. */}
               <span>
@@ -114,7 +120,13 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
       </div>
       <TrialPeople wizardName={trial.wizardName} createdByName={trial.createdByName} started={Boolean(started)} />
       {live.notice && <Problem error={{ message: live.notice }} />}
-      {ended && (
+      {logHidden && (
+        <Card className="p-4 text-sm" data-testid="trial-ended">
+          This trial has ended. What happened in it is part of the study&apos;s results, which your role in this study
+          does not show.
+        </Card>
+      )}
+      {ended && studyRoleMay(trial.myRole, "data.read") && (
         <Link href={`/trials/${trial.id}/analysis`} className="inline-block font-medium text-brand-600 hover:underline">
           Open the analysis of this trial →
         </Link>
@@ -128,17 +140,19 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           />
         </Card>
         <div className="space-y-6">
-          <StepActions
-            protocol={protocol}
-            names={trial.actionNames}
-            state={live.state}
-            problems={problems}
-            onTrigger={send ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined}
-            notes={wizard}
-          />
+          {!logHidden && (
+            <StepActions
+              protocol={protocol}
+              names={trial.actionNames}
+              state={live.state}
+              problems={problems}
+              onTrigger={send ? (actionId) => void live.command({ kind: "trigger", actionId }) : undefined}
+              notes={wizard}
+            />
+          )}
           {wizard && <BrowserAudio events={live.events} state={live.state} send={live.command} />}
           <OffScript events={live.events} names={trial.actionNames} state={live.state} problems={problems} />
-          {wizard && (
+          {wizard && !logHidden && (
             <WizardControls
               protocol={protocol}
               names={trial.actionNames}

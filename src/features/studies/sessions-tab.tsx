@@ -20,7 +20,6 @@ export function SessionsTab({ studyId, role }: { studyId: string; role: StudyRol
   const remove = useMutation(trpc.sessions.remove.mutationOptions({ onSuccess: refresh }));
   const start = useStartSession();
   const manage = studyRoleMay(role, "participant.manage");
-  const run = studyRoleMay(role, "trial.run");
   return (
     <div className="space-y-6">
       {manage && <ScheduleSession studyId={studyId} onPlanned={refresh} />}
@@ -56,7 +55,7 @@ export function SessionsTab({ studyId, role }: { studyId: string; role: StudyRol
               )}
             </Td>
             <Td className="space-x-2 text-right">
-              {run && s.trialStatus !== "completed" && s.trialStatus !== "aborted" && (
+              {s.mayRun && s.trialStatus !== "completed" && s.trialStatus !== "aborted" && (
                 <Button
                   size="sm"
                   aria-label={`${s.trialId ? "Continue" : "Start"} the session of ${s.participantCode}`}

@@ -5,6 +5,7 @@ import { assertWizardOf } from "../../studies/wizard-gate";
 import { TRPCError } from "@trpc/server";
 import { and, asc, desc, eq, inArray, isNull, or, sql } from "drizzle-orm";
 import { z } from "zod";
+import { runsAssigned, studyRoleMay } from "@/core/access/policy";
 import { blindingFor } from "@/core/studies/blinding";
 import { readSettings } from "@/core/studies/settings";
 import {
@@ -40,8 +41,8 @@ function columns(hideConditions: boolean) {
 }
 
 export const sessionsRouter = router({
-  list: studyProcedure("participant.read", "study", z.object({ studyId: id })).query(({ ctx }) =>
-    ctx.db
+  list: studyProcedure("participant.read", "study", z.object({ studyId: id })).query(async ({ ctx }) => {
+    const rows = await ctx.db
       .select(columns(ctx.blinding.conditionsHidden))
       .from(sessions)
       .innerJoin(participants, eq(participants.id, sessions.participantId))
@@ -49,8 +50,11 @@ export const sessionsRouter = router({
       .leftJoin(user, eq(user.id, sessions.wizardId))
       .leftJoin(trials, eq(trials.id, sessions.trialId))
       .where(eq(sessions.studyId, ctx.studyId))
-      .orderBy(asc(sessions.plannedAt)),
-  ),
+      .orderBy(asc(sessions.plannedAt));
+    // Only the Start buttons the caller may use: another wizard's session is theirs to run.
+    const run = studyRoleMay(ctx.studyRole, "trial.run");
+    return rows.map((r) => ({ ...r, mayRun: run && runsAssigned(ctx.studyRole, r.wizardId, ctx.user.id) }));
+  }),
 
   /**
    * Plans a session in the participant's assigned condition; within-subject,
@@ -135,7 +139,7 @@ export const sessionsRouter = router({
   /** Starts the session's trial on its condition's latest published version, or reopens the one it started. */
   start: studyProcedure("trial.run", "session", z.object({ sessionId: id })).mutation(async ({ ctx }) => {
     const s = ctx.row;
-    if (s.wizardId !== ctx.user.id && ctx.studyRole === "wizard") {
+    if (!runsAssigned(ctx.studyRole, s.wizardId, ctx.user.id)) {
       throw new TRPCError({ code: "FORBIDDEN", message: "This session is planned for another wizard." });
     }
     if (s.trialId) return { trialId: s.trialId };
