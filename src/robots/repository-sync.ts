@@ -6,6 +6,7 @@
 // before anything is built from it. Storing the result and showing the
 // changes is the server's job.
 import { readWithin, sizeText } from "../core/network/bounded-body";
+import { MB } from "../core/network/limits";
 import {
   effectiveTrust,
   loadPlugin,
@@ -33,7 +34,7 @@ export interface FetchedRepository {
 }
 
 /** The most a repository's file may be; HRIStudio's largest is 12 KB, ours 21 KB. */
-export const MAX_FILE_BYTES = 1_000_000;
+export const MAX_FILE_BYTES = MB;
 
 export async function fetchRepository(
   baseUrl: string,
