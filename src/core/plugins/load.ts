@@ -6,7 +6,7 @@ import pluginSchema from "../../../plugins/plugin.schema.json";
 import { plainErrors } from "./ajv-errors";
 import { checkPlugin } from "./checks";
 import { type LoadResult, type PluginError, pointer } from "./errors";
-import { MAX_DEPTH, nestedTooDeep, parseJsonText } from "./json-text";
+import { MAX_DEPTH, nestedTooDeep, parseJsonText, tooDeep } from "./json-text";
 import type { Plugin } from "./types";
 
 const ajv = new Ajv({ allErrors: true, strict: true, strictTypes: false, strictRequired: false });
@@ -62,6 +62,8 @@ function soundActions(document: unknown): boolean {
 }
 
 export function parseJson(file: string, text: string): LoadResult<unknown> {
+  const deep = tooDeep(text);
+  if (deep) return { ok: false, errors: [{ file, path: "", code: "too_deep", reason: nestedTooDeep, ...deep }] };
   const parsed = parseJsonText(text);
   if (parsed.ok) return { ok: true, value: parsed.value };
   return {
@@ -70,8 +72,8 @@ export function parseJson(file: string, text: string): LoadResult<unknown> {
       {
         file,
         path: "",
-        code: parsed.tooDeep ? "too_deep" : "invalid_json",
-        reason: parsed.tooDeep ? parsed.reason : `invalid JSON: ${parsed.reason}`,
+        code: "invalid_json",
+        reason: `invalid JSON: ${parsed.reason}`,
         line: parsed.line,
         column: parsed.column,
       },

@@ -1,7 +1,7 @@
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
-import { checkDocument, loadPlugin, parsePluginIndex } from "./index";
-import { MAX_DEPTH, nestedTooDeep, parseJsonText } from "./json-text";
+import { checkDocument, loadPlugin, parseJson, parsePluginIndex } from "./index";
+import { MAX_DEPTH, nestedTooDeep } from "./json-text";
 
 const nao = readFileSync("tests/fixtures/hristudio-plugins/plugins/nao6-ros2.json", "utf8");
 const nested = (levels: number) => `${"[".repeat(levels)}${"]".repeat(levels)}`;
@@ -18,9 +18,13 @@ describe("how deep a file may nest", () => {
     ["nor after an escaped quote inside a string", `"\\"${"{".repeat(10_000)}"`, null],
     ["objects nested 10,000 levels are refused", `${'{"a":'.repeat(10_000)}1${"}".repeat(10_000)}`, MAX_DEPTH * 5 + 1],
   ])("%s", (_name, text, column) => {
-    const parsed = parseJsonText(text);
+    const parsed = parseJson("f.json", text);
     if (column === null) expect(parsed.ok).toBe(true);
-    else expect(parsed).toMatchObject({ ok: false, reason: nestedTooDeep, line: 1, column });
+    else
+      expect(parsed).toEqual({
+        ok: false,
+        errors: [{ file: "f.json", path: "", code: "too_deep", reason: nestedTooDeep, line: 1, column }],
+      });
   });
 
   it("a plugin whose payload nests 10,000 levels is refused for that, naming the limit and where", () => {
