@@ -44,3 +44,8 @@ export function removedNotice(robotId: string, repositoryName: string, usedBy: s
     : " No experiment uses it.";
   return `${robotId} is no longer listed by ${repositoryName}: it is not offered for new experiments any more. Versions published with it keep running with the document they pinned.${users}`;
 }
+
+/** What a sync that could not read every file of the index says of the robots it did not see: kept, not removed. */
+export function notSeenNotice(robotIds: string[]): string {
+  return `${robotIds.join(", ")} ${robotIds.length > 1 ? "were" : "was"} not among the plugins read this time, as not every file of the repository could be read: kept as before until a sync reads them all.`;
+}

@@ -16,6 +16,7 @@ import {
   pluginChanges,
   alsoProvided,
   chooseDocument,
+  notSeenNotice,
   removedNotice,
   type Plugin,
   type PluginChange,
@@ -61,10 +62,7 @@ export async function syncRepository(
       fetched.plugins.map((f) => f.plugin),
     ).filter((c) => whole || c.change !== "removed");
     const sourceName = `the repository "${fetched.repository?.name ?? repository.name}"`;
-    if (!whole && gone.length)
-      notices.push(
-        `${gone.join(", ")} ${gone.length > 1 ? "were" : "was"} not among the plugins read this time, as not every file of the repository could be read: kept as before until a sync reads them all.`,
-      );
+    if (!whole && gone.length) notices.push(notSeenNotice(gone));
     for (const robotId of whole ? gone : []) {
       const wasDefault = chooseDocument(current, robotId, null)?.source === repositoryId;
       notices.push(removedNotice(robotId, sourceName, await experimentsUsing(tx, repositoryId, robotId, wasDefault)));
