@@ -1,7 +1,12 @@
 // Fetches a plugin repository over HTTP the way HRIStudio publishes one:
 // repository.json, plugins/index.json, then each plugin file. Every file goes
 // through the public loader; a bad plugin is reported and the rest are kept.
-// Storing the result and showing the changes is the server's job.
+// Every file is read with a limit counted while it arrives (an endless body
+// stops at the limit) and refused if it nests deeper than the loader's limit,
+// before anything is built from it. Storing the result and showing the
+// changes is the server's job.
+import { readWithin, sizeText } from "../core/network/bounded-body";
+import { MB } from "../core/network/limits";
 import {
   effectiveTrust,
   loadPlugin,
@@ -22,11 +27,14 @@ export interface FetchedPlugin {
 
 export interface FetchedRepository {
   repository: PluginRepository | null;
+  /** The files plugins/index.json lists; null when it could not be read, so nothing is known to be gone. */
+  index: string[] | null;
   plugins: FetchedPlugin[];
   errors: PluginError[];
 }
 
-const MAX_BYTES = 1_000_000;
+/** The most a repository's file may be; HRIStudio's largest is 12 KB, ours 21 KB. */
+export const MAX_FILE_BYTES = MB;
 
 export async function fetchRepository(
   baseUrl: string,
@@ -34,23 +42,33 @@ export async function fetchRepository(
   timeoutMs = 10_000,
 ): Promise<FetchedRepository> {
   const base = baseUrl.endsWith("/") ? baseUrl : `${baseUrl}/`;
-  const result: FetchedRepository = { repository: null, plugins: [], errors: [] };
+  const result: FetchedRepository = { repository: null, index: null, plugins: [], errors: [] };
   const get = async (path: string): Promise<string | null> => {
+    const url = new URL(path, base);
     try {
-      const response = await fetchFn(new URL(path, base), { signal: AbortSignal.timeout(timeoutMs) });
-      if (!response.ok) throw new Error(`HTTP ${response.status}`);
-      const text = await response.text();
-      if (text.length > MAX_BYTES) throw new Error(`larger than ${MAX_BYTES} bytes`);
-      return text;
+      const response = await fetchFn(url, { signal: AbortSignal.timeout(timeoutMs) });
+      if (!response.ok) {
+        await response.body?.cancel().catch(() => {});
+        throw new Error(`HTTP ${response.status}`);
+      }
+      const read = await readWithin(response, MAX_FILE_BYTES);
+      if (read.ok) return new TextDecoder().decode(read.bytes);
+      const size = read.declared === undefined ? "" : ` (it says ${sizeText(read.declared)})`;
+      result.errors.push({
+        file: path,
+        path: "",
+        code: "too_large",
+        reason: `${url} is larger than ${sizeText(MAX_FILE_BYTES)}, the most a repository's file may be${size}: reading stopped at the limit`,
+      });
     } catch (error) {
       result.errors.push({
         file: path,
         path: "",
         code: "unreadable",
-        reason: `cannot fetch ${new URL(path, base)}: ${(error as Error).message}`,
+        reason: `cannot fetch ${url}: ${(error as Error).message}`,
       });
-      return null;
     }
+    return null;
   };
   const repositoryText = await get("repository.json");
   if (repositoryText === null) return result;
@@ -61,6 +79,7 @@ export async function fetchRepository(
   if (indexText === null) return result;
   const index = parsePluginIndex("plugins/index.json", indexText);
   if (!index.ok) return { ...result, errors: [...result.errors, ...index.errors] };
+  result.index = index.value;
   for (const name of index.value) {
     const text = await get(`plugins/${name}`);
     if (text === null) continue;

@@ -1,7 +1,8 @@
 // The simulated robot's wire against the recorded rosbridge frames, where
 // Python clients notice: floats keep their ".0" (README G3; the recorded raw
-// joint states say "velocity":[0.1,0.0]), NaN and Infinity are literals both
-// ways as Python's JSON writes and reads them, and BatteryState has every
+// joint states say "velocity":[0.1,0.0]), NaN and Infinity are read as the
+// literals Python's JSON reads and written null as rosbridge's message
+// conversion writes them (ROS 1 and ROS 2 alike), and BatteryState has every
 // field of sensor_msgs/msg/BatteryState. Raw text is compared here, on
 // purpose: the point is what a non-JavaScript parser sees.
 import { readFileSync } from "node:fs";
@@ -60,16 +61,16 @@ describe("floats on the wire", () => {
   });
 });
 
-describe("NaN and Infinity, as Python's JSON has them", () => {
+describe("NaN and Infinity, read as Python's JSON has them, written null as rosbridge does", () => {
   it.each([["NaN"], ["Infinity"], ["-Infinity"]])(
-    "%s in a float field arrives and is written back as the literal",
+    "%s in a float field arrives and is written back as null",
     async (literal) => {
       sim = await startSimulator({ port: 0, nodes: [] });
       const client = await rawClient(sim.url);
       client.send('{"op":"subscribe","topic":"/f","type":"std_msgs/msg/Float64"}');
       client.send(`{"op":"publish","topic":"/f","msg":{"data":${literal}}}`);
       await expect.poll(() => client.on("/f").length).toBe(1);
-      expect(client.on("/f")[0]).toBe(`{"op":"publish","topic":"\\/f","msg":{"data":${literal}}}`);
+      expect(client.on("/f")[0]).toBe('{"op":"publish","topic":"\\/f","msg":{"data":null}}');
       client.close();
     },
   );
@@ -89,7 +90,7 @@ describe("NaN and Infinity, as Python's JSON has them", () => {
 describe("the battery", () => {
   const nao = (loadPlugin("nao6-ros2.json", readFileSync("plugins/nao6-ros2.json", "utf8")) as { value: Plugin }).value;
 
-  it("publishes every field of sensor_msgs/msg/BatteryState, in the message's order, NaN where unmeasured", async () => {
+  it("publishes every field of sensor_msgs/msg/BatteryState, in the message's order, null where unmeasured", async () => {
     sim = await startSimulator({ port: 0, nodes: simulatedRobot(nao, { batteryHz: 20 }) });
     const client = await rawClient(sim.url);
     client.send('{"op":"subscribe","topic":"/battery","type":"sensor_msgs/msg/BatteryState"}');
@@ -113,7 +114,9 @@ describe("the battery", () => {
       "location",
       "serial_number",
     ]);
-    expect(raw).toContain('"temperature":NaN');
+    expect(raw).toContain('"temperature":null');
+    expect(raw).toContain('"design_capacity":null');
+    expect(raw).not.toMatch(/NaN|Infinity/);
     expect(raw).toContain('"capacity":2.25');
     expect(raw).toContain('"power_supply_status":2,');
     client.close();

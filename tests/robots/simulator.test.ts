@@ -22,7 +22,7 @@ afterEach(async () => {
 async function client(url: string) {
   const frames: Array<Record<string, any>> = [];
   const socket = new WebSocket(url);
-  // As rosbridge's Python writes it: the battery's unmeasured fields are NaN literals.
+  // As our transport reads rosbridge: an older rosbridge writes NaN literals.
   socket.on("message", (data) => frames.push(parsePythonJson(data.toString()) as Record<string, any>));
   await new Promise((resolve, reject) => socket.once("open", resolve).once("error", reject));
   const send = (frame: unknown) => socket.send(JSON.stringify(frame));

@@ -33,3 +33,19 @@ function actionChanges(a: Plugin | undefined, b: Plugin | undefined) {
     changed: [...now.keys()].filter((id) => old.has(id) && old.get(id) !== now.get(id)),
   };
 }
+
+/**
+ * What a sync says of a robot its repository no longer lists: gone from new
+ * experiments, still run where a version pinned it, and who still uses it.
+ */
+export function removedNotice(robotId: string, repositoryName: string, usedBy: string[]): string {
+  const users = usedBy.length
+    ? ` Experiments still using it: ${usedBy.join(", ")}; they keep their published versions, and a new version needs another plugin of ${robotId}.`
+    : " No experiment uses it.";
+  return `${robotId} is no longer listed by ${repositoryName}: it is not offered for new experiments any more. Versions published with it keep running with the document they pinned.${users}`;
+}
+
+/** What a sync that could not read every file of the index says of the robots it did not see: kept, not removed. */
+export function notSeenNotice(robotIds: string[]): string {
+  return `${robotIds.join(", ")} ${robotIds.length > 1 ? "were" : "was"} not among the plugins read this time, as not every file of the repository could be read: kept as before until a sync reads them all.`;
+}

@@ -11,6 +11,8 @@ export const PLUGIN_ERROR_CODES = {
   unknown_abstract_action: "The plugin maps an abstract action that is not in the vocabulary.",
   duplicate_robot: "Two plugin files declare the same robotId.",
   unreadable: "The file could not be read.",
+  too_large: "The file is larger than a plugin file may be; reading stopped at the limit.",
+  too_deep: "The file nests lists and objects deeper than a plugin file may.",
 } as const;
 
 export type PluginErrorCode = keyof typeof PLUGIN_ERROR_CODES;

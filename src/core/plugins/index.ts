@@ -25,7 +25,7 @@ export { outgoingFor, type Outgoing } from "./payload";
 export { audioPlayer, audioPlayerText, type AudioPlayer } from "./audio";
 export { shellCommand, shellWords, quoteWord, type ShellCommand, type ShellWords } from "./shell";
 export { httpRequest, type HttpRequest } from "./http";
-export { pluginChanges, type PluginChange } from "./changes";
+export { notSeenNotice, pluginChanges, removedNotice, type PluginChange } from "./changes";
 export {
   alsoProvided,
   chooseDocument,

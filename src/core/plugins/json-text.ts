@@ -1,9 +1,16 @@
 // JSON.parse says "invalid" but not reliably where (V8's messages vary and
 // often omit the position). When it fails we rescan with a small strict
 // scanner whose only job is to find the first bad character, so a researcher
-// who edited a plugin by hand is told the line and column.
+// who edited a plugin by hand is told the line and column. For a plugin file,
+// one loop first counts how deep its lists and objects go (tooDeep): a file
+// nested deeper than MAX_DEPTH is refused before anything is built from it,
+// so nothing after (schema checks, placeholders, hashing) can be made to
+// recurse deeper. An experiment file has its own, lower bound (exchange.ts).
 
 export type ParsedJson = { ok: true; value: unknown } | { ok: false; line: number; column: number; reason: string };
+
+/** How deep lists and objects may nest in a file we read. HRIStudio's files and ours go 7 levels. */
+export const MAX_DEPTH = 256;
 
 export function parseJsonText(text: string): ParsedJson {
   try {
@@ -21,7 +28,31 @@ function lineAndColumn(text: string, offset: number) {
   return { line, column: offset - before.lastIndexOf("\n") };
 }
 
-const MAX_DEPTH = 256;
+/** The reason a file nested deeper than MAX_DEPTH is refused. */
+export const nestedTooDeep = `nested more than ${MAX_DEPTH} levels deep (lists and objects inside each other), the limit for a file`;
+
+/** Where the first list or object deeper than MAX_DEPTH opens, or null when none is. */
+export function tooDeep(text: string): { line: number; column: number } | null {
+  const at = tooDeepAt(text);
+  return at === null ? null : lineAndColumn(text, at);
+}
+
+/** The offset of the first list or object deeper than MAX_DEPTH, or null. Strings are skipped, escapes and all. */
+function tooDeepAt(text: string): number | null {
+  let depth = 0;
+  let inString = false;
+  for (let i = 0; i < text.length; i++) {
+    const c = text.charCodeAt(i);
+    if (inString) {
+      if (c === 0x5c) i++;
+      else if (c === 0x22) inString = false;
+    } else if (c === 0x22) inString = true;
+    else if (c === 0x5b || c === 0x7b) {
+      if (++depth > MAX_DEPTH) return i;
+    } else if (c === 0x5d || c === 0x7d) depth--;
+  }
+  return null;
+}
 
 class Stop {
   constructor(

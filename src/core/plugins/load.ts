@@ -5,8 +5,8 @@ import Ajv from "ajv";
 import pluginSchema from "../../../plugins/plugin.schema.json";
 import { plainErrors } from "./ajv-errors";
 import { checkPlugin } from "./checks";
-import type { LoadResult, PluginError } from "./errors";
-import { parseJsonText } from "./json-text";
+import { type LoadResult, type PluginError, pointer } from "./errors";
+import { MAX_DEPTH, nestedTooDeep, parseJsonText, tooDeep } from "./json-text";
 import type { Plugin } from "./types";
 
 const ajv = new Ajv({ allErrors: true, strict: true, strictTypes: false, strictRequired: false });
@@ -24,6 +24,13 @@ export function loadPlugin(file: string, text: string): LoadResult<Plugin> {
  * on each part the schema found sound, so an author sees every problem at once.
  */
 export function checkDocument(file: string, document: unknown): LoadResult<Plugin> {
+  // The schema's and our checks recurse: a document that did not come through parseJson is measured first.
+  const deep = tooDeepAt(document);
+  if (deep !== null)
+    return {
+      ok: false,
+      errors: [{ file, path: deep, code: "too_deep", reason: nestedTooDeep }],
+    };
   const schemaErrors = validatePlugin(document)
     ? []
     : plainErrors(validatePlugin.errors).map(
@@ -36,12 +43,27 @@ export function checkDocument(file: string, document: unknown): LoadResult<Plugi
   return errors.length ? { ok: false, errors } : { ok: true, value: document as Plugin };
 }
 
+/** The JSON Pointer of the first list or object deeper than MAX_DEPTH, or null; a loop, not recursion. */
+function tooDeepAt(document: unknown): string | null {
+  const pending: Array<{ value: unknown; at: string; depth: number }> = [{ value: document, at: "", depth: 0 }];
+  for (let next = pending.pop(); next; next = pending.pop()) {
+    const { value, at, depth } = next;
+    if (typeof value !== "object" || value === null) continue;
+    if (depth >= MAX_DEPTH) return at;
+    for (const [key, inner] of Object.entries(value))
+      pending.push({ value: inner, at: at + pointer(key), depth: depth + 1 });
+  }
+  return null;
+}
+
 /** Whether the document has a list of actions the checks can walk, even if some of them are broken. */
 function soundActions(document: unknown): boolean {
   return typeof document === "object" && document !== null && Array.isArray((document as Plugin).actions);
 }
 
 export function parseJson(file: string, text: string): LoadResult<unknown> {
+  const deep = tooDeep(text);
+  if (deep) return { ok: false, errors: [{ file, path: "", code: "too_deep", reason: nestedTooDeep, ...deep }] };
   const parsed = parseJsonText(text);
   if (parsed.ok) return { ok: true, value: parsed.value };
   return {

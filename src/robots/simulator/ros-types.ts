@@ -118,8 +118,9 @@ const FLOATS = new Set(["float32", "float64"]);
 
 /**
  * A message as rosbridge writes it: Python floats keep their ".0" (1.0, not
- * 1, so a Python client reads a float back) and NaN and ±Infinity are the
- * literals Python's and ujson's encoders write. Other values as JSON.
+ * 1, so a Python client reads a float back) and NaN and ±Infinity are null,
+ * as rosbridge's message conversion turns them (ROS 1 and ROS 2 branches
+ * alike), though it reads their literals. Other values as JSON.
  */
 export function messageJson(typeKey: string | undefined, value: unknown): string {
   return typeKey && MESSAGES[typeKey] ? write(typeKey, value) : JSON.stringify(value);
@@ -140,8 +141,7 @@ function write(type: Field, value: unknown): string {
 }
 
 function floatText(value: number): string {
-  if (Number.isNaN(value)) return "NaN";
-  if (!Number.isFinite(value)) return value > 0 ? "Infinity" : "-Infinity";
+  if (!Number.isFinite(value)) return "null";
   const text = String(value);
   return /[.e]/.test(text) ? text : `${text}.0`;
 }

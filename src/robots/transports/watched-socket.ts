@@ -62,7 +62,7 @@ export class WatchedSocket extends AbstractTransport {
     });
   }
 
-  /** rosbridge writes NaN and Infinity as Python does; roslib's JSON.parse would drop the whole message. */
+  /** A bridge may write NaN and Infinity as Python's bare literals (rosbridge writes null); roslib's JSON.parse would drop the whole message. */
   private parsed(text: string): unknown {
     try {
       return parsePythonJson(text);

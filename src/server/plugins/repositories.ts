@@ -3,6 +3,10 @@
 // content hash) with no more trust than the administrator gave the
 // repository, and reported as what changed. A robot another source also
 // provides is installed beside it, and the report says so in plain words.
+// A robot the repository's index no longer lists is uninstalled (no longer
+// offered; versions that pinned it run from plugin_documents), reported once
+// with the experiments still using it; that is known only when every file of
+// the index was read.
 import { TRPCError } from "@trpc/server";
 import { and, desc, eq, sql } from "drizzle-orm";
 import { hashCanonical } from "@/core/protocol/canonical";
@@ -11,6 +15,9 @@ import {
   formatPluginError,
   pluginChanges,
   alsoProvided,
+  chooseDocument,
+  notSeenNotice,
+  removedNotice,
   type Plugin,
   type PluginChange,
 } from "@/core/plugins";
@@ -19,6 +26,7 @@ import { audit } from "../audit";
 import type { Database } from "@/store/client";
 import { installedPlugins, pluginRepositories } from "@/store/schema";
 import { pluginCatalog } from "@/robots/catalog";
+import { experimentsUsing } from "./still-used";
 
 export async function syncRepository(
   db: Database,
@@ -45,10 +53,23 @@ export async function syncRepository(
       .orderBy(desc(installedPlugins.installedAt));
     const latest = new Map<string, Plugin>();
     for (const row of stored) if (!latest.has(row.robotId)) latest.set(row.robotId, row.definition as Plugin);
+    const seen = new Set(fetched.plugins.map((f) => f.plugin.robotId));
+    const gone = [...latest.keys()].filter((robotId) => !seen.has(robotId));
+    // A file that could not be read may be the one that offers a robot not seen: nothing is known to be gone.
+    const whole = fetched.index !== null && fetched.plugins.length === fetched.index.length;
     changes = pluginChanges(
       [...latest.values()],
       fetched.plugins.map((f) => f.plugin),
-    );
+    ).filter((c) => whole || c.change !== "removed");
+    const sourceName = `the repository "${fetched.repository?.name ?? repository.name}"`;
+    if (!whole && gone.length) notices.push(notSeenNotice(gone));
+    for (const robotId of whole ? gone : []) {
+      const wasDefault = chooseDocument(current, robotId, null)?.source === repositoryId;
+      notices.push(removedNotice(robotId, sourceName, await experimentsUsing(tx, repositoryId, robotId, wasDefault)));
+      await tx
+        .delete(installedPlugins)
+        .where(and(eq(installedPlugins.repositoryId, repositoryId), eq(installedPlugins.robotId, robotId)));
+    }
     for (const { plugin, trust } of fetched.plugins) {
       const hash = hashCanonical(plugin);
       const [same] = await tx
@@ -71,7 +92,7 @@ export async function syncRepository(
       const notice = alsoProvided(
         {
           source: repositoryId,
-          sourceName: `the repository "${fetched.repository?.name ?? repository.name}"`,
+          sourceName,
           robotId: plugin.robotId,
           version: plugin.version,
           hash,
