@@ -23,6 +23,8 @@ const MOVED_BY: Record<Via, Move["by"]> = {
 };
 
 export interface StepVisit {
+  /** The step.entered event's seq. */
+  seq: number;
   stepId: string;
   enteredMs: number | null;
   move: Move;
@@ -40,7 +42,7 @@ export function stepVisits(events: readonly TrialEvent[]): StepVisit[] {
     const by = MOVED_BY[e.via];
     // A branch enters its step right after the answer it follows (decide.ts writes them together).
     const move: Move = by === "answer" ? { by, answer: lastAnswer ?? "" } : { by };
-    visits.push({ stepId: e.stepId, enteredMs: e.relMs, move, skipped: 0 });
+    visits.push({ seq: e.seq, stepId: e.stepId, enteredMs: e.relMs, move, skipped: 0 });
   }
   return visits;
 }
