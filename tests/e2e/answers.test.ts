@@ -7,6 +7,7 @@ import { writeFileSync } from "node:fs";
 import { join } from "node:path";
 import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { expectAccessible } from "../support/accessibility";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
@@ -74,6 +75,7 @@ describe.sequential("the participant's answers as data", () => {
           new RegExp(`^Response — correct at .*: by the answer “${RIGHT.replace(/[()]/g, "\\$&")}”$`),
         ),
       ]);
+    await expectAccessible(page, "with the answer and what moved the trial");
 
     // The ELAN file as the page downloads it, read back by pympi: the answer's value on its tier.
     const eaf = await page.request.get(`/api/trials/${trialIds[0]}/export?format=eaf`);
@@ -97,6 +99,7 @@ describe.sequential("the participant's answers as data", () => {
       [RIGHT, "0", "1"],
       [WRONG, "1", "0"],
     ]);
+    // Closing the context checks the Results tab, as left, for WCAG 2.1 AA too.
     await context.close();
   }, 300_000);
 });
