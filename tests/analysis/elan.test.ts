@@ -43,7 +43,7 @@ const run: Command[] = [
 describe("the ELAN export", () => {
   beforeAll(() => void pythonEnvironment(), 900_000);
 
-  it("opens in pympi with the trial's steps, actions, deviations and annotations on their times", () => {
+  it("opens in pympi with the trial's steps, actions, answers, deviations and annotations on their times", () => {
     const log = simulate(protocol, run, (i) => i * 250).log;
     const eaf = elanDocument({
       protocol,
@@ -56,11 +56,14 @@ describe("the ELAN export", () => {
     const { tiers } = JSON.parse(runPython("read_eaf.py", [file])) as {
       tiers: Record<string, Array<[number, number, string]>>;
     };
-    expect(Object.keys(tiers).sort()).toEqual(["Action", "Annotation", "Deviation", "Step"]);
+    expect(Object.keys(tiers).sort()).toEqual(["Action", "Annotation", "Answer", "Deviation", "Step"]);
     expect(tiers.Step!.map((s) => s[2])).toEqual(["Introduction", "Story", "Recall question", "Response — correct"]);
     expect(tiers.Step!.every(([start, end]) => end > start)).toBe(true);
     expect(tiers.Action!.map((a) => a[2])).toContain("Question: What color was the rock Kai found?");
     expect(tiers.Deviation).toEqual([[expect.any(Number), expect.any(Number), "skipped: Look down at the crater"]]);
+    // The answer's value, when the wizard recorded it: the question is on the Action tier at that moment.
+    const recorded = log.find((e) => e.type === "answer.recorded")!.relMs!;
+    expect(tiers.Answer).toEqual([[recorded, recorded + 1, "correct (red)"]]);
     expect(tiers["Annotation"]).toEqual([[1200, 2200, `She said "wow" <laughs> & smiles`]]);
   });
 
@@ -109,6 +112,7 @@ describe("the ELAN export", () => {
       "Ana - Expression",
       "Ana - Gaze",
       "Annotation",
+      "Answer",
       "Ben - Gaze",
       "Deviation",
       "Step",

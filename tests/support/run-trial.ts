@@ -1,7 +1,7 @@
 // Runs a whole trial as a wizard would: start, then "next" until the end,
-// choosing the first answer when asked; over the runtime socket, for tests
-// that need a finished trial rather than to test running one, or in the
-// wizard's page with its keys.
+// choosing the first answer when asked (or the answer-th); over the runtime
+// socket, for tests that need a finished trial rather than to test running
+// one, or in the wizard's page with its keys.
 import type { Page } from "playwright-core";
 import { expect } from "vitest";
 import type { apiClient } from "./http";
@@ -10,8 +10,8 @@ import { connectTrial } from "./socket";
 export async function runWholeTrial(
   wizard: ReturnType<typeof apiClient>,
   trialId: string,
-  /** A wizard's pause after each press, for a trial that must take a while (a replay to watch). */
-  { pauseMs = 0 } = {},
+  /** A wizard's pause after each press, for a trial that must take a while (a replay to watch); the answer to give, by index. */
+  { pauseMs = 0, answer = 0 } = {},
 ) {
   const trial = await wizard.trials.get.query({ trialId });
   const { url, token } = await wizard.trials.socketToken.mutate({ trialId });
@@ -23,7 +23,7 @@ export async function runWholeTrial(
   for (let i = 0; i < 200 && !completed; i++) {
     const reply = await socket.command(`c${i}`, { kind: "next" });
     if (String(reply.reason ?? "").startsWith("Record the participant's answer"))
-      await socket.command(`a${i}`, { kind: "answer", actionId: question.id, optionId: options[0]!.id });
+      await socket.command(`a${i}`, { kind: "answer", actionId: question.id, optionId: options[answer]!.id });
     else if (reply.type === "rejected") await new Promise((r) => setTimeout(r, 150));
     else if (pauseMs) await new Promise((r) => setTimeout(r, pauseMs));
     completed = socket.messages.some((m) =>

@@ -1,4 +1,5 @@
 import { describe as group, expect, it } from "vitest";
+import type { RecordedAnswer } from "./answers";
 import { byConditionCsv, resultsByCondition, type ConditionScore } from "./by-condition";
 import type { FidelityReport, StepTiming } from "./fidelity";
 import { describe } from "./study-summary";
@@ -10,6 +11,7 @@ function trial(
   executionFidelity: number,
   deviations: number,
   steps: Array<[string, number | null]>,
+  answers: RecordedAnswer[] = [],
 ): TrialFigures {
   let at = 0;
   const timings: StepTiming[] = steps.map(([name, ms]) => {
@@ -29,6 +31,7 @@ function trial(
     steps: timings,
     unscripted: [],
     branches: { byLogic: 0, byHand: 0 },
+    answers,
     deviations: Object.fromEntries(deviations ? [["skipped", deviations]] : []),
     totals: {
       planned: 0,
@@ -194,5 +197,90 @@ group("results by condition", () => {
       "b,Trial duration (ms),0,,,,,",
       "",
     ]);
+  });
+});
+
+group("answers by condition", () => {
+  const PLANET = ["Mars", "Venus", "No answer"];
+  const answer = (question: string, given: string, options = PLANET): RecordedAnswer => ({
+    stepId: "s",
+    actionId: question,
+    question,
+    answer: given,
+    options,
+    relMs: 0,
+  });
+  const answered = (condition: string | null, ...answers: RecordedAnswer[]) => trial(condition, 100, 0, [], answers);
+  const counts = (trials: TrialFigures[]) =>
+    resultsByCondition(trials, []).answers.map((q) => [
+      q.question,
+      q.answers.map((a) => [a.answer, ...a.byCondition.map((c) => c.count)]),
+    ]);
+
+  it.each<[string, TrialFigures[], unknown]>([
+    ["no question asked: nothing to count", [answered("a"), answered("b")], []],
+    [
+      "every answer the question offered, the ones nobody gave at zero, per condition in order",
+      [
+        answered("praise", answer("Which planet?", "Mars")),
+        answered("praise", answer("Which planet?", "Mars")),
+        answered("neutral", answer("Which planet?", "Venus")),
+        answered(null),
+      ],
+      [
+        [
+          "Which planet?",
+          [
+            ["Mars", 0, 2, 0],
+            ["Venus", 1, 0, 0],
+            ["No answer", 0, 0, 0],
+          ],
+        ],
+      ],
+    ],
+    [
+      "two questions apart, in the order first met; a question asked again counts each answer",
+      [
+        answered("a", answer("Ready?", "yes", ["yes", "no"]), answer("Ready?", "no", ["yes", "no"])),
+        answered("a", answer("Which planet?", "Venus"), answer("Ready?", "yes", ["yes", "no"])),
+      ],
+      [
+        [
+          "Ready?",
+          [
+            ["yes", 2],
+            ["no", 1],
+          ],
+        ],
+        [
+          "Which planet?",
+          [
+            ["Mars", 0],
+            ["Venus", 1],
+            ["No answer", 0],
+          ],
+        ],
+      ],
+    ],
+    [
+      // One experiment's version offered another answer than the other's: both are listed.
+      "answers offered by either version of the question",
+      [
+        answered("a", answer("Which planet?", "Mars", ["Mars", "Venus"])),
+        answered("b", answer("Which planet?", "Jupiter", ["Mars", "Jupiter"])),
+      ],
+      [
+        [
+          "Which planet?",
+          [
+            ["Mars", 1, 0],
+            ["Venus", 0, 0],
+            ["Jupiter", 0, 1],
+          ],
+        ],
+      ],
+    ],
+  ])("%s", (_, trials, expected) => {
+    expect(counts(trials)).toEqual(expected);
   });
 });

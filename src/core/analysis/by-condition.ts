@@ -1,7 +1,8 @@
 // Results by condition: the comparison most studies exist for. Each measure
 // (execution fidelity, deviations, time in each step, the whole trial's
 // duration, each questionnaire's score) described per condition with n, mean,
-// sample SD, median and range, as a paper's table reports them.
+// sample SD, median and range, as a paper's table reports them; and the
+// participants' answers, counted per question, per answer, per condition.
 import { csvDocument } from "../csv/csv";
 import { describe, studySummary, type Description, type TrialFigures } from "./study-summary";
 
@@ -14,9 +15,17 @@ export interface Measure {
   byCondition: Array<{ condition: string | null; stats: Description | null }>;
 }
 
+/** One question's answers: every answer it offered (then any other given), each counted per condition. */
+export interface AnswerCounts {
+  question: string;
+  /** `byCondition` in the order of `ByCondition.conditions`. */
+  answers: Array<{ answer: string; byCondition: Array<{ condition: string | null; count: number }> }>;
+}
+
 export interface ByCondition {
   conditions: Array<{ condition: string | null; trials: number }>;
   measures: Measure[];
+  answers: AnswerCounts[];
 }
 
 /** A submitted questionnaire's stored score ({ score, subscales } for a standard instrument), with the participant's condition. */
@@ -89,7 +98,36 @@ export function resultsByCondition(trials: TrialFigures[], scores: ConditionScor
       ...stepMeasures,
       ...scoreMeasures,
     ],
+    answers: answerCounts(groups),
   };
+}
+
+/**
+ * Questions by their text, in the order first met (conditions may run
+ * different experiments that ask the same question); an answer recorded
+ * twice in one trial (a question asked again) counts twice.
+ */
+function answerCounts(groups: Array<{ condition: string | null; group: TrialFigures[] }>): AnswerCounts[] {
+  const questions = new Map<string, Set<string>>();
+  for (const { group } of groups)
+    for (const { report } of group)
+      for (const a of report.answers) {
+        const answers = questions.get(a.question) ?? new Set();
+        for (const option of [...a.options, a.answer]) answers.add(option);
+        questions.set(a.question, answers);
+      }
+  return [...questions].map(([question, answers]) => ({
+    question,
+    answers: [...answers].map((answer) => ({
+      answer,
+      byCondition: groups.map(({ condition, group }) => ({
+        condition,
+        count: group
+          .flatMap(({ report }) => report.answers)
+          .filter((a) => a.question === question && a.answer === answer).length,
+      })),
+    })),
+  }));
 }
 
 /** The tidy table: one row per condition × measure, the unit in the measure's name, durations in ms. */

@@ -1,10 +1,11 @@
 // A trial as an ELAN annotation document (EAF 3.0), so video coders can open
-// the trial's steps, actions, deviations and annotations beside the video
+// the trial's steps, actions, answers, deviations and annotations beside the video
 // in the tool they already use. Times are milliseconds from the trial's t0,
 // or, when the trial was recorded, from the start of the linked recording.
 import type { CodeRowInput } from "../coding/export";
 import { blockName, type ActionNames } from "../designer/action-name";
 import type { TrialEvent, TrialProtocol } from "../trial";
+import { answerOf } from "./answers";
 import { fidelityReport } from "./fidelity";
 import { trialNames } from "./names";
 
@@ -71,6 +72,11 @@ function tiers(input: ElanInput): Record<string, Span[]> {
         `${spoken({ type: u.type, parameters: u.parameters }, u.name, input.names)} (unscripted)`,
       ),
     );
+  // The answer's value on a tier of its own, at the moment it was recorded; its question is on the Action tier then.
+  const answers = input.events.flatMap((e) => {
+    const answer = answerOf(e);
+    return answer === undefined || e.relMs === null ? [] : [span(e.relMs, null, answer)];
+  });
   const named = trialNames(input.protocol, input.events, input.names);
   const deviations = input.events
     .filter((e) => e.deviation && e.relMs !== null)
@@ -84,6 +90,7 @@ function tiers(input: ElanInput): Record<string, Span[]> {
   return {
     Step: steps,
     Action: [...actions, ...unscripted].sort((a, b) => a.start - b.start),
+    Answer: answers,
     Deviation: deviations,
     Annotation: annotations,
     ...codeTiers(input.codes ?? [], lastMs),

@@ -39,6 +39,20 @@ const events: StoredEvent[] = [
   },
 ];
 
+/** The wizard recording the participant's answer: its label has a comma, so the cell is quoted. */
+const answered: StoredEvent = {
+  seq: 3,
+  type: "answer.recorded",
+  relMs: 40,
+  trialId: "t1",
+  serverTime: new Date("2026-01-01T10:00:00.040Z"),
+  actorId: "u1",
+  stepId: "s1",
+  actionId: "q1",
+  optionId: "mars",
+  label: "Mars, the red one",
+};
+
 const names = trialNames({ steps: [{ id: "s1", name: "Welcome", description: "", actions: [] }] }, events);
 const people = { wizard: "Wim Wizard", createdBy: "Rita Researcher" };
 
@@ -56,14 +70,15 @@ describe("the events CSV", () => {
       "action_type",
       "step_name",
       "action_name",
+      "answer",
       "deviation",
       "rel_ms",
       "server_time",
       "actor_id",
       "payload",
     ]);
-    expect(rows.map((r) => JSON.parse(r[14]!))).toEqual(JSON.parse(JSON.stringify(events)));
-    expect(rows[1]!.slice(0, 14)).toEqual([
+    expect(rows.map((r) => JSON.parse(r[15]!))).toEqual(JSON.parse(JSON.stringify(events)));
+    expect(rows[1]!.slice(0, 15)).toEqual([
       "t1",
       "Wim Wizard",
       "Rita Researcher",
@@ -74,11 +89,22 @@ describe("the events CSV", () => {
       "say",
       "Welcome",
       'Say: She said "hi", then left; {{x}}…',
+      "",
       "unscripted",
       "12.5",
       "2026-01-01T10:00:00.012Z",
       "u1",
     ]);
+  });
+});
+
+describe("the events CSV's answer column", () => {
+  it.each([
+    ["a recorded answer: its label", 2, "Mars, the red one"],
+    ["any other event: empty", 0, ""],
+  ])("%s", (_, row, answer) => {
+    const [header, ...rows] = parseCsv(eventsCsv("t1", [...events, answered], people, names));
+    expect(rows[row]![header!.indexOf("answer")]).toBe(answer);
   });
 });
 

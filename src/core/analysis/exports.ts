@@ -5,6 +5,7 @@
 import type { ProtocolSnapshot } from "@/core/protocol/snapshot";
 import { csvDocument, type CsvValue } from "@/core/csv/csv";
 import type { StoredEvent } from "@/core/trial";
+import { answerOf } from "./answers";
 import type { TrialNames } from "./names";
 
 // 2: the protocol is snapshot schema 2 (robotId; steps say where they lead), the version names its robotId.
@@ -22,6 +23,7 @@ export const EVENT_COLUMNS = [
   "action_type",
   "step_name",
   "action_name",
+  "answer",
   "deviation",
   "rel_ms",
   "server_time",
@@ -61,6 +63,7 @@ export function eventRows(
       actionType ?? "",
       stepName ?? "",
       actionName ?? "",
+      answerOf(e) ?? "",
       e.deviation ?? "",
       e.relMs ?? "",
       e.serverTime.toISOString(),

@@ -4,6 +4,7 @@
 import { actionName, type ActionNames } from "@/core/designer/action-name";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
 import { CONTROL_TYPES } from "@/core/trial/types";
+import { answerOf, recordedAnswers, type RecordedAnswer } from "./answers";
 
 export type ActionOutcome = "executed" | "skipped" | "failed" | "timed_out" | "not_reached" | "running";
 
@@ -25,6 +26,8 @@ export interface PlannedAction {
    * the log does not say (not completed, not a robot action, or an older log).
    */
   confirmation: "robot" | "unconfirmed" | null;
+  /** The answer recorded, by its label, for a question that was answered; otherwise null. */
+  answer: string | null;
 }
 
 export interface StepTiming {
@@ -47,6 +50,8 @@ export interface FidelityReport {
     parameters: Record<string, unknown>;
   }>;
   branches: { byLogic: number; byHand: number };
+  /** Every answer recorded, in log order. */
+  answers: RecordedAnswer[];
   deviations: Record<string, number>;
   totals: {
     planned: number;
@@ -148,6 +153,7 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
             ? at(dispatched)! - at(requested)!
             : null,
         confirmation: confirmationOf(first("action.completed", a.id)),
+        answer: answerOf(first("answer.recorded", a.id) ?? {}) ?? null,
       };
     }),
   );
@@ -175,6 +181,7 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
       byLogic: log.filter((e) => e.type === "branch.resolved").length,
       byHand: log.filter((e) => e.type === "step.entered" && e.deviation === "manual_jump").length,
     },
+    answers: recordedAnswers(protocol, events, names),
     deviations,
     totals: {
       planned: actions.length,

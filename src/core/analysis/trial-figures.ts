@@ -10,15 +10,16 @@ import type { FidelityReport } from "./fidelity";
  * protocol snapshot is read (readSnapshot). Every copy kept under another
  * version is then computed again.
  */
-export const FIGURES_VERSION = 1;
+// 2: the answers recorded (answers), for the Results tab's counts per answer.
+export const FIGURES_VERSION = 2;
 
 export type ReportFigures = Pick<
   FidelityReport,
-  "steps" | "branches" | "deviations" | "totals" | "executionFidelity" | "completed"
+  "steps" | "branches" | "answers" | "deviations" | "totals" | "executionFidelity" | "completed"
 >;
 
 /** The report without its per-action lists, which only the trial's own analysis page shows. */
 export function reportFigures(report: FidelityReport): ReportFigures {
-  const { steps, branches, deviations, totals, executionFidelity, completed } = report;
-  return { steps, branches, deviations, totals, executionFidelity, completed };
+  const { steps, branches, answers, deviations, totals, executionFidelity, completed } = report;
+  return { steps, branches, answers, deviations, totals, executionFidelity, completed };
 }

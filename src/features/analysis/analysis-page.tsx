@@ -4,7 +4,9 @@
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
 import { useMemo, useState } from "react";
+import { answerOf } from "@/core/analysis/answers";
 import { fidelityReport } from "@/core/analysis/fidelity";
+import { moveWords, stepVisits } from "@/core/analysis/moves";
 import { trialNames } from "@/core/analysis/names";
 import type { TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
@@ -15,6 +17,7 @@ import { AnnotationsEditor } from "./annotations-editor";
 import { TimelineChart } from "./timeline-chart";
 import { EventList, type TimelineItem } from "./event-list";
 import { PlannedTable } from "./planned-table";
+import { StepPath } from "./step-path";
 import { recordingGaps } from "@/core/media/recording-parts";
 import { RecordingPlayer, useTrialRecording } from "./recording-player";
 import { Problem } from "@/ui/problem";
@@ -48,6 +51,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         : null,
     [trial.data, events.data],
   );
+  const visits = useMemo(() => stepVisits(events.data ?? []), [events.data]);
   // Every event and annotation in time order, and the deviations: built once per load, not on every move of the playhead.
   const timeline = useMemo<TimelineItem[]>(
     () =>
@@ -68,11 +72,17 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   if (trial.error || events.error) return <Problem error={trial.error ?? events.error} />;
   const t = trial.data;
   const r = report!;
-  // What an event in the list is about: its action, else its step; a robot's problem, in its own words.
+  const movedBy = new Map(visits.map((v) => [v.seq, moveWords(v.move)]));
+  // What an event in the list is about: its action (with the answer recorded), else its step (with what moved
+  // the trial there); a robot's problem, in its own words.
   const about = (e: object) => {
     const { stepName, actionName } = named!.of(e);
-    const problem = e as { type?: string; text?: string };
-    return actionName ?? stepName ?? (problem.type === "robot.problem" ? problem.text : undefined);
+    const problem = e as { type?: string; text?: string; seq?: number };
+    const answer = answerOf(e);
+    if (actionName !== undefined) return answer === undefined ? actionName : `${actionName}: “${answer}”`;
+    const moved = problem.type === "step.entered" ? movedBy.get(problem.seq!) : undefined;
+    if (stepName !== undefined) return moved ? `${stepName}, by ${moved}` : stepName;
+    return problem.type === "robot.problem" ? problem.text : undefined;
   };
   // One time axis for the timeline and the robot's state: to the last event, annotation or sample.
   const endMs = Math.max(timeline.at(-1)?.at ?? 0, (samples.data ?? []).at(-1)?.relMs ?? 0);
@@ -139,6 +149,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         />
       )}
       <QuestionnaireAnswers trialId={trialId} studyId={t.studyId} />
+      <StepPath visits={visits} stepName={(stepId) => named!.step(stepId)} />
       <section aria-label="Planned versus executed">
         <h2 className="mb-2 text-lg font-semibold">Planned versus executed</h2>
         <PlannedTable report={r} />

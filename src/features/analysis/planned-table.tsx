@@ -63,6 +63,7 @@ export function PlannedTable({ report }: { report: FidelityReport }) {
                 <Td className="py-0">
                   <Badge tone={OUTCOME_TONE[a.outcome]}>{a.outcome.replace("_", " ")}</Badge>{" "}
                   {a.outOfOrder && <Badge tone="amber">out of order</Badge>}
+                  {a.answer !== null && <span data-answer>answered “{a.answer}”</span>}
                 </Td>
                 <Td className="py-0">{seconds(a.requestedMs)}</Td>
                 <Td className="py-0">

@@ -34,13 +34,16 @@ export function TimelineChart({ report, deviations, annotations, recording, endM
     (): Mark[] =>
       report.actions
         .filter((a) => a.requestedMs !== null)
-        .map((a) => ({
-          at: a.requestedMs!,
-          to: a.requestedMs! + (a.durationMs ?? 0),
-          tone: a.outcome === "executed" ? "executed" : a.outcome === "skipped" ? "skipped" : "failed",
-          label: `Action ${a.name} at ${seconds(a.requestedMs)}`,
-          title: `${a.name}: ${a.outcome}`,
-        })),
+        .map((a) => {
+          const answered = a.answer === null ? "" : `, answered “${a.answer}”`;
+          return {
+            at: a.requestedMs!,
+            to: a.requestedMs! + (a.durationMs ?? 0),
+            tone: a.outcome === "executed" ? "executed" : a.outcome === "skipped" ? "skipped" : "failed",
+            label: `Action ${a.name}${answered} at ${seconds(a.requestedMs)}`,
+            title: `${a.name}: ${a.outcome}${answered}`,
+          };
+        }),
     [report.actions],
   );
   const deviationMarks = useMemo(

@@ -1,7 +1,8 @@
 "use client";
 // The conditions side by side: for each measure, a plot (a bar to the mean,
 // a line over the range) and the table a paper reports (n, mean, SD, median,
-// range), with the same figures as a tidy CSV for R or a spreadsheet.
+// range), with the same figures as a tidy CSV for R or a spreadsheet; then
+// the answers recorded, counted per condition.
 import { useQuery } from "@tanstack/react-query";
 import type { Measure } from "@/core/analysis/by-condition";
 import { useTRPC } from "@/lib/trpc";
@@ -10,6 +11,7 @@ import { seconds } from "@/ui/format";
 import { Problem } from "@/ui/problem";
 import { Card, Spinner } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
+import { AnswerCounts } from "./answer-counts";
 
 const NO_CONDITION = "No condition";
 
@@ -26,7 +28,7 @@ export function ResultsByCondition({ studyId }: { studyId: string }) {
   const results = useQuery(trpc.studies.resultsByCondition.queryOptions({ studyId }));
   if (results.isPending) return <Spinner label="Comparing the conditions…" />;
   if (results.error) return <Problem error={results.error} />;
-  const { conditions, measures } = results.data;
+  const { conditions, measures, answers } = results.data;
   return (
     <section aria-labelledby="by-condition" className="space-y-4">
       <div className="flex flex-wrap items-baseline justify-between gap-2">
@@ -43,6 +45,7 @@ export function ResultsByCondition({ studyId }: { studyId: string }) {
       {measures.map((m) => (
         <MeasureCard key={m.measure} measure={m} />
       ))}
+      <AnswerCounts answers={answers} noCondition={NO_CONDITION} />
     </section>
   );
 }

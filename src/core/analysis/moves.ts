@@ -1,0 +1,60 @@
+// What moved the trial at each step: the path it took, each step it entered
+// with what took it there (the start, the wizard's next, the participant's
+// answer through a branch, or a jump, which is a deviation) and how many of
+// the step's actions the wizard skipped while in it. Read from the log only,
+// so a step entered twice is two visits.
+import type { TrialEvent } from "@/core/trial";
+import type { EventBody } from "@/core/trial/types";
+
+type Via = Extract<EventBody, { type: "step.entered" }>["via"];
+
+export type Move = { by: "start" } | { by: "next" } | { by: "answer"; answer: string } | { by: "jump" };
+
+/**
+ * Each way the engine enters a step, as the move a reader is told. A new way
+ * (a timer that fires, a loop's bound reached) is a new `via` of step.entered:
+ * it must be given its move here, and its words in MOVE_WORDS.
+ */
+const MOVED_BY: Record<Via, Move["by"]> = {
+  start: "start",
+  next: "next",
+  branch: "answer",
+  manual_jump: "jump",
+};
+
+export interface StepVisit {
+  /** The step.entered event's seq. */
+  seq: number;
+  stepId: string;
+  enteredMs: number | null;
+  move: Move;
+  /** Actions of this step the wizard skipped during this visit. */
+  skipped: number;
+}
+
+export function stepVisits(events: readonly TrialEvent[]): StepVisit[] {
+  const visits: StepVisit[] = [];
+  let lastAnswer: string | undefined;
+  for (const e of events) {
+    if (e.type === "answer.recorded") lastAnswer = e.label;
+    if (e.type === "action.skipped" && visits.length) visits.at(-1)!.skipped++;
+    if (e.type !== "step.entered") continue;
+    const by = MOVED_BY[e.via];
+    // A branch enters its step right after the answer it follows (decide.ts writes them together).
+    const move: Move = by === "answer" ? { by, answer: lastAnswer ?? "" } : { by };
+    visits.push({ seq: e.seq, stepId: e.stepId, enteredMs: e.relMs, move, skipped: 0 });
+  }
+  return visits;
+}
+
+const MOVE_WORDS: Record<Move["by"], (move: Move) => string> = {
+  start: () => "the start",
+  next: () => "the wizard's next",
+  answer: (move) => `the answer “${(move as Extract<Move, { by: "answer" }>).answer}”`,
+  jump: () => "the wizard's jump (a deviation)",
+};
+
+/** What moved the trial into a step, in words: "the answer “Mars”". */
+export function moveWords(move: Move): string {
+  return MOVE_WORDS[move.by](move);
+}
