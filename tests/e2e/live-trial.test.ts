@@ -366,6 +366,11 @@ describe.sequential("a live trial in two browsers", () => {
     });
     await wizard.command("w", { kind: "unscripted", actionType: "wave", parameters: {} });
     await page.getByRole("status", { name: "Robot speech" }).getByText('“She said "hi" {{name}} & left.”').waitFor();
+    await wizard.command("u2", { kind: "unscripted", actionType: "say", parameters: { text: "And back." } });
+    // Every line of the last few stays on the page, not only the last one.
+    const lines = page.getByRole("region", { name: "Lines said" }).getByRole("listitem");
+    await expect.poll(() => lines.allTextContents(), { timeout: 10_000 }).toHaveLength(2);
+    expect((await lines.allTextContents()).join("\n")).toMatch(/And back\.[\s\S]*She said "hi" \{\{name\}\} & left\./);
     await expect.poll(() => page.getByTestId("robot-gesture").textContent()).not.toBe("none");
     // The NAO's wave is an animation path on the wire; the page names it, and shows no Markdown.
     expect(await page.getByTestId("robot-gesture").textContent()).not.toContain("/");

@@ -11,6 +11,8 @@ export const ROBOT_STATE_TOPIC = "/hristudio/robot_state";
 export interface RobotState {
   speaking: string | null;
   lastSaid: string | null;
+  /** The last lines it began to say (at most SAID_KEPT, oldest first), so a page opened late or a glance away misses none. */
+  said: Array<{ text: string; at: string }>;
   /** The sound file playing now (its name), and how long it lasts. */
   playing: { name: string; durationMs: number } | null;
   animation: string | null;
@@ -25,10 +27,18 @@ export interface RobotState {
   battery: number;
 }
 
+export const SAID_KEPT = 20;
+
+/** The robot began to say `text` at `at`: kept among the last lines, the oldest let go. */
+export function began(said: RobotState["said"], text: string, at: Date): RobotState["said"] {
+  return [...said, { text, at: at.toISOString() }].slice(-SAID_KEPT);
+}
+
 export function initialState(): RobotState {
   return {
     speaking: null,
     lastSaid: null,
+    said: [],
     playing: null,
     animation: null,
     gesture: null,

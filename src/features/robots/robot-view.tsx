@@ -7,6 +7,7 @@ import * as ROSLIB from "roslib";
 import { readableValue } from "@/core/designer/action-name";
 import { REPLAY_TOPIC, ROBOT_STATE_TOPIC, type ReplayAnnouncement, type RobotState } from "@/core/robots/robot-state";
 import { Button } from "@/ui/button";
+import { clockTime } from "@/ui/clock-time";
 import { Badge, Card } from "@/ui/surface";
 import { ReplayBanner } from "./replay-banner";
 
@@ -87,6 +88,7 @@ export function RobotView({ url }: { url: string }) {
           )}
         </div>
         <RobotFigure state={state} />
+        <SaidLines said={state?.said ?? []} />
         <dl className="grid grid-cols-2 gap-x-8 gap-y-1 text-sm sm:grid-cols-4">
           {/* An animation arrives as the robot's path to it (animations/Stand/Gestures/Hey_1): shown by its name. */}
           <Fact label="Gesture" value={readable(state?.gesture ?? state?.animation) ?? "none"} />
@@ -110,6 +112,28 @@ export function RobotView({ url }: { url: string }) {
         robot is configured.
       </p>
     </div>
+  );
+}
+
+/** Every line of the last few, newest first: a line said while nobody looked is still there to read. */
+function SaidLines({ said }: { said: Array<{ text: string; at: string }> }) {
+  if (!said.length) return null;
+  return (
+    <section aria-label="Lines said" className="w-full max-w-xl text-sm">
+      <h2 className="mb-1 font-semibold">Lines said</h2>
+      <ol className="max-h-48 space-y-1 overflow-y-auto">
+        {said
+          .map((line, i) => (
+            <li key={i} className="flex gap-3">
+              <time dateTime={line.at} className="shrink-0 tabular-nums text-slate-500">
+                {clockTime(line.at)}
+              </time>
+              <span>{line.text}</span>
+            </li>
+          ))
+          .reverse()}
+      </ol>
+    </section>
   );
 }
 

@@ -1,7 +1,7 @@
 // The robot side of the simulated ROS graph: small "nodes" that publish robot
 // state and answer what clients send. Each returns a function that stops it.
 import type { Plugin } from "../../core/plugins";
-import { ROBOT_STATE_TOPIC, type RobotState } from "../../core/robots/robot-state";
+import { began, ROBOT_STATE_TOPIC, type RobotState } from "../../core/robots/robot-state";
 import type { RosGraph } from "./graph";
 
 export type RobotNode = (graph: RosGraph, state: RobotState) => () => void;
@@ -34,6 +34,7 @@ export function speech({
     const stop = graph.listen(topic, (message) => {
       const text = String(message.data);
       state.speaking = text;
+      state.said = began(state.said, text, new Date());
       const timer = setTimeout(() => {
         timers.delete(timer);
         if (state.speaking === text) state.speaking = null;
