@@ -28,15 +28,25 @@
 //
 // Import checks the file's shape, not its actions: the imported draft goes
 // through validateDesign like any other, against whatever robot is at hand.
-import { actionCountProblem, DESIGN_LIMITS } from "../protocol/document";
+// The file is the experiment document (../protocol/document.ts) under other
+// names: its types derive from the declaration, and its format version is the
+// document's. A file of an earlier version is upgraded once checked
+// (../protocol/versions.ts); a field a version added is refused in older files.
+import type { z } from "zod";
+import {
+  type actionSchema,
+  actionCountProblem,
+  DESIGN_LIMITS,
+  DOCUMENT_VERSION,
+  type experimentFields,
+  type stepSchema,
+} from "../protocol/document";
+import { fieldsAfter, type FilePlace, READABLE_VERSIONS, upgradeFile } from "../protocol/versions";
 import { finish, type Work } from "../work";
 import { parsingFile } from "./file-parse";
-import type { After, DesignDraft, DesignStep, NewId } from "./types";
+import type { After, DesignAction, DesignDraft, DesignStep, NewId } from "./types";
 
 const FORMAT = "hristudio.experiment";
-const FORMAT_VERSION = 2;
-/** Versions this reader understands: 1 is 2 without "after". */
-const READABLE = [1, 2];
 const MAX_BYTES = 2 * 1024 * 1024;
 const MAX_STEPS = DESIGN_LIMITS.steps;
 const MAX_ACTIONS = DESIGN_LIMITS.actionsPerStep;
@@ -45,28 +55,46 @@ const MAX_TEXT = 5000;
 const MAX_NOTE = 2000;
 const MAX_DEPTH = 32;
 
-interface FileAction {
-  type: string;
-  name?: string;
-  parameters?: Record<string, unknown>;
-  runTogether?: string;
-  /** The note for the wizard; absent when there is none (files written before notes have none). */
-  note?: string;
-}
+/**
+ * Each field of the document and its name in the file; null: left out (ids
+ * never leave: a step is keyed by position). A field added to the declaration
+ * does not compile until it is given its place here, and the file then carries it.
+ */
+const EXPERIMENT_FIELDS = {
+  name: "name",
+  description: "description",
+  robotId: "robot",
+} as const satisfies Record<keyof z.input<typeof experimentFields>, string>;
+const STEP_FIELDS = {
+  id: "key",
+  name: "name",
+  description: "description",
+  after: "after",
+  actions: "actions",
+} as const satisfies Record<keyof DesignStep, string>;
+const ACTION_FIELDS = {
+  id: null,
+  type: "type",
+  name: "name",
+  parameters: "parameters",
+  parallelGroup: "runTogether",
+  note: "note",
+} as const satisfies Record<keyof DesignAction, string | null>;
 
-interface FileStep {
+/** An action as the declaration reads it (defaults left out), with its run-together group named. The note is absent when there is none. */
+type FileAction = Omit<z.input<typeof actionSchema>, "id" | "parallelGroup"> & { runTogether?: string };
+
+/** A step keyed "step-K"; "after" is "@step-K" or "end", absent for the next step. */
+type FileStep = Omit<z.input<typeof stepSchema>, "id" | "after" | "actions"> & {
   key: string;
-  name: string;
-  description?: string;
-  /** "@step-K" or "end"; absent: the next step. */
   after?: string;
   actions: FileAction[];
-}
+};
 
 export interface ExperimentFile {
   format: typeof FORMAT;
-  formatVersion: typeof FORMAT_VERSION;
-  experiment: { name: string; description?: string; robot: string };
+  formatVersion: typeof DOCUMENT_VERSION;
+  experiment: Omit<z.input<typeof experimentFields>, "robotId"> & { robot: string };
   steps: FileStep[];
 }
 
@@ -84,7 +112,7 @@ export function exportExperiment(draft: DesignDraft): string {
   const group = (id: string) => groups.get(id) ?? groups.set(id, `group-${groups.size + 1}`).get(id)!;
   const file: ExperimentFile = {
     format: FORMAT,
-    formatVersion: FORMAT_VERSION,
+    formatVersion: DOCUMENT_VERSION,
     experiment: { name: draft.name, description: draft.description, robot: draft.robotId },
     steps: draft.steps.map((step, i) => ({
       key: `step-${i + 1}`,
@@ -151,7 +179,9 @@ export function* checking(text: string): Work<CheckResult> {
   const tooMany = actionCountProblem(steps);
   if (tooMany) return { ok: false, problems: [{ path: "$.steps", message: tooMany }] };
   const problems = yield* check(parsed.value);
-  return problems.length ? { ok: false, problems } : { ok: true, file: parsed.value as ExperimentFile };
+  return problems.length
+    ? { ok: false, problems }
+    : { ok: true, file: upgradeFile<ExperimentFile>(parsed.value as Record<string, unknown>) };
 }
 
 /**
@@ -242,9 +272,9 @@ function write(value: unknown, indent: string, sorted: boolean): string {
 }
 
 const ENVELOPE = ["format", "formatVersion", "experiment", "steps"];
-const EXPERIMENT = ["name", "description", "robot"];
-const STEP = ["key", "name", "description", "after", "actions"];
-const ACTION = ["type", "name", "parameters", "runTogether", "note"];
+const EXPERIMENT: string[] = Object.values(EXPERIMENT_FIELDS);
+const STEP: string[] = Object.values(STEP_FIELDS);
+const ACTION = Object.values(ACTION_FIELDS).filter((name) => name !== null);
 
 function* check(file: unknown): Work<ImportProblem[]> {
   const problems: ImportProblem[] = [];
@@ -293,15 +323,17 @@ function* check(file: unknown): Work<ImportProblem[]> {
     return [{ path: "$", message: "must be an object ({ … }): an experiment file holds one experiment" }];
   if (file.format !== FORMAT)
     return [{ path: "$.format", message: `must be "${FORMAT}": this is not an HRIStudio experiment file` }];
-  if (!READABLE.includes(file.formatVersion as number)) {
-    const newer = typeof file.formatVersion === "number" && file.formatVersion > FORMAT_VERSION;
+  if (!READABLE_VERSIONS.includes(file.formatVersion as number)) {
+    const newer = typeof file.formatVersion === "number" && file.formatVersion > DOCUMENT_VERSION;
     const message = newer
-      ? `is ${file.formatVersion}: the file comes from a newer HRIStudio, and this one reads version ${FORMAT_VERSION}`
-      : `must be ${READABLE.join(" or ")}`;
+      ? `is ${file.formatVersion}: the file comes from a newer HRIStudio, and this one reads version ${DOCUMENT_VERSION}`
+      : `must be ${READABLE_VERSIONS.join(" or ")}`;
     return [{ path: "$.formatVersion", message }];
   }
+  const version = file.formatVersion as number;
+  const of = (fields: string[], place: FilePlace) => fields.filter((k) => !fieldsAfter(version, place).includes(k));
   object(file, "$", ENVELOPE);
-  if (object(file.experiment, "$.experiment", EXPERIMENT)) {
+  if (object(file.experiment, "$.experiment", of(EXPERIMENT, "experiment"))) {
     text(file.experiment, "name", "$.experiment", MAX_NAME, "required");
     text(file.experiment, "description", "$.experiment", MAX_TEXT, "optional");
     text(file.experiment, "robot", "$.experiment", MAX_NAME, "required");
@@ -310,7 +342,7 @@ function* check(file: unknown): Work<ImportProblem[]> {
   const keys = new Map<string, number>();
   file.steps.forEach((step, s) => {
     const path = `$.steps[${s}]`;
-    if (!object(step, path, file.formatVersion === 1 ? STEP.filter((k) => k !== "after") : STEP)) return;
+    if (!object(step, path, of(STEP, "step"))) return;
     text(step, "key", path, MAX_NAME, "required");
     if (typeof step.key === "string" && step.key.trim()) {
       if (keys.has(step.key))
@@ -334,7 +366,7 @@ function* check(file: unknown): Work<ImportProblem[]> {
     if (!isObject(step) || !list(step.actions, `$.steps[${s}].actions`, MAX_ACTIONS, "actions", "a step")) continue;
     step.actions.forEach((action, a) => {
       const path = `$.steps[${s}].actions[${a}]`;
-      if (!object(action, path, ACTION)) return;
+      if (!object(action, path, of(ACTION, "action"))) return;
       text(action, "type", path, MAX_NAME, "required");
       text(action, "name", path, MAX_NAME, "optional");
       text(action, "note", path, MAX_NOTE, "optional");

@@ -1,8 +1,16 @@
 // The experiment document, declared once. The designer's draft, the published
-// snapshot, the design procedure's input and the trial engine's protocol are
-// all this shape or a part of it; their types are derived here, never
-// written again. Messages are in the researcher's words: they reach the
-// designer as they are.
+// snapshot, the design procedure's input, the exchange file and the trial
+// engine's protocol are all this shape or a part of it; their types are
+// derived here (or from here), never written again. Messages are in the
+// researcher's words: they reach the designer as they are.
+//
+// The document carries its format version (a snapshot's schemaVersion, a
+// file's formatVersion); ./versions.ts reads every earlier one. What the
+// issue's later parts add goes here, each a bump of DOCUMENT_VERSION with its
+// upgrade in ./versions.ts:
+// - a step's time limit and a record_answer's time limit with its own edge: fields of stepSchema and actionSchema;
+// - a bounded loop ("at most K times, then …"): a member of afterSchema;
+// - a variant per condition of an action or a step: a field of actionSchema and stepSchema.
 import { z } from "zod";
 
 /**
@@ -116,14 +124,22 @@ export type DesignStep = z.infer<typeof stepSchema>;
 /** What a researcher edits before publishing. Branch targets are step ids (parameters.targets[optionId]). */
 export type DesignDraft = z.infer<typeof draftSchema>;
 
-export const SNAPSHOT_SCHEMA_VERSION = 2;
+/**
+ * The document's format version. 1: steps go on to the next, the snapshot
+ * names the robot robotPluginId. 2: a step says where it leads ("after"), the
+ * robot is robotId (a note for the wizard came in 2 too, optional, so a
+ * design without notes hashes as before).
+ */
+export const DOCUMENT_VERSION = 2;
 
-/** The published form: the draft under the experiment's id and the schema version, frozen. */
-export interface ProtocolSnapshot {
-  schemaVersion: typeof SNAPSHOT_SCHEMA_VERSION;
-  experiment: Omit<DesignDraft, "steps"> & { id: string };
-  steps: DesignStep[];
-}
+/** The published form: the draft under the experiment's id and the document's version, frozen. */
+export const snapshotSchema = z.object({
+  schemaVersion: z.literal(DOCUMENT_VERSION),
+  experiment: experimentFields.extend({ id: key }),
+  steps: z.array(stepSchema),
+});
+
+export type ProtocolSnapshot = z.infer<typeof snapshotSchema>;
 
 /**
  * What the trial engine needs of a protocol (a published snapshot or a
