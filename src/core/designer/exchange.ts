@@ -50,9 +50,10 @@ const FORMAT = "hristudio.experiment";
 const MAX_BYTES = 2 * 1024 * 1024;
 const MAX_STEPS = DESIGN_LIMITS.steps;
 const MAX_ACTIONS = DESIGN_LIMITS.actionsPerStep;
-const MAX_NAME = 200;
-const MAX_TEXT = 5000;
-const MAX_NOTE = 2000;
+const MAX_NAME = DESIGN_LIMITS.name;
+/** A description, and any text inside parameters. */
+const MAX_TEXT = DESIGN_LIMITS.description;
+const MAX_NOTE = DESIGN_LIMITS.note;
 const MAX_DEPTH = 32;
 
 /**

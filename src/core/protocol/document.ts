@@ -17,8 +17,20 @@ import { z } from "zod";
  * How large a design may be: steps in an experiment, actions in a step, and
  * actions in all. The last keeps the largest design (about 2 MB as a file)
  * imported, saved and published in seconds; 500 steps of 500 actions would not be.
+ * Then the characters of a name, a description and a note for the wizard.
  */
-export const DESIGN_LIMITS = { steps: 500, actionsPerStep: 500, actions: 50_000 } as const;
+export const DESIGN_LIMITS = {
+  steps: 500,
+  actionsPerStep: 500,
+  actions: 50_000,
+  name: 200,
+  description: 5000,
+  note: 2000,
+} as const;
+const description = z
+  .string()
+  .max(DESIGN_LIMITS.description, `must be at most ${DESIGN_LIMITS.description} characters`)
+  .default("");
 const plain = (label: string, max: number) =>
   z
     .string({ error: `${label} must be text` })
@@ -46,8 +58,8 @@ const MAX_PARAMETERS_BYTES = 64 * 1024;
 
 export const actionSchema = z.object({
   id: key,
-  type: named("Action type", 200),
-  name: plain("Action name", 200).default(""),
+  type: named("Action type", DESIGN_LIMITS.name),
+  name: plain("Action name", DESIGN_LIMITS.name).default(""),
   parameters: z
     .record(z.string(), z.unknown(), { error: "must be an object of named values" })
     .refine(
@@ -61,13 +73,13 @@ export const actionSchema = z.object({
    * Guidance for the wizard, shown beside the action during a trial. Left
    * out when empty, so a design without notes hashes as it always did.
    */
-  note: plain("Note for the wizard", 2000).optional(),
+  note: plain("Note for the wizard", DESIGN_LIMITS.note).optional(),
 });
 
 export const stepSchema = z.object({
   id: key,
-  name: named("Step name", 200),
-  description: z.string().max(5000, "must be at most 5000 characters").default(""),
+  name: named("Step name", DESIGN_LIMITS.name),
+  description,
   /** Absent in documents written before steps said where they lead: the next step. */
   after: afterSchema.optional(),
   actions: z
@@ -76,10 +88,10 @@ export const stepSchema = z.object({
 });
 
 export const experimentFields = z.object({
-  name: named("Name", 200),
-  description: z.string().max(5000, "must be at most 5000 characters").default(""),
+  name: named("Name", DESIGN_LIMITS.name),
+  description,
   /** The robot the experiment is designed for: its plugin's robotId. */
-  robotId: named("Robot", 200),
+  robotId: named("Robot", DESIGN_LIMITS.name),
 });
 
 /** "The design has 60,000 actions; the limit is 50,000.", or null: counted before anything else is read of the steps. */
