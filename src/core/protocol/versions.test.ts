@@ -29,6 +29,15 @@ describe("a version published before today's format", () => {
     expect(hashCanonical(snapshot)).toBe(hash);
   });
 
+  it.each(["storyteller.v2.snapshot.json", "quiz.v2.snapshot.json"])(
+    "%s: the same design published today hashes as it did",
+    (name) => {
+      const { hash, snapshot } = published(name);
+      const { experiment, steps } = readSnapshot(snapshot);
+      expect(hashCanonical(snapshotOf({ ...experiment, steps: structuredClone(steps) }))).toBe(hash);
+    },
+  );
+
   it("the storyteller of version 1 reads as the same design published today, and runs the same way", () => {
     const old = readSnapshot(published("storyteller.v1.snapshot.json").snapshot);
     const today = snapshotOf({ ...storytellerDraft(), id: "exp-1" });
