@@ -59,7 +59,9 @@ const MAX_DEPTH = 32;
 /**
  * Each field of the document and its name in the file; null: left out (ids
  * never leave: a step is keyed by position). A field added to the declaration
- * does not compile until it is given its place here, and the file then carries it.
+ * does not compile until it is given its place here; the writer and the
+ * reader then carry it as it is (give check() its rule, and the version that
+ * brought it its fileFields in ../protocol/versions.ts).
  */
 const EXPERIMENT_FIELDS = {
   name: "name",
@@ -114,15 +116,15 @@ export function exportExperiment(draft: DesignDraft): string {
   const file: ExperimentFile = {
     format: FORMAT,
     formatVersion: DOCUMENT_VERSION,
-    experiment: { name: draft.name, description: draft.description, robot: draft.robotId },
+    experiment: { ...toFile(draft, EXPERIMENT_FIELDS), name: draft.name, robot: draft.robotId },
     steps: draft.steps.map((step, i) => ({
+      ...toFile(step, STEP_FIELDS),
       key: `step-${i + 1}`,
       name: step.name,
-      description: step.description,
       after: fileAfter(step.after, keys),
       actions: step.actions.map((action) => ({
+        ...toFile(action, ACTION_FIELDS),
         type: action.type,
-        name: action.name,
         // A target that is no step of the draft is already an error in the designer; an id would mean nothing elsewhere.
         parameters: action.type === "branch" ? swapTargets(action.parameters, (id) => keys.get(id)) : action.parameters,
         runTogether: action.parallelGroup ? group(action.parallelGroup) : undefined,
@@ -200,11 +202,13 @@ export function draftOf(
   function* steps(): Generator<DesignStep, void, void> {
     for (const step of file.steps) {
       yield {
+        ...fromFile(step, STEP_FIELDS),
         id: ids.get(`@${step.key}`)!,
         name: step.name,
         description: step.description ?? "",
         after: draftAfter(step.after, ids),
         actions: step.actions.map((action) => ({
+          ...fromFile(action, ACTION_FIELDS),
           id: newId(),
           type: action.type,
           name: action.name ?? "",
@@ -213,17 +217,38 @@ export function draftOf(
               ? swapTargets(action.parameters ?? {}, (key) => ids.get(key))
               : (action.parameters ?? {}),
           parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
-          ...(action.note ? { note: action.note } : {}),
+          note: action.note || undefined,
         })),
       };
     }
   }
   return {
+    ...fromFile(file.experiment, EXPERIMENT_FIELDS),
     name: file.experiment.name,
     description: file.experiment.description ?? "",
     robotId: file.experiment.robot,
     steps: steps(),
   };
+}
+
+/**
+ * The document's fields under their file names, as they are: what the file
+ * writes its own way (ids, where a step leads, groups, a branch's targets) is
+ * set after, over them.
+ */
+function toFile(value: object, names: Readonly<Record<string, string | null>>): Record<string, unknown> {
+  const fields = Object.entries(names).flatMap(([field, name]) =>
+    name === null ? [] : [[name, (value as Record<string, unknown>)[field]] as const],
+  );
+  return Object.fromEntries(fields);
+}
+
+/** The file's fields under the document's names, as they are; the reader sets its own over them. */
+function fromFile(value: object, names: Readonly<Record<string, string | null>>): Record<string, unknown> {
+  const fields = Object.entries(names).flatMap(([field, name]) =>
+    name === null ? [] : [[field, (value as Record<string, unknown>)[name]] as const],
+  );
+  return Object.fromEntries(fields);
 }
 
 function fileAfter(after: After | undefined, keys: Map<string, string>): string | undefined {
