@@ -358,8 +358,9 @@ function* check(file: unknown): Work<ImportProblem[]> {
   }
   const version = file.formatVersion as number;
   const of = (fields: string[], place: FilePlace) => fields.filter((k) => !fieldsAfter(version, place).includes(k));
+  const [experimentKeys, stepKeys, actionKeys] = [of(EXPERIMENT, "experiment"), of(STEP, "step"), of(ACTION, "action")];
   object(file, "$", ENVELOPE);
-  if (object(file.experiment, "$.experiment", of(EXPERIMENT, "experiment"))) {
+  if (object(file.experiment, "$.experiment", experimentKeys)) {
     text(file.experiment, "name", "$.experiment", MAX_NAME, "required");
     text(file.experiment, "description", "$.experiment", MAX_TEXT, "optional");
     text(file.experiment, "robot", "$.experiment", MAX_NAME, "required");
@@ -368,7 +369,7 @@ function* check(file: unknown): Work<ImportProblem[]> {
   const keys = new Map<string, number>();
   file.steps.forEach((step, s) => {
     const path = `$.steps[${s}]`;
-    if (!object(step, path, of(STEP, "step"))) return;
+    if (!object(step, path, stepKeys)) return;
     text(step, "key", path, MAX_NAME, "required");
     if (typeof step.key === "string" && step.key.trim()) {
       if (keys.has(step.key))
@@ -392,7 +393,7 @@ function* check(file: unknown): Work<ImportProblem[]> {
     if (!isObject(step) || !list(step.actions, `$.steps[${s}].actions`, MAX_ACTIONS, "actions", "a step")) continue;
     step.actions.forEach((action, a) => {
       const path = `$.steps[${s}].actions[${a}]`;
-      if (!object(action, path, of(ACTION, "action"))) return;
+      if (!object(action, path, actionKeys)) return;
       text(action, "type", path, MAX_NAME, "required");
       text(action, "name", path, MAX_NAME, "optional");
       text(action, "note", path, MAX_NOTE, "optional");
