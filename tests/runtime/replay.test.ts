@@ -12,7 +12,7 @@
 import { asc, eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { REPLAY_TOPIC } from "../../src/core/robots/robot-state";
-import { SNAPSHOT_SCHEMA_VERSION } from "../../src/core/protocol/document";
+import { DOCUMENT_VERSION } from "../../src/core/protocol/document";
 import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/store/client";
@@ -50,7 +50,7 @@ const action = (
 });
 // Speech, a gesture with speech at the same moment, a wizard's note, then two more commands.
 const protocol = {
-  schemaVersion: SNAPSHOT_SCHEMA_VERSION as typeof SNAPSHOT_SCHEMA_VERSION,
+  schemaVersion: DOCUMENT_VERSION as typeof DOCUMENT_VERSION,
   experiment: { id: "replay-experiment", name: "Replayed", description: "", robotId: "nao6-ros2" },
   steps: [
     {

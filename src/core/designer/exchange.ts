@@ -28,45 +28,76 @@
 //
 // Import checks the file's shape, not its actions: the imported draft goes
 // through validateDesign like any other, against whatever robot is at hand.
-import { actionCountProblem, DESIGN_LIMITS } from "../protocol/document";
+// The file is the experiment document (../protocol/document.ts) under other
+// names: its types derive from the declaration, and its format version is the
+// document's. A file of an earlier version is upgraded once checked
+// (../protocol/versions.ts); a field a version added is refused in older files.
+import type { z } from "zod";
+import {
+  type actionSchema,
+  actionCountProblem,
+  DESIGN_LIMITS,
+  DOCUMENT_VERSION,
+  type experimentFields,
+  type stepSchema,
+} from "../protocol/document";
+import { fieldsAfter, type FilePlace, READABLE_VERSIONS, upgradeFile } from "../protocol/versions";
 import { finish, type Work } from "../work";
 import { parsingFile } from "./file-parse";
-import type { After, DesignDraft, DesignStep, NewId } from "./types";
+import type { After, DesignAction, DesignDraft, DesignStep, NewId } from "./types";
 
 const FORMAT = "hristudio.experiment";
-const FORMAT_VERSION = 2;
-/** Versions this reader understands: 1 is 2 without "after". */
-const READABLE = [1, 2];
 const MAX_BYTES = 2 * 1024 * 1024;
 const MAX_STEPS = DESIGN_LIMITS.steps;
 const MAX_ACTIONS = DESIGN_LIMITS.actionsPerStep;
-const MAX_NAME = 200;
-const MAX_TEXT = 5000;
-const MAX_NOTE = 2000;
+const MAX_NAME = DESIGN_LIMITS.name;
+/** A description, and any text inside parameters. */
+const MAX_TEXT = DESIGN_LIMITS.description;
+const MAX_NOTE = DESIGN_LIMITS.note;
 const MAX_DEPTH = 32;
 
-interface FileAction {
-  type: string;
-  name?: string;
-  parameters?: Record<string, unknown>;
-  runTogether?: string;
-  /** The note for the wizard; absent when there is none (files written before notes have none). */
-  note?: string;
-}
+/**
+ * Each field of the document and its name in the file; null: left out (ids
+ * never leave: a step is keyed by position). A field added to the declaration
+ * does not compile until it is given its place here; the writer and the
+ * reader then carry it as it is (give check() its rule, and the version that
+ * brought it its fileFields in ../protocol/versions.ts).
+ */
+const EXPERIMENT_FIELDS = {
+  name: "name",
+  description: "description",
+  robotId: "robot",
+} as const satisfies Record<keyof z.input<typeof experimentFields>, string>;
+const STEP_FIELDS = {
+  id: "key",
+  name: "name",
+  description: "description",
+  after: "after",
+  actions: "actions",
+} as const satisfies Record<keyof DesignStep, string>;
+const ACTION_FIELDS = {
+  id: null,
+  type: "type",
+  name: "name",
+  parameters: "parameters",
+  parallelGroup: "runTogether",
+  note: "note",
+} as const satisfies Record<keyof DesignAction, string | null>;
 
-interface FileStep {
+/** An action as the declaration reads it (defaults left out), with its run-together group named. The note is absent when there is none. */
+type FileAction = Omit<z.input<typeof actionSchema>, "id" | "parallelGroup"> & { runTogether?: string };
+
+/** A step keyed "step-K"; "after" is "@step-K" or "end", absent for the next step. */
+type FileStep = Omit<z.input<typeof stepSchema>, "id" | "after" | "actions"> & {
   key: string;
-  name: string;
-  description?: string;
-  /** "@step-K" or "end"; absent: the next step. */
   after?: string;
   actions: FileAction[];
-}
+};
 
 export interface ExperimentFile {
   format: typeof FORMAT;
-  formatVersion: typeof FORMAT_VERSION;
-  experiment: { name: string; description?: string; robot: string };
+  formatVersion: typeof DOCUMENT_VERSION;
+  experiment: Omit<z.input<typeof experimentFields>, "robotId"> & { robot: string };
   steps: FileStep[];
 }
 
@@ -84,16 +115,16 @@ export function exportExperiment(draft: DesignDraft): string {
   const group = (id: string) => groups.get(id) ?? groups.set(id, `group-${groups.size + 1}`).get(id)!;
   const file: ExperimentFile = {
     format: FORMAT,
-    formatVersion: FORMAT_VERSION,
-    experiment: { name: draft.name, description: draft.description, robot: draft.robotId },
+    formatVersion: DOCUMENT_VERSION,
+    experiment: { ...toFile(draft, EXPERIMENT_FIELDS), name: draft.name, robot: draft.robotId },
     steps: draft.steps.map((step, i) => ({
+      ...toFile(step, STEP_FIELDS),
       key: `step-${i + 1}`,
       name: step.name,
-      description: step.description,
       after: fileAfter(step.after, keys),
       actions: step.actions.map((action) => ({
+        ...toFile(action, ACTION_FIELDS),
         type: action.type,
-        name: action.name,
         // A target that is no step of the draft is already an error in the designer; an id would mean nothing elsewhere.
         parameters: action.type === "branch" ? swapTargets(action.parameters, (id) => keys.get(id)) : action.parameters,
         runTogether: action.parallelGroup ? group(action.parallelGroup) : undefined,
@@ -151,7 +182,9 @@ export function* checking(text: string): Work<CheckResult> {
   const tooMany = actionCountProblem(steps);
   if (tooMany) return { ok: false, problems: [{ path: "$.steps", message: tooMany }] };
   const problems = yield* check(parsed.value);
-  return problems.length ? { ok: false, problems } : { ok: true, file: parsed.value as ExperimentFile };
+  return problems.length
+    ? { ok: false, problems }
+    : { ok: true, file: upgradeFile<ExperimentFile>(parsed.value as Record<string, unknown>) };
 }
 
 /**
@@ -169,11 +202,13 @@ export function draftOf(
   function* steps(): Generator<DesignStep, void, void> {
     for (const step of file.steps) {
       yield {
+        ...fromFile(step, STEP_FIELDS),
         id: ids.get(`@${step.key}`)!,
         name: step.name,
         description: step.description ?? "",
         after: draftAfter(step.after, ids),
         actions: step.actions.map((action) => ({
+          ...fromFile(action, ACTION_FIELDS),
           id: newId(),
           type: action.type,
           name: action.name ?? "",
@@ -182,17 +217,38 @@ export function draftOf(
               ? swapTargets(action.parameters ?? {}, (key) => ids.get(key))
               : (action.parameters ?? {}),
           parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
-          ...(action.note ? { note: action.note } : {}),
+          note: action.note || undefined,
         })),
       };
     }
   }
   return {
+    ...fromFile(file.experiment, EXPERIMENT_FIELDS),
     name: file.experiment.name,
     description: file.experiment.description ?? "",
     robotId: file.experiment.robot,
     steps: steps(),
   };
+}
+
+/**
+ * The document's fields under their file names, as they are: what the file
+ * writes its own way (ids, where a step leads, groups, a branch's targets) is
+ * set after, over them.
+ */
+function toFile(value: object, names: Readonly<Record<string, string | null>>): Record<string, unknown> {
+  const fields = Object.entries(names).flatMap(([field, name]) =>
+    name === null ? [] : [[name, (value as Record<string, unknown>)[field]] as const],
+  );
+  return Object.fromEntries(fields);
+}
+
+/** The file's fields under the document's names, as they are; the reader sets its own over them. */
+function fromFile(value: object, names: Readonly<Record<string, string | null>>): Record<string, unknown> {
+  const fields = Object.entries(names).flatMap(([field, name]) =>
+    name === null ? [] : [[field, (value as Record<string, unknown>)[name]] as const],
+  );
+  return Object.fromEntries(fields);
 }
 
 function fileAfter(after: After | undefined, keys: Map<string, string>): string | undefined {
@@ -242,9 +298,9 @@ function write(value: unknown, indent: string, sorted: boolean): string {
 }
 
 const ENVELOPE = ["format", "formatVersion", "experiment", "steps"];
-const EXPERIMENT = ["name", "description", "robot"];
-const STEP = ["key", "name", "description", "after", "actions"];
-const ACTION = ["type", "name", "parameters", "runTogether", "note"];
+const EXPERIMENT: string[] = Object.values(EXPERIMENT_FIELDS);
+const STEP: string[] = Object.values(STEP_FIELDS);
+const ACTION = Object.values(ACTION_FIELDS).filter((name) => name !== null);
 
 function* check(file: unknown): Work<ImportProblem[]> {
   const problems: ImportProblem[] = [];
@@ -293,15 +349,18 @@ function* check(file: unknown): Work<ImportProblem[]> {
     return [{ path: "$", message: "must be an object ({ … }): an experiment file holds one experiment" }];
   if (file.format !== FORMAT)
     return [{ path: "$.format", message: `must be "${FORMAT}": this is not an HRIStudio experiment file` }];
-  if (!READABLE.includes(file.formatVersion as number)) {
-    const newer = typeof file.formatVersion === "number" && file.formatVersion > FORMAT_VERSION;
+  if (!READABLE_VERSIONS.includes(file.formatVersion as number)) {
+    const newer = typeof file.formatVersion === "number" && file.formatVersion > DOCUMENT_VERSION;
     const message = newer
-      ? `is ${file.formatVersion}: the file comes from a newer HRIStudio, and this one reads version ${FORMAT_VERSION}`
-      : `must be ${READABLE.join(" or ")}`;
+      ? `is ${file.formatVersion}: the file comes from a newer HRIStudio, and this one reads version ${DOCUMENT_VERSION}`
+      : `must be ${READABLE_VERSIONS.join(" or ")}`;
     return [{ path: "$.formatVersion", message }];
   }
+  const version = file.formatVersion as number;
+  const of = (fields: string[], place: FilePlace) => fields.filter((k) => !fieldsAfter(version, place).includes(k));
+  const [experimentKeys, stepKeys, actionKeys] = [of(EXPERIMENT, "experiment"), of(STEP, "step"), of(ACTION, "action")];
   object(file, "$", ENVELOPE);
-  if (object(file.experiment, "$.experiment", EXPERIMENT)) {
+  if (object(file.experiment, "$.experiment", experimentKeys)) {
     text(file.experiment, "name", "$.experiment", MAX_NAME, "required");
     text(file.experiment, "description", "$.experiment", MAX_TEXT, "optional");
     text(file.experiment, "robot", "$.experiment", MAX_NAME, "required");
@@ -310,7 +369,7 @@ function* check(file: unknown): Work<ImportProblem[]> {
   const keys = new Map<string, number>();
   file.steps.forEach((step, s) => {
     const path = `$.steps[${s}]`;
-    if (!object(step, path, file.formatVersion === 1 ? STEP.filter((k) => k !== "after") : STEP)) return;
+    if (!object(step, path, stepKeys)) return;
     text(step, "key", path, MAX_NAME, "required");
     if (typeof step.key === "string" && step.key.trim()) {
       if (keys.has(step.key))
@@ -334,7 +393,7 @@ function* check(file: unknown): Work<ImportProblem[]> {
     if (!isObject(step) || !list(step.actions, `$.steps[${s}].actions`, MAX_ACTIONS, "actions", "a step")) continue;
     step.actions.forEach((action, a) => {
       const path = `$.steps[${s}].actions[${a}]`;
-      if (!object(action, path, ACTION)) return;
+      if (!object(action, path, actionKeys)) return;
       text(action, "type", path, MAX_NAME, "required");
       text(action, "name", path, MAX_NAME, "optional");
       text(action, "note", path, MAX_NOTE, "optional");

@@ -1,6 +1,7 @@
 // The designer as a headless model: named commands over a draft, with undo
 // and redo. The page only renders a draft and sends commands, so every edit a
 // researcher can make is tested here without a browser.
+import { actionSchema, experimentFields, stepSchema } from "../protocol/document";
 import type { DesignAction, DesignDraft, DesignStep, NewId, After } from "./types";
 import { WAITS_FOR_CHOICE } from "./blocks";
 
@@ -56,25 +57,31 @@ export function redo(history: History): History {
   };
 }
 
+// The fields the declaration names, read from it: a field added there is kept
+// by draftFrom, so reaches the snapshot and its hash, with nothing else to change.
+const EXPERIMENT_KEYS = Object.keys(experimentFields.shape) as Array<keyof Omit<DesignDraft, "steps">>;
+const STEP_KEYS = Object.keys(stepSchema.shape) as Array<keyof DesignStep>;
+const ACTION_KEYS = Object.keys(actionSchema.shape) as Array<keyof DesignAction>;
+
+/** The named fields of `value` that are set. */
+function declared<T extends object, K extends keyof T>(value: T, keys: K[]): Pick<T, K> {
+  const out = {} as Pick<T, K>;
+  for (const key of keys) if (value[key] !== undefined) out[key] = value[key];
+  return out;
+}
+
 /** The draft inside a stored design (which also carries positions, times, revision...). */
 export function draftFrom(design: DesignDraft): DesignDraft {
   return {
-    name: design.name,
-    description: design.description,
-    robotId: design.robotId,
+    ...declared(design, EXPERIMENT_KEYS),
     steps: design.steps.map((s) => ({
-      id: s.id,
-      name: s.name,
-      description: s.description,
+      ...declared(s, STEP_KEYS),
       after: s.after ?? { to: "next" },
-      actions: s.actions.map((a) => ({
-        id: a.id,
-        type: a.type,
-        name: a.name,
-        parameters: a.parameters,
-        parallelGroup: a.parallelGroup,
-        ...(a.note ? { note: a.note } : {}),
-      })),
+      actions: s.actions.map((a) => {
+        const { note, ...action } = declared(a, ACTION_KEYS);
+        // A note left empty is no note: a design without notes hashes as it did before notes.
+        return note ? { ...action, note } : action;
+      }),
     })),
   };
 }

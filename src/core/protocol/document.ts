@@ -1,16 +1,36 @@
 // The experiment document, declared once. The designer's draft, the published
-// snapshot, the design procedure's input and the trial engine's protocol are
-// all this shape or a part of it; their types are derived here, never
-// written again. Messages are in the researcher's words: they reach the
-// designer as they are.
+// snapshot, the design procedure's input, the exchange file and the trial
+// engine's protocol are all this shape or a part of it; their types are
+// derived here (or from here), never written again. Messages are in the
+// researcher's words: they reach the designer as they are.
+//
+// The document carries its format version (a snapshot's schemaVersion, a
+// file's formatVersion); ./versions.ts reads every earlier one. What the
+// issue's later parts add goes here, each a bump of DOCUMENT_VERSION with its
+// upgrade in ./versions.ts:
+// - a step's time limit and a record_answer's time limit with its own edge: fields of stepSchema and actionSchema;
+// - a bounded loop ("at most K times, then …"): a member of afterSchema;
+// - a variant per condition of an action or a step: a field of actionSchema and stepSchema.
 import { z } from "zod";
 
 /**
  * How large a design may be: steps in an experiment, actions in a step, and
  * actions in all. The last keeps the largest design (about 2 MB as a file)
  * imported, saved and published in seconds; 500 steps of 500 actions would not be.
+ * Then the characters of a name, a description and a note for the wizard.
  */
-export const DESIGN_LIMITS = { steps: 500, actionsPerStep: 500, actions: 50_000 } as const;
+export const DESIGN_LIMITS = {
+  steps: 500,
+  actionsPerStep: 500,
+  actions: 50_000,
+  name: 200,
+  description: 5000,
+  note: 2000,
+} as const;
+const description = z
+  .string()
+  .max(DESIGN_LIMITS.description, `must be at most ${DESIGN_LIMITS.description} characters`)
+  .default("");
 const plain = (label: string, max: number) =>
   z
     .string({ error: `${label} must be text` })
@@ -38,8 +58,8 @@ const MAX_PARAMETERS_BYTES = 64 * 1024;
 
 export const actionSchema = z.object({
   id: key,
-  type: named("Action type", 200),
-  name: plain("Action name", 200).default(""),
+  type: named("Action type", DESIGN_LIMITS.name),
+  name: plain("Action name", DESIGN_LIMITS.name).default(""),
   parameters: z
     .record(z.string(), z.unknown(), { error: "must be an object of named values" })
     .refine(
@@ -53,13 +73,13 @@ export const actionSchema = z.object({
    * Guidance for the wizard, shown beside the action during a trial. Left
    * out when empty, so a design without notes hashes as it always did.
    */
-  note: plain("Note for the wizard", 2000).optional(),
+  note: plain("Note for the wizard", DESIGN_LIMITS.note).optional(),
 });
 
 export const stepSchema = z.object({
   id: key,
-  name: named("Step name", 200),
-  description: z.string().max(5000, "must be at most 5000 characters").default(""),
+  name: named("Step name", DESIGN_LIMITS.name),
+  description,
   /** Absent in documents written before steps said where they lead: the next step. */
   after: afterSchema.optional(),
   actions: z
@@ -68,10 +88,10 @@ export const stepSchema = z.object({
 });
 
 export const experimentFields = z.object({
-  name: named("Name", 200),
-  description: z.string().max(5000, "must be at most 5000 characters").default(""),
+  name: named("Name", DESIGN_LIMITS.name),
+  description,
   /** The robot the experiment is designed for: its plugin's robotId. */
-  robotId: named("Robot", 200),
+  robotId: named("Robot", DESIGN_LIMITS.name),
 });
 
 /** "The design has 60,000 actions; the limit is 50,000.", or null: counted before anything else is read of the steps. */
@@ -116,14 +136,22 @@ export type DesignStep = z.infer<typeof stepSchema>;
 /** What a researcher edits before publishing. Branch targets are step ids (parameters.targets[optionId]). */
 export type DesignDraft = z.infer<typeof draftSchema>;
 
-export const SNAPSHOT_SCHEMA_VERSION = 2;
+/**
+ * The document's format version. 1: steps go on to the next, the snapshot
+ * names the robot robotPluginId. 2: a step says where it leads ("after"), the
+ * robot is robotId (a note for the wizard came in 2 too, optional, so a
+ * design without notes hashes as before).
+ */
+export const DOCUMENT_VERSION = 2;
 
-/** The published form: the draft under the experiment's id and the schema version, frozen. */
-export interface ProtocolSnapshot {
-  schemaVersion: typeof SNAPSHOT_SCHEMA_VERSION;
-  experiment: Omit<DesignDraft, "steps"> & { id: string };
-  steps: DesignStep[];
-}
+/** The published form: the draft under the experiment's id and the document's version, frozen. */
+export const snapshotSchema = z.object({
+  schemaVersion: z.literal(DOCUMENT_VERSION),
+  experiment: experimentFields.extend({ id: key }),
+  steps: z.array(stepSchema),
+});
+
+export type ProtocolSnapshot = z.infer<typeof snapshotSchema>;
 
 /**
  * What the trial engine needs of a protocol (a published snapshot or a

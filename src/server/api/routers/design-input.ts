@@ -6,7 +6,7 @@ import { id } from "../validation";
 
 export const experimentDetails = experimentFields.extend({
   // Required here: a new experiment's description is a deliberate choice, even an empty one.
-  description: z.string().max(5000, "must be at most 5000 characters"),
+  description: z.string().max(DESIGN_LIMITS.description, `must be at most ${DESIGN_LIMITS.description} characters`),
 });
 
 /** A whole design, as the designer saves it: ids present are kept, absent ones are new. */
