@@ -84,6 +84,8 @@ describe.sequential("a live trial in two browsers", () => {
     await screenshot(wizard, "wizard-view");
     await press("n", () => stepIs(wizard, "Story"));
     await stepIs(observer, "Story");
+    // The wizard reads the whole line, not its name cut at 32 characters.
+    expect(await wizard.getByTestId("line-text").first().textContent()).toMatch(/carried it back to the base\.$/);
     await press("n", allDone);
     await press("n", () => stepIs(wizard, "Recall question"));
     await stepIs(observer, "Recall question");

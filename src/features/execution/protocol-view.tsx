@@ -138,7 +138,7 @@ export function StepActions({
               data-testid={`action-${a.id}`}
             >
               <Badge tone={STATUS[s.status].tone}>{STATUS[s.status].label}</Badge>
-              {/* A long speech is cut in its name; the whole text is a hover away. */}
+              {/* A long speech is cut in its name; the whole text is a hover away (and below, for the wizard). */}
               <span className="flex-1" title={typeof a.parameters.text === "string" ? a.parameters.text : undefined}>
                 {a.type === "wizard_instruction" ? (
                   <strong>Instruction: {String(a.parameters.text ?? a.name)}</strong>
@@ -166,6 +166,15 @@ export function StepActions({
                   </button>
                 )}
               <WhyNotDone text={problems[a.id]} />
+              {/* The wizard reads the whole line the robot will say, not its cut name: they must hear whether it was said. */}
+              {notes &&
+                a.type !== "wizard_instruction" &&
+                typeof a.parameters.text === "string" &&
+                !actionName(a, names).includes(a.parameters.text.trim()) && (
+                  <p className="basis-full whitespace-pre-line text-slate-700" data-testid="line-text">
+                    {a.parameters.text}
+                  </p>
+                )}
               {notes && a.note?.trim() && (
                 <p
                   className="basis-full whitespace-pre-line rounded-md border-l-4 border-amber-400 bg-amber-50 px-3 py-1.5 text-amber-900"
