@@ -129,11 +129,11 @@ describe("the study's methods text says each fact", () => {
     ["coding agreement", "“Looks at”: Cohen's κ = 0.73 between Ann and Bo (120 slices)."],
     [
       "fidelity and deviations",
-      "“Expressive”: mean execution fidelity 87.5% (SD 17.7) over 2 trials; 1 of 2 ran exactly as scripted; deviations: 1 action skipped.",
+      "“Expressive”: mean execution fidelity 87.5% (SD 17.7) over 2 trials; 1 of 2 without any deviation; deviations: 1 action skipped.",
     ],
     [
       "a condition without deviations",
-      "“Still”: mean execution fidelity 100.0% (SD 0.0) over 2 trials; 2 of 2 ran exactly as scripted; no deviations.",
+      "“Still”: mean execution fidelity 100.0% (SD 0.0) over 2 trials; 2 of 2 without any deviation; no deviations.",
     ],
     ["the software's version", "generated with HRIStudio 0.1.0."],
   ])("%s", (_fact, sentence) => {

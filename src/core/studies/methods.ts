@@ -46,7 +46,8 @@ export interface StudyFacts {
   /** Each robot the study's trials ran on, with the plugin document they ran with, and how many trials. */
   robots: Array<{
     name: string;
-    simulated: boolean;
+    /** Null when the trial kept no robot record (a trial from before robots were registered). */
+    simulated: boolean | null;
     plugin: string;
     pluginVersion: string | null;
     pluginHash: string | null;
@@ -193,7 +194,7 @@ function robots(f: StudyFacts, s: Style): string[] {
         ]
           .filter(Boolean)
           .join(", ");
-        return `${quote(s, r.name)} (${r.simulated ? "simulated" : "physical"}; plugin ${quote(s, r.plugin)}${plugin ? `, ${plugin}` : ""}; ${plural(r.trials, "trial")})`;
+        return `${quote(s, r.name)} (${r.simulated === null ? "simulated or physical not recorded" : r.simulated ? "simulated" : "physical"}; plugin ${quote(s, r.plugin)}${plugin ? `, ${plugin}` : ""}; ${plural(r.trials, "trial")})`;
       }),
     )}.`,
   ];
@@ -232,7 +233,7 @@ function timings(f: StudyFacts, s: Style): string[] {
     const timed = c.steps.filter((st) => st.durationMs);
     if (!timed.length) return [];
     const each = timed.map(({ name, durationMs: d }) => {
-      const range = d!.n > 1 ? `, range ${number(d!.min)}–${seconds(d!.max)}` : "";
+      const range = d!.min !== d!.max ? `, range ${number(d!.min)}–${seconds(d!.max)}` : "";
       return `${quote(s, name)} median ${seconds(d!.median)}${range} (n = ${d!.n})`;
     });
     return [`In ${quote(s, c.name)}, measured from the trials' logs: ${each.join("; ")}.`];
@@ -270,7 +271,7 @@ function fidelity(f: StudyFacts, s: Style): string[] {
     const deviations = kinds.length
       ? `; deviations: ${joinAnd(kinds.map(([kind, n]) => DEVIATION_WORDS[kind]?.(n) ?? `${n} ${kind}`))}`
       : "; no deviations";
-    return `${quote(s, name)}: mean execution fidelity ${percent(x.meanFidelity!)}${sd} over ${plural(x.trials, "trial")}; ${x.withoutDeviation} of ${x.trials} ran exactly as scripted${deviations}.`;
+    return `${quote(s, name)}: mean execution fidelity ${percent(x.meanFidelity!)}${sd} over ${plural(x.trials, "trial")}; ${x.withoutDeviation} of ${x.trials} without any deviation${deviations}.`;
   });
 }
 
