@@ -20,7 +20,7 @@ export function MethodsDialog({ versionId, version }: { versionId: string; versi
       description="A description of this version for a paper's methods section, generated from what was published."
       size="wide"
       open={open}
-      // Closing and opening again shows a fresh view, without the last "Copied".
+      // Closed, the text and its "Copied" unmount: opened again, it starts afresh.
       onOpenChange={setOpen}
       trigger={
         <Button variant="secondary" size="sm">
