@@ -154,15 +154,13 @@ const [firstTrial] = await db.select().from(trials).where(eq(trials.participantI
 const scheme = await owner.coding.createScheme({ studyId: study.id, template: "wizard-interventions" });
 const schemeVersion = await owner.coding.publishScheme({ codingSchemeId: scheme.id });
 const code = (who: "owner" | "observer", codeId: string, startMs: number) =>
-  f
-    .api(who)
-    .coding.addCode({
-      trialId: firstTrial!.id,
-      schemeVersionId: schemeVersion.id,
-      setId: "intervention",
-      codeId,
-      startMs,
-    });
+  f.api(who).coding.addCode({
+    trialId: firstTrial!.id,
+    schemeVersionId: schemeVersion.id,
+    setId: "intervention",
+    codeId,
+    startMs,
+  });
 await code("owner", "hint", 1500);
 await code("owner", "technical", 6500);
 await code("observer", "hint", 1700);
