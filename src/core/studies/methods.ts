@@ -74,7 +74,7 @@ export interface StudyFacts {
 export const SCORING: Record<Instrument, string> = {
   sus: "scored as published: odd items (answer − 1), even items (5 − answer), the sum × 2.5, giving 0–100 (Brooke, 1996, “SUS: A ‘quick and dirty’ usability scale”, in Usability Evaluation in Industry, pp. 189–194)",
   godspeed:
-    "scored as published: the mean of each sub-scale's items (anthropomorphism, animacy, likeability, perceived intelligence, perceived safety), with no overall score (Bartneck, Kulić, Croft & Zoghbi, 2009, International Journal of Social Robotics 1(1), 71–81)",
+    "scored as published: the mean of each sub-scale's items (anthropomorphism, animacy, likeability, perceived intelligence, perceived safety); the published instrument defines no overall score (Bartneck, Kulić, Croft & Zoghbi, 2009, International Journal of Social Robotics 1(1), 71–81)",
 };
 
 /** A deviation kind (src/core/trial/types.ts) in a paper's words, with its count. */
