@@ -147,6 +147,7 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "studies.update": [OWNER, (_f, b) => ({ studyId: b.study.id, description: "changed" })],
   "studies.figures": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
   "studies.exportArchive": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
+  "studies.methods": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
   "studies.resultsByCondition": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
   "studies.resultsByConditionCsv": [["owner", "researcher", "observer"], (_f, b) => ({ studyId: b.study.id })],
   "studies.delete": [OWNER, async (f) => ({ studyId: (await f.newStudy("Doomed")).id, confirmTitle: "Doomed" })],

@@ -191,6 +191,7 @@ describe("the study archive", () => {
       "codes.csv",
       expect.stringMatching(/^experiments\/story-v1-[0-9a-f-]{8}-methods\.md$/),
       "experiments/story-v1-methods.md",
+      "methods.md",
       "questionnaire-answers.csv",
       "study.json",
       `trials/${trial.id}-events.csv`,
@@ -220,6 +221,8 @@ describe("the study archive", () => {
         .sort(),
     );
     expect(strFromU8(files["README.txt"]!)).toContain("experiments/<name>-v<N>-methods.md");
+    // And the study's own, as its Methods tab shows it.
+    expect(strFromU8(files["methods.md"]!)).toBe((await owner.studies.methods({ studyId: study.id })).markdown);
     expect(Object.keys(files).join()).not.toContain(withdrawnTrial.id);
     expect(JSON.parse(strFromU8(files[`trials/${trial.id}.json`]!))).toMatchObject({
       protocol: { steps: [{ name: "Hello" }] },

@@ -155,6 +155,16 @@ describe.sequential("a study with conditions, sessions and a blinded wizard", ()
     for (const name of CONDITIONS) expect(csv).toContain(`${name},Execution fidelity (%),2,`);
     await byCondition.getByRole("heading", { name: "By condition" }).scrollIntoViewIfNeeded();
     await screenshot(results, "study-results-by-condition");
+
+    // The study's methods text, written from what just ran: both conditions, two participants each.
+    await results.getByRole("tab", { name: "Methods" }).click();
+    const methods = results.getByRole("region", { name: "Methods text" });
+    await methods.getByText("between-subjects design", { exact: false }).waitFor();
+    for (const name of CONDITIONS)
+      await methods.getByText(`“${name}”: 2 enrolled, 2 completed, 0 withdrew; none excluded.`).waitFor();
+    await methods.getByText("Wizards were blind to condition", { exact: false }).waitFor();
+    await results.getByRole("button", { name: "Copy Markdown" }).waitFor();
+    await screenshot(results, "study-methods");
     await results.context().close();
   }, 300_000);
 

@@ -27,7 +27,7 @@ export interface MethodsInput {
   names?: ActionNames;
 }
 
-interface Style {
+export interface Style {
   heading: (text: string) => string;
   strong: (text: string) => string;
   code: (text: string) => string;
@@ -38,7 +38,7 @@ interface Style {
 // Researchers' words may hold characters Markdown would read as formatting.
 const escapeMarkdown = (s: string) => s.replace(/[\\`*_[\]<>#|~]/g, (c) => `\\${c}`);
 
-const MARKDOWN: Style = {
+export const MARKDOWN: Style = {
   heading: (t) => `## ${t}`,
   strong: (t) => `**${escapeMarkdown(t)}**`,
   code: (t) => `\`${t}\``,
@@ -47,7 +47,7 @@ const MARKDOWN: Style = {
 
 // Plain text is the same words: a heading keeps its own line and the
 // researcher's capitals, to be styled where it is pasted.
-const PLAIN: Style = { heading: (t) => t, strong: (t) => t, code: (t) => t, text: (t) => t };
+export const PLAIN: Style = { heading: (t) => t, strong: (t) => t, code: (t) => t, text: (t) => t };
 
 export function methodsMarkdown(input: MethodsInput): string {
   return methods(input, MARKDOWN);
@@ -57,11 +57,11 @@ export function methodsPlainText(input: MethodsInput): string {
   return methods(input, PLAIN);
 }
 
-const quote = (s: Style, words: string) => `“${s.text(words.replace(/\s+/g, " ").trim())}”`;
+export const quote = (s: Style, words: string) => `“${s.text(words.replace(/\s+/g, " ").trim())}”`;
 // A sentence (or a step's name) that already ends on a full stop, or on quoted speech that does, takes no second one.
 const stop = (t: string) => (/[.!?…]”?$/.test(t) ? t : `${t}.`);
 const capital = (t: string) => t.charAt(0).toUpperCase() + t.slice(1);
-const plural = (n: number, one: string, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;
+export const plural = (n: number, one: string, many = `${one}s`) => `${n} ${n === 1 ? one : many}`;
 const seconds = (n: number) => (n === 1 ? "1 second" : `${n} seconds`);
 const COUNTS = [
   "no",
@@ -105,6 +105,7 @@ function methods(input: MethodsInput, s: Style): string {
 }
 
 type Steps = ProtocolSnapshot["steps"];
+type Described = Pick<MethodsInput, "snapshot" | "names">;
 
 function stepName(s: Style, steps: Steps, index: number): string {
   return quote(s, steps[index]!.name);
@@ -112,6 +113,12 @@ function stepName(s: Style, steps: Steps, index: number): string {
 
 /** Each step as a numbered paragraph: what happened, in order, and where it led. */
 function procedure(input: MethodsInput, s: Style): string {
+  const { steps } = input.snapshot;
+  return [`The protocol had ${plural(steps.length, "step")}.`, stepParagraphs(input, s).join("\n")].join("\n\n");
+}
+
+/** The steps' paragraphs, numbered: the lines two conditions' protocols are compared by. */
+export function stepParagraphs(input: Described, s: Style): string[] {
   const { steps } = input.snapshot;
   const branchTargets = new Set<number>();
   for (const step of steps)
@@ -121,7 +128,7 @@ function procedure(input: MethodsInput, s: Style): string {
           const at = steps.findIndex((x) => x.id === t);
           if (at >= 0) branchTargets.add(at);
         }
-  const lines = steps.map((step, index) => {
+  return steps.map((step, index) => {
     const sentences = stepSentences(input, s, index);
     const ended = sentences.ended;
     if (!ended) {
@@ -135,11 +142,10 @@ function procedure(input: MethodsInput, s: Style): string {
     const body = sentences.text.length ? sentences.text.join(" ") : "Nothing was carried out in this step.";
     return `${index + 1}. ${s.strong(stop(step.name.trim()))}${description} ${body}`;
   });
-  return [`The protocol had ${plural(steps.length, "step")}.`, lines.join("\n")].join("\n\n");
 }
 
 /** The sentences of one step; `ended` when the step leaves by itself (a question routing every answer, or "End trial"). */
-function stepSentences(input: MethodsInput, s: Style, index: number): { text: string[]; ended: boolean } {
+function stepSentences(input: Described, s: Style, index: number): { text: string[]; ended: boolean } {
   const { steps } = input.snapshot;
   const actions = steps[index]!.actions;
   const text: string[] = [];
@@ -178,7 +184,7 @@ interface Clause {
   full: string;
 }
 
-function clause(input: MethodsInput, s: Style, action: DesignAction): Clause {
+function clause(input: Described, s: Style, action: DesignAction): Clause {
   const p = action.parameters;
   const make = (subject: string, verb: string): Clause => ({
     subject,
@@ -205,7 +211,7 @@ function clause(input: MethodsInput, s: Style, action: DesignAction): Clause {
 
 /** A question the wizard answered, and where each answer led; rejoining answers are said once. */
 function questionSentences(
-  input: MethodsInput,
+  input: Described,
   s: Style,
   question: DesignAction,
   branch: DesignAction | null,
@@ -260,7 +266,7 @@ function questionnaires(input: MethodsInput, s: Style): string {
     .join(" ");
 }
 
-function joinAnd(items: string[]): string {
+export function joinAnd(items: string[]): string {
   return items.length <= 1 ? (items[0] ?? "") : `${items.slice(0, -1).join(", ")} and ${items.at(-1)}`;
 }
 

@@ -11,6 +11,7 @@ import { CodingTab } from "../coding/coding-tab";
 import { ConditionsTab } from "./conditions-tab";
 import { ExperimentsTab } from "./experiments-tab";
 import { MembersTab } from "./members-tab";
+import { MethodsTab } from "./methods-tab";
 import { OverviewTab } from "./overview-tab";
 import { ParticipantsTab } from "./participants-tab";
 import { QuestionnairesTab } from "./questionnaires-tab";
@@ -75,7 +76,10 @@ export function StudyPage({ studyId }: { studyId: string }) {
           },
           { id: "coding", label: "Coding", content: <CodingTab studyId={studyId} role={role} /> },
           ...(studyRoleMay(role, "data.read")
-            ? [{ id: "results", label: "Results", content: <ResultsTab studyId={studyId} /> }]
+            ? [
+                { id: "results", label: "Results", content: <ResultsTab studyId={studyId} /> },
+                { id: "methods", label: "Methods", content: <MethodsTab studyId={studyId} /> },
+              ]
             : []),
           {
             id: "trials",

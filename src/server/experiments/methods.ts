@@ -60,7 +60,7 @@ export async function methodsText(db: Reader, version: VersionRow, studyId: stri
 }
 
 /** The plugin document the version was published against; the installed one for a version from before pinning. */
-async function pinnedPlugin(db: Reader, version: VersionRow): Promise<Plugin | null> {
+export async function pinnedPlugin(db: Reader, version: VersionRow): Promise<Plugin | null> {
   if (version.pluginHash) {
     const [document] = await db
       .select({ definition: pluginDocuments.definition })
@@ -72,7 +72,7 @@ async function pinnedPlugin(db: Reader, version: VersionRow): Promise<Plugin | n
 }
 
 /** Questionnaires attached before or after the trial, each as participants see it: its latest published version, else its draft. */
-async function givenQuestionnaires(db: Reader, studyId: string): Promise<MethodsInput["questionnaires"]> {
+export async function givenQuestionnaires(db: Reader, studyId: string): Promise<MethodsInput["questionnaires"]> {
   const rows = await db
     .select({
       id: questionnaires.id,
@@ -99,7 +99,7 @@ async function givenQuestionnaires(db: Reader, studyId: string): Promise<Methods
   );
 }
 
-function assignmentOf(settings: StudySettings): MethodsInput["assignment"] {
+export function assignmentOf(settings: StudySettings): MethodsInput["assignment"] {
   const { strategy, perCondition, stratifyBy } = settings.assignment;
   const question = settings.demographics.find((f) => f.key === stratifyBy);
   return { strategy, perCondition, ...(strategy === "stratified" && question ? { stratifiedBy: question.label } : {}) };

@@ -23,6 +23,7 @@ import {
 } from "@/store/schema";
 import { answersCsv } from "@/core/questionnaires/export";
 import { methodsText } from "../experiments/methods";
+import { studyMethodsText } from "./methods";
 import { fileSlug } from "../file-slug";
 import { submitted } from "../questionnaires/responses";
 import { tableCsv } from "@/core/analysis/table";
@@ -36,6 +37,10 @@ const README = `HRIStudio study archive
 study.json                  the study, its settings (assignment seed included), conditions,
                             participants (codes, consent, demographics, assignment),
                             experiments with every published version, and sessions
+methods.md                  the whole study described for a paper's methods section, from its
+                            data when the zip was made: design, n per condition, assignment and
+                            seed, blinding, robots the trials ran on, how the conditions' protocols
+                            differ, step timings, questionnaires, coding agreement, fidelity
 experiments/<name>-v<N>-methods.md
                             each published version described for a paper's methods section:
                             robot and plugin version, steps, exact speech, branches, pauses,
@@ -165,6 +170,7 @@ async function studyFiles(db: Database, studyId: string) {
         2,
       ),
     ),
+    "methods.md": strToU8((await studyMethodsText(db, studyId)).markdown),
     "questionnaire-answers.csv": strToU8(answersCsv(await submitted(db, eq(questionnaireLinks.studyId, studyId)))),
   };
   for (const version of versions) {

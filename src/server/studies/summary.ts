@@ -17,7 +17,7 @@ import { isCurrent } from "@/store/trial-figures";
 import { submitted } from "../questionnaires/responses";
 import { foldFigures } from "./fold-figures";
 
-async function finishedTrials(db: Database, studyId: string): Promise<TrialFigures[]> {
+export async function finishedTrials(db: Database, studyId: string): Promise<TrialFigures[]> {
   const rows = await db
     .select({
       id: trials.id,

@@ -16,6 +16,7 @@ import { audit } from "../../audit";
 import { studyArchive } from "../../studies/archive";
 import { createStudy } from "../../studies/create";
 import { studyFromTemplate } from "../../studies/template";
+import { studyMethodsText } from "../../studies/methods";
 import { studyFigures, studyResultsByCondition } from "../../studies/summary";
 import { experiments, participants, studies, studyMembers, trials } from "@/store/schema";
 import { qualified } from "@/store/qualified";
@@ -139,6 +140,11 @@ export const studiesRouter = router({
     contentType: "text/csv; charset=utf-8",
     body: byConditionCsv(await studyResultsByCondition(ctx.db, ctx.studyId)),
   })),
+
+  /** The whole study described for a paper's methods section, from its data as it stands, as Markdown and plain text. */
+  methods: studyProcedure("data.read", "study", z.object({ studyId: id })).query(({ ctx }) =>
+    studyMethodsText(ctx.db, ctx.studyId),
+  ),
 
   /** Everything of the study as one zip, for the lab's archive or a paper's data. */
   exportArchive: studyProcedure("data.read", "study", z.object({ studyId: id })).query(async ({ ctx }) =>
