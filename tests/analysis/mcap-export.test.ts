@@ -1,8 +1,9 @@
 // A trial's MCAP file in Foxglove's terms, read back by the reference reader
 // from PyPI (mcap) and checked as `mcap doctor` would (CRCs, summary counts),
 // every message against its channel's JSON Schema (jsonschema from PyPI):
-// the robot's state samples on their own topics with schemas of their fields,
-// joint states as sensor_msgs/JointState, the robot's JSON state report as
+// the robot's state samples on their own topics with schemas of their fields
+// named for the ROS types the plugin declares (joint states as
+// sensor_msgs/msg/JointState), the robot's JSON state report as
 // numbers a chart can plot, trial events as foxglove.Log, and times in whole
 // nanoseconds from the trial's t0. (Foxglove's own CLIs are in no registry
 // this machine reaches: the Go module proxy refuses github.com/foxglove/mcap/go/cli/mcap
@@ -68,7 +69,7 @@ it("holds samples, joint states, robot state, commands and events with real sche
     })),
     ...Array.from({ length: 3 }, (_, i) => ({
       trialId: trial.id,
-      topic: "/battery_state",
+      topic: "/battery",
       relMs: i * 500,
       data: { percentage: 0.9 - i / 100 },
     })),
@@ -90,7 +91,7 @@ it("holds samples, joint states, robot state, commands and events with real sche
   expect(read.problems).toEqual([]);
   expect(read.library).toBe("HRIStudio");
   expect(Object.keys(read.channels).sort()).toEqual([
-    "/battery_state",
+    "/battery",
     "/hristudio/events",
     "/hristudio/robot_commands",
     "/hristudio/robot_state",
@@ -101,17 +102,17 @@ it("holds samples, joint states, robot state, commands and events with real sche
   expect(names).toEqual([
     "foxglove.Log",
     "hristudio.RobotCommand",
-    "hristudio.robot.battery_state",
     "hristudio.robot.hristudio.robot_state",
-    "sensor_msgs/JointState",
+    "sensor_msgs/msg/BatteryState",
+    "sensor_msgs/msg/JointState",
   ]);
   for (const s of read.schemas) expect(Object.keys(s.schema.properties ?? {}).length, s.name).toBeGreaterThan(0);
   const json = { messageEncoding: "json", schemaEncoding: "jsonschema", ordered: true, publishedWhenLogged: true };
 
   const joints = read.channels["/joint_states"];
-  expect(joints).toMatchObject({ ...json, schemaName: "sensor_msgs/JointState", count: 50 });
+  expect(joints).toMatchObject({ ...json, schemaName: "sensor_msgs/msg/JointState", count: 50 });
   expect(joints.messages[3]).toMatchObject({ name: ["HeadYaw", "HeadPitch"], position: [0.3, -0.5] });
-  const jointSchema = read.schemas.find((s: { name: string }) => s.name === "sensor_msgs/JointState").schema;
+  const jointSchema = read.schemas.find((s: { name: string }) => s.name === "sensor_msgs/msg/JointState").schema;
   expect(jointSchema.properties).toMatchObject({
     name: { type: "array", items: { type: "string" } },
     position: { type: "array", items: { type: "number" } },
@@ -122,8 +123,8 @@ it("holds samples, joint states, robot state, commands and events with real sche
   expect(joints.logTimes.slice(0, 3)).toEqual([at(0), at(20), at(40)]);
   expect(joints.logTimes[49]).toBe(at(980));
 
-  expect(read.channels["/battery_state"]).toMatchObject({ ...json, count: 3, messages: [{ percentage: 0.9 }, {}, {}] });
-  expect(read.channels["/battery_state"].logTimes).toEqual([at(0), at(500), at(1000)]);
+  expect(read.channels["/battery"]).toMatchObject({ ...json, count: 3, messages: [{ percentage: 0.9 }, {}, {}] });
+  expect(read.channels["/battery"].logTimes).toEqual([at(0), at(500), at(1000)]);
 
   // The robot's state report as fields a chart plots: numbers are numbers.
   const state = read.channels["/hristudio/robot_state"];

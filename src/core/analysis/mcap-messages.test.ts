@@ -52,6 +52,10 @@ describe("sampleSchemaName", () => {
     ["/hristudio/robot_state", [{ posture: "stand" }], "hristudio.robot.hristudio.robot_state"],
     ["/names", [{ name: "a", position: 1 }], "hristudio.robot.names"],
   ])("%s", (topic, messages, name) => expect(sampleSchemaName(topic, schemaOf(messages))).toBe(name));
+  it("names a topic for the ROS type the robot declared", () =>
+    expect(sampleSchemaName("/battery", schemaOf([{ percentage: 1 }]), "sensor_msgs/msg/BatteryState")).toBe(
+      "sensor_msgs/msg/BatteryState",
+    ));
 });
 
 describe("nanosecondsAt", () => {

@@ -65,8 +65,13 @@ export function plottable(data: unknown): unknown {
   }
 }
 
-/** A topic's schema name: sensor_msgs/JointState where the messages are joint states (Foxglove's joint panels know it), else one per topic. */
-export function sampleSchemaName(topic: string, schema: JsonSchema): string {
+/**
+ * A topic's schema name: the ROS type the robot declared for it (`rosType`, null where it gave none or
+ * the message was unwrapped), else sensor_msgs/JointState where the messages are joint states (Foxglove's
+ * joint panels know it), else one per topic.
+ */
+export function sampleSchemaName(topic: string, schema: JsonSchema, rosType: string | null = null): string {
+  if (rosType) return rosType;
   const p = schema.properties ?? {};
   const names = p.name?.type === "array" && p.name.items?.type === "string";
   if (names && p.position?.type === "array") return "sensor_msgs/JointState";

@@ -31,8 +31,11 @@ export async function trialMcap({
   t0,
   events,
   samples,
+  rosTypes = new Map(),
 }: {
   trialId: string;
+  /** The ROS type of each state topic, as the robot's plugin declares it: the topic's schema is named for it. */
+  rosTypes?: Map<string, string>;
   /** The trial's t0, or (never started) when it was created: samples and events are placed from it. */
   t0: Date;
   events: StoredEvent[];
@@ -68,9 +71,12 @@ export async function trialMcap({
   const byTopic = new Map<string, Sample[]>();
   for (const s of samples) (byTopic.get(s.topic) ?? byTopic.set(s.topic, []).get(s.topic)!).push(s);
   for (const [topic, list] of byTopic) {
-    const messages = list.map((s) => ({ at: atOf(s.relMs), data: asJson(plottable(s.data)) }));
+    const unwrapped = list.map((s) => plottable(s.data));
+    const messages = list.map((s, i) => ({ at: atOf(s.relMs), data: asJson(unwrapped[i]) }));
     const schema = schemaOf(messages.map((m) => m.data));
-    topics.set(topic, { schemaName: sampleSchemaName(topic, schema), schema, messages });
+    // A String unwrapped into its JSON fields is no longer of the type the robot declared.
+    const declared = unwrapped.every((d, i) => d === list[i]!.data) ? (rosTypes.get(topic) ?? null) : null;
+    topics.set(topic, { schemaName: sampleSchemaName(topic, schema, declared), schema, messages });
   }
 
   const buffer = new TempBuffer();
