@@ -22,6 +22,11 @@ describe("schemaOf", () => {
       { type: "object", properties: { n: { type: "array", items: { type: "string" } }, e: { type: "array" } } },
     ],
     [
+      "a field named __proto__ as a field",
+      [{ a: 1 }, JSON.parse('{"__proto__":"a"}')],
+      { type: "object", properties: JSON.parse('{"a":{"type":"number"},"__proto__":{"type":"string"}}') },
+    ],
+    [
       "nested objects",
       [{ h: { stamp: { sec: 1 } } }],
       {

@@ -21,7 +21,8 @@ function merged(a: JsonSchema, b: JsonSchema): JsonSchema {
   const all = [...new Set([...types(a), ...types(b)])].sort();
   const out: JsonSchema = { type: all.length === 1 ? all[0] : all };
   if (a.properties || b.properties) {
-    const properties: Record<string, JsonSchema> = { ...a.properties };
+    // Without a prototype: a robot's field named __proto__ stays a field.
+    const properties: Record<string, JsonSchema> = Object.assign(Object.create(null), a.properties);
     for (const [key, shape] of Object.entries(b.properties ?? {}))
       properties[key] = properties[key] ? merged(properties[key], shape) : shape;
     out.properties = properties;
