@@ -30,6 +30,7 @@ import { submitted, submittedPages } from "../questionnaires/responses";
 import { eventPages, eventsOfTrials, lastSeqOf } from "@/store/event-store";
 import { lastSampleOf, samplePages, samplesOfTrials } from "@/store/samples";
 import type { ActionNames } from "@/core/designer/action-name";
+import { trialPlugin } from "@/robots/trial-plugin";
 import { trialActionNames } from "./action-names";
 import { annotationPages, annotationsOf } from "./annotations";
 import { trialMcap } from "./mcap";
@@ -309,10 +310,15 @@ export async function trialFile(db: Database, trialId: string, format: TrialForm
   const [read] = await readTrials(db, [trialId]);
   if (format !== "mcap") return fileOf(read!, format);
   const { trial, events, samples } = read!;
+  const chosen = await trialPlugin(db, trialId);
+  const stateTopics = (chosen.ok && chosen.plugin?.stateTopics) || [];
+  const rosTypes = new Map(stateTopics.map((t) => [t.topic, t.messageType]));
   return {
     filename: `trial-${trial.id}.mcap`,
     contentType: "application/octet-stream",
-    body: new Uint8Array(await trialMcap({ trialId: trial.id, t0: trial.t0 ?? trial.createdAt, events, samples })),
+    body: new Uint8Array(
+      await trialMcap({ trialId: trial.id, t0: trial.t0 ?? trial.createdAt, events, samples, rosTypes }),
+    ),
   };
 }
 

@@ -1,72 +1,117 @@
 // A trial as an MCAP file, the log format Foxglove and Lichtblick open: the
 // robot's state samples (a channel per topic), the commands sent to the
-// robot and every trial event, each a JSON message on a time axis that
-// starts at the trial's t0, so a roboticist sees the robot's state beside
-// what the wizard did. Messages are written in time order.
+// robot and every trial event (as foxglove.Log), each a JSON message with the
+// JSON Schema of its topic's messages, on a time axis that starts at the
+// trial's t0, so a roboticist sees the robot's state beside what the wizard
+// did. Messages are written in time order.
 import { McapWriter, TempBuffer } from "@mcap/core";
 import type { Sample } from "@/core/analysis/exports";
+import {
+  LOG_SCHEMA,
+  logOf,
+  nanosecondsAt,
+  plottable,
+  sampleSchemaName,
+  schemaOf,
+  type JsonSchema,
+} from "@/core/analysis/mcap-messages";
 import type { StoredEvent } from "@/core/trial";
 
 /** The channel of every trial event, and of the commands sent to the robot (the dispatched actions, with what was sent). */
 export const EVENTS_TOPIC = "/hristudio/events";
 export const COMMANDS_TOPIC = "/hristudio/robot_commands";
 
-// Foxglove reads JSON messages with a JSON Schema; the messages' shapes vary by topic and robot, so any object.
-const ANY_OBJECT = new TextEncoder().encode(JSON.stringify({ type: "object" }));
-
-const nanoseconds = (ms: number) => BigInt(Math.round(ms * 1_000_000));
+interface Message {
+  at: bigint;
+  data: unknown;
+}
 
 export async function trialMcap({
   trialId,
   t0,
   events,
   samples,
+  rosTypes = new Map(),
 }: {
   trialId: string;
+  /** The ROS type of each state topic, as the robot's plugin declares it: the topic's schema is named for it. */
+  rosTypes?: Map<string, string>;
   /** The trial's t0, or (never started) when it was created: samples and events are placed from it. */
   t0: Date;
   events: StoredEvent[];
   samples: Sample[];
 }): Promise<Uint8Array> {
+  const start = t0.getTime();
+  // Events before the start have no time from t0: they are placed at their server time, and none before the epoch.
+  const atOf = (relMs: number) => {
+    const at = nanosecondsAt(start, relMs);
+    return at < 0n ? 0n : at;
+  };
+  const eventAt = (e: StoredEvent) => atOf(e.relMs ?? e.serverTime.getTime() - start);
+  // Each message as its JSON reads back (dates as text), so its schema is read off what is written.
+  const asJson = (data: unknown): unknown => JSON.parse(JSON.stringify(data));
+  const topics = new Map<string, { schemaName: string; schema: JsonSchema; messages: Message[] }>();
+  topics.set(EVENTS_TOPIC, {
+    schemaName: "foxglove.Log",
+    schema: LOG_SCHEMA,
+    messages: events.map((e) => {
+      const at = eventAt(e);
+      return { at, data: logOf(e, at) };
+    }),
+  });
+  const commands = events
+    .filter((e) => e.type === "action.dispatched")
+    .map((e) => ({ at: eventAt(e), data: asJson(e) }));
+  if (commands.length)
+    topics.set(COMMANDS_TOPIC, {
+      schemaName: "hristudio.RobotCommand",
+      schema: schemaOf(commands.map((c) => c.data)),
+      messages: commands,
+    });
+  const byTopic = new Map<string, Sample[]>();
+  for (const s of samples) (byTopic.get(s.topic) ?? byTopic.set(s.topic, []).get(s.topic)!).push(s);
+  for (const [topic, list] of byTopic) {
+    const unwrapped = list.map((s) => plottable(s.data));
+    const messages = list.map((s, i) => ({ at: atOf(s.relMs), data: asJson(unwrapped[i]) }));
+    const schema = schemaOf(messages.map((m) => m.data));
+    // A String unwrapped into its JSON fields is no longer of the type the robot declared.
+    const declared = unwrapped.every((d, i) => d === list[i]!.data) ? (rosTypes.get(topic) ?? null) : null;
+    topics.set(topic, { schemaName: sampleSchemaName(topic, schema, declared), schema, messages });
+  }
+
   const buffer = new TempBuffer();
   const writer = new McapWriter({ writable: buffer });
   await writer.start({ profile: "", library: "HRIStudio" });
-  const channels = new Map<string, number>();
-  const channel = async (topic: string, schemaName: string) => {
-    const known = channels.get(topic);
-    if (known !== undefined) return known;
-    const schemaId = await writer.registerSchema({ name: schemaName, encoding: "jsonschema", data: ANY_OBJECT });
-    const id = await writer.registerChannel({
+  const encoder = new TextEncoder();
+  // One schema record per shape: topics whose messages have the same name and shape share it.
+  const schemaIds = new Map<string, number>();
+  const ordered: Array<Message & { channelId: number }> = [];
+  for (const [topic, { schemaName, schema, messages }] of topics) {
+    const data = JSON.stringify(schema);
+    const key = `${schemaName}\n${data}`;
+    let schemaId = schemaIds.get(key);
+    if (schemaId === undefined) {
+      schemaId = await writer.registerSchema({ name: schemaName, encoding: "jsonschema", data: encoder.encode(data) });
+      schemaIds.set(key, schemaId);
+    }
+    const channelId = await writer.registerChannel({
       schemaId,
       topic,
       messageEncoding: "json",
       metadata: new Map([["trial_id", trialId]]),
     });
-    channels.set(topic, id);
-    return id;
-  };
-  const start = t0.getTime();
-  // Events before the start have no time from t0: they are placed at their server time.
-  const eventMs = (e: StoredEvent) => (e.relMs === null ? e.serverTime.getTime() - start : e.relMs);
-  const messages = [
-    ...events.map((e) => ({ ms: eventMs(e), topic: EVENTS_TOPIC, schema: "hristudio.TrialEvent", data: e as object })),
-    ...events
-      .filter((e) => e.type === "action.dispatched")
-      .map((e) => ({ ms: eventMs(e), topic: COMMANDS_TOPIC, schema: "hristudio.RobotCommand", data: e as object })),
-    ...samples.map((s) => ({ ms: s.relMs, topic: s.topic, schema: "hristudio.RobotSample", data: s.data })),
-  ].sort((a, b) => a.ms - b.ms);
+    for (const m of messages) ordered.push({ ...m, channelId });
+  }
+  ordered.sort((a, b) => (a.at < b.at ? -1 : a.at > b.at ? 1 : 0));
   const sequences = new Map<number, number>();
-  const encoder = new TextEncoder();
-  for (const m of messages) {
-    const channelId = await channel(m.topic, m.schema);
-    const sequence = (sequences.get(channelId) ?? 0) + 1;
-    sequences.set(channelId, sequence);
-    const time = nanoseconds(Math.max(0, start + m.ms));
+  for (const m of ordered) {
+    const sequence = (sequences.get(m.channelId) ?? 0) + 1;
+    sequences.set(m.channelId, sequence);
     await writer.addMessage({
-      channelId,
+      channelId: m.channelId,
       sequence,
-      logTime: time,
-      publishTime: time,
+      logTime: m.at,
+      publishTime: m.at,
       data: encoder.encode(JSON.stringify(m.data)),
     });
   }
