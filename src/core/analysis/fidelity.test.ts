@@ -35,6 +35,31 @@ describe("the fidelity report", () => {
       {},
     ],
     [
+      "one action not sent and one sent with its outcome unknown: three words apart",
+      [
+        { kind: "start" },
+        { kind: "next" },
+        { kind: "not_sent", actionId: "hello", reason: "too old" },
+        { kind: "unknown", actionId: "wave", reason: "link lost" },
+      ],
+      { executed: 0, failed: 0, notSent: 1, unknown: 1 },
+      0,
+      {},
+    ],
+    [
+      "an outcome unknown that the robot later reported done",
+      [
+        { kind: "start" },
+        { kind: "next" },
+        ...done("hello"),
+        { kind: "unknown", actionId: "wave", reason: "link lost" },
+        { kind: "completed", actionId: "wave" },
+      ],
+      { executed: 2, unknown: 0 },
+      100,
+      {},
+    ],
+    [
       "a timeout",
       [{ kind: "start" }, { kind: "next" }, { kind: "timed_out", actionId: "hello" }, ...done("wave")],
       { executed: 1, timedOut: 1 },

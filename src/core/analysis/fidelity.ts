@@ -5,7 +5,16 @@ import { actionName, type ActionNames } from "@/core/designer/action-name";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
 import { CONTROL_TYPES } from "@/core/trial/types";
 
-export type ActionOutcome = "executed" | "skipped" | "failed" | "timed_out" | "not_reached" | "running";
+/** `not_sent`, `unknown` and `failed` are the three words of src/core/trial/outcomes.ts. */
+export type ActionOutcome =
+  | "executed"
+  | "skipped"
+  | "failed"
+  | "not_sent"
+  | "unknown"
+  | "timed_out"
+  | "not_reached"
+  | "running";
 
 export interface PlannedAction {
   stepId: string;
@@ -53,6 +62,8 @@ export interface FidelityReport {
     executed: number;
     skipped: number;
     failed: number;
+    notSent: number;
+    unknown: number;
     timedOut: number;
     notReached: number;
     outOfOrder: number;
@@ -115,6 +126,8 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
       const finished =
         first("action.completed", a.id) ??
         first("action.failed", a.id) ??
+        first("action.not_sent", a.id) ??
+        first("action.unknown", a.id) ??
         first("action.timed_out", a.id) ??
         first("answer.recorded", a.id) ??
         first("branch.resolved", a.id);
@@ -123,13 +136,18 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
         ? "skipped"
         : first("action.failed", a.id)
           ? "failed"
-          : first("action.timed_out", a.id)
-            ? "timed_out"
-            : finished
-              ? "executed"
-              : requested
-                ? "running"
-                : "not_reached";
+          : first("action.not_sent", a.id)
+            ? "not_sent"
+            : // A later word of the robot's on it (its completion) makes it done.
+              first("action.unknown", a.id) && !first("action.completed", a.id)
+              ? "unknown"
+              : first("action.timed_out", a.id)
+                ? "timed_out"
+                : finished
+                  ? "executed"
+                  : requested
+                    ? "running"
+                    : "not_reached";
       const at = (e?: E) => e?.relMs ?? null;
       return {
         stepId: step.id,
@@ -181,6 +199,8 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
       executed: count("executed"),
       skipped: count("skipped"),
       failed: count("failed"),
+      notSent: count("not_sent"),
+      unknown: count("unknown"),
       timedOut: count("timed_out"),
       notReached: count("not_reached"),
       outOfOrder: actions.filter((a) => a.outOfOrder).length,
