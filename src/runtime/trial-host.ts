@@ -18,6 +18,7 @@ import { directWriter, type LogWriter } from "./log-writer";
 import { logUnexpected } from "@/store/error-reference";
 import { areTheseEvents } from "@/core/trial/landed";
 import { CONTROL_TYPES } from "@/core/trial/types";
+import { droppedReason, staleness } from "@/core/trial/freshness";
 import type { CameraFrame, RobotLink, RobotReport } from "./robot";
 import { sampleRecorder } from "./samples";
 import { foldLiveState, UNKNOWN_STATE, type LiveRobotState } from "@/core/robots/live-state";
@@ -29,10 +30,14 @@ function startedAt(events: StoredEvent[]): number | null {
 
 export type CommandResult = { ok: true; seqs: number[] } | { ok: false; reason: string };
 
-/** A wizard's request: its id is the command's idempotency key; `retry` asks again after a dropped connection. */
+/**
+ * A wizard's request: its id is the command's idempotency key; `retry` asks again after a dropped connection;
+ * `askedAt`, when the wizard asked, on this process's clock (src/core/trial/freshness.ts).
+ */
 export interface Request {
   id: string;
   retry?: boolean;
+  askedAt?: number;
 }
 
 const BLOCKS_WITHOUT_ROBOT = new Set<string>(CONTROL_TYPES);
@@ -69,11 +74,16 @@ const NOT_SENT = {
   late: "Not sent: the trial log answered too late, so this would have reached the robot late.",
 } as const;
 
+/** Where a command too old is dropped before the robot link: the runtime's queue (a resumed process's too). */
+const QUEUE = "the runtime's queue";
+
 /** What the robot side and the clock report, and the stops: logged whenever the log can take them, never refused for lateness. */
 const ALWAYS_LOGGED = new Set<Command["kind"]>([
   "dispatched",
   "completed",
   "failed",
+  "not_sent",
+  "unknown",
   "timed_out",
   "emergency_stop",
   "abort",
@@ -288,14 +298,19 @@ export class TrialHost {
       if (first) return first;
       // Asked again after a dropped connection, and never seen: too late to carry out now.
       if (request.retry) return Promise.resolve({ ok: false, reason: NEVER_ARRIVED });
-      const answer = this.enqueue(command, actorId, request.id);
+      const answer = this.enqueue(command, actorId, request.id, request.askedAt);
       this.requests.set(request.id, answer);
       return answer;
     }
     return this.enqueue(command, actorId, null);
   }
 
-  private enqueue(command: Command, actorId: string | null, requestId: string | null): Promise<CommandResult> {
+  private enqueue(
+    command: Command,
+    actorId: string | null,
+    requestId: string | null,
+    moment?: number,
+  ): Promise<CommandResult> {
     if (command.kind === "emergency_stop" || command.kind === "abort") {
       this.halts++;
       this.robot.halt();
@@ -305,7 +320,7 @@ export class TrialHost {
     // The log is stuck on an earlier command: refuse now rather than queue behind it.
     if (!ALWAYS_LOGGED.has(command.kind) && this.writingSince !== null && asked - this.writingSince > LOG_DEADLINE_MS)
       return Promise.resolve({ ok: false, reason: LOG_UNAVAILABLE });
-    const execute = () => this.execute(command, actorId, requestId, halts, asked);
+    const execute = () => this.execute(command, actorId, requestId, halts, asked, moment ?? asked);
     const run = this.queue.then(() => (command.kind === "start" ? this.startGuard(execute) : execute()));
     this.queue = run.catch(() => undefined);
     return ALWAYS_LOGGED.has(command.kind) ? run : answeredBy(run, asked + LOG_DEADLINE_MS + DEADLINE_MARGIN_MS);
@@ -317,11 +332,15 @@ export class TrialHost {
     requestId: string | null,
     halts: number,
     asked: number,
+    /** When the wizard asked: its freshness counts from then, not from when this process read it. */
+    moment: number,
   ): Promise<CommandResult> {
     // A robot's late report, or a clock, after the host closed: the trial is no longer run from here.
     if (this.shut) return { ok: false, reason: "This trial is no longer open here. Reload the page." };
     const before = this.overtaken(command, halts, asked);
     if (before) return { ok: false, reason: before === "stopped" ? NOT_CARRIED_OUT : LOG_UNAVAILABLE };
+    const stale = staleness(command.kind, moment, Date.now());
+    if (stale) return { ok: false, reason: this.dropped(command.kind, droppedReason(QUEUE, stale)) };
     const decision = decide(this.protocol, this.state, command);
     if (!decision.ok) return decision;
     const written = await this.write(() => decision.events, actorId, requestId);
@@ -332,13 +351,18 @@ export class TrialHost {
       // An earlier command the wizard was told had not answered in time, landed late: taken in, never sent.
       this.take(written.events, NOT_SENT.late);
       // A report of the robot's, or a stop, is a fact the log must hold: written again after it.
-      if (ALWAYS_LOGGED.has(command.kind)) return this.execute(command, actorId, requestId, halts, asked);
+      if (ALWAYS_LOGGED.has(command.kind)) return this.execute(command, actorId, requestId, halts, asked, moment);
       return { ok: false, reason: LOG_MOVED };
     }
     // Stopped, or the log answered too late, while this was being logged: it is in the log as asked
     // for, and goes no further.
     const after = this.overtaken(command, halts, asked);
-    this.take(written.events, after && NOT_SENT[after]);
+    const staleNow = after ? null : staleness(command.kind, moment, Date.now());
+    this.take(
+      written.events,
+      after ? NOT_SENT[after] : staleNow && this.dropped(command.kind, droppedReason(QUEUE, staleNow)),
+      moment,
+    );
     return { ok: true, seqs: written.events.map((e) => e.seq) };
   }
 
@@ -398,14 +422,23 @@ export class TrialHost {
     return log && log.filter((e) => e.seq > lastSeq);
   }
 
-  /** Committed events: into the state, to every client, then to the robot unless `withheld` says why not. */
-  private take(stored: StoredEvent[], withheld: string | null) {
+  /** A command dropped for its age: in the runtime's own log too, with how old and where. */
+  private dropped(kind: Command["kind"], reason: string): string {
+    console.warn(`[runtime] trial ${this.trialId}: dropped ${kind}: ${reason}`);
+    return reason;
+  }
+
+  /**
+   * Committed events: into the state, to every client, then to the robot unless `withheld` says why not;
+   * `moment`, when the wizard asked for them (the robot link drops what is too old by then).
+   */
+  private take(stored: StoredEvent[], withheld: string | null, moment: number | null = null) {
     this.opening?.push(...stored);
     applyInPlace(this.state, stored);
     this.t0 ??= startedAt(stored);
     for (const listener of this.listeners) listener(stored);
     if (withheld) this.withhold(stored, withheld);
-    else this.carryOut(stored);
+    else this.carryOut(stored, moment);
     if (this.state.status === "completed" || this.state.status === "aborted") this.lifecycle.ended();
   }
 
@@ -454,15 +487,15 @@ export class TrialHost {
     return null;
   }
 
-  /** Each action held back is logged as failed, with why, so the log says it never reached the robot. */
+  /** Each action held back is logged as not sent, with why: the log says it never reached the robot. */
   private withhold(events: EngineEvent[], reason: string) {
     for (const event of events)
       if (event.type === "action.requested")
-        void this.command({ kind: "failed", actionId: event.actionId, reason }, null);
+        void this.command({ kind: "not_sent", actionId: event.actionId, reason }, null);
   }
 
   /** What happens in the world once the events are committed. */
-  private carryOut(events: EngineEvent[]) {
+  private carryOut(events: EngineEvent[], moment: number | null) {
     for (const event of events) {
       if (event.type !== "action.requested") continue;
       const report = (r: RobotReport) => this.report(r);
@@ -478,7 +511,12 @@ export class TrialHost {
         });
       } else if (!BLOCKS_WITHOUT_ROBOT.has(event.actionType)) {
         this.robot.perform(
-          { actionId: event.actionId, actionType: event.actionType, parameters: event.parameters },
+          {
+            actionId: event.actionId,
+            actionType: event.actionType,
+            parameters: event.parameters,
+            ...(moment === null ? {} : { askedAt: moment }),
+          },
           report,
         );
       }

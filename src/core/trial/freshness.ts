@@ -61,8 +61,12 @@ export function askedAt(
 }
 
 /** How old a command of `kind` asked at `at` is at `now`, if older than its limit; null while fresh. */
-export function staleness(kind: Command["kind"], at: number, now: number): { ageMs: number; limitMs: number } | null {
-  const limitMs = FRESH_FOR_MS[kind];
+export function staleness(kind: Command["kind"], at: number, now: number) {
+  return olderThan(FRESH_FOR_MS[kind], at, now);
+}
+
+/** How old something asked at `at` is at `now`, if older than `limitMs` (null: no limit); null while fresh. */
+export function olderThan(limitMs: number | null, at: number, now: number): { ageMs: number; limitMs: number } | null {
   const ageMs = now - at;
   return limitMs !== null && ageMs > limitMs ? { ageMs, limitMs } : null;
 }

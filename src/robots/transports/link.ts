@@ -77,7 +77,11 @@ export abstract class LinkedTransport implements Transport {
   private readonly listeners = new Set<(health: Health) => void>();
 
   abstract connect(): Promise<void>;
-  abstract dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome>;
+  abstract dispatch(
+    action: PluginAction,
+    parameters: Record<string, unknown>,
+    freshUntil?: number,
+  ): Promise<DispatchOutcome>;
   abstract close(): Promise<void>;
 
   /** Robot state comes over rosbridge; the other transports carry commands only. */

@@ -2,7 +2,12 @@
 // acknowledges nothing and reports most errors only in its own log, so:
 // - a topic publish is "completed" only once the bridge has read it (a
 //   WebSocket ping sent after it was answered: see watched-socket.ts);
-//   one whose answer never comes fails with the reason, never "completed";
+//   one whose answer never comes is "sent, outcome unknown" (the bridge may
+//   still read it once it goes on), never "completed" nor "failed";
+// - nothing is sent past the action's freshness (`freshUntil`): a retryable
+//   action waits for a lost link only until then, and is "not sent" after;
+// - a lost link is reset (watched-socket.ts), not closed politely, so what
+//   is still queued to the bridge is thrown away rather than delivered late;
 // - a service call completes or fails on its service_response, or times out,
 //   and fails at once if the link is lost while it waits;
 // - liveness is WebSocket ping/pong (every rosbridge answers it, nothing is
@@ -100,7 +105,11 @@ export class RosbridgeTransport extends LinkedTransport {
     });
   }
 
-  async dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome> {
+  async dispatch(
+    action: PluginAction,
+    parameters: Record<string, unknown>,
+    freshUntil = Number.POSITIVE_INFINITY,
+  ): Promise<DispatchOutcome> {
     const started = Date.now();
     const timeoutMs = timeoutOf(action);
     const checked = checkedParameters(action, parameters);
@@ -115,8 +124,14 @@ export class RosbridgeTransport extends LinkedTransport {
       this.status.state === "connected"
         ? this.ros
         : action.retryable
-          ? await this.connectedWithin(started + timeoutMs)
+          ? await this.connectedWithin(Math.min(started + timeoutMs, freshUntil))
           : null;
+    // Waited for the link until the action was too old to send (or got it back too late): never sent late.
+    if (ros ? Date.now() > freshUntil : freshUntil < started + timeoutMs)
+      return {
+        status: "not_sent",
+        reason: `Not sent: the robot's link was not back before this was too old to do (${this.lostReason()}).`,
+      };
     if (!ros) return unreached(action, started, `robot not connected: ${this.lostReason()}`);
     if (outgoing.kind === "publish")
       return this.published(ros, action, checked.parameters, outgoing, started + timeoutMs);
@@ -154,8 +169,8 @@ export class RosbridgeTransport extends LinkedTransport {
     if (!socket || !(await socket.delivered())) {
       done?.cancel();
       return {
-        status: "failed",
-        reason: `the robot link was lost before the robot took the action in: ${this.lostReason()}`,
+        status: "unknown",
+        reason: `sent, but the robot link was lost before the robot's bridge confirmed it took it in (${this.lostReason()}): the robot may still have done it`,
       };
     }
     const detail = (confirmation: Confirmation) => ({ topic: outgoing.topic, confirmation });
@@ -167,8 +182,8 @@ export class RosbridgeTransport extends LinkedTransport {
       }
       if (answer === "lost")
         return {
-          status: "failed",
-          reason: `the robot link was lost before the robot said it was done: ${this.lostReason()}`,
+          status: "unknown",
+          reason: `the robot took it in, and the link was lost before the robot said it was done (${this.lostReason()}): it may still be done`,
         };
       const robotTime = robotTimeOf(answer.message);
       return {
@@ -339,8 +354,8 @@ export class RosbridgeTransport extends LinkedTransport {
       const unwatch = this.onHealth((health) => {
         if (health.state !== "connected" && !health.problem)
           done({
-            status: "failed",
-            reason: `the robot link was lost while waiting for the answer: ${this.lostReason()}`,
+            status: "unknown",
+            reason: `sent, and the robot link was lost while waiting for the answer (${this.lostReason()}): the robot may still have done it`,
           });
       });
       new ROSLIB.Service({ ros, name, serviceType }).callService(
