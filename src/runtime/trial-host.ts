@@ -109,6 +109,9 @@ const MOVES_THE_ROBOT = new Set<Command["kind"]>([
  */
 const DEADLINE_MARGIN_MS = 250;
 
+/** A timer this late means the process itself was stalled (frozen, or starved of the processor). */
+const STALL_SLACK_MS = 1000;
+
 /** Events read and folded at a time when a trial opens: a few milliseconds of work each. */
 const OPENING_PAGE = 2000;
 
@@ -127,8 +130,8 @@ export class TrialHost {
   private shut = false;
   /** How many times the robot was stopped outside the queue: commands asked for before a stop are dropped. */
   private halts = 0;
-  /** When the command being logged now started its write: null while none is. */
-  private writingSince: number | null = null;
+  /** Whether the write under way has outlasted the log's deadline while this process ran (see `watchWrite`). */
+  private logStuck = false;
   /** Who watches the robot's camera now; the camera is subscribed only while someone does. */
   private readonly cameraWatchers = new Set<(frame: CameraFrame) => void>();
   private stopCamera: (() => void) | null = null;
@@ -317,8 +320,11 @@ export class TrialHost {
     }
     const halts = this.halts;
     const asked = Date.now();
+    // Too old already as this process reads it (it was itself frozen, or the page's message was held up).
+    const stale = staleness(command.kind, moment ?? asked, asked);
+    if (stale) return Promise.resolve({ ok: false, reason: this.dropped(command.kind, droppedReason(QUEUE, stale)) });
     // The log is stuck on an earlier command: refuse now rather than queue behind it.
-    if (!ALWAYS_LOGGED.has(command.kind) && this.writingSince !== null && asked - this.writingSince > LOG_DEADLINE_MS)
+    if (!ALWAYS_LOGGED.has(command.kind) && this.logStuck)
       return Promise.resolve({ ok: false, reason: LOG_UNAVAILABLE });
     const execute = () => this.execute(command, actorId, requestId, halts, asked, moment ?? asked);
     const run = this.queue.then(() => (command.kind === "start" ? this.startGuard(execute) : execute()));
@@ -464,7 +470,7 @@ export class TrialHost {
       events = decideEvents();
       return { cursor, events, actorId, requestId };
     };
-    this.writingSince = Date.now();
+    const unwatch = this.watchWrite();
     try {
       return { events: await this.log.append(append), earlier: false };
     } catch (error) {
@@ -476,8 +482,29 @@ export class TrialHost {
       if (landed.length === 0) throw error;
       return { events: landed, earlier: !areTheseEvents(landed, events) };
     } finally {
-      this.writingSince = null;
+      unwatch();
     }
+  }
+
+  /**
+   * Marks the log stuck once a write has taken the log's deadline, counted while this process ran: a timer
+   * that fires late (the process itself was frozen) starts the count again from its waking, so the write
+   * that was under way as the process froze is given its answer before the log is called stuck.
+   */
+  private watchWrite(): () => void {
+    let timer: ReturnType<typeof setTimeout>;
+    const arm = () => {
+      const due = Date.now() + LOG_DEADLINE_MS;
+      timer = setTimeout(() => {
+        if (Date.now() - due > STALL_SLACK_MS) arm();
+        else this.logStuck = true;
+      }, LOG_DEADLINE_MS);
+    };
+    arm();
+    return () => {
+      clearTimeout(timer);
+      this.logStuck = false;
+    };
   }
 
   /** Whether a command was overtaken since it was asked for: by a stop, or by the log's deadline. */
