@@ -109,6 +109,9 @@ const MOVES_THE_ROBOT = new Set<Command["kind"]>([
  */
 const DEADLINE_MARGIN_MS = 250;
 
+const RESTARTED =
+  "The trial runtime restarted while this action was under way: it may have reached the robot and been done.";
+
 /** A timer this late means the process itself was stalled (frozen, or starved of the processor). */
 const STALL_SLACK_MS = 1000;
 
@@ -190,7 +193,7 @@ export class TrialHost {
     });
   }
 
-  /** Rebuilds the trial from its events; actions cut off by a restart are marked failed. */
+  /** Rebuilds the trial from its events; actions cut off by a restart are marked sent, outcome unknown. */
   static async open(
     db: Database,
     trialId: string,
@@ -211,12 +214,8 @@ export class TrialHost {
     const interrupted = Object.entries(host.state.actions).filter(
       ([, a]) => a.status === "requested" || a.status === "running",
     );
-    for (const [actionId] of interrupted) {
-      await host.command(
-        { kind: "failed", actionId, reason: "The trial runtime restarted while this action was running." },
-        null,
-      );
-    }
+    // Each may have reached the robot before the process ended (most had, after a kill -9): not "failed".
+    for (const [actionId] of interrupted) await host.command({ kind: "unknown", actionId, reason: RESTARTED }, null);
     return host;
   }
 
