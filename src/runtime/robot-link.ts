@@ -41,7 +41,13 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
     }
     report({ kind: "dispatched", actionId: request.actionId, detail: { robotAction: resolved.action.id } });
     const freshUntil = request.askedAt === undefined ? undefined : request.askedAt + ROBOT_ACTION_FRESH_MS;
-    const outcome = await transport.dispatch(resolved.action, resolved.parameters, freshUntil);
+    const outcome = await transport.dispatch(resolved.action, resolved.parameters, {
+      freshUntil,
+      // Sent, outcome unknown: the robot's own later word on it is logged against it.
+      later: (o) =>
+        o.status === "completed" &&
+        report({ kind: "completed", actionId: request.actionId, ...(o.detail ? { detail: o.detail } : {}) }),
+    });
     if (outcome.status === "completed")
       report({ kind: "completed", actionId: request.actionId, ...(outcome.detail ? { detail: outcome.detail } : {}) });
     else if (outcome.status === "timed_out") report({ kind: "timed_out", actionId: request.actionId });

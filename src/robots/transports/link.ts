@@ -3,7 +3,7 @@
 // the plugin's schema, its timeout, and the growing pause between tries. A
 // transport adds only how it reaches its robot.
 import { validateParameters, withDefaults, type PluginAction } from "../../core/plugins";
-import type { ConnectionState, DispatchOutcome, Health, Transport } from "./transport";
+import type { ConnectionState, DispatchOptions, DispatchOutcome, Health, Transport } from "./transport";
 
 export const DEFAULT_TIMEOUT_MS = 10_000;
 
@@ -80,7 +80,7 @@ export abstract class LinkedTransport implements Transport {
   abstract dispatch(
     action: PluginAction,
     parameters: Record<string, unknown>,
-    freshUntil?: number,
+    options?: DispatchOptions,
   ): Promise<DispatchOutcome>;
   abstract close(): Promise<void>;
 

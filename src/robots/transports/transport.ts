@@ -15,6 +15,13 @@ export type DispatchOutcome =
   | { status: "unknown"; reason: string }
   | { status: "timed_out"; afterMs: number };
 
+export interface DispatchOptions {
+  /** Date.now() time past which the action is no longer worth sending: a transport that waits for its robot sends nothing after it (not_sent). */
+  freshUntil?: number;
+  /** After an outcome "unknown": the robot's own later word on it (its done message, once the link is back). */
+  later?: (outcome: DispatchOutcome) => void;
+}
+
 export type ConnectionState = "connecting" | "connected" | "disconnected" | "closed";
 
 export interface Health {
@@ -33,12 +40,12 @@ export interface Health {
 
 export interface Transport {
   connect(): Promise<void>;
-  /**
-   * Sends one action with its parameters; resolves within the action's timeout. `freshUntil` (Date.now()
-   * time): past it the action is no longer worth sending, and a transport that waits for its robot sends
-   * nothing after it (not_sent).
-   */
-  dispatch(action: PluginAction, parameters: Record<string, unknown>, freshUntil?: number): Promise<DispatchOutcome>;
+  /** Sends one action with its parameters; resolves within the action's timeout. */
+  dispatch(
+    action: PluginAction,
+    parameters: Record<string, unknown>,
+    options?: DispatchOptions,
+  ): Promise<DispatchOutcome>;
   /** Robot state for logging; kept across reconnects. Returns a function that stops it. */
   subscribe(
     topic: string,
