@@ -1,7 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { simulate, type Command, type TrialProtocol } from "@/core/trial";
 import { done, perfect, protocol } from "./test-trial";
-import { fidelityReport } from "./fidelity";
+import { type ActionOutcome, fidelityReport, outcomeWords } from "./fidelity";
 
 const report = (commands: Command[]) => fidelityReport(protocol, simulate(protocol, commands).log);
 
@@ -205,5 +205,17 @@ describe("the fidelity report of answers that rejoin", () => {
     expect(r.completed).toBe(true);
     expect(r.deviations).toEqual({});
     expect(r.branches).toEqual({ byLogic: 1, byHand: 0 });
+  });
+});
+
+describe("outcomes in the researcher's words", () => {
+  it.each<[ActionOutcome, string]>([
+    ["not_sent", "not sent"],
+    ["unknown", "sent, outcome unknown"],
+    ["failed", "failed"],
+    ["timed_out", "timed out"],
+    ["not_reached", "not reached"],
+  ])("%s: %s", (outcome, words) => {
+    expect(outcomeWords(outcome)).toBe(words);
   });
 });

@@ -3,6 +3,7 @@
 // study tables all compute the same figures.
 import { actionName, type ActionNames } from "@/core/designer/action-name";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
+import { OUTCOME_WORDS, type UndoneOutcome } from "@/core/trial/outcomes";
 import { CONTROL_TYPES } from "@/core/trial/types";
 
 /** `not_sent`, `unknown` and `failed` are the three words of src/core/trial/outcomes.ts. */
@@ -15,6 +16,11 @@ export type ActionOutcome =
   | "timed_out"
   | "not_reached"
   | "running";
+
+/** An outcome in the researcher's words: the three of a robot action not done as the trial log says them. */
+export function outcomeWords(outcome: ActionOutcome): string {
+  return outcome in OUTCOME_WORDS ? OUTCOME_WORDS[outcome as UndoneOutcome] : outcome.replace("_", " ");
+}
 
 export interface PlannedAction {
   stepId: string;

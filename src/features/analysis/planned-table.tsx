@@ -6,8 +6,7 @@
 // below it, not rows of it) and says how many rows it has (aria-rowcount, each
 // drawn row its aria-rowindex), so a screen reader tells where in the whole
 // table a row is.
-import type { FidelityReport } from "@/core/analysis/fidelity";
-import { OUTCOME_WORDS, type UndoneOutcome } from "@/core/trial/outcomes";
+import { type FidelityReport, outcomeWords } from "@/core/analysis/fidelity";
 import { seconds } from "@/ui/format";
 import { Badge, type Tone } from "@/ui/surface";
 import { Td, Th } from "@/ui/table";
@@ -64,11 +63,7 @@ export function PlannedTable({ report }: { report: FidelityReport }) {
                 <Td className="py-0">{stepNames.get(a.stepId)}</Td>
                 <Td className="py-0">{a.name}</Td>
                 <Td className="py-0">
-                  <Badge tone={OUTCOME_TONE[a.outcome]}>
-                    {a.outcome in OUTCOME_WORDS
-                      ? OUTCOME_WORDS[a.outcome as UndoneOutcome]
-                      : a.outcome.replace("_", " ")}
-                  </Badge>{" "}
+                  <Badge tone={OUTCOME_TONE[a.outcome]}>{outcomeWords(a.outcome)}</Badge>{" "}
                   {a.outOfOrder && <Badge tone="amber">out of order</Badge>}
                 </Td>
                 <Td className="py-0">{seconds(a.requestedMs)}</Td>
