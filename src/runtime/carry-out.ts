@@ -3,6 +3,7 @@
 // another process whose socket it came on (forwarding.ts). One path for both.
 import { commandVerdict, lostAccess, type TrialAccess } from "@/core/access/trial-socket";
 import { parseClientMessage, type ClientMessage } from "@/core/socket/messages";
+import { droppedReason, staleness } from "@/core/trial/freshness";
 import type { Database } from "@/store/client";
 import { logUnexpected } from "@/store/error-reference";
 import { claimTrial, isRecordingOf, loadTrialAccess } from "./access";
@@ -22,6 +23,8 @@ export async function carryOut(
   claim: boolean | undefined,
   /** Told as soon as the robot was stopped (before the stop is logged). */
   halted: () => void,
+  /** When the wizard asked, on this process's clock (src/core/trial/freshness.ts). */
+  askedAt: number,
 ): Promise<CommandResult & { claimed?: boolean }> {
   if (message.command.kind === "played")
     return host.browserPlayed(message.command.actionId, message.command.failed, access.userId);
@@ -37,7 +40,7 @@ export async function carryOut(
     claimed = true;
   }
   // Safety before logging: the host stops the robot as it takes the command, whatever the database is doing.
-  const logged = host.command(command, access.userId, { id: message.requestId, retry: message.retry });
+  const logged = host.command(command, access.userId, { id: message.requestId, retry: message.retry, askedAt });
   const halting = command.kind === "emergency_stop" || command.kind === "abort";
   // Asked again, a stop halted the robot the first time it arrived, or not at all (the answer says which).
   if (halting && !message.retry) halted();
@@ -67,10 +70,28 @@ export function forwardedCommands(db: Database, hosts: TrialHosts) {
     if (lost || !access) return { ok: false, reason: lost ?? "" };
     const verdict = commandVerdict(access, parsed.message.command.kind);
     if (!verdict.allow) return { ok: false, reason: verdict.reason };
+    const askedAt = request.askedAt ?? Date.now();
+    const { kind } = parsed.message.command;
+    // A sound's end is the browser's report: a fact, never stale.
+    const stale = kind === "played" ? null : staleness(kind, askedAt, Date.now());
+    if (stale) {
+      const reason = droppedReason("forwarding to the runtime running this trial", stale);
+      console.warn(`[runtime] trial ${request.trialId}: dropped ${kind}: ${reason}`);
+      return { ok: false, reason };
+    }
     let halted = false;
-    const result = await carryOut(db, host, request.trialId, access, parsed.message, verdict.claim, () => {
-      halted = true;
-    });
+    const result = await carryOut(
+      db,
+      host,
+      request.trialId,
+      access,
+      parsed.message,
+      verdict.claim,
+      () => {
+        halted = true;
+      },
+      askedAt,
+    );
     return { ...result, halted };
   };
 }

@@ -21,6 +21,8 @@ export interface Forwarded {
   retry?: boolean;
   /** The socket command as the wizard sent it (checked again by the owner). */
   command: unknown;
+  /** When the wizard asked, on the forwarding process's clock: the owner drops it once too old. */
+  askedAt?: number;
 }
 
 /** The owner's answer; `halted`: it stopped the robot as it took the command. */

@@ -8,9 +8,11 @@ import {
   type ClockOffset,
   clockOffset,
   HEARTBEAT_EVERY_MS,
+  keptOffset,
   PAGE_GONE_AFTER_MS,
   pageCheck,
   watchingSince,
+  withSample,
 } from "@/core/socket/heartbeat";
 import type { ClientMessage, ServerMessage } from "@/core/socket/messages";
 
@@ -19,11 +21,13 @@ export interface Pulse {
   heardAt: number;
   /** Whether it has ever pinged: only then is its silence a page gone. */
   pinged: boolean;
-  /** The page's clock against the runtime's, from its latest ping that measured one; null until then. */
+  /** The page's clock against the runtime's, judged from its recent pings (keptOffset); null until one measured it. */
   clock: ClockOffset | null;
+  /** Those recent measurements, newest last. */
+  clocks: ClockOffset[];
 }
 
-export const newPulse = (): Pulse => ({ heardAt: Date.now(), pinged: false, clock: null });
+export const newPulse = (): Pulse => ({ heardAt: Date.now(), pinged: false, clock: null, clocks: [] });
 
 /** Anything read from the connection: it is alive. */
 export function heard(pulse: Pulse) {
@@ -33,7 +37,8 @@ export function heard(pulse: Pulse) {
 /** A ping: its offset kept, its answer returned to send at once. */
 export function answer(pulse: Pulse, ping: Extract<ClientMessage, { type: "ping" }>): ServerMessage {
   pulse.pinged = true;
-  pulse.clock = clockOffset(ping.at, ping.roundTripMs, Date.now()) ?? pulse.clock;
+  pulse.clocks = withSample(pulse.clocks, clockOffset(ping.at, ping.roundTripMs, Date.now()));
+  pulse.clock = keptOffset(pulse.clocks);
   return { type: "pong", at: ping.at };
 }
 

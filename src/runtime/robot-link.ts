@@ -2,6 +2,7 @@
 // (abstract or robot-specific), dispatched over the plugin's transport, and
 // its outcome reported back as the trial's action events. One path, no other.
 import { resolveAction, type Plugin } from "@/core/plugins";
+import { droppedReason, olderThan, ROBOT_ACTION_FRESH_MS } from "@/core/trial/freshness";
 import type { Transport } from "@/robots/transports";
 import { logUnexpected } from "@/store/error-reference";
 import type { CameraFrame, RobotLink, RobotReport, RobotRequest } from "./robot";
@@ -31,13 +32,26 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
     if (resolved.status === "browser")
       return report({ kind: "dispatched", actionId: request.actionId, detail: { playedBy: "browser" } });
     await connecting;
+    // The last hop before the robot: nothing older than its limit leaves (a resumed process's queue too).
+    const stale = request.askedAt === undefined ? null : olderThan(ROBOT_ACTION_FRESH_MS, request.askedAt, Date.now());
+    if (stale) {
+      const reason = droppedReason("the robot link", stale);
+      console.warn(`${plugin.name}: dropped ${request.actionType}: ${reason}`);
+      return report({ kind: "not_sent", actionId: request.actionId, reason });
+    }
     report({ kind: "dispatched", actionId: request.actionId, detail: { robotAction: resolved.action.id } });
-    const outcome = await transport.dispatch(resolved.action, resolved.parameters);
+    const freshUntil = request.askedAt === undefined ? undefined : request.askedAt + ROBOT_ACTION_FRESH_MS;
+    const outcome = await transport.dispatch(resolved.action, resolved.parameters, {
+      freshUntil,
+      // Sent, outcome unknown: the robot's own later word on it is logged against it.
+      later: (o) =>
+        o.status === "completed" &&
+        report({ kind: "completed", actionId: request.actionId, ...(o.detail ? { detail: o.detail } : {}) }),
+    });
     if (outcome.status === "completed")
       report({ kind: "completed", actionId: request.actionId, ...(outcome.detail ? { detail: outcome.detail } : {}) });
-    else if (outcome.status === "failed")
-      report({ kind: "failed", actionId: request.actionId, reason: outcome.reason });
-    else report({ kind: "timed_out", actionId: request.actionId });
+    else if (outcome.status === "timed_out") report({ kind: "timed_out", actionId: request.actionId });
+    else report({ kind: outcome.status, actionId: request.actionId, reason: outcome.reason });
   };
   return {
     // Whatever a robot's record or transport does wrong ends as this action's failure, never as the

@@ -5,12 +5,16 @@ export interface RobotRequest {
   actionId: string;
   actionType: string;
   parameters: Record<string, unknown>;
+  /** When the wizard asked, on this process's clock: the link sends nothing older than its limit. */
+  askedAt?: number;
 }
 
 export type RobotReport =
   | { kind: "dispatched"; actionId: string; detail?: Record<string, unknown> }
   | { kind: "completed"; actionId: string; detail?: Record<string, unknown> }
   | { kind: "failed"; actionId: string; reason: string }
+  | { kind: "not_sent"; actionId: string; reason: string }
+  | { kind: "unknown"; actionId: string; reason: string }
   | { kind: "timed_out"; actionId: string };
 
 export interface CameraFrame {

@@ -2,6 +2,7 @@
 // the socket messages (src/core/socket/messages.ts) and decided against the
 // socket's access, which the runtime keeps fresh from the database: loaded at hello, reloaded whenever
 // PostgreSQL announces a change (see access.ts), never trusted from the client.
+import { askedAt } from "@/core/trial/freshness";
 import {
   annotateVerdict,
   codeVerdict,
@@ -344,6 +345,9 @@ export function startRuntimeServer({
         if (mayReadTrialLog(s.data.access!)) send(s, { type: "annotation", annotation });
       return send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
     }
+    // When the wizard asked, on this process's clock, from the page's time and the connection's offset.
+    const asked = askedAt(message.at, ws.data.pulse.clock?.offsetMs ?? null, Date.now());
+    if (!asked.ok) return reject(asked.reason);
     const host = await hosts.get(claims.trialId);
     const halting = message.command.kind === "emergency_stop" || message.command.kind === "abort";
     let halted = false;
@@ -353,7 +357,7 @@ export function startRuntimeServer({
       send(ws, { type: "halted", requestId: message.requestId });
     };
     let result: CommandResult & { claimed?: boolean };
-    if (host) result = await carryOut(db, host, claims.trialId, access, message, verdict.claim, tellHalted);
+    if (host) result = await carryOut(db, host, claims.trialId, access, message, verdict.claim, tellHalted, asked.at);
     else {
       // Run by another process: a stop goes to the robot from here too, never waiting on the database.
       if (halting && !message.retry && stops.halt(claims.trialId)) tellHalted();
@@ -363,10 +367,12 @@ export function startRuntimeServer({
         requestId: message.requestId,
         retry: message.retry,
         command: message.command,
+        askedAt: asked.at,
       });
       // No process answered: its owner is gone, and this one takes the trial over.
       const taken = answer ? null : await hosts.get(claims.trialId);
-      if (taken) result = await carryOut(db, taken, claims.trialId, access, message, verdict.claim, tellHalted);
+      if (taken)
+        result = await carryOut(db, taken, claims.trialId, access, message, verdict.claim, tellHalted, asked.at);
       else if (!answer)
         return reject(
           "The runtime process running this trial did not answer in time: the trial's log shows whether this was done.",

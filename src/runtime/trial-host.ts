@@ -18,6 +18,7 @@ import { directWriter, type LogWriter } from "./log-writer";
 import { logUnexpected } from "@/store/error-reference";
 import { areTheseEvents } from "@/core/trial/landed";
 import { CONTROL_TYPES } from "@/core/trial/types";
+import { droppedReason, staleness } from "@/core/trial/freshness";
 import type { CameraFrame, RobotLink, RobotReport } from "./robot";
 import { sampleRecorder } from "./samples";
 import { foldLiveState, UNKNOWN_STATE, type LiveRobotState } from "@/core/robots/live-state";
@@ -29,10 +30,14 @@ function startedAt(events: StoredEvent[]): number | null {
 
 export type CommandResult = { ok: true; seqs: number[] } | { ok: false; reason: string };
 
-/** A wizard's request: its id is the command's idempotency key; `retry` asks again after a dropped connection. */
+/**
+ * A wizard's request: its id is the command's idempotency key; `retry` asks again after a dropped connection;
+ * `askedAt`, when the wizard asked, on this process's clock (src/core/trial/freshness.ts).
+ */
 export interface Request {
   id: string;
   retry?: boolean;
+  askedAt?: number;
 }
 
 const BLOCKS_WITHOUT_ROBOT = new Set<string>(CONTROL_TYPES);
@@ -69,11 +74,16 @@ const NOT_SENT = {
   late: "Not sent: the trial log answered too late, so this would have reached the robot late.",
 } as const;
 
+/** Where a command too old is dropped before the robot link: the runtime's queue (a resumed process's too). */
+const QUEUE = "the runtime's queue";
+
 /** What the robot side and the clock report, and the stops: logged whenever the log can take them, never refused for lateness. */
 const ALWAYS_LOGGED = new Set<Command["kind"]>([
   "dispatched",
   "completed",
   "failed",
+  "not_sent",
+  "unknown",
   "timed_out",
   "emergency_stop",
   "abort",
@@ -99,6 +109,12 @@ const MOVES_THE_ROBOT = new Set<Command["kind"]>([
  */
 const DEADLINE_MARGIN_MS = 250;
 
+const RESTARTED =
+  "The trial runtime restarted while this action was under way: it may have reached the robot and been done.";
+
+/** A timer this late means the process itself was stalled (frozen, or starved of the processor). */
+const STALL_SLACK_MS = 1000;
+
 /** Events read and folded at a time when a trial opens: a few milliseconds of work each. */
 const OPENING_PAGE = 2000;
 
@@ -117,8 +133,8 @@ export class TrialHost {
   private shut = false;
   /** How many times the robot was stopped outside the queue: commands asked for before a stop are dropped. */
   private halts = 0;
-  /** When the command being logged now started its write: null while none is. */
-  private writingSince: number | null = null;
+  /** Whether the write under way has outlasted the log's deadline while this process ran (see `watchWrite`). */
+  private logStuck = false;
   /** Who watches the robot's camera now; the camera is subscribed only while someone does. */
   private readonly cameraWatchers = new Set<(frame: CameraFrame) => void>();
   private stopCamera: (() => void) | null = null;
@@ -177,7 +193,7 @@ export class TrialHost {
     });
   }
 
-  /** Rebuilds the trial from its events; actions cut off by a restart are marked failed. */
+  /** Rebuilds the trial from its events; actions cut off by a restart are marked sent, outcome unknown. */
   static async open(
     db: Database,
     trialId: string,
@@ -198,12 +214,8 @@ export class TrialHost {
     const interrupted = Object.entries(host.state.actions).filter(
       ([, a]) => a.status === "requested" || a.status === "running",
     );
-    for (const [actionId] of interrupted) {
-      await host.command(
-        { kind: "failed", actionId, reason: "The trial runtime restarted while this action was running." },
-        null,
-      );
-    }
+    // Each may have reached the robot before the process ended (most had, after a kill -9): not "failed".
+    for (const [actionId] of interrupted) await host.command({ kind: "unknown", actionId, reason: RESTARTED }, null);
     return host;
   }
 
@@ -288,24 +300,32 @@ export class TrialHost {
       if (first) return first;
       // Asked again after a dropped connection, and never seen: too late to carry out now.
       if (request.retry) return Promise.resolve({ ok: false, reason: NEVER_ARRIVED });
-      const answer = this.enqueue(command, actorId, request.id);
+      const answer = this.enqueue(command, actorId, request.id, request.askedAt);
       this.requests.set(request.id, answer);
       return answer;
     }
     return this.enqueue(command, actorId, null);
   }
 
-  private enqueue(command: Command, actorId: string | null, requestId: string | null): Promise<CommandResult> {
+  private enqueue(
+    command: Command,
+    actorId: string | null,
+    requestId: string | null,
+    moment?: number,
+  ): Promise<CommandResult> {
     if (command.kind === "emergency_stop" || command.kind === "abort") {
       this.halts++;
       this.robot.halt();
     }
     const halts = this.halts;
     const asked = Date.now();
+    // Too old already as this process reads it (it was itself frozen, or the page's message was held up).
+    const stale = staleness(command.kind, moment ?? asked, asked);
+    if (stale) return Promise.resolve({ ok: false, reason: this.dropped(command.kind, droppedReason(QUEUE, stale)) });
     // The log is stuck on an earlier command: refuse now rather than queue behind it.
-    if (!ALWAYS_LOGGED.has(command.kind) && this.writingSince !== null && asked - this.writingSince > LOG_DEADLINE_MS)
+    if (!ALWAYS_LOGGED.has(command.kind) && this.logStuck)
       return Promise.resolve({ ok: false, reason: LOG_UNAVAILABLE });
-    const execute = () => this.execute(command, actorId, requestId, halts, asked);
+    const execute = () => this.execute(command, actorId, requestId, halts, asked, moment ?? asked);
     const run = this.queue.then(() => (command.kind === "start" ? this.startGuard(execute) : execute()));
     this.queue = run.catch(() => undefined);
     return ALWAYS_LOGGED.has(command.kind) ? run : answeredBy(run, asked + LOG_DEADLINE_MS + DEADLINE_MARGIN_MS);
@@ -317,11 +337,15 @@ export class TrialHost {
     requestId: string | null,
     halts: number,
     asked: number,
+    /** When the wizard asked: its freshness counts from then, not from when this process read it. */
+    moment: number,
   ): Promise<CommandResult> {
     // A robot's late report, or a clock, after the host closed: the trial is no longer run from here.
     if (this.shut) return { ok: false, reason: "This trial is no longer open here. Reload the page." };
     const before = this.overtaken(command, halts, asked);
     if (before) return { ok: false, reason: before === "stopped" ? NOT_CARRIED_OUT : LOG_UNAVAILABLE };
+    const stale = staleness(command.kind, moment, Date.now());
+    if (stale) return { ok: false, reason: this.dropped(command.kind, droppedReason(QUEUE, stale)) };
     const decision = decide(this.protocol, this.state, command);
     if (!decision.ok) return decision;
     const written = await this.write(() => decision.events, actorId, requestId);
@@ -332,13 +356,18 @@ export class TrialHost {
       // An earlier command the wizard was told had not answered in time, landed late: taken in, never sent.
       this.take(written.events, NOT_SENT.late);
       // A report of the robot's, or a stop, is a fact the log must hold: written again after it.
-      if (ALWAYS_LOGGED.has(command.kind)) return this.execute(command, actorId, requestId, halts, asked);
+      if (ALWAYS_LOGGED.has(command.kind)) return this.execute(command, actorId, requestId, halts, asked, moment);
       return { ok: false, reason: LOG_MOVED };
     }
     // Stopped, or the log answered too late, while this was being logged: it is in the log as asked
     // for, and goes no further.
     const after = this.overtaken(command, halts, asked);
-    this.take(written.events, after && NOT_SENT[after]);
+    const staleNow = after ? null : staleness(command.kind, moment, Date.now());
+    this.take(
+      written.events,
+      after ? NOT_SENT[after] : staleNow && this.dropped(command.kind, droppedReason(QUEUE, staleNow)),
+      moment,
+    );
     return { ok: true, seqs: written.events.map((e) => e.seq) };
   }
 
@@ -398,14 +427,23 @@ export class TrialHost {
     return log && log.filter((e) => e.seq > lastSeq);
   }
 
-  /** Committed events: into the state, to every client, then to the robot unless `withheld` says why not. */
-  private take(stored: StoredEvent[], withheld: string | null) {
+  /** A command dropped for its age: in the runtime's own log too, with how old and where. */
+  private dropped(kind: Command["kind"], reason: string): string {
+    console.warn(`[runtime] trial ${this.trialId}: dropped ${kind}: ${reason}`);
+    return reason;
+  }
+
+  /**
+   * Committed events: into the state, to every client, then to the robot unless `withheld` says why not;
+   * `moment`, when the wizard asked for them (the robot link drops what is too old by then).
+   */
+  private take(stored: StoredEvent[], withheld: string | null, moment: number | null = null) {
     this.opening?.push(...stored);
     applyInPlace(this.state, stored);
     this.t0 ??= startedAt(stored);
     for (const listener of this.listeners) listener(stored);
     if (withheld) this.withhold(stored, withheld);
-    else this.carryOut(stored);
+    else this.carryOut(stored, moment);
     if (this.state.status === "completed" || this.state.status === "aborted") this.lifecycle.ended();
   }
 
@@ -431,7 +469,7 @@ export class TrialHost {
       events = decideEvents();
       return { cursor, events, actorId, requestId };
     };
-    this.writingSince = Date.now();
+    const unwatch = this.watchWrite();
     try {
       return { events: await this.log.append(append), earlier: false };
     } catch (error) {
@@ -443,8 +481,29 @@ export class TrialHost {
       if (landed.length === 0) throw error;
       return { events: landed, earlier: !areTheseEvents(landed, events) };
     } finally {
-      this.writingSince = null;
+      unwatch();
     }
+  }
+
+  /**
+   * Marks the log stuck once a write has taken the log's deadline, counted while this process ran: a timer
+   * that fires late (the process itself was frozen) starts the count again from its waking, so the write
+   * that was under way as the process froze is given its answer before the log is called stuck.
+   */
+  private watchWrite(): () => void {
+    let timer: ReturnType<typeof setTimeout>;
+    const arm = () => {
+      const due = Date.now() + LOG_DEADLINE_MS;
+      timer = setTimeout(() => {
+        if (Date.now() - due > STALL_SLACK_MS) arm();
+        else this.logStuck = true;
+      }, LOG_DEADLINE_MS);
+    };
+    arm();
+    return () => {
+      clearTimeout(timer);
+      this.logStuck = false;
+    };
   }
 
   /** Whether a command was overtaken since it was asked for: by a stop, or by the log's deadline. */
@@ -454,15 +513,15 @@ export class TrialHost {
     return null;
   }
 
-  /** Each action held back is logged as failed, with why, so the log says it never reached the robot. */
+  /** Each action held back is logged as not sent, with why: the log says it never reached the robot. */
   private withhold(events: EngineEvent[], reason: string) {
     for (const event of events)
       if (event.type === "action.requested")
-        void this.command({ kind: "failed", actionId: event.actionId, reason }, null);
+        void this.command({ kind: "not_sent", actionId: event.actionId, reason }, null);
   }
 
   /** What happens in the world once the events are committed. */
-  private carryOut(events: EngineEvent[]) {
+  private carryOut(events: EngineEvent[], moment: number | null) {
     for (const event of events) {
       if (event.type !== "action.requested") continue;
       const report = (r: RobotReport) => this.report(r);
@@ -478,7 +537,12 @@ export class TrialHost {
         });
       } else if (!BLOCKS_WITHOUT_ROBOT.has(event.actionType)) {
         this.robot.perform(
-          { actionId: event.actionId, actionType: event.actionType, parameters: event.parameters },
+          {
+            actionId: event.actionId,
+            actionType: event.actionType,
+            parameters: event.parameters,
+            ...(moment === null ? {} : { askedAt: moment }),
+          },
           report,
         );
       }

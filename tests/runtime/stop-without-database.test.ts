@@ -139,14 +139,14 @@ describe("an emergency stop with the database frozen", () => {
     expect(logged).toContain("trial.emergency_stop");
     // The speech the stop overtook is in the log as never sent.
     await wizard.next(
-      (m) => m.type === "events" && (m.events as Array<{ type: string }>).some((e) => e.type === "action.failed"),
+      (m) => m.type === "events" && (m.events as Array<{ type: string }>).some((e) => e.type === "action.not_sent"),
     );
-    const failed = wizard.messages.flatMap((m) =>
+    const notSent = wizard.messages.flatMap((m) =>
       m.type === "events"
-        ? (m.events as Array<{ type: string; reason?: string }>).filter((e) => e.type === "action.failed")
+        ? (m.events as Array<{ type: string; reason?: string }>).filter((e) => e.type === "action.not_sent")
         : [],
     );
-    expect(failed).toMatchObject([
+    expect(notSent).toMatchObject([
       { actionId: "late", reason: "Not sent: the robot was stopped before this reached it." },
     ]);
     expect(publishes("/speech")).toEqual([]);

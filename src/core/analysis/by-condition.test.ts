@@ -38,6 +38,8 @@ function trial(
       executed: 0,
       skipped: 0,
       failed: 0,
+      notSent: 0,
+      unknown: 0,
       timedOut: 0,
       notReached: 0,
       outOfOrder: 0,

@@ -1,7 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { simulate, type Command, type TrialProtocol } from "@/core/trial";
 import { done, perfect, protocol } from "./test-trial";
-import { fidelityReport } from "./fidelity";
+import { type ActionOutcome, fidelityReport, outcomeWords } from "./fidelity";
 
 const report = (commands: Command[]) => fidelityReport(protocol, simulate(protocol, commands).log);
 
@@ -32,6 +32,31 @@ describe("the fidelity report", () => {
       ],
       { executed: 1, failed: 1 },
       50,
+      {},
+    ],
+    [
+      "one action not sent and one sent with its outcome unknown: three words apart",
+      [
+        { kind: "start" },
+        { kind: "next" },
+        { kind: "not_sent", actionId: "hello", reason: "too old" },
+        { kind: "unknown", actionId: "wave", reason: "link lost" },
+      ],
+      { executed: 0, failed: 0, notSent: 1, unknown: 1 },
+      0,
+      {},
+    ],
+    [
+      "an outcome unknown that the robot later reported done",
+      [
+        { kind: "start" },
+        { kind: "next" },
+        ...done("hello"),
+        { kind: "unknown", actionId: "wave", reason: "link lost" },
+        { kind: "completed", actionId: "wave" },
+      ],
+      { executed: 2, unknown: 0 },
+      100,
       {},
     ],
     [
@@ -180,5 +205,17 @@ describe("the fidelity report of answers that rejoin", () => {
     expect(r.completed).toBe(true);
     expect(r.deviations).toEqual({});
     expect(r.branches).toEqual({ byLogic: 1, byHand: 0 });
+  });
+});
+
+describe("outcomes in the researcher's words", () => {
+  it.each<[ActionOutcome, string]>([
+    ["not_sent", "not sent"],
+    ["unknown", "sent, outcome unknown"],
+    ["failed", "failed"],
+    ["timed_out", "timed out"],
+    ["not_reached", "not reached"],
+  ])("%s: %s", (outcome, words) => {
+    expect(outcomeWords(outcome)).toBe(words);
   });
 });

@@ -3,10 +3,25 @@
 // study tables all compute the same figures.
 import { actionName, type ActionNames } from "@/core/designer/action-name";
 import type { TrialEvent, TrialProtocol } from "@/core/trial";
+import { OUTCOME_WORDS, type UndoneOutcome } from "@/core/trial/outcomes";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import { answerOf, recordedAnswers, type RecordedAnswer } from "./answers";
 
-export type ActionOutcome = "executed" | "skipped" | "failed" | "timed_out" | "not_reached" | "running";
+/** `not_sent`, `unknown` and `failed` are the three words of src/core/trial/outcomes.ts. */
+export type ActionOutcome =
+  | "executed"
+  | "skipped"
+  | "failed"
+  | "not_sent"
+  | "unknown"
+  | "timed_out"
+  | "not_reached"
+  | "running";
+
+/** An outcome in the researcher's words: the three of a robot action not done as the trial log says them. */
+export function outcomeWords(outcome: ActionOutcome): string {
+  return outcome in OUTCOME_WORDS ? OUTCOME_WORDS[outcome as UndoneOutcome] : outcome.replace("_", " ");
+}
 
 export interface PlannedAction {
   stepId: string;
@@ -58,6 +73,8 @@ export interface FidelityReport {
     executed: number;
     skipped: number;
     failed: number;
+    notSent: number;
+    unknown: number;
     timedOut: number;
     notReached: number;
     outOfOrder: number;
@@ -120,6 +137,8 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
       const finished =
         first("action.completed", a.id) ??
         first("action.failed", a.id) ??
+        first("action.not_sent", a.id) ??
+        first("action.unknown", a.id) ??
         first("action.timed_out", a.id) ??
         first("answer.recorded", a.id) ??
         first("branch.resolved", a.id);
@@ -128,13 +147,18 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
         ? "skipped"
         : first("action.failed", a.id)
           ? "failed"
-          : first("action.timed_out", a.id)
-            ? "timed_out"
-            : finished
-              ? "executed"
-              : requested
-                ? "running"
-                : "not_reached";
+          : first("action.not_sent", a.id)
+            ? "not_sent"
+            : // A later word of the robot's on it (its completion) makes it done.
+              first("action.unknown", a.id) && !first("action.completed", a.id)
+              ? "unknown"
+              : first("action.timed_out", a.id)
+                ? "timed_out"
+                : finished
+                  ? "executed"
+                  : requested
+                    ? "running"
+                    : "not_reached";
       const at = (e?: E) => e?.relMs ?? null;
       return {
         stepId: step.id,
@@ -188,6 +212,8 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
       executed: count("executed"),
       skipped: count("skipped"),
       failed: count("failed"),
+      notSent: count("not_sent"),
+      unknown: count("unknown"),
       timedOut: count("timed_out"),
       notReached: count("not_reached"),
       outOfOrder: actions.filter((a) => a.outOfOrder).length,

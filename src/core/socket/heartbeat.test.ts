@@ -2,6 +2,7 @@ import { describe, expect, it } from "vitest";
 import {
   clockOffset,
   HEARTBEAT_EVERY_MS,
+  keptOffset,
   PAGE_ASKED_AFTER_MS,
   PAGE_GONE_AFTER_MS,
   pageCheck,
@@ -9,6 +10,7 @@ import {
   type RuntimeLink,
   runtimeLink,
   watchingSince,
+  withSample,
 } from "./heartbeat";
 
 describe("the page's view of its runtime", () => {
@@ -73,5 +75,20 @@ describe("a connection's clock offset", () => {
   ])("%s", (_, { sentAt, roundTripMs, readAt }, expected) => {
     const offset = clockOffset(sentAt, roundTripMs, readAt);
     expect(offset && { offsetMs: offset.offsetMs }).toEqual(expected);
+  });
+});
+
+describe("the offset a connection keeps", () => {
+  const at = (offsetMs: number, roundTripMs = 20) => ({ offsetMs, roundTripMs });
+  it.each<[string, Array<{ offsetMs: number; roundTripMs: number } | null>, number | null]>([
+    ["nothing measured", [null], null],
+    ["one measurement", [at(5000)], 5000],
+    // Pings that waited in a frozen runtime's socket, read at once on its waking: each looks behind by its wait.
+    ["pings held up by a frozen runtime do not move it", [at(0), at(-20_000), at(-12_000), at(-500)], 0],
+    ["a round trip too slow to measure anything is left out", [at(0), at(10_000, 20_000)], 0],
+    ["only the recent ones count", [at(9000), ...Array.from({ length: 20 }, () => at(1000))], 1000],
+  ])("%s", (_, measured, expected) => {
+    const samples = measured.reduce<ReturnType<typeof withSample>>((kept, m) => withSample(kept, m), []);
+    expect(keptOffset(samples)?.offsetMs ?? null).toBe(expected);
   });
 });

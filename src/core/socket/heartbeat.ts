@@ -63,3 +63,30 @@ export function clockOffset(sentAt: number, roundTripMs: number | undefined, rea
   if (roundTripMs === undefined) return null;
   return { offsetMs: Math.round(sentAt + roundTripMs / 2 - readAt), roundTripMs };
 }
+
+/** A round trip slower than this measures no clock: the ping may have waited anywhere on its way. */
+export const CLOCK_ROUND_TRIP_MAX_MS = 1000;
+
+/** How many recent measurements the offset is judged from: ten seconds of pings. */
+export const CLOCK_SAMPLES = 20;
+
+/**
+ * The recent measurements (newest last) with one more, as the offset is judged from: a round trip too slow
+ * to tell anything is left out, and only the last CLOCK_SAMPLES are kept.
+ */
+export function withSample(samples: readonly ClockOffset[], next: ClockOffset | null): ClockOffset[] {
+  if (!next || next.roundTripMs > CLOCK_ROUND_TRIP_MAX_MS) return [...samples];
+  return [...samples, next].slice(-CLOCK_SAMPLES);
+}
+
+/**
+ * The connection's offset: the largest of the recent measurements. A ping that waited on its way (in the
+ * socket of a frozen runtime) is read late and measures the page's clock too far behind, and none measures
+ * it ahead by more than half its round trip: the largest is the least delayed.
+ */
+export function keptOffset(samples: readonly ClockOffset[]): ClockOffset | null {
+  return samples.reduce<ClockOffset | null>(
+    (best, s) => (best === null || s.offsetMs > best.offsetMs ? s : best),
+    null,
+  );
+}

@@ -11,6 +11,16 @@ describe("the socket messages", () => {
       null,
     ],
     [
+      "a command with the moment the wizard asked, on the page's clock",
+      JSON.stringify({ type: "command", requestId: "r1", command: { kind: "next" }, at: 1_795_750_000_000 }),
+      null,
+    ],
+    [
+      "a command whose moment is not a number",
+      JSON.stringify({ type: "command", requestId: "r1", command: { kind: "next" }, at: "now" }),
+      "The message is not understood: at: ",
+    ],
+    [
       "a video signal from another connection",
       JSON.stringify({
         type: "signal",

@@ -14,6 +14,7 @@ import type { StoredEvent } from "@/core/trial";
 // 5: the heartbeat (src/core/socket/heartbeat.ts): "ping" carries the page's clock and its last round trip,
 // "pong" answers it at once with the ping's time, so each end learns when the other stopped; the runtime's
 // own "ping" asks a quiet page to ping at once.
+// Also 5: a "command" carries `at`, the page's clock when the wizard asked (src/core/trial/freshness.ts).
 export const SOCKET_MESSAGES_VERSION = 5;
 
 /** Every id a message carries is declared with this, so tests can find them all. */
@@ -78,7 +79,14 @@ export const clientMessageSchema = z.discriminatedUnion("type", [
   }),
   // `requestId` is the command's idempotency key: the same id is never carried out twice. `retry`: sent
   // again after a dropped connection, to learn its outcome; never carried out if it did not arrive before.
-  z.object({ type: z.literal("command"), requestId: id, command: commandSchema, retry: z.boolean().optional() }),
+  // `at`: the page's clock (ms since 1970) when the wizard asked; its freshness counts from then.
+  z.object({
+    type: z.literal("command"),
+    requestId: id,
+    command: commandSchema,
+    retry: z.boolean().optional(),
+    at: z.number().finite().optional(),
+  }),
   z.object({
     type: z.literal("annotate"),
     requestId: id,

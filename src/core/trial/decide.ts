@@ -9,7 +9,7 @@ import type { Command, Decision, DeviationKind, EngineEvent, ProtocolAction, Tri
 const ok = (...events: EngineEvent[]): Decision => ({ ok: true, events });
 const no = (reason: string): Decision => ({ ok: false, reason });
 
-const FINISHED = new Set(["done", "failed", "timed_out", "skipped"]);
+const FINISHED = new Set(["done", "failed", "not_sent", "unknown", "timed_out", "skipped"]);
 
 export function decide(protocol: TrialProtocol, state: TrialState, command: Command): Decision {
   switch (command.kind) {
@@ -41,6 +41,8 @@ export function decide(protocol: TrialProtocol, state: TrialState, command: Comm
     case "dispatched":
     case "completed":
     case "failed":
+    case "not_sent":
+    case "unknown":
     case "timed_out":
       return robotReport(state, command);
   }
@@ -186,7 +188,10 @@ function answer(protocol: TrialProtocol, state: TrialState, actionId: string, op
   return ok(...events);
 }
 
-export type RobotReportCommand = Extract<Command, { kind: "dispatched" | "completed" | "failed" | "timed_out" }>;
+export type RobotReportCommand = Extract<
+  Command,
+  { kind: "dispatched" | "completed" | "failed" | "not_sent" | "unknown" | "timed_out" }
+>;
 
 /**
  * Reports of the robot's side that came together (a completion right after
@@ -215,6 +220,13 @@ export function decideReports(state: TrialState, reports: readonly RobotReportCo
 function robotReport(state: TrialState, command: RobotReportCommand): Decision {
   const action = state.actions[command.actionId];
   if (!action || action.status === "waiting") return no("The robot reported on an action that was never requested.");
+  // Sent, outcome unknown: the robot's own later word on it (its completion topic) is logged against it.
+  if (action.status === "unknown" && command.kind === "completed")
+    return ok({
+      type: "action.completed",
+      actionId: command.actionId,
+      ...(command.detail ? { detail: command.detail } : {}),
+    });
   if (FINISHED.has(action.status)) return no("The robot reported on an action that has already finished.");
   switch (command.kind) {
     case "dispatched":
@@ -232,6 +244,10 @@ function robotReport(state: TrialState, command: RobotReportCommand): Decision {
       });
     case "failed":
       return ok({ type: "action.failed", actionId: command.actionId, reason: command.reason });
+    case "not_sent":
+      return ok({ type: "action.not_sent", actionId: command.actionId, reason: command.reason });
+    case "unknown":
+      return ok({ type: "action.unknown", actionId: command.actionId, reason: command.reason });
     case "timed_out":
       return ok({ type: "action.timed_out", actionId: command.actionId });
   }

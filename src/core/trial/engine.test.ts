@@ -342,6 +342,27 @@ describe("robot reports that came together", () => {
       [["action.dispatched", "hello", null]],
     ],
     ["a report on an action never requested is left out", [{ kind: "completed", actionId: "nod" }], []],
+    [
+      "sent, outcome unknown, then the robot's own completion: logged against it",
+      [
+        { kind: "dispatched", actionId: "hello" },
+        { kind: "unknown", actionId: "hello", reason: "the link was lost" },
+        { kind: "completed", actionId: "hello" },
+      ],
+      [
+        ["action.dispatched", "hello", null],
+        ["action.unknown", "hello", null],
+        ["action.completed", "hello", null],
+      ],
+    ],
+    [
+      "not sent is final: a later report is left out",
+      [
+        { kind: "not_sent", actionId: "hello", reason: "too old" },
+        { kind: "completed", actionId: "hello" },
+      ],
+      [["action.not_sent", "hello", null]],
+    ],
   ])("%s", (_name, reports, expected) => {
     const { state, log } = run(requested);
     expect(brief(decideReports(state, reports))).toEqual(expected);

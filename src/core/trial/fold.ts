@@ -61,6 +61,8 @@ const ACTION_OUTCOME: Partial<Record<TrialEvent["type"], [ActionStatus, "request
   "action.dispatched": ["running", null],
   "action.completed": ["done", "finishedAt"],
   "action.failed": ["failed", "finishedAt"],
+  "action.not_sent": ["not_sent", "finishedAt"],
+  "action.unknown": ["unknown", "finishedAt"],
   "action.timed_out": ["timed_out", "finishedAt"],
   "action.skipped": ["skipped", "finishedAt"],
   "answer.recorded": ["done", "finishedAt"],

@@ -10,7 +10,9 @@ export const TIMED_OUT =
 export function actionProblems(events: readonly TrialEvent[]): Record<string, string> {
   const problems: Record<string, string> = {};
   for (const event of events) {
-    if (event.type === "action.failed") problems[event.actionId] = sentence(event.reason);
+    if (event.type === "action.failed" || event.type === "action.not_sent" || event.type === "action.unknown")
+      problems[event.actionId] = sentence(event.reason);
+    else if (event.type === "action.completed") delete problems[event.actionId];
     else if (event.type === "action.timed_out") problems[event.actionId] = TIMED_OUT;
     else if (event.type === "action.requested") delete problems[event.actionId];
   }

@@ -26,6 +26,10 @@ export type EventBody =
   | { type: "action.dispatched"; actionId: string; detail?: Record<string, unknown> }
   | { type: "action.completed"; actionId: string; detail?: Record<string, unknown> }
   | { type: "action.failed"; actionId: string; reason: string }
+  /** Dropped before it left the runtime (too old, stopped, the robot unreached): the robot never got it. */
+  | { type: "action.not_sent"; actionId: string; reason: string }
+  /** Left for the robot, and the link was lost before an outcome: it may still happen. */
+  | { type: "action.unknown"; actionId: string; reason: string }
   | { type: "action.timed_out"; actionId: string }
   | { type: "action.skipped"; stepId: string; actionId: string }
   | { type: "answer.recorded"; stepId: string; actionId: string; optionId: string; label: string }
@@ -77,10 +81,21 @@ export type Command =
   | { kind: "dispatched"; actionId: string; detail?: Record<string, unknown> }
   | { kind: "completed"; actionId: string; detail?: Record<string, unknown> }
   | { kind: "failed"; actionId: string; reason: string }
+  | { kind: "not_sent"; actionId: string; reason: string }
+  | { kind: "unknown"; actionId: string; reason: string }
   | { kind: "timed_out"; actionId: string }
   | { kind: "robot_problem"; text: string };
 
-export type ActionStatus = "waiting" | "requested" | "running" | "done" | "failed" | "timed_out" | "skipped";
+export type ActionStatus =
+  | "waiting"
+  | "requested"
+  | "running"
+  | "done"
+  | "failed"
+  | "not_sent"
+  | "unknown"
+  | "timed_out"
+  | "skipped";
 
 export interface ActionState {
   status: ActionStatus;

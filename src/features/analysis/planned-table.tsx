@@ -6,7 +6,7 @@
 // below it, not rows of it) and says how many rows it has (aria-rowcount, each
 // drawn row its aria-rowindex), so a screen reader tells where in the whole
 // table a row is.
-import type { FidelityReport } from "@/core/analysis/fidelity";
+import { type FidelityReport, outcomeWords } from "@/core/analysis/fidelity";
 import { seconds } from "@/ui/format";
 import { Badge, type Tone } from "@/ui/surface";
 import { Td, Th } from "@/ui/table";
@@ -16,6 +16,8 @@ const OUTCOME_TONE: Record<string, Tone> = {
   executed: "green",
   skipped: "amber",
   failed: "red",
+  not_sent: "slate",
+  unknown: "amber",
   timed_out: "red",
   not_reached: "slate",
   running: "blue",
@@ -61,7 +63,7 @@ export function PlannedTable({ report }: { report: FidelityReport }) {
                 <Td className="py-0">{stepNames.get(a.stepId)}</Td>
                 <Td className="py-0">{a.name}</Td>
                 <Td className="py-0">
-                  <Badge tone={OUTCOME_TONE[a.outcome]}>{a.outcome.replace("_", " ")}</Badge>{" "}
+                  <Badge tone={OUTCOME_TONE[a.outcome]}>{outcomeWords(a.outcome)}</Badge>{" "}
                   {a.outOfOrder && <Badge tone="amber">out of order</Badge>}
                   {a.answer !== null && <span data-answer>answered “{a.answer}”</span>}
                 </Td>

@@ -8,7 +8,7 @@
 // their lanes are drawn (one SVG path per colour) with one button that the
 // arrow keys move from bar to bar.
 import { useMemo, useState } from "react";
-import type { FidelityReport } from "@/core/analysis/fidelity";
+import { type FidelityReport, outcomeWords } from "@/core/analysis/fidelity";
 import type { RecordingGap, RecordingPart } from "@/core/media/recording-parts";
 import { cn } from "@/ui/cn";
 import { seconds } from "@/ui/format";
@@ -41,7 +41,7 @@ export function TimelineChart({ report, deviations, annotations, recording, endM
             to: a.requestedMs! + (a.durationMs ?? 0),
             tone: a.outcome === "executed" ? "executed" : a.outcome === "skipped" ? "skipped" : "failed",
             label: `Action ${a.name}${answered} at ${seconds(a.requestedMs)}`,
-            title: `${a.name}: ${a.outcome}${answered}`,
+            title: `${a.name}: ${outcomeWords(a.outcome)}${answered}`,
           };
         }),
     [report.actions],

@@ -4,6 +4,7 @@
 // the event log; an action that was not done says why beside its badge.
 import { actionName, type ActionNames } from "@/core/designer/action-name";
 import { type ActionState, pathTaken, type TrialProtocol, type TrialState, upcoming } from "@/core/trial";
+import { OUTCOME_WORDS } from "@/core/trial/outcomes";
 import { cn } from "@/ui/cn";
 import { Badge, type Tone } from "@/ui/surface";
 
@@ -12,7 +13,9 @@ const STATUS: Record<ActionState["status"], { label: string; tone: Tone }> = {
   requested: { label: "sent", tone: "blue" },
   running: { label: "running", tone: "blue" },
   done: { label: "done", tone: "green" },
-  failed: { label: "failed", tone: "red" },
+  failed: { label: OUTCOME_WORDS.failed, tone: "red" },
+  not_sent: { label: OUTCOME_WORDS.not_sent, tone: "slate" },
+  unknown: { label: OUTCOME_WORDS.unknown, tone: "amber" },
   timed_out: { label: "timed out", tone: "red" },
   skipped: { label: "skipped", tone: "amber" },
 };

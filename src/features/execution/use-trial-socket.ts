@@ -265,7 +265,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     onCamera,
     command: (command: WizardCommand) =>
       request(
-        (requestId) => ({ type: "command", requestId, command }),
+        // The moment the wizard asked, on the page's clock: every hop drops the command once it is too old.
+        (requestId) => ({ type: "command", requestId, command, at: Date.now() }),
         // The engine's form of it: the server gives an unscripted action its id; a sound's end is the action's.
         command.kind === "unscripted"
           ? { ...command, actionId: crypto.randomUUID() }

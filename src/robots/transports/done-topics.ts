@@ -8,6 +8,8 @@ export type DoneAnswer = { message: unknown } | "timeout" | "lost";
 
 interface Waiter {
   match: DoneMatch | undefined;
+  /** Listens across lost links (an action whose outcome is unknown): only its deadline or `cancel` end it. */
+  outlivesLoss: boolean;
   settle(answer: DoneAnswer): void;
 }
 
@@ -19,14 +21,16 @@ export class DoneTopics {
   constructor(private readonly subscribe: Subscribe) {}
 
   /** Starts waiting before the action is sent; `cancel` ends the wait unanswered. */
-  wait(topic: string, messageType: string, match: DoneMatch | undefined, deadline: number) {
+  wait(topic: string, messageType: string, match: DoneMatch | undefined, deadline: number, outlivesLoss = false) {
     let waiters = this.waiters.get(topic);
     if (!waiters) {
       const fresh = new Set<Waiter>();
       this.waiters.set(topic, (waiters = fresh));
       this.subscribe(topic, messageType, (message) => {
-        // The oldest action this message matches is the one it answers (a set keeps the order waits began).
-        for (const waiter of fresh) if (matchesDone(waiter.match, message)) return waiter.settle({ message });
+        // The oldest action this message matches is the one it answers (a set keeps the order waits began);
+        // an action sent since a lost link before one whose outcome is unknown (it may never have arrived).
+        const order = [...fresh].sort((a, b) => Number(a.outlivesLoss) - Number(b.outlivesLoss));
+        for (const waiter of order) if (matchesDone(waiter.match, message)) return waiter.settle({ message });
       });
     }
     const set = waiters;
@@ -35,6 +39,7 @@ export class DoneTopics {
       const timer = setTimeout(() => waiter.settle("timeout"), Math.max(0, deadline - Date.now()));
       const waiter: Waiter = {
         match,
+        outlivesLoss,
         settle: (a) => {
           clearTimeout(timer);
           set.delete(waiter);
@@ -47,8 +52,8 @@ export class DoneTopics {
     return { answer, cancel: () => settle("lost") };
   }
 
-  /** The link is lost: no answer will come on it. */
-  lose() {
-    for (const set of this.waiters.values()) [...set].forEach((w) => w.settle("lost"));
+  /** The link is lost: no answer will come on it (`all`: the transport is closed, no answer will come at all). */
+  lose(all = false) {
+    for (const set of this.waiters.values()) [...set].forEach((w) => (all || !w.outlivesLoss) && w.settle("lost"));
   }
 }

@@ -3,7 +3,7 @@
 // the plugin's schema, its timeout, and the growing pause between tries. A
 // transport adds only how it reaches its robot.
 import { validateParameters, withDefaults, type PluginAction } from "../../core/plugins";
-import type { ConnectionState, DispatchOutcome, Health, Transport } from "./transport";
+import type { ConnectionState, DispatchOptions, DispatchOutcome, Health, Transport } from "./transport";
 
 export const DEFAULT_TIMEOUT_MS = 10_000;
 
@@ -77,7 +77,11 @@ export abstract class LinkedTransport implements Transport {
   private readonly listeners = new Set<(health: Health) => void>();
 
   abstract connect(): Promise<void>;
-  abstract dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome>;
+  abstract dispatch(
+    action: PluginAction,
+    parameters: Record<string, unknown>,
+    options?: DispatchOptions,
+  ): Promise<DispatchOutcome>;
   abstract close(): Promise<void>;
 
   /** Robot state comes over rosbridge; the other transports carry commands only. */

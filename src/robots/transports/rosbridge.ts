@@ -2,7 +2,12 @@
 // acknowledges nothing and reports most errors only in its own log, so:
 // - a topic publish is "completed" only once the bridge has read it (a
 //   WebSocket ping sent after it was answered: see watched-socket.ts);
-//   one whose answer never comes fails with the reason, never "completed";
+//   one whose answer never comes is "sent, outcome unknown" (the bridge may
+//   still read it once it goes on), never "completed" nor "failed";
+// - nothing is sent past the action's freshness (`freshUntil`): a retryable
+//   action waits for a lost link only until then, and is "not sent" after;
+// - a lost link is reset (watched-socket.ts), not closed politely, so what
+//   is still queued to the bridge is thrown away rather than delivered late;
 // - a service call completes or fails on its service_response, or times out,
 //   and fails at once if the link is lost while it waits;
 // - liveness is WebSocket ping/pong (every rosbridge answers it, nothing is
@@ -43,8 +48,11 @@ import {
 } from "./link";
 import { holdThenStop, readOnce, sendGoal } from "./ros2-goal";
 import { TopicSilence } from "./topic-silence";
-import type { DispatchOutcome } from "./transport";
+import type { DispatchOptions, DispatchOutcome } from "./transport";
 import { WatchedSocket } from "./watched-socket";
+
+/** How long after a lost link an action's done message is still listened for, and told as the robot's later word. */
+const LATER_REPORT_MS = 60_000;
 
 export interface RosbridgeOptions {
   url: string;
@@ -100,8 +108,13 @@ export class RosbridgeTransport extends LinkedTransport {
     });
   }
 
-  async dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome> {
+  async dispatch(
+    action: PluginAction,
+    parameters: Record<string, unknown>,
+    options: DispatchOptions = {},
+  ): Promise<DispatchOutcome> {
     const started = Date.now();
+    const freshUntil = options.freshUntil ?? Number.POSITIVE_INFINITY;
     const timeoutMs = timeoutOf(action);
     const checked = checkedParameters(action, parameters);
     if (!checked.ok) return checked.outcome;
@@ -115,11 +128,17 @@ export class RosbridgeTransport extends LinkedTransport {
       this.status.state === "connected"
         ? this.ros
         : action.retryable
-          ? await this.connectedWithin(started + timeoutMs)
+          ? await this.connectedWithin(Math.min(started + timeoutMs, freshUntil))
           : null;
+    // Waited for the link until the action was too old to send (or got it back too late): never sent late.
+    if (ros ? Date.now() > freshUntil : freshUntil < started + timeoutMs)
+      return {
+        status: "not_sent",
+        reason: `Not sent: the robot's link was not back before this was too old to do (${this.lostReason()}).`,
+      };
     if (!ros) return unreached(action, started, `robot not connected: ${this.lostReason()}`);
     if (outgoing.kind === "publish")
-      return this.published(ros, action, checked.parameters, outgoing, started + timeoutMs);
+      return this.published(ros, action, checked.parameters, outgoing, started + timeoutMs, options.later);
     if (outgoing.kind === "goal") return sendGoal(ros, outgoing, started + timeoutMs);
     if (outgoing.kind === "read") return readOnce(ros, outgoing, started + timeoutMs);
     if (outgoing.kind === "motion")
@@ -134,6 +153,7 @@ export class RosbridgeTransport extends LinkedTransport {
     parameters: Record<string, unknown>,
     outgoing: Extract<Outgoing, { kind: "publish" }>,
     deadline: number,
+    later?: DispatchOptions["later"],
   ): Promise<DispatchOutcome> {
     const started = Date.now();
     const rule = completionOf(action);
@@ -151,30 +171,44 @@ export class RosbridgeTransport extends LinkedTransport {
         : null;
     const socket = this.socket;
     this.topic(ros, outgoing.topic, outgoing.messageType).publish(outgoing.message);
+    const detail = (confirmation: Confirmation) => ({ topic: outgoing.topic, confirmation });
+    const doneBy = (message: unknown): DispatchOutcome => {
+      const robotTime = robotTimeOf(message);
+      const source = rule.kind === "done_topic" ? rule.topic : outgoing.topic;
+      return {
+        status: "completed",
+        detail: detail({ by: "done_topic", confirmed: true, source, ...(robotTime ? { robotTime } : {}) }),
+      };
+    };
+    // The link was lost with the action's outcome unknown: its done message, should it come once the link
+    // is back (the done topic is subscribed again on every connection), is told as the robot's later word.
+    const listenLater = () => {
+      if (!later || rule.kind !== "done_topic" || !expected?.ok) return;
+      const late = this.done.wait(rule.topic, rule.messageType, expected.match, Date.now() + LATER_REPORT_MS, true);
+      void late.answer.then((answer) => typeof answer === "object" && later(doneBy(answer.message)));
+    };
     if (!socket || !(await socket.delivered())) {
       done?.cancel();
+      listenLater();
       return {
-        status: "failed",
-        reason: `the robot link was lost before the robot took the action in: ${this.lostReason()}`,
+        status: "unknown",
+        reason: `sent, but the robot link was lost before the robot's bridge confirmed it took it in (${this.lostReason()}): the robot may still have done it`,
       };
     }
-    const detail = (confirmation: Confirmation) => ({ topic: outgoing.topic, confirmation });
     if (done && rule.kind === "done_topic") {
       const answer = await done.answer;
       if (answer === "timeout") {
         this.silence.waitedOut(rule.topic);
         return { status: "timed_out", afterMs: Date.now() - started };
       }
-      if (answer === "lost")
+      if (answer === "lost") {
+        listenLater();
         return {
-          status: "failed",
-          reason: `the robot link was lost before the robot said it was done: ${this.lostReason()}`,
+          status: "unknown",
+          reason: `the robot took it in, and the link was lost before the robot said it was done (${this.lostReason()}): it may still be done`,
         };
-      const robotTime = robotTimeOf(answer.message);
-      return {
-        status: "completed",
-        detail: detail({ by: "done_topic", confirmed: true, source: rule.topic, ...(robotTime ? { robotTime } : {}) }),
-      };
+      }
+      return doneBy(answer.message);
     }
     if (rule.kind === "estimated_duration") {
       const ms = estimatedMs(rule, parameters);
@@ -227,7 +261,7 @@ export class RosbridgeTransport extends LinkedTransport {
     this.timers.forEach(clearTimeout);
     this.silence.stop();
     this.socket?.terminate("the connection was closed");
-    this.done.lose();
+    this.done.lose(true);
     this.ros = null;
     this.socket = null;
     this.waiting.forEach((wake) => wake());
@@ -339,8 +373,8 @@ export class RosbridgeTransport extends LinkedTransport {
       const unwatch = this.onHealth((health) => {
         if (health.state !== "connected" && !health.problem)
           done({
-            status: "failed",
-            reason: `the robot link was lost while waiting for the answer: ${this.lostReason()}`,
+            status: "unknown",
+            reason: `sent, and the robot link was lost while waiting for the answer (${this.lostReason()}): the robot may still have done it`,
           });
       });
       new ROSLIB.Service({ ros, name, serviceType }).callService(

@@ -3,7 +3,7 @@
 // whose way this server has no address for fails at once, with the reason the
 // designer gave for calling it not runnable.
 import { isSshCommand, unreachable, type Channels, type Plugin, type PluginAction } from "../../core/plugins";
-import type { DispatchOutcome, Health, Transport } from "./transport";
+import type { DispatchOptions, DispatchOutcome, Health, Transport } from "./transport";
 
 export class RoutedTransport implements Transport {
   constructor(
@@ -19,14 +19,18 @@ export class RoutedTransport implements Transport {
     await this.primary.connect();
   }
 
-  dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome> {
+  dispatch(
+    action: PluginAction,
+    parameters: Record<string, unknown>,
+    options?: DispatchOptions,
+  ): Promise<DispatchOutcome> {
     const closed = unreachable(this.plugin, action, this.channels);
     if (closed)
       return Promise.resolve({
         status: "failed",
         reason: `"${action.name}" cannot run on ${this.plugin.name}: ${closed}`,
       });
-    return (isSshCommand(action) ? this.ssh! : this.primary).dispatch(action, parameters);
+    return (isSshCommand(action) ? this.ssh! : this.primary).dispatch(action, parameters, options);
   }
 
   subscribe(...args: Parameters<Transport["subscribe"]>) {

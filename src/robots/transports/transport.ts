@@ -3,11 +3,24 @@
 // chosen in one place from the plugin's `transport` field.
 import type { PluginAction } from "../../core/plugins";
 
-/** What became of one dispatch; each maps to an action event of the trial log. */
+/**
+ * What became of one dispatch; each maps to an action event of the trial log. `not_sent`: it never left
+ * (too old by the time the link could send it); `unknown`: it left, and the link was lost before an
+ * answer, so it may still happen; `failed`: the robot or the transport said it failed.
+ */
 export type DispatchOutcome =
   | { status: "completed"; detail?: Record<string, unknown> }
   | { status: "failed"; reason: string }
+  | { status: "not_sent"; reason: string }
+  | { status: "unknown"; reason: string }
   | { status: "timed_out"; afterMs: number };
+
+export interface DispatchOptions {
+  /** Date.now() time past which the action is no longer worth sending: a transport that waits for its robot sends nothing after it (not_sent). */
+  freshUntil?: number;
+  /** After an outcome "unknown": the robot's own later word on it (its done message, once the link is back). */
+  later?: (outcome: DispatchOutcome) => void;
+}
 
 export type ConnectionState = "connecting" | "connected" | "disconnected" | "closed";
 
@@ -28,7 +41,11 @@ export interface Health {
 export interface Transport {
   connect(): Promise<void>;
   /** Sends one action with its parameters; resolves within the action's timeout. */
-  dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome>;
+  dispatch(
+    action: PluginAction,
+    parameters: Record<string, unknown>,
+    options?: DispatchOptions,
+  ): Promise<DispatchOutcome>;
   /** Robot state for logging; kept across reconnects. Returns a function that stops it. */
   subscribe(
     topic: string,

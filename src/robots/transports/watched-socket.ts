@@ -79,9 +79,16 @@ export class WatchedSocket extends AbstractTransport {
     this.terminate("the connection was closed");
   }
 
-  /** Drops the socket at once, without waiting for the peer. */
+  /**
+   * Drops the socket at once, without waiting for the peer, and resets it where the platform lets us: a
+   * TCP reset (SO_LINGER 0, Node's `resetAndDestroy`) throws away what our side still queues for the
+   * bridge, where a polite close (FIN) would deliver it late to a bridge that goes on. Bun's `ws` has no
+   * raw socket to reset: there the socket is closed at once.
+   */
   terminate(reason: string) {
     this.lose(reason);
+    const raw = (this.socket as unknown as { _socket?: { resetAndDestroy?: () => void } })._socket;
+    if (typeof raw?.resetAndDestroy === "function") raw.resetAndDestroy();
     this.socket.terminate();
   }
 
