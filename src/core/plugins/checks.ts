@@ -7,7 +7,8 @@
 import { pointer, type PluginError, type PluginErrorCode } from "./errors";
 import { checkValue, compileParameterSchema } from "./parameters";
 import { placeholders } from "./template";
-import type { AbstractBinding, Plugin, PluginAction } from "./types";
+import { dispatchName, nameParameters } from "./topic";
+import type { AbstractBinding, Plugin, PluginAction, Ros2Dispatch } from "./types";
 import { abstractAction } from "./vocabulary";
 
 /** Whether the schema found the part at this JSON Pointer broken. */
@@ -71,13 +72,18 @@ function checkAction(action: PluginAction, at: string, add: Add) {
     }
   }
   const ros2 = action.ros2;
-  if (ros2 && "payloadMapping" in ros2) {
-    const mapping = ros2.payloadMapping;
-    if (mapping.type !== "ssh" && mapping.payload) {
-      for (const p of placeholders(mapping.payload, `${at}/ros2/payloadMapping/payload`)) {
-        if (!Object.hasOwn(schema.properties, p.name))
-          add(p.path, "unknown_placeholder", `{{${p.name}}} names no parameter of action "${action.id}"`);
-      }
+  if (ros2) {
+    const known = (name: string) => Object.hasOwn(schema.properties, name);
+    const [where, template] =
+      "service" in ros2 && !ros2.payloadMapping ? ["args", ros2.args] : ["payloadMapping/payload", payloadOf(ros2)];
+    for (const p of placeholders(template ?? {}, `${at}/ros2/${where}`)) {
+      if (!known(p.name))
+        add(p.path, "unknown_placeholder", `{{${p.name}}} names no parameter of action "${action.id}"`);
+    }
+    const field = "service" in ros2 ? "service" : "action" in ros2 ? "action" : "topic";
+    for (const name of nameParameters(dispatchName(action)!)) {
+      if (!known(name))
+        add(`${at}/ros2/${field}`, "unknown_placeholder", `{${name}} names no parameter of action "${action.id}"`);
     }
   }
   if (action.http) {
@@ -129,4 +135,9 @@ function checkAbstract(plugin: Plugin, add: Add, broken: Broken) {
       }
     });
   }
+}
+
+function payloadOf(ros2: Ros2Dispatch) {
+  const mapping = ros2.payloadMapping;
+  return mapping && mapping.type !== "ssh" ? mapping.payload : undefined;
 }
