@@ -9,6 +9,7 @@ export { parseActionType, robotActionType, type ActionType } from "./action-type
 export { validateParameters, withDefaults, type ParameterProblem } from "./parameters";
 export { fillTemplate, placeholders, templateProblems } from "./template";
 export { parseExpression, MAX_NESTING } from "./expression";
+export { dispatchName, fillName, reachableNames, type ReachableNames } from "./topic";
 export { TRANSFORMS, transformOf, maxTurnOf, type Transform, type Motion } from "./transforms";
 export { actionGoal, type ActionGoal } from "./goal";
 export { unavailableActions, unavailableReason, type UnavailableAction } from "./availability";

@@ -43,14 +43,14 @@ export function dispatchName(action: PluginAction): string | null {
   return "service" in ros2 ? ros2.service : "action" in ros2 ? ros2.action : ros2.topic;
 }
 
-export type Reachable = { names: string[] } | { open: string[] } | { ok: false; reason: string };
+export type ReachableNames = { names: string[] } | { open: string[] } | { ok: false; reason: string };
 
 /**
  * Every name a templated name can become: each fixed value of each parameter
  * it reads; `open` lists the parameters without fixed values (any text), and
  * a fixed value that makes no ROS name is the reason the action cannot run.
  */
-export function reachableNames(template: string, schema: ParameterSchema): Reachable {
+export function reachableNames(template: string, schema: ParameterSchema): ReachableNames {
   const used = nameParameters(template);
   const open = used.filter((p) => !Array.isArray(schema.properties[p]?.enum));
   if (open.length) return { open };
