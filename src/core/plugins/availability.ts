@@ -33,33 +33,37 @@ export function unavailableReason(plugin: Pick<Plugin, "actions">, action: Plugi
 export function unavailableActions(plugin: Pick<Plugin, "actions">): UnavailableAction[] {
   return plugin.actions.flatMap((action, i) => {
     const found = unavailable(plugin, action);
-    return found ? [{ actionId: action.id, path: `/actions/${i}/ros2${found.path}`, reason: found.reason }] : [];
+    return found ? [{ actionId: action.id, path: `/actions/${i}${found.path}`, reason: found.reason }] : [];
   });
 }
 
-/** The reason, and the JSON Pointer (under the action's ros2) of what gives it. */
+/** The reason, and the JSON Pointer (within the action) of what gives it. */
 function unavailable(plugin: Pick<Plugin, "actions">, action: PluginAction): { path: string; reason: string } | null {
   const ros2 = action.ros2;
+  if (action.http) {
+    const [bad] = templateProblems({ url: action.http.url, body: action.http.body ?? {} }, "/http");
+    if (bad) return { path: bad.path, reason: `${bad.reason} (at ${bad.path.slice(1)})` };
+  }
   if (!ros2) return null;
   const [where, template] =
     "service" in ros2
       ? ros2.payloadMapping
-        ? ["/payloadMapping/payload", ros2.payloadMapping.payload]
-        : ["/args", ros2.args]
-      : ["/payloadMapping/payload", ros2.payloadMapping.type === "ssh" ? undefined : ros2.payloadMapping.payload];
+        ? ["/ros2/payloadMapping/payload", ros2.payloadMapping.payload]
+        : ["/ros2/args", ros2.args]
+      : ["/ros2/payloadMapping/payload", ros2.payloadMapping.type === "ssh" ? undefined : ros2.payloadMapping.payload];
   const [bad] = templateProblems(template ?? {}, where);
-  if (bad) return { path: bad.path, reason: `${bad.reason} (at ros2${bad.path})` };
+  if (bad) return { path: bad.path, reason: `${bad.reason} (at ${bad.path.slice(1)})` };
   const name = dispatchName(action)!;
   const reach = reachableNames(name, action.parameterSchema);
   const field = "service" in ros2 ? "service" : "action" in ros2 ? "action" : "topic";
-  if ("reason" in reach) return { path: `/${field}`, reason: `its ${field} ${reach.reason}` };
+  if ("reason" in reach) return { path: `/ros2/${field}`, reason: `its ${field} ${reach.reason}` };
   if ("service" in ros2) return null;
   const mapping = ros2.payloadMapping;
-  const at = (reason: string | null) => (reason ? { path: "", reason } : null);
+  const at = (reason: string | null) => (reason ? { path: "/ros2", reason } : null);
   if (mapping.type === "transform") {
     const name = mapping.transformFn;
     const transform = transformOf(name);
-    const path = "/payloadMapping/transformFn";
+    const path = "/ros2/payloadMapping/transformFn";
     if (!transform)
       return {
         path,

@@ -1,5 +1,6 @@
 import { describe, expect, it } from "vitest";
 import { MAX_NESTING, parseExpression } from "./expression";
+import { httpRequest } from "./http";
 import { fillTemplate, placeholders, templateProblems } from "./template";
 import type { JsonValue } from "./types";
 
@@ -113,5 +114,20 @@ describe("expressions inside {{ }}", () => {
     expect(templateProblems(template)).toEqual([
       { path: "/b/0", reason: `template "{{eval('x')}}" at character 7: unexpected "("` },
     ]);
+  });
+});
+
+describe("expressions in an HTTP action's URL", () => {
+  it("fills each expression URL-encoded, never the literal template", () => {
+    const dispatch = { method: "POST" as const, url: "say/{{arm === 'left' ? 'L R' : 'x'}}?n={{n * 2}}" };
+    expect(httpRequest(dispatch, "http://robot.local/api/", given)).toEqual({
+      ok: true,
+      method: "POST",
+      url: "http://robot.local/api/say/L%20R?n=14",
+    });
+    expect(httpRequest({ ...dispatch, url: "say/{{arm.x}}" }, "http://robot.local/", given)).toEqual({
+      ok: false,
+      reason: '/url: template "say/{{arm.x}}" at character 10: unexpected "."',
+    });
   });
 });

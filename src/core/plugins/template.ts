@@ -104,8 +104,45 @@ function fillString(
 ): { ok: true; value: JsonValue } | { ok: false; reason: string } {
   const split = partsOf(text);
   if (!split.ok) return { ok: false, reason: problem(text, split.at, split.reason) };
+  const values = valuesOf(text, split.parts, lookup);
+  if (!values.ok) return values;
+  const [first, second] = split.parts;
+  const [, negated] = values.values;
+  if (split.parts.length === 1 && typeof first !== "string")
+    return { ok: true, value: structuredClone(values.values[0]!) };
+  if (split.parts.length === 2 && first === "-" && typeof second !== "string" && typeof negated === "number")
+    return { ok: true, value: negated === 0 ? 0 : -negated };
+  return { ok: true, value: values.values.map(asText).join("") };
+}
+
+/**
+ * A template string filled as text, each expression's value made text by
+ * `encode` (a URL's parts are URL-encoded): the literal text is kept as written.
+ */
+export function fillText(
+  text: string,
+  parameters: Record<string, unknown>,
+  encode: (text: string) => string,
+): { ok: true; text: string } | { ok: false; reason: string } {
+  const split = partsOf(text);
+  if (!split.ok) return { ok: false, reason: problem(text, split.at, split.reason) };
+  const lookup = (name: string) =>
+    Object.hasOwn(parameters, name) ? (parameters[name] as JsonValue | undefined) : undefined;
+  const values = valuesOf(text, split.parts, lookup);
+  if (!values.ok) return values;
+  const pieces = split.parts.map((part, i) => (typeof part === "string" ? part : encode(asText(values.values[i]!))));
+  return { ok: true, text: pieces.join("") };
+}
+
+const asText = (v: JsonValue) => (typeof v === "string" ? v : JSON.stringify(v));
+
+function valuesOf(
+  text: string,
+  parts: Part[],
+  lookup: (name: string) => JsonValue | undefined,
+): { ok: true; values: JsonValue[] } | { ok: false; reason: string } {
   const values: JsonValue[] = [];
-  for (const part of split.parts) {
+  for (const part of parts) {
     if (typeof part === "string") {
       values.push(part);
       continue;
@@ -121,11 +158,7 @@ function fillString(
       };
     values.push(result.value);
   }
-  const [first, second] = split.parts;
-  if (split.parts.length === 1 && typeof first !== "string") return { ok: true, value: structuredClone(values[0]!) };
-  if (split.parts.length === 2 && first === "-" && typeof second !== "string" && typeof values[1] === "number")
-    return { ok: true, value: values[1] === 0 ? 0 : -values[1] };
-  return { ok: true, value: values.map((v) => (typeof v === "string" ? v : JSON.stringify(v))).join("") };
+  return { ok: true, values };
 }
 
 /** Where a template went wrong, in words: the template itself (shortened) and the 1-based character. */
