@@ -131,3 +131,19 @@ describe("expressions in an HTTP action's URL", () => {
     });
   });
 });
+
+describe("a template nested past 64 levels", () => {
+  const deep = (levels: number): JsonValue => (levels === 0 ? "{{n}}" : { a: deep(levels - 1) });
+  const at = (levels: number) => "/a".repeat(levels);
+  it("is filled at 64 levels, and refused, not sent unfilled, at 65", () => {
+    expect(fillTemplate(deep(64), given).ok).toBe(true);
+    expect(fillTemplate(deep(65), given)).toEqual({
+      ok: false,
+      path: at(65),
+      reason: "nested more than 64 levels deep",
+    });
+    expect(templateProblems(deep(65))).toEqual([
+      { path: at(65), reason: "the template is nested more than 64 levels deep" },
+    ]);
+  });
+});

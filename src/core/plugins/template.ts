@@ -12,6 +12,8 @@ import { namesIn, parseExpression, type Node } from "./expression";
 import type { JsonValue } from "./types";
 
 const MAX_DEPTH = 64;
+/** What a template nested past MAX_DEPTH is: never walked, so never sent unfilled either. */
+const TOO_DEEP = `nested more than ${MAX_DEPTH} levels deep`;
 
 export type FillResult = { ok: true; value: JsonValue } | { ok: false; path: string; reason: string };
 
@@ -24,7 +26,7 @@ export function fillTemplate(template: JsonValue, parameters: Record<string, unk
   let failure: { path: string; reason: string } | null = null;
   const value = walk(template, "", 0, (text, path) => {
     if (failure) return null;
-    const filled = fillString(text, lookup);
+    const filled = text === null ? { ok: false as const, reason: TOO_DEEP } : fillString(text, lookup);
     if (filled.ok) return filled.value;
     failure = { path, reason: filled.reason };
     return null;
@@ -36,8 +38,8 @@ export function fillTemplate(template: JsonValue, parameters: Record<string, unk
 export function placeholders(template: unknown, base = ""): Array<{ path: string; name: string }> {
   const found: Array<{ path: string; name: string }> = [];
   walk(template as JsonValue, base, 0, (text, path) => {
-    const split = partsOf(text);
-    if (split.ok)
+    const split = text === null ? null : partsOf(text);
+    if (split?.ok)
       for (const part of split.parts)
         if (typeof part !== "string") for (const name of namesIn(part.node)) found.push({ path, name });
     return null;
@@ -49,6 +51,10 @@ export function placeholders(template: unknown, base = ""): Array<{ path: string
 export function templateProblems(template: unknown, base = ""): Array<{ path: string; reason: string }> {
   const found: Array<{ path: string; reason: string }> = [];
   walk(template as JsonValue, base, 0, (text, path) => {
+    if (text === null) {
+      found.push({ path, reason: `the template is ${TOO_DEEP}` });
+      return null;
+    }
     const split = partsOf(text);
     if (!split.ok) found.push({ path, reason: problem(text, split.at, split.reason) });
     return null;
@@ -60,9 +66,10 @@ function walk(
   node: JsonValue,
   path: string,
   depth: number,
-  fill: (text: string, path: string) => JsonValue,
+  /** Called with each string, and with null for a part nested too deep to walk. */
+  fill: (text: string | null, path: string) => JsonValue,
 ): JsonValue {
-  if (depth > MAX_DEPTH) return node;
+  if (depth > MAX_DEPTH) return fill(null, path);
   if (typeof node === "string") return fill(node, path);
   if (Array.isArray(node)) return node.map((item, i) => walk(item, `${path}/${i}`, depth + 1, fill));
   if (node && typeof node === "object") {
