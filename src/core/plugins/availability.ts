@@ -5,7 +5,7 @@
 import { goalTypeOf, noGoalType } from "./goal";
 import { maxTurnOf, transformOf } from "./transforms";
 import { templateProblems } from "./template";
-import { dispatchName, reachableNames } from "./topic";
+import { dispatchField, dispatchName, messageTemplate, reachableNames } from "./topic";
 import type { Plugin, PluginAction } from "./types";
 
 /** Behaviours HRIStudio's files name that need more than sending a message, and what they need. */
@@ -45,17 +45,11 @@ function unavailable(plugin: Pick<Plugin, "actions">, action: PluginAction): { p
     if (bad) return { path: bad.path, reason: `${bad.reason} (at ${bad.path.slice(1)})` };
   }
   if (!ros2) return null;
-  const [where, template] =
-    "service" in ros2
-      ? ros2.payloadMapping
-        ? ["/ros2/payloadMapping/payload", ros2.payloadMapping.payload]
-        : ["/ros2/args", ros2.args]
-      : ["/ros2/payloadMapping/payload", ros2.payloadMapping.type === "ssh" ? undefined : ros2.payloadMapping.payload];
-  const [bad] = templateProblems(template ?? {}, where);
+  const message = messageTemplate(ros2);
+  const [bad] = templateProblems(message.template, message.at);
   if (bad) return { path: bad.path, reason: `${bad.reason} (at ${bad.path.slice(1)})` };
-  const name = dispatchName(action)!;
-  const reach = reachableNames(name, action.parameterSchema);
-  const field = "service" in ros2 ? "service" : "action" in ros2 ? "action" : "topic";
+  const field = dispatchField(ros2);
+  const reach = reachableNames(dispatchName(action)!, action.parameterSchema);
   if ("reason" in reach) return { path: `/ros2/${field}`, reason: `its ${field} ${reach.reason}` };
   if ("service" in ros2) return null;
   const mapping = ros2.payloadMapping;

@@ -7,8 +7,8 @@
 import { pointer, type PluginError, type PluginErrorCode } from "./errors";
 import { checkValue, compileParameterSchema } from "./parameters";
 import { placeholders } from "./template";
-import { dispatchName, nameParameters } from "./topic";
-import type { AbstractBinding, Plugin, PluginAction, Ros2Dispatch } from "./types";
+import { dispatchField, dispatchName, messageTemplate, nameParameters } from "./topic";
+import type { AbstractBinding, Plugin, PluginAction } from "./types";
 import { abstractAction } from "./vocabulary";
 
 /** Whether the schema found the part at this JSON Pointer broken. */
@@ -74,13 +74,12 @@ function checkAction(action: PluginAction, at: string, add: Add) {
   const ros2 = action.ros2;
   if (ros2) {
     const known = (name: string) => Object.hasOwn(schema.properties, name);
-    const [where, template] =
-      "service" in ros2 && !ros2.payloadMapping ? ["args", ros2.args] : ["payloadMapping/payload", payloadOf(ros2)];
-    for (const p of placeholders(template ?? {}, `${at}/ros2/${where}`)) {
+    const message = messageTemplate(ros2);
+    for (const p of placeholders(message.template, `${at}${message.at}`)) {
       if (!known(p.name))
         add(p.path, "unknown_placeholder", `{{${p.name}}} names no parameter of action "${action.id}"`);
     }
-    const field = "service" in ros2 ? "service" : "action" in ros2 ? "action" : "topic";
+    const field = dispatchField(ros2);
     for (const name of nameParameters(dispatchName(action)!)) {
       if (!known(name))
         add(`${at}/ros2/${field}`, "unknown_placeholder", `{${name}} names no parameter of action "${action.id}"`);
@@ -135,9 +134,4 @@ function checkAbstract(plugin: Plugin, add: Add, broken: Broken) {
       }
     });
   }
-}
-
-function payloadOf(ros2: Ros2Dispatch) {
-  const mapping = ros2.payloadMapping;
-  return mapping && mapping.type !== "ssh" ? mapping.payload : undefined;
 }

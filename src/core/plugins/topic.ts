@@ -5,7 +5,7 @@
 // Where every parameter a name uses has a fixed set of values (an enum), every
 // name the action can reach is known before a trial: the portability report
 // lists them and the simulated robot offers them.
-import type { ParameterSchema, PluginAction } from "./types";
+import type { JsonObject, ParameterSchema, PluginAction, Ros2Dispatch } from "./types";
 
 const PART = /\{([A-Za-z_][A-Za-z0-9_]*)\}/g;
 // A ROS 2 name: the plugin schema's, and no empty part, no part that starts with a digit.
@@ -36,11 +36,22 @@ export function fillName(template: string, parameters: Record<string, unknown>):
   return { ok: false, reason: `${template}: with ${used} it is ${JSON.stringify(name)}, which is not a ROS name` };
 }
 
-/** The templated name of an action's dispatch: its topic, service or ROS 2 action. */
+/** The field of a dispatch that names where it goes: its topic, service or ROS 2 action. */
+export const dispatchField = (ros2: Ros2Dispatch) =>
+  "service" in ros2 ? ("service" as const) : "action" in ros2 ? ("action" as const) : ("topic" as const);
+
+/** The templated name of an action's dispatch. */
 export function dispatchName(action: PluginAction): string | null {
   const ros2 = action.ros2;
   if (!ros2) return null;
   return "service" in ros2 ? ros2.service : "action" in ros2 ? ros2.action : ros2.topic;
+}
+
+/** The template of what a dispatch sends (a message, or a service call's arguments), with its pointer under the action. */
+export function messageTemplate(ros2: Ros2Dispatch): { at: string; template: JsonObject } {
+  if ("service" in ros2 && !ros2.payloadMapping) return { at: "/ros2/args", template: ros2.args ?? {} };
+  const mapping = ros2.payloadMapping!;
+  return { at: "/ros2/payloadMapping/payload", template: (mapping.type !== "ssh" && mapping.payload) || {} };
 }
 
 export type ReachableNames = { names: string[] } | { open: string[] } | { ok: false; reason: string };
