@@ -46,6 +46,7 @@ export {
   matchesDone,
   estimatedMs,
   robotTimeOf,
+  serviceRefusal,
   isConfirmation,
   type Confirmation,
   type Rule,
