@@ -69,7 +69,7 @@ function expectedPayload(action: PluginAction) {
 
 describe("every action of the fixture NAO6 plugin through roslib", () => {
   const overRosbridge = fixture.actions.filter(
-    (a) => a.ros2 && "payloadMapping" in a.ros2 && a.ros2.payloadMapping.type !== "ssh",
+    (a) => a.ros2 && "payloadMapping" in a.ros2 && a.ros2.payloadMapping?.type !== "ssh",
   );
   const overSsh = fixture.actions.filter((a) => !overRosbridge.includes(a));
 

@@ -9,7 +9,7 @@ import { startSshd, type TestSshd } from "../support/sshd";
 
 const nao = (loadPlugin("nao6-ros2.json", readFileSync("plugins/nao6-ros2.json", "utf8")) as { value: Plugin }).value;
 const sshActions = nao.actions.filter(
-  (a) => a.ros2 && "payloadMapping" in a.ros2 && a.ros2.payloadMapping.type === "ssh",
+  (a) => a.ros2 && "payloadMapping" in a.ros2 && a.ros2.payloadMapping?.type === "ssh",
 );
 
 function command(id: string, sshCommand: string, extra: Partial<PluginAction> = {}): PluginAction {

@@ -10,6 +10,7 @@ export interface PlainError {
 const PATTERN_HINTS: Record<string, string> = {
   identifier: 'must be lower-case letters, digits, "-" or "_", starting with a letter or digit',
   topic: 'must be a ROS name like "/speech"',
+  templatedTopic: 'must be a ROS name like "/speech", or one with {parameter} parts like "/sonar/{side}"',
   messageType: 'must be a ROS type like "std_msgs/msg/String"',
 };
 
@@ -118,6 +119,9 @@ function plain1(error: ErrorObject): PlainError | null {
   switch (error.keyword) {
     case "if":
       return null; // its "then" error says what is wrong
+    case "not":
+      // The one "not" of the schema: a service mapping on a topic or a ROS 2 action.
+      return { path, reason: 'can be "service" only where the action names a "service" to call' };
     case "required":
       return { path: `${path}/${escapePointer(String(params.missingProperty))}`, reason: "is required but missing" };
     case "additionalProperties":

@@ -4,6 +4,8 @@
 // report show it as unsupported with this reason, and it is never sent.
 import { goalTypeOf, noGoalType } from "./goal";
 import { maxTurnOf, transformOf } from "./transforms";
+import { templateProblems } from "./template";
+import { dispatchField, dispatchName, messageTemplate, reachableNames } from "./topic";
 import type { Plugin, PluginAction } from "./types";
 
 /** Behaviours HRIStudio's files name that need more than sending a message, and what they need. */
@@ -25,28 +27,50 @@ export interface UnavailableAction {
 
 /** Why this platform cannot carry out the action, in words that follow "cannot run: "; null when it can. */
 export function unavailableReason(plugin: Pick<Plugin, "actions">, action: PluginAction): string | null {
-  const ros2 = action.ros2;
-  if (!ros2 || !("payloadMapping" in ros2)) return null;
-  const mapping = ros2.payloadMapping;
-  if (mapping.type === "transform") {
-    const name = mapping.transformFn;
-    const transform = transformOf(name);
-    if (!transform)
-      return MISSING_BEHAVIOURS[name] ?? `it needs the transform "${name}", which this platform does not have`;
-    if (transform.kind === "motion" && maxTurnOf(plugin) === null)
-      return `it turns at a fraction of the robot's top turning speed, and the plugin declares none (the "angular" maximum of a transformToTwist action)`;
-    if (transform.kind === "reading" && "action" in ros2) return `"${name}" reads a topic; it cannot be an action goal`;
-  }
-  if ("action" in ros2 && !ros2.actionType && !goalTypeOf(ros2.messageType)) return noGoalType(ros2);
-  return null;
+  return unavailable(plugin, action)?.reason ?? null;
 }
 
 export function unavailableActions(plugin: Pick<Plugin, "actions">): UnavailableAction[] {
   return plugin.actions.flatMap((action, i) => {
-    const reason = unavailableReason(plugin, action);
-    if (!reason) return [];
-    const mapping = action.ros2 && "payloadMapping" in action.ros2 ? action.ros2.payloadMapping : null;
-    const path = mapping?.type === "transform" ? `/actions/${i}/ros2/payloadMapping/transformFn` : `/actions/${i}/ros2`;
-    return [{ actionId: action.id, path, reason }];
+    const found = unavailable(plugin, action);
+    return found ? [{ actionId: action.id, path: `/actions/${i}${found.path}`, reason: found.reason }] : [];
   });
+}
+
+/** The reason, and the JSON Pointer (within the action) of what gives it. */
+function unavailable(plugin: Pick<Plugin, "actions">, action: PluginAction): { path: string; reason: string } | null {
+  const ros2 = action.ros2;
+  if (action.http) {
+    const [bad] = templateProblems({ url: action.http.url, body: action.http.body ?? {} }, "/http");
+    if (bad) return { path: bad.path, reason: `${bad.reason} (at ${bad.path.slice(1)})` };
+  }
+  if (!ros2) return null;
+  const message = messageTemplate(ros2);
+  const [bad] = templateProblems(message.template, message.at);
+  if (bad) return { path: bad.path, reason: `${bad.reason} (at ${bad.path.slice(1)})` };
+  const field = dispatchField(ros2);
+  const reach = reachableNames(dispatchName(action)!, action.parameterSchema);
+  if ("reason" in reach) return { path: `/ros2/${field}`, reason: `its ${field} ${reach.reason}` };
+  if ("service" in ros2) return null;
+  const mapping = ros2.payloadMapping;
+  const at = (reason: string | null) => (reason ? { path: "/ros2", reason } : null);
+  if (mapping.type === "transform") {
+    const name = mapping.transformFn;
+    const transform = transformOf(name);
+    const path = "/ros2/payloadMapping/transformFn";
+    if (!transform)
+      return {
+        path,
+        reason: MISSING_BEHAVIOURS[name] ?? `it needs the transform "${name}", which this platform does not have`,
+      };
+    if (transform.kind === "motion" && maxTurnOf(plugin) === null)
+      return {
+        path,
+        reason: `it turns at a fraction of the robot's top turning speed, and the plugin declares none (the "angular" maximum of a transformToTwist action)`,
+      };
+    if (transform.kind === "reading" && "action" in ros2)
+      return { path, reason: `"${name}" reads a topic; it cannot be an action goal` };
+  }
+  if ("action" in ros2 && !ros2.actionType && !goalTypeOf(ros2.messageType)) return at(noGoalType(ros2));
+  return null;
 }

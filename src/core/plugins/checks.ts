@@ -7,6 +7,7 @@
 import { pointer, type PluginError, type PluginErrorCode } from "./errors";
 import { checkValue, compileParameterSchema } from "./parameters";
 import { placeholders } from "./template";
+import { dispatchField, dispatchName, messageTemplate, nameParameters } from "./topic";
 import type { AbstractBinding, Plugin, PluginAction } from "./types";
 import { abstractAction } from "./vocabulary";
 
@@ -71,13 +72,17 @@ function checkAction(action: PluginAction, at: string, add: Add) {
     }
   }
   const ros2 = action.ros2;
-  if (ros2 && "payloadMapping" in ros2) {
-    const mapping = ros2.payloadMapping;
-    if (mapping.type !== "ssh" && mapping.payload) {
-      for (const p of placeholders(mapping.payload, `${at}/ros2/payloadMapping/payload`)) {
-        if (!Object.hasOwn(schema.properties, p.name))
-          add(p.path, "unknown_placeholder", `{{${p.name}}} names no parameter of action "${action.id}"`);
-      }
+  if (ros2) {
+    const known = (name: string) => Object.hasOwn(schema.properties, name);
+    const message = messageTemplate(ros2);
+    for (const p of placeholders(message.template, `${at}${message.at}`)) {
+      if (!known(p.name))
+        add(p.path, "unknown_placeholder", `{{${p.name}}} names no parameter of action "${action.id}"`);
+    }
+    const field = dispatchField(ros2);
+    for (const name of nameParameters(dispatchName(action)!)) {
+      if (!known(name))
+        add(`${at}/ros2/${field}`, "unknown_placeholder", `{${name}} names no parameter of action "${action.id}"`);
     }
   }
   if (action.http) {

@@ -1,7 +1,7 @@
 // Completion rules, as tables: which rule an action has, which done message
 // is an action's, what an estimated duration comes to, and the robot's time.
 import { describe, expect, it } from "vitest";
-import { completionOf, estimatedMs, expectedDone, matchesDone, robotTimeOf } from "./completion";
+import { completionOf, estimatedMs, expectedDone, matchesDone, robotTimeOf, serviceRefusal } from "./completion";
 import type { DoneMatch, PluginAction } from "./types";
 
 const base = { id: "a", name: "A", category: "test", parameterSchema: { type: "object", properties: {} } } as const;
@@ -79,5 +79,21 @@ describe("estimated durations and the robot's time", () => {
     ["a zero stamp (unset)", { header: { stamp: { sec: 0, nanosec: 0 } } }, undefined],
   ])("%s", (_, message, time) => {
     expect(robotTimeOf(message)).toBe(time);
+  });
+});
+
+describe("serviceRefusal: a reply that says the call was not done", () => {
+  it.each<[string, unknown, string | null]>([
+    ["success true", { success: true, message: "awake" }, null],
+    ["no success field (std_srvs/Empty)", {}, null],
+    ["no reply at all", null, null],
+    [
+      "success false, with the robot's words",
+      { success: false, message: "motors hot" },
+      "/wake_up answered that it did not succeed: motors hot",
+    ],
+    ["success false, no words", { success: false, message: "" }, "/wake_up answered that it did not succeed"],
+  ])("%s", (_, reply, expected) => {
+    expect(serviceRefusal("/wake_up", reply)).toBe(expected);
   });
 });

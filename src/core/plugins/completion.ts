@@ -63,6 +63,17 @@ export function expectedDone(
   return { ok: true, match: filled.value as unknown as DoneMatch };
 }
 
+/**
+ * Why a service's reply says it did not do the call, or null: rosbridge
+ * carries a reply whose `success` is false (std_srvs/Trigger, SetBool) as a
+ * successful call, but the robot has said no, with its `message`.
+ */
+export function serviceRefusal(service: string, reply: unknown): string | null {
+  const { success, message } = (reply ?? {}) as { success?: unknown; message?: unknown };
+  if (success !== false) return null;
+  return `${service} answered that it did not succeed${typeof message === "string" && message ? `: ${message}` : ""}`;
+}
+
 /** Whether a message on the done topic is this action's: every condition of the (filled) match holds. */
 export function matchesDone(match: DoneMatch | undefined, message: unknown): boolean {
   if (!match) return true;

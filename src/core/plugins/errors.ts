@@ -6,7 +6,8 @@ export const PLUGIN_ERROR_CODES = {
   schema: "The file does not match the plugin format.",
   duplicate_action: "Two actions share an id.",
   bad_parameter_schema: "An action's parameterSchema is not usable.",
-  unknown_placeholder: "A payload placeholder names no parameter of its action.",
+  unknown_placeholder:
+    "A placeholder (a payload's {{…}}, or a {part} of a topic or service name) names no parameter of its action.",
   bad_binding: "An abstract binding refers to something that does not exist.",
   unknown_abstract_action: "The plugin maps an abstract action that is not in the vocabulary.",
   duplicate_robot: "Two plugin files declare the same robotId.",

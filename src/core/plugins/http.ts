@@ -1,21 +1,15 @@
 // A REST request for the HTTP transport, from the action's templates: URL
 // placeholders are filled URL-encoded (a parameter cannot change the path or
 // add a query), the body as JSON values by the template filler.
-import { fillTemplate } from "./template";
+import { fillTemplate, fillText } from "./template";
 import type { HttpDispatch } from "./types";
 
 export type HttpRequest = { ok: true; method: string; url: string; body?: string } | { ok: false; reason: string };
 
-const PLACEHOLDER = /\{\{\s*([A-Za-z_][A-Za-z0-9_]*)\s*\}\}/g;
-
 export function httpRequest(dispatch: HttpDispatch, baseUrl: string, parameters: Record<string, unknown>): HttpRequest {
-  let missing: string | null = null;
-  const path = dispatch.url.replace(PLACEHOLDER, (_, name: string) => {
-    const value = parameters[name];
-    if (value === undefined) missing ??= name;
-    return encodeURIComponent(typeof value === "string" ? value : JSON.stringify(value ?? null));
-  });
-  if (missing) return { ok: false, reason: `/url: no value for parameter "${missing}"` };
+  const filled = fillText(dispatch.url, parameters, encodeURIComponent);
+  if (!filled.ok) return { ok: false, reason: `/url: ${filled.reason}` };
+  const path = filled.text;
   let url: string;
   try {
     url = new URL(path, baseUrl).toString();

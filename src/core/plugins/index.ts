@@ -7,7 +7,9 @@ export { parseRepository, parsePluginIndex } from "./repository";
 export { ABSTRACT_ACTIONS, abstractAction, type AbstractAction } from "./vocabulary";
 export { parseActionType, robotActionType, type ActionType } from "./action-type";
 export { validateParameters, withDefaults, type ParameterProblem } from "./parameters";
-export { fillTemplate, placeholders } from "./template";
+export { fillTemplate, placeholders, templateProblems } from "./template";
+export { parseExpression, MAX_NESTING } from "./expression";
+export { dispatchName, fillName, reachableNames, type ReachableNames } from "./topic";
 export { TRANSFORMS, transformOf, maxTurnOf, type Transform, type Motion } from "./transforms";
 export { actionGoal, type ActionGoal } from "./goal";
 export { unavailableActions, unavailableReason, type UnavailableAction } from "./availability";
@@ -44,6 +46,7 @@ export {
   matchesDone,
   estimatedMs,
   robotTimeOf,
+  serviceRefusal,
   isConfirmation,
   type Confirmation,
   type Rule,

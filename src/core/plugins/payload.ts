@@ -5,6 +5,7 @@
 import { unavailableReason } from "./availability";
 import { actionGoal } from "./goal";
 import { fillTemplate } from "./template";
+import { dispatchName, fillName, nameParameters } from "./topic";
 import { maxTurnOf, transformOf } from "./transforms";
 import type { JsonObject, JsonValue, Plugin, PluginAction, PayloadMapping } from "./types";
 
@@ -27,33 +28,39 @@ export function outgoingFor(
 ): Outgoing {
   const ros2 = action.ros2;
   if (!ros2) return { kind: "none", reason: `action "${action.id}" has no dispatch block` };
-  if ("service" in ros2) {
-    const args = fillTemplate(ros2.args ?? {}, parameters);
-    if (!args.ok) return { kind: "none", reason: `${args.path}: ${args.reason}` };
-    return { kind: "call", service: ros2.service, serviceType: ros2.serviceType, args: args.value };
-  }
   const unavailable = unavailableReason(plugin, action);
   if (unavailable) return { kind: "none", reason: `action "${action.id}" cannot run: ${unavailable}` };
+  const named = filledName(dispatchName(action)!, parameters);
+  if (!named.ok) return { kind: "none", reason: named.reason };
+  const name = named.name;
+  if ("service" in ros2) {
+    const args = fillTemplate(ros2.payloadMapping?.payload ?? ros2.args ?? {}, parameters);
+    if (!args.ok) return { kind: "none", reason: `${args.path}: ${args.reason}` };
+    // The schema asks for one of the two.
+    return { kind: "call", service: name, serviceType: (ros2.serviceType ?? ros2.messageType)!, args: args.value };
+  }
   const mapping = ros2.payloadMapping;
   if (mapping.type === "ssh") return { kind: "ssh", command: mapping.sshCommand };
   const transform = mapping.type === "transform" ? transformOf(mapping.transformFn)! : null;
   if (transform?.kind === "reading")
-    return { kind: "read", topic: topicOf(ros2), messageType: ros2.messageType, read: transform.read };
+    return { kind: "read", topic: name, messageType: ros2.messageType, read: transform.read };
   if (transform?.kind === "motion") {
     const motion = transform.build(parameters, maxTurnOf(plugin)!);
-    return { kind: "motion", topic: topicOf(ros2), messageType: ros2.messageType, ...motion };
+    return { kind: "motion", topic: name, messageType: ros2.messageType, ...motion };
   }
   const message = transform ? { ok: true as const, value: transform.build(parameters) } : filled(mapping, parameters);
   if (!message.ok) return { kind: "none", reason: message.reason };
   if ("action" in ros2) {
     const goal = actionGoal(ros2, message.value as JsonObject);
     if (!goal.ok) return { kind: "none", reason: goal.reason };
-    return { kind: "goal", action: ros2.action, actionType: goal.actionType, goal: goal.goal };
+    return { kind: "goal", action: name, actionType: goal.actionType, goal: goal.goal };
   }
-  return { kind: "publish", topic: ros2.topic, messageType: ros2.messageType, message: message.value };
+  return { kind: "publish", topic: name, messageType: ros2.messageType, message: message.value };
 }
 
-const topicOf = (ros2: { topic?: string; action?: string }) => (ros2.topic ?? ros2.action)!;
+/** A name without {parameter} parts is the plugin's as written; one with them is checked once filled. */
+const filledName = (template: string, parameters: Record<string, unknown>) =>
+  nameParameters(template).length ? fillName(template, parameters) : { ok: true as const, name: template };
 
 function filled(mapping: PayloadMapping, parameters: Record<string, unknown>) {
   const payload = mapping.type === "static" ? mapping.payload : {};

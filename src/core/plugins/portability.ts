@@ -5,7 +5,8 @@
 import type { ParameterProblem } from "./parameters";
 import { unreachable, type Channels } from "./reach";
 import { resolveAction } from "./resolve";
-import type { Plugin } from "./types";
+import { dispatchName, reachableNames } from "./topic";
+import type { Plugin, PluginAction } from "./types";
 import { finish, type Work } from "../work";
 
 /** The experiment shape the report reads: steps of typed actions. */
@@ -30,6 +31,12 @@ export interface ActionPortability {
   pluginAction?: string;
   reason?: string;
   problems: ParameterProblem[];
+  /**
+   * Every topic, service or ROS 2 action the robot action can send to, when
+   * that is known before a trial: its name has no {parameter} parts, or only
+   * parts whose parameter has a fixed set of values.
+   */
+  reaches?: string[];
 }
 
 export interface PortabilityReport {
@@ -53,7 +60,7 @@ export function portability(experiment: PortableExperiment, plugin: Plugin, chan
           const pluginAction = resolution.action.id;
           const reason = channels && unreachable(plugin, resolution.action, channels);
           if (reason) return { ...base, status: "unsupported", by: "robot", pluginAction, reason };
-          return { ...base, status: "supported", by: "robot", pluginAction };
+          return { ...base, status: "supported", by: "robot", pluginAction, ...reachesOf(resolution.action) };
         }
         case "unsupported":
           return { ...base, status: "unsupported", by: "robot", reason: resolution.reason };
@@ -74,6 +81,12 @@ export function portability(experiment: PortableExperiment, plugin: Plugin, chan
     portable: actions.every((a) => a.status === "supported"),
     actions,
   };
+}
+
+function reachesOf(action: PluginAction): { reaches?: string[] } {
+  const name = dispatchName(action);
+  const reach = name === null ? null : reachableNames(name, action.parameterSchema);
+  return reach && "names" in reach ? { reaches: reach.names } : {};
 }
 
 /**

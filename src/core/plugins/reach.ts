@@ -17,7 +17,7 @@ export interface Reachable {
 
 /** A NAOqi command the plugin runs over SSH, whatever its plugin's transport. */
 export const isSshCommand = (action: PluginAction) =>
-  !!action.ros2 && "payloadMapping" in action.ros2 && action.ros2.payloadMapping.type === "ssh";
+  !!action.ros2 && "payloadMapping" in action.ros2 && action.ros2.payloadMapping?.type === "ssh";
 
 /** How the action reaches the robot; without an action, how the plugin's robot is reached at all. */
 export function channelOf(plugin: Reachable, action?: PluginAction): Channel {

@@ -20,18 +20,34 @@ export interface ParameterSchema {
 export type PayloadMapping =
   | { type: "static"; payload: JsonObject }
   | { type: "transform"; transformFn: string; payload?: JsonObject }
-  | { type: "ssh"; sshCommand: string };
+  | { type: "ssh"; sshCommand: string }
+  /** HRIStudio's service call: `payload` is the call's arguments. */
+  | { type: "service"; payload?: JsonObject };
 
 /**
  * How an action reaches the robot over rosbridge: a topic publish, a service
  * call, or a ROS 2 action goal (HRIStudio's `action`, whose `messageType` is
  * the goal's message; our `actionType` names the action's type when it is not
- * one goal.ts knows from that message).
+ * one goal.ts knows from that message). A topic or service name may hold
+ * {parameter} parts (topic.ts).
  */
 export type Ros2Dispatch =
   | { topic: string; messageType: string; payloadMapping: PayloadMapping }
-  | { service: string; serviceType: string; args?: JsonObject }
+  | ServiceDispatch
   | { action: string; actionType?: string; messageType: string; payloadMapping: PayloadMapping };
+
+/**
+ * A service call, written our way (`serviceType`, `args`) or HRIStudio's
+ * (`messageType`, a payloadMapping of type "service"); the schema asks for
+ * one of the two types.
+ */
+export interface ServiceDispatch {
+  service: string;
+  serviceType?: string;
+  messageType?: string;
+  args?: JsonObject;
+  payloadMapping?: Extract<PayloadMapping, { type: "service" }>;
+}
 
 export interface PluginAction {
   id: string;

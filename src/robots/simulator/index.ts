@@ -14,6 +14,7 @@ import {
   type RobotNode,
 } from "./nodes";
 import { camera } from "./camera";
+import { pluginServices } from "./plugin-services";
 
 export { startSimulator, type Simulator, type SimulatorOptions, type Received } from "./server";
 export * from "./nodes";
@@ -33,6 +34,7 @@ export function simulatedRobot(
   return [
     ...(drives(plugin) ? [odometry(), navigation()] : []),
     pluginTopics(plugin),
+    pluginServices(plugin),
     speech({ msPerChar }),
     animation({ durationMs: animationMs }),
     audio(),

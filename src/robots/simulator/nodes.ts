@@ -1,6 +1,6 @@
 // The robot side of the simulated ROS graph: small "nodes" that publish robot
 // state and answer what clients send. Each returns a function that stops it.
-import type { Plugin } from "../../core/plugins";
+import { type Plugin, reachableNames } from "../../core/plugins";
 import { began, ROBOT_STATE_TOPIC, type RobotState } from "../../core/robots/robot-state";
 import type { RosGraph } from "./graph";
 
@@ -204,8 +204,10 @@ export function pluginTopics(plugin: Plugin): RobotNode {
   return (graph, state) => {
     for (const action of plugin.actions) {
       const ros2 = action.ros2;
-      if (ros2 && "topic" in ros2 && ros2.payloadMapping.type !== "ssh")
-        graph.declare(ros2.topic, ros2.messageType, ROBOT);
+      if (!ros2 || !("topic" in ros2) || ros2.payloadMapping.type === "ssh") continue;
+      // A templated topic under every name its fixed values make; one open to any text is not known before a publish.
+      const reach = reachableNames(ros2.topic, action.parameterSchema);
+      if ("names" in reach) for (const name of reach.names) graph.declare(name, ros2.messageType, ROBOT);
     }
     const stops = [
       graph.listen("/gesture", (m) => void (state.gesture = String(m.data))),

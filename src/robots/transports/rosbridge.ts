@@ -27,6 +27,7 @@ import {
   expectedDone,
   outgoingFor,
   robotTimeOf,
+  serviceRefusal,
   type Confirmation,
   type JsonValue,
   type Outgoing,
@@ -379,14 +380,17 @@ export class RosbridgeTransport extends LinkedTransport {
       });
       new ROSLIB.Service({ ros, name, serviceType }).callService(
         args,
-        (values) =>
+        (values) => {
+          const refused = serviceRefusal(name, values);
+          if (refused) return done({ status: "failed", reason: refused });
           done({
             status: "completed",
             detail: {
               response: values as Record<string, unknown>,
               confirmation: { by: "service_response", confirmed: true, source: name } satisfies Confirmation,
             },
-          }),
+          });
+        },
         (error) => done({ status: "failed", reason: String(error) }),
       );
     });
