@@ -249,14 +249,30 @@ running = false;
 await new Promise((r) => setTimeout(r, 5000));
 
 // --- the verdicts
-const logged = new Set(
-  (await db.select({ payload: trialEvents.payload }).from(trialEvents).where(eq(trialEvents.type, "action.requested")))
-    .map((r) => (r.payload as { parameters?: { text?: string } }).parameters?.text)
-    .filter(Boolean),
-);
+const events = await db
+  .select({ type: trialEvents.type, actionId: trialEvents.actionId, payload: trialEvents.payload })
+  .from(trialEvents);
+/** Each line's action, by its text; and what the log says became of each action. */
+const actionOf = new Map<string, string>();
+const outcomes = new Map<string, string[]>();
+for (const e of events) {
+  const text = (e.payload as { parameters?: { text?: string } }).parameters?.text;
+  if (e.type === "action.requested" && text && e.actionId) actionOf.set(text, e.actionId);
+  else if (e.actionId && e.type !== "action.requested")
+    outcomes.set(e.actionId, [...(outcomes.get(e.actionId) ?? []), e.type]);
+}
 const lines = [...sent.values()];
 const acked = lines.filter((l) => l.acked);
-const lost = acked.filter((l) => !logged.has(l.text));
+const lost = acked.filter((l) => !actionOf.has(l.text));
+const said = new Set([...heard.values()].flatMap((log) => log.map((h) => h.text)));
+// Never said and nothing in the log says why (not sent, outcome unknown, failed): the record would lie.
+const unexplained = acked.filter(
+  (l) =>
+    !said.has(l.text) &&
+    !(outcomes.get(actionOf.get(l.text) ?? "") ?? []).some((t) =>
+      ["action.not_sent", "action.unknown", "action.failed", "action.timed_out"].includes(t),
+    ),
+);
 let doubled = 0;
 let late = 0;
 let interleaved = 0;
@@ -290,6 +306,7 @@ const verdict = (name: string, n: number) =>
   console.log(`soak-runtimes: ${name}: ${n}  target 0: ${n === 0 ? "met" : "NOT met"}`);
 console.log(`soak-runtimes: lines sent ${lines.length}, acknowledged ${acked.length}, refused ${refused}`);
 verdict("acknowledged lines missing from the log", lost.length);
+verdict("acknowledged lines never said, with nothing in the log saying why", unexplained.length);
 verdict("lines said twice", doubled);
 verdict("emergency stops slower than 100 ms to the robot", stops.filter((s) => !(s < 100)).length);
 verdict(`lines said more than ${LATE_MS} ms after the wizard asked`, late);
