@@ -163,7 +163,9 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           )}
         </div>
         <div className="space-y-4">
-          {wizard && <RobotStatePanel name={live.robot?.name} state={live.robotState} />}
+          {wizard && (
+            <RobotStatePanel name={live.robot?.name} state={live.robotState} notStarted={status === "scheduled"} />
+          )}
           <Watching viewers={live.viewers} />
           {wizard && (
             <RecordingPanel
