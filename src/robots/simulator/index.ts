@@ -4,6 +4,7 @@ import {
   animation,
   audio,
   battery,
+  bodyJoints,
   jointStates,
   navigation,
   odometry,
@@ -18,8 +19,6 @@ import { camera } from "./camera";
 export { startSimulator, type Simulator, type SimulatorOptions, type Received } from "./server";
 export * from "./nodes";
 export { camera, CAMERA_TOPIC } from "./camera";
-
-const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 
 /** Whether the plugin drives a base (velocity commands or navigation goals): its robot then has odometry and Nav2's navigation. */
 const drives = (plugin: Plugin) =>
@@ -36,12 +35,7 @@ export function simulatedRobot(
     speech({ msPerChar }),
     animation({ durationMs: animationMs }),
     audio(),
-    jointStates({
-      hz: jointStatesHz,
-      names: NAO_JOINTS,
-      position: (_, s) => [0, s.headPitch, 1.4, 1.4],
-      velocity: [0, 0, 0, 0],
-    }),
+    bodyJoints({ hz: jointStatesHz }),
     battery({ hz: batteryHz }),
     camera(),
     robotStateReport(),
