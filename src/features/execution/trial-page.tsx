@@ -178,7 +178,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           )}
           {wizard && <SendVideo video={live.video} viewers={live.viewers} stream={camera} />}
           {!wizard && <WatchVideo video={live.video} viewers={live.viewers} />}
-          <RobotCamera onCamera={live.onCamera} />
+          <RobotCamera onCamera={live.onCamera} ended={ended} />
           {wizard && trial.participantId && !trial.isRehearsal && (
             <TrialQuestionnaires studyId={trial.studyId} trialId={trial.id} participantId={trial.participantId} />
           )}
