@@ -91,7 +91,8 @@ describe.sequential("branches that rejoin, in the browser", () => {
     await r.selectOption(preview.getByRole("combobox"), "Venus");
     await expect
       .poll(() => preview.getByRole("list", { name: "What the robot would do" }).innerText())
-      .toMatch(/1\. Question[\s\S]*2\. Response — Venus[\s\S]*3\. Goodbye[\s\S]*The trial ends\./);
+      // Numbered as the designer and the wizard's page number them: by place in the protocol, not visit order.
+      .toMatch(/1\. Question[\s\S]*3\. Response — Venus[\s\S]*5\. Goodbye[\s\S]*The trial ends\./);
     expect(await preview.innerText()).not.toContain("Response — Mars");
     await screenshot(page, "designer-rehearsal-preview");
 

@@ -77,6 +77,25 @@ describe("the simulated NAO6", () => {
     c.socket.close();
   });
 
+  it("moves its joints through a wave and back, so the joint plot shows it", async () => {
+    const loaded = loadPlugin("simulated.json", readFileSync("plugins/simulated.json", "utf8"));
+    if (!loaded.ok) throw new Error("simulated plugin");
+    sim = await startSimulator({ port: 0, nodes: simulatedRobot(loaded.value as Plugin, { jointStatesHz: 20 }) });
+    const c = await client(sim.url);
+    c.send({ op: "subscribe", topic: "/joint_states", type: "sensor_msgs/msg/JointState" });
+    const rightArm = () =>
+      c.frames
+        .filter((f) => f.topic === "/joint_states")
+        .map((f) => f.msg.position[f.msg.name.indexOf("RShoulderPitch")]);
+    await c.until(() => rightArm().length > 0);
+    c.send({ op: "publish", topic: "/gesture", msg: { data: "wave" } });
+    // Raised well above its standing angle (1.4 rad), then back down to it.
+    await c.until(() => rightArm().some((a) => a < 0));
+    await c.until(() => rightArm().at(-1) === 1.4);
+    expect(new Set(rightArm()).size).toBeGreaterThan(10);
+    c.socket.close();
+  });
+
   it("mirrors gestures into its state (the robot view reads it)", async () => {
     sim = await startSimulator({ port: 0, nodes: simulatedRobot(nao6) });
     const c = await client(sim.url);

@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { batteryLow, foldLiveState, UNKNOWN_STATE, type LiveRobotState } from "./live-state";
+import { batteryLow, carriedPosture, foldLiveState, UNKNOWN_STATE, type LiveRobotState } from "./live-state";
 import { initialState, ROBOT_STATE_TOPIC } from "./robot-state";
 
 const report = (changes: object) => ({ data: JSON.stringify({ ...initialState(), ...changes }) });
@@ -52,5 +52,21 @@ describe("the robot's live state, as the wizard sees it", () => {
     [20, false],
   ])("battery %s low: %s", (battery, low) => {
     expect(batteryLow({ ...UNKNOWN_STATE, battery })).toBe(low);
+  });
+});
+
+describe("a posture carried into the next trial", () => {
+  it.each<[string, string | undefined, LiveRobotState | null, string | null]>([
+    [
+      "sitting, as the last trial left it",
+      "NAO",
+      { ...UNKNOWN_STATE, posture: "sit" },
+      'NAO is in the posture "sit", as the last trial or session left it; it starts in "stand". Set its posture before the participant arrives if the protocol expects "stand".',
+    ],
+    ["standing, as it starts: nothing to say", "NAO", { ...UNKNOWN_STATE, posture: "stand" }, null],
+    ["a robot that reports no posture", "NAO", UNKNOWN_STATE, null],
+    ["no state yet", "NAO", null, null],
+  ])("%s", (_, name, state, notice) => {
+    expect(carriedPosture(name, state)).toBe(notice);
   });
 });

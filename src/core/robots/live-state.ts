@@ -4,7 +4,7 @@
 // (every plugin's /battery), and the simulated robot's own state report
 // (ROBOT_STATE_TOPIC). A real robot that reports no speech or posture leaves
 // those unknown (null), never guessed.
-import { ROBOT_STATE_TOPIC, type RobotState } from "./robot-state";
+import { initialState, ROBOT_STATE_TOPIC, type RobotState } from "./robot-state";
 
 export interface LiveRobotState {
   speaking: string | null;
@@ -21,6 +21,19 @@ export const LOW_BATTERY_PERCENT = 20;
 
 export function batteryLow(state: LiveRobotState): boolean {
   return state.battery !== null && state.battery < LOW_BATTERY_PERCENT;
+}
+
+/**
+ * What the wizard is told before a trial starts when the robot is not in the
+ * posture it starts in: a posture carries over from the last trial (or from
+ * anyone who moved it), and a protocol that assumes a standing robot would
+ * otherwise begin from a sitting one unannounced. Null when it is in its
+ * starting posture or does not report one.
+ */
+export function carriedPosture(name: string | undefined, state: LiveRobotState | null): string | null {
+  const starting = initialState().posture;
+  if (!state?.posture || state.posture === starting) return null;
+  return `${name ?? "The robot"} is in the posture "${state.posture}", as the last trial or session left it; it starts in "${starting}". Set its posture before the participant arrives if the protocol expects "${starting}".`;
 }
 
 /** The battery's charge in percent from a sensor_msgs/BatteryState (`percentage` is 0–1, NaN when unknown). */

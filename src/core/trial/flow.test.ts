@@ -115,4 +115,13 @@ describe("where a step leads after its actions", () => {
     expect(steps.map((s) => s.name)).toEqual(["Question", "Silent", "Goodbye"]);
     expect(steps[0]!.answer).toEqual({ actionId: "answer", optionId: "silent", label: "No answer" });
   });
+
+  // The designer and the wizard's page number a step by its place in the protocol; the rehearsal must agree.
+  it.each([
+    ["mars", [1, 2, 5]],
+    ["venus", [1, 3, 5]],
+    ["silent", [1, 4, 5]],
+  ])("a rehearsal numbers each step by its place in the protocol, not its visit order: %s", (answer, numbers) => {
+    expect(rehearse(quiz(), { answer }).steps.map((s) => s.number)).toEqual(numbers);
+  });
 });

@@ -9,6 +9,8 @@ import type { Command, ProtocolAction, TrialProtocol, TrialState } from "./types
 export interface RehearsedStep {
   stepId: string;
   name: string;
+  /** The step's number in the protocol (1-based), as the designer and the wizard's page show it, not the order of visits. */
+  number: number;
   /** Actions in the order the engine requests them; those of one unit start together. */
   units: ProtocolAction[][];
   /** The answer recorded in this step, if it asks a question. */
@@ -35,8 +37,8 @@ export function rehearse(protocol: TrialProtocol, answers: Record<string, string
     for (const event of decision.events) {
       state = apply(state, { ...event, seq: ++seq, relMs: seq });
       if (event.type === "step.entered") {
-        const step = findStep(protocol, event.stepId)!.step;
-        steps.push({ stepId: step.id, name: step.name, units: [] });
+        const { step, index } = findStep(protocol, event.stepId)!;
+        steps.push({ stepId: step.id, name: step.name, number: index + 1, units: [] });
       }
       if (event.type === "action.requested" && event.scripted) {
         const action = findStep(protocol, event.stepId)!.step.actions.find((a) => a.id === event.actionId)!;

@@ -67,7 +67,7 @@ export function RehearsalPreview({
           {result.rehearsal.steps.map((step, i) => (
             <li key={`${step.stepId}-${i}`} className="rounded-md border border-slate-200 bg-white p-3">
               <p className="text-sm font-semibold">
-                {i + 1}. {step.name}
+                {step.number}. {step.name}
               </p>
               <ol className="mt-1 list-inside list-decimal text-sm text-slate-800">
                 {step.units.map((unit) => (

@@ -2,10 +2,20 @@
 // whether it is speaking (and what), its gesture, posture and battery, with a
 // warning when the battery is low. What the robot does not report is "not
 // reported", never guessed.
-import { batteryLow, LOW_BATTERY_PERCENT, type LiveRobotState } from "@/core/robots/live-state";
+import { batteryLow, carriedPosture, LOW_BATTERY_PERCENT, type LiveRobotState } from "@/core/robots/live-state";
 import { Card } from "@/ui/surface";
 
-export function RobotStatePanel({ name, state }: { name: string | undefined; state: LiveRobotState | null }) {
+export function RobotStatePanel({
+  name,
+  state,
+  notStarted,
+}: {
+  name: string | undefined;
+  state: LiveRobotState | null;
+  /** Before the trial starts the wizard is told of a posture the last trial left. */
+  notStarted: boolean;
+}) {
+  const carried = notStarted ? carriedPosture(name, state) : null;
   const unknown = <span className="text-slate-500">not reported</span>;
   return (
     <Card className="p-4 text-sm">
@@ -20,6 +30,11 @@ export function RobotStatePanel({ name, state }: { name: string | undefined; sta
       {state && batteryLow(state) && (
         <p role="alert" data-testid="battery-low" className="mb-2 rounded bg-red-50 px-2 py-1 text-red-800">
           Battery low ({state.battery} %, below {LOW_BATTERY_PERCENT} %): charge the robot before the next session.
+        </p>
+      )}
+      {carried && (
+        <p role="status" data-testid="posture-carried" className="mb-2 rounded bg-amber-50 px-2 py-1 text-amber-900">
+          {carried}
         </p>
       )}
       <dl className="grid grid-cols-[5.5rem_1fr] gap-y-1">

@@ -163,7 +163,9 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           )}
         </div>
         <div className="space-y-4">
-          {wizard && <RobotStatePanel name={live.robot?.name} state={live.robotState} />}
+          {wizard && (
+            <RobotStatePanel name={live.robot?.name} state={live.robotState} notStarted={status === "scheduled"} />
+          )}
           <Watching viewers={live.viewers} />
           {wizard && (
             <RecordingPanel
@@ -176,7 +178,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           )}
           {wizard && <SendVideo video={live.video} viewers={live.viewers} stream={camera} />}
           {!wizard && <WatchVideo video={live.video} viewers={live.viewers} />}
-          <RobotCamera onCamera={live.onCamera} />
+          <RobotCamera onCamera={live.onCamera} ended={ended} />
           {wizard && trial.participantId && !trial.isRehearsal && (
             <TrialQuestionnaires studyId={trial.studyId} trialId={trial.id} participantId={trial.participantId} />
           )}

@@ -3,7 +3,7 @@
 // a glance that it is recording and that its parts reach the server. A page
 // opened again after the last one closed mid-recording says what was kept.
 import { Circle, Square, Video } from "lucide-react";
-import { useEffect, useState } from "react";
+import { useEffect, useRef, useState } from "react";
 import { Button } from "@/ui/button";
 import { NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
@@ -36,6 +36,11 @@ export function RecordingPanel({
   const microphones = recorder.devices.filter((d) => d.kind === "audioinput");
   const active = recorder.state === "recording" || recorder.state === "finishing";
   const cutOff = useCutOff(trialId, !active && recorder.state !== "starting");
+  // The wizard sees what their camera records, muted so the room does not echo.
+  const selfView = useRef<HTMLVideoElement>(null);
+  useEffect(() => {
+    if (selfView.current) selfView.current.srcObject = recorder.stream;
+  }, [recorder.stream]);
   return (
     <Card className="space-y-3 p-4 text-sm">
       <h2 className="flex items-center gap-2 font-semibold">
@@ -83,6 +88,17 @@ export function RecordingPanel({
             {cutOff.words && !ended ? "Record again" : "Start recording"}
           </Button>
         </>
+      )}
+      {recorder.stream && (
+        <video
+          ref={selfView}
+          data-testid="self-view"
+          aria-label="Your camera, as it is recorded"
+          autoPlay
+          muted
+          playsInline
+          className="w-32 rounded bg-black"
+        />
       )}
       {active && (
         <>

@@ -4,6 +4,7 @@ import {
   animation,
   audio,
   battery,
+  bodyJoints,
   jointStates,
   navigation,
   odometry,
@@ -19,8 +20,6 @@ import { pluginServices } from "./plugin-services";
 export { startSimulator, type Simulator, type SimulatorOptions, type Received } from "./server";
 export * from "./nodes";
 export { camera, CAMERA_TOPIC } from "./camera";
-
-const NAO_JOINTS = ["HeadYaw", "HeadPitch", "LShoulderPitch", "RShoulderPitch"];
 
 /** Whether the plugin drives a base (velocity commands or navigation goals): its robot then has odometry and Nav2's navigation. */
 const drives = (plugin: Plugin) =>
@@ -38,12 +37,7 @@ export function simulatedRobot(
     speech({ msPerChar }),
     animation({ durationMs: animationMs }),
     audio(),
-    jointStates({
-      hz: jointStatesHz,
-      names: NAO_JOINTS,
-      position: (_, s) => [0, s.headPitch, 1.4, 1.4],
-      velocity: [0, 0, 0, 0],
-    }),
+    bodyJoints({ hz: jointStatesHz }),
     battery({ hz: batteryHz }),
     camera(),
     robotStateReport(),

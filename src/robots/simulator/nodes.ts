@@ -2,6 +2,7 @@
 // state and answer what clients send. Each returns a function that stops it.
 import { type Plugin, reachableNames } from "../../core/plugins";
 import { began, ROBOT_STATE_TOPIC, type RobotState } from "../../core/robots/robot-state";
+import { anglesAt, BODY_JOINTS, gestureBegun, postureChosen, still } from "./body-motion";
 import type { RosGraph } from "./graph";
 
 export type RobotNode = (graph: RosGraph, state: RobotState) => () => void;
@@ -142,6 +143,38 @@ export function jointStates({
       });
     }, 1000 / hz);
     return () => clearInterval(timer);
+  };
+}
+
+/**
+ * The body's joints on /joint_states at `hz`, moved through each gesture,
+ * animation and posture (body-motion.ts), so a joint plot shows what the
+ * robot did. A posture is read from the state (a topic or an SSH command may
+ * set it); a gesture from its topic, since the same one twice changes no state.
+ * A head pitch sent on /joint_angles adds to the posture's.
+ */
+export function bodyJoints({ hz = 10 } = {}): RobotNode {
+  return (graph, state) => {
+    let seconds = 0;
+    let motion = still(state.posture);
+    const begin = (m: Record<string, unknown>) => void (motion = gestureBegun(motion, String(m.data), seconds));
+    const stops = [graph.listen("/gesture", begin), graph.listen("/animation", begin)];
+    const publisher = jointStates({
+      hz,
+      names: BODY_JOINTS,
+      position: (n, s) => {
+        seconds = n / hz;
+        if (s.posture !== motion.posture) motion = postureChosen(motion, s.posture, seconds);
+        const angles = anglesAt(motion, seconds);
+        angles[1]! += s.headPitch;
+        return angles;
+      },
+      velocity: [0, 0, 0, 0],
+    })(graph, state);
+    return () => {
+      stops.forEach((stop) => stop());
+      publisher();
+    };
   };
 }
 
