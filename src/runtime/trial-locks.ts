@@ -6,7 +6,10 @@
 // the new session, and a trial whose lock another process took meanwhile is
 // given up, so two processes never run one trial. A lock query on a
 // connection that died under it can fail, or never answer at all: either way
-// the client is dropped and the query runs once more on a new one.
+// the client is dropped and the query runs once more on a new one. While
+// locks are held, the session is asked for its id every second too, so a
+// lock lost while nothing else happens is found (and its trial given up, its
+// clients told) within about a second, not at the next trial opened.
 import type postgres from "postgres";
 import { answered as within, connectionLost } from "@/store/client";
 
@@ -28,6 +31,7 @@ export function trialLocks(
   let sessionId: number | null = null;
   // One operation at a time, so a session change is noticed and mended before the next.
   let queue: Promise<unknown> = Promise.resolve();
+  let watching = false;
 
   const tryLock = async (trialId: string) => {
     const [row] = await session<[{ ok: boolean; pid: number }]>`
@@ -70,6 +74,21 @@ export function trialLocks(
     return run;
   };
 
+  const watch = setInterval(() => {
+    if (!held.size || watching) return;
+    watching = true;
+    void serial(async () => {
+      const [row] = await retried(() => session<[{ pid: number }]>`select pg_backend_pid() as pid`);
+      await mend(row.pid);
+    })
+      // The database away: asked again next time; the hosts' appends fail meanwhile on their own.
+      .catch(() => {})
+      .finally(() => {
+        watching = false;
+      });
+  }, WATCH_MS);
+  watch.unref?.();
+
   return {
     take: (trialId) =>
       serial(async () => {
@@ -91,10 +110,14 @@ export function trialLocks(
         await mend(row.pid);
       }),
     async close() {
+      clearInterval(watch);
       held.clear();
       await session.end({ timeout: 5 });
     },
   };
 }
+
+/** How often a session holding locks is asked whether it is still the one that took them. */
+const WATCH_MS = 1000;
 
 const answered = <T>(query: Promise<T>) => within(query, "The lock connection did not answer.");
