@@ -20,8 +20,9 @@
 // (its connection ended, the database restarted, the process frozen) writes
 // nothing and, as it sends the robot only what it has just logged, commands
 // the robot no more: its host closes and its clients follow the new owner.
+// Each send also waits until the process knows it still holds the lock
+// (`fencedRobot`): a process thawed after a freeze asks before it sends.
 import { eq } from "drizzle-orm";
-import type postgres from "postgres";
 import { checkingStart, type Plugin } from "@/core/plugins";
 import { sliced } from "@/store/sliced";
 import type { Database } from "@/store/client";
@@ -33,7 +34,8 @@ import { takeTrial } from "@/store/event-store";
 import type { LiveRobotState } from "@/core/robots/live-state";
 import type { RobotLink } from "./robot";
 import { unavailableRobot } from "./robot-link";
-import { trialLocks } from "./trial-locks";
+import { type NewSession, trialLocks } from "./trial-locks";
+import { fencedRobot } from "./fenced-robot";
 import { robotClaims, type RobotClaims } from "./robot-claims";
 import { logUnexpected } from "@/store/error-reference";
 import { TrialHost, type CommandResult } from "./trial-host";
@@ -61,7 +63,7 @@ export interface TrialHosts {
 export function trialHosts(
   db: Database,
   /** Makes the trials' lock connection (`createSessionClient`), again whenever the one before died; closed with the hosts. */
-  lockSession: () => postgres.Sql,
+  lockSession: NewSession,
   /**
    * The link to a trial's robot: `plugin` is the trial's plugin document (null when none is installed for
    * `robotId`), `robot` the registered robot it drives, or why it has none.
@@ -165,7 +167,7 @@ export function trialHosts(
       const choice = await chooseRobot(trialId, chosen.robotId);
       registered = choice.ok ? choice.robot : null;
       try {
-        robot = await robotFor(chosen.plugin, chosen.robotId, choice);
+        robot = fencedRobot(await robotFor(chosen.plugin, chosen.robotId, choice), () => locks.owns(trialId));
       } catch (error) {
         letGo(trialId);
         throw error;
