@@ -1,10 +1,10 @@
 // The trial's append-only log in PostgreSQL. An event exists once its
 // transaction commits; only then may anyone be told about it.
-import { and, asc, eq, gt, inArray, isNotNull, lte, max, sql } from "drizzle-orm";
+import { and, asc, eq, gt, inArray, isNotNull, lte, max } from "drizzle-orm";
 import type { EngineEvent, StoredEvent, TrialEvent } from "@/core/trial";
 import type { Database } from "./client";
 import { keyedPages } from "./pages";
-import { trialEvents, trials } from "./schema";
+import { trialEvents, type trials } from "./schema";
 
 export const NOTIFY_CHANNEL = "hri_trial_events";
 
@@ -49,15 +49,19 @@ export const fencedOut = (error: unknown) => (error as { code?: string } | null)
 
 /**
  * The trial taken by a runtime process that now holds its lock: its epoch,
- * one more than the last owner's, whose appends are refused from now on.
- * Null when the trial does not exist.
+ * one more than the last owner's, whose appends are refused from now on. A
+ * finished trial's is left as it is (nothing drives its robot; its row is
+ * not written by opening it). Null when the trial does not exist.
  */
 export async function takeTrial(db: Database, trialId: string): Promise<number | null> {
-  const [row] = await db
-    .update(trials)
-    .set({ ownerEpoch: sql`${trials.ownerEpoch} + 1` })
-    .where(eq(trials.id, trialId))
-    .returning({ epoch: trials.ownerEpoch });
+  const client = db.$client;
+  const [row] = await client<[{ epoch: number | null }]>`
+    with bumped as (
+      update trials set owner_epoch = owner_epoch + 1
+      where id = ${trialId} and status not in ('completed', 'aborted')
+      returning owner_epoch
+    )
+    select coalesce((select owner_epoch from bumped), (select owner_epoch from trials where id = ${trialId})) as epoch`;
   return row?.epoch ?? null;
 }
 
