@@ -11,12 +11,14 @@ const log = (line: string) => console.log(`[test] ${line}`);
 
 /**
  * The Debian packages the tests drive for real: Chromium, an sshd for the SSH
- * transport, and Python with venv (Debian keeps ensurepip in python3-venv) for
- * the reference tools of tests/python.
+ * transport, HAProxy in front of several runtimes (deploy/haproxy.cfg), and
+ * Python with venv (Debian keeps ensurepip in python3-venv) for the reference
+ * tools of tests/python.
  */
 const NEEDS = [
   { package: "chromium", present: () => Boolean(findChromium()), hint: "or set HRI_CHROMIUM to a Chromium binary" },
   { package: "openssh-server", present: () => existsSync("/usr/sbin/sshd"), hint: "for the SSH transport's tests" },
+  { package: "haproxy", present: () => existsSync("/usr/sbin/haproxy"), hint: "for the several-runtimes proxy test" },
   {
     package: "python3-venv",
     present: () => spawnSync("python3", ["-c", "import ensurepip, venv"]).status === 0,

@@ -57,7 +57,7 @@ let announceRobot: (trialId: string, connected: boolean, detail?: string) => voi
 let announceRobotState: (trialId: string, state: LiveRobotState) => void = () => {};
 const hosts = trialHosts(
   db,
-  () => createSessionClient(databaseUrl),
+  (closed) => createSessionClient(databaseUrl, closed),
   robotFor,
   (...args) => announceRobot(...args),
   config.HRI_TRIAL_IDLE_SECONDS * 1000,

@@ -6,10 +6,9 @@
 // a session of its own). A claim is taken before looking for a live trial on
 // the robot, so a trial starting in one process and a replay in another never
 // both find it free.
-import type postgres from "postgres";
 import type { RobotHolder } from "@/core/robots/registry";
 import { logUnexpected } from "@/store/error-reference";
-import { trialLocks } from "./trial-locks";
+import { type NewSession, trialLocks } from "./trial-locks";
 
 export type Claim = { ok: true; release: () => void } | { ok: false; holder: RobotHolder };
 
@@ -23,7 +22,7 @@ export interface RobotClaims {
 const PREFIX = "robot:";
 const key = (robotId: string) => `${PREFIX}${robotId}`;
 
-export function robotClaims(newSession: () => postgres.Sql): RobotClaims {
+export function robotClaims(newSession: NewSession): RobotClaims {
   const held = new Map<string, { holder: RobotHolder; lost?: () => void }>();
   const locks = trialLocks(newSession, (locked) => {
     const robotId = locked.slice(PREFIX.length);

@@ -236,9 +236,20 @@ export function startRuntimeServer({
       const status = events.reduce((s, e) => STATUS_AFTER[e.type] ?? s, now.trial.status);
       if (status !== now.trial.status) ws.data.access = { ...now, trial: { ...now.trial, status } };
     };
-    const push = (events: StoredEvent[]) => (held ? held.push(events) : deliver(events));
-    // Owned here: straight from the host. Owned by another process: through the relay.
-    ws.data.unsubscribe = host ? host.subscribe(push) : relay.follow(trialId, log.at(-1)?.seq ?? lastSeq, push);
+    let seen = log.at(-1)?.seq ?? lastSeq;
+    const push = (events: StoredEvent[]) => {
+      seen = events.at(-1)?.seq ?? seen;
+      if (held) held.push(events);
+      else deliver(events);
+    };
+    // Owned here: straight from the host, until it closes (another process took the trial over, or it
+    // ended): then, as from the start when another process owns it, through the relay.
+    const follow = () => {
+      if (ws.data.closed) return;
+      ws.data.unsubscribe = relay.follow(trialId, seen, push);
+      if (mayRun(ws.data.access!)) ws.data.releaseStop ??= stops.hold(trialId);
+    };
+    ws.data.unsubscribe = host ? host.subscribe(push, follow) : relay.follow(trialId, seen, push);
     const events = await eventsJson(shown);
     if (ws.data.closed) return;
     const now = ws.data.access;

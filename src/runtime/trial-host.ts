@@ -13,7 +13,7 @@ import {
   type TrialState,
 } from "@/core/trial";
 import { type Database, neverReachedDatabase } from "@/store/client";
-import { answeredRequests, eventPages, eventsSince, type TrialCursor } from "@/store/event-store";
+import { answeredRequests, eventPages, eventsSince, fencedOut, type TrialCursor } from "@/store/event-store";
 import { directWriter, type LogWriter } from "./log-writer";
 import { logUnexpected } from "@/store/error-reference";
 import { areTheseEvents } from "@/core/trial/landed";
@@ -29,6 +29,12 @@ function startedAt(events: StoredEvent[]): number | null {
 }
 
 export type CommandResult = { ok: true; seqs: number[] } | { ok: false; reason: string };
+
+/** The ownership a host writes under: its epoch (`takeTrial`), and whom to tell once another process took the trial. */
+export interface Ownership {
+  epoch: number;
+  lost: () => void;
+}
 
 /**
  * A wizard's request: its id is the command's idempotency key; `retry` asks again after a dropped connection;
@@ -64,6 +70,9 @@ const STOP_UNCONFIRMED =
   "The robot was stopped, but the trial log did not confirm the stop: should it take it late, it appears there.";
 const LOG_MOVED =
   "Not carried out: an earlier command reached the trial log late and is shown there now. Check the log before asking again.";
+
+const TAKEN_OVER =
+  "Not carried out: another runtime process took this trial over a moment ago, so nothing was logged and the robot was not told. Ask again: it goes to that process.";
 
 const NEVER_ARRIVED =
   "Not carried out: the connection dropped before this reached the trial. Ask again if you still want it.";
@@ -129,8 +138,11 @@ function answeredBy(run: Promise<CommandResult>, at: number): Promise<CommandRes
 export class TrialHost {
   private readonly state: TrialState;
   private queue: Promise<unknown> = Promise.resolve();
-  private readonly listeners = new Set<(events: StoredEvent[]) => void>();
+  /** Each client's listener, and what it does once this host closes (follow the trial from elsewhere). */
+  private readonly listeners = new Map<(events: StoredEvent[]) => void, () => void>();
   private shut = false;
+  /** Another process took the trial after this host did: this one writes and sends nothing more. */
+  private fenced = false;
   /** How many times the robot was stopped outside the queue: commands asked for before a stop are dropped. */
   private halts = 0;
   /** Whether the write under way has outlasted the log's deadline while this process ran (see `watchWrite`). */
@@ -169,6 +181,7 @@ export class TrialHost {
     history: StoredEvent[],
     state: TrialState,
     private readonly log: LogWriter,
+    private readonly ownership: Ownership | null,
   ) {
     this.state = state;
     this.t0 = startedAt(history);
@@ -200,6 +213,8 @@ export class TrialHost {
     protocol: TrialProtocol,
     robot: RobotLink,
     log: LogWriter = directWriter(db),
+    /** Null for a host that is no process's owner (tests, tools): its appends are not fenced. */
+    ownership: Ownership | null = null,
   ) {
     // Read and folded a page at a time: between pages, the event loop serves the other trials of this process.
     const history: StoredEvent[] = [];
@@ -208,7 +223,7 @@ export class TrialHost {
       for (const event of page) history.push(event);
       applyInPlace(state, page);
     }
-    const host = new TrialHost(db, trialId, protocol, robot, history, state, log);
+    const host = new TrialHost(db, trialId, protocol, robot, history, state, log, ownership);
     for (const [id, seqs] of await answeredRequests(db, trialId))
       host.requests.set(id, Promise.resolve({ ok: true, seqs }));
     const interrupted = Object.entries(host.state.actions).filter(
@@ -245,8 +260,9 @@ export class TrialHost {
     return this.state;
   }
 
-  subscribe(listener: (events: StoredEvent[]) => void) {
-    this.listeners.add(listener);
+  /** `moved`: this host closed, the client must follow the trial another way (the relay) from what it has. */
+  subscribe(listener: (events: StoredEvent[]) => void, moved: () => void = () => {}) {
+    this.listeners.set(listener, moved);
     return () => {
       if (this.listeners.delete(listener) && this.listeners.size === 0) this.lifecycle.unwatched();
     };
@@ -341,7 +357,8 @@ export class TrialHost {
     moment: number,
   ): Promise<CommandResult> {
     // A robot's late report, or a clock, after the host closed: the trial is no longer run from here.
-    if (this.shut) return { ok: false, reason: "This trial is no longer open here. Reload the page." };
+    if (this.shut)
+      return { ok: false, reason: this.fenced ? TAKEN_OVER : "This trial is no longer open here. Reload the page." };
     const before = this.overtaken(command, halts, asked);
     if (before) return { ok: false, reason: before === "stopped" ? NOT_CARRIED_OUT : LOG_UNAVAILABLE };
     const stale = staleness(command.kind, moment, Date.now());
@@ -350,6 +367,7 @@ export class TrialHost {
     if (!decision.ok) return decision;
     const written = await this.write(() => decision.events, actorId, requestId);
     const halting = command.kind === "emergency_stop" || command.kind === "abort";
+    if (written === "fenced") return { ok: false, reason: TAKEN_OVER };
     if (written === "refused") return { ok: false, reason: halting ? STOP_NOT_LOGGED : LOG_UNAVAILABLE };
     if (written === "unknown") return { ok: false, reason: halting ? STOP_UNCONFIRMED : NOT_ANSWERED };
     if (written.earlier) {
@@ -409,7 +427,7 @@ export class TrialHost {
     );
     // The log is away: like any command refused, the reports are not in it (an action left running is
     // marked failed when the trial is opened again).
-    if (written === "refused" || written === "unknown") return;
+    if (written === "refused" || written === "unknown" || written === "fenced") return;
     if (written.earlier) {
       this.take(written.events, NOT_SENT.late);
       return this.writeReports(together);
@@ -441,7 +459,7 @@ export class TrialHost {
     this.opening?.push(...stored);
     applyInPlace(this.state, stored);
     this.t0 ??= startedAt(stored);
-    for (const listener of this.listeners) listener(stored);
+    for (const listener of this.listeners.keys()) listener(stored);
     if (withheld) this.withhold(stored, withheld);
     else this.carryOut(stored, moment);
     if (this.state.status === "completed" || this.state.status === "aborted") this.lifecycle.ended();
@@ -455,17 +473,24 @@ export class TrialHost {
    * command's (taken as its outcome, never written twice), or an earlier
    * command's that landed late (`earlier`). "refused" when the statement
    * never reached the database; "unknown" when the log cannot be read either:
-   * a later append meets whatever landed.
+   * a later append meets whatever landed. "fenced" when another process has
+   * taken the trial since this host did: what is past the cursor is its, and
+   * this host writes nothing and sends the robot nothing again.
    */
   private async write(
     decideEvents: () => EngineEvent[],
     actorId: string | null,
     requestId: string | null,
-  ): Promise<{ events: StoredEvent[]; earlier: boolean } | "refused" | "unknown"> {
+  ): Promise<{ events: StoredEvent[]; earlier: boolean } | "refused" | "unknown" | "fenced"> {
     let cursor: TrialCursor | null = null;
     let events: EngineEvent[] = [];
     const append = () => {
-      cursor = { id: this.trialId, lastSeq: this.state.lastSeq, t0: this.t0 === null ? null : new Date(this.t0) };
+      cursor = {
+        id: this.trialId,
+        lastSeq: this.state.lastSeq,
+        t0: this.t0 === null ? null : new Date(this.t0),
+        ...(this.ownership ? { epoch: this.ownership.epoch } : {}),
+      };
       events = decideEvents();
       return { cursor, events, actorId, requestId };
     };
@@ -473,6 +498,12 @@ export class TrialHost {
     try {
       return { events: await this.log.append(append), earlier: false };
     } catch (error) {
+      if (fencedOut(error)) {
+        this.fenced = true;
+        this.shut = true;
+        this.ownership?.lost();
+        return "fenced";
+      }
       // Never made up (no cursor): the writer sent nothing of it.
       if (neverReachedDatabase(error) || cursor === null) return "refused";
       const after = (cursor as TrialCursor).lastSeq;
@@ -567,6 +598,10 @@ export class TrialHost {
 
   async close() {
     this.shut = true;
+    // Its clients still follow the trial, from whichever process runs it now.
+    const moved = [...this.listeners.values()];
+    this.listeners.clear();
+    for (const move of moved) move();
     for (const t of this.timers) clearTimeout(t);
     this.stopWatching();
     this.stopCamera?.();

@@ -13,8 +13,16 @@
 // a replay holds the trial's robot, and while another live trial does (the
 // database; its unique index is the last word when two processes start at the
 // same moment).
+//
+// Taking a trial's lock also moves its epoch on (`takeTrial`): every append
+// of the host carries the epoch it was opened with and is refused once
+// another process has taken the trial since, so a process that lost its lock
+// (its connection ended, the database restarted, the process frozen) writes
+// nothing and, as it sends the robot only what it has just logged, commands
+// the robot no more: its host closes and its clients follow the new owner.
+// Each send also waits until the process knows it still holds the lock
+// (`fencedRobot`): a process thawed after a freeze asks before it sends.
 import { eq } from "drizzle-orm";
-import type postgres from "postgres";
 import { checkingStart, type Plugin } from "@/core/plugins";
 import { sliced } from "@/store/sliced";
 import type { Database } from "@/store/client";
@@ -22,10 +30,12 @@ import { experimentVersions, trials } from "@/store/schema";
 import { trialPlugin } from "@/robots/trial-plugin";
 import { isRobotTakenError, robotHeldBy, robotOfTrial, secretOf, type RobotRecord } from "@/robots/registry";
 import { robotClaimed, robotTaken } from "@/core/robots/registry";
+import { takeTrial } from "@/store/event-store";
 import type { LiveRobotState } from "@/core/robots/live-state";
 import type { RobotLink } from "./robot";
 import { unavailableRobot } from "./robot-link";
-import { trialLocks } from "./trial-locks";
+import { type NewSession, trialLocks } from "./trial-locks";
+import { fencedRobot } from "./fenced-robot";
 import { robotClaims, type RobotClaims } from "./robot-claims";
 import { logUnexpected } from "@/store/error-reference";
 import { TrialHost, type CommandResult } from "./trial-host";
@@ -53,7 +63,7 @@ export interface TrialHosts {
 export function trialHosts(
   db: Database,
   /** Makes the trials' lock connection (`createSessionClient`), again whenever the one before died; closed with the hosts. */
-  lockSession: () => postgres.Sql,
+  lockSession: NewSession,
   /**
    * The link to a trial's robot: `plugin` is the trial's plugin document (null when none is installed for
    * `robotId`), `robot` the registered robot it drives, or why it has none.
@@ -93,7 +103,9 @@ export function trialHosts(
   async function open(trialId: string) {
     if (!(await locks.take(trialId))) return null;
     try {
-      return await hostFor(trialId);
+      const epoch = await takeTrial(db, trialId);
+      if (epoch === null) throw new Error("This trial no longer exists.");
+      return await hostFor(trialId, epoch);
     } catch (error) {
       // Refused, not owned: another attempt (or process) may take it once the cause is fixed.
       await locks.release(trialId);
@@ -105,7 +117,8 @@ export function trialHosts(
   async function chooseRobot(trialId: string, robotId: string) {
     let taken: Held | null = null;
     const made = await robotOfTrial(db, trialId, robotId, async (robot) => {
-      const claim = await claims.take(robot.id, "open trial");
+      // Lost with its session to another process: that one may drive the robot now, this one must not.
+      const claim = await claims.take(robot.id, "open trial", () => robotLost(trialId, robot.name));
       if (claim.ok) taken = { robotId: robot.id, release: claim.release };
       return claim.ok;
     });
@@ -120,7 +133,16 @@ export function trialHosts(
     claimOf.delete(trialId);
   };
 
-  async function hostFor(trialId: string) {
+  /** The open trial's robot claimed elsewhere: its host closes (its robot link with it), and the wizard is told. */
+  function robotLost(trialId: string, name: string) {
+    onRobotStatus(trialId, false, robotClaimed(name, "elsewhere"));
+    void hosts
+      .get(trialId)
+      ?.then((host) => host && retire(trialId, host))
+      .catch(retireFailed);
+  }
+
+  async function hostFor(trialId: string, epoch: number) {
     const [row] = await db
       .select({ snapshot: experimentVersions.snapshot, rehearsal: trials.rehearsalSnapshot, status: trials.status })
       .from(trials)
@@ -145,15 +167,17 @@ export function trialHosts(
       const choice = await chooseRobot(trialId, chosen.robotId);
       registered = choice.ok ? choice.robot : null;
       try {
-        robot = await robotFor(chosen.plugin, chosen.robotId, choice);
+        robot = fencedRobot(await robotFor(chosen.plugin, chosen.robotId, choice), () => locks.owns(trialId));
       } catch (error) {
         letGo(trialId);
         throw error;
       }
     }
     let host: TrialHost;
+    // Fenced out (another process took the trial since): closed here, the lock given back if held again.
+    const ownership = { epoch, lost: () => void retire(trialId, host, true).catch(retireFailed) };
     try {
-      host = await TrialHost.open(db, trialId, protocol, robot, log);
+      host = await TrialHost.open(db, trialId, protocol, robot, log, ownership);
     } catch (error) {
       letGo(trialId);
       throw error;

@@ -30,8 +30,19 @@ export function createDatabase(url: string, options: { max?: number } = {}) {
  * session does (advisory locks). If it drops, the next query opens a new one,
  * and the caller sees the change in `pg_backend_pid()`.
  */
-export function createSessionClient(url: string) {
-  return postgres(url, { max: 1, max_lifetime: null, idle_timeout: 0, onnotice: () => {}, ...RECONNECT });
+export function createSessionClient(
+  url: string,
+  /** Told as soon as its connection closes (ended by the server, a restart, a network loss): its session went with it. */
+  closed: () => void = () => {},
+) {
+  return postgres(url, {
+    max: 1,
+    max_lifetime: null,
+    idle_timeout: 0,
+    onnotice: () => {},
+    onclose: () => closed(),
+    ...RECONNECT,
+  });
 }
 
 /**

@@ -4,12 +4,15 @@ import { bareTrial, freshDatabase } from "../../tests/support/db";
 import { trials } from "./schema";
 import {
   appendEvents,
+  appendMany,
   eventPages,
   eventsOfTrials,
   eventsSince,
+  fencedOut,
   foldableEventsOfTrials,
   lastSeqOf,
   NOTIFY_CHANNEL,
+  takeTrial,
   type TrialCursor,
   trialLog,
 } from "./event-store";
@@ -168,5 +171,22 @@ describe("the trial event store", async () => {
     for (let i = 0; i < 50 && heard.length === 0; i++) await new Promise((r) => setTimeout(r, 20));
     await listener.unlisten();
     expect(heard).toContain(`${trialId}:2`);
+  });
+
+  it("refuses, whole, an append of an owner another process has taken the trial from since", async () => {
+    const [kept, taken] = [await newTrial(), await newTrial()];
+    const [oldEpoch, keptEpoch] = [await takeTrial(db, taken), await takeTrial(db, kept)];
+    const newEpoch = await takeTrial(db, taken);
+    expect(newEpoch).toBe(oldEpoch! + 1);
+    const note = (text: string) => [{ type: "note.added" as const, text }];
+    // Two trials in one statement, as the group writer sends them: the stale owner's fails both.
+    const stale = appendMany(db, [
+      { cursor: { ...(await cursor(kept)), epoch: keptEpoch! }, events: note("kept"), actorId: null },
+      { cursor: { ...(await cursor(taken)), epoch: oldEpoch! }, events: note("late"), actorId: null },
+    ]);
+    await expect(stale.catch((e: unknown) => fencedOut(e))).resolves.toBe(true);
+    expect([await lastSeqOf(db, kept), await lastSeqOf(db, taken)]).toEqual([0, 0]);
+    await appendEvents(db, { ...(await cursor(taken)), epoch: newEpoch! }, note("new owner"), null);
+    expect((await trialLog(db, taken)).map((e) => e.type === "note.added" && e.text)).toEqual(["new owner"]);
   });
 });

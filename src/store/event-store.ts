@@ -38,6 +38,31 @@ export interface TrialCursor {
   id: string;
   lastSeq: number;
   t0: Date | null;
+  /** The owner's epoch (`takeTrial`): its append is refused once another process has taken the trial. */
+  epoch?: number;
+}
+
+/** Why an owner's append was refused: another process took the trial after it (raised by `hri_fenced`). */
+const FENCED = "HR409";
+
+export const fencedOut = (error: unknown) => (error as { code?: string } | null)?.code === FENCED;
+
+/**
+ * The trial taken by a runtime process that now holds its lock: its epoch,
+ * one more than the last owner's, whose appends are refused from now on. A
+ * finished trial's is left as it is (nothing drives its robot; its row is
+ * not written by opening it). Null when the trial does not exist.
+ */
+export async function takeTrial(db: Database, trialId: string): Promise<number | null> {
+  const client = db.$client;
+  const [row] = await client<[{ epoch: number | null }]>`
+    with bumped as (
+      update trials set owner_epoch = owner_epoch + 1
+      where id = ${trialId} and status not in ('completed', 'aborted')
+      returning owner_epoch
+    )
+    select coalesce((select owner_epoch from bumped), (select owner_epoch from trials where id = ${trialId})) as epoch`;
+  return row?.epoch ?? null;
 }
 
 /** One trial's share of a write: its events, after its cursor, by whom, answering which request. */
@@ -77,7 +102,12 @@ export async function appendMany(
 ): Promise<StoredEvent[][]> {
   const at = now();
   const rows: Array<Omit<ReturnType<typeof rowOf>, "payload"> & { payload: string }> = [];
-  const moves = { id: [] as string[], t0: [] as Array<string | null>, status: [] as Array<string | null> };
+  const moves = {
+    id: [] as string[],
+    t0: [] as Array<string | null>,
+    status: [] as Array<string | null>,
+    epoch: [] as Array<string | null>,
+  };
   const notices: string[] = [];
   const stored = appends.map(({ cursor, events, actorId, requestId }) => {
     let t0 = cursor.t0;
@@ -92,6 +122,7 @@ export async function appendMany(
       moves.id.push(cursor.id);
       moves.t0.push(t0?.toISOString() ?? null);
       moves.status.push(status);
+      moves.epoch.push(cursor.epoch === undefined ? null : String(cursor.epoch));
       notices.push(`${cursor.id}:${cursor.lastSeq + mine.length}`);
     }
     return mine.map((r) => ({
@@ -106,7 +137,8 @@ export async function appendMany(
   if (rows.length === 0) return stored;
   const client = db.$client;
   // Values go as text, cast by column (Drizzle's client leaves serialising to Drizzle); the trials move
-  // by one row each, from parallel arrays.
+  // by one row each, from parallel arrays. A trial whose epoch moved on (another process took it) is not
+  // moved, and the statement fails whole: the update waits for a takeover under way, then sees its epoch.
   await client`
     with appended as (
       insert into trial_events ${client(rows, "trial_id", "seq", "type", "server_time", "rel_ms", "actor_id", "step_id", "action_id", "payload", "deviation", "request_id")}
@@ -115,10 +147,12 @@ export async function appendMany(
         t0 = coalesce(trials.t0, v.t0::timestamptz),
         status = coalesce(v.status, trials.status),
         ended_at = case when v.status in ('completed', 'aborted') then coalesce(trials.ended_at, ${at.toISOString()}::timestamptz) else trials.ended_at end
-      from unnest(${moves.id}::text[], ${moves.t0}::text[], ${moves.status}::text[]) as v(id, t0, status)
-      where trials.id = v.id
+      from unnest(${moves.id}::text[], ${moves.t0}::text[], ${moves.status}::text[], ${moves.epoch}::text[]) as v(id, t0, status, epoch)
+      where trials.id = v.id and (v.epoch is null or trials.owner_epoch = v.epoch::integer)
+      returning trials.id
     )
-    select pg_notify(${NOTIFY_CHANNEL}, n) from unnest(${notices}::text[]) as n`;
+    select pg_notify(${NOTIFY_CHANNEL}, n) from unnest(${notices}::text[]) as n
+    where hri_fenced((select count(*) from moved), ${new Set(moves.id).size})`;
   return stored;
 }
 

@@ -220,6 +220,8 @@ function recordOf(
       wizardName: people.wizard,
       createdByName: people.createdBy,
       rehearsalSnapshot: undefined,
+      // How many runtime processes took the trial: the runtime's bookkeeping, not the study's record.
+      ownerEpoch: undefined,
       version: version
         ? {
             id: version.id,

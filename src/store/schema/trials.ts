@@ -42,6 +42,9 @@ export const trials = pgTable(
     // The registered robot the trial drives: chosen when it is created or first opened, changeable until it starts.
     assignedRobotId: text("assigned_robot_id").references(() => robots.id, { onDelete: "set null" }),
     t0: timestamp("t0", { withTimezone: true }),
+    // Counts the runtime processes that took the trial (its fencing token): an owner's append carries the
+    // count it took it with, and is refused once another has taken the trial since.
+    ownerEpoch: integer("owner_epoch").notNull().default(0),
     endedAt: timestamp("ended_at", { withTimezone: true }),
     createdBy: text("created_by").references(() => user.id, { onDelete: "set null" }),
     createdAt: createdAt(),
