@@ -3,8 +3,7 @@
 // finger's size (44 px), the observer's page fits the screen and codes by a
 // tap, and the times shown carry their zone, to be matched against the UTC
 // of the exports.
-import type { Page } from "playwright-core";
-import type { Browser } from "playwright-core";
+import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, signInAs } from "../support/browser";
