@@ -4,8 +4,9 @@ import { cva, type VariantProps } from "class-variance-authority";
 import { useEffect, useState, type ButtonHTMLAttributes } from "react";
 import { cn } from "./cn";
 
+// On a touch screen every button is at least 44 px high (WCAG 2.5.5); a mouse keeps them compact.
 const button = cva(
-  "inline-flex items-center justify-center gap-2 rounded-md font-medium transition-colors focus-visible:outline-none focus-visible:ring-2 focus-visible:ring-brand-500 focus-visible:ring-offset-2 disabled:pointer-events-none disabled:opacity-50",
+  "inline-flex items-center justify-center gap-2 rounded-md font-medium transition-colors focus-visible:outline-none focus-visible:ring-2 focus-visible:ring-brand-500 focus-visible:ring-offset-2 disabled:pointer-events-none disabled:opacity-50 pointer-coarse:min-h-11",
   {
     variants: {
       variant: {

@@ -3,3 +3,8 @@
 export function clockTime(at: Date | string): string {
   return new Date(at).toLocaleTimeString(undefined, { timeZoneName: "short" });
 }
+
+// A date and time, with its zone for the same reason.
+export function clockDateTime(at: Date | string): string {
+  return new Date(at).toLocaleString(undefined, { timeZoneName: "short" });
+}

@@ -33,13 +33,17 @@ export async function launchBrowser({ lowPriority = false } = {}): Promise<Brows
   return chromium.launch({ executablePath, args: CHROMIUM_ARGS, headless: true });
 }
 
-/** A browser context of its own (a person, a device); the default viewport is a laptop's. */
+/**
+ * A browser context of its own (a person, a device); the default viewport is a laptop's. `touch` makes it a
+ * phone or tablet: touch events, a coarse pointer, the page's own mobile viewport.
+ */
 export async function newContext(
   browser: Browser,
   baseURL: string,
   viewport = { width: 1366, height: 800 },
+  { touch = false } = {},
 ): Promise<BrowserContext> {
-  const context = await browser.newContext({ baseURL, viewport });
+  const context = await browser.newContext({ baseURL, viewport, hasTouch: touch, isMobile: touch });
   context.setDefaultTimeout(15_000);
   checkPagesOnClose(context);
   return context;

@@ -9,10 +9,11 @@ import { ListView } from "@/ui/list-view";
 import { Badge } from "@/ui/surface";
 import { Td, Th } from "@/ui/table";
 import { NewToken } from "./new-token";
+import { clockDateTime } from "@/ui/clock-time";
 
 const STATE_TONE = { active: "green", expired: "slate", revoked: "red" } as const;
 
-const when = (at: Date | string | null) => (at ? new Date(at).toLocaleString() : "never");
+const when = (at: Date | string | null) => (at ? clockDateTime(at) : "never");
 
 export function AccessTokensPage() {
   const trpc = useTRPC();

@@ -10,6 +10,7 @@ import { Field, NativeSelect } from "@/ui/field";
 import { EmptyState } from "@/ui/surface";
 import { ListView } from "@/ui/list-view";
 import { Td, Th } from "@/ui/table";
+import { clockDateTime } from "@/ui/clock-time";
 
 const PAGE = 100;
 const MOST = 500; // what admin.auditLog returns at most
@@ -70,7 +71,7 @@ export function AuditLogPage() {
         }
         row={(e) => (
           <tr key={e.id} className="align-top">
-            <Td className="whitespace-nowrap">{new Date(e.at).toLocaleString()}</Td>
+            <Td className="whitespace-nowrap">{clockDateTime(e.at)}</Td>
             {/* No account: the participant's own consent form, or an account since deleted. */}
             <Td>{e.actor ?? <span className="text-slate-500">no account</span>}</Td>
             <Td>{e.studyTitle ?? "—"}</Td>

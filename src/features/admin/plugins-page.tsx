@@ -13,6 +13,7 @@ import { fieldError, Problem } from "@/ui/problem";
 import { Select } from "@/ui/select";
 import { Badge, Card, EmptyState, Spinner } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
+import { clockDateTime } from "@/ui/clock-time";
 
 const TRUST_TONE = { official: "green", verified: "blue", community: "amber" } as const;
 type Trust = keyof typeof TRUST_TONE;
@@ -134,7 +135,7 @@ export function PluginsPage() {
                 <Td>
                   <Badge tone={TRUST_TONE[r.trust]}>{r.trust}</Badge>
                 </Td>
-                <Td>{r.lastSyncedAt ? new Date(r.lastSyncedAt).toLocaleString() : "never"}</Td>
+                <Td>{r.lastSyncedAt ? clockDateTime(r.lastSyncedAt) : "never"}</Td>
                 <Td className="text-right">
                   <Button
                     size="sm"

@@ -10,6 +10,7 @@ import { Problem } from "@/ui/problem";
 import { Badge, EmptyState } from "@/ui/surface";
 import { Table, Td, Th } from "@/ui/table";
 import { RobotForm, type RegisteredRobot } from "./robot-form";
+import { clockDateTime } from "@/ui/clock-time";
 
 export function RobotsPage() {
   const trpc = useTRPC();
@@ -83,7 +84,7 @@ export function RobotsPage() {
                     )}
                   </div>
                   <div className="mt-1 text-xs text-slate-500">
-                    {r.lastSeenAt ? `last seen ${new Date(r.lastSeenAt).toLocaleString()}` : "never seen by a trial"}
+                    {r.lastSeenAt ? `last seen ${clockDateTime(r.lastSeenAt)}` : "never seen by a trial"}
                   </div>
                   {r.problems.map((problem) => (
                     <p key={problem} className="mt-1 max-w-md text-xs text-amber-800" data-testid="robot-problem">

@@ -10,6 +10,7 @@ import { moveWords, stepVisits } from "@/core/analysis/moves";
 import { trialNames } from "@/core/analysis/names";
 import type { TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
+import { clockDateTime } from "@/ui/clock-time";
 import { QuestionnaireAnswers } from "./questionnaire-answers";
 import { AgreementPanel } from "../coding/agreement-panel";
 import { CodeTiers } from "../coding/code-tiers";
@@ -104,6 +105,10 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
           Analysis · {t.experimentName} · {t.participantCode ?? "no participant"}
         </h1>
         {t.isRehearsal && <Badge tone="amber">rehearsal</Badge>}
+        {/* With its zone: the exports' times are in UTC, and this is where they are matched against. */}
+        <span className="text-sm text-slate-600" data-testid="trial-started">
+          {t.t0 ? `started ${clockDateTime(t.t0)}` : "not started"}
+        </span>
         <span className="ml-auto flex gap-3 text-sm">
           <a className="font-medium text-brand-600 hover:underline" href={`/api/trials/${trialId}/export?format=csv`}>
             Download events (CSV)

@@ -1,6 +1,6 @@
 "use client";
 // Coding a running trial: one key per code of the chosen published scheme,
-// the keys shown on screen, the states I hold lit, my last code said aloud
+// each code a button to tap on a tablet, the keys shown on screen, the states I hold lit, my last code said aloud
 // for screen readers. Keys typed into a field (the annotation form) are text,
 // not codes. What I code is mine alone: nobody else's codes are shown here.
 import { useQuery } from "@tanstack/react-query";
@@ -28,14 +28,19 @@ export function LiveCodingPanel({ trialId, codes, send }: { trialId: string; cod
     return [...byId.values()].filter((c) => c.versionId === current?.versionId);
   }, [loaded.data, codes, current]);
 
+  // A key and a tap mark the same way: on a tablet there is no keyboard.
+  const mark = (setId: string, code: { id: string; name: string }) => {
+    if (!current) return;
+    void send({ schemeVersionId: current.versionId, setId, codeId: code.id }).then((r) => {
+      if (r.ok) setLast(code.name);
+    });
+  };
   useKeys((e) => {
     if (!current || e.repeat || e.ctrlKey || e.metaKey || e.altKey || isTyping(e.target)) return;
     const found = codeForKey(current.definition as Scheme, e.key);
     if (!found) return;
     e.preventDefault();
-    void send({ schemeVersionId: current.versionId, setId: found.set.id, codeId: found.code.id }).then((r) => {
-      if (r.ok) setLast(found.code.name);
-    });
+    mark(found.set.id, found.code);
   });
 
   if (!current) return null;
@@ -56,7 +61,7 @@ export function LiveCodingPanel({ trialId, codes, send }: { trialId: string; cod
         </NativeSelect>
       )}
       <p className="text-xs text-slate-600">
-        Press a code&apos;s key while you watch. A state holds until you press its key again or another of its set.
+        Press or tap a code while you watch. A state holds until you press or tap it again, or another of its set.
       </p>
       {scheme.sets.map((set) => (
         <section key={set.id} aria-label={set.name}>
@@ -65,15 +70,18 @@ export function LiveCodingPanel({ trialId, codes, send }: { trialId: string; cod
             {set.codes.map((code) => {
               const held = holding.has(`${set.id}/${code.id}`);
               return (
-                <li
-                  key={code.id}
-                  data-held={held || undefined}
-                  className={`flex items-center gap-2 rounded border px-2 py-1 ${held ? "border-slate-900 bg-slate-100 font-semibold" : "border-slate-200"}`}
-                >
-                  <kbd className="rounded border border-slate-300 bg-white px-1.5 font-mono text-xs">{code.key}</kbd>
-                  <span className="inline-block h-2.5 w-2.5 rounded-full" style={{ background: code.colour }} />
-                  {code.name}
-                  {code.kind === "state" && <span className="sr-only">{held ? "(holding)" : "(state)"}</span>}
+                <li key={code.id} data-held={held || undefined}>
+                  <button
+                    type="button"
+                    aria-pressed={code.kind === "state" ? held : undefined}
+                    onClick={() => mark(set.id, code)}
+                    className={`flex w-full items-center gap-2 rounded border px-2 py-1 text-left hover:bg-slate-50 pointer-coarse:min-h-11 ${held ? "border-slate-900 bg-slate-100 font-semibold" : "border-slate-200"}`}
+                  >
+                    <kbd className="rounded border border-slate-300 bg-white px-1.5 font-mono text-xs">{code.key}</kbd>
+                    <span className="inline-block h-2.5 w-2.5 rounded-full" style={{ background: code.colour }} />
+                    {code.name}
+                    {code.kind === "state" && <span className="sr-only">{held ? "(holding)" : "(state)"}</span>}
+                  </button>
                 </li>
               );
             })}

@@ -12,6 +12,7 @@ import { NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
 import { Badge } from "@/ui/surface";
 import { MethodsDialog } from "./methods-dialog";
+import { clockDateTime } from "@/ui/clock-time";
 
 export function VersionsPanel({
   experimentId,
@@ -98,7 +99,7 @@ export function VersionsPanel({
             <li key={v.id} className="flex items-center gap-2">
               <Badge tone="green">version {v.version}</Badge>
               <span className="text-slate-600">
-                {new Date(v.publishedAt).toLocaleString()} · {v.publishedBy ?? "someone"}
+                {clockDateTime(v.publishedAt)} · {v.publishedBy ?? "someone"}
               </span>
               <code className="ml-auto text-xs text-slate-500" title={v.hash}>
                 {v.hash.slice(0, 8)}

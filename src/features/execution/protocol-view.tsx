@@ -76,14 +76,16 @@ export function StepList({
       </div>
       {onJump && state.status === "in_progress" && (
         <details>
-          <summary className="cursor-pointer text-xs text-brand-700">Jump to another step (a deviation)</summary>
+          <summary className="cursor-pointer text-xs text-brand-700 pointer-coarse:py-3.5">
+            Jump to another step (a deviation)
+          </summary>
           <ul className="mt-1 space-y-1">
             {protocol.steps.map((step) =>
               step.id === state.currentStepId ? null : (
                 <li key={step.id}>
                   <button
                     type="button"
-                    className="text-left text-xs text-brand-700 underline-offset-2 hover:underline"
+                    className="text-left text-xs text-brand-700 underline-offset-2 hover:underline pointer-coarse:min-h-11"
                     onClick={() => onJump(step.id)}
                   >
                     Jump to {step.name}
@@ -161,7 +163,7 @@ export function StepActions({
                 !["record_answer", "branch"].includes(a.type) && (
                   <button
                     type="button"
-                    className="text-xs text-brand-600 hover:underline"
+                    className="text-xs text-brand-600 hover:underline pointer-coarse:min-h-11 pointer-coarse:px-2"
                     onClick={() => onTrigger(a.id)}
                   >
                     {/* The action's name is heard, not shown: its row already shows it. */}

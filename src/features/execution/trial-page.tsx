@@ -131,7 +131,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           Open the analysis of this trial →
         </Link>
       )}
-      <div className="grid gap-6 lg:grid-cols-[14rem_1fr_20rem]">
+      <div className="grid grid-cols-1 gap-6 lg:grid-cols-[14rem_1fr_20rem]">
         <Card className="p-3">
           <StepList
             protocol={protocol}

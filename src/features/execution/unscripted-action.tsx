@@ -31,7 +31,7 @@ export function UnscriptedAction({
   };
   return (
     <details className="rounded-lg border border-slate-200 bg-white p-3">
-      <summary className="cursor-pointer text-sm font-medium">Unscripted robot action</summary>
+      <summary className="cursor-pointer text-sm font-medium pointer-coarse:py-3">Unscripted robot action</summary>
       <div className="mt-3 space-y-3">
         <Field label="Action">
           {(a) => (

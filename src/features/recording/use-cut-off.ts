@@ -6,6 +6,7 @@
 import { useQuery } from "@tanstack/react-query";
 import { cutOffWords } from "@/core/media/recording-parts";
 import { useTRPC } from "@/lib/trpc";
+import { clockTime } from "@/ui/clock-time";
 
 const OPEN_EVERY_MS = 5000;
 
@@ -18,6 +19,6 @@ export function useCutOff(trialId: string, enabled: boolean) {
   });
   const last = (asked.data ?? []).filter((r) => r.cutOff).at(-1);
   if (!last) return { words: null };
-  const at = new Date(last.stoppedAt).toLocaleTimeString([], { hour: "2-digit", minute: "2-digit" });
+  const at = clockTime(last.stoppedAt);
   return { words: cutOffWords(at, last.status === "complete" ? (last.durationMs ?? 0) : null) };
 }

@@ -8,6 +8,7 @@ import { Button } from "@/ui/button";
 import { Problem } from "@/ui/problem";
 import { Badge, Card, EmptyState, Spinner, STATUS_TONE } from "@/ui/surface";
 import { useStartSession } from "./use-start-session";
+import { clockDateTime } from "@/ui/clock-time";
 
 export function MySessionsPage() {
   const trpc = useTRPC();
@@ -35,7 +36,7 @@ export function MySessionsPage() {
                   {s.conditionName && <span className="ml-2 text-sm text-slate-500">· {s.conditionName}</span>}
                 </div>
                 <div className="text-sm text-slate-500">
-                  {new Date(s.plannedAt).toLocaleString()} · {s.studyTitle}
+                  {clockDateTime(s.plannedAt)} · {s.studyTitle}
                 </div>
               </div>
               {s.trialStatus && <Badge tone={STATUS_TONE[s.trialStatus]}>{s.trialStatus.replace("_", " ")}</Badge>}

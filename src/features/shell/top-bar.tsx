@@ -8,13 +8,14 @@ import { Badge, ROLE_TONE } from "@/ui/surface";
 
 export function TopBar({ user }: { user: SignedInUser }) {
   const router = useRouter();
+  // On a phone the bar wraps onto a second line rather than pushing the page wider than the screen.
   return (
     <header className="border-b border-slate-200 bg-white">
-      <div className="mx-auto flex h-14 max-w-6xl items-center gap-6 px-6">
+      <div className="mx-auto flex min-h-14 max-w-6xl flex-wrap items-center gap-x-6 gap-y-2 px-4 py-2 sm:px-6">
         <Link href="/studies" className="text-lg font-semibold text-brand-700">
           HRIStudio
         </Link>
-        <nav className="flex gap-4 text-sm" aria-label="Main">
+        <nav className="flex flex-wrap gap-x-4 gap-y-1 text-sm" aria-label="Main">
           <Link href="/studies" className="text-slate-700 hover:text-slate-950">
             Studies
           </Link>
@@ -30,7 +31,7 @@ export function TopBar({ user }: { user: SignedInUser }) {
             </Link>
           )}
         </nav>
-        <div className="ml-auto flex items-center gap-3 text-sm">
+        <div className="ml-auto flex flex-wrap items-center gap-3 text-sm">
           <span data-testid="current-user">{user.name}</span>
           <Badge tone={ROLE_TONE[user.role]}>{user.role}</Badge>
           <Link href="/account/tokens" className="text-slate-700 hover:text-slate-950">

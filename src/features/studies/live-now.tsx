@@ -6,11 +6,11 @@ import { Eye, Radio } from "lucide-react";
 import Link from "next/link";
 import { useTRPC } from "@/lib/trpc";
 import { Badge, Card, ROLE_TONE, STATUS_TONE } from "@/ui/surface";
+import { clockTime } from "@/ui/clock-time";
 
 const REFRESH_MS = 5000;
 
-const since = (t0: Date | string | null) =>
-  t0 ? `started ${new Date(t0).toLocaleTimeString([], { hour: "2-digit", minute: "2-digit" })}` : "starting";
+const since = (t0: Date | string | null) => (t0 ? `started ${clockTime(t0)}` : "starting");
 
 export function LiveNow() {
   const trpc = useTRPC();

@@ -11,6 +11,7 @@ import { fieldError, Problem } from "@/ui/problem";
 import { Badge, Card, EmptyState, STATUS_TONE } from "@/ui/surface";
 import { ListView } from "@/ui/list-view";
 import { Td, Th } from "@/ui/table";
+import { clockDateTime } from "@/ui/clock-time";
 
 export function SessionsTab({ studyId, role }: { studyId: string; role: StudyRole }) {
   const trpc = useTRPC();
@@ -43,7 +44,7 @@ export function SessionsTab({ studyId, role }: { studyId: string; role: StudyRol
         }
         row={(s) => (
           <tr key={s.id}>
-            <Td>{new Date(s.plannedAt).toLocaleString()}</Td>
+            <Td>{clockDateTime(s.plannedAt)}</Td>
             <Td className="font-mono">{s.participantCode}</Td>
             <Td>{s.conditionName ?? <span className="text-slate-500">hidden</span>}</Td>
             <Td>{s.wizardName ?? "—"}</Td>

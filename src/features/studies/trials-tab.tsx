@@ -13,6 +13,7 @@ import { Badge, Card, EmptyState, STATUS_TONE } from "@/ui/surface";
 import { ListView } from "@/ui/list-view";
 import { Td, Th } from "@/ui/table";
 import { WizardChoice, wizardIdOf, type WizardChoiceValue } from "./wizard-choice";
+import { clockDateTime } from "@/ui/clock-time";
 
 export function TrialsTab({
   studyId,
@@ -77,7 +78,7 @@ export function TrialsTab({
             <Td>
               <Badge tone={STATUS_TONE[t.status]}>{t.status.replace("_", " ")}</Badge>
             </Td>
-            <Td>{new Date(t.createdAt).toLocaleString()}</Td>
+            <Td>{clockDateTime(t.createdAt)}</Td>
             <Td className="text-right">
               <Link
                 className="font-medium text-brand-600 hover:underline"
