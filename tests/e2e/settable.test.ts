@@ -44,7 +44,7 @@ describe.sequential("settings a team sets through the UI", () => {
 
     await researcher.getByRole("tab", { name: "Coding" }).click();
     await researcher.getByRole("button", { name: "Build a coding scheme" }).click();
-    await researcher.getByRole("button", { name: "Edit" }).click();
+    // The new scheme opens in the editor.
     await researcher.getByLabel("Scheme name").fill("Gaze coding (Lab B)");
     await researcher.getByRole("button", { name: "Save the scheme" }).click();
     await researcher.getByRole("cell", { name: "Gaze coding (Lab B)", exact: true }).waitFor();
