@@ -195,6 +195,40 @@ describe("coding schemes", () => {
     expect(parseCsv(strFromU8(archive["codes.csv"]!))).toEqual([[...CODE_COLUMNS], ...rows]);
   });
 
+  it("names a scheme as it is called now in the codes CSV, and counts agreement in the window asked for", async () => {
+    const coded = await owner.trials.create({ versionId: version.id });
+    const { id } = await owner.coding.createScheme({ studyId: study.id });
+    const named = { ...schemeTemplate("participant-engagement"), name: "Gaze coding (Lab B)" };
+    await owner.coding.saveScheme({ codingSchemeId: id, definition: { ...named, name: "New coding scheme" } });
+    const { id: schemeVersionId } = await owner.coding.publishScheme({ codingSchemeId: id });
+    const gaze = async (who: "observer" | "researcher", codeId: string, startMs: number, endMs: number) =>
+      f.api(who).coding.addCode({ trialId: coded.id, schemeVersionId, setId: "gaze", codeId, startMs, endMs });
+    await gaze("observer", "robot", 0, 2000);
+    await gaze("observer", "away", 2000, 4000);
+    await gaze("researcher", "away", 2000, 4000);
+    // Renamed after the codes were made: the codes CSV says the name the team gave it.
+    await owner.coding.saveScheme({ codingSchemeId: id, definition: named });
+    const csv = parseCsv((await owner.trials.export({ trialId: coded.id, format: "codes" })).body as string);
+    expect(new Set(csv.slice(1).map((r) => r[CODE_COLUMNS.indexOf("scheme")]))).toEqual(
+      new Set(["Gaze coding (Lab B)"]),
+    );
+    const observed = async (window: "trial" | "bothCoding") => {
+      const result = await f.api("observer").coding.agreement({ schemeVersionId, window });
+      expect(result.window).toBe(window);
+      const set = result.pairs[0]!.trials.find((t) => t.trialId === coded.id)!.sets.find((s) => s.setId === "gaze")!;
+      return [set.n, set.observed];
+    };
+    // The first two seconds only one observer coded: they disagree over the trial, and are left out from when both coded.
+    expect(await observed("trial")).toEqual([4, 0.5]);
+    expect(await observed("bothCoding")).toEqual([2, 1]);
+    await expect(
+      f.api("observer").coding.agreement({ schemeVersionId, window: "idle" as "trial" }),
+    ).rejects.toMatchObject({
+      code: "BAD_REQUEST",
+      message: expect.stringContaining("must be one of trial, bothCoding, steps"),
+    });
+  });
+
   it("goes with its study: a study with published schemes and codes is deleted whole", async () => {
     const doomed = await f.newStudy("Doomed");
     const { version: v } = await publishedVersion(owner, doomed.id);

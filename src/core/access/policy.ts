@@ -88,7 +88,18 @@ export function decide(subject: Subject, op: Operation): Decision {
     return {
       allow: false,
       hidden: false,
-      reason: "This study hides its conditions from wizards (blinding): run your sessions from “My sessions”.",
+      reason:
+        subject.studyRole === "observer"
+          ? "This study hides its conditions from observers (blinding): observe and code from the trial's page."
+          : "This study hides its conditions from wizards (blinding): run your sessions from “My sessions”.",
+    };
+  }
+  // Results, exports and the analysis pages name each trial's condition: a condition-blind observer waits for the blind to lift.
+  if (op === "data.read" && subject.blinding?.conditionsHidden) {
+    return {
+      allow: false,
+      hidden: false,
+      reason: "This study hides its conditions from observers (blinding): results and exports open when it is lifted.",
     };
   }
   if (op === "data.read" && subject.blinding?.resultsHidden) {

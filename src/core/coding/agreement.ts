@@ -35,6 +35,57 @@ export function sliceCodes(marks: CodeMark[], setId: string, durationMs: number,
   return slices;
 }
 
+/** Which part of each trial agreement counts: the whole trial, from when both observers had coded, or chosen steps. */
+export const AGREEMENT_WINDOWS = ["trial", "bothCoding", "steps"] as const;
+export type AgreementWindow = (typeof AGREEMENT_WINDOWS)[number];
+
+/** The window as a report names it, beside the kappa. */
+export const WINDOW_WORDS: Record<AgreementWindow, string> = {
+  trial: "the whole trial",
+  bothCoding: "from when both observers had coded",
+  steps: "the chosen steps only",
+};
+
+/** When a step of one trial held, in ms from the trial's start. */
+export type StepSpan = { stepId: string; fromMs: number; toMs: number };
+
+/** Each step from its entry to the next step's (or the trial's end), from the trial's step.entered events in order. */
+export function stepSpans(entries: Array<{ stepId: string; relMs: number }>, durationMs: number): StepSpan[] {
+  return entries.map((e, i) => ({ stepId: e.stepId, fromMs: e.relMs, toMs: entries[i + 1]?.relMs ?? durationMs }));
+}
+
+/** A trial as agreement reads it; `steps` is only needed for the "steps" window. */
+export type AgreementTrial = { durationMs: number; a: CodeMark[]; b: CodeMark[]; steps?: StepSpan[] };
+
+/**
+ * The spans of one trial that count for one set, clipped to the trial: a
+ * slice past the trial's end, or before anyone had coded, would count as
+ * agreement on "nothing" though nobody watched it.
+ */
+export function windowSpans(
+  trial: AgreementTrial,
+  setId: string,
+  window: AgreementWindow,
+  stepIds: string[] = [],
+): Array<[number, number]> {
+  const end = trial.durationMs;
+  if (window === "trial") return [[0, end]];
+  if (window === "steps")
+    return (trial.steps ?? [])
+      .filter((s) => stepIds.includes(s.stepId))
+      .map((s): [number, number] => [Math.max(0, s.fromMs), Math.min(end, s.toMs)]);
+  const first = (marks: CodeMark[]) => Math.min(...marks.filter((m) => m.setId === setId).map((m) => m.startMs));
+  return [[Math.max(0, first(trial.a), first(trial.b)), end]];
+}
+
+/** The codes of the slices whose middle lies in one of the spans. */
+export function inWindow(slices: string[], spans: Array<[number, number]>, sliceMs: number): string[] {
+  return slices.filter((_, i) => {
+    const middle = (i + 0.5) * sliceMs;
+    return spans.some(([from, to]) => middle >= from && middle < to);
+  });
+}
+
 /** A confusion table: rows are observer A's codes, columns observer B's, in `categories` order. */
 export type Confusion = { categories: string[]; counts: number[][] };
 
@@ -102,23 +153,22 @@ export type SetAgreement = Kappa & { setId: string; table: Confusion };
 
 /**
  * Agreement of two observers on each set of codes over one trial (or several:
- * pass each trial's marks and duration), sliced every `sliceMs`.
+ * pass each trial's marks and duration), sliced every `sliceMs`, counting
+ * only the slices of the window.
  */
 export function agreement(
   sets: Array<{ id: string; codes: Array<{ id: string }> }>,
-  trials: Array<{ durationMs: number; a: CodeMark[]; b: CodeMark[] }>,
+  trials: AgreementTrial[],
   sliceMs: number,
+  window: AgreementWindow = "trial",
+  stepIds: string[] = [],
 ): SetAgreement[] {
   return sets.map((set) => {
     const categories = [...set.codes.map((c) => c.id), NONE];
+    const counted = (t: AgreementTrial, marks: CodeMark[]) =>
+      inWindow(sliceCodes(marks, set.id, t.durationMs, sliceMs), windowSpans(t, set.id, window, stepIds), sliceMs);
     const table = pool(
-      trials.map((t) =>
-        confusion(
-          sliceCodes(t.a, set.id, t.durationMs, sliceMs),
-          sliceCodes(t.b, set.id, t.durationMs, sliceMs),
-          categories,
-        ),
-      ),
+      trials.map((t) => confusion(counted(t, t.a), counted(t, t.b), categories)),
       categories,
     );
     return { setId: set.id, table, ...cohenKappa(table.counts) };

@@ -1,5 +1,17 @@
 import { describe, expect, it } from "vitest";
-import { agreement, type CodeMark, cohenKappa, confusion, NONE, sliceCodes, strength } from "./agreement";
+import { tableCsv } from "@/core/analysis/table";
+import {
+  type AgreementWindow,
+  agreement,
+  type CodeMark,
+  cohenKappa,
+  confusion,
+  NONE,
+  sliceCodes,
+  strength,
+  windowSpans,
+} from "./agreement";
+import { codesTable } from "./export";
 import { checkScheme, codeForKey } from "./scheme";
 import { blankScheme, newCode, SCHEME_TEMPLATES, schemeTemplate } from "./templates";
 
@@ -244,6 +256,105 @@ describe("slicing two observers' codes", () => {
     expect(pooled!.table.counts[0]).toEqual([4, 0, 0]);
     expect(pooled!.n).toBe(8);
     expect(pooled!.kappa).toBeCloseTo(0.5, 6);
+  });
+
+  // Observer A codes from 0 s, B only from 2 s; the trial ends at 4.3 s, so a 1 s slicing has a fifth slice past the end.
+  const windowed = {
+    durationMs: 4300,
+    a: [state("robot", 0, 1000), state("away", 1000, 4300)],
+    b: [state("away", 2000, 4300)],
+    steps: [
+      { stepId: "greet", fromMs: 0, toMs: 3000 },
+      { stepId: "ask", fromMs: 3000, toMs: 4300 },
+    ],
+  };
+  it.each<[AgreementWindow, string[], Array<[number, number]>, number[][]]>([
+    // Slices 0 and 1 (robot/away vs none) disagree; 2 and 3 agree; the fifth, past the end, no longer counts.
+    [
+      "trial",
+      [],
+      [[0, 4300]],
+      [
+        [0, 0, 1],
+        [0, 2, 1],
+        [0, 0, 0],
+      ],
+    ],
+    [
+      "bothCoding",
+      [],
+      [[2000, 4300]],
+      [
+        [0, 0, 0],
+        [0, 2, 0],
+        [0, 0, 0],
+      ],
+    ],
+    [
+      "steps",
+      ["ask"],
+      [[3000, 4300]],
+      [
+        [0, 0, 0],
+        [0, 1, 0],
+        [0, 0, 0],
+      ],
+    ],
+    [
+      "steps",
+      [],
+      [],
+      [
+        [0, 0, 0],
+        [0, 0, 0],
+        [0, 0, 0],
+      ],
+    ],
+  ])("the %s window (steps %j) counts %j", (window, stepIds, spans, counts) => {
+    expect(windowSpans(windowed, "gaze", window, stepIds)).toEqual(spans);
+    const [set] = agreement(
+      [{ id: "gaze", codes: [{ id: "robot" }, { id: "away" }] }],
+      [windowed],
+      1000,
+      window,
+      stepIds,
+    );
+    expect(set!.table.counts).toEqual(counts);
+  });
+
+  it("is reproduced from the codes CSV with the window the report names", () => {
+    const scheme = {
+      ...blankScheme("Gaze"),
+      sets: [{ id: "gaze", name: "Gaze", codes: [code("robot", "1", "state"), code("away", "2", "state")] }],
+    };
+    const rows = (["a", "b"] as const).flatMap((observer) =>
+      windowed[observer].map((m) => ({
+        trialId: "t1",
+        observer,
+        scheme,
+        schemeVersion: 1,
+        setId: m.setId,
+        codeId: m.codeId,
+        kind: m.kind,
+        startMs: m.startMs,
+        endMs: m.endMs,
+        modifiers: [],
+      })),
+    );
+    // Read back as a researcher would: slice each observer's states from the CSV, from when both had coded.
+    const [header, ...lines] = tableCsv(codesTable(rows)).trim().split(/\r?\n/);
+    const col = (name: string) => header!.split(",").indexOf(name);
+    const read = lines.map((l) => l.split(","));
+    const of = (observer: string) => read.filter((r) => r[col("observer")] === observer);
+    const start = Math.max(...["a", "b"].map((o) => Math.min(...of(o).map((r) => Number(r[col("start_ms")])))));
+    const at = (observer: string, ms: number) =>
+      of(observer).find((r) => Number(r[col("start_ms")]) <= ms && ms < Number(r[col("end_ms")]))?.[col("code")] ??
+      NONE;
+    const middles = [0, 1, 2, 3].map((i) => (i + 0.5) * 1000).filter((ms) => ms >= start && ms < 4300);
+    const agreed = middles.filter((ms) => at("a", ms) === at("b", ms)).length;
+    const [set] = agreement(scheme.sets, [windowed], 1000, "bothCoding");
+    expect(set!.n).toBe(middles.length);
+    expect(set!.observed).toBe(agreed / middles.length);
   });
 
   it("refuses slices of different lengths, and a code the set does not have", () => {

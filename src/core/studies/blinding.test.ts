@@ -22,6 +22,27 @@ describe("who a blind hides what from", () => {
     },
   );
 
+  it.each<[StudyRole, boolean]>([
+    ["owner", false],
+    ["researcher", false],
+    ["wizard", false],
+    ["observer", true],
+  ])("the observers' blind hides conditions from a %s: %s", (role, hidden) => {
+    const observers = readSettings({ blinding: { conditionsFromObservers: true } });
+    expect(blindingFor(role, observers, "active").conditionsHidden).toBe(hidden);
+  });
+
+  it.each([
+    ["experiment.read", false],
+    ["data.read", false],
+    ["trial.read", true],
+    ["annotation.create", true],
+  ] as const)("the policy, for a condition-blind observer, answers %s with %s", (op, allowed) => {
+    const observers = readSettings({ blinding: { conditionsFromObservers: true } });
+    const blinding = blindingFor("observer", observers, "active");
+    expect(decide({ systemRole: "observer", studyRole: "observer", blinding }, op).allow).toBe(allowed);
+  });
+
   it("hides nothing from anyone when the study has no blinds", () => {
     for (const role of ["owner", "researcher", "wizard", "observer"] as const)
       expect(blindingFor(role, none, "active")).toEqual({ conditionsHidden: false, resultsHidden: false });

@@ -15,7 +15,9 @@ export const NOT_BLINDED: Blinding = { conditionsHidden: false, resultsHidden: f
 export function blindingFor(role: StudyRole | null, settings: StudySettings, studyStatus: string): Blinding {
   const ended = studyStatus === "completed" || studyStatus === "archived";
   return {
-    conditionsHidden: role === "wizard" && settings.blinding.conditionsFromWizards,
+    conditionsHidden:
+      (role === "wizard" && settings.blinding.conditionsFromWizards) ||
+      (role === "observer" && settings.blinding.conditionsFromObservers),
     resultsHidden: (role === "researcher" || role === "observer") && settings.blinding.resultsUntilComplete && !ended,
   };
 }

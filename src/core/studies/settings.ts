@@ -13,8 +13,12 @@ const assignmentFields = {
     .string()
     .regex(/^[a-z][a-z0-9_]{0,39}$/, "must be the key of a demographic field")
     .optional(),
-  /** Made by the server when the strategy is chosen; with it, anyone can reproduce the assignments. */
-  seed: z.string().min(1).max(200).optional(),
+  /**
+   * Made by the server when the strategy is chosen, or set by the team before
+   * the first assignment (a preregistered seed); with it, anyone can reproduce
+   * the assignments.
+   */
+  seed: z.string().trim().min(1, "must not be empty").max(200, "must be at most 200 characters").optional(),
 };
 
 export const assignmentSettingsSchema = z.object({
@@ -27,11 +31,14 @@ const blindingFields = {
   conditionsFromWizards: z.boolean(),
   /** Researchers and observers see no results until the study is marked completed. */
   resultsUntilComplete: z.boolean(),
+  /** Observers (coders) never see which condition a session runs, nor anything that names it. */
+  conditionsFromObservers: z.boolean(),
 };
 
 export const blindingSchema = z.object({
   conditionsFromWizards: blindingFields.conditionsFromWizards.default(false),
   resultsUntilComplete: blindingFields.resultsUntilComplete.default(false),
+  conditionsFromObservers: blindingFields.conditionsFromObservers.default(false),
 });
 
 export const DEMOGRAPHIC_TYPES = ["text", "number", "choice"] as const;
@@ -54,14 +61,24 @@ const settingFields = {
   demographics: z.array(demographicFieldSchema).max(30, "at most 30 fields"),
   /** The consent document participants agree to now; each consent records the version it was. */
   consentDocumentVersion: z.string().trim().min(1, "must not be empty").max(50, "must be at most 50 characters"),
+  /** The words beside the consent checkbox on the participant's page. */
+  consentAgreement: z.string().trim().min(1, "must not be empty").max(300, "must be at most 300 characters"),
+  /** What participants (and condition-blind wizards and observers) see in place of the study's title; empty: the title. */
+  neutralTitle: z.string().trim().max(200, "must be at most 200 characters"),
 };
 
 export const studySettingsSchema = z.object({
   requireConsent: settingFields.requireConsent.default(true),
   assignment: settingFields.assignment.default({ strategy: "fixed", perCondition: 1 }),
-  blinding: settingFields.blinding.default({ conditionsFromWizards: false, resultsUntilComplete: false }),
+  blinding: settingFields.blinding.default({
+    conditionsFromWizards: false,
+    resultsUntilComplete: false,
+    conditionsFromObservers: false,
+  }),
   demographics: settingFields.demographics.default([]),
   consentDocumentVersion: settingFields.consentDocumentVersion.default("1"),
+  consentAgreement: settingFields.consentAgreement.default("I agree to take part"),
+  neutralTitle: settingFields.neutralTitle.default(""),
 });
 
 /**
@@ -117,6 +134,11 @@ export function settingsProblems(settings: StudySettings): string[] {
   if (field.type !== "choice")
     return [`Assignment: ${field.label} must be a choice question to stratify by (it is ${field.type})`];
   return [];
+}
+
+/** The study's name as a participant, or a caller blind to its conditions, sees it. */
+export function shownTitle(title: string, settings: StudySettings, neutral: boolean): string {
+  return neutral && settings.neutralTitle ? settings.neutralTitle : title;
 }
 
 export function readSettings(stored: unknown): StudySettings {

@@ -18,7 +18,11 @@ describe("a study from a template", () => {
     ["keeps the assignment strategy", (s) => s.assignment.strategy, "balanced"],
     ["keeps the block size", (s) => s.assignment.perCondition, 3],
     ["makes a new seed, never the source's", (s) => s.assignment.seed, "new-seed"],
-    ["keeps the blinds", (s) => s.blinding, { conditionsFromWizards: true, resultsUntilComplete: true }],
+    [
+      "keeps the blinds",
+      (s) => s.blinding,
+      { conditionsFromWizards: true, resultsUntilComplete: true, conditionsFromObservers: false },
+    ],
     ["keeps the demographic questions", (s) => s.demographics.map((d) => d.key), ["experience"]],
     ["starts the consent document again at its first version", (s) => s.consentDocumentVersion, "1"],
   ])("%s", (_what, read, expected) => {

@@ -28,6 +28,9 @@ const DECISIONS: Decisions = {
   // The consent document is approved for one study: the new study's starts
   // again at the first version, and its researchers set their own.
   consentDocumentVersion: (_source, fresh) => fresh,
+  // The checkbox's words and the name participants see are part of the method, like the blinds.
+  consentAgreement: (source) => source,
+  neutralTitle: (source) => source,
 };
 
 export function templateSettings(source: StudySettings, newSeed: () => string): StudySettings {

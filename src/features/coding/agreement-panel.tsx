@@ -4,7 +4,13 @@
 // comes from; pooled over the study's trials, or for one trial.
 import { useQuery } from "@tanstack/react-query";
 import { useState } from "react";
-import { strength, type SetAgreement } from "@/core/coding/agreement";
+import {
+  AGREEMENT_WINDOWS,
+  type AgreementWindow,
+  type SetAgreement,
+  strength,
+  WINDOW_WORDS,
+} from "@/core/coding/agreement";
 import { useTRPC } from "@/lib/trpc";
 import { Field, NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
@@ -46,11 +52,13 @@ export function AgreementPanel({ studyId, trialId }: { studyId: string; trialId?
 function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
   const trpc = useTRPC();
   const [sliceMs, setSliceMs] = useState(1000);
+  const [window, setWindow] = useState<AgreementWindow>("trial");
+  const [stepIds, setStepIds] = useState<string[]>([]);
   const [chosen, setChosen] = useState<[string, string] | null>(null);
-  const result = useQuery(trpc.coding.agreement.queryOptions({ schemeVersionId: versionId, sliceMs }));
+  const result = useQuery(trpc.coding.agreement.queryOptions({ schemeVersionId: versionId, sliceMs, window, stepIds }));
   if (result.isPending) return <Spinner label="Comparing the observers…" />;
   if (result.error) return <Problem error={result.error} />;
-  const { sets: named, observers, pairs } = result.data;
+  const { sets: named, observers, pairs, steps } = result.data;
   if (observers.length < 2)
     return (
       <p className="text-sm text-slate-600">
@@ -90,7 +98,35 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
             </NativeSelect>
           )}
         </Field>
+        <Field label="Counted">
+          {(p) => (
+            <NativeSelect {...p} value={window} onChange={(e) => setWindow(e.target.value as AgreementWindow)}>
+              {AGREEMENT_WINDOWS.map((w) => (
+                <option key={w} value={w}>
+                  {WINDOW_WORDS[w]}
+                </option>
+              ))}
+            </NativeSelect>
+          )}
+        </Field>
       </div>
+      {window === "steps" && (
+        <fieldset className="flex flex-wrap gap-3 text-sm">
+          <legend className="sr-only">Steps counted</legend>
+          {steps.map((step) => (
+            <label key={step.id} className="flex items-center gap-1">
+              <input
+                type="checkbox"
+                checked={stepIds.includes(step.id)}
+                onChange={(e) =>
+                  setStepIds(e.target.checked ? [...stepIds, step.id] : stepIds.filter((id) => id !== step.id))
+                }
+              />
+              {step.name}
+            </label>
+          ))}
+        </fieldset>
+      )}
       {a === b || !pair || !sets ? (
         <p className="text-sm text-slate-600">
           {a === b ? "Choose two different observers." : "These two observers have not coded the same trial."}
@@ -105,7 +141,12 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
             .
           </p>
           {sets.map((s) => (
-            <SetFigure key={s.setId} set={s} names={named.find((n) => n.id === s.setId)} />
+            <SetFigure
+              key={s.setId}
+              set={s}
+              names={named.find((n) => n.id === s.setId)}
+              counted={countedWords(window, sliceMs, steps, stepIds)}
+            />
           ))}
         </>
       )}
@@ -115,7 +156,14 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
 
 type SetNames = { name: string; codes: Array<{ id: string; name: string }> };
 
-function SetFigure({ set, names }: { set: SetAgreement; names?: SetNames }) {
+/** What the kappa counted, said beside it: a paper reports the window with the value. */
+function countedWords(window: AgreementWindow, sliceMs: number, steps: SetNames["codes"], stepIds: string[]) {
+  const chosen = steps.filter((s) => stepIds.includes(s.id)).map((s) => s.name);
+  const which = window === "steps" ? `steps ${chosen.join(", ") || "(none chosen)"}` : WINDOW_WORDS[window];
+  return `${sliceMs / 1000} s slices, ${which}`;
+}
+
+function SetFigure({ set, names, counted }: { set: SetAgreement; names?: SetNames; counted: string }) {
   const kappa = set.kappa === null ? "undefined" : set.kappa.toFixed(2);
   const setName = names?.name ?? set.setId;
   // "(none)" is no code's id (ids are slugs): it stays as it is.
@@ -125,6 +173,10 @@ function SetFigure({ set, names }: { set: SetAgreement; names?: SetNames }) {
       <h3 className="font-medium">
         {setName}: Cohen&apos;s κ = <span data-kappa={set.setId}>{kappa}</span>
         {set.kappa !== null && <span className="text-slate-600"> ({strength(set.kappa)})</span>}
+        <span className="text-sm font-normal text-slate-600" data-window>
+          {" "}
+          · {counted}
+        </span>
       </h3>
       <p className="text-xs text-slate-600">
         {set.n} slices, observed agreement {(set.observed * 100).toFixed(1)} %, expected by chance{" "}

@@ -41,7 +41,17 @@ export function SchemeEditor({ schemeId, editable }: { schemeId: string; editabl
     });
   return (
     <Card className="space-y-4 p-4">
-      <h3 className="text-lg font-semibold">{draft.name}</h3>
+      {editable ? (
+        // Exports and the methods text name the scheme by this: a team renames it from "New coding scheme".
+        <Input
+          aria-label="Scheme name"
+          value={draft.name}
+          className="w-80 text-lg font-semibold"
+          onChange={(e) => setDraft({ ...draft, name: e.target.value })}
+        />
+      ) : (
+        <h3 className="text-lg font-semibold">{draft.name}</h3>
+      )}
       {draft.description && <p className="text-sm text-slate-600">{draft.description}</p>}
       {draft.sets.map((set, si) => (
         <section key={si} aria-label={`Set ${set.name}`} className="space-y-2">

@@ -78,7 +78,13 @@ export function ParticipantForm({ token }: { token: string }) {
           {section.title && <h2 className="text-lg font-semibold">{section.title}</h2>}
           {section.items.map((item, i) => (
             <Card key={item.id} className="p-4">
-              <ItemField item={item} number={i + 1} value={answers?.[item.id]} onChange={(v) => set(item.id, v)} />
+              <ItemField
+                item={item}
+                number={i + 1}
+                value={answers?.[item.id]}
+                onChange={(v) => set(item.id, v)}
+                agreement={form.data.consentAgreement}
+              />
             </Card>
           ))}
         </section>
@@ -107,11 +113,14 @@ function ItemField({
   number,
   value,
   onChange,
+  agreement,
 }: {
   item: Item;
   number: number;
   value: Answer | undefined;
   onChange: (v: Answer | undefined) => void;
+  /** The study's words beside the consent checkbox. */
+  agreement: string;
 }) {
   const label = (
     <legend className="mb-3 font-medium">
@@ -195,7 +204,7 @@ function ItemField({
               onChange={(e) => onChange(e.target.checked)}
               className="h-5 w-5"
             />
-            I agree to take part
+            {agreement}
           </label>
         </fieldset>
       );

@@ -41,6 +41,8 @@ export function ConditionsTab({
   const [experimentId, setExperimentId] = useState("");
   const [strategy, setStrategy] = useState(assignment.strategy);
   const [perCondition, setPerCondition] = useState(assignment.perCondition);
+  // Empty: the server makes one. A team that preregistered its seed types it here, before the first assignment.
+  const [seed, setSeed] = useState("");
   // Only questions with a fixed set of answers can make strata (see settingsProblems).
   const questions = settings.demographics.filter((f) => f.type === "choice");
   const [stratifyBy, setStratifyBy] = useState(assignment.stratifyBy ?? questions[0]?.key ?? "");
@@ -109,6 +111,15 @@ export function ConditionsTab({
               </Field>
             </div>
           )}
+          <div className="w-56">
+            <Field
+              label="Seed (optional)"
+              hint="Your own, before the first assignment; empty for a new one."
+              error={fieldError(update.error, "settings.assignment.seed")}
+            >
+              {(p) => <Input {...p} value={seed} onChange={(e) => setSeed(e.target.value)} />}
+            </Field>
+          </div>
           <Button
             className="mb-5"
             disabled={update.isPending || (strategy === "stratified" && !stratifyBy)}
@@ -120,6 +131,7 @@ export function ConditionsTab({
                     strategy,
                     perCondition: blocks ? perCondition : 1,
                     ...(strategy === "stratified" ? { stratifyBy } : {}),
+                    ...(seed.trim() ? { seed } : {}),
                   },
                 },
               })
@@ -127,6 +139,7 @@ export function ConditionsTab({
           >
             Use this strategy
           </Button>
+          <Problem error={update.error} />
           {assignment.seed && (
             <p className="mb-5 text-xs text-slate-500">
               Seed for the audit: <code>{assignment.seed}</code>

@@ -33,6 +33,8 @@ export function OverviewTab({ study }: { study: Study }) {
   const [blinding, setBlinding] = useState(study.settings.blinding);
   const [consentDocumentVersion, setConsentDocumentVersion] = useState(study.settings.consentDocumentVersion);
   const [demographics, setDemographics] = useState(study.settings.demographics);
+  const [consentAgreement, setConsentAgreement] = useState(study.settings.consentAgreement);
+  const [neutralTitle, setNeutralTitle] = useState(study.settings.neutralTitle);
   const update = useMutation(
     trpc.studies.update.mutationOptions({
       onSuccess: () => queryClient.invalidateQueries({ queryKey: trpc.studies.get.queryKey({ studyId: study.id }) }),
@@ -53,7 +55,7 @@ export function OverviewTab({ study }: { study: Study }) {
       title,
       description,
       status,
-      settings: { requireConsent, blinding, consentDocumentVersion, demographics },
+      settings: { requireConsent, blinding, consentDocumentVersion, consentAgreement, neutralTitle, demographics },
     });
   };
   return (
@@ -62,6 +64,13 @@ export function OverviewTab({ study }: { study: Study }) {
         <form onSubmit={submit} className="space-y-4">
           <Field label="Title" required error={fieldError(update.error, "title")}>
             {(p) => <Input {...p} value={title} onChange={(e) => setTitle(e.target.value)} />}
+          </Field>
+          <Field
+            label="Name shown to participants"
+            hint="On every participant page, and to wizards and observers blind to condition, in place of the title. Empty: the title."
+            error={fieldError(update.error, "settings.neutralTitle")}
+          >
+            {(p) => <Input {...p} value={neutralTitle} onChange={(e) => setNeutralTitle(e.target.value)} />}
           </Field>
           <Field label="Description">
             {(p) => <Textarea {...p} value={description} onChange={(e) => setDescription(e.target.value)} />}
@@ -98,6 +107,13 @@ export function OverviewTab({ study }: { study: Study }) {
               />
             )}
           </Field>
+          <Field
+            label="Words beside the consent checkbox"
+            hint="What a participant ticks on a questionnaire's consent item."
+            error={fieldError(update.error, "settings.consentAgreement")}
+          >
+            {(p) => <Input {...p} value={consentAgreement} onChange={(e) => setConsentAgreement(e.target.value)} />}
+          </Field>
           <fieldset className="space-y-2 rounded-md border border-slate-200 p-3">
             <legend className="px-1 text-sm font-medium text-slate-700">Blinding</legend>
             <label className="flex items-start gap-2 text-sm">
@@ -111,6 +127,21 @@ export function OverviewTab({ study }: { study: Study }) {
                 Hide each session's condition from wizards
                 <span className="block text-xs text-slate-500">
                   Wizards run sessions from “My sessions” and never see condition or experiment names.
+                </span>
+              </span>
+            </label>
+            <label className="flex items-start gap-2 text-sm">
+              <input
+                type="checkbox"
+                className="mt-0.5 h-4 w-4"
+                checked={blinding.conditionsFromObservers}
+                onChange={(e) => setBlinding({ ...blinding, conditionsFromObservers: e.target.checked })}
+              />
+              <span>
+                Hide each session's condition from observers
+                <span className="block text-xs text-slate-500">
+                  Observers code live without condition or experiment names; results and exports, which name conditions,
+                  open to them when this is lifted.
                 </span>
               </span>
             </label>

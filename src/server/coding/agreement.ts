@@ -1,10 +1,10 @@
 // Agreement between every two observers who coded the study's trials with
 // one published scheme version: per trial, and pooled over all of them.
-import { and, eq } from "drizzle-orm";
-import { agreement, type CodeMark } from "@/core/coding/agreement";
+import { and, asc, eq, inArray, isNotNull } from "drizzle-orm";
+import { type AgreementWindow, agreement, type CodeMark, stepSpans } from "@/core/coding/agreement";
 import type { Scheme } from "@/core/coding/scheme";
 import type { Database } from "@/store/client";
-import { codeEvents, participants, trials, user } from "@/store/schema";
+import { codeEvents, participants, steps, trialEvents, trials, user } from "@/store/schema";
 
 export async function studyAgreement(
   db: Database,
@@ -12,6 +12,8 @@ export async function studyAgreement(
   versionId: string,
   scheme: Scheme,
   sliceMs: number,
+  window: AgreementWindow = "trial",
+  stepIds: string[] = [],
 ) {
   const rows = await db
     .select({
@@ -44,6 +46,7 @@ export async function studyAgreement(
     trial.marks.set(observerId, marks);
     byTrial.set(r.code.trialId, trial);
   }
+  const entries = await stepEntries(db, [...byTrial.keys()]);
   const ids = [...observers.keys()].sort();
   const pairs = ids.flatMap((a, i) => ids.slice(i + 1).map((b) => [a, b] as const));
   return {
@@ -53,29 +56,60 @@ export async function studyAgreement(
       name: set.name,
       codes: set.codes.map((code) => ({ id: code.id, name: code.name })),
     })),
+    window,
+    // The steps the coded trials went through, by name, for choosing the "steps" window.
+    steps: await stepNames(db, [...new Set([...entries.values()].flat().map((e) => e.stepId))]),
     observers: ids.map((id) => ({ id, name: observers.get(id)! })),
     pairs: pairs.map(([a, b]) => {
       // Only the trials both coded: a trial one of them never watched says nothing about their agreement.
       const both = [...byTrial.entries()].filter(([, t]) => t.marks.has(a) && t.marks.has(b));
-      const of = (t: (typeof both)[number][1]) => ({
+      const of = ([trialId, t]: (typeof both)[number]) => ({
         durationMs: t.durationMs,
+        steps: stepSpans(entries.get(trialId) ?? [], t.durationMs),
         a: t.marks.get(a)!,
         b: t.marks.get(b)!,
       });
       return {
         a,
         b,
-        pooled: agreement(
-          scheme.sets,
-          both.map(([, t]) => of(t)),
-          sliceMs,
-        ),
+        pooled: agreement(scheme.sets, both.map(of), sliceMs, window, stepIds),
         trials: both.map(([trialId, t]) => ({
           trialId,
           label: t.label,
-          sets: agreement(scheme.sets, [of(t)], sliceMs),
+          sets: agreement(scheme.sets, [of([trialId, t])], sliceMs, window, stepIds),
         })),
       };
     }),
   };
+}
+
+/** Each trial's step entries in order, as relMs from its start. */
+async function stepEntries(db: Database, trialIds: string[]) {
+  const byTrial = new Map<string, Array<{ stepId: string; relMs: number }>>();
+  if (trialIds.length === 0) return byTrial;
+  const rows = await db
+    .select({ trialId: trialEvents.trialId, stepId: trialEvents.stepId, relMs: trialEvents.relMs })
+    .from(trialEvents)
+    .where(
+      and(
+        inArray(trialEvents.trialId, trialIds),
+        eq(trialEvents.type, "step.entered"),
+        isNotNull(trialEvents.stepId),
+        isNotNull(trialEvents.relMs),
+      ),
+    )
+    .orderBy(asc(trialEvents.trialId), asc(trialEvents.seq));
+  for (const r of rows)
+    byTrial.set(r.trialId, [...(byTrial.get(r.trialId) ?? []), { stepId: r.stepId!, relMs: r.relMs! }]);
+  return byTrial;
+}
+
+async function stepNames(db: Database, stepIds: string[]) {
+  if (stepIds.length === 0) return [];
+  const rows = await db
+    .select({ id: steps.id, name: steps.name, position: steps.position })
+    .from(steps)
+    .where(inArray(steps.id, stepIds))
+    .orderBy(asc(steps.position));
+  return rows.map(({ id, name }) => ({ id, name }));
 }

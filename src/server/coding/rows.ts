@@ -1,12 +1,14 @@
 // The code events of some trials, each with its observer's name and the
 // scheme version it was coded with: what every export of codes is made from.
+// The scheme is named as it is called now, so a team that renames "New coding
+// scheme" after coding sees the new name in every export.
 // By trial, then by start (ties in id order).
 import { and, asc, eq, inArray, type SQL } from "drizzle-orm";
 import type { CodeRowInput } from "@/core/coding/export";
 import type { Scheme } from "@/core/coding/scheme";
 import type { Database } from "@/store/client";
 import { after, keyedPages } from "@/store/pages";
-import { codeEvents, codingSchemeVersions, user } from "@/store/schema";
+import { codeEvents, codingSchemes, codingSchemeVersions, user } from "@/store/schema";
 
 /** The code events `where` picks, at most `limit` of them if given; each with its id, the key a page ends at. */
 async function codeRows(db: Pick<Database, "select">, where: SQL | undefined, limit?: number) {
@@ -15,10 +17,12 @@ async function codeRows(db: Pick<Database, "select">, where: SQL | undefined, li
       code: codeEvents,
       observer: user.name,
       definition: codingSchemeVersions.definition,
+      schemeName: codingSchemes.name,
       version: codingSchemeVersions.version,
     })
     .from(codeEvents)
     .innerJoin(codingSchemeVersions, eq(codingSchemeVersions.id, codeEvents.versionId))
+    .innerJoin(codingSchemes, eq(codingSchemes.id, codingSchemeVersions.schemeId))
     .leftJoin(user, eq(user.id, codeEvents.observerId))
     .where(where)
     .orderBy(asc(codeEvents.trialId), asc(codeEvents.startMs), asc(codeEvents.id))
@@ -26,7 +30,7 @@ async function codeRows(db: Pick<Database, "select">, where: SQL | undefined, li
   return (await (limit ? query.limit(limit) : query)).map((r): CodeRowInput & { id: string } => ({
     trialId: r.code.trialId,
     observer: r.observer ?? "(former member)",
-    scheme: r.definition as Scheme,
+    scheme: { ...(r.definition as Scheme), name: r.schemeName },
     schemeVersion: r.version,
     setId: r.code.setId,
     codeId: r.code.codeId,

@@ -6,6 +6,7 @@ import { TRPCError } from "@trpc/server";
 import { and, eq } from "drizzle-orm";
 import { presentedOrder, type Answers } from "@/core/questionnaires/answers";
 import type { Definition } from "@/core/questionnaires/definition";
+import { readSettings, shownTitle } from "@/core/studies/settings";
 import type { Database } from "@/store/client";
 import {
   participants,
@@ -31,6 +32,7 @@ export async function openLink(db: Database, token: string) {
       version: questionnaireVersions.version,
       name: questionnaires.name,
       studyTitle: studies.title,
+      settings: studies.settings,
       participantCode: participants.code,
       consentStatus: participants.consentStatus,
       response: questionnaireResponses,
@@ -68,6 +70,7 @@ export async function openLink(db: Database, token: string) {
     });
   }
   const definition = row.definition as Definition;
+  const settings = readSettings(row.settings);
   return {
     link: row.link,
     definition,
@@ -75,7 +78,9 @@ export async function openLink(db: Database, token: string) {
     presented: presentedOrder(definition, row.link.id),
     name: row.name,
     version: row.version,
-    studyTitle: row.studyTitle,
+    // Participants see the study's neutral name, if it has one, and its own words beside the consent checkbox.
+    studyTitle: shownTitle(row.studyTitle, settings, true),
+    consentAgreement: settings.consentAgreement,
     participantCode: row.participantCode,
     answers: (row.response?.answers ?? {}) as Answers,
   };

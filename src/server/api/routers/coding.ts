@@ -5,6 +5,7 @@ import { TRPCError } from "@trpc/server";
 import { asc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
 
+import { AGREEMENT_WINDOWS } from "@/core/coding/agreement";
 import { SCHEME_TEMPLATES, blankScheme, schemeTemplate } from "@/core/coding/templates";
 import { codeOfTrial, codeView, trialCodes } from "@/store/code-events";
 import { qualified } from "@/store/qualified";
@@ -106,9 +107,22 @@ export const codingRouter = router({
   agreement: studyProcedure(
     "data.read",
     "schemeVersion",
-    z.object({ schemeVersionId: id, sliceMs: z.number().int().min(100).max(60_000).default(1000) }),
+    z.object({
+      schemeVersionId: id,
+      sliceMs: z.number().int().min(100).max(60_000).default(1000),
+      window: z.enum(AGREEMENT_WINDOWS, { error: `must be one of ${AGREEMENT_WINDOWS.join(", ")}` }).default("trial"),
+      stepIds: z.array(z.string().max(100)).max(200).default([]),
+    }),
   ).query(({ ctx, input }) =>
-    studyAgreement(ctx.db, ctx.studyId, ctx.row.id, checkedScheme(ctx.row.definition), input.sliceMs),
+    studyAgreement(
+      ctx.db,
+      ctx.studyId,
+      ctx.row.id,
+      checkedScheme(ctx.row.definition),
+      input.sliceMs,
+      input.window,
+      input.stepIds,
+    ),
   ),
 
   /** A code marked afterwards, against the recording, in the caller's own tier. */

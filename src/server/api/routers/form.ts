@@ -27,6 +27,7 @@ export const formRouter = router({
       name: open.name,
       version: open.version,
       studyTitle: open.studyTitle,
+      consentAgreement: open.consentAgreement,
       participantCode: open.participantCode,
       definition: open.presented,
       answers: open.answers,

@@ -4,7 +4,7 @@
 import { and, desc, eq, inArray } from "drizzle-orm";
 import { alias } from "drizzle-orm/pg-core";
 import { BLINDED_NAME, blindingFor } from "@/core/studies/blinding";
-import { readSettings } from "@/core/studies/settings";
+import { readSettings, shownTitle } from "@/core/studies/settings";
 import { experiments, participants, studies, studyMembers, trials, user } from "@/store/schema";
 import { guarded } from "../trpc";
 
@@ -35,7 +35,13 @@ export const liveNow = guarded("account.read").query(async ({ ctx }) => {
     .where(inArray(trials.status, ["in_progress", "paused"]))
     .orderBy(desc(trials.t0));
   return rows.map(({ settings, studyStatus, role, ...row }) => {
-    const hidden = blindingFor(role, readSettings(settings), studyStatus).conditionsHidden;
-    return { ...row, myRole: role, experimentName: hidden ? BLINDED_NAME : row.experimentName };
+    const read = readSettings(settings);
+    const hidden = blindingFor(role, read, studyStatus).conditionsHidden;
+    return {
+      ...row,
+      myRole: role,
+      studyTitle: shownTitle(row.studyTitle, read, hidden),
+      experimentName: hidden ? BLINDED_NAME : row.experimentName,
+    };
   });
 });

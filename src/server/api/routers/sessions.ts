@@ -7,7 +7,7 @@ import { and, asc, desc, eq, inArray, isNull, or, sql } from "drizzle-orm";
 import { z } from "zod";
 import { runsAssigned, studyRoleMay } from "@/core/access/policy";
 import { blindingFor } from "@/core/studies/blinding";
-import { readSettings } from "@/core/studies/settings";
+import { readSettings, shownTitle } from "@/core/studies/settings";
 import {
   conditions,
   experimentVersions,
@@ -131,8 +131,13 @@ export const sessionsRouter = router({
       )
       .orderBy(asc(sessions.plannedAt));
     return rows.map(({ settings, role, studyStatus, ...row }) => {
-      const hidden = blindingFor(role, readSettings(settings), studyStatus).conditionsHidden;
-      return { ...row, conditionName: hidden ? null : row.conditionName };
+      const read = readSettings(settings);
+      const hidden = blindingFor(role, read, studyStatus).conditionsHidden;
+      return {
+        ...row,
+        studyTitle: shownTitle(row.studyTitle, read, hidden),
+        conditionName: hidden ? null : row.conditionName,
+      };
     });
   }),
 

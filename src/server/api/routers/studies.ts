@@ -1,6 +1,6 @@
 import { randomBytes } from "node:crypto";
 import { TRPCError } from "@trpc/server";
-import { and, desc, eq, sql } from "drizzle-orm";
+import { and, desc, eq, isNotNull, sql } from "drizzle-orm";
 import { z } from "zod";
 import { decide, studyRoleMay } from "@/core/access/policy";
 import { byConditionCsv } from "@/core/analysis/by-condition";
@@ -9,9 +9,12 @@ import {
   changedSettings,
   readSettings,
   settingsProblems,
+  shownTitle,
   studySettingsChangeSchema,
   type StudySettings,
 } from "@/core/studies/settings";
+import { type Blinding, blindingFor } from "@/core/studies/blinding";
+import type { Database } from "@/store/client";
 import { audit } from "../../audit";
 import { studyArchive } from "../../studies/archive";
 import { createStudy } from "../../studies/create";
@@ -29,17 +32,46 @@ function liftedBlinds(before: StudySettings, after: StudySettings, statusBefore:
   const ended = (s: string) => s === "completed" || s === "archived";
   const lifted: string[] = [];
   if (before.blinding.conditionsFromWizards && !after.blinding.conditionsFromWizards) lifted.push("conditions");
+  if (before.blinding.conditionsFromObservers && !after.blinding.conditionsFromObservers)
+    lifted.push("conditions.observers");
   const resultsBefore = before.blinding.resultsUntilComplete && !ended(statusBefore);
   const resultsAfter = after.blinding.resultsUntilComplete && !ended(statusAfter);
   if (resultsBefore && !resultsAfter) lifted.push("results");
   return lifted;
 }
 
+/**
+ * A study as a caller blind to its conditions sees it: the neutral name, and
+ * no description (a study's title and description often state its hypothesis).
+ */
+function neutral<T extends { title: string; description: string }>(
+  study: T,
+  settings: StudySettings,
+  blinding: Blinding,
+): T {
+  if (!blinding.conditionsHidden) return study;
+  return { ...study, title: shownTitle(study.title, settings, true), description: "" };
+}
+
+/** A seed of the team's own is set before the first assignment: a later one would rewrite the order already used. */
+async function seedProblems(db: Database, studyId: string): Promise<string[]> {
+  const [{ assigned }] = (await db
+    .select({ assigned: sql<number>`count(*)::int` })
+    .from(participants)
+    .where(and(eq(participants.studyId, studyId), isNotNull(participants.assignment)))) as [{ assigned: number }];
+  return assigned === 0
+    ? []
+    : [
+        `assignment.seed: the seed can only be set before the first assignment (${assigned} participant${assigned === 1 ? " is" : "s are"} assigned already)`,
+      ];
+}
+
 export const studiesRouter = router({
   /** The studies I am a member of, with my role: nobody sees any other. */
   mine: guarded("account.read").query(async ({ ctx }) => {
-    return ctx.db
+    const rows = await ctx.db
       .select({
+        settings: studies.settings,
         id: studies.id,
         title: studies.title,
         description: studies.description,
@@ -53,6 +85,9 @@ export const studiesRouter = router({
       .from(studies)
       .innerJoin(studyMembers, and(eq(studyMembers.studyId, studies.id), eq(studyMembers.userId, ctx.user.id)))
       .orderBy(desc(studies.updatedAt));
+    return rows.map(({ settings, ...row }) =>
+      neutral(row, readSettings(settings), blindingFor(row.role, readSettings(settings), row.status)),
+    );
   }),
 
   get: studyProcedure("study.read", "study", z.object({ studyId: id })).query(({ ctx }) => {
@@ -61,7 +96,7 @@ export const studiesRouter = router({
     // The seed lets anyone recompute who gets which condition next: only those who design the study see it.
     const seeSeed = studyRoleMay(ctx.studyRole, "experiment.edit");
     return {
-      ...study,
+      ...neutral(study, settings, ctx.blinding),
       settings: seeSeed ? settings : { ...settings, assignment: { ...settings.assignment, seed: undefined } },
       myRole: ctx.studyRole,
     };
@@ -108,6 +143,8 @@ export const studiesRouter = router({
     // The seed is the server's, made once per choice of strategy, so assignments can be audited and reproduced.
     const merged = settings ? changedSettings(before, settings, () => randomBytes(12).toString("hex")) : null;
     const problems = merged ? settingsProblems(merged) : [];
+    const seed = settings?.assignment?.seed;
+    if (seed !== undefined && seed !== before.assignment.seed) problems.push(...(await seedProblems(ctx.db, studyId)));
     if (problems.length > 0) throw new TRPCError({ code: "BAD_REQUEST", message: problems.join("; ") });
     const changes = merged ? { ...rest, settings: merged } : rest;
     return ctx.db.transaction(async (tx) => {
