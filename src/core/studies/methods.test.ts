@@ -71,7 +71,7 @@ const study: StudyFacts = {
   title: "Storytelling and memory",
   conditions: [condition({}), still],
   assignment: { strategy: "balanced", perCondition: 2, seed: "seed-42" },
-  blinding: { conditionsFromWizards: true, resultsUntilComplete: false },
+  blinding: { conditionsFromWizards: true, resultsUntilComplete: false, conditionsFromObservers: false },
   robots: [
     {
       name: "Simulated NAO6",
@@ -160,6 +160,12 @@ describe("the study's design decides what is said", () => {
       says: "“Still”: its experiment has not been published yet.",
     },
     { name: "no trial yet", facts: { ...study, robots: [] }, says: "No trial has run on a robot yet." },
+    {
+      name: "observers and coders blind to condition",
+      facts: { ...study, blinding: { ...study.blinding, conditionsFromObservers: true } },
+      says: "Observers and coders were blind to condition",
+      saysNot: "were not blind",
+    },
     {
       name: "no coding scheme: the section is left out",
       facts: { ...study, coding: [] },

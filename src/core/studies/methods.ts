@@ -180,7 +180,10 @@ function blinding(f: StudyFacts): string[] {
   const results = f.blinding.resultsUntilComplete
     ? "Researchers and observers saw no results until the study was marked completed."
     : "Researchers and observers could see results while the study ran.";
-  return [`${wizards} ${results} Observers and coders were not blind to condition.`];
+  const observers = f.blinding.conditionsFromObservers
+    ? "Observers and coders were blind to condition: HRIStudio showed them neither the condition nor any result."
+    : "Observers and coders were not blind to condition.";
+  return [`${wizards} ${results} ${observers}`];
 }
 
 function robots(f: StudyFacts, s: Style): string[] {
