@@ -46,11 +46,12 @@ it.each(["simulated.json", "nao6-ros2.json"])("%s: the robot's camera, throttled
   const frames: CameraFrame[] = [];
   const stop = robot.watchCamera((frame) => frames.push(frame));
   await until(() => frames.length >= 3);
-  // Asked of rosbridge with the plugin's throttle: the robot sends no faster than that.
+  // Asked of rosbridge with the plugin's throttle: the robot sends no faster than that, and with a queue of
+  // one, so each interval's newest frame is sent at its end (a frame every 200 ms, not every third or fourth).
   const subscribe = sim.received
     .map((r) => r.message as { op?: string; topic?: string; throttle_rate?: number })
     .find((m) => m.op === "subscribe" && m.topic === CAMERA_TOPIC);
-  expect(subscribe).toMatchObject({ throttle_rate: 200 });
+  expect(subscribe).toMatchObject({ throttle_rate: 200, queue_length: 1 });
   for (const frame of frames) {
     const bytes = Buffer.from(frame.data, "base64");
     expect(frame.format).toBe("jpeg");
