@@ -3,22 +3,12 @@
 // plain text and a link to download it: the designer's per-version text and
 // the study's Methods tab show it the same way.
 import { Download } from "lucide-react";
-import { useState } from "react";
 import { Button } from "./button";
 import { Problem } from "./problem";
+import { useCopy } from "./use-copy";
 
 export function MethodsText({ methods }: { methods: { markdown: string; text: string; filename: string } }) {
-  const [copied, setCopied] = useState<string | null>(null);
-  const [copyError, setCopyError] = useState<unknown>(null);
-  const copy = async (what: string, text: string) => {
-    setCopyError(null);
-    try {
-      await navigator.clipboard.writeText(text);
-      setCopied(what);
-    } catch {
-      setCopyError({ message: "The browser did not allow copying: select the text and copy it by hand." });
-    }
-  };
+  const { copied, copyError, copy } = useCopy();
   return (
     <div className="space-y-3">
       <Problem error={copyError} />

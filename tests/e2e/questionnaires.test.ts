@@ -51,7 +51,10 @@ describe.sequential("questionnaires in the browser", () => {
     await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
     await wizard.goto(`/trials/${trial.id}`);
     await wizard.getByRole("button", { name: "Open System Usability Scale (SUS) for the participant" }).click();
-    const link = (await wizard.getByTestId("questionnaire-link-System Usability Scale (SUS)").getAttribute("href"))!;
+    const link = (await wizard.getByTestId("questionnaire-link-System Usability Scale (SUS)").textContent())!.trim();
+    // A tablet's camera reads it from the screen; or the page opens on this device.
+    await wizard.getByTestId("link-qr").waitFor();
+    expect(await wizard.getByRole("link", { name: "Open on this device" }).getAttribute("href")).toBe(link);
     await expectAccessible(wizard, "the questionnaire opened for the participant");
     expect(link).toMatch(/\/q\/[\w-]{20,}$/);
 

@@ -7,6 +7,7 @@ import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
 import { Dialog } from "@/ui/dialog";
 import { Field, Input, NativeSelect } from "@/ui/field";
+import { ParticipantLink } from "@/ui/participant-link";
 import { Problem } from "@/ui/problem";
 
 export function SendLinkDialog({
@@ -75,11 +76,7 @@ export function SendLinkDialog({
           Make the link
         </Button>
         <Problem error={createLink.error} />
-        {url && (
-          <p className="break-all rounded-md bg-slate-50 p-3 font-mono text-sm" data-testid="sent-link">
-            {url}
-          </p>
-        )}
+        {url && <ParticipantLink url={url} testId="sent-link" />}
       </div>
     </Dialog>
   );

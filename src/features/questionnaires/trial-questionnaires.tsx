@@ -2,10 +2,11 @@
 // On the wizard's trial page: the study's questionnaires for before and after
 // the trial, each one click from a one-time link to open on a tablet.
 import { useMutation, useQuery } from "@tanstack/react-query";
-import { ClipboardList, ExternalLink } from "lucide-react";
+import { ClipboardList } from "lucide-react";
 import { useState } from "react";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
+import { ParticipantLink } from "@/ui/participant-link";
 import { Problem } from "@/ui/problem";
 import { Card } from "@/ui/surface";
 
@@ -39,15 +40,7 @@ export function TrialQuestionnaires({
             {q.name} <span className="text-xs text-slate-500">({q.timing} the trial)</span>
           </div>
           {links[q.id] ? (
-            <a
-              href={links[q.id]}
-              target="_blank"
-              rel="noreferrer"
-              data-testid={`questionnaire-link-${q.name}`}
-              className="flex items-center gap-1 break-all text-brand-700 hover:underline"
-            >
-              <ExternalLink className="h-3.5 w-3.5 shrink-0" aria-hidden /> {links[q.id]}
-            </a>
+            <ParticipantLink url={links[q.id]!} testId={`questionnaire-link-${q.name}`} />
           ) : (
             <Button size="sm" variant="secondary" disabled={createLink.isPending} onClick={() => void open(q.id)}>
               {/* The questionnaire's name is heard, not shown: the row already shows it. */}
