@@ -31,7 +31,13 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
     if (resolved.status === "browser")
       return report({ kind: "dispatched", actionId: request.actionId, detail: { playedBy: "browser" } });
     await connecting;
-    report({ kind: "dispatched", actionId: request.actionId, detail: { robotAction: resolved.action.id } });
+    // What goes on the wire, recorded with the dispatch: the exports show the message, not only the action.
+    const sent = transport.sends(resolved.action, resolved.parameters);
+    report({
+      kind: "dispatched",
+      actionId: request.actionId,
+      detail: { robotAction: resolved.action.id, ...(sent ? { sent } : {}) },
+    });
     const outcome = await transport.dispatch(resolved.action, resolved.parameters);
     if (outcome.status === "completed")
       report({ kind: "completed", actionId: request.actionId, ...(outcome.detail ? { detail: outcome.detail } : {}) });
