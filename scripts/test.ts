@@ -12,7 +12,8 @@ const log = (line: string) => console.log(`[test] ${line}`);
 /**
  * The Debian packages the tests drive for real: Chromium, an sshd for the SSH
  * transport, and Python with venv (Debian keeps ensurepip in python3-venv) for
- * the reference tools of tests/python.
+ * the reference tools of tests/python; R with readr and httr2, the analysis
+ * API's R client (tests/r).
  */
 const NEEDS = [
   { package: "chromium", present: () => Boolean(findChromium()), hint: "or set HRI_CHROMIUM to a Chromium binary" },
@@ -22,6 +23,16 @@ const NEEDS = [
     present: () => spawnSync("python3", ["-c", "import ensurepip, venv"]).status === 0,
     hint: "for the tests that read exports back with Python tools",
   },
+  {
+    package: "r-base-core",
+    present: () => existsSync("/usr/bin/Rscript"),
+    hint: "for the analysis API's R client test",
+  },
+  ...["readr", "httr2"].map((library) => ({
+    package: `r-cran-${library}`,
+    present: () => spawnSync("Rscript", ["-e", `library(${library})`]).status === 0,
+    hint: "for the analysis API's R client test",
+  })),
 ];
 
 function ensurePackages() {

@@ -13,7 +13,7 @@ import { codingRows } from "../support/coding";
 import { accessTokens, annotations, auditLog, trialSamples, trials } from "../../src/store/schema";
 import { appendEvents } from "../../src/store/event-store";
 import { parseCsv } from "../support/csv";
-import { ORIGIN, routeServer } from "../support/routes";
+import { analysisRoute, ORIGIN, routeServer } from "../support/routes";
 import { newPerson } from "./fixture";
 import { appRouter } from "../../src/server/api/root";
 import { contextFromToken } from "../../src/server/tokens/context";
@@ -58,27 +58,9 @@ const a = await studyWithTrial("Study A", "A-1");
 const b = await studyWithTrial("Study B", "B-1");
 const tokenA = (await owner.tokens.create({ name: "A only", studyIds: [a.studyId], expiresInDays: 30 })).secret;
 
-/** Calls a v1 route as Next.js would, with the path's ids filled in. */
-async function get(path: string, headers: Record<string, string> = {}) {
-  const url = new URL(`${ORIGIN}${API_BASE}${path}`);
-  const route = url.pathname.slice(API_BASE.length);
-  const declared = Object.values(ENDPOINTS).find((e) =>
-    new RegExp(`^${e.path.replace(/\{\w+\}/g, "[^/]+")}$`).test(route),
-  )!;
-  const values = route.split("/");
-  const params = Object.fromEntries(
-    declared.path
-      .split("/")
-      .map((part, i) => [part, values[i]!] as const)
-      .filter(([part]) => part.startsWith("{"))
-      .map(([part, value]) => [part.slice(1, -1), value]),
-  );
-  const file = declared.path.replace(/\{(\w+)\}/g, "[$1]");
-  const handlers = (await import(`../../src/app/api/v1${file}/route`)) as {
-    GET: (req: Request, ctx: { params: Promise<Record<string, string>> }) => Promise<Response>;
-  };
-  return handlers.GET(new Request(url, { headers }), { params: Promise.resolve(params) });
-}
+/** Calls a v1 route as Next.js would. */
+const get = (path: string, headers: Record<string, string> = {}) =>
+  analysisRoute(new Request(`${ORIGIN}${API_BASE}${path}`, { headers }));
 const as = (secret: string, extra: Record<string, string> = {}) => ({ authorization: `Bearer ${secret}`, ...extra });
 const csvOf = async (res: Response) => parseCsv(await res.text());
 
