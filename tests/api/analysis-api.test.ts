@@ -3,12 +3,15 @@
 // as its owner is now), what it is refused (another study's ids, alone or
 // mixed; an expired, revoked or unknown token; a session cookie), the formats,
 // and the audit log's record of tokens.
+import Ajv2020 from "ajv/dist/2020";
 import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it, vi } from "vitest";
 import { hashTokenSecret } from "../../src/core/access/token-secret";
 import { API_BASE, ENDPOINTS, STUDY_COLUMNS, TRIAL_COLUMNS } from "../../src/core/analysis/api";
 import { EVENT_COLUMNS } from "../../src/core/analysis/exports";
+import { openApiDocument } from "../../src/core/analysis/openapi";
 import { CODE_COLUMNS } from "../../src/core/coding/export";
+import { ANSWER_COLUMNS } from "../../src/core/questionnaires/export";
 import { codingRows } from "../support/coding";
 import { accessTokens, annotations, auditLog, trialSamples, trials } from "../../src/store/schema";
 import { appendEvents } from "../../src/store/event-store";
@@ -91,12 +94,27 @@ describe("what a token reads", () => {
       [a.trialId, "owner", "Wizard interventions", "1", "Intervention type", "Hint", "point", "1500", "", ""],
     ]);
     const answers = await get(`/studies/${a.studyId}/answers`, as(tokenA));
-    expect([answers.status, (await csvOf(answers))[0]]).toEqual([
-      200,
-      ["participant", "trial_id", "questionnaire", "version", "item_id", "item", "answer"],
-    ]);
+    expect([answers.status, (await csvOf(answers))[0]]).toEqual([200, [...ANSWER_COLUMNS]]);
     const [, ...one] = await csvOf(await get(`/trials/${a.trialId}/events`, as(tokenA)));
     expect(one).toEqual(events);
+  });
+
+  it("gives each table's JSON in the types its description declares", async () => {
+    // A time is ISO 8601 in UTC, as every export writes it.
+    const utc = (text: string) => !Number.isNaN(Date.parse(text)) && text.endsWith("Z");
+    const ajv = new Ajv2020({ strict: false, formats: { "date-time": utc } });
+    const described = openApiDocument().paths as Record<string, { get: { responses: Record<string, unknown> } }>;
+    for (const [name, endpoint] of Object.entries(ENDPOINTS)) {
+      const path = endpoint.path.replace("{studyId}", a.studyId).replace("{trialId}", a.trialId);
+      const records = (await (await get(`${path}?format=json`, as(tokenA))).json()) as unknown[];
+      const { schema } = (
+        described[`${API_BASE}${endpoint.path}`]!.get.responses["200"] as {
+          content: { "application/json": { schema: object } };
+        }
+      ).content["application/json"];
+      const valid = ajv.validate(schema, records);
+      expect([name, records.length > 0, valid ? [] : ajv.errors]).toEqual([name, name !== "answers", []]);
+    }
   });
 
   it("switches to JSON records with ?format=json or Accept: application/json; refuses an unknown format", async () => {
