@@ -6,7 +6,7 @@ import { afterAll, describe, expect, it } from "vitest";
 import { questionnaireLinks } from "../../src/store/schema";
 import { parseCsv } from "../support/csv";
 import { freshDatabase } from "../support/db";
-import { buildFixture } from "./fixture";
+import { buildFixture, publishedVersion } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -69,7 +69,7 @@ describe("questionnaire versions", () => {
 describe("the answers CSV, in long form", () => {
   it("gives each Godspeed answer its condition and published sub-scale, and scores only the sub-scales", async () => {
     const study = await f.newStudy();
-    const experiment = await owner.experiments.create({ studyId: study.id, name: "Greeting", robotId: "nao6-ros2" });
+    const { experiment, version } = await publishedVersion(owner, study.id);
     const condition = await owner.conditions.create({
       studyId: study.id,
       name: "Gestures",
@@ -84,7 +84,12 @@ describe("the answers CSV, in long form", () => {
       consentDate: new Date(),
     });
     await owner.conditions.assign({ participantId: p.id, conditionId: condition.id });
-    const { token } = await owner.questionnaires.createLink({ questionnaireId: q.id, participantId: p.id });
+    const trial = await owner.trials.create({ versionId: version.id, participantId: p.id });
+    const { token } = await owner.questionnaires.createLink({
+      questionnaireId: q.id,
+      participantId: p.id,
+      trialId: trial.id,
+    });
     // Anthropomorphism 2s, animacy 3s, likeability 4s, perceived intelligence 5s, perceived safety 1, 2, 3.
     const given = [...Array(5).fill(2), ...Array(6).fill(3), ...Array(5).fill(4), ...Array(5).fill(5), 1, 2, 3];
     await participant.submit({ token, answers: Object.fromEntries(given.map((v, i) => [`gs${i + 1}`, v])) });
@@ -94,7 +99,7 @@ describe("the answers CSV, in long form", () => {
     expect(named[0]).toEqual({
       participant: "P007",
       condition: "Gestures",
-      trial_id: "",
+      trial_id: trial.id,
       questionnaire: "Godspeed questionnaire",
       instrument: "Godspeed questionnaire",
       version: "1",
@@ -113,6 +118,15 @@ describe("the answers CSV, in long form", () => {
       ["Likeability", "Likeability", "4"],
       ["Perceived Intelligence", "Perceived Intelligence", "5"],
       ["Perceived Safety", "Perceived Safety", "2"],
+    ]);
+    // The study's table of trials shows the same five, by the same names.
+    const [listed] = await owner.trials.list({ studyId: study.id });
+    expect(listed!.scores).toEqual([
+      { name: "Godspeed questionnaire · Anthropomorphism", score: 2 },
+      { name: "Godspeed questionnaire · Animacy", score: 3 },
+      { name: "Godspeed questionnaire · Likeability", score: 4 },
+      { name: "Godspeed questionnaire · Perceived Intelligence", score: 5 },
+      { name: "Godspeed questionnaire · Perceived Safety", score: 2 },
     ]);
   });
 });
