@@ -11,9 +11,10 @@ const log = (line: string) => console.log(`[test] ${line}`);
 
 /**
  * The Debian packages the tests drive for real: Chromium, an sshd for the SSH
- * transport, HAProxy in front of several runtimes (deploy/haproxy.cfg), and
+ * transport, HAProxy in front of several runtimes (deploy/haproxy.cfg),
  * Python with venv (Debian keeps ensurepip in python3-venv) for the reference
- * tools of tests/python.
+ * tools of tests/python, and R with readr and httr2, the analysis API's R
+ * client (tests/r).
  */
 const NEEDS = [
   { package: "chromium", present: () => Boolean(findChromium()), hint: "or set HRI_CHROMIUM to a Chromium binary" },
@@ -24,6 +25,16 @@ const NEEDS = [
     present: () => spawnSync("python3", ["-c", "import ensurepip, venv"]).status === 0,
     hint: "for the tests that read exports back with Python tools",
   },
+  {
+    package: "r-base-core",
+    present: () => existsSync("/usr/bin/Rscript"),
+    hint: "for the analysis API's R client test",
+  },
+  ...["readr", "httr2"].map((library) => ({
+    package: `r-cran-${library}`,
+    present: () => spawnSync("Rscript", ["-e", `library(${library})`]).status === 0,
+    hint: "for the analysis API's R client test",
+  })),
 ];
 
 function ensurePackages() {

@@ -39,7 +39,13 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
       console.warn(`${plugin.name}: dropped ${request.actionType}: ${reason}`);
       return report({ kind: "not_sent", actionId: request.actionId, reason });
     }
-    report({ kind: "dispatched", actionId: request.actionId, detail: { robotAction: resolved.action.id } });
+    // What goes on the wire, recorded with the dispatch: the exports show the message, not only the action.
+    const sent = transport.sends(resolved.action, resolved.parameters);
+    report({
+      kind: "dispatched",
+      actionId: request.actionId,
+      detail: { robotAction: resolved.action.id, ...(sent ? { sent } : {}) },
+    });
     const freshUntil = request.askedAt === undefined ? undefined : request.askedAt + ROBOT_ACTION_FRESH_MS;
     const outcome = await transport.dispatch(resolved.action, resolved.parameters, {
       freshUntil,

@@ -47,8 +47,35 @@ describe("the analysis API's description", () => {
       );
       expect(get.responses["200"]!.content!["application/json"]!.schema.items!.required).toEqual([...endpoint.columns]);
       const refusals = ["400", "401", "403", "404", ...(endpoint.path.includes("{trialId}") ? ["412"] : [])];
-      expect(Object.keys(get.responses)).toEqual(["200", ...refusals]);
+      expect(Object.keys(get.responses)).toEqual(["200", ...refusals, "500", "503"]);
     }
+  });
+
+  it("says where it is served, under which licence, and each column's real type", () => {
+    expect(document.servers).toEqual([{ url: "/", description: "This HRIStudio server" }]);
+    expect(document.info.license).toEqual({ name: "MIT", identifier: "MIT" });
+    const columns = (name: string) =>
+      (
+        document.paths[`${API_BASE}${ENDPOINTS[name as keyof typeof ENDPOINTS].path}`] as {
+          get: {
+            responses: { "200": { content: { "application/json": { schema: { items: { properties: object } } } } } };
+          };
+        }
+      ).get.responses["200"].content["application/json"].schema.items.properties as Record<
+        string,
+        Record<string, unknown>
+      >;
+    expect(columns("events").seq).toMatchObject({ type: "integer" });
+    expect(columns("events").rel_ms).toMatchObject({ type: ["integer", "null"] });
+    expect(columns("events").server_time).toMatchObject({ type: "string", format: "date-time" });
+    expect(columns("events").payload).toMatchObject({ type: "string", contentMediaType: "application/json" });
+    expect(columns("trials").status).toMatchObject({
+      type: "string",
+      enum: ["scheduled", "in_progress", "paused", "completed", "aborted"],
+    });
+    expect(columns("studies").results_hidden).toMatchObject({ type: "boolean" });
+    expect(columns("answers").reverse_scored).toMatchObject({ type: ["boolean", "null"] });
+    expect(columns("codes").start_ms!.description).toMatch(/\(ms\)$/);
   });
 
   it("is served at /api/v1/openapi.json as OpenAPI 3.1, without a token", async () => {

@@ -3,17 +3,20 @@
 // as its owner is now), what it is refused (another study's ids, alone or
 // mixed; an expired, revoked or unknown token; a session cookie), the formats,
 // and the audit log's record of tokens.
+import Ajv2020 from "ajv/dist/2020";
 import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it, vi } from "vitest";
 import { hashTokenSecret } from "../../src/core/access/token-secret";
 import { API_BASE, ENDPOINTS, STUDY_COLUMNS, TRIAL_COLUMNS } from "../../src/core/analysis/api";
 import { EVENT_COLUMNS } from "../../src/core/analysis/exports";
+import { openApiDocument } from "../../src/core/analysis/openapi";
 import { CODE_COLUMNS } from "../../src/core/coding/export";
+import { ANSWER_COLUMNS } from "../../src/core/questionnaires/export";
 import { codingRows } from "../support/coding";
 import { accessTokens, annotations, auditLog, trialSamples, trials } from "../../src/store/schema";
 import { appendEvents } from "../../src/store/event-store";
 import { parseCsv } from "../support/csv";
-import { ORIGIN, routeServer } from "../support/routes";
+import { analysisRoute, ORIGIN, routeServer } from "../support/routes";
 import { newPerson } from "./fixture";
 import { appRouter } from "../../src/server/api/root";
 import { contextFromToken } from "../../src/server/tokens/context";
@@ -58,27 +61,9 @@ const a = await studyWithTrial("Study A", "A-1");
 const b = await studyWithTrial("Study B", "B-1");
 const tokenA = (await owner.tokens.create({ name: "A only", studyIds: [a.studyId], expiresInDays: 30 })).secret;
 
-/** Calls a v1 route as Next.js would, with the path's ids filled in. */
-async function get(path: string, headers: Record<string, string> = {}) {
-  const url = new URL(`${ORIGIN}${API_BASE}${path}`);
-  const route = url.pathname.slice(API_BASE.length);
-  const declared = Object.values(ENDPOINTS).find((e) =>
-    new RegExp(`^${e.path.replace(/\{\w+\}/g, "[^/]+")}$`).test(route),
-  )!;
-  const values = route.split("/");
-  const params = Object.fromEntries(
-    declared.path
-      .split("/")
-      .map((part, i) => [part, values[i]!] as const)
-      .filter(([part]) => part.startsWith("{"))
-      .map(([part, value]) => [part.slice(1, -1), value]),
-  );
-  const file = declared.path.replace(/\{(\w+)\}/g, "[$1]");
-  const handlers = (await import(`../../src/app/api/v1${file}/route`)) as {
-    GET: (req: Request, ctx: { params: Promise<Record<string, string>> }) => Promise<Response>;
-  };
-  return handlers.GET(new Request(url, { headers }), { params: Promise.resolve(params) });
-}
+/** Calls a v1 route as Next.js would. */
+const get = (path: string, headers: Record<string, string> = {}) =>
+  analysisRoute(new Request(`${ORIGIN}${API_BASE}${path}`, { headers }));
 const as = (secret: string, extra: Record<string, string> = {}) => ({ authorization: `Bearer ${secret}`, ...extra });
 const csvOf = async (res: Response) => parseCsv(await res.text());
 
@@ -109,12 +94,27 @@ describe("what a token reads", () => {
       [a.trialId, "owner", "Wizard interventions", "1", "Intervention type", "Hint", "point", "1500", "", ""],
     ]);
     const answers = await get(`/studies/${a.studyId}/answers`, as(tokenA));
-    expect([answers.status, (await csvOf(answers))[0]]).toEqual([
-      200,
-      ["participant", "trial_id", "questionnaire", "version", "item_id", "item", "answer"],
-    ]);
+    expect([answers.status, (await csvOf(answers))[0]]).toEqual([200, [...ANSWER_COLUMNS]]);
     const [, ...one] = await csvOf(await get(`/trials/${a.trialId}/events`, as(tokenA)));
     expect(one).toEqual(events);
+  });
+
+  it("gives each table's JSON in the types its description declares", async () => {
+    // A time is ISO 8601 in UTC, as every export writes it.
+    const utc = (text: string) => !Number.isNaN(Date.parse(text)) && text.endsWith("Z");
+    const ajv = new Ajv2020({ strict: false, formats: { "date-time": utc } });
+    const described = openApiDocument().paths as Record<string, { get: { responses: Record<string, unknown> } }>;
+    for (const [name, endpoint] of Object.entries(ENDPOINTS)) {
+      const path = endpoint.path.replace("{studyId}", a.studyId).replace("{trialId}", a.trialId);
+      const records = (await (await get(`${path}?format=json`, as(tokenA))).json()) as unknown[];
+      const { schema } = (
+        described[`${API_BASE}${endpoint.path}`]!.get.responses["200"] as {
+          content: { "application/json": { schema: object } };
+        }
+      ).content["application/json"];
+      const valid = ajv.validate(schema, records);
+      expect([name, records.length > 0, valid ? [] : ajv.errors]).toEqual([name, name !== "answers", []]);
+    }
   });
 
   it("switches to JSON records with ?format=json or Accept: application/json; refuses an unknown format", async () => {

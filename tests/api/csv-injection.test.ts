@@ -54,10 +54,23 @@ describe("the questionnaire answers CSV", () => {
     const { study } = await studyWithAnswers();
     const csv = (await owner.questionnaires.exportCsv({ studyId: study.id })).body;
     const rows = parseCsv(csv);
-    const row = (item: string) => rows.find((r) => r[4] === item)!;
-    expect(row("link")).toEqual(["'-P1", "", "'@Mood", "1", "link", "'+Your favourite website", `'${HYPERLINK}`]);
-    expect(row("scale").slice(5)).toEqual(["'-How far (-5 to 5)", "-3"]);
-    expect(row("typed")[6]).toBe("'-3");
+    const row = (item: string) => rows.find((r) => r[7] === item)!;
+    expect(row("link")).toEqual([
+      "'-P1",
+      "",
+      "",
+      "'@Mood",
+      "",
+      "1",
+      "answer",
+      "link",
+      "'+Your favourite website",
+      "",
+      "",
+      `'${HYPERLINK}`,
+    ]);
+    expect(row("scale").slice(8)).toEqual(["'-How far (-5 to 5)", "", "", "-3"]);
+    expect(row("typed")[11]).toBe("'-3");
     expect(inert(csv)).toEqual(["-3"]);
   });
 });

@@ -4,8 +4,9 @@
 import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { questionnaireLinks } from "../../src/store/schema";
+import { parseCsv } from "../support/csv";
 import { freshDatabase } from "../support/db";
-import { buildFixture } from "./fixture";
+import { buildFixture, publishedVersion } from "./fixture";
 
 const { db, close } = await freshDatabase();
 const f = await buildFixture(db);
@@ -65,6 +66,71 @@ describe("questionnaire versions", () => {
   });
 });
 
+describe("the answers CSV, in long form", () => {
+  it("gives each Godspeed answer its condition and published sub-scale, and scores only the sub-scales", async () => {
+    const study = await f.newStudy();
+    const { experiment, version } = await publishedVersion(owner, study.id);
+    const condition = await owner.conditions.create({
+      studyId: study.id,
+      name: "Gestures",
+      experimentId: experiment.id,
+    });
+    const q = await owner.questionnaires.create({ studyId: study.id, instrument: "godspeed" });
+    await owner.questionnaires.publish({ questionnaireId: q.id });
+    const p = await owner.participants.create({
+      studyId: study.id,
+      code: "P007",
+      consentStatus: "given",
+      consentDate: new Date(),
+    });
+    await owner.conditions.assign({ participantId: p.id, conditionId: condition.id });
+    const trial = await owner.trials.create({ versionId: version.id, participantId: p.id });
+    const { token } = await owner.questionnaires.createLink({
+      questionnaireId: q.id,
+      participantId: p.id,
+      trialId: trial.id,
+    });
+    // Anthropomorphism 2s, animacy 3s, likeability 4s, perceived intelligence 5s, perceived safety 1, 2, 3.
+    const given = [...Array(5).fill(2), ...Array(6).fill(3), ...Array(5).fill(4), ...Array(5).fill(5), 1, 2, 3];
+    await participant.submit({ token, answers: Object.fromEntries(given.map((v, i) => [`gs${i + 1}`, v])) });
+    const [header, ...rows] = parseCsv((await owner.questionnaires.exportCsv({ studyId: study.id })).body);
+    const named = rows.map((r) => Object.fromEntries(header!.map((c, i) => [c, r[i]])));
+    expect(named).toHaveLength(24 + 5);
+    expect(named[0]).toEqual({
+      participant: "P007",
+      condition: "Gestures",
+      trial_id: trial.id,
+      questionnaire: "Godspeed questionnaire",
+      instrument: "Godspeed questionnaire",
+      version: "1",
+      measure: "answer",
+      item_id: "gs1",
+      item: "Fake – Natural",
+      subscale: "Anthropomorphism",
+      reverse_scored: "false",
+      answer: "2",
+    });
+    expect(named[23]).toMatchObject({ item_id: "gs24", subscale: "Perceived Safety", answer: "3" });
+    // No overall "Godspeed" score: the instrument defines none.
+    expect(named.filter((r) => r.measure === "score").map((r) => [r.item, r.subscale, r.answer])).toEqual([
+      ["Anthropomorphism", "Anthropomorphism", "2"],
+      ["Animacy", "Animacy", "3"],
+      ["Likeability", "Likeability", "4"],
+      ["Perceived Intelligence", "Perceived Intelligence", "5"],
+      ["Perceived Safety", "Perceived Safety", "2"],
+    ]);
+    // The study's table of trials shows the same five, by the same names.
+    const [listed] = await owner.trials.list({ studyId: study.id });
+    expect(listed!.scores).toEqual([
+      { name: "Godspeed questionnaire · Anthropomorphism", score: 2 },
+      { name: "Godspeed questionnaire · Animacy", score: 3 },
+      { name: "Godspeed questionnaire · Likeability", score: 4 },
+      { name: "Godspeed questionnaire · Perceived Intelligence", score: 5 },
+      { name: "Godspeed questionnaire · Perceived Safety", score: 2 },
+    ]);
+  });
+});
+
 describe("one-time links", () => {
   it("keeps a draft across reloads, scores on submit, and refuses the link afterwards", async () => {
     const { study, q, p } = await studyWithSus();
@@ -80,11 +146,13 @@ describe("one-time links", () => {
     await expect(participant.open({ token })).rejects.toMatchObject(used);
     await expect(participant.submit({ token, answers: SUS })).rejects.toMatchObject(used);
     const csv = (await owner.questionnaires.exportCsv({ studyId: study.id })).body.split("\r\n");
-    expect(csv[0]).toBe("participant,trial_id,questionnaire,version,item_id,item,answer");
-    expect(csv).toContain(
-      "P001,,System Usability Scale (SUS),1,sus1,I think that I would like to use this system frequently.,4",
+    expect(csv[0]).toBe(
+      "participant,condition,trial_id,questionnaire,instrument,version,measure,item_id,item,subscale,reverse_scored,answer",
     );
-    expect(csv).toContain("P001,,System Usability Scale (SUS),1,score,score,60");
+    const sus = "P001,,,System Usability Scale (SUS),System Usability Scale (SUS),1";
+    expect(csv).toContain(`${sus},answer,sus1,I think that I would like to use this system frequently.,,false,4`);
+    expect(csv).toContain(`${sus},answer,sus2,I found the system unnecessarily complex.,,true,2`);
+    expect(csv).toContain(`${sus},score,,SUS score,,,60`);
   });
 
   it("refuses an expired link and a made-up one, and never makes a link for another study's participant", async () => {

@@ -188,6 +188,7 @@ describe("the study archive", () => {
     const files = await unzipArchive(archive);
     expect(Object.keys(files).sort()).toEqual([
       "README.txt",
+      "codebook.csv",
       "codes.csv",
       expect.stringMatching(/^experiments\/story-v1-[0-9a-f-]{8}-methods\.md$/),
       "experiments/story-v1-methods.md",

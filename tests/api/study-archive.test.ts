@@ -111,7 +111,13 @@ it("a study's zip, streamed in batches, reads back whole with every trial's file
   expect(parseCsv(strFromU8(files[`trials/${trials[2]!.id}-samples.csv`]!)).filter((r) => r.length > 1)).toHaveLength(
     1,
   );
-  expect(Object.keys(files)).toEqual(expect.arrayContaining(["README.txt", "study.json", "questionnaire-answers.csv"]));
+  expect(Object.keys(files)).toEqual(
+    expect.arrayContaining(["README.txt", "study.json", "questionnaire-answers.csv", "codebook.csv"]),
+  );
+  // The codebook names every column of the events CSV the zip holds.
+  const events = parseCsv(strFromU8(files[`trials/${trials[0]!.id}-events.csv`]!))[0]!;
+  const codebook = parseCsv(strFromU8(files["codebook.csv"]!));
+  expect(codebook.filter((r) => r[0] === "trials/<id>-events.csv").map((r) => r[1])).toEqual(events);
 });
 
 it("over tRPC's own link, where an answer is one JSON document, the zip is refused plainly: it is a download", async () => {

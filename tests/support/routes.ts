@@ -6,6 +6,7 @@ import { readdirSync, statSync } from "node:fs";
 import { join, relative } from "node:path";
 import { freshDatabase } from "./db";
 import { scratchFolder } from "./scratch";
+import { API_BASE, ENDPOINTS } from "../../src/core/analysis/api";
 import type { Database } from "../../src/store/client";
 import { buildFixture, TEST_SECRET, type Caller } from "../api/fixture";
 
@@ -78,4 +79,26 @@ export function apiRouteFiles(dir = API): string[] {
     if (statSync(path).isDirectory()) return apiRouteFiles(path);
     return name === "route.ts" ? [relative(API, dir)] : [];
   });
+}
+
+/** A request to the analysis API (/api/v1) answered by its route handler, the path's ids given as Next.js gives them. */
+export async function analysisRoute(request: Request): Promise<Response> {
+  const route = new URL(request.url).pathname.slice(API_BASE.length);
+  const declared = Object.values(ENDPOINTS).find((e) =>
+    new RegExp(`^${e.path.replace(/\{\w+\}/g, "[^/]+")}$`).test(route),
+  );
+  if (!declared) return Response.json({ error: `No analysis API route at ${route}` }, { status: 404 });
+  const values = route.split("/");
+  const params = Object.fromEntries(
+    declared.path
+      .split("/")
+      .map((part, i) => [part, values[i]!] as const)
+      .filter(([part]) => part.startsWith("{"))
+      .map(([part, value]) => [part.slice(1, -1), value]),
+  );
+  const file = declared.path.replace(/\{(\w+)\}/g, "[$1]");
+  const handlers = (await import(/* @vite-ignore */ `../../src/app/api/v1${file}/route`)) as {
+    GET: (req: Request, ctx: { params: Promise<Record<string, string>> }) => Promise<Response>;
+  };
+  return handlers.GET(request, { params: Promise.resolve(params) });
 }

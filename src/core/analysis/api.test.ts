@@ -29,6 +29,12 @@ describe("a tidy table", () => {
     );
   });
 
+  it("is CSV for a script, as the analysis API writes it, with the text as it is", () => {
+    expect(tableCsv(table, "script")).toBe(
+      'trial_id,seq,note,ended\r\nt1,1,=HYPERLINK(1),\r\nt1,2,"said ""hi"", left",true\r\n',
+    );
+  });
+
   it("is JSON records keyed by column, an empty cell null", () => {
     expect(JSON.parse(tableJson(table))).toEqual([
       { trial_id: "t1", seq: 1, note: "=HYPERLINK(1)", ended: null },

@@ -87,12 +87,17 @@ group("results by condition", () => {
     ]),
   ];
   const scores: ConditionScore[] = [
-    { condition: "robot voice", questionnaire: "SUS", score: { ok: true, score: 60 } },
-    { condition: "robot voice", questionnaire: "SUS", score: { ok: true, score: 80 } },
-    { condition: "text on screen", questionnaire: "SUS", score: { ok: true, score: 75 } },
-    { condition: "text on screen", questionnaire: "Godspeed", score: { ok: true, subscales: { likeability: 4.2 } } },
+    { condition: "robot voice", questionnaire: "SUS", instrument: "sus", score: { ok: true, score: 60 } },
+    { condition: "robot voice", questionnaire: "SUS", instrument: "sus", score: { ok: true, score: 80 } },
+    { condition: "text on screen", questionnaire: "SUS", instrument: "sus", score: { ok: true, score: 75 } },
+    {
+      condition: "text on screen",
+      questionnaire: "Godspeed",
+      instrument: "godspeed",
+      score: { ok: true, subscales: { likeability: 4.2 } },
+    },
     // A questionnaire without a published score (free text, or not every item answered) adds nothing.
-    { condition: "text on screen", questionnaire: "Notes", score: null },
+    { condition: "text on screen", questionnaire: "Notes", instrument: null, score: null },
   ];
   const results = resultsByCondition(trials, scores);
   const row = (measure: string) =>
@@ -151,7 +156,7 @@ group("results by condition", () => {
       ],
     ],
     [
-      "Questionnaire score: Godspeed (likeability)",
+      "Questionnaire score: Godspeed (Likeability)",
       [
         ["robot voice", null],
         ["text on screen", { n: 1, mean: 4.2, sd: null, median: 4.2, min: 4.2, max: 4.2 }],
@@ -169,14 +174,14 @@ group("results by condition", () => {
       "Time in step: Greeting",
       "Time in step: Task",
       "Questionnaire score: SUS",
-      "Questionnaire score: Godspeed (likeability)",
+      "Questionnaire score: Godspeed (Likeability)",
     ]);
   });
 
   it("puts participants without a condition last, and a condition with only answers has no trials", () => {
     const r = resultsByCondition(
       [trial(null, 50, 0, [])],
-      [{ condition: "a", questionnaire: "SUS", score: { score: 10 } }],
+      [{ condition: "a", questionnaire: "SUS", instrument: "sus", score: { score: 10 } }],
     );
     expect(r.conditions).toEqual([
       { condition: "a", trials: 0 },

@@ -4,6 +4,8 @@
 // sample SD, median and range, as a paper's table reports them; and the
 // participants' answers, counted per question, per answer, per condition.
 import { csvDocument } from "../csv/csv";
+import type { Instrument } from "../questionnaires/definition";
+import { publishedScores } from "../questionnaires/published-scores";
 import { describe, studySummary, type Description, type TrialFigures } from "./study-summary";
 
 export type Unit = "%" | "count" | "ms" | "score";
@@ -32,10 +34,12 @@ export interface ByCondition {
 export interface ConditionScore {
   condition: string | null;
   questionnaire: string;
+  /** The standard instrument it is, which says what its scores are named; null for the study's own. */
+  instrument: Instrument | null;
   score: unknown;
 }
 
-type Scored = { score?: number; subscales?: Record<string, number> } | null;
+type Stored = Parameters<typeof publishedScores>[1];
 
 /** Named conditions alphabetically; trials of participants without a condition last. */
 function conditionOrder(a: string | null, b: string | null) {
@@ -69,22 +73,14 @@ export function resultsByCondition(trials: TrialFigures[], scores: ConditionScor
     ),
   );
 
-  // Each score measure's values, with the condition they came from, in the order first met.
+  // Each score measure's values, with the condition they came from, in the order first met: the scores the
+  // instrument publishes, by their published names (no overall Godspeed score: the instrument defines none).
   const scoreValues = new Map<string, Array<[string | null, number]>>();
-  for (const s of scores) {
-    const scored = s.score as Scored;
-    const entries: Array<[string, number | undefined]> = [
-      [`Questionnaire score: ${s.questionnaire}`, scored?.score],
-      ...Object.entries(scored?.subscales ?? {}).map(([sub, v]): [string, number] => [
-        `Questionnaire score: ${s.questionnaire} (${sub})`,
-        v,
-      ]),
-    ];
-    for (const [name, value] of entries) {
-      if (typeof value !== "number") continue;
+  for (const s of scores)
+    for (const { subscale, value } of publishedScores(s.instrument, s.score as Stored)) {
+      const name = `Questionnaire score: ${s.questionnaire}${subscale ? ` (${subscale})` : ""}`;
       scoreValues.set(name, [...(scoreValues.get(name) ?? []), [s.condition, value]]);
     }
-  }
   const scoreMeasures = [...scoreValues].map(([name, values]) =>
     measure(name, "score", ({ condition }) => values.flatMap(([c, v]) => (c === condition ? [v] : []))),
   );

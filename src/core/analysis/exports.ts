@@ -52,22 +52,23 @@ export function eventRows(
     // Columns for the fields some kinds of event have; the payload column holds all of it.
     const { stepId, actionId, actionType } = e as { stepId?: string | null; actionId?: string; actionType?: string };
     const { stepName, actionName } = names.of(e);
+    // An empty cell is null: empty in the CSV, null in the analysis API's JSON (never "" for a number).
     return [
       trialId,
-      people.wizard ?? "",
-      people.createdBy ?? "",
+      people.wizard,
+      people.createdBy,
       e.seq,
       e.type,
-      stepId ?? "",
-      actionId ?? "",
-      actionType ?? "",
-      stepName ?? "",
-      actionName ?? "",
-      answerOf(e) ?? "",
-      e.deviation ?? "",
-      e.relMs ?? "",
+      stepId ?? null,
+      actionId ?? null,
+      actionType ?? null,
+      stepName ?? null,
+      actionName ?? null,
+      answerOf(e) ?? null,
+      e.deviation ?? null,
+      e.relMs,
       e.serverTime.toISOString(),
-      e.actorId ?? "",
+      e.actorId,
       JSON.stringify(e),
     ];
   });

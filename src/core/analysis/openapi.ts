@@ -1,5 +1,7 @@
-// The OpenAPI 3.1 description of the analysis API, generated from ENDPOINTS.
-import { API_BASE, ENDPOINTS, type Endpoint, OPENAPI_PATH, pathParameters } from "./api";
+// The OpenAPI 3.1 description of the analysis API, generated from ENDPOINTS,
+// each column typed from its declaration (columns.ts).
+import { API_BASE, ENDPOINTS, type Endpoint, type EndpointName, OPENAPI_PATH, pathParameters } from "./api";
+import { columnSchema, TABLE_COLUMNS } from "./columns";
 
 const error = (description: string) => ({
   description,
@@ -10,9 +12,11 @@ const error = (description: string) => ({
   },
 });
 
-const CELL = { type: ["string", "number", "boolean", "null"] };
+/** The endpoint's table: one trial's events are the events table. */
+const tableOf = (name: EndpointName) => TABLE_COLUMNS[name === "trialEvents" ? "events" : name];
 
-function operation(name: string, endpoint: Endpoint) {
+function operation(name: EndpointName, endpoint: Endpoint) {
+  const columns = tableOf(name) as Record<string, Parameters<typeof columnSchema>[0]>;
   return {
     get: {
       operationId: name,
@@ -38,13 +42,14 @@ function operation(name: string, endpoint: Endpoint) {
         "200": {
           description: `A table with the columns ${endpoint.columns.join(", ")}.`,
           content: {
+            // For scripts: text as it was typed, no spreadsheet formula guard (the app's downloads keep theirs).
             "text/csv": { schema: { type: "string" } },
             "application/json": {
               schema: {
                 type: "array",
                 items: {
                   type: "object",
-                  properties: Object.fromEntries(endpoint.columns.map((c) => [c, CELL])),
+                  properties: Object.fromEntries(endpoint.columns.map((c) => [c, columnSchema(columns[c]!)])),
                   required: [...endpoint.columns],
                 },
               },
@@ -59,6 +64,10 @@ function operation(name: string, endpoint: Endpoint) {
         ...(pathParameters(endpoint.path).includes("trialId")
           ? { "412": error("The trial's participant withdrew from the study: their data is excluded.") }
           : {}),
+        "500": error(
+          "An unexpected failure: the message gives a reference to quote; the details are in the server's log.",
+        ),
+        "503": error("The database cannot be reached now: try again later."),
       },
     },
   };
@@ -66,7 +75,10 @@ function operation(name: string, endpoint: Endpoint) {
 
 export function openApiDocument() {
   const paths: Record<string, unknown> = Object.fromEntries(
-    Object.entries(ENDPOINTS).map(([name, endpoint]) => [`${API_BASE}${endpoint.path}`, operation(name, endpoint)]),
+    Object.entries(ENDPOINTS).map(([name, endpoint]) => [
+      `${API_BASE}${endpoint.path}`,
+      operation(name as EndpointName, endpoint),
+    ]),
   );
   paths[`${API_BASE}${OPENAPI_PATH}`] = {
     get: {
@@ -83,8 +95,11 @@ export function openApiDocument() {
       // The version of this description; the path says the API's (v1), which changes only by breaking.
       version: "1.0.0",
       description:
-        "Read-only tidy tables of a study's data for R, Python or any HTTP client. Authenticate with a personal access token (Account → Access tokens): Authorization: Bearer <token>.",
+        "Read-only tidy tables of a study's data for R, Python or any HTTP client. Authenticate with a personal access token (Account → Access tokens): Authorization: Bearer <token>. CSV is written for scripts: text exactly as it was typed, with no spreadsheet formula guard.",
+      license: { name: "MIT", identifier: "MIT" },
     },
+    // Relative: the server this description is fetched from (OpenAPI 3.1 resolves it against the document's address).
+    servers: [{ url: "/", description: "This HRIStudio server" }],
     components: { securitySchemes: { accessToken: { type: "http", scheme: "bearer" } } },
     security: [{ accessToken: [] }],
     paths,

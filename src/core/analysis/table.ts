@@ -1,6 +1,6 @@
 // A tidy table (named columns, one row per observation), written as CSV with
 // the one CSV writer, or as JSON records: what the analysis API returns.
-import { csvDocument, type CsvValue } from "@/core/csv/csv";
+import { csvDocument, type CsvReader, type CsvValue } from "@/core/csv/csv";
 
 export interface Table {
   columns: readonly string[];
@@ -14,7 +14,9 @@ export function tableOf<C extends readonly string[]>(columns: C, rows: ReadonlyA
   return { columns, rows: rows.map((row) => columns.map((c) => row[c as C[number]])) };
 }
 
-export const tableCsv = (table: Table) => csvDocument(table.columns, table.rows);
+/** For a spreadsheet unless told: the analysis API's CSV is read by scripts. */
+export const tableCsv = (table: Table, reader: CsvReader = "spreadsheet") =>
+  csvDocument(table.columns, table.rows, reader);
 
 /** One object per row, keyed by column (an empty cell is null), as pandas' and R's JSON readers expect. */
 export const tableRecords = (table: Table): Array<Record<string, unknown>> =>

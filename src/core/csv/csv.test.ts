@@ -33,6 +33,19 @@ describe("a CSV cell", () => {
   });
 });
 
+describe("a CSV cell for a script", () => {
+  it.each<[CsvValue, string]>([
+    ["-5 looks away", "-5 looks away"],
+    ["=1+1", "=1+1"],
+    ['=HYPERLINK("http://x","y")', '"=HYPERLINK(""http://x"",""y"")"'],
+    ["\r=1+1", '"\r=1+1"'],
+    [-3, "-3"],
+    [null, ""],
+  ])("writes %j as %s, the text as it is", (value, cell) => {
+    expect(csvCell(value, "script")).toBe(cell);
+  });
+});
+
 describe("a CSV document", () => {
   it("writes the header, then a CRLF-ended line per row", () => {
     expect(

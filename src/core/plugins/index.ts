@@ -24,6 +24,7 @@ export {
 } from "./portability";
 export { channelOf, isSshCommand, unreachable, type Channel, type Channels, type Reachable } from "./reach";
 export { outgoingFor, type Outgoing } from "./payload";
+export { sentOverRos, type Sent } from "./sent";
 export { audioPlayer, audioPlayerText, type AudioPlayer } from "./audio";
 export { shellCommand, shellWords, quoteWord, type ShellCommand, type ShellWords } from "./shell";
 export { httpRequest, type HttpRequest } from "./http";

@@ -3,6 +3,7 @@
 // answer against the exact version the participant was shown.
 import { useQuery } from "@tanstack/react-query";
 import { items, type Definition } from "@/core/questionnaires/definition";
+import { publishedScores } from "@/core/questionnaires/published-scores";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Card } from "@/ui/surface";
@@ -24,30 +25,32 @@ export function QuestionnaireAnswers({ trialId, studyId }: { trialId: string; st
         </a>
       </div>
       {responses.data.map((r) => {
-        const score = r.score as { score: number; subscales?: Record<string, number> } | null;
+        // Only the scores the instrument publishes, by their published names: no overall Godspeed score.
+        const definition = r.definition as Definition;
+        const scores = publishedScores(definition.instrument ?? null, r.score as Parameters<typeof publishedScores>[1]);
+        const composite = scores.find((s) => s.subscale === null);
+        const subscales = scores.filter((s) => s.subscale !== null);
         const answers = r.answers as Record<string, unknown>;
         return (
           <Card key={`${r.questionnaire}-${r.submittedAt}`} className="p-4">
             <div className="flex flex-wrap items-baseline gap-3">
               <h3 className="font-semibold">{r.questionnaire}</h3>
               <span className="text-xs text-slate-500">version {r.version}</span>
-              {score && (
+              {composite && (
                 <span className="ml-auto text-lg font-semibold" data-testid="questionnaire-score">
-                  Score {Number.isInteger(score.score) ? score.score : score.score.toFixed(2)}
+                  Score {Number.isInteger(composite.value) ? composite.value : composite.value.toFixed(2)}
                 </span>
               )}
             </div>
-            {score?.subscales && (
+            {subscales.length > 0 && (
               <p className="text-sm text-slate-600">
-                {Object.entries(score.subscales)
-                  .map(([name, value]) => `${name} ${value.toFixed(2)}`)
-                  .join(" · ")}
+                {subscales.map((s) => `${s.name} ${s.value.toFixed(2)}`).join(" · ")}
               </p>
             )}
             <details className="mt-2 text-sm">
               <summary className="cursor-pointer text-slate-600">Answers</summary>
               <ol className="mt-2 list-decimal space-y-1 pl-5">
-                {items(r.definition as Definition).map((item) => (
+                {items(definition).map((item) => (
                   <li key={item.id}>
                     {item.kind === "consent" ? "Consent" : item.text}{" "}
                     <span className="font-medium">→ {formatAnswer(answers[item.id])}</span>

@@ -2,7 +2,7 @@
 // built from its templates; 2xx is completed, anything else failed with the
 // robot's answer, no answer within the plugin's timeout timed out. The API's
 // base URL is probed as a heartbeat, so a robot gone away is reported at once.
-import { httpRequest, type PluginAction } from "../../core/plugins";
+import { httpRequest, type HttpRequest, type PluginAction, type Sent } from "../../core/plugins";
 import { linkProblem } from "../../core/robots/link-problem";
 import { addressProblem, checkedParameters, LinkedTransport, timeoutOf, untilDeadline } from "./link";
 import type { DispatchOutcome } from "./transport";
@@ -29,10 +29,7 @@ export class HttpTransport extends LinkedTransport {
     const started = Date.now();
     const checked = checkedParameters(action, parameters);
     if (!checked.ok) return checked.outcome;
-    if (!action.http) return { status: "failed", reason: `action "${action.id}" has no HTTP request` };
-    const address = addressProblem("the robot's API", this.options.baseUrl, ["http:", "https:"]);
-    if (address) return { status: "failed", reason: address };
-    const request = httpRequest(action.http, this.options.baseUrl, checked.parameters);
+    const request = this.request(action, checked.parameters);
     if (!request.ok) return { status: "failed", reason: request.reason };
     const deadline = started + timeoutOf(action);
     const send = () =>
@@ -60,7 +57,7 @@ export class HttpTransport extends LinkedTransport {
           status: "completed",
           detail: {
             httpStatus: response.status,
-            confirmation: { by: "http_response", confirmed: true, source: action.http.url },
+            confirmation: { by: "http_response", confirmed: true, source: action.http!.url },
           },
         };
       return { status: "failed", reason: `the robot answered HTTP ${response.status}${text ? `: ${text}` : ""}` };
@@ -69,6 +66,20 @@ export class HttpTransport extends LinkedTransport {
       this.setState("disconnected", linkProblem(error));
       return { status: "failed", reason: `the robot's API did not answer: ${linkProblem(error)}` };
     }
+  }
+
+  sends(action: PluginAction, parameters: Record<string, unknown>): Sent | null {
+    const checked = checkedParameters(action, parameters);
+    const request = checked.ok ? this.request(action, checked.parameters) : null;
+    if (!request?.ok) return null;
+    return { via: "http", method: request.method, url: request.url, ...(request.body ? { body: request.body } : {}) };
+  }
+
+  private request(action: PluginAction, parameters: Record<string, unknown>): HttpRequest {
+    if (!action.http) return { ok: false, reason: `action "${action.id}" has no HTTP request` };
+    const address = addressProblem("the robot's API", this.options.baseUrl, ["http:", "https:"]);
+    if (address) return { ok: false, reason: address };
+    return httpRequest(action.http, this.options.baseUrl, parameters);
   }
 
   async close() {

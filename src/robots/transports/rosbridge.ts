@@ -28,11 +28,13 @@ import {
   outgoingFor,
   robotTimeOf,
   serviceRefusal,
+  sentOverRos,
   type Confirmation,
   type JsonValue,
   type Outgoing,
   type Plugin,
   type PluginAction,
+  type Sent,
 } from "../../core/plugins";
 import { linkProblem } from "../../core/robots/link-problem";
 import { refusalOf, refusedAdvertise, type WatchedTopic } from "../../core/robots/silent-topics";
@@ -145,6 +147,11 @@ export class RosbridgeTransport extends LinkedTransport {
     if (outgoing.kind === "motion")
       return holdThenStop((m) => this.publish(outgoing.topic, outgoing.messageType, m), outgoing);
     return this.call(ros, outgoing.service, outgoing.serviceType, outgoing.args, started + timeoutMs);
+  }
+
+  sends(action: PluginAction, parameters: Record<string, unknown>): Sent | null {
+    const checked = checkedParameters(action, parameters);
+    return checked.ok ? sentOverRos(outgoingFor(action, checked.parameters, this.options.plugin)) : null;
   }
 
   /** A topic publish, completed as its rule says: a matching done message, an estimated duration, or only delivered. */

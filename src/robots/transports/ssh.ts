@@ -4,7 +4,7 @@
 import { readFileSync } from "node:fs";
 import { Client, utils, type ConnectConfig } from "ssh2";
 import { linkProblem } from "../../core/robots/link-problem";
-import { outgoingFor, shellCommand, type PluginAction } from "../../core/plugins";
+import { outgoingFor, shellCommand, type PluginAction, type Sent } from "../../core/plugins";
 import {
   backoffDelay,
   checkedParameters,
@@ -55,9 +55,7 @@ export class SshTransport extends LinkedTransport {
     const started = Date.now();
     const checked = checkedParameters(action, parameters);
     if (!checked.ok) return checked.outcome;
-    const outgoing = outgoingFor(action, checked.parameters);
-    if (outgoing.kind !== "ssh") return { status: "failed", reason: `action "${action.id}" is not an SSH command` };
-    const built = shellCommand(outgoing.command, checked.parameters);
+    const built = commandOf(action, checked.parameters);
     if (!built.ok) return { status: "failed", reason: built.reason };
     const timeoutMs = timeoutOf(action);
     const usable = this.settings();
@@ -69,6 +67,12 @@ export class SshTransport extends LinkedTransport {
       return unreached(action, started, `cannot reach the robot over SSH: ${this.status.reason ?? "no answer"}`);
     // The timeout is the command's: a slow first handshake does not eat into it.
     return this.run(client, built.command, timeoutMs, Date.now());
+  }
+
+  sends(action: PluginAction, parameters: Record<string, unknown>): Sent | null {
+    const checked = checkedParameters(action, parameters);
+    const built = checked.ok ? commandOf(action, checked.parameters) : null;
+    return built?.ok ? { via: "ssh", command: built.command } : null;
   }
 
   async close() {
@@ -222,4 +226,11 @@ export class SshTransport extends LinkedTransport {
       void this.connection();
     }, delay);
   }
+}
+
+/** The action's command line, every parameter quoted. */
+function commandOf(action: PluginAction, parameters: Record<string, unknown>) {
+  const outgoing = outgoingFor(action, parameters);
+  if (outgoing.kind !== "ssh") return { ok: false as const, reason: `action "${action.id}" is not an SSH command` };
+  return shellCommand(outgoing.command, parameters);
 }

@@ -1,7 +1,7 @@
 // The one contract every robot transport keeps (rosbridge, SSH, HTTP,
 // simulated). The trial runtime knows only this; which transport is live is
 // chosen in one place from the plugin's `transport` field.
-import type { PluginAction } from "../../core/plugins";
+import type { PluginAction, Sent } from "../../core/plugins";
 
 /**
  * What became of one dispatch; each maps to an action event of the trial log. `not_sent`: it never left
@@ -46,6 +46,8 @@ export interface Transport {
     parameters: Record<string, unknown>,
     options?: DispatchOptions,
   ): Promise<DispatchOutcome>;
+  /** What dispatch puts on the wire for this action, built as dispatch builds it; null if it sends nothing. */
+  sends(action: PluginAction, parameters: Record<string, unknown>): Sent | null;
   /** Robot state for logging; kept across reconnects. Returns a function that stops it. */
   subscribe(
     topic: string,

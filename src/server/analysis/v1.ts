@@ -42,7 +42,7 @@ export async function v1Route(req: Request, name: EndpointName, params: Promise<
     if (typeof format !== "string") return problem(400, format.error);
     const table = await HANDLERS[name](appRouter.createCaller(access.context), await params);
     return format === "csv"
-      ? new Response(tableCsv(table), { headers: { ...NO_STORE, "content-type": "text/csv; charset=utf-8" } })
+      ? new Response(tableCsv(table, "script"), { headers: { ...NO_STORE, "content-type": "text/csv; charset=utf-8" } })
       : new Response(tableJson(table), { headers: { ...NO_STORE, "content-type": "application/json" } });
   } catch (error) {
     // A procedure's unexpected failure arrives wrapped as INTERNAL_SERVER_ERROR with the original message.

@@ -1,10 +1,11 @@
 // Submitted answers with everything needed to read them: the version shown,
-// the participant, the trial. A withdrawn participant's answers are left out.
+// the participant and their condition, the trial. A withdrawn participant's answers are left out.
 // In participant code and questionnaire name order (ties in response order).
 import { and, asc, eq, ne, type SQL } from "drizzle-orm";
 import type { Database } from "@/store/client";
 import { after, keyedPages } from "@/store/pages";
 import {
+  conditions,
   participants,
   questionnaireLinks,
   questionnaireResponses,
@@ -20,6 +21,7 @@ function submittedRows(db: Database, where: SQL | undefined, limit?: number) {
       version: questionnaireVersions.version,
       definition: questionnaireVersions.definition,
       participantCode: participants.code,
+      condition: conditions.name,
       trialId: questionnaireLinks.trialId,
       answers: questionnaireResponses.answers,
       score: questionnaireResponses.score,
@@ -31,6 +33,7 @@ function submittedRows(db: Database, where: SQL | undefined, limit?: number) {
     .innerJoin(questionnaireVersions, eq(questionnaireVersions.id, questionnaireLinks.versionId))
     .innerJoin(questionnaires, eq(questionnaires.id, questionnaireVersions.questionnaireId))
     .innerJoin(participants, eq(participants.id, questionnaireLinks.participantId))
+    .leftJoin(conditions, eq(conditions.id, participants.conditionId))
     .where(and(where, eq(questionnaireResponses.status, "submitted"), ne(participants.consentStatus, "withdrawn")))
     .orderBy(asc(participants.code), asc(questionnaires.name), asc(questionnaireResponses.id))
     .$dynamic();

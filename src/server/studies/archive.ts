@@ -22,6 +22,7 @@ import {
   trialSamples,
 } from "@/store/schema";
 import { answersCsv } from "@/core/questionnaires/export";
+import { codebookCsv } from "@/core/analysis/codebook";
 import { methodsText } from "../experiments/methods";
 import { studyMethodsText } from "./methods";
 import { fileSlug } from "../file-slug";
@@ -54,7 +55,9 @@ trials/<id>.eaf             each trial as an ELAN document: steps, actions, devi
                             and one tier per observer per set of codes
 codes.csv                   every observer's codes: one row per code event (observer, scheme,
                             set, code, start and end in ms from the trial's start, modifiers)
-questionnaire-answers.csv   every submitted answer: one row per participant x item, then scores
+questionnaire-answers.csv   every submitted answer: one row per participant x item (condition,
+                            instrument, sub-scale, reverse-scored), then the published scores
+codebook.csv                every column of these CSV files: type, unit, allowed values, meaning
 
 Rehearsals are not included. Participants who withdrew are left out, as are their trials
 and answers; study.json says how many.
@@ -172,6 +175,7 @@ async function studyFiles(db: Database, studyId: string) {
     ),
     "methods.md": strToU8((await studyMethodsText(db, studyId)).markdown),
     "questionnaire-answers.csv": strToU8(answersCsv(await submitted(db, eq(questionnaireLinks.studyId, studyId)))),
+    "codebook.csv": strToU8(codebookCsv()),
   };
   for (const version of versions) {
     const methods = await methodsText(db, version, studyId);

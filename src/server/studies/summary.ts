@@ -11,6 +11,7 @@ import { and, asc, eq, inArray, ne, sql } from "drizzle-orm";
 import { resultsByCondition } from "@/core/analysis/by-condition";
 import { studySummary, type TrialFigures } from "@/core/analysis/study-summary";
 import type { ReportFigures } from "@/core/analysis/trial-figures";
+import type { Definition } from "@/core/questionnaires/definition";
 import type { Database } from "@/store/client";
 import { conditions, participants, questionnaireLinks, trialEvents, trialFigures, trials } from "@/store/schema";
 import { isCurrent } from "@/store/trial-figures";
@@ -69,21 +70,16 @@ export async function studyFigures(db: Database, studyId: string) {
 
 /** Each measure per condition; a questionnaire's score counts in its participant's condition. */
 export async function studyResultsByCondition(db: Database, studyId: string) {
-  const [figures, answers, assigned] = await Promise.all([
+  const [figures, answers] = await Promise.all([
     finishedTrials(db, studyId),
     submitted(db, eq(questionnaireLinks.studyId, studyId)),
-    db
-      .select({ code: participants.code, condition: conditions.name })
-      .from(participants)
-      .leftJoin(conditions, eq(conditions.id, participants.conditionId))
-      .where(eq(participants.studyId, studyId)),
   ]);
-  const conditionOf = new Map(assigned.map((p) => [p.code, p.condition]));
   return resultsByCondition(
     figures,
     answers.map((a) => ({
-      condition: conditionOf.get(a.participantCode) ?? null,
+      condition: a.condition,
       questionnaire: a.questionnaire,
+      instrument: (a.definition as Definition).instrument ?? null,
       score: a.score,
     })),
   );

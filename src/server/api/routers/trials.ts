@@ -5,6 +5,8 @@ import { alias } from "drizzle-orm/pg-core";
 import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
 import { blindTrial } from "@/core/studies/blinding";
+import type { Instrument } from "@/core/questionnaires/definition";
+import { publishedScores } from "@/core/questionnaires/published-scores";
 import { annotations, experimentVersions, experiments, participants, trialSamples, trials, user } from "@/store/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "@/core/protocol/snapshot";
@@ -44,9 +46,9 @@ const columns = {
   participantWithdrawn: sql<boolean>`coalesce(${participants.consentStatus} = 'withdrawn', false)`,
 };
 
-/** Each submitted questionnaire's score, for the study's table of trials. */
-const questionnaireScores = sql<Array<{ name: string; score: number }> | null>`(
-  select json_agg(json_build_object('name', q.name, 'score', (r.score->>'score')::float) order by q.name)
+/** Each submitted questionnaire's stored score and instrument, for the study's table of trials. */
+const questionnaireScores = sql<Array<{ name: string; instrument: Instrument | null; score: unknown }> | null>`(
+  select json_agg(json_build_object('name', q.name, 'instrument', v.definition->>'instrument', 'score', r.score) order by q.name)
   from questionnaire_responses r
   join questionnaire_links l on l.id = r.link_id
   join questionnaire_versions v on v.id = l.version_id
@@ -115,7 +117,15 @@ export const trialsRouter = router({
       .orderBy(desc(trials.createdAt));
     // Scores are results: only for those who may read the data, and not under a results blind.
     const showScores = studyRoleMay(ctx.studyRole, "data.read") && !ctx.blinding.resultsHidden;
-    const shown = rows.map((r) => ({ ...r, scores: showScores ? (r.scores ?? []) : [] }));
+    // The scores the instrument publishes, by their published names: no overall Godspeed score.
+    const published = (scores: NonNullable<(typeof rows)[number]["scores"]>) =>
+      scores.flatMap((q) =>
+        publishedScores(q.instrument, q.score as Parameters<typeof publishedScores>[1]).map((s) => ({
+          name: s.subscale ? `${q.name} · ${s.subscale}` : q.name,
+          score: s.value,
+        })),
+      );
+    const shown = rows.map((r) => ({ ...r, scores: showScores ? published(r.scores ?? []) : [] }));
     return ctx.blinding.conditionsHidden ? shown.map(blindTrial) : shown;
   }),
 
