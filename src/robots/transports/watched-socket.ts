@@ -10,10 +10,24 @@
 // them was read by the server. So `delivered()` (a ping after a send, and its
 // pong) proves the bridge took the frame in; a frame whose pong never comes
 // may be lost, and the action is failed rather than called completed.
+import { createRequire } from "node:module";
+import { dirname, join } from "node:path";
 import { AbstractTransport } from "roslib";
-import { WebSocket } from "ws";
+import { WebSocket as WsClient } from "ws";
 import { linkProblem } from "../../core/robots/link-problem";
 import { parsePythonJson } from "../../core/robots/python-json";
+
+/**
+ * The `ws` client itself, under Bun too: Bun answers `import "ws"` with a native client of its own that
+ * keeps no raw socket, so a lost link could only be closed, never reset (see `terminate`). The package's
+ * own client, loaded by its path, runs on Bun's node:net, whose sockets reset.
+ */
+function wsClient(): typeof WsClient {
+  if (!process.versions.bun) return WsClient;
+  const require = createRequire(import.meta.url);
+  return require(join(dirname(require.resolve("ws/package.json")), "lib", "websocket.js"));
+}
+const WebSocket = wsClient();
 
 export interface Liveness {
   /** How often a ping goes out, in ms. */
@@ -23,7 +37,7 @@ export interface Liveness {
 }
 
 export class WatchedSocket extends AbstractTransport {
-  private readonly socket: WebSocket;
+  private readonly socket: WsClient;
   private pinged = 0;
   private ponged = 0;
   /** When each unanswered ping went out, oldest first. */
@@ -82,8 +96,8 @@ export class WatchedSocket extends AbstractTransport {
   /**
    * Drops the socket at once, without waiting for the peer, and resets it where the platform lets us: a
    * TCP reset (SO_LINGER 0, Node's `resetAndDestroy`) throws away what our side still queues for the
-   * bridge, where a polite close (FIN) would deliver it late to a bridge that goes on. Bun's `ws` has no
-   * raw socket to reset: there the socket is closed at once.
+   * bridge, where a polite close (FIN) would deliver it late to a bridge that goes on. What already
+   * reached the bridge's machine is out of our hands: it is reported "sent, outcome unknown".
    */
   terminate(reason: string) {
     this.lose(reason);
