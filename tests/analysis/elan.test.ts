@@ -28,6 +28,9 @@ const run: Command[] = [
   // The narrative gesture skipped by the wizard: a deviation.
   { kind: "skip", actionId: "story-1" },
   { kind: "next" },
+  // Off script: its span on the Action tier runs from the wizard's request to the robot's completion.
+  { kind: "unscripted", actionId: "bless", actionType: "say", parameters: { text: "Bless you" } },
+  ...done("bless"),
   ...done("story-0"),
   { kind: "next" },
   { kind: "next" },
@@ -60,11 +63,18 @@ describe("the ELAN export", () => {
     expect(tiers.Step!.map((s) => s[2])).toEqual(["Introduction", "Story", "Recall question", "Response — correct"]);
     expect(tiers.Step!.every(([start, end]) => end > start)).toBe(true);
     expect(tiers.Action!.map((a) => a[2])).toContain("Question: What color was the rock Kai found?");
-    expect(tiers.Deviation).toEqual([[expect.any(Number), expect.any(Number), "skipped: Look down at the crater"]]);
+    expect(tiers.Deviation!.map((d) => d[2])).toEqual([
+      "skipped: Look down at the crater",
+      "unscripted: Say: Bless you",
+    ]);
     // The answer's value, when the wizard recorded it: the question is on the Action tier at that moment.
     const recorded = log.find((e) => e.type === "answer.recorded")!.relMs!;
     expect(tiers.Answer).toEqual([[recorded, recorded + 1, "correct (red)"]]);
     expect(tiers["Annotation"]).toEqual([[1200, 2200, `She said "wow" <laughs> & smiles`]]);
+    const at = (type: string) => log.find((e) => "actionId" in e && e.actionId === "bless" && e.type === type)!.relMs;
+    expect(tiers.Action!.filter((a) => a[2].endsWith("(unscripted)"))).toEqual([
+      [at("action.requested"), at("action.completed"), "Say: Bless you (unscripted)"],
+    ]);
   });
 
   it("gives every observer a tier of their own per set of codes, states spanning their time", () => {

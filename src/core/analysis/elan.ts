@@ -68,7 +68,7 @@ function tiers(input: ElanInput): Record<string, Span[]> {
     .map((u) =>
       span(
         u.requestedMs!,
-        null,
+        u.requestedMs! + (u.durationMs ?? 0),
         `${spoken({ type: u.type, parameters: u.parameters }, u.name, input.names)} (unscripted)`,
       ),
     );

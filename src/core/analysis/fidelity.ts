@@ -62,6 +62,8 @@ export interface FidelityReport {
     type: string;
     name: string;
     requestedMs: number | null;
+    /** From its request to its end, as a scripted action's; null while it has not ended. */
+    durationMs: number | null;
     parameters: Record<string, unknown>;
   }>;
   branches: { byLogic: number; byHand: number };
@@ -130,18 +132,21 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
     };
   });
 
+  /** When an action ended, however it ended: its duration runs from its request to here. */
+  const finishedOf = (actionId: string) =>
+    first("action.completed", actionId) ??
+    first("action.failed", actionId) ??
+    first("action.not_sent", actionId) ??
+    first("action.unknown", actionId) ??
+    first("action.timed_out", actionId) ??
+    first("answer.recorded", actionId) ??
+    first("branch.resolved", actionId);
+
   const actions: PlannedAction[] = protocol.steps.flatMap((step) =>
     step.actions.map((a) => {
       const requested =
         first("action.requested", a.id) ?? first("answer.recorded", a.id) ?? first("branch.resolved", a.id);
-      const finished =
-        first("action.completed", a.id) ??
-        first("action.failed", a.id) ??
-        first("action.not_sent", a.id) ??
-        first("action.unknown", a.id) ??
-        first("action.timed_out", a.id) ??
-        first("answer.recorded", a.id) ??
-        first("branch.resolved", a.id);
+      const finished = finishedOf(a.id);
       const dispatched = first("action.dispatched", a.id);
       const outcome: ActionOutcome = first("action.skipped", a.id)
         ? "skipped"
@@ -184,13 +189,17 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
 
   const unscripted = log
     .filter((e) => e.type === "action.requested" && e.scripted === false)
-    .map((e) => ({
-      actionId: e.actionId!,
-      type: e.actionType!,
-      name: actionName({ type: e.actionType!, parameters: e.parameters }, names),
-      requestedMs: e.relMs,
-      parameters: e.parameters ?? {},
-    }));
+    .map((e) => {
+      const end = finishedOf(e.actionId!)?.relMs ?? null;
+      return {
+        actionId: e.actionId!,
+        type: e.actionType!,
+        name: actionName({ type: e.actionType!, parameters: e.parameters }, names),
+        requestedMs: e.relMs,
+        durationMs: end !== null && e.relMs !== null ? end - e.relMs : null,
+        parameters: e.parameters ?? {},
+      };
+    });
   const deviations: Record<string, number> = {};
   for (const e of log) if (e.deviation) deviations[e.deviation] = (deviations[e.deviation] ?? 0) + 1;
   const count = (o: ActionOutcome) => actions.filter((a) => a.outcome === o).length;
