@@ -373,7 +373,7 @@ export class TrialHost {
     const written = await this.write(
       () => {
         seal();
-        return decideReports(this.state, together);
+        return decideReports(this.protocol, this.state, together);
       },
       null,
       null,
