@@ -20,6 +20,7 @@ import { areTheseEvents } from "@/core/trial/landed";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import type { CameraFrame, RobotLink, RobotReport } from "./robot";
 import { sampleRecorder } from "./samples";
+import { TrialTimers } from "./trial-timers";
 import { foldLiveState, UNKNOWN_STATE, type LiveRobotState } from "@/core/robots/live-state";
 
 function startedAt(events: StoredEvent[]): number | null {
@@ -78,6 +79,7 @@ const ALWAYS_LOGGED = new Set<Command["kind"]>([
   "emergency_stop",
   "abort",
   "robot_problem",
+  "timer_fired",
 ]);
 
 /** The wizard's commands that can set the robot going: after a stop, one asked for before it is stale. */
@@ -125,6 +127,8 @@ export class TrialHost {
   /** Told when the trial ends, and when its last client leaves. */
   private readonly lifecycle = { ended: () => {}, unwatched: () => {} };
   private readonly timers = new Set<ReturnType<typeof setTimeout>>();
+  /** The protocol's time limits, fired as the clock's commands; the engine refuses one the wizard beat. */
+  private readonly limits = new TrialTimers((timerId) => void this.command({ kind: "timer_fired", timerId }, null));
   /** Sounds handed to the wizard's browser to play, by action id, until it reports their end. */
   private readonly browserPlays = new Set<string>();
   private readonly samples;
@@ -204,6 +208,8 @@ export class TrialHost {
         null,
       );
     }
+    // Timers running when the runtime stopped fire when they were due, from their logged start.
+    host.limits.follow(host.state.timers, host.t0);
     return host;
   }
 
@@ -403,6 +409,7 @@ export class TrialHost {
     this.opening?.push(...stored);
     applyInPlace(this.state, stored);
     this.t0 ??= startedAt(stored);
+    this.limits.follow(this.state.timers, this.t0);
     for (const listener of this.listeners) listener(stored);
     if (withheld) this.withhold(stored, withheld);
     else this.carryOut(stored);
@@ -504,6 +511,7 @@ export class TrialHost {
   async close() {
     this.shut = true;
     for (const t of this.timers) clearTimeout(t);
+    this.limits.close();
     this.stopWatching();
     this.stopCamera?.();
     this.stopCamera = null;
