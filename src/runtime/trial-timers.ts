@@ -4,7 +4,7 @@
 // due (at once if that has passed). The log decides everything else: a timer
 // fired or cancelled there is disarmed, and a fire the engine refuses (the
 // wizard acted first) is nothing.
-import type { TrialState } from "@/core/trial";
+import { dueAt, type TrialState } from "@/core/trial";
 
 export class TrialTimers {
   private readonly armed = new Map<string, ReturnType<typeof setTimeout>>();
@@ -24,8 +24,8 @@ export class TrialTimers {
     }
     if (t0 === null) return;
     for (const [timerId, timer] of Object.entries(timers)) {
-      if (this.armed.has(timerId) || timer.startedMs === null) continue;
-      const due = t0 + timer.startedMs + timer.seconds * 1000;
+      const due = dueAt(timer, t0);
+      if (this.armed.has(timerId) || due === null) continue;
       const handle = setTimeout(
         () => {
           this.armed.delete(timerId);

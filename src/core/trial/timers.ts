@@ -3,7 +3,7 @@
 // are done), so every decision ends by starting the timers its events made
 // due and cancelling those they ended: the wizard acting first cancels a
 // timer in the same append, and a cancelled or fired timer never fires.
-import { exitBy } from "../protocol/flow";
+import { type Exit, exitBy } from "../protocol/flow";
 import { applyInPlace } from "./fold";
 import { findAction, findStep } from "./protocol";
 import type { Decision, EngineEvent, RunningTimer, TrialProtocol, TrialState } from "./types";
@@ -34,6 +34,11 @@ export function timersDue(protocol: TrialProtocol, state: TrialState): Map<strin
   return due;
 }
 
+/** When a running timer is due, on the clock `t0` (the trial's start) is read on; null in a log without times. */
+export function dueAt(timer: RunningTimer, t0: number): number | null {
+  return timer.startedMs === null ? null : t0 + timer.startedMs + timer.seconds * 1000;
+}
+
 /** `events` (decided on `state`) followed by the timers they cancel and start. */
 export function withTimers(protocol: TrialProtocol, state: TrialState, events: EngineEvent[]): EngineEvent[] {
   // Read through to `state`'s actions rather than copy them all: the live host's cost per command must not grow with the trial.
@@ -58,13 +63,18 @@ export function withTimers(protocol: TrialProtocol, state: TrialState, events: E
   return [...events, ...cancelled, ...started];
 }
 
+/** Where a timer leads when its time runs out: its limit's "after", read from its step. */
+export function timerExit(protocol: TrialProtocol, timer: RunningTimer): Exit {
+  const at = findStep(protocol, timer.stepId);
+  const limit = timer.actionId ? findAction(protocol, timer.actionId)?.action.timeLimit : at?.step.timeLimit;
+  return at && limit ? exitBy(protocol.steps, at.index, limit.after) : { to: "end" };
+}
+
 /** A timer's time ran out: the trial takes its limit's way on, unless the wizard acted first. */
 export function timerFired(protocol: TrialProtocol, state: TrialState, timerId: string): Decision {
   const timer = state.timers[timerId];
   if (!timer) return { ok: false, reason: "That timer is no longer running: the wizard acted first, or it fired." };
-  const at = findStep(protocol, timer.stepId);
-  const limit = timer.actionId ? findAction(protocol, timer.actionId)?.action.timeLimit : at?.step.timeLimit;
-  const exit = at && limit ? exitBy(protocol.steps, at.index, limit.after) : { to: "end" as const };
+  const exit = timerExit(protocol, timer);
   const fired: EngineEvent = { type: "timer.fired", timerId };
   if (exit.to !== "step") return { ok: true, events: [fired, { type: "trial.completed" }] };
   return {
