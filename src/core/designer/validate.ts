@@ -11,7 +11,7 @@ import {
   type Plugin,
 } from "../plugins";
 import { finish, type Work } from "../work";
-import { exitBy, exitOf } from "../protocol/flow";
+import { exitBy, exitOf, timeLimitsOf } from "../protocol/flow";
 import { blockFor, type Block } from "./blocks";
 import type { DesignAction, DesignDraft, DesignStep } from "./types";
 
@@ -171,9 +171,7 @@ function optionsOf(action: DesignAction): Option[] {
 /** The steps a step's time limits (its own, its questions') lead to; one to a step that is gone is told. */
 function timeLimitExits(draft: DesignDraft, s: number, tell: (message: string) => void): number[] {
   const step = draft.steps[s]!;
-  const limits = [step.timeLimit, ...step.actions.map((a) => (a.type === "record_answer" ? a.timeLimit : undefined))];
-  return limits.flatMap((limit) => {
-    if (!limit) return [];
+  return timeLimitsOf(step).flatMap((limit) => {
     const exit = exitBy(draft.steps, s, limit.after);
     if (exit.to === "missing")
       tell(

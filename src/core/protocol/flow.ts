@@ -1,6 +1,6 @@
 // Where a step leads: the one reading of a step's "after" that the trial
 // engine, the designer's checks, its flow map and the rehearsal preview share.
-import type { After, TrialProtocol } from "./document";
+import type { After, TimeLimit, TrialProtocol } from "./document";
 
 type Steps = TrialProtocol["steps"];
 
@@ -26,4 +26,10 @@ export function describeExit(steps: Steps, index: number): string {
   if (exit.to === "missing") return "a step that is no longer in the experiment";
   const step = steps[exit.index]!;
   return step.name.trim() ? `"${step.name.trim()}"` : `step ${exit.index + 1}`;
+}
+
+/** A step's time limits: its own, then its questions' ("no answer in …"). */
+export function timeLimitsOf(step: Steps[number]): TimeLimit[] {
+  const limits = [step.timeLimit, ...step.actions.map((a) => (a.type === "record_answer" ? a.timeLimit : undefined))];
+  return limits.filter((limit) => limit !== undefined);
 }
