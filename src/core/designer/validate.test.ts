@@ -140,6 +140,11 @@ describe("validateDesign", () => {
       ["error unreachable_step s2"],
     ],
     [
+      "a time limit on an action that is no question",
+      draft([say("Hi", { timeLimit: { seconds: 5, after: { to: "end" } } })]),
+      ["error time_limit_not_question s1a1"],
+    ],
+    [
       "a time limit leading to a deleted step",
       draft([{ ...question("Yes", "No"), timeLimit: { seconds: 10, after: { to: "step", stepId: "gone" } } }]),
       ["error after_target_missing s1"],

@@ -106,6 +106,14 @@ export function* validating(draft: DesignDraft, plugin: Plugin | null, channels?
           message: `${name} is set to run together with other actions, but no action next to it is in its group, so it runs on its own.`,
         });
       }
+      // The engine runs a time limit of a question only: on any other action it would silently do nothing.
+      if (action.timeLimit && action.type !== "record_answer") {
+        at({
+          severity: "error",
+          code: "time_limit_not_question",
+          message: `${name} has a time limit, but only a "Record answer" can have one (a step can too, in its properties).`,
+        });
+      }
       if (action.type === "record_answer") {
         const seen = new Set<string>();
         for (const option of optionsOf(action)) {
