@@ -82,7 +82,7 @@ const [experiment] = await db
   .values({ studyId: study!.id, name: "Soak", robotId: "simulated" })
   .returning();
 const snapshot = {
-  schemaVersion: 2 as const,
+  schemaVersion: 3 as const,
   experiment: { id: experiment!.id, name: "Soak", description: "", robotId: "simulated" },
   steps: [{ id: "s", name: "S", description: "", actions: [] }],
 };

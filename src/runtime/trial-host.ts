@@ -21,6 +21,7 @@ import { CONTROL_TYPES } from "@/core/trial/types";
 import { droppedReason, staleness } from "@/core/trial/freshness";
 import type { CameraFrame, RobotLink, RobotReport } from "./robot";
 import { sampleRecorder } from "./samples";
+import { TrialTimers } from "./trial-timers";
 import { foldLiveState, UNKNOWN_STATE, type LiveRobotState } from "@/core/robots/live-state";
 
 function startedAt(events: StoredEvent[]): number | null {
@@ -97,6 +98,7 @@ const ALWAYS_LOGGED = new Set<Command["kind"]>([
   "emergency_stop",
   "abort",
   "robot_problem",
+  "timer_fired",
 ]);
 
 /** The wizard's commands that can set the robot going: after a stop, one asked for before it is stale. */
@@ -153,6 +155,8 @@ export class TrialHost {
   /** Told when the trial ends, and when its last client leaves. */
   private readonly lifecycle = { ended: () => {}, unwatched: () => {} };
   private readonly timers = new Set<ReturnType<typeof setTimeout>>();
+  /** The protocol's time limits, fired as the clock's commands; the engine refuses one the wizard beat. */
+  private readonly limits = new TrialTimers((timerId) => void this.command({ kind: "timer_fired", timerId }, null));
   /** Sounds handed to the wizard's browser to play, by action id, until it reports their end. */
   private readonly browserPlays = new Set<string>();
   private readonly samples;
@@ -231,6 +235,8 @@ export class TrialHost {
     );
     // Each may have reached the robot before the process ended (most had, after a kill -9): not "failed".
     for (const [actionId] of interrupted) await host.command({ kind: "unknown", actionId, reason: RESTARTED }, null);
+    // Timers running when the runtime stopped fire when they were due, from their logged start.
+    host.limits.follow(host.state.timers, host.t0);
     return host;
   }
 
@@ -420,7 +426,7 @@ export class TrialHost {
     const written = await this.write(
       () => {
         seal();
-        return decideReports(this.state, together);
+        return decideReports(this.protocol, this.state, together);
       },
       null,
       null,
@@ -459,6 +465,7 @@ export class TrialHost {
     this.opening?.push(...stored);
     applyInPlace(this.state, stored);
     this.t0 ??= startedAt(stored);
+    this.limits.follow(this.state.timers, this.t0);
     for (const listener of this.listeners.keys()) listener(stored);
     if (withheld) this.withhold(stored, withheld);
     else this.carryOut(stored, moment);
@@ -603,6 +610,7 @@ export class TrialHost {
     this.listeners.clear();
     for (const move of moved) move();
     for (const t of this.timers) clearTimeout(t);
+    this.limits.close();
     this.stopWatching();
     this.stopCamera?.();
     this.stopCamera = null;

@@ -112,6 +112,35 @@ describe("saving a design", () => {
       ((await owner.versions.get({ versionId: v1.id })).snapshot as { steps: Array<{ name: string }> }).steps[0]!.name,
     ).toBe("One");
   });
+
+  it("keeps a step's and a question's time limit through a save and into the published version, and none where none was set", async () => {
+    const e = await newExperiment();
+    const question = {
+      options: [
+        { id: "yes", label: "Yes" },
+        { id: "no", label: "No" },
+      ],
+    };
+    await owner.experiments.saveDesign({
+      experimentId: e.id,
+      baseRevision: 0,
+      steps: [
+        {
+          name: "Ask",
+          timeLimit: { seconds: 60, after: { to: "next" } },
+          actions: [{ type: "record_answer", parameters: question, timeLimit: { seconds: 10, after: { to: "end" } } }],
+        },
+        { name: "Bye", actions: [{ type: "say", parameters: { text: "Bye" } }] },
+      ],
+    });
+    const draft = await owner.experiments.get({ experimentId: e.id });
+    expect(draft.steps.map((s) => s.timeLimit)).toEqual([{ seconds: 60, after: { to: "next" } }, undefined]);
+    const { snapshot } = await owner.versions.publish({ experimentId: e.id });
+    expect(snapshot.steps[0]!.timeLimit).toEqual({ seconds: 60, after: { to: "next" } });
+    expect(snapshot.steps[0]!.actions[0]!.timeLimit).toEqual({ seconds: 10, after: { to: "end" } });
+    expect("timeLimit" in snapshot.steps[1]!).toBe(false);
+    expect("timeLimit" in snapshot.steps[1]!.actions[0]!).toBe(false);
+  });
 });
 
 describe("input errors a person can read", () => {

@@ -29,7 +29,7 @@ const SECRET = "fencing-test-secret".padEnd(40, "x");
 const plugin = firstPartyPlugin("simulated.json");
 
 const snapshot: ProtocolSnapshot = {
-  schemaVersion: 2,
+  schemaVersion: 3,
   experiment: { id: "e", name: "Lines", description: "", robotId: "simulated" },
   steps: [
     {

@@ -29,7 +29,7 @@ const ROBOTS = 12;
 const TRIALS = 10;
 
 const saying = (text: string): ProtocolSnapshot => ({
-  schemaVersion: 2,
+  schemaVersion: 3,
   experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
   steps: [
     {

@@ -1,6 +1,6 @@
 // What moved the trial at each step: the path it took, each step it entered
 // with what took it there (the start, the wizard's next, the participant's
-// answer through a branch, or a jump, which is a deviation) and how many of
+// answer through a branch, a time limit running out, or a jump, which is a deviation) and how many of
 // the step's actions the wizard skipped while in it. Read from the log only,
 // so a step entered twice is two visits.
 import type { TrialEvent } from "@/core/trial";
@@ -8,7 +8,12 @@ import type { EventBody } from "@/core/trial/types";
 
 type Via = Extract<EventBody, { type: "step.entered" }>["via"];
 
-export type Move = { by: "start" } | { by: "next" } | { by: "answer"; answer: string } | { by: "jump" };
+export type Move =
+  | { by: "start" }
+  | { by: "next" }
+  | { by: "answer"; answer: string }
+  | { by: "jump" }
+  | { by: "timer" };
 
 /**
  * Each way the engine enters a step, as the move a reader is told. A new way
@@ -20,6 +25,7 @@ const MOVED_BY: Record<Via, Move["by"]> = {
   next: "next",
   branch: "answer",
   manual_jump: "jump",
+  timeout: "timer",
 };
 
 export interface StepVisit {
@@ -52,6 +58,7 @@ const MOVE_WORDS: Record<Move["by"], (move: Move) => string> = {
   next: () => "the wizard's next",
   answer: (move) => `the answer “${(move as Extract<Move, { by: "answer" }>).answer}”`,
   jump: () => "the wizard's jump (a deviation)",
+  timer: () => "the time limit running out",
 };
 
 /** What moved the trial into a step, in words: "the answer “Mars”". */

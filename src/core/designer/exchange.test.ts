@@ -142,6 +142,46 @@ describe("exporting and importing an experiment", () => {
     expect(normalized(imported(text))).toEqual(normalized(draft));
   });
 
+  it("keeps time limits, their way on named by key like a step's after", () => {
+    const question = { options: [{ id: "y", label: "yes" }] };
+    const draft: DesignDraft = {
+      name: "Timed",
+      description: "",
+      robotId: "nao6-ros2",
+      steps: [
+        {
+          id: "u1",
+          name: "Ask",
+          description: "",
+          timeLimit: { seconds: 30, after: { to: "step", stepId: "u3" } },
+          actions: [
+            {
+              id: "a1",
+              type: "record_answer",
+              name: "",
+              parameters: question,
+              parallelGroup: null,
+              timeLimit: { seconds: 10, after: { to: "end" } },
+            },
+          ],
+        },
+        { id: "u2", name: "Next", description: "", timeLimit: { seconds: 5, after: { to: "next" } }, actions: [] },
+        { id: "u3", name: "Bye", description: "", actions: [] },
+      ],
+    };
+    const file = JSON.parse(exportExperiment(draft));
+    expect(file.steps.map((s: { timeLimit?: unknown }) => s.timeLimit)).toEqual([
+      { seconds: 30, after: "@step-3" },
+      { seconds: 5 },
+      undefined,
+    ]);
+    expect(file.steps[0].actions[0].timeLimit).toEqual({ seconds: 10, after: "end" });
+    const again = imported(JSON.stringify(file));
+    expect(again.steps[0]!.timeLimit).toEqual({ seconds: 30, after: { to: "step", stepId: again.steps[2]!.id } });
+    expect(again.steps[1]!.timeLimit).toEqual({ seconds: 5, after: { to: "next" } });
+    expect(again.steps[0]!.actions[0]!.timeLimit).toEqual({ seconds: 10, after: { to: "end" } });
+  });
+
   it("reads a version 1 file, whose steps each go on to the next", () => {
     const file = JSON.parse(exportExperiment(storyteller));
     file.formatVersion = 1;
@@ -187,7 +227,7 @@ describe("exporting and importing an experiment", () => {
       [
         "{",
         '  "format": "hristudio.experiment",',
-        '  "formatVersion": 2,',
+        '  "formatVersion": 3,',
         '  "experiment": {',
         '    "name": "Tiny",',
         '    "description": "",',
@@ -303,10 +343,10 @@ describe("importing a bad file", () => {
     ],
     [
       "a newer format",
-      edit((f) => (f.formatVersion = 3)),
-      [["$.formatVersion", "is 3: the file comes from a newer HRIStudio"]],
+      edit((f) => (f.formatVersion = 4)),
+      [["$.formatVersion", "is 4: the file comes from a newer HRIStudio"]],
     ],
-    ["a version as text", edit((f) => (f.formatVersion = "1")), [["$.formatVersion", "must be 1 or 2"]]],
+    ["a version as text", edit((f) => (f.formatVersion = "1")), [["$.formatVersion", "must be 1 or 2 or 3"]]],
     ["no steps", edit((f) => delete f.steps), [["$.steps", "must be a list"]]],
     ["no experiment", edit((f) => delete f.experiment), [["$.experiment", "must be an object"]]],
     ["a blank robot", edit((f) => (f.experiment.robot = " ")), [["$.experiment.robot", "must be a non-empty string"]]],
@@ -373,6 +413,22 @@ describe("importing a bad file", () => {
         f.steps[1].after = "end";
       }),
       [["$.steps[1].after", "is not part of an experiment file"]],
+    ],
+    [
+      "a time limit of no time, leading to a missing step",
+      edit((f) => (f.steps[1].timeLimit = { seconds: 0, after: "@step-9" })),
+      [
+        ["$.steps[1].timeLimit.seconds", "must be a number of seconds, more than 0 and at most 3600"],
+        ["$.steps[1].timeLimit.after", '"@step-9" names no step of this file'],
+      ],
+    ],
+    [
+      "a time limit in a version 2 file, which had none",
+      edit((f) => {
+        f.formatVersion = 2;
+        f.steps[2].actions[2].timeLimit = { seconds: 10 };
+      }),
+      [["$.steps[2].actions[2].timeLimit", "is not part of an experiment file"]],
     ],
     [
       "a branch to a missing step",

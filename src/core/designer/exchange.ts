@@ -1,9 +1,9 @@
 // The experiment file: how a protocol leaves one HRIStudio and enters another
-// (a lab sharing its study with another lab). Format version 2:
+// (a lab sharing its study with another lab). Format version 3:
 //
 //   {
 //     "format": "hristudio.experiment",
-//     "formatVersion": 2,
+//     "formatVersion": 3,
 //     "experiment": { "name": "…", "description": "…", "robot": "nao6-ros2" },
 //     "steps": [
 //       {
@@ -11,6 +11,7 @@
 //         "name": "…",
 //         "description": "…",
 //         "after": "@step-5",
+//         "timeLimit": { "seconds": 30, "after": "end" },
 //         "actions": [
 //           { "type": "say", "name": "…", "parameters": { "text": "…" }, "runTogether": "group-1" }
 //         ]
@@ -20,7 +21,9 @@
 //
 // Database ids never leave: steps are keyed by position ("step-1"…), a branch
 // names its targets by key ("@step-3"), a step's "after" is a key or "end" (left
-// out for "the next step"; version 1 files have none), and run-together groups are renamed
+// out for "the next step"; version 1 files have none), a time limit (version 3,
+// on a step or a record_answer) is { "seconds": 10, "after": "@step-4" },
+// its "after" written as a step's is, and run-together groups are renamed
 // "group-1", "group-2"… in order of first appearance ("runTogether" is left out
 // for an action that runs alone). The writer is deterministic (fixed key order,
 // parameters sorted, 2-space indent, final newline) so an exported file diffs
@@ -39,12 +42,14 @@ import {
   DESIGN_LIMITS,
   DOCUMENT_VERSION,
   type experimentFields,
+  MAX_TIME_LIMIT_SECONDS,
   type stepSchema,
 } from "../protocol/document";
 import { fieldsAfter, type FilePlace, READABLE_VERSIONS, upgradeFile } from "../protocol/versions";
 import { finish, type Work } from "../work";
 import { parsingFile } from "./file-parse";
 import type { After, DesignAction, DesignDraft, DesignStep, NewId } from "./types";
+import type { TimeLimit } from "../protocol/document";
 
 const FORMAT = "hristudio.experiment";
 const MAX_BYTES = 2 * 1024 * 1024;
@@ -73,6 +78,7 @@ const STEP_FIELDS = {
   name: "name",
   description: "description",
   after: "after",
+  timeLimit: "timeLimit",
   actions: "actions",
 } as const satisfies Record<keyof DesignStep, string>;
 const ACTION_FIELDS = {
@@ -82,15 +88,26 @@ const ACTION_FIELDS = {
   parameters: "parameters",
   parallelGroup: "runTogether",
   note: "note",
+  timeLimit: "timeLimit",
 } as const satisfies Record<keyof DesignAction, string | null>;
 
 /** An action as the declaration reads it (defaults left out), with its run-together group named. The note is absent when there is none. */
-type FileAction = Omit<z.input<typeof actionSchema>, "id" | "parallelGroup"> & { runTogether?: string };
+type FileAction = Omit<z.input<typeof actionSchema>, "id" | "parallelGroup" | "timeLimit"> & {
+  runTogether?: string;
+  timeLimit?: FileTimeLimit;
+};
+
+/** A time limit whose way on is written as a step's "after" is. */
+interface FileTimeLimit {
+  seconds: number;
+  after?: string;
+}
 
 /** A step keyed "step-K"; "after" is "@step-K" or "end", absent for the next step. */
-type FileStep = Omit<z.input<typeof stepSchema>, "id" | "after" | "actions"> & {
+type FileStep = Omit<z.input<typeof stepSchema>, "id" | "after" | "actions" | "timeLimit"> & {
   key: string;
   after?: string;
+  timeLimit?: FileTimeLimit;
   actions: FileAction[];
 };
 
@@ -122,6 +139,7 @@ export function exportExperiment(draft: DesignDraft): string {
       key: `step-${i + 1}`,
       name: step.name,
       after: fileAfter(step.after, keys),
+      timeLimit: fileLimit(step.timeLimit, keys),
       actions: step.actions.map((action) => ({
         ...toFile(action, ACTION_FIELDS),
         type: action.type,
@@ -129,6 +147,7 @@ export function exportExperiment(draft: DesignDraft): string {
         parameters: action.type === "branch" ? swapTargets(action.parameters, (id) => keys.get(id)) : action.parameters,
         runTogether: action.parallelGroup ? group(action.parallelGroup) : undefined,
         note: action.note || undefined,
+        timeLimit: fileLimit(action.timeLimit, keys),
       })),
     })),
   };
@@ -207,6 +226,7 @@ export function draftOf(
         name: step.name,
         description: step.description ?? "",
         after: draftAfter(step.after, ids),
+        timeLimit: draftLimit(step.timeLimit, ids),
         actions: step.actions.map((action) => ({
           ...fromFile(action, ACTION_FIELDS),
           id: newId(),
@@ -218,6 +238,7 @@ export function draftOf(
               : (action.parameters ?? {}),
           parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
           note: action.note || undefined,
+          timeLimit: draftLimit(action.timeLimit, ids),
         })),
       };
     }
@@ -261,6 +282,14 @@ function draftAfter(after: string | undefined, ids: Map<string, string>): After 
   if (after === "end") return { to: "end" };
   const stepId = after === undefined ? undefined : ids.get(after);
   return stepId ? { to: "step", stepId } : { to: "next" };
+}
+
+function fileLimit(limit: TimeLimit | undefined, keys: Map<string, string>): FileTimeLimit | undefined {
+  return limit && { seconds: limit.seconds, after: fileAfter(limit.after, keys) };
+}
+
+function draftLimit(limit: FileTimeLimit | undefined, ids: Map<string, string>): TimeLimit | undefined {
+  return limit && { seconds: limit.seconds, after: draftAfter(limit.after, ids) };
 }
 
 /** A branch's targets renamed one by one; a target with no new name is dropped. */
@@ -379,14 +408,26 @@ function* check(file: unknown): Work<ImportProblem[]> {
     text(step, "name", path, MAX_NAME, "required");
     text(step, "description", path, MAX_TEXT, "optional");
   });
+  const leadsTo = (after: unknown, at: string) => {
+    if (after === undefined || after === "end") return;
+    if (typeof after !== "string" || !after.startsWith("@"))
+      flag(at, 'must be "end" or name a step by "@" and its key, such as "@step-2"');
+    else if (!keys.has(after.slice(1))) flag(at, `"${after}" names no step of this file`);
+  };
+  const timeLimit = (owner: Record<string, unknown>, path: string) => {
+    const limit = owner.timeLimit;
+    const at = `${path}.timeLimit`;
+    if (limit === undefined || !object(limit, at, ["seconds", "after"])) return;
+    const seconds = limit.seconds;
+    if (typeof seconds !== "number" || !(seconds > 0) || seconds > MAX_TIME_LIMIT_SECONDS)
+      flag(`${at}.seconds`, `must be a number of seconds, more than 0 and at most ${MAX_TIME_LIMIT_SECONDS}`);
+    leadsTo(limit.after, `${at}.after`);
+  };
   // Keys are all known only now: a step may lead to one further down.
   file.steps.forEach((step, s) => {
-    if (!isObject(step) || step.after === undefined) return;
-    const at = `$.steps[${s}].after`;
-    if (step.after === "end") return;
-    if (typeof step.after !== "string" || !step.after.startsWith("@"))
-      flag(at, 'must be "end" or name a step by "@" and its key, such as "@step-2"');
-    else if (!keys.has(step.after.slice(1))) flag(at, `"${step.after}" names no step of this file`);
+    if (!isObject(step)) return;
+    leadsTo(step.after, `$.steps[${s}].after`);
+    timeLimit(step, `$.steps[${s}]`);
   });
   for (const [s, step] of file.steps.entries()) {
     yield;
@@ -398,6 +439,7 @@ function* check(file: unknown): Work<ImportProblem[]> {
       text(action, "name", path, MAX_NAME, "optional");
       text(action, "note", path, MAX_NOTE, "optional");
       text(action, "runTogether", path, MAX_NAME, "optional");
+      timeLimit(action, path);
       if (action.runTogether === "")
         flag(`${path}.runTogether`, "must be a non-empty string, or left out for an action that runs alone");
       if (action.parameters === undefined) return;

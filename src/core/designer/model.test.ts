@@ -135,6 +135,19 @@ describe("designer commands", () => {
       { to: "step", stepId: "end" },
     ],
     ["lead a step to the end", commands.setAfter("story", { to: "end" }), (d) => d.steps[1]!.after, { to: "end" }],
+    [
+      "give a step a time limit",
+      commands.setStepTimeLimit("story", { seconds: 30, after: { to: "end" } }),
+      (d) => d.steps[1]!.timeLimit,
+      { seconds: 30, after: { to: "end" } },
+    ],
+    ["take it away: none is kept", commands.setStepTimeLimit("story", null), (d) => "timeLimit" in d.steps[1]!, false],
+    [
+      "give a question a time limit",
+      commands.setAnswerTimeLimit("bow", { seconds: 10, after: { to: "step", stepId: "end" } }),
+      (d) => d.steps[0]!.actions[2]!.timeLimit,
+      { seconds: 10, after: { to: "step", stepId: "end" } },
+    ],
     ["rename experiment", commands.setDetails({ name: "Storyteller v2" }), (d) => d.name, "Storyteller v2"],
   ];
 

@@ -1,7 +1,7 @@
 // The designer as a headless model: named commands over a draft, with undo
 // and redo. The page only renders a draft and sends commands, so every edit a
 // researcher can make is tested here without a browser.
-import { actionSchema, experimentFields, stepSchema } from "../protocol/document";
+import { actionSchema, experimentFields, stepSchema, type TimeLimit } from "../protocol/document";
 import type { DesignAction, DesignDraft, DesignStep, NewId, After } from "./types";
 import { WAITS_FOR_CHOICE } from "./blocks";
 
@@ -196,6 +196,13 @@ export const commands = {
     },
   }),
 
+  /** null: no time limit. */
+  setStepTimeLimit: (stepId: string, limit: TimeLimit | null): Command => ({
+    label: "set the step's time limit",
+    mergeKey: `step-time-limit:${stepId}`,
+    apply: (d) => replaceStep(d, stepId, ({ timeLimit: _, ...s }) => (limit ? { ...s, timeLimit: limit } : s)),
+  }),
+
   removeStep: (stepId: string): Command => ({
     label: "delete step",
     apply: (d) => (locateStep(d, stepId), { ...d, steps: d.steps.filter((s) => s.id !== stepId) }),
@@ -265,6 +272,13 @@ export const commands = {
     label: "edit note for the wizard",
     mergeKey: `note:${actionId}`,
     apply: (d) => replaceAction(d, actionId, ({ note: _, ...a }) => (note.trim() ? { ...a, note } : a)),
+  }),
+
+  /** A question's "no answer in N s"; null: none. */
+  setAnswerTimeLimit: (actionId: string, limit: TimeLimit | null): Command => ({
+    label: "set the answer's time limit",
+    mergeKey: `answer-time-limit:${actionId}`,
+    apply: (d) => replaceAction(d, actionId, ({ timeLimit: _, ...a }) => (limit ? { ...a, timeLimit: limit } : a)),
   }),
 
   /** `undefined` removes the parameter, so the block's default applies. */

@@ -131,6 +131,25 @@ describe("validateDesign", () => {
     ],
     ["a step after an end is never reached", draft([say(), end], [say()]), ["error unreachable_step s2"]],
     [
+      "a step reached only when a question's time runs out is reached",
+      draft(
+        [{ ...question("Yes", "No"), timeLimit: { seconds: 10, after: { to: "step", stepId: "s3" } } }, end],
+        [say(), end],
+        [say()],
+      ),
+      ["error unreachable_step s2"],
+    ],
+    [
+      "a time limit on an action that is no question",
+      draft([say("Hi", { timeLimit: { seconds: 5, after: { to: "end" } } })]),
+      ["error time_limit_not_question s1a1"],
+    ],
+    [
+      "a time limit leading to a deleted step",
+      draft([{ ...question("Yes", "No"), timeLimit: { seconds: 10, after: { to: "step", stepId: "gone" } } }]),
+      ["error after_target_missing s1"],
+    ],
+    [
       "a step skipped by every answer",
       draft([question("Yes", "No"), branch({ o1: "s3", o2: "s3" })], [say()], [say()]),
       ["error unreachable_step s2"],

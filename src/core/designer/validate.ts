@@ -11,7 +11,7 @@ import {
   type Plugin,
 } from "../plugins";
 import { finish, type Work } from "../work";
-import { exitOf } from "../protocol/flow";
+import { exitBy, exitOf, timeLimitsOf } from "../protocol/flow";
 import { blockFor, type Block } from "./blocks";
 import type { DesignAction, DesignDraft, DesignStep } from "./types";
 
@@ -106,6 +106,14 @@ export function* validating(draft: DesignDraft, plugin: Plugin | null, channels?
           message: `${name} is set to run together with other actions, but no action next to it is in its group, so it runs on its own.`,
         });
       }
+      // The engine runs a time limit of a question only: on any other action it would silently do nothing.
+      if (action.timeLimit && action.type !== "record_answer") {
+        at({
+          severity: "error",
+          code: "time_limit_not_question",
+          message: `${name} has a time limit, but only a "Record answer" can have one (a step can too, in its properties).`,
+        });
+      }
       if (action.type === "record_answer") {
         const seen = new Set<string>();
         for (const option of optionsOf(action)) {
@@ -168,13 +176,33 @@ function optionsOf(action: DesignAction): Option[] {
   });
 }
 
+/** The steps a step's time limits (its own, its questions') lead to; one to a step that is gone is told. */
+function timeLimitExits(draft: DesignDraft, s: number, tell: (message: string) => void): number[] {
+  const step = draft.steps[s]!;
+  return timeLimitsOf(step).flatMap((limit) => {
+    const exit = exitBy(draft.steps, s, limit.after);
+    if (exit.to === "missing")
+      tell(
+        `${upper(stepLabel(step, s))} has a time limit that leads to a step that is no longer in the experiment. Choose where it leads in the properties.`,
+      );
+    return exit.to === "step" ? [exit.index] : [];
+  });
+}
+
 // A branch already reported as broken is read as going to the targets it has
 // and also falling through, so one mistake does not surface again as
 // unreachable steps or an endless trial.
 function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[] {
   const issues: Placed[] = [];
   const flow = draft.steps.map((step, s) => {
-    const exits: number[] = [];
+    // A time limit is a way on of its own, taken whatever else the step does.
+    const exits: number[] = timeLimitExits(draft, s, (message) =>
+      issues.push({
+        step: s,
+        action: -1,
+        issue: { severity: "error", code: "after_target_missing", message, stepId: step.id },
+      }),
+    );
     for (const [a, action] of step.actions.entries()) {
       if (action.type === "end_trial") return { exits, ends: true };
       const routes = action.type === "branch" ? routesOf(step, a, indexById) : null;

@@ -7,8 +7,7 @@
 // The document carries its format version (a snapshot's schemaVersion, a
 // file's formatVersion); ./versions.ts reads every earlier one. What the
 // issue's later parts add goes here, each a bump of DOCUMENT_VERSION with its
-// upgrade in ./versions.ts:
-// - a step's time limit and a record_answer's time limit with its own edge: fields of stepSchema and actionSchema;
+// upgrade in ./versions.ts (time limits came in 3):
 // - a bounded loop ("at most K times, then …"): a member of afterSchema;
 // - a variant per condition of an action or a step: a field of actionSchema and stepSchema.
 import { z } from "zod";
@@ -56,6 +55,21 @@ export const afterSchema = z.discriminatedUnion(
 
 const MAX_PARAMETERS_BYTES = 64 * 1024;
 
+/** The longest time limit: an hour, longer than any step a participant sits through. */
+export const MAX_TIME_LIMIT_SECONDS = 3600;
+
+/**
+ * "No answer (or the step not done) in N s → where": a timer the runtime
+ * starts, logs and fires. A timer that fires is the protocol, not a deviation.
+ */
+export const timeLimitSchema = z.object({
+  seconds: z
+    .number({ error: "must be a number of seconds" })
+    .positive("must be more than 0 seconds")
+    .max(MAX_TIME_LIMIT_SECONDS, `must be at most ${MAX_TIME_LIMIT_SECONDS} seconds`),
+  after: afterSchema,
+});
+
 export const actionSchema = z.object({
   id: key,
   type: named("Action type", DESIGN_LIMITS.name),
@@ -74,6 +88,8 @@ export const actionSchema = z.object({
    * out when empty, so a design without notes hashes as it always did.
    */
   note: plain("Note for the wizard", DESIGN_LIMITS.note).optional(),
+  /** A record_answer's "no answer in N s": its clock runs once the actions before it are done. Left out when none. */
+  timeLimit: timeLimitSchema.optional(),
 });
 
 export const stepSchema = z.object({
@@ -82,6 +98,8 @@ export const stepSchema = z.object({
   description,
   /** Absent in documents written before steps said where they lead: the next step. */
   after: afterSchema.optional(),
+  /** How long the step may last from its entry before the trial moves on. Left out when none. */
+  timeLimit: timeLimitSchema.optional(),
   actions: z
     .array(actionSchema)
     .max(DESIGN_LIMITS.actionsPerStep, `A step can hold at most ${DESIGN_LIMITS.actionsPerStep} actions`),
@@ -131,6 +149,7 @@ export const draftSchema = experimentFields.extend({
 });
 
 export type After = z.infer<typeof afterSchema>;
+export type TimeLimit = z.infer<typeof timeLimitSchema>;
 export type DesignAction = z.infer<typeof actionSchema>;
 export type DesignStep = z.infer<typeof stepSchema>;
 /** What a researcher edits before publishing. Branch targets are step ids (parameters.targets[optionId]). */
@@ -140,9 +159,11 @@ export type DesignDraft = z.infer<typeof draftSchema>;
  * The document's format version. 1: steps go on to the next, the snapshot
  * names the robot robotPluginId. 2: a step says where it leads ("after"), the
  * robot is robotId (a note for the wizard came in 2 too, optional, so a
- * design without notes hashes as before).
+ * design without notes hashes as before). 3: a step and a record_answer may
+ * have a time limit ("timeLimit", left out when none, so earlier documents
+ * read and hash as they were).
  */
-export const DOCUMENT_VERSION = 2;
+export const DOCUMENT_VERSION = 3;
 
 /** The published form: the draft under the experiment's id and the document's version, frozen. */
 export const snapshotSchema = z.object({
@@ -160,11 +181,11 @@ export type ProtocolSnapshot = z.infer<typeof snapshotSchema>;
  */
 export interface TrialProtocol {
   steps: Array<
-    Pick<DesignStep, "id" | "name" | "after"> &
+    Pick<DesignStep, "id" | "name" | "after" | "timeLimit"> &
       Partial<Pick<DesignStep, "description">> & {
         actions: Array<
           Pick<DesignAction, "id" | "type" | "parameters"> &
-            Partial<Pick<DesignAction, "name" | "parallelGroup" | "note">>
+            Partial<Pick<DesignAction, "name" | "parallelGroup" | "note" | "timeLimit">>
         >;
       }
   >;

@@ -1,6 +1,6 @@
 // Where a step leads: the one reading of a step's "after" that the trial
 // engine, the designer's checks, its flow map and the rehearsal preview share.
-import type { TrialProtocol } from "./document";
+import type { After, TimeLimit, TrialProtocol } from "./document";
 
 type Steps = TrialProtocol["steps"];
 
@@ -8,7 +8,11 @@ type Steps = TrialProtocol["steps"];
 export type Exit = { to: "step"; index: number } | { to: "end" } | { to: "missing"; stepId: string };
 
 export function exitOf(steps: Steps, index: number): Exit {
-  const after = steps[index]?.after ?? { to: "next" };
+  return exitBy(steps, index, steps[index]?.after ?? { to: "next" });
+}
+
+/** Where `after`, read from the step at `index`, leads: a step's own way on, or its time limit's. */
+export function exitBy(steps: Steps, index: number, after: After): Exit {
   if (after.to === "end") return { to: "end" };
   if (after.to === "next") return index + 1 < steps.length ? { to: "step", index: index + 1 } : { to: "end" };
   const target = steps.findIndex((s) => s.id === after.stepId);
@@ -22,4 +26,10 @@ export function describeExit(steps: Steps, index: number): string {
   if (exit.to === "missing") return "a step that is no longer in the experiment";
   const step = steps[exit.index]!;
   return step.name.trim() ? `"${step.name.trim()}"` : `step ${exit.index + 1}`;
+}
+
+/** A step's time limits: its own, then its questions' ("no answer in …"). */
+export function timeLimitsOf(step: Steps[number]): TimeLimit[] {
+  const limits = [step.timeLimit, ...step.actions.map((a) => (a.type === "record_answer" ? a.timeLimit : undefined))];
+  return limits.filter((limit) => limit !== undefined);
 }

@@ -1,6 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { storytellerDraft } from "../../server/seed/storyteller";
 import { hashCanonical } from "./canonical";
+import { DOCUMENT_VERSION } from "./document";
 import { readSnapshot, snapshotOf } from "./snapshot";
 
 describe("the snapshot of a design", () => {
@@ -40,7 +41,7 @@ describe("reading a stored snapshot", () => {
     };
     const before = JSON.stringify(v1);
     const read = readSnapshot(v1);
-    expect(read.schemaVersion).toBe(2);
+    expect(read.schemaVersion).toBe(DOCUMENT_VERSION);
     expect(read.experiment).toEqual({ id: "e", name: "E", description: "", robotId: "nao6-ros2" });
     expect(read.steps[0]!.after).toBeUndefined();
     expect(JSON.stringify(v1)).toBe(before);

@@ -35,6 +35,13 @@ const UPGRADES: Upgrade[] = [
     },
     file: (file) => file,
   },
+  {
+    to: 3,
+    fileFields: { step: ["timeLimit"], action: ["timeLimit"] },
+    // Version 2 had no time limits: a document without one is read as it was.
+    snapshot: (snapshot) => snapshot,
+    file: (file) => file,
+  },
 ];
 
 /** Every version this HRIStudio reads: 1 up to today's. */

@@ -4,14 +4,19 @@ import { actionName } from "../designer/action-name";
 import { exitOf } from "../protocol/flow";
 import { applyInPlace } from "./fold";
 import { answerOptions, branchTarget, findAction, findStep, nextUnit } from "./protocol";
+import { FINISHED, timerFired, withTimers } from "./timers";
 import type { Command, Decision, DeviationKind, EngineEvent, ProtocolAction, TrialProtocol, TrialState } from "./types";
 
 const ok = (...events: EngineEvent[]): Decision => ({ ok: true, events });
 const no = (reason: string): Decision => ({ ok: false, reason });
 
-const FINISHED = new Set(["done", "failed", "not_sent", "unknown", "timed_out", "skipped"]);
-
+/** What `command` causes in `state`, with the timers it starts and cancels. */
 export function decide(protocol: TrialProtocol, state: TrialState, command: Command): Decision {
+  const decision = decideCommand(protocol, state, command);
+  return decision.ok ? ok(...withTimers(protocol, state, decision.events)) : decision;
+}
+
+function decideCommand(protocol: TrialProtocol, state: TrialState, command: Command): Decision {
   switch (command.kind) {
     case "start": {
       if (state.status !== "scheduled") return no("This trial has already started.");
@@ -70,6 +75,8 @@ export function decide(protocol: TrialProtocol, state: TrialState, command: Comm
       if (command.stepId === state.currentStepId) return no("The trial is already at that step.");
       return ok({ type: "step.entered", stepId: command.stepId, via: "manual_jump", deviation: "manual_jump" });
     }
+    case "timer_fired":
+      return timerFired(protocol, state, command.timerId);
     case "unscripted":
       if (state.actions[command.actionId]) return no("That action id is already used.");
       return ok({
@@ -200,7 +207,11 @@ export type RobotReportCommand = Extract<
  * A refused report (on an action already finished) is left out, as alone.
  * It reads the reported actions only: no copy of every action of the trial.
  */
-export function decideReports(state: TrialState, reports: readonly RobotReportCommand[]): EngineEvent[] {
+export function decideReports(
+  protocol: TrialProtocol,
+  state: TrialState,
+  reports: readonly RobotReportCommand[],
+): EngineEvent[] {
   const seen: TrialState = { ...state, actions: {} };
   const events: EngineEvent[] = [];
   for (const report of reports) {
@@ -214,7 +225,8 @@ export function decideReports(state: TrialState, reports: readonly RobotReportCo
       decision.events.map((event) => ({ ...event, seq: state.lastSeq, relMs: null })),
     );
   }
-  return events;
+  // A question's clock starts once the actions before it are reported done.
+  return events.length ? withTimers(protocol, state, events) : events;
 }
 
 function robotReport(state: TrialState, command: RobotReportCommand): Decision {

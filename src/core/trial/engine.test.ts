@@ -365,16 +365,16 @@ describe("robot reports that came together", () => {
     ],
   ])("%s", (_name, reports, expected) => {
     const { state, log } = run(requested);
-    expect(brief(decideReports(state, reports))).toEqual(expected);
+    expect(brief(decideReports(protocol, state, reports))).toEqual(expected);
     // The same events as each report decided alone, in turn, after the others were logged.
     const oneByOne = simulate(protocol, [...requested, ...reports]).log.slice(log.length);
-    expect(decideReports(state, reports)).toEqual(oneByOne.map(({ seq: _, relMs: __, ...event }) => event));
+    expect(decideReports(protocol, state, reports)).toEqual(oneByOne.map(({ seq: _, relMs: __, ...event }) => event));
   });
 
   it("leaves the state it was given as it was", () => {
     const { state } = run(requested);
     const before = structuredClone(state);
-    decideReports(state, [
+    decideReports(protocol, state, [
       { kind: "dispatched", actionId: "hello" },
       { kind: "completed", actionId: "hello" },
     ]);

@@ -22,6 +22,7 @@ export function initialState(protocol: TrialProtocol): TrialState {
     answers: {},
     path: [],
     stepActions,
+    timers: {},
     lastSeq: 0,
   };
 }
@@ -33,6 +34,7 @@ export function applyAll(state: TrialState, events: readonly TrialEvent[]): Tria
     actions: { ...state.actions },
     answers: { ...state.answers },
     path: [...state.path],
+    timers: { ...state.timers },
   };
   for (const event of events) advance(next, event);
   return next;
@@ -77,7 +79,8 @@ const ACTION_OUTCOME: Partial<Record<TrialEvent["type"], [ActionStatus, "request
 function advance(next: TrialState, event: TrialEvent): void {
   next.lastSeq = event.seq;
   const outcome = ACTION_OUTCOME[event.type];
-  if (outcome && "actionId" in event) {
+  // A timer's actionId names the question it waits on: its events leave the action as it is.
+  if (outcome && "actionId" in event && event.actionId !== undefined) {
     const [status, field] = outcome;
     const before = next.actions[event.actionId] ?? WAITING;
     next.actions[event.actionId] = { ...before, status, ...(field ? { [field]: event.relMs } : {}) };
@@ -97,6 +100,15 @@ function advance(next: TrialState, event: TrialEvent): void {
       break;
     case "answer.recorded":
       next.answers[event.actionId] = event.optionId;
+      break;
+    case "timer.started": {
+      const { timerId, stepId, actionId, seconds } = event;
+      next.timers[timerId] = { stepId, ...(actionId ? { actionId } : {}), seconds, startedMs: event.relMs };
+      break;
+    }
+    case "timer.fired":
+    case "timer.cancelled":
+      delete next.timers[event.timerId];
       break;
     case "trial.paused":
       next.status = "paused";

@@ -34,6 +34,8 @@ export const FRESH_FOR_MS: Record<Command["kind"], number | null> = {
   unknown: null,
   timed_out: null,
   robot_problem: null,
+  // The runtime's own clock: a timer fires when it was due, however late the process got to it.
+  timer_fired: null,
 };
 
 /** A page clock this far from the runtime's, once the offset is taken off, is not believed. */

@@ -29,6 +29,20 @@ describe("the flow map's edges", () => {
   it.each<[string, TrialProtocol, string[]]>([
     ["a straight protocol", { steps: [step("a"), step("b")] }, ["0→1", "1→end"]],
     [
+      "time limits: a step's, and a question's beside its answers",
+      {
+        steps: [
+          {
+            ...step("ask", [{ ...question, timeLimit: { seconds: 10, after: { to: "step", stepId: "bye" } } }]),
+            timeLimit: { seconds: 60, after: { to: "end" } },
+          },
+          step("other"),
+          step("bye"),
+        ],
+      },
+      ["0→1", "0→end 60 s", "0→2 10 s", "1→2", "2→end"],
+    ],
+    [
       "answers that rejoin",
       {
         steps: [

@@ -1,8 +1,9 @@
 // The protocol as a map: every way the trial can move from a step, for the
 // designer's flow map. Read the way the engine walks (./decide.ts): a branch
 // sends each answer to its step, "End trial" ends, and otherwise the step's
-// "after" applies.
-import { exitOf } from "../protocol/flow";
+// "after" applies. A time limit (the step's, a question's) is an edge of its
+// own, whatever else the step does.
+import { exitBy, exitOf, timeLimitsOf } from "../protocol/flow";
 import { answerOptions, branchTarget } from "./protocol";
 import type { TrialProtocol } from "./types";
 
@@ -10,31 +11,44 @@ export interface FlowEdge {
   from: number;
   /** A step's index, or the end of the trial. */
   to: number | "end";
-  /** "after": the step's own way on; "answer": a branch, labelled with its answer. */
-  kind: "after" | "answer";
+  /** "after": the step's own way on; "answer": a branch, labelled with its answer; "timeout": a time limit, labelled with its seconds. */
+  kind: "after" | "answer" | "timeout";
   label?: string;
 }
 
 export function flowEdges(protocol: TrialProtocol): FlowEdge[] {
-  const { steps } = protocol;
-  const indexOf = new Map(steps.map((s, i) => [s.id, i]));
-  return steps.flatMap((step, from) => {
-    const edges: FlowEdge[] = [];
-    for (const [a, action] of step.actions.entries()) {
-      if (action.type === "end_trial") return [...edges, { from, to: "end" as const, kind: "after" as const }];
-      const question = step.actions[a - 1];
-      if (action.type !== "branch" || question?.type !== "record_answer") continue;
-      const options = answerOptions(question);
-      for (const option of options) {
-        const to = indexOf.get(branchTarget(action, option.id) ?? "");
-        if (to !== undefined) edges.push({ from, to, kind: "answer", label: option.label });
-      }
-      // Every answer routed: the step's own way on is never taken.
-      if (options.length && edges.filter((e) => e.kind === "answer").length === options.length) return edges;
-    }
-    const exit = exitOf(steps, from);
-    if (exit.to === "step") edges.push({ from, to: exit.index, kind: "after" });
-    if (exit.to === "end") edges.push({ from, to: "end", kind: "after" });
-    return edges;
+  const indexOf = new Map(protocol.steps.map((s, i) => [s.id, i]));
+  return protocol.steps.flatMap((_, from) => [...routes(protocol, indexOf, from), ...timeouts(protocol, from)]);
+}
+
+function timeouts(protocol: TrialProtocol, from: number): FlowEdge[] {
+  return timeLimitsOf(protocol.steps[from]!).flatMap((limit) => {
+    const exit = exitBy(protocol.steps, from, limit.after);
+    if (exit.to === "missing") return [];
+    return [
+      { from, to: exit.to === "end" ? "end" : exit.index, kind: "timeout" as const, label: `${limit.seconds} s` },
+    ];
   });
+}
+
+function routes(protocol: TrialProtocol, indexOf: Map<string, number>, from: number): FlowEdge[] {
+  const { steps } = protocol;
+  const step = steps[from]!;
+  const edges: FlowEdge[] = [];
+  for (const [a, action] of step.actions.entries()) {
+    if (action.type === "end_trial") return [...edges, { from, to: "end" as const, kind: "after" as const }];
+    const question = step.actions[a - 1];
+    if (action.type !== "branch" || question?.type !== "record_answer") continue;
+    const options = answerOptions(question);
+    for (const option of options) {
+      const to = indexOf.get(branchTarget(action, option.id) ?? "");
+      if (to !== undefined) edges.push({ from, to, kind: "answer", label: option.label });
+    }
+    // Every answer routed: the step's own way on is never taken.
+    if (options.length && edges.filter((e) => e.kind === "answer").length === options.length) return edges;
+  }
+  const exit = exitOf(steps, from);
+  if (exit.to === "step") edges.push({ from, to: exit.index, kind: "after" });
+  if (exit.to === "end") edges.push({ from, to: "end", kind: "after" });
+  return edges;
 }

@@ -14,7 +14,7 @@ export type DeviationKind = "skipped" | "out_of_order" | "unscripted" | "manual_
 
 export type EventBody =
   | { type: "trial.started" }
-  | { type: "step.entered"; stepId: string; via: "start" | "next" | "branch" | "manual_jump" }
+  | { type: "step.entered"; stepId: string; via: "start" | "next" | "branch" | "manual_jump" | "timeout" }
   | {
       type: "action.requested";
       stepId: string | null;
@@ -34,6 +34,12 @@ export type EventBody =
   | { type: "action.skipped"; stepId: string; actionId: string }
   | { type: "answer.recorded"; stepId: string; actionId: string; optionId: string; label: string }
   | { type: "branch.resolved"; stepId: string; actionId: string; optionId: string; targetStepId: string }
+  /** A time limit's clock began: a step's (from its entry), or a question's (actionId: once the actions before it are done). */
+  | { type: "timer.started"; timerId: string; stepId: string; actionId?: string; seconds: number }
+  /** Its time ran out: the trial takes the limit's way on, in the same append. */
+  | { type: "timer.fired"; timerId: string }
+  /** The wizard acted first (an answer, or the trial left the step or ended): it will never fire. */
+  | { type: "timer.cancelled"; timerId: string }
   | { type: "trial.paused" }
   | { type: "trial.resumed" }
   | { type: "trial.emergency_stop" }
@@ -84,7 +90,9 @@ export type Command =
   | { kind: "not_sent"; actionId: string; reason: string }
   | { kind: "unknown"; actionId: string; reason: string }
   | { kind: "timed_out"; actionId: string }
-  | { kind: "robot_problem"; text: string };
+  | { kind: "robot_problem"; text: string }
+  // The runtime's clock: a timer's time ran out.
+  | { kind: "timer_fired"; timerId: string };
 
 export type ActionStatus =
   | "waiting"
@@ -114,7 +122,18 @@ export interface TrialState {
   path: string[];
   /** Each step's actions, so a step entered again runs them again. */
   stepActions: Record<string, string[]>;
+  /** The timers running now (started, neither fired nor cancelled), by id, with when they started. */
+  timers: Record<string, RunningTimer>;
   lastSeq: number;
+}
+
+export interface RunningTimer {
+  stepId: string;
+  /** The question it waits on; absent for a step's time limit. */
+  actionId?: string;
+  seconds: number;
+  /** When it started, in ms from the trial's t0 (null in a log without times). */
+  startedMs: number | null;
 }
 
 export type Decision = { ok: true; events: EngineEvent[] } | { ok: false; reason: string };

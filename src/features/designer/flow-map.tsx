@@ -66,14 +66,16 @@ export function FlowMap({ draft, onSelect }: { draft: DesignDraft; onSelect: (st
                 d={`M${edge},${y1 - 6} H${out} V${y2 + 6} H${edge + (left ? -2 : 2)}`}
                 fill="none"
                 className={left ? "stroke-brand-600" : "stroke-amber-700"}
+                // A time limit's way on is dashed: taken only if the time runs out.
+                strokeDasharray={e.kind === "timeout" ? "4 3" : undefined}
                 markerEnd="url(#flow-arrow)"
               />
               {e.label && (
                 // At the arrow's head, where each answer has a row of its own; the halo keeps it legible over lanes.
                 <text
-                  x={edge - 6}
+                  x={left ? edge - 6 : edge + 6}
                   y={y2 + 2}
-                  textAnchor="end"
+                  textAnchor={left ? "end" : "start"}
                   paintOrder="stroke"
                   strokeWidth={3}
                   className="fill-brand-800 stroke-white text-[10px]"

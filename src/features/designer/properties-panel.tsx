@@ -13,6 +13,7 @@ import { Button } from "@/ui/button";
 import { Field, Input, NativeSelect, Textarea } from "@/ui/field";
 import { SchemaForm } from "@/ui/schema-form";
 import { AudioChooser } from "./audio-chooser";
+import { afterOf, afterValue, LeadsToOptions, TimeLimitField } from "./time-limit-field";
 import type { Selection } from "./protocol-timeline";
 
 interface Props {
@@ -102,6 +103,14 @@ function StepProperties({ draft, stepId, issues, run, onMove, onDelete }: Props 
         )}
       </Field>
       <AfterStep draft={draft} stepId={stepId} run={run} />
+      <TimeLimitField
+        draft={draft}
+        stepId={stepId}
+        limit={step.timeLimit}
+        label="Time limit (seconds)"
+        hint="The longest this step may last from when the trial enters it. Leave empty for no limit."
+        onChange={(limit) => run(commands.setStepTimeLimit(stepId, limit))}
+      />
       <IssueList issues={own} />
       <Toolbar what="step" onMove={onMove} onDelete={onDelete} />
     </div>
@@ -110,35 +119,16 @@ function StepProperties({ draft, stepId, issues, run, onMove, onDelete }: Props 
 
 /** Where the step leads once its actions are done: how answers' steps rejoin a shared step. */
 function AfterStep({ draft, stepId, run }: Pick<Props, "draft" | "run"> & { stepId: string }) {
-  const { step, index } = locateStep(draft, stepId);
-  const following = draft.steps[index + 1];
-  const value = !step.after || step.after.to === "next" ? "next" : step.after.to === "end" ? "end" : step.after.stepId;
-  const choose = (v: string) =>
-    run(commands.setAfter(stepId, v === "next" || v === "end" ? { to: v } : { to: "step", stepId: v }));
+  const { step } = locateStep(draft, stepId);
+  const value = afterValue(step.after);
   return (
     <Field
       label="Then"
       hint="Where the trial goes once this step's actions are done. Steps for different answers usually go to the step where the answers meet."
     >
       {(p) => (
-        <NativeSelect {...p} value={value} onChange={(e) => choose(e.target.value)}>
-          <option value="next">
-            {following
-              ? `Go on to the next step (${following.name || `step ${index + 2}`})`
-              : "End the trial (last step)"}
-          </option>
-          {draft.steps.map((s, i) =>
-            s.id === stepId ? null : (
-              <option key={s.id} value={s.id}>
-                Go to step {i + 1}: {s.name}
-              </option>
-            ),
-          )}
-          {/* On the last step "next" already ends the trial: one way to say it, unless the step says "end" itself. */}
-          {(following || value === "end") && <option value="end">End the trial</option>}
-          {value !== "next" && value !== "end" && !draft.steps.some((s) => s.id === value) && (
-            <option value={value}>A step that is no longer in the experiment</option>
-          )}
+        <NativeSelect {...p} value={value} onChange={(e) => run(commands.setAfter(stepId, afterOf(e.target.value)))}>
+          <LeadsToOptions draft={draft} stepId={stepId} value={value} />
         </NativeSelect>
       )}
     </Field>
@@ -179,7 +169,17 @@ function ActionProperties({
         )}
       </Field>
       {action.type === "record_answer" ? (
-        <AnswerEditor action={action} run={run} problems={problems} />
+        <>
+          <AnswerEditor action={action} run={run} problems={problems} />
+          <TimeLimitField
+            draft={draft}
+            stepId={step.id}
+            limit={action.timeLimit}
+            label="No answer in (seconds)"
+            hint="Counted once the actions before this question are done. Leave empty to wait for the answer."
+            onChange={(limit) => run(commands.setAnswerTimeLimit(action.id, limit))}
+          />
+        </>
       ) : action.type === "branch" ? (
         <BranchEditor draft={draft} action={action} answer={step.actions[index - 1]} run={run} />
       ) : action.type === "play_audio" ? (

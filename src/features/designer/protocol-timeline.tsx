@@ -68,7 +68,7 @@ export function ProtocolTimeline({
 
 /** Where a step leads, in words; a step whose question routes every answer leads where the answer says. */
 function leadsTo(steps: DesignStep[], index: number, edges: FlowEdge[]): string {
-  const own = edges.filter((e) => e.from === index);
+  const own = edges.filter((e) => e.from === index && e.kind !== "timeout");
   if (own.length > 0 && own.every((e) => e.kind === "answer")) return "where the answer leads";
   return describeExit(steps, index);
 }

@@ -18,6 +18,7 @@ import { OffScript, StepActions, StepList } from "./protocol-view";
 import { TrialQuestionnaires } from "@/features/questionnaires/trial-questionnaires";
 import { RecordingPanel } from "@/features/recording/recording-panel";
 import { RobotStatePanel } from "./robot-state-panel";
+import { TimeLimits } from "./time-limits";
 import { TrialClock } from "./trial-clock";
 import { TrialPeople } from "./trial-people";
 import { useDatabaseState } from "./use-database-state";
@@ -140,6 +141,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
           />
         </Card>
         <div className="space-y-6">
+          {!logHidden && <TimeLimits protocol={protocol} state={live.state} startedAt={started?.serverTime ?? null} />}
           {!logHidden && (
             <StepActions
               protocol={protocol}

@@ -42,9 +42,15 @@ export async function loadDesign(db: Database | Tx, experimentId: string) {
   }
   return {
     ...experiment,
+    // A column left null is a field left out: a design without time limits hashes as it did before them.
     steps: stepRows.map((s) => ({
       ...s,
-      actions: actionsOf.get(s.id)!.map((a) => ({ ...a, parameters: a.parameters as Record<string, unknown> })),
+      timeLimit: s.timeLimit ?? undefined,
+      actions: actionsOf.get(s.id)!.map((a) => ({
+        ...a,
+        parameters: a.parameters as Record<string, unknown>,
+        timeLimit: a.timeLimit ?? undefined,
+      })),
     })),
   };
 }
@@ -147,6 +153,7 @@ export async function insertSteps(tx: Tx, experimentId: string, draftSteps: Iter
       name: s.name,
       description: s.description,
       after: s.after ?? { to: "next" },
+      time_limit: s.timeLimit,
     });
     for (const [at, a] of s.actions.entries()) {
       actionRows.push({
@@ -158,6 +165,7 @@ export async function insertSteps(tx: Tx, experimentId: string, draftSteps: Iter
         parameters: a.parameters,
         parallel_group: a.parallelGroup,
         note: a.note ?? "",
+        time_limit: a.timeLimit,
       });
     }
     if (actionRows.length < ROWS_PER_INSERT) continue;
@@ -172,9 +180,10 @@ export async function insertSteps(tx: Tx, experimentId: string, draftSteps: Iter
 
 /** Rows per insert (a step's actions may take one a little past it): a few milliseconds of work each. */
 const ROWS_PER_INSERT = 1000;
-const STEP_COLUMNS = "id text, experiment_id text, position integer, name text, description text, after jsonb";
+const STEP_COLUMNS =
+  "id text, experiment_id text, position integer, name text, description text, after jsonb, time_limit jsonb";
 const ACTION_COLUMNS =
-  "id text, step_id text, position integer, type text, name text, parameters jsonb, parallel_group text, note text";
+  "id text, step_id text, position integer, type text, name text, parameters jsonb, parallel_group text, note text, time_limit jsonb";
 
 /**
  * Inserts rows (keys named as `columns`) as one JSON text that PostgreSQL

@@ -1,6 +1,6 @@
 import { sql } from "drizzle-orm";
 import { index, integer, jsonb, pgTable, text, timestamp, uniqueIndex } from "drizzle-orm/pg-core";
-import type { After } from "../../core/protocol/document";
+import type { After, TimeLimit } from "../../core/protocol/document";
 import { user } from "./auth";
 import { createdAt, id, snapshot } from "./columns";
 import { studies } from "./studies";
@@ -41,6 +41,8 @@ export const steps = pgTable(
     description: text("description").notNull().default(""),
     // Where the step leads once its actions are done (see core/protocol/document.ts).
     after: jsonb("after").$type<After>().notNull().default({ to: "next" }),
+    // How long the step may last, and where it leads then; null: no limit.
+    timeLimit: jsonb("time_limit").$type<TimeLimit>(),
   },
   (t) => [index("steps_experiment_idx").on(t.experimentId, t.position)],
 );
@@ -60,6 +62,8 @@ export const actions = pgTable(
     parallelGroup: text("parallel_group"),
     // Guidance shown to the wizard beside the action during a trial.
     note: text("note").notNull().default(""),
+    // A record_answer's "no answer in N s" and where it leads then; null: no limit.
+    timeLimit: jsonb("time_limit").$type<TimeLimit>(),
   },
   (t) => [index("actions_step_idx").on(t.stepId, t.position)],
 );

@@ -1,0 +1,180 @@
+import { describe, expect, it } from "vitest";
+import { decide, decideReports, fold, simulate, type Command, type EngineEvent, type TrialProtocol } from "./index";
+
+// A question with "no answer in 10 s → Prompt", in a step that may last 60 s (→ the next step).
+const protocol: TrialProtocol = {
+  steps: [
+    {
+      id: "ask",
+      name: "Question",
+      timeLimit: { seconds: 60, after: { to: "next" } },
+      actions: [
+        { id: "say", type: "say", parameters: { text: "What color?" } },
+        {
+          id: "answer",
+          type: "record_answer",
+          parameters: { options: [{ id: "red", label: "red" }] },
+          timeLimit: { seconds: 10, after: { to: "step", stepId: "prompt" } },
+        },
+      ],
+    },
+    { id: "bye", name: "Goodbye", after: { to: "end" }, actions: [] },
+    { id: "prompt", name: "Prompt", timeLimit: { seconds: 5, after: { to: "end" } }, actions: [] },
+  ],
+};
+
+const STEP = "step:ask:1";
+const ANSWER = "answer:answer:1";
+const asked: Command[] = [
+  { kind: "start" },
+  { kind: "next" },
+  { kind: "dispatched", actionId: "say" },
+  { kind: "completed", actionId: "say" },
+];
+
+const brief = (events: EngineEvent[] | string) =>
+  typeof events === "string"
+    ? events
+    : events.map((e) =>
+        e.type.startsWith("timer.")
+          ? [e.type, (e as { timerId: string }).timerId]
+          : [e.type, "stepId" in e ? e.stepId : "actionId" in e ? e.actionId : null, e.deviation ?? null],
+      );
+
+describe("time limits", () => {
+  it.each<[string, Command[], unknown]>([
+    [
+      "a step's clock starts as it is entered",
+      [{ kind: "start" }],
+      [
+        ["trial.started", null, null],
+        ["step.entered", "ask", null],
+        ["timer.started", STEP],
+      ],
+    ],
+    [
+      "a question's clock waits while the line before it runs",
+      [...asked.slice(0, 3)],
+      [["action.dispatched", "say", null]],
+    ],
+    [
+      "and starts once the actions before it are done",
+      [...asked.slice(0, 3), asked[3]!],
+      [
+        ["action.completed", "say", null],
+        ["timer.started", ANSWER],
+      ],
+    ],
+    [
+      "no answer in time: the question's edge, both clocks of the step stopped, the next step's started",
+      [...asked, { kind: "timer_fired", timerId: ANSWER }],
+      [
+        ["timer.fired", ANSWER],
+        ["step.entered", "prompt", null],
+        ["timer.cancelled", STEP],
+        ["timer.started", "step:prompt:2"],
+      ],
+    ],
+    [
+      "the step's time running out takes its own way on (the next step)",
+      [...asked, { kind: "timer_fired", timerId: STEP }],
+      [
+        ["timer.fired", STEP],
+        ["step.entered", "bye", null],
+        ["timer.cancelled", ANSWER],
+      ],
+    ],
+    [
+      "a time limit leading to the end ends the trial",
+      [...asked, { kind: "timer_fired", timerId: ANSWER }, { kind: "timer_fired", timerId: "step:prompt:2" }],
+      [
+        ["timer.fired", "step:prompt:2"],
+        ["trial.completed", null, null],
+      ],
+    ],
+    [
+      "the wizard answering first cancels the question's clock",
+      [...asked, { kind: "answer", actionId: "answer", optionId: "red" }],
+      [
+        ["answer.recorded", "ask", null],
+        ["timer.cancelled", ANSWER],
+      ],
+    ],
+    [
+      "which then never fires",
+      [...asked, { kind: "answer", actionId: "answer", optionId: "red" }, { kind: "timer_fired", timerId: ANSWER }],
+      "That timer is no longer running: the wizard acted first, or it fired.",
+    ],
+    [
+      "the wizard leaving the step first cancels its clocks",
+      [...asked, { kind: "jump", stepId: "bye" }],
+      [
+        ["step.entered", "bye", "manual_jump"],
+        ["timer.cancelled", STEP],
+        ["timer.cancelled", ANSWER],
+      ],
+    ],
+    [
+      "a timer fires exactly once",
+      [...asked, { kind: "timer_fired", timerId: STEP }, { kind: "timer_fired", timerId: STEP }],
+      "That timer is no longer running: the wizard acted first, or it fired.",
+    ],
+    [
+      "a timer does not fire while the trial is paused (it fires once resumed)",
+      [...asked, { kind: "pause" }, { kind: "timer_fired", timerId: STEP }],
+      "The trial is paused: resume it first.",
+    ],
+    [
+      "ending the trial cancels every clock",
+      [...asked, { kind: "abort", reason: "fire alarm" }],
+      [
+        ["trial.aborted", null, null],
+        ["timer.cancelled", STEP],
+        ["timer.cancelled", ANSWER],
+      ],
+    ],
+    [
+      "a step entered again starts a clock of its own",
+      [...asked, { kind: "jump", stepId: "bye" }, { kind: "jump", stepId: "ask" }],
+      [
+        ["step.entered", "ask", "manual_jump"],
+        ["timer.started", "step:ask:3"],
+      ],
+    ],
+  ])("%s", (_, commands, expected) => {
+    expect(brief(simulate(protocol, commands).last)).toEqual(expected);
+  });
+
+  it("logs a timer that fires as the protocol, never as a deviation", () => {
+    const { log } = simulate(protocol, [...asked, { kind: "timer_fired", timerId: ANSWER }]);
+    expect(log.filter((e) => e.deviation)).toEqual([]);
+    expect(log.find((e) => e.type === "step.entered" && e.stepId === "prompt")).toMatchObject({ via: "timeout" });
+  });
+
+  it("keeps each running timer with its start, and none once fired or cancelled", () => {
+    const { log } = simulate(protocol, asked, (i) => i * 100);
+    expect(fold(protocol, log).timers).toEqual({
+      [STEP]: { stepId: "ask", seconds: 60, startedMs: 200 },
+      [ANSWER]: { stepId: "ask", actionId: "answer", seconds: 10, startedMs: 600 },
+    });
+    const fired = simulate(protocol, [...asked, { kind: "timer_fired", timerId: ANSWER }]).log;
+    expect(Object.keys(fold(protocol, fired).timers)).toEqual(["step:prompt:2"]);
+  });
+
+  it("starts a question's clock from robot reports that came together, once", () => {
+    const { log } = simulate(protocol, asked.slice(0, 2));
+    const state = fold(protocol, log);
+    const events = decideReports(protocol, state, [
+      { kind: "dispatched", actionId: "say" },
+      { kind: "completed", actionId: "say" },
+    ]);
+    expect(brief(events)).toEqual([
+      ["action.dispatched", "say", null],
+      ["action.completed", "say", null],
+      ["timer.started", ANSWER],
+    ]);
+    // The state decided on is left as it was: the live host applies the events once they are logged.
+    expect(state.timers).toEqual({ [STEP]: expect.anything() });
+    expect(decide(protocol, state, { kind: "timer_fired", timerId: ANSWER }).ok).toBe(false);
+  });
+});

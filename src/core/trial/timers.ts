@@ -1,0 +1,84 @@
+// Time limits as the engine keeps them. Which timers run is a reading of the
+// state (the current step's limit; a question's, once the actions before it
+// are done), so every decision ends by starting the timers its events made
+// due and cancelling those they ended: the wizard acting first cancels a
+// timer in the same append, and a cancelled or fired timer never fires.
+import { type Exit, exitBy } from "../protocol/flow";
+import { applyInPlace } from "./fold";
+import { findAction, findStep } from "./protocol";
+import type { Decision, EngineEvent, RunningTimer, TrialProtocol, TrialState } from "./types";
+
+export const FINISHED = new Set(["done", "failed", "not_sent", "unknown", "timed_out", "skipped"]);
+
+type DueTimer = Omit<RunningTimer, "startedMs">;
+
+/** The timers `state` should have running, by id; an id names the step's visit, so a step entered again starts anew. */
+export function timersDue(protocol: TrialProtocol, state: TrialState): Map<string, DueTimer> {
+  const due = new Map<string, DueTimer>();
+  if (state.status !== "in_progress" && state.status !== "paused") return due;
+  const current = findStep(protocol, state.currentStepId);
+  if (!current) return due;
+  const { step } = current;
+  const visit = state.path.length;
+  if (step.timeLimit) due.set(`step:${step.id}:${visit}`, { stepId: step.id, seconds: step.timeLimit.seconds });
+  const status = (id: string) => state.actions[id]?.status;
+  step.actions.forEach((action, i) => {
+    if (action.type !== "record_answer" || !action.timeLimit || status(action.id) !== "waiting") return;
+    if (!step.actions.slice(0, i).every((before) => FINISHED.has(status(before.id) ?? "waiting"))) return;
+    due.set(`answer:${action.id}:${visit}`, {
+      stepId: step.id,
+      actionId: action.id,
+      seconds: action.timeLimit.seconds,
+    });
+  });
+  return due;
+}
+
+/** When a running timer is due, on the clock `t0` (the trial's start) is read on; null in a log without times. */
+export function dueAt(timer: RunningTimer, t0: number): number | null {
+  return timer.startedMs === null ? null : t0 + timer.startedMs + timer.seconds * 1000;
+}
+
+/** `events` (decided on `state`) followed by the timers they cancel and start. */
+export function withTimers(protocol: TrialProtocol, state: TrialState, events: EngineEvent[]): EngineEvent[] {
+  // Read through to `state`'s actions rather than copy them all: the live host's cost per command must not grow with the trial.
+  const after: TrialState = {
+    ...state,
+    actions: Object.create(state.actions),
+    answers: { ...state.answers },
+    path: [...state.path],
+    timers: { ...state.timers },
+  };
+  applyInPlace(
+    after,
+    events.map((event) => ({ ...event, seq: state.lastSeq, relMs: null })),
+  );
+  const due = timersDue(protocol, after);
+  const cancelled: EngineEvent[] = Object.keys(after.timers)
+    .filter((timerId) => !due.has(timerId))
+    .map((timerId) => ({ type: "timer.cancelled", timerId }));
+  const started: EngineEvent[] = [...due]
+    .filter(([timerId]) => !(timerId in after.timers))
+    .map(([timerId, timer]) => ({ type: "timer.started", timerId, ...timer }));
+  return [...events, ...cancelled, ...started];
+}
+
+/** Where a timer leads when its time runs out: its limit's "after", read from its step. */
+export function timerExit(protocol: TrialProtocol, timer: RunningTimer): Exit {
+  const at = findStep(protocol, timer.stepId);
+  const limit = timer.actionId ? findAction(protocol, timer.actionId)?.action.timeLimit : at?.step.timeLimit;
+  return at && limit ? exitBy(protocol.steps, at.index, limit.after) : { to: "end" };
+}
+
+/** A timer's time ran out: the trial takes its limit's way on, unless the wizard acted first. */
+export function timerFired(protocol: TrialProtocol, state: TrialState, timerId: string): Decision {
+  const timer = state.timers[timerId];
+  if (!timer) return { ok: false, reason: "That timer is no longer running: the wizard acted first, or it fired." };
+  const exit = timerExit(protocol, timer);
+  const fired: EngineEvent = { type: "timer.fired", timerId };
+  if (exit.to !== "step") return { ok: true, events: [fired, { type: "trial.completed" }] };
+  return {
+    ok: true,
+    events: [fired, { type: "step.entered", stepId: protocol.steps[exit.index]!.id, via: "timeout" }],
+  };
+}

@@ -1,0 +1,49 @@
+"use client";
+// The time limits running now, counting down on the wizard's page: how long
+// is left and where the trial goes then. The wizard can always act first;
+// the runtime fires them, this only shows them.
+import { useEffect, useState } from "react";
+import { dueAt, timerExit, type TrialProtocol, type TrialState } from "@/core/trial";
+
+export function TimeLimits({
+  protocol,
+  state,
+  startedAt,
+}: {
+  protocol: TrialProtocol;
+  state: TrialState;
+  startedAt: string | null;
+}) {
+  const [now, setNow] = useState(() => Date.now());
+  const running = Object.entries(state.timers);
+  const ticking = running.length > 0 && state.status === "in_progress";
+  useEffect(() => {
+    if (!ticking) return;
+    const timer = setInterval(() => setNow(Date.now()), 250);
+    return () => clearInterval(timer);
+  }, [ticking]);
+  if (!startedAt || running.length === 0) return null;
+  const t0 = Date.parse(startedAt);
+  return (
+    <ul aria-label="Time limits" className="space-y-1 text-sm">
+      {running.map(([timerId, timer]) => {
+        const due = dueAt(timer, t0);
+        const left = due === null ? null : Math.max(0, Math.ceil((due - now) / 1000));
+        return (
+          <li key={timerId} className="rounded border border-amber-300 bg-amber-50 px-3 py-2 text-amber-900">
+            {timer.actionId ? "No answer in" : "Step time left:"}{" "}
+            <span role="timer" className="font-mono tabular-nums" data-testid="time-left">
+              {left === null ? `${timer.seconds}` : left} s
+            </span>{" "}
+            → {whereTo(protocol, timer)}
+          </li>
+        );
+      })}
+    </ul>
+  );
+}
+
+function whereTo(protocol: TrialProtocol, timer: TrialState["timers"][string]): string {
+  const exit = timerExit(protocol, timer);
+  return exit.to === "step" ? `“${protocol.steps[exit.index]!.name}”` : "the end of the trial";
+}

@@ -1,0 +1,82 @@
+// A question's time limit in a real Chromium, on the simulated robot: the
+// wizard starts the trial and has the robot ask, then records nothing; the
+// page counts the limit down and, when it runs out, the trial moves on to
+// the limit's step by itself, logged as the protocol (no deviation).
+import { randomUUID } from "node:crypto";
+import type { Browser } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { expectAccessible } from "../support/accessibility";
+import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { launchBrowser, newContext, signInAs } from "../support/browser";
+import { apiClient, signIn } from "../support/http";
+
+const say = (text: string) => ({ type: "say", name: "", parameters: { text }, parallelGroup: null });
+
+describe.sequential("a time limit in the wizard's page", () => {
+  let app: RunningApp;
+  let browser: Browser;
+  let trialId = "";
+  let wizardApi: ReturnType<typeof apiClient>;
+
+  beforeAll(async () => {
+    app = await startApp();
+    browser = await launchBrowser();
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    wizardApi = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await researcher.studies.mine.query();
+    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
+    const draft = await researcher.experiments.get.query({ experimentId: experiment!.id });
+    const prompt = randomUUID();
+    await researcher.experiments.saveDesign.mutate({
+      experimentId: draft.id,
+      baseRevision: draft.draftRevision,
+      steps: [
+        {
+          name: "Ask",
+          description: "",
+          actions: [
+            { type: "say", name: "", parameters: { text: "What color was I?" }, parallelGroup: null },
+            {
+              type: "record_answer",
+              name: "",
+              parameters: {
+                options: [
+                  { id: "red", label: "red" },
+                  { id: "other", label: "other" },
+                ],
+              },
+              parallelGroup: null,
+              timeLimit: { seconds: 3, after: { to: "step", stepId: prompt } },
+            },
+          ],
+        },
+        { name: "Bye", description: "", after: { to: "end" }, actions: [say("Goodbye.")] },
+        { id: prompt, name: "Prompt", description: "", after: { to: "end" }, actions: [say("Take your time.")] },
+      ],
+    });
+    const version = await researcher.versions.publish.mutate({ experimentId: experiment!.id });
+    const [participant] = await researcher.participants.list.query({ studyId: study!.id });
+    trialId = (await wizardApi.trials.create.mutate({ versionId: version.id, participantId: participant!.id })).id;
+  });
+  afterAll(async () => {
+    await browser?.close();
+    await app?.stop();
+  });
+
+  it("counts down, and moves the trial on to the limit's step when no answer comes", async () => {
+    const wizard = await (await newContext(browser, app.url)).newPage();
+    await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
+    await wizard.goto(`/trials/${trialId}`);
+    await wizard.getByText("robot connected").waitFor();
+    await wizard.getByRole("button", { name: /Start trial/ }).click();
+    await expect.poll(() => wizard.getByTestId("current-step").textContent()).toBe("Ask");
+    await wizard.keyboard.press("n");
+    // Once the robot has asked, the question's clock runs on the page.
+    await wizard.getByText("No answer in").waitFor();
+    await expectAccessible(wizard, "the wizard's page with a time limit counting down");
+    await expect.poll(() => wizard.getByTestId("current-step").textContent(), { timeout: 15_000 }).toBe("Prompt");
+    const trial = await wizardApi.trials.get.query({ trialId });
+    expect(trial.status).toBe("in_progress");
+    await wizard.context().close();
+  });
+});
