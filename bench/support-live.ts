@@ -151,25 +151,32 @@ export async function startLiveBench() {
     };
   }
 
-  /** One trial: a wizard and `observers` observers; `commands` unscripted lines, one after another, at most one per `paceMs`. */
+  /**
+   * One trial: a wizard and `observers` observers; `commands` unscripted lines, one after another, at most one
+   * per `paceMs`. `toObservers` gets each line's time until the last observer has it; `toEach`, when given,
+   * each observer's own times, one list per observer.
+   */
   async function runTrial(
     commands: number,
     toRobot: number[],
     toObservers: number[],
     paceMs = 0,
     observing = OBSERVERS,
+    toEach?: number[][],
   ) {
     const trial = await newTrial();
-    const seen = new Map<string, { left: number; done: (at: number) => void }>();
-    const observe = (events: Array<{ type: string; parameters?: { text?: string } }>) => {
+    const seen = new Map<string, { sent: number; left: number; done: (at: number) => void }>();
+    const observe = (k: number) => (events: Array<{ type: string; parameters?: { text?: string } }>) => {
       const at = performance.now();
       for (const e of events) {
         const waiting = e.type === "action.requested" && e.parameters?.text ? seen.get(e.parameters.text) : undefined;
-        if (waiting && --waiting.left === 0) waiting.done(at);
+        if (!waiting) continue;
+        toEach?.[k]?.push(at - waiting.sent);
+        if (--waiting.left === 0) waiting.done(at);
       }
     };
     const observers = await Promise.all(
-      Array.from({ length: observing }, () => socket(trial!.id, observerUser.id, observe)),
+      Array.from({ length: observing }, (_, k) => socket(trial!.id, observerUser.id, observe(k))),
     );
     const wizard = await socket(trial!.id, wizardUser.id, () => {});
     const notStarted = await wizard.command({ kind: "start" });
@@ -183,7 +190,11 @@ export async function startLiveBench() {
       const everyone = new Promise<void>((ok) =>
         observing === 0
           ? ok()
-          : seen.set(text, { left: observing, done: (at) => (toObservers.push(at - sent), seen.delete(text), ok()) }),
+          : seen.set(text, {
+              sent,
+              left: observing,
+              done: (at) => (toObservers.push(at - sent), seen.delete(text), ok()),
+            }),
       );
       // A line refused (counted, its reason said) never reaches the robot: the next is sent.
       if (!(await wizard.command({ kind: "unscripted", actionType: "say", parameters: { text } })))
