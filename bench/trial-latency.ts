@@ -4,6 +4,7 @@
 // one trial followed by 50 observers, each observer's latency its own.
 // Everything real: PostgreSQL, the runtime process as the launcher runs it,
 // the NAO6 plugin, roslib and the simulator (see support-live.ts).
+// Takes about 40 s.
 import { percentile, report } from "./support";
 import { startLiveBench } from "./support-live";
 
