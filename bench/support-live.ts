@@ -41,7 +41,10 @@ export async function startLiveBench() {
   };
 
   const runtimePort = await freePort();
-  const runtime = spawn(process.execPath, ["run", join(import.meta.dirname, "..", "src", "runtime", "main.ts")], {
+  // BENCH_PROFILE=<folder>: the runtime writes a CPU profile there as it stops (Bun's, in Markdown), to find a tail's cause.
+  const profile = process.env.BENCH_PROFILE ? ["--cpu-prof-md", `--cpu-prof-dir=${process.env.BENCH_PROFILE}`] : [];
+  const main = join(import.meta.dirname, "..", "src", "runtime", "main.ts");
+  const runtime = spawn(process.execPath, [...profile, "run", main], {
     env: {
       ...process.env,
       DATABASE_URL: database.url,
