@@ -165,13 +165,6 @@ export function startRuntimeServer({
   /** Admitted sockets by trial: presence, annotations and access changes reach them. */
   const viewers = new Map<string, Set<Socket>>();
   const send = (ws: Socket, message: ServerMessage): void => void ws.send(JSON.stringify(message));
-  /** One message to many sockets, serialised once: a trial's fifty observers cost one JSON.stringify, not fifty. */
-  const sendAll = (sockets: Iterable<Socket>, message: ServerMessage): void => {
-    let text: string | undefined;
-    for (const s of sockets) s.send((text ??= JSON.stringify(message)));
-  };
-  /** Those in a trial who may read its log now. */
-  const readers = (trialId: string) => [...(viewers.get(trialId) ?? [])].filter((s) => mayReadTrialLog(s.data.access!));
   const presence = (trialId: string) => {
     const sockets = [...(viewers.get(trialId) ?? [])];
     const list: Viewer[] = sockets.map((s) => ({
@@ -180,7 +173,7 @@ export function startRuntimeServer({
       role: s.data.access!.studyRole ?? "",
       peerId: s.data.peerId,
     }));
-    sendAll(sockets, { type: "presence", viewers: list });
+    for (const s of sockets) send(s, { type: "presence", viewers: list });
     return list;
   };
 
@@ -331,12 +324,13 @@ export function startRuntimeServer({
 
   /** Tells everyone in a trial at once when its robot drops or comes back. */
   const announceRobot = (trialId: string, connected: boolean, detail?: string) => {
-    sendAll(viewers.get(trialId) ?? [], { type: "robot", connected, ...(detail ? { detail } : {}) });
+    for (const s of viewers.get(trialId) ?? []) send(s, { type: "robot", connected, ...(detail ? { detail } : {}) });
   };
 
   /** Tells those in a trial who may read its log what its robot is doing now (what it says is the log's business). */
   const announceRobotState = (trialId: string, state: LiveRobotState) => {
-    sendAll(readers(trialId), { type: "robotState", ...state });
+    for (const s of viewers.get(trialId) ?? [])
+      if (mayReadTrialLog(s.data.access!)) send(s, { type: "robotState", ...state });
   };
 
   async function act(ws: Socket, message: Extract<ClientMessage, { type: "command" | "annotate" }>): Promise<void> {
@@ -358,7 +352,8 @@ export function startRuntimeServer({
         message.label,
         message.note,
       );
-      sendAll(readers(claims.trialId), { type: "annotation", annotation });
+      for (const s of viewers.get(claims.trialId) ?? [])
+        if (mayReadTrialLog(s.data.access!)) send(s, { type: "annotation", annotation });
       return send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
     }
     // When the wizard asked, on this process's clock, from the page's time and the connection's offset.
