@@ -4,6 +4,7 @@
 // 10 s and 64 MB, a schema nested 10,000 levels 3.2 s and ~1 GB, a payload
 // nested 10,000 levels a failed sync). Time from the start of the sync to its
 // report; memory as the most the process's resident set grew meanwhile.
+// Takes a few seconds.
 import { createServer } from "node:http";
 import type { AddressInfo } from "node:net";
 import { readFileSync } from "node:fs";

@@ -4,6 +4,7 @@
 // belong to, over HTTP through the real app) is timed alone and meanwhile.
 // Target (issue 24): the other person's p99 under 100 ms while the imports run
 // (before, each import answered 500 and the others waited ~1.9 s).
+// Takes about a minute (and the app's build first, once).
 import { rm } from "node:fs/promises";
 import { loadavg } from "node:os";
 import { DEMO_PASSWORD, startApp } from "../tests/support/app";

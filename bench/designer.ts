@@ -2,6 +2,7 @@
 // designer page in Chromium: the time until it is shown, and the time from a
 // move (Alt+↓ on the selected action) until the timeline has changed and
 // the browser painted. Target: a move under 50 ms.
+// Takes about a minute (and the app's build first, once).
 import { launchBrowser, newContext, signInAs } from "../tests/support/browser";
 import { DEMO_PASSWORD, startApp } from "../tests/support/app";
 import { apiClient, signIn } from "../tests/support/http";

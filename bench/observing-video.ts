@@ -10,6 +10,7 @@
 // eleven browsers would share two cores with the server, and the figure would
 // say how busy the CPU is, not what video costs the server. So the browsers
 // run at the lowest CPU priority (nice 19): they take what the server leaves.
+// Takes a few minutes (and the app's build first, once).
 import type { Page } from "playwright-core";
 import { DEMO_PASSWORD, startApp } from "../tests/support/app";
 import { launchBrowser, signInAs } from "../tests/support/browser";

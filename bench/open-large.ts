@@ -4,6 +4,7 @@
 // (issue 15): the trial open, its whole log received, under 1 s; the other
 // trial answering meanwhile, its p99 within 25 ms as the many-trials target.
 // Everything real: PostgreSQL, the runtime process, the simulated robot.
+// Takes about 35 s.
 import { trialEvents, trials } from "../src/store/schema";
 import { eq } from "drizzle-orm";
 import { insertLog, percentile, report, unscriptedLog } from "./support";

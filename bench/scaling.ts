@@ -12,6 +12,7 @@
 // trials of 1.8k to 180k robot state samples only; `… samples` the latter only;
 // `… studies` the studies of 10 to 1,000 trials only, and `… results` their
 // Trials and Results tabs only (a minute).
+// Takes several minutes; a part alone, a minute or two.
 import { eventsSince } from "../src/store/event-store";
 import { createDatabase } from "../src/store/client";
 import { fold } from "../src/core/trial/fold";

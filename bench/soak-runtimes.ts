@@ -7,6 +7,7 @@
 // the trial's log, no line said twice, none said later than its freshness
 // limit after the wizard asked, one sender per robot at a time, every stop at
 // the robot within 100 ms.
+// Takes SOAK_MINUTES and about a minute more.
 import { type ChildProcess, spawn } from "node:child_process";
 import { join } from "node:path";
 import { eq } from "drizzle-orm";

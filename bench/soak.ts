@@ -8,6 +8,7 @@
 // window's floor (all 50 trials open, their sockets, robot links and buffers
 // held) to the last whole window's. From the idle runtime before any trial opened it would
 // count holding 50 trials as growth: that figure is printed too.
+// Takes SOAK_MINUTES and about a minute more.
 import { report } from "./support";
 import { startLiveBench } from "./support-live";
 

@@ -41,7 +41,10 @@ export async function startLiveBench() {
   };
 
   const runtimePort = await freePort();
-  const runtime = spawn(process.execPath, ["run", join(import.meta.dirname, "..", "src", "runtime", "main.ts")], {
+  // BENCH_PROFILE=<folder>: the runtime writes a CPU profile there as it stops (Bun's, in Markdown), to find a tail's cause.
+  const profile = process.env.BENCH_PROFILE ? ["--cpu-prof-md", `--cpu-prof-dir=${process.env.BENCH_PROFILE}`] : [];
+  const main = join(import.meta.dirname, "..", "src", "runtime", "main.ts");
+  const runtime = spawn(process.execPath, [...profile, "run", main], {
     env: {
       ...process.env,
       DATABASE_URL: database.url,
@@ -151,25 +154,32 @@ export async function startLiveBench() {
     };
   }
 
-  /** One trial: a wizard and `observers` observers; `commands` unscripted lines, one after another, at most one per `paceMs`. */
+  /**
+   * One trial: a wizard and `observers` observers; `commands` unscripted lines, one after another, at most one
+   * per `paceMs`. `toObservers` gets each line's time until the last observer has it; `toEach`, when given,
+   * each observer's own times, one list per observer.
+   */
   async function runTrial(
     commands: number,
     toRobot: number[],
     toObservers: number[],
     paceMs = 0,
     observing = OBSERVERS,
+    toEach?: number[][],
   ) {
     const trial = await newTrial();
-    const seen = new Map<string, { left: number; done: (at: number) => void }>();
-    const observe = (events: Array<{ type: string; parameters?: { text?: string } }>) => {
+    const seen = new Map<string, { sent: number; left: number; done: (at: number) => void }>();
+    const observe = (k: number) => (events: Array<{ type: string; parameters?: { text?: string } }>) => {
       const at = performance.now();
       for (const e of events) {
         const waiting = e.type === "action.requested" && e.parameters?.text ? seen.get(e.parameters.text) : undefined;
-        if (waiting && --waiting.left === 0) waiting.done(at);
+        if (!waiting) continue;
+        toEach?.[k]?.push(at - waiting.sent);
+        if (--waiting.left === 0) waiting.done(at);
       }
     };
     const observers = await Promise.all(
-      Array.from({ length: observing }, () => socket(trial!.id, observerUser.id, observe)),
+      Array.from({ length: observing }, (_, k) => socket(trial!.id, observerUser.id, observe(k))),
     );
     const wizard = await socket(trial!.id, wizardUser.id, () => {});
     const notStarted = await wizard.command({ kind: "start" });
@@ -183,7 +193,11 @@ export async function startLiveBench() {
       const everyone = new Promise<void>((ok) =>
         observing === 0
           ? ok()
-          : seen.set(text, { left: observing, done: (at) => (toObservers.push(at - sent), seen.delete(text), ok()) }),
+          : seen.set(text, {
+              sent,
+              left: observing,
+              done: (at) => (toObservers.push(at - sent), seen.delete(text), ok()),
+            }),
       );
       // A line refused (counted, its reason said) never reaches the robot: the next is sent.
       if (!(await wizard.command({ kind: "unscripted", actionType: "say", parameters: { text } })))

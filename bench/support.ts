@@ -1,8 +1,11 @@
 // Shared pieces of the benchmarks: a throwaway embedded PostgreSQL, and
-// percentiles printed the same way everywhere.
+// percentiles printed the same way everywhere, each beside the floor: what a
+// bare commit costs on the same database in the same run, the limit any path
+// that commits before it answers can come near but not beat.
 import { mkdtemp, rm } from "node:fs/promises";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
+import postgres from "postgres";
 import { startEmbeddedPostgres } from "../src/store/embedded";
 import type { Database } from "../src/store/client";
 import { migrateDatabase } from "../src/store/migrate";
@@ -11,6 +14,8 @@ export async function scratchDatabase() {
   const dir = await mkdtemp(join(tmpdir(), "hri-bench-"));
   const server = await startEmbeddedPostgres({ dataDir: dir });
   await migrateDatabase(server.url);
+  floor = await bareCommit(server.url);
+  console.log(`${"floor: a bare insert + commit on this database".padEnd(58)} ${floorText(floor)}`);
   return {
     url: server.url,
     async stop() {
@@ -20,11 +25,39 @@ export async function scratchDatabase() {
   };
 }
 
+const FLOOR_COMMITS = 200;
+/** The bench's own database's bare commit, once measured: every figure after it is printed beside it. */
+let floor: number[] | undefined;
+
+/**
+ * A one-row insert and its commit, FLOOR_COMMITS times on one connection. The
+ * table is a real one, dropped after: a temporary table's commit writes no WAL
+ * and so skips the flush that is the floor.
+ */
+async function bareCommit(url: string): Promise<number[]> {
+  const sql = postgres(url, { max: 1, onnotice: () => {} });
+  await sql`create table bench_floor (n integer)`;
+  const samples: number[] = [];
+  for (let i = -20; i < FLOOR_COMMITS; i++) {
+    const started = performance.now();
+    await sql`insert into bench_floor values (${i})`;
+    // The first few warm the connection and the plan; they are not counted.
+    if (i >= 0) samples.push(performance.now() - started);
+  }
+  await sql`drop table bench_floor`;
+  await sql.end();
+  return samples.sort((a, b) => a - b);
+}
+
+function floorText(sorted: number[]) {
+  return `n=${String(sorted.length).padStart(6)}  p50=${percentile(sorted, 50).toFixed(3)} ms  p99=${percentile(sorted, 99).toFixed(3)} ms`;
+}
+
 export function percentile(sorted: number[], p: number): number {
   return sorted[Math.min(sorted.length - 1, Math.floor((p / 100) * sorted.length))]!;
 }
 
-/** One line per measurement: count, median, p99, max (milliseconds), and the target. */
+/** One line per measurement: count, median, p99, max (milliseconds), the target, and the floor when the bench has a database. */
 export function report(name: string, samples: number[], targetP99Ms?: number) {
   const sorted = [...samples].sort((a, b) => a - b);
   const p99 = percentile(sorted, 99);
@@ -33,7 +66,7 @@ export function report(name: string, samples: number[], targetP99Ms?: number) {
       ? ""
       : `  target p99 < ${targetP99Ms} ms: ${p99 < targetP99Ms ? "met" : "NOT met"} (ratio ${(p99 / targetP99Ms).toFixed(2)})`;
   console.log(
-    `${name.padEnd(58)} n=${String(sorted.length).padStart(6)}  p50=${percentile(sorted, 50).toFixed(3)} ms  p99=${p99.toFixed(3)} ms  max=${sorted.at(-1)!.toFixed(3)} ms${verdict}`,
+    `${name.padEnd(58)} n=${String(sorted.length).padStart(6)}  p50=${percentile(sorted, 50).toFixed(3)} ms  p99=${p99.toFixed(3)} ms  max=${sorted.at(-1)!.toFixed(3)} ms${verdict}${floor ? `  floor p50=${percentile(floor, 50).toFixed(3)} p99=${percentile(floor, 99).toFixed(3)} ms` : ""}`,
   );
 }
 

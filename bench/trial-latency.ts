@@ -1,13 +1,20 @@
 // bench/trial-latency: wizard message in → robot message received by the
 // simulated robot, and → every observer updated, for 1 trial and for 50
-// concurrent trials with 10 observers each, and 20 wizards back to back.
+// concurrent trials with 10 observers each, and 20 wizards back to back; and
+// one trial followed by 50 observers, each observer's latency its own.
 // Everything real: PostgreSQL, the runtime process as the launcher runs it,
 // the NAO6 plugin, roslib and the simulator (see support-live.ts).
-import { report } from "./support";
+// Takes about 40 s.
+import { percentile, report } from "./support";
 import { startLiveBench } from "./support-live";
 
 /** With many trials, each wizard sends at most one command per PACE_MS: ten a second, far above a person's pace. */
 const PACE_MS = 100;
+const p99Of = (samples: number[]) =>
+  percentile(
+    [...samples].sort((a, b) => a - b),
+    99,
+  );
 
 const live = await startLiveBench();
 const { runTrial } = live;
@@ -17,6 +24,15 @@ await runTrial(30, [], []); // warm-up
 await runTrial(1000, single.robot, single.observers);
 report("1 trial: wizard message → robot received", single.robot, 5);
 report("1 trial: wizard message → 10 observers updated", single.observers, 5);
+
+// One trial followed by many: each observer's own latency, not only the last's.
+const CROWD = 50;
+const crowd = { robot: [] as number[], observers: [] as number[] };
+const each = Array.from({ length: CROWD }, () => [] as number[]);
+await runTrial(1000, crowd.robot, crowd.observers, 0, CROWD, each);
+const worst = each.reduce((w, samples) => (p99Of(samples) > p99Of(w) ? samples : w));
+report(`1 trial × ${CROWD} observers: → the slowest observer (by p99)`, worst, 5);
+report(`1 trial × ${CROWD} observers: → all ${CROWD} observers updated`, crowd.observers);
 
 const many = { robot: [] as number[], observers: [] as number[] };
 await Promise.all(Array.from({ length: 50 }, () => runTrial(40, many.robot, many.observers, PACE_MS)));

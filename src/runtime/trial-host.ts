@@ -458,17 +458,18 @@ export class TrialHost {
   }
 
   /**
-   * Committed events: into the state, to every client, then to the robot unless `withheld` says why not;
-   * `moment`, when the wizard asked for them (the robot link drops what is too old by then).
+   * Committed events: into the state, to the robot unless `withheld` says why not, then to every client;
+   * `moment`, when the wizard asked for them (the robot link drops what is too old by then). The robot
+   * first: a trial's many observers' sends never hold up what the robot is told.
    */
   private take(stored: StoredEvent[], withheld: string | null, moment: number | null = null) {
     this.opening?.push(...stored);
     applyInPlace(this.state, stored);
     this.t0 ??= startedAt(stored);
     this.limits.follow(this.state.timers, this.t0);
-    for (const listener of this.listeners.keys()) listener(stored);
     if (withheld) this.withhold(stored, withheld);
     else this.carryOut(stored, moment);
+    for (const listener of this.listeners.keys()) listener(stored);
     if (this.state.status === "completed" || this.state.status === "aborted") this.lifecycle.ended();
   }
 
