@@ -17,8 +17,8 @@ export function fencedRobot(link: RobotLink, owns: () => Promise<boolean>): Robo
         (ok) =>
           ok
             ? link.perform(request, report)
-            : report({ kind: "failed", actionId: request.actionId, reason: NOT_OWNER }),
-        () => report({ kind: "failed", actionId: request.actionId, reason: NOT_OWNER }),
+            : report({ kind: "not_sent", actionId: request.actionId, reason: NOT_OWNER }),
+        () => report({ kind: "not_sent", actionId: request.actionId, reason: NOT_OWNER }),
       );
     },
   };
