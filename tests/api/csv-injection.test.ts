@@ -121,6 +121,7 @@ describe("the trial events CSV", () => {
     const archive = await unzipArchive(await f.routeApi("owner").studies.exportArchive({ studyId: study.id }));
     const files = Object.entries(archive).filter(([name]) => name.endsWith(".csv"));
     expect(files.map(([name]) => name).sort()).toEqual([
+      "codebook.csv",
       "codes.csv",
       "questionnaire-answers.csv",
       `trials/${trial.id}-events.csv`,
@@ -128,5 +129,6 @@ describe("the trial events CSV", () => {
     ]);
     expect(inert(strFromU8(archive[`trials/${trial.id}-events.csv`]!))).toEqual([]);
     expect(inert(strFromU8(archive["questionnaire-answers.csv"]!))).toEqual(["-3"]);
+    expect(inert(strFromU8(archive["codebook.csv"]!))).toEqual([]);
   });
 });

@@ -121,7 +121,7 @@ function SaidLines({ said }: { said: Array<{ text: string; at: string }> }) {
   return (
     <section aria-label="Lines said" className="w-full max-w-xl text-sm">
       <h2 className="mb-1 font-semibold">Lines said</h2>
-      <ol className="max-h-48 space-y-1 overflow-y-auto">
+      <ol className="space-y-1">
         {said
           .map((line, i) => (
             <li key={i} className="flex gap-3">
