@@ -22,6 +22,25 @@ type Study = {
   myRole: StudyRole;
 };
 
+/** Each blind a study may set, as the researcher reads it. */
+const BLINDS: Array<{ key: keyof StudySettings["blinding"]; label: string; hint: string }> = [
+  {
+    key: "conditionsFromWizards",
+    label: "Hide each session's condition from wizards",
+    hint: "Wizards run sessions from “My sessions” and never see condition or experiment names.",
+  },
+  {
+    key: "conditionsFromObservers",
+    label: "Hide each session's condition from observers",
+    hint: "Observers code live without condition or experiment names; results and exports, which name conditions, open to them when this is lifted.",
+  },
+  {
+    key: "resultsUntilComplete",
+    label: "Hide results from researchers and observers until the study is completed",
+    hint: "Analysis and exports open when the status is set to completed. Lifting a blind is logged.",
+  },
+];
+
 export function OverviewTab({ study }: { study: Study }) {
   const trpc = useTRPC();
   const queryClient = useQueryClient();
@@ -116,49 +135,20 @@ export function OverviewTab({ study }: { study: Study }) {
           </Field>
           <fieldset className="space-y-2 rounded-md border border-slate-200 p-3">
             <legend className="px-1 text-sm font-medium text-slate-700">Blinding</legend>
-            <label className="flex items-start gap-2 text-sm">
-              <input
-                type="checkbox"
-                className="mt-0.5 h-4 w-4"
-                checked={blinding.conditionsFromWizards}
-                onChange={(e) => setBlinding({ ...blinding, conditionsFromWizards: e.target.checked })}
-              />
-              <span>
-                Hide each session's condition from wizards
-                <span className="block text-xs text-slate-500">
-                  Wizards run sessions from “My sessions” and never see condition or experiment names.
+            {BLINDS.map(({ key, label, hint }) => (
+              <label key={key} className="flex items-start gap-2 text-sm">
+                <input
+                  type="checkbox"
+                  className="mt-0.5 h-4 w-4"
+                  checked={blinding[key]}
+                  onChange={(e) => setBlinding({ ...blinding, [key]: e.target.checked })}
+                />
+                <span>
+                  {label}
+                  <span className="block text-xs text-slate-500">{hint}</span>
                 </span>
-              </span>
-            </label>
-            <label className="flex items-start gap-2 text-sm">
-              <input
-                type="checkbox"
-                className="mt-0.5 h-4 w-4"
-                checked={blinding.conditionsFromObservers}
-                onChange={(e) => setBlinding({ ...blinding, conditionsFromObservers: e.target.checked })}
-              />
-              <span>
-                Hide each session's condition from observers
-                <span className="block text-xs text-slate-500">
-                  Observers code live without condition or experiment names; results and exports, which name conditions,
-                  open to them when this is lifted.
-                </span>
-              </span>
-            </label>
-            <label className="flex items-start gap-2 text-sm">
-              <input
-                type="checkbox"
-                className="mt-0.5 h-4 w-4"
-                checked={blinding.resultsUntilComplete}
-                onChange={(e) => setBlinding({ ...blinding, resultsUntilComplete: e.target.checked })}
-              />
-              <span>
-                Hide results from researchers and observers until the study is completed
-                <span className="block text-xs text-slate-500">
-                  Analysis and exports open when the status is set to completed. Lifting a blind is logged.
-                </span>
-              </span>
-            </label>
+              </label>
+            ))}
           </fieldset>
           <DemographicsEditor fields={demographics} onChange={setDemographics} />
           {update.error && !fieldError(update.error, "title") && <Problem error={update.error} />}
