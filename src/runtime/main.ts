@@ -12,6 +12,7 @@ import type { LiveRobotState } from "@/core/robots/live-state";
 import { pluginRobot, unavailableRobot } from "./robot-link";
 import { purgeSpentTokens, watchAccess } from "./access";
 import { eventRelay } from "./relay";
+import { robotStatusRelay } from "./robot-status";
 import { commandForwarding } from "./forwarding";
 import { forwardedCommands } from "./carry-out";
 import { stopLinks } from "./stop-links";
@@ -86,7 +87,16 @@ const runtime = startRuntimeServer({
   iceServers: config.HRI_ICE_SERVERS,
   trustedProxies: config.HRI_TRUSTED_PROXIES,
 });
-announceRobot = runtime.announceRobot;
+// Robot status to this process's pages, and through PostgreSQL to those on every other runtime.
+const robotStatus = await robotStatusRelay(
+  sql,
+  (trialId, { connected, detail }) =>
+    void hosts.owned(trialId).then((host) => host || runtime.announceRobot(trialId, connected, detail)),
+);
+announceRobot = (trialId, connected, detail) => {
+  runtime.announceRobot(trialId, connected, detail);
+  robotStatus.announce(trialId, { connected, ...(detail ? { detail } : {}) });
+};
 announceRobotState = runtime.announceRobotState;
 // Membership, role, blinding and assigned-wizard changes reach open sockets at once.
 const access = await watchAccess(sql, runtime.accessChanged, runtime.recheckAll);
@@ -112,7 +122,7 @@ const stop = async () => {
   await hosts.closeAll();
   // Ending the pool ends the listening connection too; unlistening first is a courtesy that a database
   // already gone (stopped, or crashed) answers with an error worth nothing at this point.
-  await Promise.allSettled([relay.close(), forwarding.close(), access.close()]);
+  await Promise.allSettled([relay.close(), forwarding.close(), access.close(), robotStatus.close()]);
   await close();
   process.exit(0);
 };

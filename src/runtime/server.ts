@@ -30,6 +30,7 @@ import {
 import { beforeHelloRefusal, LARGEST_FRAME_BYTES, sizeRefusal } from "@/core/socket/limits";
 import { loadTrialAccess, spendToken } from "./access";
 import { carryOut } from "./carry-out";
+import { recordedRobot } from "./robot-status";
 import type { CommandForwarding } from "./forwarding";
 import type { StopLinks } from "./stop-links";
 import type { CommandResult } from "./trial-host";
@@ -268,6 +269,11 @@ export function startRuntimeServer({
     ws.send(welcome.replace('"events":[]', () => `"events":${events}`));
     for (const events of held) deliver(events);
     held = null;
+    if (!host) {
+      // Run by another process: its robot as the owner last recorded it; changes come as the owner says them.
+      const robot = await recordedRobot(db, trialId);
+      if (robot && !ws.data.closed) send(ws, { type: "robot", connected: robot.connected, name: robot.name });
+    }
     if (host) {
       send(ws, { type: "robot", connected: host.robotStatus(), ...(host.robotName ? { name: host.robotName } : {}) });
       if (mayReadTrialLog(ws.data.access!)) send(ws, { type: "robotState", ...host.robotState });

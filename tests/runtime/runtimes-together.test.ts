@@ -176,4 +176,24 @@ describe.sequential("several runtimes, many robots", () => {
       ).size;
     await expect.poll(senders).toBe(2);
   });
+
+  it("tells a page on the runtime that does not run the trial of its robot: its name, and when it drops and comes back", {
+    timeout: 30_000,
+  }, async () => {
+    const trialId = await newTrial("Status");
+    // Opened first through one runtime, which runs it; then through the other.
+    const owner = await open(runtimes[1]!.url, trialId);
+    await owner.next((m) => m.type === "robot" && m.connected === true, 10_000);
+    const elsewhere = await open(runtimes[0]!.url, trialId);
+    const first = await elsewhere.next((m) => m.type === "robot" && "name" in m);
+    expect(first).toMatchObject({ connected: true, name: expect.stringMatching(/^Sim \d\d$/) });
+    const sim = await simOf(trialId);
+    sim.faults.refuseConnections(true);
+    sim.faults.dropConnections();
+    await elsewhere.next((m) => m.type === "robot" && m.connected === false, 15_000);
+    sim.faults.refuseConnections(false);
+    await expect
+      .poll(() => elsewhere.messages.filter((m) => m.type === "robot").at(-1), { timeout: 20_000 })
+      .toMatchObject({ connected: true });
+  });
 });
