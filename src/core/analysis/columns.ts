@@ -6,6 +6,7 @@ import { STUDY_ROLES } from "@/core/access/policy";
 import type { CODE_COLUMNS } from "@/core/coding/export";
 import type { ANSWER_COLUMNS } from "@/core/questionnaires/export";
 import { STUDY_STATUSES } from "@/core/studies/status";
+import { DEVIATION_KINDS, TRIAL_STATUSES } from "@/core/trial/types";
 import type { ANNOTATION_COLUMNS, STUDY_COLUMNS, TRIAL_COLUMNS } from "./api";
 import type { EVENT_COLUMNS, SAMPLE_COLUMNS } from "./exports";
 
@@ -55,7 +56,7 @@ const TRIAL: Columns<typeof TRIAL_COLUMNS> = {
   wizard: WIZARD,
   status: {
     type: "text",
-    values: ["scheduled", "in_progress", "paused", "completed", "aborted"],
+    values: TRIAL_STATUSES,
     description: "The trial's status.",
   },
   started_at: { type: "date-time", optional: true, description: "When the trial started (its t0), UTC." },
@@ -82,7 +83,7 @@ const EVENT: Columns<typeof EVENT_COLUMNS> = {
   deviation: {
     type: "text",
     optional: true,
-    values: ["skipped", "out_of_order", "unscripted", "manual_jump", "ended_early"],
+    values: DEVIATION_KINDS,
     description: "How the event departs from the protocol, if it does.",
   },
   rel_ms: { ...REL_MS, optional: true, description: `${REL_MS.description} Empty before the start.` },

@@ -10,7 +10,10 @@ export type ProtocolAction = TrialProtocol["steps"][number]["actions"][number];
 /** Blocks that steer the trial rather than move the robot. */
 export const CONTROL_TYPES = ["record_answer", "branch", "end_trial", "wizard_instruction", "pause"] as const;
 
-export type DeviationKind = "skipped" | "out_of_order" | "unscripted" | "manual_jump" | "ended_early";
+export const DEVIATION_KINDS = ["skipped", "out_of_order", "unscripted", "manual_jump", "ended_early"] as const;
+export type DeviationKind = (typeof DEVIATION_KINDS)[number];
+
+export const TRIAL_STATUSES = ["scheduled", "in_progress", "paused", "completed", "aborted"] as const;
 
 export type EventBody =
   | { type: "trial.started" }
@@ -112,7 +115,7 @@ export interface ActionState {
 }
 
 export interface TrialState {
-  status: "scheduled" | "in_progress" | "paused" | "completed" | "aborted";
+  status: (typeof TRIAL_STATUSES)[number];
   emergencyStopped: boolean;
   currentStepId: string | null;
   /** Scripted and unscripted actions by id. */
