@@ -27,6 +27,7 @@ const PLUGIN: Fields<Plugin> = {
   stateTopics: true,
   camera: true,
   halt: true,
+  events: true,
 };
 const ACTION: Fields<PluginAction> = {
   id: true,

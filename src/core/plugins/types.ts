@@ -110,6 +110,21 @@ export interface AbstractBinding {
   when?: Record<string, string | number | boolean>;
 }
 
+/**
+ * Something the robot senses: the topic it reports on and the condition on
+ * each message that makes it this event. Experiments name it by id.
+ */
+export interface RobotEvent {
+  id: string;
+  /** In the researcher's words: "Head touched". */
+  name: string;
+  description?: string;
+  topic: string;
+  messageType: string;
+  /** The condition on the message (a sensor pressed, a word heard, a distance under a threshold). */
+  when: JsonObject;
+}
+
 export interface Plugin {
   robotId: string;
   name: string;
@@ -130,6 +145,8 @@ export interface Plugin {
   stateTopics?: Array<{ topic: string; messageType: string; throttleRate?: number }>;
   /** The robot's own camera (sensor_msgs/CompressedImage): the wizard and observers see it live; never logged. */
   camera?: { topic: string; messageType: string; throttleRate?: number };
+  /** Our extension: what the robot senses and reports (a touch, a heard word, something close), which a "Wait for" can wait for. */
+  events?: RobotEvent[];
   /** Every other field of the file, kept as written. */
   [extra: string]: unknown;
 }
