@@ -125,6 +125,14 @@ export interface RobotEvent {
   when: JsonObject;
 }
 
+/** One event the robot sensed: which, when by the robot's own clock (its message's header stamp, else the runtime's), and the message that matched. */
+export interface Sensed {
+  event: string;
+  /** Milliseconds since the epoch. */
+  at: number;
+  message: JsonValue;
+}
+
 export interface Plugin {
   robotId: string;
   name: string;
