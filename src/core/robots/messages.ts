@@ -118,6 +118,12 @@ export function messageKey(type: string): string | null {
   return `${parts[0]}/${parts[parts.length - 1]}`;
 }
 
+/** Whether HRIStudio knows the fields of this message type. */
+export function knownMessage(type: string): boolean {
+  const key = messageKey(type);
+  return key !== null && Object.hasOwn(MESSAGES, key);
+}
+
 /** The type of the field at a dotted path of a known message ("header.stamp.sec"), or null when it has none. */
 export function fieldType(type: string, path: string): Field | null {
   let field: Field | undefined = messageKey(type) ?? undefined;
