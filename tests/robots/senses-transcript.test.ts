@@ -39,8 +39,7 @@ it("the NAO6's touches, heard words and sonar make its events, once each", () =>
   expect(sensed).toEqual([
     // Pressed in the middle: the head; released: nothing.
     ["head_touched", STARTED + 400],
-    // Pressed at the front: the head, and its front.
-    ["head_touched", STARTED + 1650],
+    // Pressed at the front: the front, not the middle.
     ["head_front_touched", STARTED + 1650],
     ["left_hand_touched", STARTED + 2650],
     ["right_foot_bumped", STARTED + 3500],
