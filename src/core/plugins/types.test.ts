@@ -69,7 +69,10 @@ const schema = JSON.parse(readFileSync("plugins/plugin.schema.json", "utf8")) as
   properties: Record<string, { items?: { properties: Record<string, unknown> } }>;
   definitions: Record<
     string,
-    { properties?: Record<string, unknown>; oneOf?: Array<{ properties: Record<string, unknown> }> }
+    {
+      properties?: Record<string, unknown>;
+      oneOf?: Array<{ properties: { kind: { const: string } } & Record<string, unknown> }>;
+    }
   >;
 };
 const keys = (o: object) => Object.keys(o).sort();
@@ -81,10 +84,16 @@ describe("plugin types against plugins/plugin.schema.json", () => {
     ["a parameter schema", keys(PARAMETERS), keys(schema.definitions.parameterSchema!.properties!)],
     ["an abstract binding", keys(BINDING), keys(schema.definitions.binding!.properties!)],
     ["an event", keys(EVENT), keys(schema.properties.events!.items!.properties)],
-    ...[PRESSED, HEARD, NEAR].map((kind, i) => [
-      `a condition of kind ${i}`,
-      keys(kind),
-      keys(schema.definitions.condition!.oneOf![i]!.properties),
+    ...(
+      [
+        ["pressed", PRESSED],
+        ["heard", HEARD],
+        ["near", NEAR],
+      ] as const
+    ).map(([kind, fields]) => [
+      `a "${kind}" condition`,
+      keys(fields),
+      keys(schema.definitions.condition!.oneOf!.find((c) => c.properties.kind.const === kind)!.properties),
     ]),
   ])("%s has the schema's fields", (_what, typed, declared) => {
     expect(typed).toEqual(declared);
