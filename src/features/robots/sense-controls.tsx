@@ -4,7 +4,7 @@
 // touch sensor, a phrase it hears with a confidence, and a step close or away
 // per distance sensor. The robot says what it can sense (SENSABLE_TOPIC); each
 // control sends a Stimulus, and the robot publishes what its sensor would.
-import { type FormEvent, useEffect, useState } from "react";
+import { type FormEvent, useEffect, useMemo, useState } from "react";
 import * as ROSLIB from "roslib";
 import { type Sensable, SENSABLE_TOPIC, type Stimulus, STIMULUS_TOPIC } from "@/core/robots/stimulus";
 import { Button } from "@/ui/button";
@@ -16,6 +16,11 @@ export function SenseControls({ ros }: { ros: ROSLIB.Ros | null }) {
   const [phrase, setPhrase] = useState("");
   const [confidence, setConfidence] = useState("0.8");
   const [sent, setSent] = useState("");
+  // One publisher for the connection: roslib advertises a topic once per Topic.
+  const control = useMemo(
+    () => ros && new ROSLIB.Topic({ ros, name: STIMULUS_TOPIC, messageType: "std_msgs/msg/String" }),
+    [ros],
+  );
 
   useEffect(() => {
     if (!ros) return;
@@ -24,11 +29,9 @@ export function SenseControls({ ros }: { ros: ROSLIB.Ros | null }) {
     return () => topic.unsubscribe();
   }, [ros]);
 
-  if (!ros || !sensable.length) return null;
+  if (!control || !sensable.length) return null;
   const send = (stimulus: Stimulus, said: string) => {
-    new ROSLIB.Topic({ ros, name: STIMULUS_TOPIC, messageType: "std_msgs/msg/String" }).publish({
-      data: JSON.stringify(stimulus),
-    });
+    control.publish({ data: JSON.stringify(stimulus) });
     setSent(said);
   };
   const touches = sensable.filter((s) => s.kind === "pressed");
@@ -61,7 +64,7 @@ export function SenseControls({ ros }: { ros: ROSLIB.Ros | null }) {
               {(props) => <Input {...props} value={phrase} onChange={(e) => setPhrase(e.target.value)} />}
             </Field>
           </div>
-          <div className="w-28">
+          <div className="w-36">
             <Field label="Confidence (0–1)">
               {(props) => (
                 <Input

@@ -4,10 +4,7 @@
 // "pkg/msg/Type" and "pkg/Type" are accepted (the ROS 2 server splits on "/"
 // and keeps the first and last parts), times are {sec, nanosec}, Header has no seq.
 // The messages themselves are declared once, in the core (the plugin loader reads them too).
-import { MESSAGES } from "../../core/robots/messages";
-
-type Field = string; // a primitive, a known type name, or either with "[]"
-type Definition = Record<string, Field>;
+import { type Definition, type Field, MESSAGES } from "../../core/robots/messages";
 
 const SERVICES: Record<string, { request: Definition; response: Definition }> = {
   "std_srvs/SetBool": { request: { data: "bool" }, response: { success: "bool", message: "string" } },
