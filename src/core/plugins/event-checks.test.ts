@@ -98,9 +98,29 @@ describe("a plugin's events, checked at load", () => {
     ]);
   });
 
-  it("a malformed condition is the schema's error, at its place", () => {
-    const errors = errorsOf([{ ...heard, when: { kind: "heard", words: ["ready"] } }]);
-    expect(errors.length).toBeGreaterThan(0);
-    expect(errors.every((e) => e.code === "schema" && e.path.startsWith("/events/0/when"))).toBe(true);
+  it.each<[string, unknown, Array<[string, string]>]>([
+    [
+      "a condition missing its kind's fields",
+      { kind: "heard", words: ["ready"] },
+      [
+        ["/events/0/when/field", "is required but missing"],
+        ["/events/0/when/confidenceField", "is required but missing"],
+        ["/events/0/when/minConfidence", "is required but missing"],
+      ],
+    ],
+    [
+      "a condition of no known kind",
+      { kind: "smelled" },
+      [["/events/0/when/kind", 'must be one of: "pressed", "heard", "near"']],
+    ],
+    [
+      "another kind's field",
+      { kind: "near", field: "range", below: 0.5, forMs: 500, clearAbove: 0.7, equals: 1 },
+      [["/events/0/when/equals", "is not an allowed field here"]],
+    ],
+  ])("%s is the schema's error, at its place", (_what, when, expected) => {
+    expect(errorsOf([{ ...heard, when }])).toEqual(
+      expected.map(([path, reason]) => ({ code: "schema", path, reason })),
+    );
   });
 });

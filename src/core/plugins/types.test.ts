@@ -71,7 +71,7 @@ const schema = JSON.parse(readFileSync("plugins/plugin.schema.json", "utf8")) as
     string,
     {
       properties?: Record<string, unknown>;
-      oneOf?: Array<{ properties: { kind: { const: string } } & Record<string, unknown> }>;
+      allOf?: Array<{ then: { properties: { kind: { const: string } } & Record<string, unknown> } }>;
     }
   >;
 };
@@ -93,7 +93,7 @@ describe("plugin types against plugins/plugin.schema.json", () => {
     ).map(([kind, fields]) => [
       `a "${kind}" condition`,
       keys(fields),
-      keys(schema.definitions.condition!.oneOf!.find((c) => c.properties.kind.const === kind)!.properties),
+      keys(schema.definitions.condition!.allOf!.find((c) => c.then.properties.kind.const === kind)!.then.properties),
     ]),
   ])("%s has the schema's fields", (_what, typed, declared) => {
     expect(typed).toEqual(declared);
