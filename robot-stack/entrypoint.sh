@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Prepares the robot, then runs naoqi_driver, the animation relay and rosbridge.
+# Prepares the robot, then runs naoqi_driver, the animation and word relays and rosbridge.
 set -euo pipefail
 source /opt/ros/humble/setup.bash
 
@@ -11,6 +11,7 @@ ros2 launch naoqi_driver naoqi_driver.launch.py \
   network_interface:="${NETWORK_INTERFACE}" &
 
 python3 /opt/hristudio/animation_relay.py &
+python3 /opt/hristudio/word_relay.py &
 
 exec ros2 launch rosbridge_server rosbridge_websocket_launch.xml \
   address:="${ROSBRIDGE_ADDRESS}" port:="${ROSBRIDGE_PORT}"

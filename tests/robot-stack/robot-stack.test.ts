@@ -29,7 +29,7 @@ describe("robot-stack", () => {
 
   it("has shell and Python files that parse", () => {
     expect(spawnSync("bash", ["-n", join(dir, "entrypoint.sh")]).status).toBe(0);
-    for (const file of ["init_robot.py", "animation_relay.py"]) {
+    for (const file of ["init_robot.py", "animation_relay.py", "word_relay.py"]) {
       const check = spawnSync(
         "python3",
         ["-c", "import ast,sys; ast.parse(open(sys.argv[1]).read())", join(dir, file)],
@@ -47,6 +47,21 @@ describe("robot-stack", () => {
     const guide = readFileSync(join(dir, "..", "docs", "robot-setup.md"), "utf8");
     for (const topic of topics) expect(guide).toContain(`\`${topic}\``);
     expect(read("animation_relay.py")).toContain('"/animation"');
+  });
+
+  it("provides the topic of every event the NAO6 plugin senses that naoqi_driver does not publish", () => {
+    const plugin = JSON.parse(readFileSync(join(dir, "..", "plugins", "nao6-ros2.json"), "utf8")) as {
+      events: Array<{ topic: string; messageType: string }>;
+    };
+    // naoqi_driver2's own sensor topics (its README's list); every other event topic is a relay's.
+    const byDriver = new Set(["/head_touch", "/hand_touch", "/bumper", "/sonar/left", "/sonar/right"]);
+    const relays = read("animation_relay.py") + read("word_relay.py");
+    const relayed = plugin.events.filter((e) => !byDriver.has(e.topic));
+    expect(relayed.length).toBeGreaterThan(0);
+    for (const event of relayed) {
+      expect(relays).toContain(`"${event.topic}"`);
+      expect(relays).toContain(`import ${event.messageType.split("/").pop()}`);
+    }
   });
 
   it("binds the lab server's ports to loopback and takes its passwords from the environment", () => {

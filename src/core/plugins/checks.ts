@@ -5,6 +5,7 @@
 // A transform we do not have is no error: the action loads as unsupported
 // (availability.ts).
 import { pointer, type PluginError, type PluginErrorCode } from "./errors";
+import { checkEvents } from "./event-checks";
 import { checkValue, compileParameterSchema } from "./parameters";
 import { placeholders } from "./template";
 import { dispatchField, dispatchName, messageTemplate, nameParameters } from "./topic";
@@ -34,6 +35,7 @@ export function checkPlugin(file: string, plugin: Plugin, broken: Broken = () =>
     checkAction(action, pointer("actions", i), add);
   });
   checkAbstract(plugin, add, broken);
+  errors.push(...checkEvents(file, plugin, broken));
   (plugin.halt ?? []).forEach((id, i) => {
     if (!seen.has(id))
       add(

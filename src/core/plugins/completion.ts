@@ -100,7 +100,8 @@ export function robotTimeOf(message: unknown): string | undefined {
   return new Date(sec * 1000 + Math.floor(nanosec / 1e6)).toISOString();
 }
 
-function fieldAt(message: unknown, path: string): unknown {
+/** The value at a dotted path of a message ("header.stamp"), or undefined. */
+export function fieldAt(message: unknown, path: string): unknown {
   let node = message;
   for (const key of path.split(".")) {
     if (node === null || typeof node !== "object") return undefined;

@@ -10,6 +10,8 @@ export const PLUGIN_ERROR_CODES = {
     "A placeholder (a payload's {{…}}, or a {part} of a topic or service name) names no parameter of its action.",
   bad_binding: "An abstract binding refers to something that does not exist.",
   unknown_abstract_action: "The plugin maps an abstract action that is not in the vocabulary.",
+  bad_event:
+    "An event the robot senses cannot be watched: its id is taken, its topic is templated, its message type is unknown, or its condition reads no such field.",
   duplicate_robot: "Two plugin files declare the same robotId.",
   unreadable: "The file could not be read.",
   too_large: "The file is larger than a plugin file may be; reading stopped at the limit.",

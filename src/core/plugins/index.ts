@@ -17,11 +17,13 @@ export { resolveAction, type Resolution } from "./resolve";
 export {
   cannotStart,
   checkingStart,
+  eventProblems,
   portability,
   type PortableExperiment,
   type PortabilityReport,
   type ActionPortability,
 } from "./portability";
+export { messageTime, sense, UNSENSED, type SenseState, type SenseStep } from "./senses";
 export { channelOf, isSshCommand, unreachable, type Channel, type Channels, type Reachable } from "./reach";
 export { outgoingFor, type Outgoing } from "./payload";
 export { sentOverRos, type Sent } from "./sent";

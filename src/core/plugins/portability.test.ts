@@ -1,7 +1,7 @@
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { STORYTELLER_STEPS } from "../../server/seed/storyteller";
-import { loadPlugin, portability, type PortableExperiment } from "./index";
+import { eventProblems, loadPlugin, type Plugin, portability, type PortableExperiment } from "./index";
 
 const plugin = (file: string) => {
   const loaded = loadPlugin(file, readFileSync(`plugins/${file}`, "utf8"));
@@ -103,5 +103,44 @@ describe("portability of other actions", () => {
     expect(one("pepper-ros2.json", "posture", { posture: "sit" })?.problems).toEqual([
       { parameter: "posture", message: '"posture" "sit" is not supported by this robot (supported: "stand", "rest")' },
     ]);
+  });
+});
+
+describe("events a robot cannot report", () => {
+  const robot = {
+    robotId: "r",
+    name: "Robot",
+    version: "1.0.0",
+    pluginApiVersion: "1.0",
+    actions: [],
+    events: [
+      {
+        id: "head_touched",
+        name: "Head touched",
+        topic: "/head_touch",
+        messageType: "naoqi_bridge_msgs/msg/HeadTouch",
+        when: { kind: "pressed", field: "state", equals: 1 },
+      },
+    ],
+  } as Plugin;
+  const senseless = { ...robot, events: undefined };
+
+  it.each<[string, string[], Plugin, string[]]>([
+    ["nothing awaited", [], robot, []],
+    ["an event it declares", ["head_touched"], robot, []],
+    [
+      "one it does not",
+      ["head_touched", "heard_ready"],
+      robot,
+      ['Robot (plugin 1.0.0) does not sense "heard_ready" (it senses: head_touched)'],
+    ],
+    [
+      "a robot that senses nothing, the same id twice",
+      ["head_touched", "head_touched"],
+      senseless,
+      ['Robot (plugin 1.0.0) does not sense "head_touched" (it senses: none)'],
+    ],
+  ])("%s", (_what, ids, plugin, expected) => {
+    expect(eventProblems(ids, plugin)).toEqual(expected);
   });
 });

@@ -114,3 +114,16 @@ export function* checkingStart(protocol: PortableExperiment, plugin: Plugin): Wo
   const what = missing.length === 1 ? "an action" : `${missing.length} actions`;
   return `This trial cannot start: ${plugin.name} (plugin ${plugin.version}) cannot do ${what} of its protocol: ${listed.join("; ")}.`;
 }
+
+/**
+ * Why the robot cannot report each of these events (the ids a "Wait for"
+ * waits for): one plain reason per event the plugin does not declare; empty
+ * when it can report them all.
+ */
+export function eventProblems(eventIds: string[], plugin: Plugin): string[] {
+  const declared = new Set((plugin.events ?? []).map((e) => e.id));
+  const offered = [...declared].join(", ") || "none";
+  return [...new Set(eventIds)]
+    .filter((id) => !declared.has(id))
+    .map((id) => `${plugin.name} (plugin ${plugin.version}) does not sense "${id}" (it senses: ${offered})`);
+}

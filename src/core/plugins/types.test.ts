@@ -3,7 +3,7 @@
 // the schema is either typed or listed here as kept as written.
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
-import type { AbstractBinding, ParameterSchema, Plugin, PluginAction } from "./types";
+import type { AbstractBinding, Condition, ParameterSchema, Plugin, PluginAction, RobotEvent } from "./types";
 
 /** The named keys of a type, without its index signature. */
 type Named<T> = keyof { [K in keyof T as string extends K ? never : K]: T[K] };
@@ -49,13 +49,31 @@ const PARAMETERS: Fields<ParameterSchema> = {
   additionalProperties: true,
 };
 const BINDING: Fields<AbstractBinding> = { action: true, parameters: true, when: true };
+const EVENT: Fields<RobotEvent> = {
+  id: true,
+  name: true,
+  description: true,
+  topic: true,
+  messageType: true,
+  when: true,
+};
+type Kind<K extends Condition["kind"]> = Fields<Extract<Condition, { kind: K }>>;
+const PRESSED: Kind<"pressed"> = { kind: true, field: true, equals: true, where: true };
+const HEARD: Kind<"heard"> = { kind: true, field: true, confidenceField: true, words: true, minConfidence: true };
+const NEAR: Kind<"near"> = { kind: true, field: true, below: true, forMs: true, clearAbove: true };
 
 /** Fields of the schema the code reads through `[extra: string]` or not at all: kept as the file wrote them. */
 const KEPT_AS_WRITTEN = ["platform", "hriStudioVersion", "httpBaseUrl"];
 
 const schema = JSON.parse(readFileSync("plugins/plugin.schema.json", "utf8")) as {
-  properties: Record<string, unknown>;
-  definitions: Record<string, { properties?: Record<string, unknown> }>;
+  properties: Record<string, { items?: { properties: Record<string, unknown> } }>;
+  definitions: Record<
+    string,
+    {
+      properties?: Record<string, unknown>;
+      allOf?: Array<{ then: { properties: { kind: { const: string } } & Record<string, unknown> } }>;
+    }
+  >;
 };
 const keys = (o: object) => Object.keys(o).sort();
 
@@ -65,6 +83,18 @@ describe("plugin types against plugins/plugin.schema.json", () => {
     ["an action", keys(ACTION), keys(schema.definitions.action!.properties!)],
     ["a parameter schema", keys(PARAMETERS), keys(schema.definitions.parameterSchema!.properties!)],
     ["an abstract binding", keys(BINDING), keys(schema.definitions.binding!.properties!)],
+    ["an event", keys(EVENT), keys(schema.properties.events!.items!.properties)],
+    ...(
+      [
+        ["pressed", PRESSED],
+        ["heard", HEARD],
+        ["near", NEAR],
+      ] as const
+    ).map(([kind, fields]) => [
+      `a "${kind}" condition`,
+      keys(fields),
+      keys(schema.definitions.condition!.allOf!.find((c) => c.then.properties.kind.const === kind)!.then.properties),
+    ]),
   ])("%s has the schema's fields", (_what, typed, declared) => {
     expect(typed).toEqual(declared);
   });

@@ -121,9 +121,31 @@ export interface RobotEvent {
   description?: string;
   topic: string;
   messageType: string;
-  /** The condition on the message (a sensor pressed, a word heard, a distance under a threshold). */
-  when: JsonObject;
+  /** The condition on the message that makes it this event (senses.ts matches it). */
+  when: Condition;
 }
+
+/** A scalar a message field is compared with. */
+export type FieldValue = string | number | boolean;
+
+/**
+ * The condition on a topic's messages, one of three kinds; each `field` is a
+ * dotted path into the message.
+ * - pressed: the field becomes `equals` (a touch sensor pressed), among the
+ *   messages whose `where` fields hold those values (which sensor). Once per
+ *   press: not again while held, not on release.
+ * - heard: one of `words` (any case) recognised with at least
+ *   `minConfidence`; `field` lists the words heard and `confidenceField`
+ *   their confidences in the same order.
+ * - near: the distance in `field` (a number, or a list whose nearest
+ *   reading counts) stays under `below` for `forMs`; it happens again only
+ *   once the distance has been above `clearAbove`, so a distance flapping
+ *   around `below` is one event.
+ */
+export type Condition =
+  | { kind: "pressed"; field: string; equals: FieldValue; where?: Record<string, FieldValue> }
+  | { kind: "heard"; field: string; confidenceField: string; words: string[]; minConfidence: number }
+  | { kind: "near"; field: string; below: number; forMs: number; clearAbove: number };
 
 /** One event the robot sensed: which, when by the robot's own clock (its message's header stamp, else the runtime's), and the message that matched. */
 export interface Sensed {

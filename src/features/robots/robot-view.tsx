@@ -10,6 +10,7 @@ import { Button } from "@/ui/button";
 import { clockTime } from "@/ui/clock-time";
 import { Badge, Card } from "@/ui/surface";
 import { ReplayBanner } from "./replay-banner";
+import { SenseControls } from "./sense-controls";
 
 // A replay announces itself every second while it plays: one unheard for longer has gone (its runtime stopped).
 const REPLAY_GONE_MS = 3000;
@@ -17,6 +18,8 @@ const REPLAY_GONE_MS = 3000;
 export function RobotView({ url }: { url: string }) {
   const [state, setState] = useState<RobotState | null>(null);
   const [connected, setConnected] = useState(false);
+  // The open connection, for the controls that make the robot sense; null while it is lost.
+  const [link, setLink] = useState<ROSLIB.Ros | null>(null);
   const [voice, setVoice] = useState(false);
   const [replay, setReplay] = useState<(ReplayAnnouncement & { heardAt: number }) | null>(null);
   const spoken = useRef<string | null>(null);
@@ -26,10 +29,15 @@ export function RobotView({ url }: { url: string }) {
     let ros: ROSLIB.Ros | null = null;
     const open = () => {
       if (stopped) return;
-      ros = new ROSLIB.Ros({});
-      ros.on("connection", () => setConnected(true));
+      const opened = new ROSLIB.Ros({});
+      ros = opened;
+      ros.on("connection", () => {
+        setConnected(true);
+        setLink(opened);
+      });
       const lost = () => {
         setConnected(false);
+        setLink(null);
         setTimeout(open, 1000);
       };
       ros.on("close", lost);
@@ -106,6 +114,7 @@ export function RobotView({ url }: { url: string }) {
           />
           <Fact label="Battery" value={state ? `${Math.round(state.battery)} %` : "—"} />
         </dl>
+        <SenseControls ros={link} />
       </Card>
       <p className="text-sm text-slate-500">
         This page shows the built-in simulated robot that <code className="font-mono">npm start</code> runs when no real

@@ -16,6 +16,7 @@ import {
 } from "./nodes";
 import { camera } from "./camera";
 import { pluginServices } from "./plugin-services";
+import { senses } from "./senses";
 
 export { startSimulator, type Simulator, type SimulatorOptions, type Received } from "./server";
 export * from "./nodes";
@@ -25,7 +26,7 @@ export { camera, CAMERA_TOPIC } from "./camera";
 const drives = (plugin: Plugin) =>
   plugin.actions.some((a) => a.ros2 && (("topic" in a.ros2 && a.ros2.topic === "/cmd_vel") || "action" in a.ros2));
 
-/** The default robot: the topics of a plugin (NAO6's by default), speech, animations, sound files, joint states, battery and its camera; odometry and navigation for a robot that drives. */
+/** The default robot: the topics of a plugin (NAO6's by default), speech, animations, sound files, joint states, battery, its camera and what it senses; odometry and navigation for a robot that drives. */
 export function simulatedRobot(
   plugin: Plugin,
   { msPerChar = 60, jointStatesHz = 10, batteryHz = 1, animationMs = 1500 } = {},
@@ -40,6 +41,7 @@ export function simulatedRobot(
     bodyJoints({ hz: jointStatesHz }),
     battery({ hz: batteryHz }),
     camera(),
+    senses(plugin),
     robotStateReport(),
     testServices(),
   ];

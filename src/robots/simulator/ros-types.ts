@@ -3,69 +3,8 @@
 // defaults, an unknown field or a wrong type is an error. ROS 2 flavour: both
 // "pkg/msg/Type" and "pkg/Type" are accepted (the ROS 2 server splits on "/"
 // and keeps the first and last parts), times are {sec, nanosec}, Header has no seq.
-
-type Field = string; // a primitive, a known type name, or either with "[]"
-type Definition = Record<string, Field>;
-
-const MESSAGES: Record<string, Definition> = {
-  "std_msgs/String": { data: "string" },
-  "std_msgs/Bool": { data: "bool" },
-  "std_msgs/Int32": { data: "int32" },
-  "std_msgs/Float32": { data: "float32" },
-  "std_msgs/Float64": { data: "float64" },
-  "std_msgs/Empty": {},
-  "std_msgs/Header": { stamp: "builtin_interfaces/Time", frame_id: "string" },
-  "builtin_interfaces/Time": { sec: "int32", nanosec: "uint32" },
-  "geometry_msgs/Vector3": { x: "float64", y: "float64", z: "float64" },
-  "geometry_msgs/Twist": { linear: "geometry_msgs/Vector3", angular: "geometry_msgs/Vector3" },
-  "geometry_msgs/Point": { x: "float64", y: "float64", z: "float64" },
-  "geometry_msgs/Quaternion": { x: "float64", y: "float64", z: "float64", w: "float64" },
-  "geometry_msgs/Pose": { position: "geometry_msgs/Point", orientation: "geometry_msgs/Quaternion" },
-  "geometry_msgs/PoseStamped": { header: "std_msgs/Header", pose: "geometry_msgs/Pose" },
-  "geometry_msgs/PoseWithCovariance": { pose: "geometry_msgs/Pose", covariance: "float64[]" },
-  "geometry_msgs/TwistWithCovariance": { twist: "geometry_msgs/Twist", covariance: "float64[]" },
-  "nav_msgs/Odometry": {
-    header: "std_msgs/Header",
-    child_frame_id: "string",
-    pose: "geometry_msgs/PoseWithCovariance",
-    twist: "geometry_msgs/TwistWithCovariance",
-  },
-  "sensor_msgs/JointState": {
-    header: "std_msgs/Header",
-    name: "string[]",
-    position: "float64[]",
-    velocity: "float64[]",
-    effort: "float64[]",
-  },
-  // Every field of ROS 2's sensor_msgs/msg/BatteryState, in its order.
-  "sensor_msgs/BatteryState": {
-    header: "std_msgs/Header",
-    voltage: "float32",
-    temperature: "float32",
-    current: "float32",
-    charge: "float32",
-    capacity: "float32",
-    design_capacity: "float32",
-    percentage: "float32",
-    power_supply_status: "uint8",
-    power_supply_health: "uint8",
-    power_supply_technology: "uint8",
-    present: "bool",
-    cell_voltage: "float32[]",
-    cell_temperature: "float32[]",
-    location: "string",
-    serial_number: "string",
-  },
-  // data: uint8[], which rosbridge's JSON carries as one base64 string.
-  "sensor_msgs/CompressedImage": { header: "std_msgs/Header", format: "string", data: "uint8[]" },
-  "naoqi_bridge_msgs/JointAnglesWithSpeed": {
-    header: "std_msgs/Header",
-    joint_names: "string[]",
-    joint_angles: "float32[]",
-    speed: "float32",
-    relative: "uint8",
-  },
-};
+// The messages themselves are declared once, in the core (the plugin loader reads them too).
+import { type Definition, type Field, MESSAGES } from "../../core/robots/messages";
 
 const SERVICES: Record<string, { request: Definition; response: Definition }> = {
   "std_srvs/SetBool": { request: { data: "bool" }, response: { success: "bool", message: "string" } },
