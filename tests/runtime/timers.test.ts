@@ -114,7 +114,7 @@ async function killed(child: ChildProcess) {
 }
 
 const logged = (type: string, events: StoredEvent[]) => events.filter((e) => e.type === type);
-const after = (ms: number) => new Promise((done) => setTimeout(done, ms));
+const elapse = (ms: number) => new Promise((done) => setTimeout(done, ms));
 const firedIn = (m: Record<string, unknown>) =>
   m.type === "events" && (m.events as Array<{ type: string }>).some((e) => e.type === "timer.fired");
 
@@ -167,16 +167,16 @@ describe("a time limit in a paused trial", () => {
   }, async () => {
     const first = await runtimeWithWizard(pausedTrialId);
     expect(await first.wizard.command("p1", { kind: "start" })).toMatchObject({ type: "ack" });
-    await after(500);
+    await elapse(500);
     expect(await first.wizard.command("p2", { kind: "pause" })).toMatchObject({ type: "ack" });
     // Paused past the limit's due time: it does not fire.
-    await after(3_500);
+    await elapse(3_500);
     expect(logged("timer.fired", await eventsSince(db, pausedTrialId))).toEqual([]);
     await killed(first.runtime.child);
 
     // Opened again paused: nothing is armed.
     const second = await runtimeWithWizard(pausedTrialId);
-    await after(1_000);
+    await elapse(1_000);
     expect(logged("timer.fired", await eventsSince(db, pausedTrialId))).toEqual([]);
     expect(await second.wizard.command("p3", { kind: "resume" })).toMatchObject({ type: "ack" });
     await second.wizard.next(firedIn, 10_000);
