@@ -2,7 +2,8 @@
 // wizard starts the trial and has the robot ask, then records nothing; the
 // page counts the limit down and, when it runs out, the trial moves on to
 // the limit's step by itself, logged as the protocol (no deviation). The
-// designer shows the limit in the question's properties and on the flow map.
+// designer shows the limit in the question's properties and on the flow map,
+// and its rehearsal walks the limit's edge.
 import { randomUUID } from "node:crypto";
 import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -83,7 +84,7 @@ describe.sequential("a time limit in the wizard's page", () => {
     await wizard.context().close();
   });
 
-  it("shows the question's limit in the designer and its edge on the flow map", async () => {
+  it("shows the question's limit in the designer, its edge on the flow map and in a rehearsal", async () => {
     const page = await (await newContext(browser, app.url)).newPage();
     await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
     await page.goto(`/experiments/${experimentId}`);
@@ -95,6 +96,13 @@ describe.sequential("a time limit in the wizard's page", () => {
     const map = page.getByRole("group", { name: "Flow map of the experiment" });
     await expect.poll(() => map.textContent()).toContain("8 s");
     await screenshot(page, "designer-flow-map-timeout");
+    // The rehearsal walks the limit's edge when its time is let run out.
+    await page.getByRole("tab", { name: "Rehearse" }).click();
+    const preview = page.getByRole("region", { name: "Rehearsal preview" });
+    await preview.getByRole("combobox").selectOption({ label: "No answer: let the time run out (8 s)" });
+    await expect
+      .poll(() => preview.getByRole("list", { name: "What the robot would do" }).innerText())
+      .toMatch(/1\. Ask[\s\S]*No answer: its 8 s ran out\.[\s\S]*3\. Prompt[\s\S]*The trial ends\./);
     await page.context().close();
   });
 });

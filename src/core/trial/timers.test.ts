@@ -4,6 +4,7 @@ import {
   decideReports,
   fold,
   remainingMs,
+  rehearse,
   simulate,
   type Command,
   type EngineEvent,
@@ -239,5 +240,54 @@ describe("a paused trial's time limits", () => {
     const resumed = fold(protocol, logOf([pause(10_000), started, resume(40_000)]));
     expect(remainingMs(resumed.timers[ANSWER]!, resumed, 45_000)).toBe(5_000);
     expect(remainingMs(resumed.timers[STEP]!, resumed, 45_000)).toBe(45_000);
+  });
+});
+
+describe("rehearsing a time limit's edge", () => {
+  it.each<[string, string[], Array<[string, { seconds: number; question: boolean } | undefined]>]>([
+    [
+      "answered in time: the way the answer leads",
+      [],
+      [
+        ["ask", undefined],
+        ["bye", undefined],
+      ],
+    ],
+    [
+      "no answer in time: the question's edge",
+      ["answer"],
+      [
+        ["ask", { seconds: 10, question: true }],
+        ["prompt", undefined],
+      ],
+    ],
+    [
+      "the step's time running out once its actions are done: the step's edge",
+      ["ask"],
+      [
+        ["ask", { seconds: 60, question: false }],
+        ["bye", undefined],
+      ],
+    ],
+    [
+      "one edge after another, to a limit that ends the trial",
+      ["answer", "prompt"],
+      [
+        ["ask", { seconds: 10, question: true }],
+        ["prompt", { seconds: 5, question: false }],
+      ],
+    ],
+    [
+      "a step without a time limit waits for the wizard as ever",
+      ["bye"],
+      [
+        ["ask", undefined],
+        ["bye", undefined],
+      ],
+    ],
+  ])("%s", (_, runOut, path) => {
+    const rehearsal = rehearse(protocol, {}, new Set(runOut));
+    expect(rehearsal.steps.map((step) => [step.stepId, step.timeout])).toEqual(path);
+    expect(rehearsal.ending).toBe("completed");
   });
 });
