@@ -21,7 +21,14 @@ const BunWebSocket = WebSocket as unknown as new (url: string, options: Bun.WebS
 /** The bench's one-step protocol, unless a bench brings its own steps. */
 const ONE_EMPTY_STEP: ProtocolSnapshot["steps"] = [{ id: "s", name: "S", description: "", actions: [] }];
 
-export async function startLiveBench(steps = ONE_EMPTY_STEP) {
+/** `steps`: the bench's protocol; `msPerChar`: how long the simulated robot takes to say each character (its default when unset). */
+export async function startLiveBench({
+  steps = ONE_EMPTY_STEP,
+  msPerChar,
+}: {
+  steps?: ProtocolSnapshot["steps"];
+  msPerChar?: number;
+} = {}) {
   const SECRET = "bench-secret".padEnd(40, "x");
   let refused = 0;
   const reasons = new Set<string>();
@@ -31,7 +38,10 @@ export async function startLiveBench(steps = ONE_EMPTY_STEP) {
 
   const database = await scratchDatabase();
   const { db, close } = createDatabase(database.url, { max: 4 });
-  const sim = await startDefaultSimulator({ SIM_PORT: "0" });
+  const sim = await startDefaultSimulator({
+    SIM_PORT: "0",
+    ...(msPerChar === undefined ? {} : { SIM_MS_PER_CHAR: String(msPerChar) }),
+  });
   const heard = new Map<string, (at: number) => void>();
   const record = sim.received.push.bind(sim.received);
   // Every message the robot receives, timed as it arrives.
