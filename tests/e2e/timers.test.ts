@@ -67,7 +67,7 @@ describe.sequential("a time limit in the wizard's page", () => {
     await app?.stop();
   });
 
-  it("counts down, and moves the trial on to the limit's step when no answer comes", async () => {
+  it("counts down, holds while paused, and moves the trial on to the limit's step when no answer comes", async () => {
     const wizard = await (await newContext(browser, app.url)).newPage();
     await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
     await wizard.goto(`/trials/${trialId}`);
@@ -78,6 +78,19 @@ describe.sequential("a time limit in the wizard's page", () => {
     // Once the robot has asked, the question's clock runs on the page.
     await wizard.getByText("No answer in").waitFor();
     await screenshot(wizard, "wizard-time-limit");
+    // Paused, the clock stands still: the countdown holds until the wizard resumes.
+    await wizard.getByRole("button", { name: "Pause (P)" }).click();
+    await wizard.getByRole("button", { name: "Resume (P)" }).waitFor();
+    const secondsLeft = async () => Number.parseInt((await wizard.getByTestId("time-left").textContent())!, 10);
+    const held = await secondsLeft();
+    await wizard.waitForTimeout(5_000);
+    expect(await secondsLeft()).toBe(held);
+    // Resumed, it goes on from what it had left: the 5 s paused are not counted (a page that
+    // counted them would show at most held − 5, or none left; a few seconds' slack for a loaded machine).
+    await wizard.getByRole("button", { name: "Resume (P)" }).click();
+    await wizard.getByRole("button", { name: "Pause (P)" }).waitFor();
+    await wizard.waitForTimeout(600);
+    expect(await secondsLeft()).toBeGreaterThanOrEqual(held - 3);
     await expect.poll(() => wizard.getByTestId("current-step").textContent(), { timeout: 25_000 }).toBe("Prompt");
     const trial = await wizardApi.trials.get.query({ trialId });
     expect(trial.status).toBe("in_progress");

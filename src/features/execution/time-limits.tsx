@@ -20,6 +20,8 @@ export function TimeLimits({
   const ticking = running.length > 0 && state.status === "in_progress";
   useEffect(() => {
     if (!ticking) return;
+    // From now on resuming, not from the last tick before the pause.
+    setNow(Date.now());
     const timer = setInterval(() => setNow(Date.now()), 250);
     return () => clearInterval(timer);
   }, [ticking]);
