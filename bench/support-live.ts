@@ -5,6 +5,7 @@
 import { spawn } from "node:child_process";
 import { readFileSync } from "node:fs";
 import { join } from "node:path";
+import type { ProtocolSnapshot } from "../src/core/protocol/document";
 import { startDefaultSimulator } from "../src/robots/simulator/main";
 import { SOCKET_MESSAGES_VERSION } from "../src/core/socket/messages";
 import { freePort } from "../src/store/embedded";
@@ -17,7 +18,17 @@ import { scratchDatabase } from "./support";
 /** Bun's client takes headers; the DOM's typing of WebSocket, which the project's types include, does not say so. */
 const BunWebSocket = WebSocket as unknown as new (url: string, options: Bun.WebSocketOptions) => WebSocket;
 
-export async function startLiveBench() {
+/** The bench's one-step protocol, unless a bench brings its own steps. */
+const ONE_EMPTY_STEP: ProtocolSnapshot["steps"] = [{ id: "s", name: "S", description: "", actions: [] }];
+
+/** `steps`: the bench's protocol; `msPerChar`: how long the simulated robot takes to say each character (its default when unset). */
+export async function startLiveBench({
+  steps = ONE_EMPTY_STEP,
+  msPerChar,
+}: {
+  steps?: ProtocolSnapshot["steps"];
+  msPerChar?: number;
+} = {}) {
   const SECRET = "bench-secret".padEnd(40, "x");
   let refused = 0;
   const reasons = new Set<string>();
@@ -27,7 +38,10 @@ export async function startLiveBench() {
 
   const database = await scratchDatabase();
   const { db, close } = createDatabase(database.url, { max: 4 });
-  const sim = await startDefaultSimulator({ SIM_PORT: "0" });
+  const sim = await startDefaultSimulator({
+    SIM_PORT: "0",
+    ...(msPerChar === undefined ? {} : { SIM_MS_PER_CHAR: String(msPerChar) }),
+  });
   const heard = new Map<string, (at: number) => void>();
   const record = sim.received.push.bind(sim.received);
   // Every message the robot receives, timed as it arrives.
@@ -99,7 +113,7 @@ export async function startLiveBench() {
   const snapshot = {
     schemaVersion: 3 as const,
     experiment: { id: experiment!.id, name: "Bench", description: "", robotId: "nao6-ros2" },
-    steps: [{ id: "s", name: "S", description: "", actions: [] }],
+    steps,
   };
   const [version] = await db
     .insert(experimentVersions)
@@ -227,6 +241,10 @@ export async function startLiveBench() {
   return {
     db,
     newTrial,
+    socket,
+    /** The robot's listeners by the text it hears: each is told when that text arrives. */
+    heard,
+    wizardId: wizardUser.id,
     /**
      * How many events the welcome of an observer's hello carries, once it has come. Counted in its text,
      * not parsed: parsing a 10 MB welcome here would stall this process, the simulated robot's too.

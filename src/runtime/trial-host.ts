@@ -236,7 +236,7 @@ export class TrialHost {
     // Each may have reached the robot before the process ended (most had, after a kill -9): not "failed".
     for (const [actionId] of interrupted) await host.command({ kind: "unknown", actionId, reason: RESTARTED }, null);
     // Timers running when the runtime stopped fire when they were due, from their logged start.
-    host.limits.follow(host.state.timers, host.t0);
+    host.limits.follow(host.state, host.t0);
     return host;
   }
 
@@ -466,7 +466,7 @@ export class TrialHost {
     this.opening?.push(...stored);
     applyInPlace(this.state, stored);
     this.t0 ??= startedAt(stored);
-    this.limits.follow(this.state.timers, this.t0);
+    this.limits.follow(this.state, this.t0);
     if (withheld) this.withhold(stored, withheld);
     else this.carryOut(stored, moment);
     for (const listener of this.listeners.keys()) listener(stored);

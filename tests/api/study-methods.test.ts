@@ -27,14 +27,18 @@ await owner.studies.update({
   settings: { assignment: { strategy: "balanced", perCondition: 1 }, blinding: { conditionsFromWizards: true } },
 });
 const say = (text: string) => ({ type: "say", parameters: { text } });
-async function published(name: string, story: Array<{ type: string; parameters?: Record<string, unknown> }>) {
+async function published(
+  name: string,
+  story: Array<{ type: string; parameters?: Record<string, unknown> }>,
+  storyLimit?: { seconds: number; after: { to: "next" } },
+) {
   const experiment = await owner.experiments.create({ studyId: study.id, name, robotId: "nao6-ros2" });
   await owner.experiments.saveDesign({
     experimentId: experiment.id,
     baseRevision: 0,
     steps: [
       { name: "Greeting", actions: [say("Hello, I am NAO.")] },
-      { name: "Story", actions: story },
+      { name: "Story", actions: story, ...(storyLimit ? { timeLimit: storyLimit } : {}) },
       { name: "Goodbye", actions: [say("Goodbye!")] },
     ],
   });
@@ -43,7 +47,11 @@ async function published(name: string, story: Array<{ type: string; parameters?:
   return { experiment, version: row!, snapshot: readSnapshot(row!.snapshot) };
 }
 const gestures = await published("Story with gestures", [say("Once upon a time…"), { type: "wave" }]);
-const still = await published("Story standing still", [say("Once upon a time…")]);
+// The still story may last 20 s: its time limit is a line only its condition has.
+const still = await published("Story standing still", [say("Once upon a time…")], {
+  seconds: 20,
+  after: { to: "next" },
+});
 const withGestures = await owner.conditions.create({
   studyId: study.id,
   name: "With gestures",
@@ -251,7 +259,11 @@ describe("each fact of the methods text is the database's", () => {
     expect(only("With gestures")).toMatch(
       /^Only in With gestures\n2\. Story\. The robot said “Once upon a time…” Then the robot performed “[^”]+”\.$/,
     );
-    expect(only("Standing still")).toBe("Only in Standing still\n2. Story. The robot said “Once upon a time…”");
+    // The time limit as the published version holds it, and the step it leads to.
+    const [story, goodbye] = still.snapshot.steps.slice(1);
+    expect(only("Standing still")).toBe(
+      `Only in Standing still\n2. Story. The robot said “Once upon a time…” If the step had not ended within ${story!.timeLimit!.seconds} seconds, the trial went on to “${goodbye!.name}”.`,
+    );
   });
 
   it.each([

@@ -1,8 +1,9 @@
 // A protocol's time limit, owned by the runtime: a question's "no answer in
 // 10 s" pending when the runtime is killed -9 fires after the restart when it
 // was due (from its logged start, on the server's clock), once, and a
-// runtime opened again after it fired never fires it again. The runtime is
-// the real process; the robot is the simulated one.
+// runtime opened again after it fired never fires it again. A paused trial's
+// limit stands still, across a restart too, and goes on from what it had left
+// once resumed. The runtime is the real process; the robot is the simulated one.
 import type { ChildProcess } from "node:child_process";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
@@ -44,11 +45,29 @@ const protocol: ProtocolSnapshot = {
   ],
 };
 
+/** A 3 s "no answer" limit, for the pause: short, as the test waits through it paused. */
+const quick: ProtocolSnapshot = {
+  ...protocol,
+  experiment: { ...protocol.experiment, name: "Quick" },
+  steps: protocol.steps.map((step, i) =>
+    i === 0
+      ? {
+          ...step,
+          actions: step.actions.map((a) => ({
+            ...a,
+            timeLimit: { seconds: 3, after: { to: "step", stepId: "prompt" } },
+          })),
+        }
+      : step,
+  ),
+};
+
 const url = await freshDatabaseUrl();
 const { db, close } = createDatabase(url, { max: 4 });
 let sim: Simulator;
 let wizardId = "";
 let trialId = "";
+let pausedTrialId = "";
 const children: ChildProcess[] = [];
 const sockets: TrialSocket[] = [];
 
@@ -64,6 +83,10 @@ beforeAll(async () => {
   ).id;
   await db.insert(studyMembers).values({ studyId: study!.id, userId: wizardId, role: "wizard" });
   trialId = await trialOf(db, { studyId: study!.id, wizardId, snapshot: protocol, withParticipant: true });
+  // In a study of its own, with a participant of its own.
+  const [other] = await db.insert(studies).values({ title: "Timers paused", status: "active" }).returning();
+  await db.insert(studyMembers).values({ studyId: other!.id, userId: wizardId, role: "wizard" });
+  pausedTrialId = await trialOf(db, { studyId: other!.id, wizardId, snapshot: quick, withParticipant: true });
   sim = await startSimulator({ port: 0, nodes: simulatedRobot(firstPartyPlugin("simulated.json"), { msPerChar: 0 }) });
 }, 60_000);
 
@@ -75,10 +98,10 @@ afterAll(async () => {
 });
 
 /** A runtime of its own, and the wizard's socket to the trial on it (the hello opens the trial). */
-async function runtimeWithWizard() {
+async function runtimeWithWizard(trial = trialId) {
   const runtime = await startRuntime(url, SECRET, { HRI_ROSBRIDGE_URL: sim.url });
   children.push(runtime.child);
-  const wizard = await connectTrial(runtime.url, signSocketToken({ userId: wizardId, trialId }, SECRET));
+  const wizard = await connectTrial(runtime.url, signSocketToken({ userId: wizardId, trialId: trial }, SECRET));
   sockets.push(wizard);
   await wizard.next((m) => m.type === "welcome");
   return { runtime, wizard };
@@ -91,6 +114,9 @@ async function killed(child: ChildProcess) {
 }
 
 const logged = (type: string, events: StoredEvent[]) => events.filter((e) => e.type === type);
+const elapse = (ms: number) => new Promise((done) => setTimeout(done, ms));
+const firedIn = (m: Record<string, unknown>) =>
+  m.type === "events" && (m.events as Array<{ type: string }>).some((e) => e.type === "timer.fired");
 
 describe("a time limit across a runtime restart", () => {
   it("fires when it was due after kill -9, once, and never again", { timeout: 90_000 }, async () => {
@@ -130,5 +156,40 @@ describe("a time limit across a runtime restart", () => {
     const after = await eventsSince(db, trialId);
     expect(logged("timer.fired", after)).toHaveLength(1);
     expect(logged("timer.started", after)).toHaveLength(1);
+    // Ended, so that the robot is free for the next trial.
+    expect(await third.wizard.command("r3", { kind: "complete" })).toMatchObject({ type: "ack" });
+  });
+});
+
+describe("a time limit in a paused trial", () => {
+  it("stands still while paused, across a restart, and goes on from what it had left", {
+    timeout: 90_000,
+  }, async () => {
+    const first = await runtimeWithWizard(pausedTrialId);
+    expect(await first.wizard.command("p1", { kind: "start" })).toMatchObject({ type: "ack" });
+    await elapse(500);
+    expect(await first.wizard.command("p2", { kind: "pause" })).toMatchObject({ type: "ack" });
+    // Paused past the limit's due time: it does not fire.
+    await elapse(3_500);
+    expect(logged("timer.fired", await eventsSince(db, pausedTrialId))).toEqual([]);
+    await killed(first.runtime.child);
+
+    // Opened again paused: nothing is armed.
+    const second = await runtimeWithWizard(pausedTrialId);
+    await elapse(1_000);
+    expect(logged("timer.fired", await eventsSince(db, pausedTrialId))).toEqual([]);
+    expect(await second.wizard.command("p3", { kind: "resume" })).toMatchObject({ type: "ack" });
+    await second.wizard.next(firedIn, 10_000);
+
+    const log = await eventsSince(db, pausedTrialId);
+    const time = (type: string) => logged(type, log)[0]!.serverTime.getTime();
+    const [fired, ...again] = logged("timer.fired", log);
+    expect(again).toEqual([]);
+    // What it had left as the pause began, counted from the resume.
+    const left = 3_000 - (time("trial.paused") - time("timer.started"));
+    const late = fired!.serverTime.getTime() - time("trial.resumed") - left;
+    expect(late).toBeGreaterThanOrEqual(0);
+    expect(late).toBeLessThanOrEqual(100);
+    expect(log.find((e) => e.seq === fired!.seq + 1)).toMatchObject({ stepId: "prompt", via: "timeout" });
   });
 });

@@ -85,6 +85,35 @@ const rejoining: MethodsInput = {
   questionnaires: [],
 };
 
+// A question that waits 10 s for an answer (then "Prompt"), in a step that may last 60 s (then the end).
+const timed: MethodsInput = {
+  ...rejoining,
+  snapshot: snapshotOf({
+    id: "exp-4",
+    name: "Timed question",
+    description: "",
+    robotId: "nao6-ros2",
+    steps: [
+      {
+        ...step("ask", "Ask", [
+          say("q", "What color was it?"),
+          {
+            id: "rec",
+            type: "record_answer",
+            name: "",
+            parameters: { options: [{ id: "r", label: "red" }] },
+            parallelGroup: null,
+            timeLimit: { seconds: 10, after: { to: "step", stepId: "prompt" } },
+          },
+        ]),
+        timeLimit: { seconds: 60, after: { to: "end" } },
+      },
+      step("bye", "Goodbye", [say("s", "Goodbye.")], { to: "end" }),
+      step("prompt", "Prompt", [say("p", "Take your time.")], { to: "end" }),
+    ],
+  }),
+};
+
 describe("the methods text", () => {
   const md = methodsMarkdown(storyteller);
   const plain = methodsPlainText(storyteller);
@@ -167,6 +196,16 @@ describe("the methods text", () => {
     ["no questionnaires", "No questionnaires were given with the trial."],
   ])("a rejoining branch: %s", (_fact, text) => {
     expect(methodsMarkdown(rejoining)).toContain(text);
+  });
+
+  it.each<[string, string]>([
+    [
+      "a question's time limit and where it led",
+      "as one of “red”. If no answer was recorded within 10 seconds, the trial went on to “Prompt”.",
+    ],
+    ["a step's time limit and where it led", "If the step had not ended within 60 seconds, the trial ended."],
+  ])("time limits: %s", (_fact, text) => {
+    expect(methodsMarkdown(timed)).toContain(text);
   });
 
   it("names a sound by its file and hash, and never says a note meant for the wizard", () => {

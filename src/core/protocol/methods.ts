@@ -1,6 +1,7 @@
 // The methods text: a published version described in prose a paper can use
 // (robot, steps in order, exact speech, what ran together, pauses, questions
-// and where each answer led, questionnaires, conditions, the version's hash).
+// and where each answer led, time limits and where each led, questionnaires,
+// conditions, the version's hash).
 // Written once against a style, so the Markdown and the plain text never differ
 // in what they say.
 import { type ActionNames, actionName, blockName } from "../designer/action-name";
@@ -8,8 +9,8 @@ import { INSTRUMENT_NAMES } from "../questionnaires/instruments";
 import type { Instrument } from "../questionnaires/definition";
 import type { StudySettings } from "../studies/settings";
 import { answerOptions, branchTarget } from "../trial/protocol";
-import type { DesignAction, ProtocolSnapshot } from "./document";
-import { exitOf } from "./flow";
+import type { DesignAction, ProtocolSnapshot, TimeLimit } from "./document";
+import { exitBy, exitOf } from "./flow";
 
 export interface MethodsInput {
   snapshot: ProtocolSnapshot;
@@ -138,6 +139,8 @@ export function stepParagraphs(input: Described, s: Style): string[] {
       else if (exit.index !== index + 1 || branchTargets.has(index))
         sentences.text.push(`The trial then continued to ${stepName(s, steps, exit.index)}.`);
     }
+    if (step.timeLimit)
+      sentences.text.push(`${timeLimit(s, steps, index, step.timeLimit, "If the step had not ended within")}.`);
     const description = step.description.trim() ? ` ${s.text(step.description.trim())}` : "";
     const body = sentences.text.length ? sentences.text.join(" ") : "Nothing was carried out in this step.";
     return `${index + 1}. ${s.strong(stop(step.name.trim()))}${description} ${body}`;
@@ -160,6 +163,8 @@ function stepSentences(input: Described, s: Style, index: number): { text: strin
       const branch = actions[a + 1]?.type === "branch" ? actions[a + 1]! : null;
       const question = questionSentences(input, s, action, branch);
       text.push(...question.text);
+      if (action.timeLimit)
+        text.push(`${timeLimit(s, steps, index, action.timeLimit, "If no answer was recorded within")}.`);
       if (branch) a++;
       if (question.ended) return { text, ended: true };
       first = false;
@@ -176,6 +181,18 @@ function stepSentences(input: Described, s: Style, index: number): { text: strin
     first = false;
   }
   return { text, ended: false };
+}
+
+/** "If … within 20 seconds, the trial went on to “Prompt”": a time limit and where it led when the time ran out. */
+function timeLimit(s: Style, steps: Steps, index: number, limit: TimeLimit, condition: string): string {
+  const exit = exitBy(steps, index, limit.after);
+  const then =
+    exit.to === "end"
+      ? "the trial ended"
+      : exit.to === "missing"
+        ? "the trial went on to a step that is no longer in the experiment"
+        : `the trial went on to ${stepName(s, steps, exit.index)}`;
+  return `${condition} ${seconds(limit.seconds)}, ${then}`;
 }
 
 interface Clause {

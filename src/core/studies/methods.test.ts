@@ -56,7 +56,8 @@ const still = condition({
     hash: "bbb222",
     snapshot: snapshot("Story standing still", [
       greeting,
-      step("s", "Story", [say("s1", "Once upon a time…")]),
+      // The still story may last 20 s: a time limit is a line of its condition's protocol.
+      { ...step("s", "Story", [say("s1", "Once upon a time…")]), timeLimit: { seconds: 20, after: { to: "next" } } },
       goodbye,
     ]),
   },
@@ -119,7 +120,10 @@ describe("the study's methods text says each fact", () => {
       "the differing line of one",
       "Only in Expressive\n2. Story. The robot said “Once upon a time…” Then the robot performed “Wave”.",
     ],
-    ["the differing line of the other", "Only in Still\n2. Story. The robot said “Once upon a time…”"],
+    [
+      "the differing line of the other, with its time limit",
+      "Only in Still\n2. Story. The robot said “Once upon a time…” If the step had not ended within 20 seconds, the trial went on to “Goodbye”.",
+    ],
     [
       "step timings, median and range",
       "“Greeting” median 4.0 s, range 3.0–5.0 s (n = 2); “Story” median 61.3 s (n = 1).",

@@ -23,6 +23,7 @@ export function initialState(protocol: TrialProtocol): TrialState {
     path: [],
     stepActions,
     timers: {},
+    pausedAtMs: null,
     lastSeq: 0,
   };
 }
@@ -86,8 +87,12 @@ function advance(next: TrialState, event: TrialEvent): void {
     next.actions[event.actionId] = { ...before, status, ...(field ? { [field]: event.relMs } : {}) };
   }
   switch (event.type) {
-    case "trial.started":
     case "trial.resumed":
+      resumeClocks(next, event.relMs);
+      next.status = "in_progress";
+      next.emergencyStopped = false;
+      break;
+    case "trial.started":
       next.status = "in_progress";
       next.emergencyStopped = false;
       break;
@@ -103,7 +108,13 @@ function advance(next: TrialState, event: TrialEvent): void {
       break;
     case "timer.started": {
       const { timerId, stepId, actionId, seconds } = event;
-      next.timers[timerId] = { stepId, ...(actionId ? { actionId } : {}), seconds, startedMs: event.relMs };
+      next.timers[timerId] = {
+        stepId,
+        ...(actionId ? { actionId } : {}),
+        seconds,
+        startedMs: event.relMs,
+        pausedMs: 0,
+      };
       break;
     }
     case "timer.fired":
@@ -112,9 +123,12 @@ function advance(next: TrialState, event: TrialEvent): void {
       break;
     case "trial.paused":
       next.status = "paused";
+      next.pausedAtMs ??= event.relMs;
       break;
     case "trial.emergency_stop":
       next.status = "paused";
+      // A stop during a pause: the clocks stood still from the pause already.
+      next.pausedAtMs ??= event.relMs;
       next.emergencyStopped = true;
       break;
     case "trial.aborted":
@@ -123,5 +137,21 @@ function advance(next: TrialState, event: TrialEvent): void {
     case "trial.completed":
       next.status = "completed";
       break;
+  }
+}
+
+/**
+ * The trial resumed at `resumedMs`: each running timer's clock goes on from
+ * what it had left, the time paused added to its `pausedMs` (for one started
+ * during the pause, the time since it started). New timer objects, as
+ * `next.timers` is a copy whose timers may be shared with the state before.
+ */
+function resumeClocks(next: TrialState, resumedMs: number | null) {
+  const pausedAt = next.pausedAtMs;
+  next.pausedAtMs = null;
+  if (pausedAt === null || resumedMs === null) return;
+  for (const [timerId, timer] of Object.entries(next.timers)) {
+    const held = resumedMs - Math.max(pausedAt, timer.startedMs ?? pausedAt);
+    next.timers[timerId] = { ...timer, pausedMs: timer.pausedMs + held };
   }
 }

@@ -7,4 +7,4 @@ export * from "./types";
 export { type Rehearsal, type RehearsedStep, rehearse } from "./rehearse";
 export { type FlowEdge, flowEdges } from "./graph";
 export { pathTaken, type Upcoming, upcoming } from "./path";
-export { dueAt, timerExit } from "./timers";
+export { dueMs, remainingMs, timerExit } from "./timers";

@@ -1,10 +1,11 @@
 // The rehearsal preview: the exact sequence a robot would perform for a chosen
-// answer to each question, walked through the real engine without a trial.
+// answer to each question (or its time running out), walked through the real
+// engine without a trial.
 // The designer shows it; tests use it to say what a path must be.
 import { decide } from "./decide";
 import { apply, initialState } from "./fold";
 import { answerOptions, findStep, nextUnit } from "./protocol";
-import type { Command, ProtocolAction, TrialProtocol, TrialState } from "./types";
+import type { Command, ProtocolAction, RunningTimer, TrialProtocol, TrialState } from "./types";
 
 export interface RehearsedStep {
   stepId: string;
@@ -15,6 +16,8 @@ export interface RehearsedStep {
   units: ProtocolAction[][];
   /** The answer recorded in this step, if it asks a question. */
   answer?: { actionId: string; optionId: string; label: string };
+  /** The time limit that ran out here, if one did: a question's ("no answer in …") or the step's. */
+  timeout?: { seconds: number; question: boolean };
 }
 
 export interface Rehearsal {
@@ -26,8 +29,16 @@ export interface Rehearsal {
 /** More steps than any protocol would take: past it, the chosen answers keep the trial in a loop. */
 const MAX_STEPS = 1000;
 
-/** `answers` maps a question (record_answer action id) to an option id; unset questions take their first answer. */
-export function rehearse(protocol: TrialProtocol, answers: Record<string, string> = {}): Rehearsal {
+/**
+ * `answers` maps a question (record_answer action id) to an option id; unset questions take their first answer.
+ * `runOut` holds the steps and questions whose time limit the rehearsal lets run out: a question's at the
+ * question, unanswered; a step's once its actions are done, the wizard never moving on.
+ */
+export function rehearse(
+  protocol: TrialProtocol,
+  answers: Record<string, string> = {},
+  runOut: ReadonlySet<string> = new Set(),
+): Rehearsal {
   let state = initialState(protocol);
   let seq = 0;
   const steps: RehearsedStep[] = [];
@@ -49,11 +60,24 @@ export function rehearse(protocol: TrialProtocol, answers: Record<string, string
     }
     return decision.events;
   };
+  /** Lets the running timer `matches` picks run out, if there is one: the trial takes its limit's edge. */
+  const timeRunsOut = (matches: (timer: RunningTimer) => boolean) => {
+    const running = Object.entries(state.timers).find(([, timer]) => matches(timer));
+    if (!running) return false;
+    const [timerId, timer] = running;
+    steps.at(-1)!.timeout = { seconds: timer.seconds, question: timer.actionId !== undefined };
+    send({ kind: "timer_fired", timerId });
+    return true;
+  };
   send({ kind: "start" });
   while (inProgress(state)) {
     if (steps.length > MAX_STEPS) return { steps, ending: "looping" };
     const unit = nextUnit(protocol, state);
     const question = unit[0]?.type === "record_answer" ? unit[0] : null;
+    if (question && runOut.has(question.id) && timeRunsOut((t) => t.actionId === question.id)) continue;
+    const stepId = state.currentStepId;
+    if (!unit.length && stepId && runOut.has(stepId) && timeRunsOut((t) => t.stepId === stepId && !t.actionId))
+      continue;
     if (question) {
       const options = answerOptions(question);
       const chosen = options.find((o) => o.id === answers[question.id]) ?? options[0];

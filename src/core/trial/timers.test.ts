@@ -1,5 +1,16 @@
 import { describe, expect, it } from "vitest";
-import { decide, decideReports, fold, simulate, type Command, type EngineEvent, type TrialProtocol } from "./index";
+import {
+  decide,
+  decideReports,
+  fold,
+  remainingMs,
+  rehearse,
+  simulate,
+  type Command,
+  type EngineEvent,
+  type TrialEvent,
+  type TrialProtocol,
+} from "./index";
 
 // A question with "no answer in 10 s → Prompt", in a step that may last 60 s (→ the next step).
 const protocol: TrialProtocol = {
@@ -154,8 +165,8 @@ describe("time limits", () => {
   it("keeps each running timer with its start, and none once fired or cancelled", () => {
     const { log } = simulate(protocol, asked, (i) => i * 100);
     expect(fold(protocol, log).timers).toEqual({
-      [STEP]: { stepId: "ask", seconds: 60, startedMs: 200 },
-      [ANSWER]: { stepId: "ask", actionId: "answer", seconds: 10, startedMs: 600 },
+      [STEP]: { stepId: "ask", seconds: 60, startedMs: 200, pausedMs: 0 },
+      [ANSWER]: { stepId: "ask", actionId: "answer", seconds: 10, startedMs: 600, pausedMs: 0 },
     });
     const fired = simulate(protocol, [...asked, { kind: "timer_fired", timerId: ANSWER }]).log;
     expect(Object.keys(fold(protocol, fired).timers)).toEqual(["step:prompt:2"]);
@@ -176,5 +187,107 @@ describe("time limits", () => {
     // The state decided on is left as it was: the live host applies the events once they are logged.
     expect(state.timers).toEqual({ [STEP]: expect.anything() });
     expect(decide(protocol, state, { kind: "timer_fired", timerId: ANSWER }).ok).toBe(false);
+  });
+});
+
+// The step's 60 s limit, started at t0; then pauses and resumes at the given ms from t0.
+const opened: EngineEvent[] = [
+  { type: "trial.started" },
+  { type: "step.entered", stepId: "ask", via: "start" },
+  { type: "timer.started", timerId: STEP, stepId: "ask", seconds: 60 },
+];
+const at = (relMs: number, event: EngineEvent): [number, EngineEvent] => [relMs, event];
+const pause = (relMs: number) => at(relMs, { type: "trial.paused" });
+const resume = (relMs: number) => at(relMs, { type: "trial.resumed" });
+const logOf = (later: [number, EngineEvent][]): TrialEvent[] =>
+  [...opened.map((e) => at(0, e)), ...later].map(([relMs, e], i) => ({ ...e, seq: i + 1, relMs }));
+
+describe("a paused trial's time limits", () => {
+  it.each<[string, [number, EngineEvent][], number, number]>([
+    ["running: its limit less the time since it started", [], 20_000, 40_000],
+    ["past due while running: nothing left", [], 70_000, 0],
+    ["paused before due: the clock holds what it had left", [pause(20_000)], 50_000, 40_000],
+    ["paused across due: it still has what it had left", [pause(50_000)], 90_000, 10_000],
+    ["resumed after the pause: the time paused is not counted", [pause(50_000), resume(80_000)], 85_000, 5_000],
+    [
+      "paused twice: neither pause counted",
+      [pause(10_000), resume(20_000), pause(30_000), resume(45_000)],
+      50_000,
+      35_000,
+    ],
+    ["an emergency stop stops the clocks too", [at(5_000, { type: "trial.emergency_stop" })], 30_000, 55_000],
+    [
+      "a stop during a pause: the clocks stood still from the pause",
+      [pause(5_000), at(8_000, { type: "trial.emergency_stop" }), resume(20_000)],
+      20_000,
+      55_000,
+    ],
+  ])("%s", (_, later, nowMs, left) => {
+    const state = fold(protocol, logOf(later));
+    expect(remainingMs(state.timers[STEP]!, state, nowMs)).toBe(left);
+  });
+
+  it("starts the clock of a timer started during a pause at the resume", () => {
+    const started: [number, EngineEvent] = at(15_000, {
+      type: "timer.started",
+      timerId: ANSWER,
+      stepId: "ask",
+      actionId: "answer",
+      seconds: 10,
+    });
+    const paused = fold(protocol, logOf([pause(10_000), started]));
+    expect(remainingMs(paused.timers[ANSWER]!, paused, 60_000)).toBe(10_000);
+    const resumed = fold(protocol, logOf([pause(10_000), started, resume(40_000)]));
+    expect(remainingMs(resumed.timers[ANSWER]!, resumed, 45_000)).toBe(5_000);
+    expect(remainingMs(resumed.timers[STEP]!, resumed, 45_000)).toBe(45_000);
+  });
+});
+
+describe("rehearsing a time limit's edge", () => {
+  it.each<[string, string[], Array<[string, { seconds: number; question: boolean } | undefined]>]>([
+    [
+      "answered in time: the way the answer leads",
+      [],
+      [
+        ["ask", undefined],
+        ["bye", undefined],
+      ],
+    ],
+    [
+      "no answer in time: the question's edge",
+      ["answer"],
+      [
+        ["ask", { seconds: 10, question: true }],
+        ["prompt", undefined],
+      ],
+    ],
+    [
+      "the step's time running out once its actions are done: the step's edge",
+      ["ask"],
+      [
+        ["ask", { seconds: 60, question: false }],
+        ["bye", undefined],
+      ],
+    ],
+    [
+      "one edge after another, to a limit that ends the trial",
+      ["answer", "prompt"],
+      [
+        ["ask", { seconds: 10, question: true }],
+        ["prompt", { seconds: 5, question: false }],
+      ],
+    ],
+    [
+      "a step without a time limit waits for the wizard as ever",
+      ["bye"],
+      [
+        ["ask", undefined],
+        ["bye", undefined],
+      ],
+    ],
+  ])("%s", (_, runOut, path) => {
+    const rehearsal = rehearse(protocol, {}, new Set(runOut));
+    expect(rehearsal.steps.map((step) => [step.stepId, step.timeout])).toEqual(path);
+    expect(rehearsal.ending).toBe("completed");
   });
 });

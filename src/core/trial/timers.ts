@@ -10,7 +10,7 @@ import type { Decision, EngineEvent, RunningTimer, TrialProtocol, TrialState } f
 
 export const FINISHED = new Set(["done", "failed", "not_sent", "unknown", "timed_out", "skipped"]);
 
-type DueTimer = Omit<RunningTimer, "startedMs">;
+type DueTimer = Omit<RunningTimer, "startedMs" | "pausedMs">;
 
 /** The timers `state` should have running, by id; an id names the step's visit, so a step entered again starts anew. */
 export function timersDue(protocol: TrialProtocol, state: TrialState): Map<string, DueTimer> {
@@ -34,9 +34,25 @@ export function timersDue(protocol: TrialProtocol, state: TrialState): Map<strin
   return due;
 }
 
-/** When a running timer is due, on the clock `t0` (the trial's start) is read on; null in a log without times. */
-export function dueAt(timer: RunningTimer, t0: number): number | null {
-  return timer.startedMs === null ? null : t0 + timer.startedMs + timer.seconds * 1000;
+/**
+ * When a running timer is due, in ms from t0, unless the trial is paused
+ * again: its start, its limit and the time paused since it started. Null in a
+ * log without times.
+ */
+export function dueMs(timer: RunningTimer): number | null {
+  return timer.startedMs === null ? null : timer.startedMs + timer.pausedMs + timer.seconds * 1000;
+}
+
+/**
+ * How long a running timer has left at `nowMs` (from t0). While the trial is
+ * paused its clock stands still: what it had left as the pause began (all of
+ * it, for one started during the pause).
+ */
+export function remainingMs(timer: RunningTimer, state: TrialState, nowMs: number): number | null {
+  const due = dueMs(timer);
+  if (due === null) return null;
+  if (state.pausedAtMs === null) return Math.max(0, due - nowMs);
+  return Math.max(0, Math.min(timer.seconds * 1000, due - state.pausedAtMs));
 }
 
 /** `events` (decided on `state`) followed by the timers they cancel and start. */

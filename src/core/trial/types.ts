@@ -127,6 +127,8 @@ export interface TrialState {
   stepActions: Record<string, string[]>;
   /** The timers running now (started, neither fired nor cancelled), by id, with when they started. */
   timers: Record<string, RunningTimer>;
+  /** When the trial was paused (or stopped), in ms from t0, while it is: the timers' clocks stand still from then. */
+  pausedAtMs: number | null;
   lastSeq: number;
 }
 
@@ -137,6 +139,8 @@ export interface RunningTimer {
   seconds: number;
   /** When it started, in ms from the trial's t0 (null in a log without times). */
   startedMs: number | null;
+  /** How long the trial was paused since it started, in ms: not counted against its limit. */
+  pausedMs: number;
 }
 
 export type Decision = { ok: true; events: EngineEvent[] } | { ok: false; reason: string };

@@ -129,13 +129,14 @@ export function FlowMap({ draft, onSelect }: { draft: DesignDraft; onSelect: (st
         </text>
       </svg>
       <figcaption className="text-xs text-slate-600">
-        Arrows on the left are answers of a question; on the right, a step that goes somewhere other than the next step.
-        Select a step to edit it.
+        Arrows on the left are answers of a question; on the right, a step that goes somewhere other than the next step,
+        dashed where a time limit runs out. Select a step to edit it.
       </figcaption>
       <ul className="sr-only">
         {edges.map((e, i) => (
           <li key={i}>
-            {name(e.from)} {e.label ? `(answer "${e.label}")` : ""} leads to{" "}
+            {name(e.from)}{" "}
+            {e.kind === "timeout" ? `(when its ${e.label} run out)` : e.label ? `(answer "${e.label}")` : ""} leads to{" "}
             {e.to === "end" ? "the end of the trial" : name(e.to)}
           </li>
         ))}

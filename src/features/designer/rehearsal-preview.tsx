@@ -1,11 +1,15 @@
 "use client";
-// A rehearsal without a trial: choose an answer for each question and read
-// the exact sequence the robot would perform, walked by the trial engine
-// itself, so what is shown here is what a trial of this draft would do.
+// A rehearsal without a trial: choose an answer for each question (or, where
+// there is a time limit, let the time run out) and read the exact sequence
+// the robot would perform, walked by the trial engine itself, so what is
+// shown here is what a trial of this draft would do.
 import { useMemo, useState } from "react";
 import type { DesignAction, DesignDraft } from "@/core/designer/types";
 import { answerOptions, rehearse } from "@/core/trial";
 import { Field, NativeSelect } from "@/ui/field";
+
+/** The choice that lets a question's or a step's time limit run out; the designer gives answers generated ids, never this word. */
+const RUN_OUT = "run-out";
 
 export function RehearsalPreview({
   draft,
@@ -24,36 +28,66 @@ export function RehearsalPreview({
       ),
     [draft],
   );
+  const limited = useMemo(() => draft.steps.filter((step) => step.timeLimit), [draft]);
   const [answers, setAnswers] = useState<Record<string, string>>({});
+  /** The steps and questions whose time limit runs out in this rehearsal. */
+  const [runOut, setRunOut] = useState<ReadonlySet<string>>(new Set());
+  const letRunOut = (id: string, yes: boolean) => {
+    const next = new Set(runOut);
+    if (yes) next.add(id);
+    else next.delete(id);
+    setRunOut(next);
+  };
   const result = useMemo(() => {
     if (blocked) return null;
     try {
-      return { ok: true as const, rehearsal: rehearse(draft, answers) };
+      return { ok: true as const, rehearsal: rehearse(draft, answers, runOut) };
     } catch (e) {
       return { ok: false as const, reason: (e as Error).message };
     }
-  }, [draft, answers, blocked]);
+  }, [draft, answers, runOut, blocked]);
 
   return (
     <section aria-label="Rehearsal preview" className="space-y-4">
       <p className="text-sm text-slate-700">
-        Choose an answer to each question to see what the robot would do, step by step. Nothing is sent to a robot.
+        Choose an answer to each question, or let a time limit run out, to see what the robot would do, step by step.
+        Nothing is sent to a robot.
       </p>
-      {questions.length > 0 && (
+      {questions.length + limited.length > 0 && (
         <div className="grid gap-3 sm:grid-cols-2">
           {questions.map(({ step, action }) => (
             <Field key={action.id} label={`${step.name}: ${actionName(action)}`}>
               {(p) => (
                 <NativeSelect
                   {...p}
-                  value={answers[action.id] ?? answerOptions(action)[0]?.id ?? ""}
-                  onChange={(e) => setAnswers({ ...answers, [action.id]: e.target.value })}
+                  value={runOut.has(action.id) ? RUN_OUT : (answers[action.id] ?? answerOptions(action)[0]?.id ?? "")}
+                  onChange={(e) => {
+                    letRunOut(action.id, e.target.value === RUN_OUT);
+                    if (e.target.value !== RUN_OUT) setAnswers({ ...answers, [action.id]: e.target.value });
+                  }}
                 >
                   {answerOptions(action).map((o) => (
                     <option key={o.id} value={o.id}>
                       {o.label}
                     </option>
                   ))}
+                  {action.timeLimit && (
+                    <option value={RUN_OUT}>No answer: let the time run out ({action.timeLimit.seconds} s)</option>
+                  )}
+                </NativeSelect>
+              )}
+            </Field>
+          ))}
+          {limited.map((step) => (
+            <Field key={step.id} label={`${step.name}: its time limit`}>
+              {(p) => (
+                <NativeSelect
+                  {...p}
+                  value={runOut.has(step.id) ? RUN_OUT : ""}
+                  onChange={(e) => letRunOut(step.id, e.target.value === RUN_OUT)}
+                >
+                  <option value="">The wizard moves on in time</option>
+                  <option value={RUN_OUT}>Let the time run out ({step.timeLimit!.seconds} s)</option>
                 </NativeSelect>
               )}
             </Field>
@@ -86,6 +120,11 @@ export function RehearsalPreview({
                 ))}
               </ol>
               {step.answer && <p className="mt-1 text-xs text-brand-800">Answer: {step.answer.label}</p>}
+              {step.timeout && (
+                <p className="mt-1 text-xs text-amber-900">
+                  {step.timeout.question ? "No answer" : "The step went on"}: its {step.timeout.seconds} s ran out.
+                </p>
+              )}
             </li>
           ))}
           <li className="text-sm text-slate-700">

@@ -1,9 +1,10 @@
 "use client";
 // The time limits running now, counting down on the wizard's page: how long
 // is left and where the trial goes then. The wizard can always act first;
-// the runtime fires them, this only shows them.
+// the runtime fires them, this only shows them. While the trial is paused
+// their clocks stand still, and so does the countdown.
 import { useEffect, useState } from "react";
-import { dueAt, timerExit, type TrialProtocol, type TrialState } from "@/core/trial";
+import { remainingMs, timerExit, type TrialProtocol, type TrialState } from "@/core/trial";
 
 export function TimeLimits({
   protocol,
@@ -19,6 +20,8 @@ export function TimeLimits({
   const ticking = running.length > 0 && state.status === "in_progress";
   useEffect(() => {
     if (!ticking) return;
+    // From now on resuming, not from the last tick before the pause.
+    setNow(Date.now());
     const timer = setInterval(() => setNow(Date.now()), 250);
     return () => clearInterval(timer);
   }, [ticking]);
@@ -27,8 +30,8 @@ export function TimeLimits({
   return (
     <ul aria-label="Time limits" className="space-y-1 text-sm">
       {running.map(([timerId, timer]) => {
-        const due = dueAt(timer, t0);
-        const left = due === null ? null : Math.max(0, Math.ceil((due - now) / 1000));
+        const ms = remainingMs(timer, state, now - t0);
+        const left = ms === null ? null : Math.ceil(ms / 1000);
         return (
           <li key={timerId} className="rounded border border-amber-300 bg-amber-50 px-3 py-2 text-amber-900">
             {timer.actionId ? "No answer in" : "Step time left:"}{" "}
