@@ -57,7 +57,7 @@ export const MAX_LOOP_TIMES = 20;
 
 /**
  * "Go back to <step>, at most K times, then …": the way back is taken while
- * it has been taken fewer than K times in this trial, then "then" (never
+ * it has been taken fewer than K times in this trial, then "onward" (never
  * another loop, so a bound always ends).
  */
 export const loopSchema = z.object({
@@ -68,7 +68,7 @@ export const loopSchema = z.object({
     .int("must be a whole number of times")
     .min(1, "must be at least 1 time")
     .max(MAX_LOOP_TIMES, `must be at most ${MAX_LOOP_TIMES} times`),
-  then: onwardSchema,
+  onward: onwardSchema,
 });
 
 export const afterSchema = z.discriminatedUnion("to", [onwardSchema, loopSchema], {
@@ -186,7 +186,7 @@ export type DesignDraft = z.infer<typeof draftSchema>;
  * design without notes hashes as before). 3: a step and a record_answer may
  * have a time limit ("timeLimit", left out when none, so earlier documents
  * read and hash as they were). 4: an "after" may go back to a step a bounded
- * number of times (`{ to: "again", stepId, times, then }`).
+ * number of times (`{ to: "again", stepId, times, onward }`).
  */
 export const DOCUMENT_VERSION = 4;
 

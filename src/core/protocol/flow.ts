@@ -15,20 +15,20 @@ export function exitOf(steps: Steps, index: number, taken = 0): Exit {
 /**
  * Where `after`, read from the step at `index`, leads: a step's own way on, or
  * its time limit's. A loop leads back while it has been taken fewer than its
- * `times` (`taken` so far), then where its "then" leads.
+ * `times` (`taken` so far), then where its "onward" leads.
  */
 export function exitBy(steps: Steps, index: number, after: After, taken = 0): Exit {
   if (after.to === "end") return { to: "end" };
   if (after.to === "next") return index + 1 < steps.length ? { to: "step", index: index + 1 } : { to: "end" };
-  if (after.to === "again" && taken >= after.times) return exitBy(steps, index, after.then);
+  if (after.to === "again" && taken >= after.times) return exitBy(steps, index, after.onward);
   const target = steps.findIndex((s) => s.id === after.stepId);
   return target < 0 ? { to: "missing", stepId: after.stepId } : { to: "step", index: target };
 }
 
-/** Every way `after` may lead: a loop's way back (with its bound) and its "then"; otherwise the one. */
+/** Every way `after` may lead: a loop's way back (with its bound) and its "onward"; otherwise the one. */
 export function waysBy(steps: Steps, index: number, after: After): Array<{ exit: Exit; loop?: Loop }> {
   if (after.to !== "again") return [{ exit: exitBy(steps, index, after) }];
-  return [{ exit: exitBy(steps, index, after), loop: after }, { exit: exitBy(steps, index, after.then) }];
+  return [{ exit: exitBy(steps, index, after), loop: after }, { exit: exitBy(steps, index, after.onward) }];
 }
 
 /** Where a step leads, in words that follow "leads to": `"Goodbye"`, "the end of the trial". */

@@ -3,20 +3,20 @@ import type { After, Onward } from "../protocol/document";
 import { type Command, type EngineEvent, fold, rehearse, simulate, type TrialProtocol, upcoming } from "./index";
 
 // "Ask again, at most twice, then …": the question step goes back to itself.
-const protocol = (then: Onward, limit?: After): TrialProtocol => ({
+const protocol = (onward: Onward, limit?: After): TrialProtocol => ({
   steps: [
     { id: "intro", name: "Hello", actions: [{ id: "hi", type: "say", parameters: { text: "Hi" } }] },
     {
       id: "ask",
       name: "Question",
-      after: { to: "again", stepId: "ask", times: 2, then },
+      after: { to: "again", stepId: "ask", times: 2, onward },
       ...(limit ? { timeLimit: { seconds: 10, after: limit } } : {}),
       actions: [{ id: "q", type: "say", parameters: { text: "What color?" } }],
     },
     { id: "bye", name: "Goodbye", actions: [{ id: "bye-say", type: "say", parameters: { text: "Bye" } }] },
   ],
 });
-const onward = protocol({ to: "next" });
+const onNext = protocol({ to: "next" });
 
 const say = (id: string): Command[] => [{ kind: "next" }, { kind: "completed", actionId: id }];
 const asking: Command[] = [{ kind: "start" }, ...say("hi"), { kind: "next" }];
@@ -38,19 +38,19 @@ describe("a bounded loop", () => {
   it.each<[string, TrialProtocol, Command[], unknown]>([
     [
       "the first time, the step's way on goes back to it",
-      onward,
+      onNext,
       [...asking, ...round],
       [["step.entered", "ask", "loop", "after:ask", null]],
     ],
     [
       "while it has gone back fewer times than its bound, it goes back again",
-      onward,
+      onNext,
       [...asking, ...round, ...round],
       [["step.entered", "ask", "loop", "after:ask", null]],
     ],
     [
       "its bound reached, the trial takes its then: the next step",
-      onward,
+      onNext,
       [...asking, ...round, ...round, ...round],
       [
         ["loop.bound_reached", "ask", "after:ask", 2],
@@ -68,13 +68,13 @@ describe("a bounded loop", () => {
     ],
     [
       "the wizard's jump inside the loop is not a time round it: the loop still goes back",
-      onward,
+      onNext,
       [...asking, ...round, { kind: "jump", stepId: "intro" }, ...say("hi"), { kind: "next" }, ...round],
       [["step.entered", "ask", "loop", "after:ask", null]],
     ],
     [
       "and goes back only as often as its bound, counted from the log",
-      onward,
+      onNext,
       [...asking, ...round, { kind: "jump", stepId: "intro" }, ...say("hi"), { kind: "next" }, ...round, ...round],
       [
         ["loop.bound_reached", "ask", "after:ask", 2],
@@ -83,13 +83,13 @@ describe("a bounded loop", () => {
     ],
     [
       "a time limit whose way on is a loop goes back when it runs out",
-      protocol({ to: "next" }, { to: "again", stepId: "intro", times: 1, then: { to: "end" } }),
+      protocol({ to: "next" }, { to: "again", stepId: "intro", times: 1, onward: { to: "end" } }),
       [...asking, { kind: "timer_fired", timerId: "step:ask:2" }],
       [["step.entered", "intro", "loop", "time:ask", null]],
     ],
     [
       "and, its own bound reached, takes its then; the step's own loop is counted apart",
-      protocol({ to: "next" }, { to: "again", stepId: "intro", times: 1, then: { to: "end" } }),
+      protocol({ to: "next" }, { to: "again", stepId: "intro", times: 1, onward: { to: "end" } }),
       [
         ...asking,
         { kind: "timer_fired", timerId: "step:ask:2" },
@@ -107,23 +107,23 @@ describe("a bounded loop", () => {
   });
 
   it("keeps how many times each loop went back, and resumes from its log to the same count", () => {
-    const { log } = simulate(onward, [...asking, ...round, ...round]);
-    const state = fold(onward, log);
+    const { log } = simulate(onNext, [...asking, ...round, ...round]);
+    const state = fold(onNext, log);
     expect(state.loops).toEqual({ "after:ask": 2 });
     expect(state.path).toEqual(["intro", "ask", "ask", "ask"]);
     // What the wizard is told comes next follows the count: the bound is reached, so the next step.
-    expect(upcoming(onward, state)).toMatchObject({ kind: "step", step: { id: "bye" } });
-    expect(upcoming(onward, fold(onward, log.slice(0, -1)))).toMatchObject({ kind: "step", step: { id: "ask" } });
+    expect(upcoming(onNext, state)).toMatchObject({ kind: "step", step: { id: "bye" } });
+    expect(upcoming(onNext, fold(onNext, log.slice(0, -1)))).toMatchObject({ kind: "step", step: { id: "ask" } });
   });
 
   it("logs each time round and the bound as the protocol, never as a deviation", () => {
-    const { log } = simulate(onward, [...asking, ...round, ...round, ...round]);
+    const { log } = simulate(onNext, [...asking, ...round, ...round, ...round]);
     expect(log.filter((e) => e.deviation)).toEqual([]);
     expect(log.filter((e) => e.type === "step.entered" && e.via === "loop")).toHaveLength(2);
   });
 
   it.each<[string, TrialProtocol, string[]]>([
-    ["rehearsal walks the loop to its bound, then on", onward, ["intro", "ask", "ask", "ask", "bye"]],
+    ["rehearsal walks the loop to its bound, then on", onNext, ["intro", "ask", "ask", "ask", "bye"]],
     ["or to the end", protocol({ to: "end" }), ["intro", "ask", "ask", "ask"]],
   ])("%s", (_, design, path) => {
     const rehearsal = rehearse(design);

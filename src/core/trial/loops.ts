@@ -31,7 +31,7 @@ export function exitNow(protocol: TrialProtocol, state: TrialState, index: numbe
 /**
  * The events of leaving the step at `index` by `after`: back round a loop
  * (the step entered again, logged with the loop's name), a loop's bound
- * reached and then its "then", another step, or the trial's end. A step that
+ * reached and then its "onward", another step, or the trial's end. A step that
  * is gone (a rehearsal's draft only: it cannot be published) ends the trial.
  */
 export function follow(
@@ -42,7 +42,7 @@ export function follow(
   name: string,
   via: Via,
 ): EngineEvent[] {
-  if (after.to !== "again") return onward(protocol, index, after, { via });
+  if (after.to !== "again") return leave(protocol, index, after, { via });
   const taken = timesTaken(state, name);
   if (taken < after.times) {
     const back = exitBy(protocol.steps, index, after, taken);
@@ -52,11 +52,11 @@ export function follow(
   const stepId = protocol.steps[index]!.id;
   return [
     { type: "loop.bound_reached", stepId, loop: name, times: after.times },
-    ...onward(protocol, index, after.then, { via: "loop_bound", loop: name }),
+    ...leave(protocol, index, after.onward, { via: "loop_bound", loop: name }),
   ];
 }
 
-function onward(
+function leave(
   protocol: TrialProtocol,
   index: number,
   after: Onward,
