@@ -2,7 +2,7 @@
 // times, then …". The count is read from the log (the fold keeps how many
 // times each loop went back), so a trial resumed after a crash goes round
 // exactly as many times as it would have.
-import type { After, Onward } from "../protocol/document";
+import type { After, Loop, Onward } from "../protocol/document";
 import { type Exit, exitBy, exitOf } from "../protocol/flow";
 import type { EngineEvent, TrialProtocol, TrialState } from "./types";
 
@@ -16,6 +16,21 @@ type Via = "next" | "timeout";
 export function loopName(stepId: string, limit?: { of: "step" } | { of: "answer"; actionId: string }): string {
   if (!limit) return `after:${stepId}`;
   return limit.of === "step" ? `time:${stepId}` : `time:${stepId}:${limit.actionId}`;
+}
+
+/** Every loop of a protocol, by its name, with the step it leaves from. */
+export function loopsOf(protocol: TrialProtocol): Array<{ name: string; stepId: string; loop: Loop }> {
+  return protocol.steps.flatMap((step) => {
+    const afters: Array<[string, After | undefined]> = [
+      [loopName(step.id), step.after],
+      [loopName(step.id, { of: "step" }), step.timeLimit?.after],
+      ...step.actions.map((a): [string, After | undefined] => [
+        loopName(step.id, { of: "answer", actionId: a.id }),
+        a.type === "record_answer" ? a.timeLimit?.after : undefined,
+      ]),
+    ];
+    return afters.flatMap(([name, after]) => (after?.to === "again" ? [{ name, stepId: step.id, loop: after }] : []));
+  });
 }
 
 /** How many times the loop `name` has gone back in this trial. */
