@@ -2,7 +2,6 @@
 // How the trial went round each loop of the protocol: times back out of its
 // bound, whether the bound was reached, and how often each step was entered.
 import type { FidelityReport } from "@/core/analysis/fidelity";
-import { timesWords } from "@/core/protocol/flow";
 import { Card } from "@/ui/surface";
 
 export function LoopIterations({
