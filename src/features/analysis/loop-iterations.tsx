@@ -23,8 +23,9 @@ export function LoopIterations({
         <ul className="space-y-1">
           {report.loops.map((l) => (
             <li key={l.loop} data-loop>
-              From {name(l.stepId)} back to {name(l.backToStepId)}: went back {l.taken} of at most {timesWords(l.times)}
-              ; {l.boundReached ? "its bound was reached and the trial went on" : "its bound was not reached"}
+              From {name(l.stepId)} back to {name(l.backToStepId)}: went back {l.taken} of at most{" "}
+              {l.times === 1 ? "1 time" : `${l.times} times`};{" "}
+              {l.boundReached ? "its bound was reached and the trial went on" : "its bound was not reached"}
             </li>
           ))}
         </ul>
