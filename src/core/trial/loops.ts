@@ -18,18 +18,23 @@ export function loopName(stepId: string, limit?: { of: "step" } | { of: "answer"
   return limit.of === "step" ? `time:${stepId}` : `time:${stepId}:${limit.actionId}`;
 }
 
-/** Every loop of a protocol, by its name, with the step it leaves from. */
-export function loopsOf(protocol: TrialProtocol): Array<{ name: string; stepId: string; loop: Loop }> {
+/** Every loop of a protocol, by its name, with the step it leaves from and, for a time limit's, its seconds. */
+export function loopsOf(
+  protocol: TrialProtocol,
+): Array<{ name: string; stepId: string; loop: Loop; seconds?: number }> {
   return protocol.steps.flatMap((step) => {
-    const afters: Array<[string, After | undefined]> = [
+    const afters: Array<[string, After | undefined, number?]> = [
       [loopName(step.id), step.after],
-      [loopName(step.id, { of: "step" }), step.timeLimit?.after],
-      ...step.actions.map((a): [string, After | undefined] => [
+      [loopName(step.id, { of: "step" }), step.timeLimit?.after, step.timeLimit?.seconds],
+      ...step.actions.map((a): [string, After | undefined, number?] => [
         loopName(step.id, { of: "answer", actionId: a.id }),
         a.type === "record_answer" ? a.timeLimit?.after : undefined,
+        a.timeLimit?.seconds,
       ]),
     ];
-    return afters.flatMap(([name, after]) => (after?.to === "again" ? [{ name, stepId: step.id, loop: after }] : []));
+    return afters.flatMap(([name, after, seconds]) =>
+      after?.to === "again" ? [{ name, stepId: step.id, loop: after, ...(seconds ? { seconds } : {}) }] : [],
+    );
   });
 }
 
