@@ -113,6 +113,13 @@ describe("diffProtocols", () => {
       ['changed step: Step "Intro" now leads to the end of the trial (it led to "Story")'],
     ],
     [
+      "a step that now goes round a loop",
+      (s) => {
+        s.steps[0]!.after = { to: "again", stepId: s.steps[0]!.id, times: 3, onward: { to: "next" } };
+      },
+      ['changed step: Step "Intro" now leads to "Intro" again, at most 3 times, then "Story" (it led to "Story")'],
+    ],
+    [
       "a step removed with its actions",
       (s) => s.steps.splice(1, 1),
       [
