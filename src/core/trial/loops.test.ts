@@ -129,5 +129,7 @@ describe("a bounded loop", () => {
     const rehearsal = rehearse(design);
     expect(rehearsal.ending).toBe("completed");
     expect(rehearsal.steps.map((s) => s.stepId)).toEqual(path);
+    // Each time back round the loop says which time it is.
+    expect(rehearsal.steps.map((s) => s.again)).toEqual([undefined, undefined, 1, 2, undefined].slice(0, path.length));
   });
 });
