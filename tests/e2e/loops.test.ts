@@ -1,7 +1,8 @@
 // A bounded loop in a real Chromium, on the simulated robot: "ask again, at
 // most twice, then say goodbye". The wizard runs the trial from their page;
 // the step goes back twice, then its bound takes the trial on, and the
-// analysis page counts the iterations.
+// analysis page counts the iterations. In the designer, the same loop is
+// chosen from the step's "Then", drawn on the flow map and rehearsed.
 import { randomUUID } from "node:crypto";
 import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -9,6 +10,7 @@ import { expectAccessible } from "../support/accessibility";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
+import { Researcher } from "../support/researcher";
 
 const say = (text: string) => ({ type: "say", name: "", parameters: { text }, parallelGroup: null });
 
@@ -97,6 +99,39 @@ describe.sequential("a bounded loop on the wizard's page", () => {
     const trial = await wizardApi.trials.get.query({ trialId });
     expect(trial.status).toBe("completed");
     await expectAccessible(page, "the analysis page with a loop's iterations");
+    await page.context().close();
+  });
+
+  it("is designed from the step's Then, drawn on the flow map with its bound, and rehearsed round to its bound", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
+    const r = new Researcher(page);
+    await r.createExperiment("Ask again");
+    await r.addStep("Ask");
+    await r.say("Ask", "What color was I?");
+    await r.addStep("Bye");
+    await r.say("Bye", "Goodbye.");
+    await r.click(page.getByRole("button", { name: /^Step 1: Ask/ }));
+    await r.selectOption(
+      r.properties.getByLabel("Then", { exact: true }),
+      "Go back to this step, at most 2 times, then …",
+    );
+    expect(await r.properties.getByLabel("At most (times back)").inputValue()).toBe("2");
+    await r.selectOption(r.properties.getByLabel("Then, after the last time"), "Go on to the next step (Bye)");
+    await expectAccessible(page, "the designer with a loop's bound and its way on");
+    const checks = page.getByRole("region", { name: "Checks" });
+    await expect.poll(() => checks.textContent()).toContain("Ready to publish");
+
+    await r.click(page.getByRole("tab", { name: "Flow map" }));
+    await page.getByRole("group", { name: "Flow map of the experiment" }).waitFor();
+    await page.getByText("Ask (back, at most 2 times) leads to Ask").waitFor({ state: "attached" });
+    await page.getByText("Ask (after 2 times) leads to Bye").waitFor({ state: "attached" });
+
+    await r.click(page.getByRole("tab", { name: "Rehearse" }));
+    const preview = page.getByRole("region", { name: "Rehearsal preview" });
+    await expect
+      .poll(() => preview.getByRole("list", { name: "What the robot would do" }).innerText())
+      .toMatch(/1\. Ask[\s\S]*1\. Ask\s*back round the loop, time 1[\s\S]*time 2[\s\S]*2\. Bye[\s\S]*The trial ends\./);
     await page.context().close();
   });
 });
