@@ -18,7 +18,7 @@ export type Move =
   | { by: "timer" }
   /** Back round a loop: `round` is how many times this loop has now gone back. */
   | { by: "loop"; round: number }
-  /** A loop went back its `times`, so the trial took its "then". */
+  /** A loop went back its `times`, so the trial took its way on ("onward"). */
   | { by: "bound"; times: number };
 
 /**
@@ -59,7 +59,7 @@ export function stepVisits(events: readonly TrialEvent[]): StepVisit[] {
     const by = MOVED_BY[e.via];
     const round = (rounds.get(e.loop ?? "") ?? 0) + 1;
     if (by === "loop") rounds.set(e.loop ?? "", round);
-    // A branch enters its step right after the answer it follows, a loop's "then" right after its bound (decide.ts writes them together).
+    // A branch enters its step right after the answer it follows, a loop's way on right after its bound (loops.ts writes them together).
     const move: Move =
       by === "answer"
         ? { by, answer: lastAnswer ?? "" }

@@ -49,7 +49,7 @@ describe("a bounded loop", () => {
       [["step.entered", "ask", "loop", "after:ask", null]],
     ],
     [
-      "its bound reached, the trial takes its then: the next step",
+      "its bound reached, the trial takes its way on: the next step",
       onNext,
       [...asking, ...round, ...round, ...round],
       [
@@ -58,7 +58,7 @@ describe("a bounded loop", () => {
       ],
     ],
     [
-      "its bound reached, a then of the end ends the trial, as designed (no deviation)",
+      "its bound reached, a way on to the end ends the trial, as designed (no deviation)",
       protocol({ to: "end" }),
       [...asking, ...round, ...round, ...round],
       [
@@ -88,7 +88,7 @@ describe("a bounded loop", () => {
       [["step.entered", "intro", "loop", "time:ask", null]],
     ],
     [
-      "and, its own bound reached, takes its then; the step's own loop is counted apart",
+      "and, its own bound reached, takes its way on; the step's own loop is counted apart",
       protocol({ to: "next" }, { to: "again", stepId: "intro", times: 1, onward: { to: "end" } }),
       [
         ...asking,

@@ -20,7 +20,7 @@ export type EventBody =
   | {
       type: "step.entered";
       stepId: string;
-      /** "loop": back round a loop, under its bound; "loop_bound": its bound reached, its "then" taken. */
+      /** "loop": back round a loop, under its bound; "loop_bound": its bound reached, its "onward" taken. */
       via: "start" | "next" | "branch" | "manual_jump" | "timeout" | "loop" | "loop_bound";
       /** The loop's name (../trial/loops.ts), when a loop moved the trial. */
       loop?: string;
@@ -50,7 +50,7 @@ export type EventBody =
   | { type: "timer.fired"; timerId: string }
   /** The wizard acted first (an answer, or the trial left the step or ended): it will never fire. */
   | { type: "timer.cancelled"; timerId: string }
-  /** A loop has gone back its `times`: the trial leaves the step `stepId` by the loop's "then", in the same append. */
+  /** A loop has gone back its `times`: the trial leaves the step `stepId` by the loop's "onward", in the same append. */
   | { type: "loop.bound_reached"; stepId: string; loop: string; times: number }
   | { type: "trial.paused" }
   | { type: "trial.resumed" }
