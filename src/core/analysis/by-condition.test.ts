@@ -21,6 +21,7 @@ function trial(
       stepId: name,
       name,
       reached: ms !== null,
+      entered: ms === null ? 0 : 1,
       enteredMs,
       leftMs: ms === null ? null : at,
       durationMs: ms,
@@ -31,6 +32,7 @@ function trial(
     steps: timings,
     unscripted: [],
     branches: { byLogic: 0, byHand: 0 },
+    loops: [],
     answers,
     deviations: Object.fromEntries(deviations ? [["skipped", deviations]] : []),
     totals: {

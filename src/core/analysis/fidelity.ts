@@ -6,6 +6,7 @@ import type { TrialEvent, TrialProtocol } from "@/core/trial";
 import { OUTCOME_WORDS, type UndoneOutcome } from "@/core/trial/outcomes";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import { answerOf, recordedAnswers, type RecordedAnswer } from "./answers";
+import { loopCounts, type LoopCount } from "./loop-counts";
 
 /** `not_sent`, `unknown` and `failed` are the three words of src/core/trial/outcomes.ts. */
 export type ActionOutcome =
@@ -49,6 +50,9 @@ export interface StepTiming {
   stepId: string;
   name: string;
   reached: boolean;
+  /** How many times the trial entered it: more than once round a loop (or by a jump back). */
+  entered: number;
+  /** Its first entry, and when the trial left that visit. */
   enteredMs: number | null;
   leftMs: number | null;
   durationMs: number | null;
@@ -67,6 +71,8 @@ export interface FidelityReport {
     parameters: Record<string, unknown>;
   }>;
   branches: { byLogic: number; byHand: number };
+  /** Each loop of the protocol: how many times it went back, and whether its bound was reached. */
+  loops: LoopCount[];
   /** Every answer recorded, in log order. */
   answers: RecordedAnswer[];
   deviations: Record<string, number>;
@@ -126,6 +132,7 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
       stepId: step.id,
       name: step.name,
       reached: !!entered,
+      entered: entries.filter((e) => e.stepId === step.id).length,
       enteredMs,
       leftMs,
       durationMs: enteredMs !== null && leftMs !== null ? leftMs - enteredMs : null,
@@ -214,6 +221,7 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
       byLogic: log.filter((e) => e.type === "branch.resolved").length,
       byHand: log.filter((e) => e.type === "step.entered" && e.deviation === "manual_jump").length,
     },
+    loops: loopCounts(protocol, events),
     answers: recordedAnswers(protocol, events, names),
     deviations,
     totals: {

@@ -67,6 +67,8 @@ describe("what moved the trial at each step", () => {
     [{ by: "next" }, "the wizard's next"],
     [{ by: "answer", answer: "Mars" }, "the answer “Mars”"],
     [{ by: "jump" }, "the wizard's jump (a deviation)"],
+    [{ by: "loop", round: 2 }, "the loop going back (time 2)"],
+    [{ by: "bound", times: 1 }, "a loop's bound (once) reached"],
   ])("says %j as %s", (move, words) => {
     expect(moveWords(move)).toBe(words);
   });

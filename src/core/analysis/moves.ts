@@ -1,9 +1,11 @@
 // What moved the trial at each step: the path it took, each step it entered
 // with what took it there (the start, the wizard's next, the participant's
-// answer through a branch, a time limit running out, or a jump, which is a deviation) and how many of
+// answer through a branch, a time limit running out, a loop going back or its
+// bound reached, or a jump, which is a deviation) and how many of
 // the step's actions the wizard skipped while in it. Read from the log only,
 // so a step entered twice is two visits.
 import type { TrialEvent } from "@/core/trial";
+import { timesWords } from "@/core/protocol/flow";
 import type { EventBody } from "@/core/trial/types";
 
 type Via = Extract<EventBody, { type: "step.entered" }>["via"];
@@ -13,7 +15,11 @@ export type Move =
   | { by: "next" }
   | { by: "answer"; answer: string }
   | { by: "jump" }
-  | { by: "timer" };
+  | { by: "timer" }
+  /** Back round a loop: `round` is how many times this loop has now gone back. */
+  | { by: "loop"; round: number }
+  /** A loop went back its `times`, so the trial took its way on ("onward"). */
+  | { by: "bound"; times: number };
 
 /**
  * Each way the engine enters a step, as the move a reader is told. A new way
@@ -26,6 +32,8 @@ const MOVED_BY: Record<Via, Move["by"]> = {
   branch: "answer",
   manual_jump: "jump",
   timeout: "timer",
+  loop: "loop",
+  loop_bound: "bound",
 };
 
 export interface StepVisit {
@@ -41,13 +49,25 @@ export interface StepVisit {
 export function stepVisits(events: readonly TrialEvent[]): StepVisit[] {
   const visits: StepVisit[] = [];
   let lastAnswer: string | undefined;
+  let lastBound = 0;
+  const rounds = new Map<string, number>();
   for (const e of events) {
     if (e.type === "answer.recorded") lastAnswer = e.label;
+    if (e.type === "loop.bound_reached") lastBound = e.times;
     if (e.type === "action.skipped" && visits.length) visits.at(-1)!.skipped++;
     if (e.type !== "step.entered") continue;
     const by = MOVED_BY[e.via];
-    // A branch enters its step right after the answer it follows (decide.ts writes them together).
-    const move: Move = by === "answer" ? { by, answer: lastAnswer ?? "" } : { by };
+    const round = (rounds.get(e.loop ?? "") ?? 0) + 1;
+    if (by === "loop") rounds.set(e.loop ?? "", round);
+    // A branch enters its step right after the answer it follows, a loop's way on right after its bound (loops.ts writes them together).
+    const move: Move =
+      by === "answer"
+        ? { by, answer: lastAnswer ?? "" }
+        : by === "loop"
+          ? { by, round }
+          : by === "bound"
+            ? { by, times: lastBound }
+            : { by };
     visits.push({ seq: e.seq, stepId: e.stepId, enteredMs: e.relMs, move, skipped: 0 });
   }
   return visits;
@@ -59,6 +79,8 @@ const MOVE_WORDS: Record<Move["by"], (move: Move) => string> = {
   answer: (move) => `the answer “${(move as Extract<Move, { by: "answer" }>).answer}”`,
   jump: () => "the wizard's jump (a deviation)",
   timer: () => "the time limit running out",
+  loop: (move) => `the loop going back (time ${(move as Extract<Move, { by: "loop" }>).round})`,
+  bound: (move) => `a loop's bound (${timesWords((move as Extract<Move, { by: "bound" }>).times)}) reached`,
 };
 
 /** What moved the trial into a step, in words: "the answer “Mars”". */

@@ -11,7 +11,8 @@ import type { FidelityReport } from "./fidelity";
  * version is then computed again.
  */
 // 2: the answers recorded (answers), for the Results tab's counts per answer.
-export const FIGURES_VERSION = 2;
+// 3: how many times each step was entered (steps[].entered), round loops.
+export const FIGURES_VERSION = 3;
 
 export type ReportFigures = Pick<
   FidelityReport,

@@ -12,7 +12,7 @@ const act = (
 ) => ({ id, type, name, parameters, parallelGroup });
 
 const base: Snapshot = {
-  schemaVersion: 3 as const,
+  schemaVersion: 4 as const,
   experiment: { id: "exp", name: "Storyteller", description: "Kai on Mars", robotId: "nao6-ros2" },
   steps: [
     {
@@ -111,6 +111,13 @@ describe("diffProtocols", () => {
         s.steps[1]!.after = { to: "next" };
       },
       ['changed step: Step "Intro" now leads to the end of the trial (it led to "Story")'],
+    ],
+    [
+      "a step that now goes round a loop",
+      (s) => {
+        s.steps[0]!.after = { to: "again", stepId: s.steps[0]!.id, times: 3, onward: { to: "next" } };
+      },
+      ['changed step: Step "Intro" now leads to "Intro" again, at most 3 times, then "Story" (it led to "Story")'],
     ],
     [
       "a step removed with its actions",

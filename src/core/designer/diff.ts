@@ -1,6 +1,7 @@
 // What changed between two published versions of an experiment, as lines a
 // researcher can read in the version history. Steps and actions are matched
 // by id, which publishing keeps stable; everything is named, never shown by id.
+import { canonicalJson } from "../protocol/canonical";
 import { describeExit } from "../protocol/flow";
 import type { ProtocolSnapshot } from "../protocol/snapshot";
 
@@ -68,10 +69,7 @@ export function diffProtocols(before: ProtocolSnapshot, after: ProtocolSnapshot)
         );
       // "Next" stays "next" when steps move around it: only a changed choice is a change.
       const [chose, chooses] = [old.step.after ?? NEXT, step.after ?? NEXT];
-      if (
-        chose.to !== chooses.to ||
-        (chose.to === "step" && chooses.to === "step" && chose.stepId !== chooses.stepId)
-      ) {
+      if (canonicalJson(chose) !== canonicalJson(chooses)) {
         const [led, leads] = [describeExit(before.steps, old.index), describeExit(after.steps, index)];
         line("changed", "step", `Step ${where} now leads to ${leads} (it led to ${led})`);
       }

@@ -182,6 +182,46 @@ describe("exporting and importing an experiment", () => {
     expect(again.steps[0]!.actions[0]!.timeLimit).toEqual({ seconds: 10, after: { to: "end" } });
   });
 
+  it("keeps loops, their steps named by key, on a step and on a time limit", () => {
+    const draft: DesignDraft = {
+      name: "Ask again",
+      description: "",
+      robotId: "nao6-ros2",
+      steps: [
+        {
+          id: "u1",
+          name: "Ask",
+          description: "",
+          after: { to: "again", stepId: "u1", times: 2, onward: { to: "next" } },
+          timeLimit: { seconds: 10, after: { to: "again", stepId: "u1", times: 1, onward: { to: "end" } } },
+          actions: [],
+        },
+        {
+          id: "u2",
+          name: "Bye",
+          description: "",
+          after: { to: "again", stepId: "u1", times: 3, onward: { to: "step", stepId: "u2" } },
+          actions: [],
+        },
+      ],
+    };
+    const text = exportExperiment(draft);
+    const file = JSON.parse(text);
+    expect(file.steps.map((s: { after?: unknown }) => s.after)).toEqual([
+      { again: "@step-1", times: 2 },
+      { again: "@step-1", times: 3, onward: "@step-2" },
+    ]);
+    expect(file.steps[0].timeLimit).toEqual({ seconds: 10, after: { again: "@step-1", times: 1, onward: "end" } });
+    const again = imported(text);
+    const [ask, bye] = again.steps.map((step) => step.id);
+    expect(again.steps.map((step) => step.after)).toEqual([
+      { to: "again", stepId: ask, times: 2, onward: { to: "next" } },
+      { to: "again", stepId: ask, times: 3, onward: { to: "step", stepId: bye } },
+    ]);
+    expect(again.steps[0]!.timeLimit!.after).toEqual({ to: "again", stepId: ask, times: 1, onward: { to: "end" } });
+    expect(exportExperiment(again)).toBe(text);
+  });
+
   it("reads a version 1 file, whose steps each go on to the next", () => {
     const file = JSON.parse(exportExperiment(storyteller));
     file.formatVersion = 1;
@@ -227,7 +267,7 @@ describe("exporting and importing an experiment", () => {
       [
         "{",
         '  "format": "hristudio.experiment",',
-        '  "formatVersion": 3,',
+        '  "formatVersion": 4,',
         '  "experiment": {',
         '    "name": "Tiny",',
         '    "description": "",',
@@ -343,10 +383,10 @@ describe("importing a bad file", () => {
     ],
     [
       "a newer format",
-      edit((f) => (f.formatVersion = 4)),
-      [["$.formatVersion", "is 4: the file comes from a newer HRIStudio"]],
+      edit((f) => (f.formatVersion = 5)),
+      [["$.formatVersion", "is 5: the file comes from a newer HRIStudio"]],
     ],
-    ["a version as text", edit((f) => (f.formatVersion = "1")), [["$.formatVersion", "must be 1 or 2 or 3"]]],
+    ["a version as text", edit((f) => (f.formatVersion = "1")), [["$.formatVersion", "must be 1 or 2 or 3 or 4"]]],
     ["no steps", edit((f) => delete f.steps), [["$.steps", "must be a list"]]],
     ["no experiment", edit((f) => delete f.experiment), [["$.experiment", "must be an object"]]],
     ["a blank robot", edit((f) => (f.experiment.robot = " ")), [["$.experiment.robot", "must be a non-empty string"]]],
@@ -429,6 +469,23 @@ describe("importing a bad file", () => {
         f.steps[2].actions[2].timeLimit = { seconds: 10 };
       }),
       [["$.steps[2].actions[2].timeLimit", "is not part of an experiment file"]],
+    ],
+    [
+      "a loop in a version 3 file, which had none",
+      edit((f) => {
+        f.formatVersion = 3;
+        f.steps[1].after = { again: "@step-1", times: 2 };
+      }),
+      [["$.steps[1].after", "is a loop, which files of version 3 cannot hold (loops came in version 4)"]],
+    ],
+    [
+      "a loop to a missing step, for no time, into another loop",
+      edit((f) => (f.steps[1].after = { again: "@step-9", times: 0, onward: { again: "@step-1", times: 1 } })),
+      [
+        ["$.steps[1].after.again", '"@step-9" names no step of this file'],
+        ["$.steps[1].after.times", "must be a whole number of times, from 1 to 20"],
+        ["$.steps[1].after.onward", "a loop cannot go on into another"],
+      ],
     ],
     [
       "a branch to a missing step",

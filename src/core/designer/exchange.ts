@@ -1,9 +1,9 @@
 // The experiment file: how a protocol leaves one HRIStudio and enters another
-// (a lab sharing its study with another lab). Format version 3:
+// (a lab sharing its study with another lab). Format version 4:
 //
 //   {
 //     "format": "hristudio.experiment",
-//     "formatVersion": 3,
+//     "formatVersion": 4,
 //     "experiment": { "name": "…", "description": "…", "robot": "nao6-ros2" },
 //     "steps": [
 //       {
@@ -23,7 +23,9 @@
 // names its targets by key ("@step-3"), a step's "after" is a key or "end" (left
 // out for "the next step"; version 1 files have none), a time limit (version 3,
 // on a step or a record_answer) is { "seconds": 10, "after": "@step-4" },
-// its "after" written as a step's is, and run-together groups are renamed
+// its "after" written as a step's is, a loop (version 4) is { "again":
+// "@step-2", "times": 2, "onward": "end" } ("onward" written as an "after",
+// left out for the next step), and run-together groups are renamed
 // "group-1", "group-2"… in order of first appearance ("runTogether" is left out
 // for an action that runs alone). The writer is deterministic (fixed key order,
 // parameters sorted, 2-space indent, final newline) so an exported file diffs
@@ -42,7 +44,9 @@ import {
   DESIGN_LIMITS,
   DOCUMENT_VERSION,
   type experimentFields,
+  MAX_LOOP_TIMES,
   MAX_TIME_LIMIT_SECONDS,
+  type Onward,
   type stepSchema,
 } from "../protocol/document";
 import { fieldsAfter, type FilePlace, READABLE_VERSIONS, upgradeFile } from "../protocol/versions";
@@ -97,16 +101,26 @@ type FileAction = Omit<z.input<typeof actionSchema>, "id" | "parallelGroup" | "t
   timeLimit?: FileTimeLimit;
 };
 
+/** "Go back to a step at most `times` times, then `onward`" ("@step-K" or "end"; absent for the next step). */
+interface FileLoop {
+  again: string;
+  times: number;
+  onward?: string;
+}
+
+/** Where a step (or a time limit) leads: "@step-K", "end", or a loop; absent for the next step. */
+type FileAfter = string | FileLoop;
+
 /** A time limit whose way on is written as a step's "after" is. */
 interface FileTimeLimit {
   seconds: number;
-  after?: string;
+  after?: FileAfter;
 }
 
-/** A step keyed "step-K"; "after" is "@step-K" or "end", absent for the next step. */
+/** A step keyed "step-K"; "after" is "@step-K", "end" or a loop, absent for the next step. */
 type FileStep = Omit<z.input<typeof stepSchema>, "id" | "after" | "actions" | "timeLimit"> & {
   key: string;
-  after?: string;
+  after?: FileAfter;
   timeLimit?: FileTimeLimit;
   actions: FileAction[];
 };
@@ -272,13 +286,22 @@ function fromFile(value: object, names: Readonly<Record<string, string | null>>)
   return Object.fromEntries(fields);
 }
 
-function fileAfter(after: After | undefined, keys: Map<string, string>): string | undefined {
+function fileAfter(after: After | undefined, keys: Map<string, string>): FileAfter | undefined {
+  if (after?.to === "again") {
+    const again = keys.get(after.stepId);
+    return again && { again, times: after.times, onward: fileAfter(after.onward, keys) as string | undefined };
+  }
   if (after?.to === "end") return "end";
   // An after to a step that is gone is already an error in the designer; like a branch target, it is left out.
   return after?.to === "step" ? keys.get(after.stepId) : undefined;
 }
 
-function draftAfter(after: string | undefined, ids: Map<string, string>): After {
+function draftAfter(after: FileAfter | undefined, ids: Map<string, string>): After {
+  if (typeof after === "object") {
+    const stepId = ids.get(after.again);
+    const onward = draftAfter(after.onward, ids) as Onward;
+    return stepId ? { to: "again", stepId, times: after.times, onward } : onward;
+  }
   if (after === "end") return { to: "end" };
   const stepId = after === undefined ? undefined : ids.get(after);
   return stepId ? { to: "step", stepId } : { to: "next" };
@@ -409,10 +432,26 @@ function* check(file: unknown): Work<ImportProblem[]> {
     text(step, "description", path, MAX_TEXT, "optional");
   });
   const leadsTo = (after: unknown, at: string) => {
+    if (isObject(after)) {
+      if (version < 4) flag(at, `is a loop, which files of version ${version} cannot hold (loops came in version 4)`);
+      else loop(after, at);
+      return;
+    }
     if (after === undefined || after === "end") return;
     if (typeof after !== "string" || !after.startsWith("@"))
       flag(at, 'must be "end" or name a step by "@" and its key, such as "@step-2"');
     else if (!keys.has(after.slice(1))) flag(at, `"${after}" names no step of this file`);
+  };
+  const loop = (after: Record<string, unknown>, at: string) => {
+    if (!object(after, at, ["again", "times", "onward"])) return;
+    if (typeof after.again !== "string" || !after.again.startsWith("@"))
+      flag(`${at}.again`, 'must name the step it goes back to by "@" and its key, such as "@step-2"');
+    else if (!keys.has(after.again.slice(1))) flag(`${at}.again`, `"${after.again}" names no step of this file`);
+    const times = after.times;
+    if (typeof times !== "number" || !Number.isInteger(times) || times < 1 || times > MAX_LOOP_TIMES)
+      flag(`${at}.times`, `must be a whole number of times, from 1 to ${MAX_LOOP_TIMES}`);
+    if (isObject(after.onward)) flag(`${at}.onward`, 'must be "end" or name a step: a loop cannot go on into another');
+    else leadsTo(after.onward, `${at}.onward`);
   };
   const timeLimit = (owner: Record<string, unknown>, path: string) => {
     const limit = owner.timeLimit;

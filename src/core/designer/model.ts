@@ -191,7 +191,8 @@ export const commands = {
     label: "set where the step leads",
     apply: (d) => {
       locateStep(d, stepId);
-      if (after.to === "step") locateStep(d, after.stepId);
+      if (after.to === "step" || after.to === "again") locateStep(d, after.stepId);
+      if (after.to === "again" && after.onward.to === "step") locateStep(d, after.onward.stepId);
       return replaceStep(d, stepId, (s) => ({ ...s, after }));
     },
   }),

@@ -339,3 +339,64 @@ describe("on this server's ways to the robot", () => {
     expect(validateDesign(postures, nao.value)).toEqual([]);
   });
 });
+
+describe("bounded loops", () => {
+  // s1, s2, s3 each say a line; `afters` sets where each leads.
+  const steps = (...afters: Array<After | undefined>) => {
+    const d = draft([say()], [say()], [say()]);
+    afters.forEach((after, i) => {
+      if (after) d.steps[i]!.after = after;
+    });
+    return d;
+  };
+  const again = (stepId: string, onward: After & { to: "next" | "step" | "end" }): After => ({
+    to: "again",
+    stepId,
+    times: 2,
+    onward,
+  });
+
+  it.each<[string, DesignDraft, string[]]>([
+    ["a step that asks again at most twice, then goes on", steps(undefined, again("s2", { to: "next" })), []],
+    ["back to an earlier step, then on past the loop", steps(undefined, again("s1", { to: "step", stepId: "s3" })), []],
+    [
+      "back to an earlier step, then the end",
+      steps(undefined, again("s1", { to: "end" }), { to: "end" }),
+      ["error unreachable_step s3"],
+    ],
+    [
+      "its last time leads back inside the loop: no way out (told once, not again as an endless trial)",
+      steps(undefined, again("s1", { to: "step", stepId: "s1" })),
+      ["error loop_no_way_out s2", "error unreachable_step s3"],
+    ],
+    [
+      "its last time leads to a step that goes round again",
+      steps(undefined, again("s1", { to: "next" }), { to: "step", stepId: "s2" }),
+      ["error loop_no_way_out s2"],
+    ],
+    ["a loop that goes forward", steps(again("s2", { to: "next" })), ["error loop_forward s1"]],
+    [
+      "a loop back to a step that is gone",
+      steps(undefined, again("gone", { to: "next" })),
+      ["error after_target_missing s2"],
+    ],
+    [
+      "a time limit whose loop has no way out",
+      (() => {
+        const d = steps();
+        d.steps[1]!.timeLimit = { seconds: 10, after: again("s1", { to: "step", stepId: "s2" }) };
+        return d;
+      })(),
+      ["error loop_no_way_out s2"],
+    ],
+  ])("%s", (_name, design, expected) => {
+    expect(summary(validateDesign(design, null))).toEqual(expected);
+  });
+
+  it("names the loop's steps and where its last time leads", () => {
+    const design = steps(undefined, again("s1", { to: "step", stepId: "s1" }));
+    expect(validateDesign(design, null)[0]!.message).toEqual(
+      'The loop from step "Step 2" back to step "Step 1" has no way out: after going back 2 times it goes on to step "Step 1", which is inside the loop. Choose where it goes after its last time: a step outside the loop, or the end of the trial.',
+    );
+  });
+});

@@ -11,8 +11,10 @@ import {
   type Plugin,
 } from "../plugins";
 import { finish, type Work } from "../work";
-import { exitBy, exitOf, timeLimitsOf } from "../protocol/flow";
+import { exitOf, timeLimitsOf, waysBy } from "../protocol/flow";
 import { blockFor, type Block } from "./blocks";
+import { loopIssues } from "./loop-issues";
+import { stepLabel, upper } from "./step-label";
 import type { DesignAction, DesignDraft, DesignStep } from "./types";
 
 export interface DesignIssue {
@@ -180,12 +182,12 @@ function optionsOf(action: DesignAction): Option[] {
 function timeLimitExits(draft: DesignDraft, s: number, tell: (message: string) => void): number[] {
   const step = draft.steps[s]!;
   return timeLimitsOf(step).flatMap((limit) => {
-    const exit = exitBy(draft.steps, s, limit.after);
-    if (exit.to === "missing")
+    const exits = waysBy(draft.steps, s, limit.after).map((way) => way.exit);
+    if (exits.some((exit) => exit.to === "missing"))
       tell(
         `${upper(stepLabel(step, s))} has a time limit that leads to a step that is no longer in the experiment. Choose where it leads in the properties.`,
       );
-    return exit.to === "step" ? [exit.index] : [];
+    return exits.flatMap((exit) => (exit.to === "step" ? [exit.index] : []));
   });
 }
 
@@ -209,8 +211,9 @@ function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[
       for (const route of routes ?? []) if (route.to !== null) exits.push(route.to);
       if (routes?.length && routes.every((r) => r.to !== null)) return { exits, ends: false };
     }
-    const exit = exitOf(draft.steps, s);
-    if (exit.to === "missing") {
+    // A loop leads two ways: back, and on after its last time.
+    const ways = waysBy(draft.steps, s, step.after ?? { to: "next" }).map((way) => way.exit);
+    if (ways.some((exit) => exit.to === "missing")) {
       const message = `${upper(stepLabel(step, s))} leads to a step that is no longer in the experiment. Choose where it leads in the step's properties.`;
       issues.push({
         step: s,
@@ -218,9 +221,15 @@ function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[
         issue: { severity: "error", code: "after_target_missing", message, stepId: step.id },
       });
     }
-    return exit.to === "step" ? { exits: [...exits, exit.index], ends: false } : { exits, ends: true };
+    const onward = ways.flatMap((exit) => (exit.to === "step" ? [exit.index] : []));
+    return { exits: [...exits, ...onward], ends: ways.some((exit) => exit.to !== "step") };
   });
   issues.push(...fallThroughIssues(draft, indexById));
+  const loops = loopIssues(
+    draft.steps,
+    flow.map((f) => f.exits),
+  );
+  issues.push(...loops.map(({ step, issue }) => ({ step, action: -1, issue })));
   const reached = new Set([0]);
   for (const s of reached) for (const next of flow[s]!.exits) reached.add(next);
   const canEnd = flow.map((f) => f.ends);
@@ -242,7 +251,8 @@ function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[
     });
   });
   const stuck = draft.steps.findIndex((_, s) => reached.has(s) && !canEnd[s]);
-  if (stuck >= 0) {
+  // A loop with no way out is already told, with its steps named.
+  if (stuck >= 0 && !loops.some((l) => l.issue.code === "loop_no_way_out")) {
     const step = draft.steps[stuck]!;
     const message = `The trial can never end from ${stepLabel(step, stuck)}: every way on loops back without reaching an "End trial" block or a step that leads to the end.`;
     issues.push({ step: stuck, action: -1, issue: { severity: "error", code: "no_end", message, stepId: step.id } });
@@ -360,12 +370,4 @@ function titled(message: string, parameter: string, block: Block | undefined): s
 
 function actionLabel(action: DesignAction, block: Block | undefined): string {
   return `"${action.name.trim() || block?.name || action.type}"`;
-}
-
-function stepLabel(step: DesignStep, index: number): string {
-  return step.name.trim() ? `step "${step.name.trim()}"` : `step ${index + 1}`;
-}
-
-function upper(text: string): string {
-  return text.charAt(0).toUpperCase() + text.slice(1);
 }

@@ -7,8 +7,7 @@
 // The document carries its format version (a snapshot's schemaVersion, a
 // file's formatVersion); ./versions.ts reads every earlier one. What the
 // issue's later parts add goes here, each a bump of DOCUMENT_VERSION with its
-// upgrade in ./versions.ts (time limits came in 3):
-// - a bounded loop ("at most K times, then …"): a member of afterSchema;
+// upgrade in ./versions.ts (time limits came in 3, bounded loops in 4):
 // - a variant per condition of an action or a step: a field of actionSchema and stepSchema.
 import { z } from "zod";
 
@@ -43,7 +42,7 @@ const key = z.string({ error: "is required" }).min(1, "is required").max(100, "i
  * elsewhere: the next step in the list (the last step's "next" ends the
  * trial), a named step (answers rejoin this way), or the trial's end.
  */
-export const afterSchema = z.discriminatedUnion(
+const onwardSchema = z.discriminatedUnion(
   "to",
   [
     z.object({ to: z.literal("next") }),
@@ -52,6 +51,29 @@ export const afterSchema = z.discriminatedUnion(
   ],
   { error: 'must say where the step leads: "next", a step, or "end"' },
 );
+
+/** The most times a loop may go round: more is not a re-ask but a trial that never ends for the participant. */
+export const MAX_LOOP_TIMES = 20;
+
+/**
+ * "Go back to <step>, at most K times, then …": the way back is taken while
+ * it has been taken fewer than K times in this trial, then "onward" (never
+ * another loop, so a bound always ends).
+ */
+export const loopSchema = z.object({
+  to: z.literal("again"),
+  stepId: key,
+  times: z
+    .number({ error: "must be a number of times" })
+    .int("must be a whole number of times")
+    .min(1, "must be at least 1 time")
+    .max(MAX_LOOP_TIMES, `must be at most ${MAX_LOOP_TIMES} times`),
+  onward: onwardSchema,
+});
+
+export const afterSchema = z.discriminatedUnion("to", [onwardSchema, loopSchema], {
+  error: 'must say where the step leads: "next", a step, "end", or back to a step ("again")',
+});
 
 const MAX_PARAMETERS_BYTES = 64 * 1024;
 
@@ -149,6 +171,8 @@ export const draftSchema = experimentFields.extend({
 });
 
 export type After = z.infer<typeof afterSchema>;
+export type Onward = z.infer<typeof onwardSchema>;
+export type Loop = z.infer<typeof loopSchema>;
 export type TimeLimit = z.infer<typeof timeLimitSchema>;
 export type DesignAction = z.infer<typeof actionSchema>;
 export type DesignStep = z.infer<typeof stepSchema>;
@@ -161,9 +185,10 @@ export type DesignDraft = z.infer<typeof draftSchema>;
  * robot is robotId (a note for the wizard came in 2 too, optional, so a
  * design without notes hashes as before). 3: a step and a record_answer may
  * have a time limit ("timeLimit", left out when none, so earlier documents
- * read and hash as they were).
+ * read and hash as they were). 4: an "after" may go back to a step a bounded
+ * number of times (`{ to: "again", stepId, times, onward }`).
  */
-export const DOCUMENT_VERSION = 3;
+export const DOCUMENT_VERSION = 4;
 
 /** The published form: the draft under the experiment's id and the document's version, frozen. */
 export const snapshotSchema = z.object({

@@ -1,27 +1,49 @@
 // Where a step leads: the one reading of a step's "after" that the trial
 // engine, the designer's checks, its flow map and the rehearsal preview share.
-import type { After, TimeLimit, TrialProtocol } from "./document";
+import type { After, Loop, TimeLimit, TrialProtocol } from "./document";
 
 type Steps = TrialProtocol["steps"];
 
 /** A step's way on when its actions are done and no branch took the trial elsewhere. */
 export type Exit = { to: "step"; index: number } | { to: "end" } | { to: "missing"; stepId: string };
 
-export function exitOf(steps: Steps, index: number): Exit {
-  return exitBy(steps, index, steps[index]?.after ?? { to: "next" });
+/** `taken`: how many times this trial has gone back by the step's loop, if its "after" is one. */
+export function exitOf(steps: Steps, index: number, taken = 0): Exit {
+  return exitBy(steps, index, steps[index]?.after ?? { to: "next" }, taken);
 }
 
-/** Where `after`, read from the step at `index`, leads: a step's own way on, or its time limit's. */
-export function exitBy(steps: Steps, index: number, after: After): Exit {
+/**
+ * Where `after`, read from the step at `index`, leads: a step's own way on, or
+ * its time limit's. A loop leads back while it has been taken fewer than its
+ * `times` (`taken` so far), then where its "onward" leads.
+ */
+export function exitBy(steps: Steps, index: number, after: After, taken = 0): Exit {
   if (after.to === "end") return { to: "end" };
   if (after.to === "next") return index + 1 < steps.length ? { to: "step", index: index + 1 } : { to: "end" };
+  if (after.to === "again" && taken >= after.times) return exitBy(steps, index, after.onward);
   const target = steps.findIndex((s) => s.id === after.stepId);
   return target < 0 ? { to: "missing", stepId: after.stepId } : { to: "step", index: target };
 }
 
+/** Every way `after` may lead: a loop's way back (with its bound) and its "onward"; otherwise the one. */
+export function waysBy(steps: Steps, index: number, after: After): Array<{ exit: Exit; loop?: Loop }> {
+  if (after.to !== "again") return [{ exit: exitBy(steps, index, after) }];
+  return [{ exit: exitBy(steps, index, after), loop: after }, { exit: exitBy(steps, index, after.onward) }];
+}
+
 /** Where a step leads, in words that follow "leads to": `"Goodbye"`, "the end of the trial". */
 export function describeExit(steps: Steps, index: number): string {
-  const exit = exitOf(steps, index);
+  const after = steps[index]?.after;
+  const [back, then] = waysBy(steps, index, after ?? { to: "next" }).map((way) => describe(steps, way.exit));
+  return after?.to === "again" ? `${back} again, at most ${timesWords(after.times)}, then ${then}` : back!;
+}
+
+/** "once", "2 times": how often a loop may go back. */
+export function timesWords(times: number): string {
+  return times === 1 ? "once" : `${times} times`;
+}
+
+function describe(steps: Steps, exit: Exit): string {
   if (exit.to === "end") return "the end of the trial";
   if (exit.to === "missing") return "a step that is no longer in the experiment";
   const step = steps[exit.index]!;

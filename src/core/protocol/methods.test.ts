@@ -238,6 +238,37 @@ describe("the methods text", () => {
     expect(md).not.toContain("seated");
   });
 
+  it("names each loop in a Loops section: the step's own, and a time limit's, with their bounds", () => {
+    const looping: MethodsInput = {
+      ...storyteller,
+      snapshot: snapshotOf({
+        id: "exp-4",
+        name: "Ask again",
+        description: "",
+        robotId: "nao6-ros2",
+        steps: [
+          {
+            ...step("ask", "Ask", [say("q", "What color?")], {
+              to: "again",
+              stepId: "ask",
+              times: 2,
+              onward: { to: "next" },
+            }),
+            timeLimit: { seconds: 10, after: { to: "again", stepId: "ask", times: 1, onward: { to: "end" } } },
+          },
+          step("bye", "Goodbye", [say("b", "Bye!")]),
+        ],
+      }),
+    };
+    const plain = methodsPlainText(looping);
+    expect(plain).toContain(
+      "Loops\n\nAfter “Ask”, the trial went back to “Ask”, at most 2 times, and then continued to “Goodbye”. When the time limit of 10 seconds in “Ask” ran out, the trial went back to “Ask”, at most once, and then ended.",
+    );
+    // The step's paragraph leaves where it leads to the Loops section: it goes back first.
+    expect(plain).toContain("1. Ask. The robot said “What color?”\n");
+    expect(methodsPlainText(rejoining)).not.toContain("Loops");
+  });
+
   it("keeps the researcher's words unescaped in the plain text", () => {
     expect(methodsPlainText(rejoining)).toContain("“Goodbye *friend*!”");
   });

@@ -1,6 +1,6 @@
 // The methods text: a published version described in prose a paper can use
 // (robot, steps in order, exact speech, what ran together, pauses, questions
-// and where each answer led, time limits and where each led, questionnaires,
+// and where each answer led, time limits and where each led, loops, questionnaires,
 // conditions, the version's hash).
 // Written once against a style, so the Markdown and the plain text never differ
 // in what they say.
@@ -8,9 +8,10 @@ import { type ActionNames, actionName, blockName } from "../designer/action-name
 import { INSTRUMENT_NAMES } from "../questionnaires/instruments";
 import type { Instrument } from "../questionnaires/definition";
 import type { StudySettings } from "../studies/settings";
+import { loopsOf } from "../trial/loops";
 import { answerOptions, branchTarget } from "../trial/protocol";
 import type { DesignAction, ProtocolSnapshot, TimeLimit } from "./document";
-import { exitBy, exitOf } from "./flow";
+import { exitBy, exitOf, timesWords } from "./flow";
 
 export interface MethodsInput {
   snapshot: ProtocolSnapshot;
@@ -95,6 +96,7 @@ function methods(input: MethodsInput, s: Style): string {
       .join(" "),
     s.heading("Procedure"),
     procedure(input, s),
+    ...loops(input.snapshot, s),
     s.heading("Questionnaires"),
     questionnaires(input, s),
     s.heading("Conditions and assignment"),
@@ -110,6 +112,29 @@ type Described = Pick<MethodsInput, "snapshot" | "names">;
 
 function stepName(s: Style, steps: Steps, index: number): string {
   return quote(s, steps[index]!.name);
+}
+
+/** The Loops section, when the protocol has any: a sentence per loop. */
+function loops(snapshot: ProtocolSnapshot, s: Style): string[] {
+  const sentences = loopSentences(snapshot, s);
+  return sentences.length ? [s.heading("Loops"), sentences.join(" ")] : [];
+}
+
+/** Each loop in a sentence: what made it go back, to which step, at most how often, and where the trial went on. */
+export function loopSentences(snapshot: Pick<ProtocolSnapshot, "steps">, s: Style): string[] {
+  const { steps } = snapshot;
+  return loopsOf(snapshot).map(({ stepId, loop, seconds: limit }) => {
+    const index = steps.findIndex((step) => step.id === stepId);
+    const back = steps.findIndex((step) => step.id === loop.stepId);
+    const when =
+      limit === undefined
+        ? `After ${stepName(s, steps, index)}`
+        : `When the time limit of ${seconds(limit)} in ${stepName(s, steps, index)} ran out`;
+    const onward = exitBy(steps, index, loop.onward);
+    const then = onward.to === "step" ? `then continued to ${stepName(s, steps, onward.index)}` : "then ended";
+    const to = back < 0 ? "a step that is no longer in the experiment" : stepName(s, steps, back);
+    return `${when}, the trial went back to ${to}, at most ${timesWords(loop.times)}, and ${then}.`;
+  });
 }
 
 /** Each step as a numbered paragraph: what happened, in order, and where it led. */
@@ -132,7 +157,8 @@ export function stepParagraphs(input: Described, s: Style): string[] {
   return steps.map((step, index) => {
     const sentences = stepSentences(input, s, index);
     const ended = sentences.ended;
-    if (!ended) {
+    // A loop is told in its own section, with its bound and where the trial went on.
+    if (!ended && step.after?.to !== "again") {
       const exit = exitOf(steps, index);
       if (exit.to === "end") sentences.text.push("The trial then ended.");
       else if (exit.to === "missing") sentences.text.push("It then led to a step that is no longer in the experiment.");

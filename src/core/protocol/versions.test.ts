@@ -49,6 +49,17 @@ describe("a version published before today's format", () => {
     }
   });
 
+  it("a version 3 document (time limits, no loops) reads as it was, but for its version", () => {
+    const three = { ...readSnapshot(published("quiz.v2.snapshot.json").snapshot), schemaVersion: 3 };
+    three.steps[0]!.timeLimit = { seconds: 10, after: { to: "end" } };
+    const stored = JSON.stringify(three);
+    expect(readSnapshot(three)).toEqual({ ...three, schemaVersion: DOCUMENT_VERSION });
+    expect(JSON.stringify(three)).toBe(stored);
+    // Today's version may hold what version 3 could not: a loop.
+    three.steps[0]!.after = { to: "again", stepId: three.steps[0]!.id, times: 2, onward: { to: "next" } };
+    expect(snapshotSchema.safeParse({ ...three, schemaVersion: DOCUMENT_VERSION }).success).toBe(true);
+  });
+
   it("the quiz of version 2 still runs its rejoin and its end: each answer's path", () => {
     const quiz = readSnapshot(published("quiz.v2.snapshot.json").snapshot);
     const path = (optionId: string) => rehearse(quiz, { "ask-answer": optionId }).steps.map((s) => s.stepId);
@@ -90,6 +101,8 @@ describe("an exchange file of an earlier format", () => {
     [1, "step", ["after", "timeLimit"]],
     [1, "action", ["timeLimit"]],
     [2, "step", ["timeLimit"]],
+    // A loop is a value of "after", not a field: a file of version 3 holding one is refused by the after's own check.
+    [3, "step", []],
     [DOCUMENT_VERSION, "step", []],
   ])("a file of version %i may not carry, in a %s: %j", (version, place, fields) => {
     expect(fieldsAfter(version, place as "step" | "action")).toEqual(fields);

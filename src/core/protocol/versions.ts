@@ -42,6 +42,13 @@ const UPGRADES: Upgrade[] = [
     snapshot: (snapshot) => snapshot,
     file: (file) => file,
   },
+  {
+    to: 4,
+    fileFields: {},
+    // Version 3 had no loops: every "after" it wrote reads as it was.
+    snapshot: (snapshot) => snapshot,
+    file: (file) => file,
+  },
 ];
 
 /** Every version this HRIStudio reads: 1 up to today's. */

@@ -145,6 +145,16 @@ describe("the study's methods text says each fact", () => {
   });
 });
 
+/** The protocol with its last step going back to the first once, then ending. */
+const looping = (protocol: NonNullable<ConditionFacts["protocol"]>) => {
+  const steps = protocol.snapshot.steps.map((st, i, all) =>
+    i === all.length - 1
+      ? { ...st, after: { to: "again" as const, stepId: all[0]!.id, times: 1, onward: { to: "end" as const } } }
+      : st,
+  );
+  return { ...protocol, snapshot: { ...protocol.snapshot, steps } };
+};
+
 describe("the study's design decides what is said", () => {
   it.each([
     {
@@ -158,6 +168,21 @@ describe("the study's design decides what is said", () => {
       says: "The study had one condition, “Still”: every participant followed the same protocol.",
       saysNot: "Assignment",
     },
+    {
+      name: "a loop, told once when every condition's protocol has it",
+      facts: {
+        ...study,
+        conditions: [condition({}), still].map((c) => ({ ...c, protocol: looping(c.protocol!) })),
+      },
+      says: "Loops\n\nAfter “Goodbye”, the trial went back to “Greeting”, at most once, and then ended.",
+      saysNot: "In “Still”: After",
+    },
+    {
+      name: "a loop in one condition only, named with it",
+      facts: { ...study, conditions: [condition({}), { ...still, protocol: looping(still.protocol!) }] },
+      says: "In “Still”: After “Goodbye”, the trial went back to “Greeting”, at most once, and then ended.",
+    },
+    { name: "no loop: no Loops section", facts: study, says: "Protocol", saysNot: "Loops" },
     {
       name: "an unpublished experiment",
       facts: { ...study, conditions: [condition({}), { ...still, protocol: null }] },

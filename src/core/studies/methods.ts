@@ -7,7 +7,16 @@
 import type { Spread } from "../analysis/study-summary";
 import type { ActionNames } from "../designer/action-name";
 import type { ProtocolSnapshot } from "../protocol/document";
-import { joinAnd, MARKDOWN, PLAIN, plural, quote, type Style, stepParagraphs } from "../protocol/methods";
+import {
+  joinAnd,
+  loopSentences,
+  MARKDOWN,
+  PLAIN,
+  plural,
+  quote,
+  type Style,
+  stepParagraphs,
+} from "../protocol/methods";
 import type { Instrument } from "../questionnaires/definition";
 import type { StudySettings } from "./settings";
 
@@ -103,6 +112,7 @@ const SECTIONS: Section[] = [
   { heading: "Blinding", write: blinding },
   { heading: "Robots", write: robots },
   { heading: "Protocol", write: protocol },
+  { heading: "Loops", write: loops },
   { heading: "Step timings", write: timings },
   { heading: "Questionnaires", write: questionnaires },
   { heading: "Coding and agreement", write: coding },
@@ -229,6 +239,17 @@ function protocol(f: StudyFacts, s: Style): string[] {
     `They differed in these steps (numbered as in each condition's own protocol):\n\n${differing.join("\n\n")}`,
     ...note,
   ];
+}
+
+/** Each condition's loops, said once when the conditions' protocols loop alike. */
+function loops(f: StudyFacts, s: Style): string[] {
+  const told = f.conditions.flatMap((c) =>
+    c.protocol ? [{ name: c.name, text: loopSentences(c.protocol.snapshot, s).join(" ") }] : [],
+  );
+  const looping = told.filter((t) => t.text);
+  if (!looping.length) return [];
+  if (looping.length === told.length && looping.every((t) => t.text === looping[0]!.text)) return [looping[0]!.text];
+  return looping.map((t) => `In ${quote(s, t.name)}: ${t.text}`);
 }
 
 function timings(f: StudyFacts, s: Style): string[] {

@@ -1,8 +1,8 @@
 // The trial engine: (state, command) → the events it causes, or a rejection
 // the wizard can read. Pure: the runtime supplies ids, clock and robot.
 import { actionName } from "../designer/action-name";
-import { exitOf } from "../protocol/flow";
 import { applyInPlace } from "./fold";
+import { exitNow, follow, loopName } from "./loops";
 import { answerOptions, branchTarget, findAction, findStep, nextUnit } from "./protocol";
 import { FINISHED, timerFired, withTimers } from "./timers";
 import type { Command, Decision, DeviationKind, EngineEvent, ProtocolAction, TrialProtocol, TrialState } from "./types";
@@ -100,10 +100,8 @@ function next(protocol: TrialProtocol, state: TrialState): Decision {
   if (holding) return no(`Wait: the ${Number(holding.parameters.seconds ?? 0)} s pause is still running.`);
   const unit = nextUnit(protocol, state);
   if (unit.length > 0) return request(state, unit, undefined);
-  const exit = exitOf(protocol.steps, findStep(protocol, state.currentStepId)!.index);
-  // An "after" to a step that is gone cannot be published; in a rehearsal it ends the trial.
-  if (exit.to !== "step") return ok({ type: "trial.completed" });
-  return ok({ type: "step.entered", stepId: protocol.steps[exit.index]!.id, via: "next" });
+  const { step, index } = findStep(protocol, state.currentStepId)!;
+  return ok(...follow(protocol, state, index, step.after ?? { to: "next" }, loopName(step.id), "next"));
 }
 
 function trigger(protocol: TrialProtocol, state: TrialState, actionId: string): Decision {
@@ -268,6 +266,6 @@ function robotReport(state: TrialState, command: RobotReportCommand): Decision {
 /** The protocol's end: a step that leads to the end, with nothing left waiting. */
 function reachedEnd(protocol: TrialProtocol, state: TrialState): boolean {
   const current = findStep(protocol, state.currentStepId);
-  if (!current || exitOf(protocol.steps, current.index).to === "step") return false;
+  if (!current || exitNow(protocol, state, current.index).to === "step") return false;
   return current.step.actions.every((a) => state.actions[a.id]?.status !== "waiting");
 }

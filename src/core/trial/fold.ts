@@ -24,6 +24,7 @@ export function initialState(protocol: TrialProtocol): TrialState {
     stepActions,
     timers: {},
     pausedAtMs: null,
+    loops: {},
     lastSeq: 0,
   };
 }
@@ -36,6 +37,7 @@ export function applyAll(state: TrialState, events: readonly TrialEvent[]): Tria
     answers: { ...state.answers },
     path: [...state.path],
     timers: { ...state.timers },
+    loops: { ...state.loops },
   };
   for (const event of events) advance(next, event);
   return next;
@@ -102,6 +104,7 @@ function advance(next: TrialState, event: TrialEvent): void {
         for (const id of next.stepActions[event.stepId] ?? []) next.actions[id] = WAITING;
       next.currentStepId = event.stepId;
       next.path.push(event.stepId);
+      if (event.via === "loop" && event.loop) next.loops[event.loop] = (next.loops[event.loop] ?? 0) + 1;
       break;
     case "answer.recorded":
       next.answers[event.actionId] = event.optionId;

@@ -65,6 +65,24 @@ describe("the flow map's edges", () => {
       ["0→end", "1→end"],
     ],
     ["an after that ends the trial early", { steps: [step("a", [], { to: "end" }), step("b")] }, ["0→end", "1→end"]],
+    [
+      "a loop: back with its bound, and on after its last time",
+      { steps: [step("a"), step("b", [], { to: "again", stepId: "a", times: 2, onward: { to: "end" } }), step("c")] },
+      ["0→1", "1→0 back, at most 2 times", "1→end after 2 times", "2→end"],
+    ],
+    [
+      "a time limit whose way on is a loop",
+      {
+        steps: [
+          {
+            ...step("ask"),
+            timeLimit: { seconds: 10, after: { to: "again", stepId: "ask", times: 1, onward: { to: "next" } } },
+          },
+          step("bye"),
+        ],
+      },
+      ["0→1", "0→0 10 s, back, at most once", "0→1 10 s, after once", "1→end"],
+    ],
   ])("%s", (_name, protocol, expected) => {
     expect(brief(protocol)).toEqual(expected);
   });

@@ -2,8 +2,10 @@
 // designer's flow map. Read the way the engine walks (./decide.ts): a branch
 // sends each answer to its step, "End trial" ends, and otherwise the step's
 // "after" applies. A time limit (the step's, a question's) is an edge of its
-// own, whatever else the step does.
-import { exitBy, exitOf, timeLimitsOf } from "../protocol/flow";
+// own, whatever else the step does. A loop is two edges: back, with its
+// bound, and on after its last time.
+import type { After } from "../protocol/document";
+import { timeLimitsOf, timesWords, waysBy } from "../protocol/flow";
 import { answerOptions, branchTarget } from "./protocol";
 import type { TrialProtocol } from "./types";
 
@@ -11,8 +13,13 @@ export interface FlowEdge {
   from: number;
   /** A step's index, or the end of the trial. */
   to: number | "end";
-  /** "after": the step's own way on; "answer": a branch, labelled with its answer; "timeout": a time limit, labelled with its seconds. */
-  kind: "after" | "answer" | "timeout";
+  /**
+   * "after": the step's own way on; "answer": a branch, labelled with its
+   * answer; "timeout": a time limit, labelled with its seconds; "loop": a
+   * step's way back, labelled with its bound (a time limit's way back is a
+   * "timeout" with its bound in its label).
+   */
+  kind: "after" | "answer" | "timeout" | "loop";
   label?: string;
 }
 
@@ -22,11 +29,23 @@ export function flowEdges(protocol: TrialProtocol): FlowEdge[] {
 }
 
 function timeouts(protocol: TrialProtocol, from: number): FlowEdge[] {
-  return timeLimitsOf(protocol.steps[from]!).flatMap((limit) => {
-    const exit = exitBy(protocol.steps, from, limit.after);
+  return timeLimitsOf(protocol.steps[from]!).flatMap((limit) =>
+    ways(protocol, from, limit.after).map((way) => ({
+      ...way,
+      kind: "timeout" as const,
+      label: [`${limit.seconds} s`, way.label].filter(Boolean).join(", "),
+    })),
+  );
+}
+
+/** The edges `after` draws from the step `from`: one, or a loop's two; none to a step that is gone. */
+function ways(protocol: TrialProtocol, from: number, after: After): FlowEdge[] {
+  return waysBy(protocol.steps, from, after).flatMap(({ exit, loop }): FlowEdge[] => {
     if (exit.to === "missing") return [];
+    const to = exit.to === "end" ? ("end" as const) : exit.index;
+    if (loop) return [{ from, to, kind: "loop", label: `back, at most ${timesWords(loop.times)}` }];
     return [
-      { from, to: exit.to === "end" ? "end" : exit.index, kind: "timeout" as const, label: `${limit.seconds} s` },
+      { from, to, kind: "after", ...(after.to === "again" ? { label: `after ${timesWords(after.times)}` } : {}) },
     ];
   });
 }
@@ -47,8 +66,5 @@ function routes(protocol: TrialProtocol, indexOf: Map<string, number>, from: num
     // Every answer routed: the step's own way on is never taken.
     if (options.length && edges.filter((e) => e.kind === "answer").length === options.length) return edges;
   }
-  const exit = exitOf(steps, from);
-  if (exit.to === "step") edges.push({ from, to: exit.index, kind: "after" });
-  if (exit.to === "end") edges.push({ from, to: "end", kind: "after" });
-  return edges;
+  return [...edges, ...ways(protocol, from, step.after ?? { to: "next" })];
 }

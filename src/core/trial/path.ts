@@ -1,6 +1,6 @@
 // The wizard's view of the way through: the steps this trial has taken and
 // what comes next, instead of every step of every branch.
-import { exitOf } from "../protocol/flow";
+import { exitNow } from "./loops";
 import { answerOptions, branchTarget, findStep } from "./protocol";
 import type { TrialProtocol, TrialState } from "./types";
 
@@ -28,7 +28,7 @@ export function upcoming(protocol: TrialProtocol, state: TrialState): Upcoming {
       })),
     };
   }
-  const exit = exitOf(protocol.steps, current.index);
+  const exit = exitNow(protocol, state, current.index);
   return exit.to === "step" ? { kind: "step", step: protocol.steps[exit.index]! } : { kind: "end" };
 }
 

@@ -14,6 +14,8 @@ export interface RehearsedStep {
   number: number;
   /** Actions in the order the engine requests them; those of one unit start together. */
   units: ProtocolAction[][];
+  /** Entered back round a loop: how many times that loop has now gone back. */
+  again?: number;
   /** The answer recorded in this step, if it asks a question. */
   answer?: { actionId: string; optionId: string; label: string };
   /** The time limit that ran out here, if one did: a question's ("no answer in …") or the step's. */
@@ -49,7 +51,8 @@ export function rehearse(
       state = apply(state, { ...event, seq: ++seq, relMs: seq });
       if (event.type === "step.entered") {
         const { step, index } = findStep(protocol, event.stepId)!;
-        steps.push({ stepId: step.id, name: step.name, number: index + 1, units: [] });
+        const again = event.via === "loop" && event.loop ? { again: state.loops[event.loop] } : {};
+        steps.push({ stepId: step.id, name: step.name, number: index + 1, units: [], ...again });
       }
       if (event.type === "action.requested" && event.scripted) {
         const action = findStep(protocol, event.stepId)!.step.actions.find((a) => a.id === event.actionId)!;

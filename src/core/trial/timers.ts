@@ -5,6 +5,7 @@
 // timer in the same append, and a cancelled or fired timer never fires.
 import { type Exit, exitBy } from "../protocol/flow";
 import { applyInPlace } from "./fold";
+import { follow, loopName, timesTaken } from "./loops";
 import { findAction, findStep } from "./protocol";
 import type { Decision, EngineEvent, RunningTimer, TrialProtocol, TrialState } from "./types";
 
@@ -64,6 +65,7 @@ export function withTimers(protocol: TrialProtocol, state: TrialState, events: E
     answers: { ...state.answers },
     path: [...state.path],
     timers: { ...state.timers },
+    loops: { ...state.loops },
   };
   applyInPlace(
     after,
@@ -79,22 +81,32 @@ export function withTimers(protocol: TrialProtocol, state: TrialState, events: E
   return [...events, ...cancelled, ...started];
 }
 
-/** Where a timer leads when its time runs out: its limit's "after", read from its step. */
-export function timerExit(protocol: TrialProtocol, timer: RunningTimer): Exit {
+/** The loop name of a timer's limit (if its "after" is a loop). */
+function timerLoop(timer: RunningTimer): string {
+  return loopName(timer.stepId, timer.actionId ? { of: "answer", actionId: timer.actionId } : { of: "step" });
+}
+
+function limitOf(protocol: TrialProtocol, timer: RunningTimer) {
   const at = findStep(protocol, timer.stepId);
   const limit = timer.actionId ? findAction(protocol, timer.actionId)?.action.timeLimit : at?.step.timeLimit;
-  return at && limit ? exitBy(protocol.steps, at.index, limit.after) : { to: "end" };
+  return at && limit ? { index: at.index, after: limit.after } : null;
+}
+
+/** Where a timer leads when its time runs out: its limit's "after", read from its step (a loop: as `state` has gone round it). */
+export function timerExit(protocol: TrialProtocol, timer: RunningTimer, state: TrialState): Exit {
+  const limit = limitOf(protocol, timer);
+  return limit ? exitBy(protocol.steps, limit.index, limit.after, timesTaken(state, timerLoop(timer))) : { to: "end" };
 }
 
 /** A timer's time ran out: the trial takes its limit's way on, unless the wizard acted first. */
 export function timerFired(protocol: TrialProtocol, state: TrialState, timerId: string): Decision {
   const timer = state.timers[timerId];
   if (!timer) return { ok: false, reason: "That timer is no longer running: the wizard acted first, or it fired." };
-  const exit = timerExit(protocol, timer);
+  const limit = limitOf(protocol, timer);
   const fired: EngineEvent = { type: "timer.fired", timerId };
-  if (exit.to !== "step") return { ok: true, events: [fired, { type: "trial.completed" }] };
+  if (!limit) return { ok: true, events: [fired, { type: "trial.completed" }] };
   return {
     ok: true,
-    events: [fired, { type: "step.entered", stepId: protocol.steps[exit.index]!.id, via: "timeout" }],
+    events: [fired, ...follow(protocol, state, limit.index, limit.after, timerLoop(timer), "timeout")],
   };
 }

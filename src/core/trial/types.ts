@@ -17,7 +17,14 @@ export const TRIAL_STATUSES = ["scheduled", "in_progress", "paused", "completed"
 
 export type EventBody =
   | { type: "trial.started" }
-  | { type: "step.entered"; stepId: string; via: "start" | "next" | "branch" | "manual_jump" | "timeout" }
+  | {
+      type: "step.entered";
+      stepId: string;
+      /** "loop": back round a loop, under its bound; "loop_bound": its bound reached, its "onward" taken. */
+      via: "start" | "next" | "branch" | "manual_jump" | "timeout" | "loop" | "loop_bound";
+      /** The loop's name (../trial/loops.ts), when a loop moved the trial. */
+      loop?: string;
+    }
   | {
       type: "action.requested";
       stepId: string | null;
@@ -43,6 +50,8 @@ export type EventBody =
   | { type: "timer.fired"; timerId: string }
   /** The wizard acted first (an answer, or the trial left the step or ended): it will never fire. */
   | { type: "timer.cancelled"; timerId: string }
+  /** A loop has gone back its `times`: the trial leaves the step `stepId` by the loop's "onward", in the same append. */
+  | { type: "loop.bound_reached"; stepId: string; loop: string; times: number }
   | { type: "trial.paused" }
   | { type: "trial.resumed" }
   | { type: "trial.emergency_stop" }
@@ -129,6 +138,8 @@ export interface TrialState {
   timers: Record<string, RunningTimer>;
   /** When the trial was paused (or stopped), in ms from t0, while it is: the timers' clocks stand still from then. */
   pausedAtMs: number | null;
+  /** How many times each loop has gone back so far, by its name. */
+  loops: Record<string, number>;
   lastSeq: number;
 }
 

@@ -19,6 +19,7 @@ import { TimelineChart } from "./timeline-chart";
 import { EventList, type TimelineItem } from "./event-list";
 import { PlannedTable } from "./planned-table";
 import { StepPath } from "./step-path";
+import { LoopIterations } from "./loop-iterations";
 import { recordingGaps } from "@/core/media/recording-parts";
 import { RecordingPlayer, useTrialRecording } from "./recording-player";
 import { Problem } from "@/ui/problem";
@@ -155,6 +156,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
       )}
       <QuestionnaireAnswers trialId={trialId} studyId={t.studyId} />
       <StepPath visits={visits} stepName={(stepId) => named!.step(stepId)} />
+      <LoopIterations report={r} stepName={(stepId) => named!.step(stepId)} />
       <section aria-label="Planned versus executed">
         <h2 className="mb-2 text-lg font-semibold">Planned versus executed</h2>
         <PlannedTable report={r} />

@@ -1,6 +1,6 @@
 "use client";
 // The path the trial took, a step at a time, each with what moved the trial
-// into it (the start, the wizard's next, the participant's answer, a jump)
+// into it (the start, the wizard's next, the participant's answer, a time limit, a loop, a jump)
 // and the actions the wizard skipped while there: what the protocol decided
 // told apart from what the wizard did.
 import { moveWords, type StepVisit } from "@/core/analysis/moves";

@@ -2,7 +2,8 @@
 // The experiment as a map: steps top to bottom in list order, each way on as
 // an arrow. "Next" into the step below is a short arrow; a jump or a rejoin
 // curves round on the right, an answer's branch on the left, each in its own
-// lane so arrows never overlap.
+// lane so arrows never overlap. A loop's way back is its own colour, with its
+// bound written at its head.
 import { useMemo } from "react";
 import type { DesignDraft } from "@/core/designer/types";
 import { type FlowEdge, flowEdges } from "@/core/trial";
@@ -16,7 +17,8 @@ export function FlowMap({ draft, onSelect }: { draft: DesignDraft; onSelect: (st
   const top = (i: number) => 8 + i * (BOX.height + BOX.gap);
   const endIndex = draft.steps.length;
   const target = (e: FlowEdge) => (e.to === "end" ? endIndex : e.to);
-  const around = edges.filter((e) => !(e.kind === "after" && target(e) === e.from + 1));
+  // An edge with a label (a loop's way on after its last time) goes round, where its label has room.
+  const around = edges.filter((e) => !(e.kind === "after" && !e.label && target(e) === e.from + 1));
   const lanes = { left: 0, right: 0 };
   const laneOf = new Map(around.map((e) => [e, e.kind === "answer" ? ++lanes.left : ++lanes.right]));
   const height = top(endIndex) + BOX.height + 8;
@@ -65,7 +67,7 @@ export function FlowMap({ draft, onSelect }: { draft: DesignDraft; onSelect: (st
               <path
                 d={`M${edge},${y1 - 6} H${out} V${y2 + 6} H${edge + (left ? -2 : 2)}`}
                 fill="none"
-                className={left ? "stroke-brand-600" : "stroke-amber-700"}
+                className={left ? "stroke-brand-600" : e.kind === "loop" ? "stroke-violet-700" : "stroke-amber-700"}
                 // A time limit's way on is dashed: taken only if the time runs out.
                 strokeDasharray={e.kind === "timeout" ? "4 3" : undefined}
                 markerEnd="url(#flow-arrow)"
@@ -129,18 +131,24 @@ export function FlowMap({ draft, onSelect }: { draft: DesignDraft; onSelect: (st
         </text>
       </svg>
       <figcaption className="text-xs text-slate-600">
-        Arrows on the left are answers of a question; on the right, a step that goes somewhere other than the next step,
-        dashed where a time limit runs out. Select a step to edit it.
+        Arrows on the left are answers of a question; on the right, a step that goes somewhere other than the next step
+        (dashed: when a time limit runs out; violet: a loop going back, at most the times it says). Select a step to
+        edit it.
       </figcaption>
       <ul className="sr-only">
         {edges.map((e, i) => (
           <li key={i}>
-            {name(e.from)}{" "}
-            {e.kind === "timeout" ? `(when its ${e.label} run out)` : e.label ? `(answer "${e.label}")` : ""} leads to{" "}
-            {e.to === "end" ? "the end of the trial" : name(e.to)}
+            {name(e.from)} {edgeWords(e)} leads to {e.to === "end" ? "the end of the trial" : name(e.to)}
           </li>
         ))}
       </ul>
     </figure>
   );
+}
+
+/** What an edge is, for a screen reader: "(answer “Yes”)", "(back, at most 2 times)", "(when its time limit runs out: 10 s)". */
+function edgeWords(e: FlowEdge): string {
+  if (!e.label) return "";
+  if (e.kind === "answer") return `(answer "${e.label}")`;
+  return e.kind === "timeout" ? `(when its time limit runs out: ${e.label})` : `(${e.label})`;
 }

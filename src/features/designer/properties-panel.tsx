@@ -13,7 +13,8 @@ import { Button } from "@/ui/button";
 import { Field, Input, NativeSelect, Textarea } from "@/ui/field";
 import { SchemaForm } from "@/ui/schema-form";
 import { AudioChooser } from "./audio-chooser";
-import { afterOf, afterValue, LeadsToOptions, TimeLimitField } from "./time-limit-field";
+import { ThenField } from "./then-field";
+import { TimeLimitField } from "./time-limit-field";
 import type { Selection } from "./protocol-timeline";
 
 interface Props {
@@ -117,21 +118,18 @@ function StepProperties({ draft, stepId, issues, run, onMove, onDelete }: Props 
   );
 }
 
-/** Where the step leads once its actions are done: how answers' steps rejoin a shared step. */
+/** Where the step leads once its actions are done: how answers' steps rejoin a shared step, or a step asks again. */
 function AfterStep({ draft, stepId, run }: Pick<Props, "draft" | "run"> & { stepId: string }) {
   const { step } = locateStep(draft, stepId);
-  const value = afterValue(step.after);
   return (
-    <Field
+    <ThenField
+      draft={draft}
+      stepId={stepId}
+      after={step.after}
       label="Then"
-      hint="Where the trial goes once this step's actions are done. Steps for different answers usually go to the step where the answers meet."
-    >
-      {(p) => (
-        <NativeSelect {...p} value={value} onChange={(e) => run(commands.setAfter(stepId, afterOf(e.target.value)))}>
-          <LeadsToOptions draft={draft} stepId={stepId} value={value} />
-        </NativeSelect>
-      )}
-    </Field>
+      hint="Where the trial goes once this step's actions are done. Steps for different answers usually go to the step where the answers meet; going back asks again, at most the times you set."
+      onChange={(after) => run(commands.setAfter(stepId, after))}
+    />
   );
 }
 

@@ -102,6 +102,9 @@ export function RehearsalPreview({
             <li key={`${step.stepId}-${i}`} className="rounded-md border border-slate-200 bg-white p-3">
               <p className="text-sm font-semibold">
                 {step.number}. {step.name}
+                {step.again && (
+                  <span className="ml-2 font-normal text-violet-800">back round the loop, time {step.again}</span>
+                )}
               </p>
               <ol className="mt-1 list-inside list-decimal text-sm text-slate-800">
                 {step.units.map((unit) => (

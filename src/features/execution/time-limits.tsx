@@ -38,7 +38,7 @@ export function TimeLimits({
             <span role="timer" className="font-mono tabular-nums" data-testid="time-left">
               {left === null ? `${timer.seconds}` : left} s
             </span>{" "}
-            → {whereTo(protocol, timer)}
+            → {whereTo(protocol, timer, state)}
           </li>
         );
       })}
@@ -46,7 +46,7 @@ export function TimeLimits({
   );
 }
 
-function whereTo(protocol: TrialProtocol, timer: TrialState["timers"][string]): string {
-  const exit = timerExit(protocol, timer);
+function whereTo(protocol: TrialProtocol, timer: TrialState["timers"][string], state: TrialState): string {
+  const exit = timerExit(protocol, timer, state);
   return exit.to === "step" ? `“${protocol.steps[exit.index]!.name}”` : "the end of the trial";
 }

@@ -1,10 +1,9 @@
 "use client";
 // The wizard's controls: the next scripted action as the big button, answer
 // choices by number, and everything off script one key away.
-import { exitOf } from "@/core/protocol/flow";
 import { useId, useRef, useState } from "react";
 import { actionName, type ActionNames } from "@/core/designer/action-name";
-import { answerOptions, nextUnit, type TrialProtocol, type TrialState } from "@/core/trial";
+import { answerOptions, exitNow, nextUnit, type TrialProtocol, type TrialState } from "@/core/trial";
 import type { RuntimeState } from "@/core/trial/connections";
 import { controlsOffBecause } from "@/core/trial/refusals";
 import type { WizardCommand } from "@/core/socket/messages";
@@ -29,8 +28,9 @@ export function nextLabel(protocol: TrialProtocol, state: TrialState, names: Act
   const unit = nextUnit(protocol, state);
   if (unit.length) return unit.map((a) => actionName(a, names)).join(" + ");
   // Where this step leads, as the engine will go: answers' steps rejoin, a step may end the trial.
-  const exit = exitOf(
-    protocol.steps,
+  const exit = exitNow(
+    protocol,
+    state,
     protocol.steps.findIndex((s) => s.id === state.currentStepId),
   );
   return exit.to === "step" ? `Go to “${protocol.steps[exit.index]!.name}”` : "Finish trial";
