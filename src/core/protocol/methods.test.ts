@@ -265,7 +265,9 @@ describe("the methods text", () => {
       "Loops\n\nAfter “Ask”, the trial went back to “Ask”, at most 2 times, and then continued to “Goodbye”. When the time limit of 10 seconds in “Ask” ran out, the trial went back to “Ask”, at most once, and then ended.",
     );
     // The step's paragraph leaves where it leads to the Loops section: it goes back first.
-    expect(plain).toContain("1. Ask. The robot said “What color?”\n");
+    expect(plain).toContain(
+      "1. Ask. The robot said “What color?” If the step had not ended within 10 seconds, the trial went back to “Ask”, as the loops below say.\n",
+    );
     expect(methodsPlainText(rejoining)).not.toContain("Loops");
   });
 

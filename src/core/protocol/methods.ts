@@ -217,7 +217,9 @@ function timeLimit(s: Style, steps: Steps, index: number, limit: TimeLimit, cond
       ? "the trial ended"
       : exit.to === "missing"
         ? "the trial went on to a step that is no longer in the experiment"
-        : `the trial went on to ${stepName(s, steps, exit.index)}`;
+        : limit.after.to === "again"
+          ? `the trial went back to ${stepName(s, steps, exit.index)}, as the loops below say`
+          : `the trial went on to ${stepName(s, steps, exit.index)}`;
   return `${condition} ${seconds(limit.seconds)}, ${then}`;
 }
 
