@@ -1,6 +1,7 @@
 // What moved the trial at each step: the path it took, each step it entered
 // with what took it there (the start, the wizard's next, the participant's
-// answer through a branch, a time limit running out, or a jump, which is a deviation) and how many of
+// answer through a branch, a time limit running out, the robot's senses or the
+// wizard's go on ending a wait, or a jump, which is a deviation) and how many of
 // the step's actions the wizard skipped while in it. Read from the log only,
 // so a step entered twice is two visits.
 import type { TrialEvent } from "@/core/trial";
@@ -13,7 +14,9 @@ export type Move =
   | { by: "next" }
   | { by: "answer"; answer: string }
   | { by: "jump" }
-  | { by: "timer" };
+  | { by: "timer" }
+  | { by: "senses"; event: string }
+  | { by: "go_on" };
 
 /**
  * Each way the engine enters a step, as the move a reader is told. A new way
@@ -26,6 +29,8 @@ const MOVED_BY: Record<Via, Move["by"]> = {
   branch: "answer",
   manual_jump: "jump",
   timeout: "timer",
+  sensed: "senses",
+  go_on: "go_on",
 };
 
 export interface StepVisit {
@@ -41,13 +46,17 @@ export interface StepVisit {
 export function stepVisits(events: readonly TrialEvent[]): StepVisit[] {
   const visits: StepVisit[] = [];
   let lastAnswer: string | undefined;
+  let lastSensed: string | undefined;
   for (const e of events) {
     if (e.type === "answer.recorded") lastAnswer = e.label;
+    if (e.type === "robot.sensed") lastSensed = e.event;
     if (e.type === "action.skipped" && visits.length) visits.at(-1)!.skipped++;
     if (e.type !== "step.entered") continue;
     const by = MOVED_BY[e.via];
     // A branch enters its step right after the answer it follows (decide.ts writes them together).
-    const move: Move = by === "answer" ? { by, answer: lastAnswer ?? "" } : { by };
+    // So does a wait's edge right after the robot's event (waits.ts).
+    const move: Move =
+      by === "answer" ? { by, answer: lastAnswer ?? "" } : by === "senses" ? { by, event: lastSensed ?? "" } : { by };
     visits.push({ seq: e.seq, stepId: e.stepId, enteredMs: e.relMs, move, skipped: 0 });
   }
   return visits;
@@ -59,6 +68,8 @@ const MOVE_WORDS: Record<Move["by"], (move: Move) => string> = {
   answer: (move) => `the answer “${(move as Extract<Move, { by: "answer" }>).answer}”`,
   jump: () => "the wizard's jump (a deviation)",
   timer: () => "the time limit running out",
+  senses: (move) => `the robot's senses (“${(move as Extract<Move, { by: "senses" }>).event}”)`,
+  go_on: () => "the wizard's go on",
 };
 
 /** What moved the trial into a step, in words: "the answer “Mars”". */
