@@ -16,6 +16,7 @@ export { unavailableActions, unavailableReason, type UnavailableAction } from ".
 export { resolveAction, type Resolution } from "./resolve";
 export {
   cannotStart,
+  eventProblems,
   checkingStart,
   portability,
   type PortableExperiment,

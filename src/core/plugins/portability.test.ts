@@ -1,7 +1,7 @@
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { STORYTELLER_STEPS } from "../../server/seed/storyteller";
-import { loadPlugin, portability, type PortableExperiment } from "./index";
+import { cannotStart, eventProblems, loadPlugin, portability, type PortableExperiment } from "./index";
 
 const plugin = (file: string) => {
   const loaded = loadPlugin(file, readFileSync(`plugins/${file}`, "utf8"));
@@ -103,5 +103,48 @@ describe("portability of other actions", () => {
     expect(one("pepper-ros2.json", "posture", { posture: "sit" })?.problems).toEqual([
       { parameter: "posture", message: '"posture" "sit" is not supported by this robot (supported: "stand", "rest")' },
     ]);
+  });
+});
+
+describe("the events a wait needs the robot to sense", () => {
+  const sensing = {
+    ...plugin("simulated.json"),
+    events: [{ id: "head_touched", name: "Head touched", topic: "/touch", messageType: "std_msgs/msg/Bool", when: {} }],
+  };
+  const waiting = (events: string[]): PortableExperiment => ({
+    steps: [
+      {
+        name: "Start",
+        actions: [
+          {
+            id: "wait",
+            type: "wait_for",
+            parameters: { events: events.map((event, i) => ({ id: `e${i}`, event, after: { to: "next" } })) },
+          },
+        ],
+      },
+    ],
+  });
+
+  it.each<[string, string[], string[]]>([
+    ["an event the plugin declares", ["head_touched"], []],
+    [
+      "an event it does not, named once",
+      ["head_touched", "heard_word", "heard_word"],
+      [`${sensing.name} does not sense the event "heard_word" (its plugin does not declare it).`],
+    ],
+  ])("%s", (_, events, expected) => {
+    expect(eventProblems(events, sensing)).toEqual(expected);
+  });
+
+  it("a wait for an event the robot cannot sense is unsupported, so a trial cannot start", () => {
+    expect(portability(waiting(["head_touched"]), sensing).portable).toBe(true);
+    expect(portability(waiting(["heard_word"]), sensing).actions[0]).toMatchObject({
+      status: "unsupported",
+      by: "runtime",
+    });
+    expect(cannotStart(waiting(["heard_word"]), sensing)).toContain(
+      `step 1 (Start), "wait_for": ${sensing.name} does not sense the event "heard_word"`,
+    );
   });
 });

@@ -2,8 +2,8 @@
 // designer's flow map. Read the way the engine walks (./decide.ts): a branch
 // sends each answer to its step, "End trial" ends, and otherwise the step's
 // "after" applies. A time limit (the step's, a question's) is an edge of its
-// own, whatever else the step does.
-import { exitBy, exitOf, timeLimitsOf } from "../protocol/flow";
+// own, whatever else the step does; so is each event a "Wait for" waits for.
+import { awaitedEvents, exitBy, exitOf, timeLimitsOf } from "../protocol/flow";
 import { answerOptions, branchTarget } from "./protocol";
 import type { TrialProtocol } from "./types";
 
@@ -11,14 +11,31 @@ export interface FlowEdge {
   from: number;
   /** A step's index, or the end of the trial. */
   to: number | "end";
-  /** "after": the step's own way on; "answer": a branch, labelled with its answer; "timeout": a time limit, labelled with its seconds. */
-  kind: "after" | "answer" | "timeout";
+  /**
+   * "after": the step's own way on; "answer": a branch, labelled with its answer; "timeout": a time limit,
+   * labelled with its seconds; "sensed": a wait's event, labelled with the event.
+   */
+  kind: "after" | "answer" | "timeout" | "sensed";
   label?: string;
 }
 
 export function flowEdges(protocol: TrialProtocol): FlowEdge[] {
   const indexOf = new Map(protocol.steps.map((s, i) => [s.id, i]));
-  return protocol.steps.flatMap((_, from) => [...routes(protocol, indexOf, from), ...timeouts(protocol, from)]);
+  return protocol.steps.flatMap((_, from) => [
+    ...routes(protocol, indexOf, from),
+    ...timeouts(protocol, from),
+    ...sensed(protocol, from),
+  ]);
+}
+
+function sensed(protocol: TrialProtocol, from: number): FlowEdge[] {
+  return protocol.steps[from]!.actions.flatMap((action) =>
+    awaitedEvents(action).flatMap((e) => {
+      const exit = exitBy(protocol.steps, from, e.after);
+      if (exit.to === "missing") return [];
+      return [{ from, to: exit.to === "end" ? "end" : exit.index, kind: "sensed" as const, label: e.event }];
+    }),
+  );
 }
 
 function timeouts(protocol: TrialProtocol, from: number): FlowEdge[] {
