@@ -8,3 +8,4 @@ export { type Rehearsal, type RehearsedStep, rehearse } from "./rehearse";
 export { type FlowEdge, flowEdges } from "./graph";
 export { pathTaken, type Upcoming, upcoming } from "./path";
 export { dueAt, timerExit } from "./timers";
+export { pendingWait } from "./waits";

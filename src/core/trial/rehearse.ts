@@ -54,6 +54,11 @@ export function rehearse(protocol: TrialProtocol, answers: Record<string, string
     if (steps.length > MAX_STEPS) return { steps, ending: "looping" };
     const unit = nextUnit(protocol, state);
     const question = unit[0]?.type === "record_answer" ? unit[0] : null;
+    // A wait takes the wizard's way on in a preview: what the robot senses is not known before a trial.
+    if (unit[0]?.type === "wait_for") {
+      send({ kind: "go_on" });
+      continue;
+    }
     if (question) {
       const options = answerOptions(question);
       const chosen = options.find((o) => o.id === answers[question.id]) ?? options[0];

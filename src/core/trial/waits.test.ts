@@ -1,5 +1,5 @@
 import { describe, expect, it } from "vitest";
-import { decide, fold, simulate, type Command, type EngineEvent, type TrialProtocol } from "./index";
+import { decide, fold, rehearse, simulate, type Command, type EngineEvent, type TrialProtocol } from "./index";
 
 // "Touch my head to start": head touched → Greet, heard "ready" → the end, 20 s → Prompt; go on → Goodbye (the step's way on).
 const protocol: TrialProtocol = {
@@ -193,5 +193,9 @@ describe("Wait for", () => {
   it("keeps the message that matched in the log", () => {
     const { log } = simulate(protocol, [...waiting, touch]);
     expect(log.find((e) => e.type === "robot.sensed")).toMatchObject({ message: { data: true } });
+  });
+
+  it("a rehearsal preview takes the wizard's go on: what the robot senses is not known before a trial", () => {
+    expect(rehearse(protocol).steps.map((s) => s.stepId)).toEqual(["ask", "bye"]);
   });
 });

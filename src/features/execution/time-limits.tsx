@@ -31,7 +31,11 @@ export function TimeLimits({
         const left = due === null ? null : Math.max(0, Math.ceil((due - now) / 1000));
         return (
           <li key={timerId} className="rounded border border-amber-300 bg-amber-50 px-3 py-2 text-amber-900">
-            {timer.actionId ? "No answer in" : "Step time left:"}{" "}
+            {timer.actionId
+              ? isWait(protocol, timer.actionId)
+                ? "Nothing sensed in"
+                : "No answer in"
+              : "Step time left:"}{" "}
             <span role="timer" className="font-mono tabular-nums" data-testid="time-left">
               {left === null ? `${timer.seconds}` : left} s
             </span>{" "}
@@ -41,6 +45,10 @@ export function TimeLimits({
       })}
     </ul>
   );
+}
+
+function isWait(protocol: TrialProtocol, actionId: string): boolean {
+  return protocol.steps.some((s) => s.actions.some((a) => a.id === actionId && a.type === "wait_for"));
 }
 
 function whereTo(protocol: TrialProtocol, timer: TrialState["timers"][string]): string {
