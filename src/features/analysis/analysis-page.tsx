@@ -143,6 +143,13 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         <Figure label="Executed / planned" value={`${r.totals.executed} / ${r.totals.planned}`} />
         <Figure label="Deviations" value={String(Object.values(r.deviations).reduce((a, b) => a + b, 0))} />
         <Figure label="Branches by answer / by hand" value={`${r.branches.byLogic} / ${r.branches.byHand}`} />
+        {/* Only in a trial that waited for the robot: who ended its waits, and how often a time limit moved it. */}
+        {r.moves.senses + r.moves.go_on > 0 && (
+          <Figure
+            label="Moves by the robot's senses / a timer / the wizard's go on"
+            value={`${r.moves.senses} / ${r.moves.timer} / ${r.moves.go_on}`}
+          />
+        )}
       </div>
       <RecordingPlayer recording={recording} gaps={gaps} onTime={setPlayheadMs} />
       {(t.status === "completed" || t.status === "aborted") && (
