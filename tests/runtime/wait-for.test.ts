@@ -91,7 +91,7 @@ async function waitingTrial() {
   return { trialId: trial!.id, host };
 }
 
-const after = (log: StoredEvent[], type: string) => log.slice(log.findIndex((e) => e.type === type));
+const from = (log: StoredEvent[], type: string) => log.slice(log.findIndex((e) => e.type === type));
 const brief = (events: StoredEvent[]) =>
   events.map((e) => (e.type === "step.entered" ? `${e.type} ${e.stepId} ${e.via}` : e.type));
 
@@ -101,7 +101,7 @@ describe("the robot's senses on a live trial", () => {
     expect(await host.sensed(touched)).toMatchObject({ ok: true });
     expect(await host.sensed({ ...touched, at: touched.at + 500 })).toMatchObject({ ok: true });
     const log = await eventsSince(db, trialId);
-    expect(brief(after(log, "robot.sensed"))).toEqual([
+    expect(brief(from(log, "robot.sensed"))).toEqual([
       "robot.sensed",
       "wait.resolved",
       "step.entered greet sensed",
@@ -123,7 +123,7 @@ describe("the robot's senses on a live trial", () => {
       ok: true,
     });
     const log = await eventsSince(db, trialId);
-    expect(brief(after(log, "robot.sensed"))).toEqual(["robot.sensed"]);
+    expect(brief(from(log, "robot.sensed"))).toEqual(["robot.sensed"]);
     expect(host.current.currentStepId).toBe("ask");
     expect(host.current.actions.wait).toEqual(before.actions.wait);
   });
