@@ -6,6 +6,7 @@
 import { awaitedEvents, exitBy } from "@/core/protocol/flow";
 import type { ProtocolAction, StoredEvent, TrialProtocol } from "@/core/trial";
 import { Button } from "@/ui/button";
+import { clockTime } from "@/ui/clock-time";
 
 type Sensed = Extract<StoredEvent<string>, { type: "robot.sensed" }>;
 
@@ -55,7 +56,7 @@ export function WaitPanel({
         <ul aria-label="Last sensed" className="text-sm">
           {recent.map((e) => (
             <li key={e.seq}>
-              {e.event} <span className="text-slate-600">at {new Date(e.at).toLocaleTimeString()}</span>
+              {e.event} <span className="text-slate-600">at {clockTime(new Date(e.at))}</span>
             </li>
           ))}
         </ul>
