@@ -20,6 +20,7 @@ import { areTheseEvents } from "@/core/trial/landed";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import { droppedReason, staleness } from "@/core/trial/freshness";
 import type { CameraFrame, RobotLink, RobotReport } from "./robot";
+import type { Sensed } from "@/core/plugins/types";
 import { sampleRecorder } from "./samples";
 import { TrialTimers } from "./trial-timers";
 import { foldLiveState, UNKNOWN_STATE, type LiveRobotState } from "@/core/robots/live-state";
@@ -99,6 +100,7 @@ const ALWAYS_LOGGED = new Set<Command["kind"]>([
   "abort",
   "robot_problem",
   "timer_fired",
+  "sensed",
 ]);
 
 /** The wizard's commands that can set the robot going: after a stop, one asked for before it is stale. */
@@ -238,6 +240,16 @@ export class TrialHost {
     // Timers running when the runtime stopped fire when they were due, from their logged start.
     host.limits.follow(host.state, host.t0);
     return host;
+  }
+
+  /**
+   * The robot sensed one of its plugin's events: put through the same queue
+   * and log as the wizard's commands, so the log orders a go on and an event
+   * that come together, and the first ends the wait. Logged with the robot's
+   * own time (`at`); when nothing waits for it, it is an observation only.
+   */
+  sensed(sensed: Sensed): Promise<CommandResult> {
+    return this.command({ kind: "sensed", ...sensed }, null);
   }
 
   /** The robot's live state as the wizard sees it, and a listener for its changes. */

@@ -77,6 +77,47 @@ describe("the ELAN export", () => {
     ]);
   });
 
+  it("puts what the robot sensed on a Robot senses tier, with the robot's time and the message that matched", () => {
+    const waiting: TrialProtocol = {
+      steps: [
+        {
+          id: "ask",
+          name: "Touch to start",
+          actions: [
+            {
+              id: "wait",
+              type: "wait_for",
+              parameters: { events: [{ id: "t", event: "head_touched", after: { to: "end" } }] },
+            },
+          ],
+        },
+      ],
+    };
+    const at = Date.UTC(2026, 10, 23, 10, 0, 1, 250);
+    const log = simulate(
+      waiting,
+      [
+        { kind: "start" },
+        { kind: "sensed", event: "left_hand_touched", at: at - 1000, message: { data: true } },
+        { kind: "sensed", event: "head_touched", at, message: { data: true } },
+      ],
+      (i) => i * 250,
+    ).log;
+    const file = join(scratchRoot(), "touch.eaf");
+    writeFileSync(
+      file,
+      elanDocument({ protocol: waiting, events: log, annotations: [], date: "2026-11-23T10:00:00Z" }),
+    );
+    const { tiers } = JSON.parse(runPython("read_eaf.py", [file])) as {
+      tiers: Record<string, Array<[number, number, string]>>;
+    };
+    const sensedAt = log.filter((e) => e.type === "robot.sensed").map((e) => e.relMs!);
+    expect(tiers["Robot senses"]).toEqual([
+      [sensedAt[0], sensedAt[0]! + 1, `left_hand_touched (robot's time 2026-11-23T10:00:00.250Z): {"data":true}`],
+      [sensedAt[1], sensedAt[1]! + 1, `head_touched (robot's time 2026-11-23T10:00:01.250Z): {"data":true}`],
+    ]);
+  });
+
   it("gives every observer a tier of their own per set of codes, states spanning their time", () => {
     const log = simulate(protocol, run, (i) => i * 250).log;
     const scheme = schemeTemplate("participant-engagement");

@@ -31,6 +31,7 @@ function trial(
     actions: [],
     steps: timings,
     unscripted: [],
+    moves: { start: 0, next: 0, answer: 0, jump: 0, timer: 0, loop: 0, bound: 0, senses: 0, go_on: 0 },
     branches: { byLogic: 0, byHand: 0 },
     loops: [],
     answers,

@@ -84,6 +84,9 @@ function tiers(input: ElanInput): Record<string, Span[]> {
       const { stepName, actionName } = named.of(e);
       return span(e.relMs!, null, `${e.deviation!.replace("_", " ")}: ${actionName ?? stepName ?? e.type}`);
     });
+  const senses = input.events.flatMap((e) =>
+    e.type === "robot.sensed" && e.relMs !== null ? [span(e.relMs, null, sensedValue(e))] : [],
+  );
   const annotations = input.annotations.map((m) =>
     span(m.relMs, m.relMs + MOMENT_MS, m.note ? `${m.label}: ${m.note}` : m.label),
   );
@@ -92,9 +95,16 @@ function tiers(input: ElanInput): Record<string, Span[]> {
     Action: [...actions, ...unscripted].sort((a, b) => a.start - b.start),
     Answer: answers,
     Deviation: deviations,
+    // Only in a trial whose robot sensed something: earlier trials' files keep their tiers.
+    ...(senses.length ? { "Robot senses": senses } : {}),
     Annotation: annotations,
     ...codeTiers(input.codes ?? [], lastMs),
   };
+}
+
+/** What the robot sensed, by its own clock, and the message that matched: "head_touched (robot's time …): {…}". */
+function sensedValue(e: Extract<TrialEvent, { type: "robot.sensed" }>): string {
+  return `${e.event} (robot's time ${new Date(e.at).toISOString()}): ${JSON.stringify(e.message)}`;
 }
 
 /**

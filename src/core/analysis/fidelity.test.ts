@@ -219,3 +219,39 @@ describe("outcomes in the researcher's words", () => {
     expect(outcomeWords(outcome)).toBe(words);
   });
 });
+
+describe("the fidelity report of waits for the robot's senses", () => {
+  // Two waits: the first ended by a head touch, the second by its time limit; then the wizard's go on ends a third.
+  const wait = (id: string, to: string): TrialProtocol["steps"][number]["actions"][number] => ({
+    id,
+    type: "wait_for",
+    parameters: { events: [{ id: "t", event: "head_touched", after: { to: "step", stepId: to } }] },
+    timeLimit: { seconds: 5, after: { to: "step", stepId: to } },
+  });
+  const waits: TrialProtocol = {
+    steps: [
+      { id: "a", name: "A", actions: [wait("wa", "b")] },
+      { id: "b", name: "B", actions: [wait("wb", "c")] },
+      { id: "c", name: "C", after: { to: "step", stepId: "d" }, actions: [wait("wc", "a")] },
+      { id: "d", name: "D", after: { to: "end" }, actions: [{ id: "bye", type: "say", parameters: { text: "Bye" } }] },
+    ],
+  };
+  const commands: Command[] = [
+    { kind: "start" },
+    { kind: "sensed", event: "head_touched", at: 1, message: { data: true } },
+    { kind: "timer_fired", timerId: "wait:wb:2" },
+    { kind: "go_on" },
+  ];
+
+  it("counts which moves the robot's senses made, which a timer, which the wizard", () => {
+    const r = fidelityReport(waits, simulate(waits, commands).log);
+    expect(r.moves).toEqual({ start: 1, next: 0, answer: 0, jump: 0, timer: 1, loop: 0, bound: 0, senses: 1, go_on: 1 });
+    // A wait ended by the senses or the wizard was carried out as designed; one its limit ended, as an unanswered question, not.
+    expect(r.actions.map((a) => [a.actionId, a.outcome])).toEqual([
+      ["wa", "executed"],
+      ["wb", "not_reached"],
+      ["wc", "executed"],
+      ["bye", "not_reached"],
+    ]);
+  });
+});

@@ -7,6 +7,7 @@ import { OUTCOME_WORDS, type UndoneOutcome } from "@/core/trial/outcomes";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import { answerOf, recordedAnswers, type RecordedAnswer } from "./answers";
 import { loopCounts, type LoopCount } from "./loop-counts";
+import { type Move, stepVisits } from "./moves";
 
 /** `not_sent`, `unknown` and `failed` are the three words of src/core/trial/outcomes.ts. */
 export type ActionOutcome =
@@ -73,6 +74,8 @@ export interface FidelityReport {
   branches: { byLogic: number; byHand: number };
   /** Each loop of the protocol: how many times it went back, and whether its bound was reached. */
   loops: LoopCount[];
+  /** How many times each kind of move took the trial into a step: the robot's senses, a timer, the wizard's next, go on, answer or jump. */
+  moves: Record<Move["by"], number>;
   /** Every answer recorded, in log order. */
   answers: RecordedAnswer[];
   deviations: Record<string, number>;
@@ -147,12 +150,16 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
     first("action.unknown", actionId) ??
     first("action.timed_out", actionId) ??
     first("answer.recorded", actionId) ??
-    first("branch.resolved", actionId);
+    first("branch.resolved", actionId) ??
+    first("wait.resolved", actionId);
 
   const actions: PlannedAction[] = protocol.steps.flatMap((step) =>
     step.actions.map((a) => {
       const requested =
-        first("action.requested", a.id) ?? first("answer.recorded", a.id) ?? first("branch.resolved", a.id);
+        first("action.requested", a.id) ??
+        first("answer.recorded", a.id) ??
+        first("branch.resolved", a.id) ??
+        first("wait.resolved", a.id);
       const finished = finishedOf(a.id);
       const dispatched = first("action.dispatched", a.id);
       const outcome: ActionOutcome = first("action.skipped", a.id)
@@ -222,6 +229,7 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
       byHand: log.filter((e) => e.type === "step.entered" && e.deviation === "manual_jump").length,
     },
     loops: loopCounts(protocol, events),
+    moves: countMoves(events),
     answers: recordedAnswers(protocol, events, names),
     deviations,
     totals: {
@@ -239,6 +247,22 @@ export function fidelityReport(protocol: TrialProtocol, events: TrialEvent[], na
     executionFidelity: inReached.length ? Math.round((faithful / inReached.length) * 1000) / 10 : 0,
     completed: log.some((e) => e.type === "trial.completed"),
   };
+}
+
+function countMoves(events: readonly TrialEvent[]): FidelityReport["moves"] {
+  const moves: FidelityReport["moves"] = {
+    start: 0,
+    next: 0,
+    answer: 0,
+    jump: 0,
+    timer: 0,
+    loop: 0,
+    bound: 0,
+    senses: 0,
+    go_on: 0,
+  };
+  for (const visit of stepVisits(events)) moves[visit.move.by]++;
+  return moves;
 }
 
 /** What confirmed a completion, as the robot link wrote it into the event's detail. */

@@ -93,4 +93,13 @@ describe("logOf", () => {
     if (message) expect(log.message).toBe(message);
     expect(log.message.startsWith((body as { type: string }).type)).toBe(true);
   });
+
+  it("stamps what the robot sensed with the robot's own time, keeping the message that matched", () => {
+    const sensed = { type: "robot.sensed", event: "head_touched", at: 1_767_607_199_500, message: { data: true } };
+    const log = logOf(event(sensed), 1_767_607_200_123_000_007n);
+    expect(log).toMatchObject({ timestamp: { sec: 1_767_607_199, nsec: 500_000_000 }, level: 2 });
+    expect(log.message).toBe(
+      'robot.sensed {"actorId":null,"event":"head_touched","at":1767607199500,"message":{"data":true}}',
+    );
+  });
 });

@@ -123,10 +123,14 @@ const LEVELS: Record<string, number> = {
   "trial.aborted": ERROR,
 };
 
-/** A trial event as a foxglove.Log at `at` nanoseconds: its type, then its fields as JSON. */
-export function logOf(event: StoredEvent, at: bigint) {
+/**
+ * A trial event as a foxglove.Log, logged at `logged` nanoseconds: its type, then its fields as JSON. What the robot
+ * sensed is stamped with the robot's own time (its fields keep the message that matched).
+ */
+export function logOf(event: StoredEvent, logged: bigint) {
   const { type, seq: _seq, relMs: _relMs, trialId: _trialId, serverTime: _serverTime, ...fields } = event;
   const rest = Object.keys(fields).length ? ` ${JSON.stringify(fields)}` : "";
+  const at = event.type === "robot.sensed" ? nanosecondsAt(event.at, 0) : logged;
   return {
     timestamp: { sec: Number(at / 1_000_000_000n), nsec: Number(at % 1_000_000_000n) },
     level: LEVELS[type] ?? (event.deviation ? WARNING : INFO),

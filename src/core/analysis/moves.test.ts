@@ -73,3 +73,37 @@ describe("what moved the trial at each step", () => {
     expect(moveWords(move)).toBe(words);
   });
 });
+
+describe("what ended a wait", () => {
+  const waitProtocol = {
+    steps: [
+      {
+        id: "wait-step",
+        name: "Wait",
+        actions: [
+          {
+            id: "wait",
+            type: "wait_for",
+            parameters: { events: [{ id: "touch", event: "head_touched", after: { to: "step", stepId: "greet" } }] },
+          },
+        ],
+      },
+      { id: "bye", name: "Goodbye", after: { to: "end" as const }, actions: [] },
+      { id: "greet", name: "Greet", after: { to: "end" as const }, actions: [] },
+    ],
+  };
+  it.each<[string, Command, [string, string]]>([
+    [
+      "the robot's senses, naming the event",
+      { kind: "sensed", event: "head_touched", at: 1, message: null },
+      ["greet", "the robot's senses (“head_touched”)"],
+    ],
+    ["the wizard's go on", { kind: "go_on" }, ["bye", "the wizard's go on"]],
+  ])("%s", (_, command, expected) => {
+    const moved = stepVisits(simulate(waitProtocol, [{ kind: "start" }, command]).log).map((v) => [
+      v.stepId,
+      moveWords(v.move),
+    ]);
+    expect(moved.at(-1)).toEqual(expected);
+  });
+});

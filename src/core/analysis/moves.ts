@@ -1,7 +1,8 @@
 // What moved the trial at each step: the path it took, each step it entered
 // with what took it there (the start, the wizard's next, the participant's
 // answer through a branch, a time limit running out, a loop going back or its
-// bound reached, or a jump, which is a deviation) and how many of
+// bound reached, the robot's senses or the wizard's go on ending a wait, or a
+// jump, which is a deviation) and how many of
 // the step's actions the wizard skipped while in it. Read from the log only,
 // so a step entered twice is two visits.
 import type { TrialEvent } from "@/core/trial";
@@ -19,7 +20,9 @@ export type Move =
   /** Back round a loop: `round` is how many times this loop has now gone back. */
   | { by: "loop"; round: number }
   /** A loop went back its `times`, so the trial took its way on ("onward"). */
-  | { by: "bound"; times: number };
+  | { by: "bound"; times: number }
+  | { by: "senses"; event: string }
+  | { by: "go_on" };
 
 /**
  * Each way the engine enters a step, as the move a reader is told. A new way
@@ -34,6 +37,8 @@ const MOVED_BY: Record<Via, Move["by"]> = {
   timeout: "timer",
   loop: "loop",
   loop_bound: "bound",
+  sensed: "senses",
+  go_on: "go_on",
 };
 
 export interface StepVisit {
@@ -50,16 +55,19 @@ export function stepVisits(events: readonly TrialEvent[]): StepVisit[] {
   const visits: StepVisit[] = [];
   let lastAnswer: string | undefined;
   let lastBound = 0;
+  let lastSensed: string | undefined;
   const rounds = new Map<string, number>();
   for (const e of events) {
     if (e.type === "answer.recorded") lastAnswer = e.label;
     if (e.type === "loop.bound_reached") lastBound = e.times;
+    if (e.type === "robot.sensed") lastSensed = e.event;
     if (e.type === "action.skipped" && visits.length) visits.at(-1)!.skipped++;
     if (e.type !== "step.entered") continue;
     const by = MOVED_BY[e.via];
     const round = (rounds.get(e.loop ?? "") ?? 0) + 1;
     if (by === "loop") rounds.set(e.loop ?? "", round);
-    // A branch enters its step right after the answer it follows, a loop's way on right after its bound (loops.ts writes them together).
+    // A branch enters its step right after the answer it follows, a loop's way on right after its
+    // bound (loops.ts writes them together), a wait's edge right after the robot's event (waits.ts).
     const move: Move =
       by === "answer"
         ? { by, answer: lastAnswer ?? "" }
@@ -67,7 +75,9 @@ export function stepVisits(events: readonly TrialEvent[]): StepVisit[] {
           ? { by, round }
           : by === "bound"
             ? { by, times: lastBound }
-            : { by };
+            : by === "senses"
+              ? { by, event: lastSensed ?? "" }
+              : { by };
     visits.push({ seq: e.seq, stepId: e.stepId, enteredMs: e.relMs, move, skipped: 0 });
   }
   return visits;
@@ -81,6 +91,8 @@ const MOVE_WORDS: Record<Move["by"], (move: Move) => string> = {
   timer: () => "the time limit running out",
   loop: (move) => `the loop going back (time ${(move as Extract<Move, { by: "loop" }>).round})`,
   bound: (move) => `a loop's bound (${timesWords((move as Extract<Move, { by: "bound" }>).times)}) reached`,
+  senses: (move) => `the robot's senses (“${(move as Extract<Move, { by: "senses" }>).event}”)`,
+  go_on: () => "the wizard's go on",
 };
 
 /** What moved the trial into a step, in words: "the answer “Mars”". */

@@ -78,6 +78,44 @@ export const CONTROL_BLOCKS: Block[] = [
     },
   },
   {
+    type: "wait_for",
+    name: "Wait for",
+    category: "logic",
+    description:
+      "Waits for something the robot senses (a touch, a word it hears): each event leads to its step; the wizard can always go on.",
+    parameterSchema: {
+      type: "object",
+      properties: {
+        events: {
+          type: "array",
+          title: "Events",
+          maxItems: 12,
+          items: {
+            type: "object",
+            properties: {
+              id: { type: "string", minLength: 1, maxLength: 100 },
+              event: { type: "string", title: "Event", minLength: 1, maxLength: 100 },
+              after: {
+                type: "object",
+                title: "Leads to",
+                properties: {
+                  to: { type: "string", enum: ["next", "step", "end"] },
+                  stepId: { type: "string", maxLength: 100 },
+                },
+                required: ["to"],
+                additionalProperties: false,
+              },
+            },
+            required: ["id", "event", "after"],
+            additionalProperties: false,
+          },
+        },
+      },
+      required: ["events"],
+      additionalProperties: false,
+    },
+  },
+  {
     type: "end_trial",
     name: "End trial",
     category: "logic",
@@ -115,7 +153,7 @@ function robotBlocks(plugin: Plugin): Block[] {
  * Actions that wait for the wizard's choice start on their own: the wizard's controls put one
  * question at a time, as the first of what starts next, so one of these never runs together.
  */
-export const WAITS_FOR_CHOICE: ReadonlySet<string> = new Set(["record_answer", "branch"]);
+export const WAITS_FOR_CHOICE: ReadonlySet<string> = new Set(["record_answer", "branch", "wait_for"]);
 
 /**
  * Not an action: a tool that makes an action start together with the one
@@ -155,5 +193,6 @@ export function initialParameters(block: Block, newId: () => string): Record<str
     };
   }
   if (block.type === "branch") return { targets: {} };
+  if (block.type === "wait_for") return { events: [] };
   return withDefaults(block.parameterSchema, {});
 }

@@ -222,6 +222,57 @@ describe("exporting and importing an experiment", () => {
     expect(exportExperiment(again)).toBe(text);
   });
 
+  it("keeps where a wait's events lead, named by key like a step's after", () => {
+    const draft: DesignDraft = {
+      name: "Touch",
+      description: "",
+      robotId: "nao6-ros2",
+      steps: [
+        {
+          id: "u1",
+          name: "Wait",
+          description: "",
+          actions: [
+            {
+              id: "a1",
+              type: "wait_for",
+              name: "",
+              parameters: {
+                events: [
+                  { id: "t", event: "head_touched", after: { to: "step", stepId: "u3" } },
+                  { id: "r", event: "heard_ready", after: { to: "end" } },
+                  { id: "h", event: "hand_touched", after: { to: "next" } },
+                ],
+              },
+              parallelGroup: null,
+            },
+          ],
+        },
+        { id: "u2", name: "Next", description: "", actions: [] },
+        { id: "u3", name: "Greet", description: "", actions: [] },
+      ],
+    };
+    const text = exportExperiment(draft);
+    expect(JSON.parse(text).steps[0].actions[0].parameters.events).toEqual([
+      { after: "@step-3", event: "head_touched", id: "t" },
+      { after: "end", event: "heard_ready", id: "r" },
+      { event: "hand_touched", id: "h" },
+    ]);
+    const again = imported(text);
+    expect(again.steps[0]!.actions[0]!.parameters.events).toEqual([
+      { id: "t", event: "head_touched", after: { to: "step", stepId: again.steps[2]!.id } },
+      { id: "r", event: "heard_ready", after: { to: "end" } },
+      { id: "h", event: "hand_touched", after: { to: "next" } },
+    ]);
+    expect(exportExperiment(again)).toBe(text);
+    const broken = JSON.parse(text);
+    broken.steps[0].actions[0].parameters.events[0].after = "@step-9";
+    expect(importExperiment(JSON.stringify(broken), ids())).toMatchObject({
+      ok: false,
+      problems: [{ path: "$.steps[0].actions[0].parameters.events[0].after" }],
+    });
+  });
+
   it("reads a version 1 file, whose steps each go on to the next", () => {
     const file = JSON.parse(exportExperiment(storyteller));
     file.formatVersion = 1;

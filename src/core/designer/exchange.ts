@@ -23,9 +23,10 @@
 // names its targets by key ("@step-3"), a step's "after" is a key or "end" (left
 // out for "the next step"; version 1 files have none), a time limit (version 3,
 // on a step or a record_answer) is { "seconds": 10, "after": "@step-4" },
-// its "after" written as a step's is, a loop (version 4) is { "again":
-// "@step-2", "times": 2, "onward": "end" } ("onward" written as an "after",
-// left out for the next step), and run-together groups are renamed
+// its "after" written as a step's is, as is each event's of a "Wait for"
+// (its parameters' events), a loop (version 4) is { "again": "@step-2",
+// "times": 2, "onward": "end" } ("onward" written as an "after", left out for
+// the next step), and run-together groups are renamed
 // "group-1", "group-2"… in order of first appearance ("runTogether" is left out
 // for an action that runs alone). The writer is deterministic (fixed key order,
 // parameters sorted, 2-space indent, final newline) so an exported file diffs
@@ -158,7 +159,12 @@ export function exportExperiment(draft: DesignDraft): string {
         ...toFile(action, ACTION_FIELDS),
         type: action.type,
         // A target that is no step of the draft is already an error in the designer; an id would mean nothing elsewhere.
-        parameters: action.type === "branch" ? swapTargets(action.parameters, (id) => keys.get(id)) : action.parameters,
+        parameters:
+          action.type === "branch"
+            ? swapTargets(action.parameters, (id) => keys.get(id))
+            : action.type === "wait_for"
+              ? swapWaitAfters(action.parameters, (after) => fileAfter(after as After, keys))
+              : action.parameters,
         runTogether: action.parallelGroup ? group(action.parallelGroup) : undefined,
         note: action.note || undefined,
         timeLimit: fileLimit(action.timeLimit, keys),
@@ -249,7 +255,9 @@ export function draftOf(
           parameters:
             action.type === "branch"
               ? swapTargets(action.parameters ?? {}, (key) => ids.get(key))
-              : (action.parameters ?? {}),
+              : action.type === "wait_for"
+                ? swapWaitAfters(action.parameters ?? {}, (after) => draftAfter(after as string | undefined, ids))
+                : (action.parameters ?? {}),
           parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
           note: action.note || undefined,
           timeLimit: draftLimit(action.timeLimit, ids),
@@ -327,6 +335,21 @@ function swapTargets(
   });
   // fromEntries and spread define properties, so a key like "__proto__" stays data.
   return { ...parameters, targets: Object.fromEntries(targets) };
+}
+
+/** A wait's events with where each leads rewritten (a draft's After ⇄ a file's "@step-K", "end" or nothing). */
+function swapWaitAfters(
+  parameters: Record<string, unknown>,
+  rewrite: (after: unknown) => unknown,
+): Record<string, unknown> {
+  if (!Array.isArray(parameters.events)) return parameters;
+  const events = parameters.events.map((event: unknown) => {
+    if (!isObject(event)) return event;
+    const { after, ...rest } = event;
+    const rewritten = rewrite(after);
+    return rewritten === undefined ? rest : { ...rest, after: rewritten };
+  });
+  return { ...parameters, events };
 }
 
 // By hand because JSON.stringify puts integer-like keys ("2", "10") first
@@ -485,6 +508,10 @@ function* check(file: unknown): Work<ImportProblem[]> {
       if (!isObject(action.parameters)) flag(`${path}.parameters`, "must be an object ({ … })");
       else {
         values(action.parameters, `${path}.parameters`, 0);
+        if (action.type === "wait_for" && Array.isArray(action.parameters.events))
+          action.parameters.events.forEach((event: unknown, e) => {
+            if (isObject(event)) leadsTo(event.after, `${path}.parameters.events[${e}].after`);
+          });
         if (action.type === "branch" && isObject(action.parameters.targets)) {
           for (const [option, target] of Object.entries(action.parameters.targets)) {
             const at = member(`${path}.parameters.targets`, option);

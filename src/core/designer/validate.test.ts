@@ -400,3 +400,71 @@ describe("bounded loops", () => {
     );
   });
 });
+
+describe("a Wait for", () => {
+  const waitFor = (events: Array<[string, After]>, extra: Partial<DesignAction> = {}): ActionSpec => ({
+    type: "wait_for",
+    parameters: { events: events.map(([event, after], i) => ({ id: `e${i + 1}`, event, after })) },
+    ...extra,
+  });
+  const sensing: Plugin = {
+    ...toy,
+    events: [
+      {
+        id: "head_touched",
+        name: "Head touched",
+        topic: "/touch",
+        messageType: "std_msgs/msg/Bool",
+        when: { kind: "pressed", field: "data", equals: true },
+      },
+    ],
+  };
+  const toStep = (stepId: string): After => ({ to: "step", stepId });
+  const limit = { seconds: 20, after: toStep("s2") };
+
+  it.each<[string, DesignDraft, string[], Plugin | null]>([
+    ["an event leading to a step", draft([waitFor([["head_touched", toStep("s2")]])], [say()]), [], null],
+    ["a time limit alone", draft([waitFor([], { timeLimit: limit })], [say()]), [], null],
+    ["nothing to wait for", draft([waitFor([])], [say()]), ["error wait_for_nothing s1a1 events"], null],
+    [
+      "an event with no step chosen",
+      draft([waitFor([["head_touched", { to: "step", stepId: "" }]])], [say()]),
+      ["error wait_target_missing s1a1 events"],
+      null,
+    ],
+    [
+      "an event leading to a step that is gone",
+      draft([waitFor([["head_touched", toStep("gone")]])], [say()]),
+      ["error wait_target_missing s1a1 events"],
+      null,
+    ],
+    [
+      "a step reached only by an event is reachable",
+      (() => {
+        const d = draft([waitFor([["head_touched", toStep("s2")]])], [say()]);
+        d.steps[0]!.after = { to: "end" };
+        return d;
+      })(),
+      [],
+      null,
+    ],
+    ["an event the robot senses", draft([waitFor([["head_touched", toStep("s2")]])], [say()]), [], sensing],
+    [
+      "an event the robot does not sense",
+      draft([waitFor([["heard_ready", toStep("s2")]])], [say()]),
+      ["warning unsupported_on_robot s1a1"],
+      sensing,
+    ],
+  ])("%s", (_name, design, expected, plugin) => {
+    expect(summary(validateDesign(design, plugin))).toEqual(expected);
+  });
+
+  it("says what is missing in the researcher's words", () => {
+    expect(validateDesign(draft([waitFor([])], [say()]), null)[0]!.message).toBe(
+      '"Wait for" waits for nothing: choose at least one event the robot senses, or a time limit.',
+    );
+    expect(validateDesign(draft([waitFor([["heard_ready", toStep("s2")]])], [say()]), sensing)[0]!.message).toBe(
+      '"Wait for" cannot run on Toy robot: Toy robot (plugin 1.0.0) does not sense "heard_ready" (it senses: head_touched)',
+    );
+  });
+});

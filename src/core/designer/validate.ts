@@ -11,7 +11,7 @@ import {
   type Plugin,
 } from "../plugins";
 import { finish, type Work } from "../work";
-import { exitOf, timeLimitsOf, waysBy } from "../protocol/flow";
+import { awaitedEvents, exitBy, exitOf, TIMED_BLOCKS, timeLimitsOf, waysBy } from "../protocol/flow";
 import { blockFor, type Block } from "./blocks";
 import { loopIssues } from "./loop-issues";
 import { stepLabel, upper } from "./step-label";
@@ -108,14 +108,15 @@ export function* validating(draft: DesignDraft, plugin: Plugin | null, channels?
           message: `${name} is set to run together with other actions, but no action next to it is in its group, so it runs on its own.`,
         });
       }
-      // The engine runs a time limit of a question only: on any other action it would silently do nothing.
-      if (action.timeLimit && action.type !== "record_answer") {
+      // The engine runs a time limit of a question or a wait only: on any other action it would silently do nothing.
+      if (action.timeLimit && !TIMED_BLOCKS.has(action.type)) {
         at({
           severity: "error",
           code: "time_limit_not_question",
-          message: `${name} has a time limit, but only a "Record answer" can have one (a step can too, in its properties).`,
+          message: `${name} has a time limit, but only a "Record answer" or a "Wait for" can have one (a step can too, in its properties).`,
         });
       }
+      if (action.type === "wait_for") for (const issue of waitIssues(action, name, indexById)) at(issue);
       if (action.type === "record_answer") {
         const seen = new Set<string>();
         for (const option of optionsOf(action)) {
@@ -178,6 +179,42 @@ function optionsOf(action: DesignAction): Option[] {
   });
 }
 
+/** A wait that waits for nothing, or an event of it that leads nowhere. */
+function waitIssues(
+  action: DesignAction,
+  name: string,
+  indexById: Map<string, number>,
+): Array<Omit<DesignIssue, "stepId" | "actionId">> {
+  const events = awaitedEvents(action);
+  if (events.length === 0 && !action.timeLimit)
+    return [
+      {
+        severity: "error",
+        code: "wait_for_nothing",
+        parameter: "events",
+        message: `${name} waits for nothing: choose at least one event the robot senses, or a time limit.`,
+      },
+    ];
+  return events.flatMap((e) => {
+    if (e.after.to !== "step") return [];
+    const gone = e.after.stepId ? !indexById.has(e.after.stepId) : false;
+    if (e.after.stepId && !gone) return [];
+    const message = gone
+      ? `${name}: the event "${e.event}" leads to a step that is no longer in the experiment. Choose another step.`
+      : `${name}: choose the step the event "${e.event}" leads to.`;
+    return [{ severity: "error" as const, code: "wait_target_missing", parameter: "events", message }];
+  });
+}
+
+/** The steps a wait's events lead to (a step or the end is a way on; one that is gone is told by waitIssues). */
+function waitExits(draft: DesignDraft, s: number): { exits: number[]; ends: boolean } {
+  const ways = draft.steps[s]!.actions.flatMap((a) => awaitedEvents(a).map((e) => exitBy(draft.steps, s, e.after)));
+  return {
+    exits: ways.flatMap((exit) => (exit.to === "step" ? [exit.index] : [])),
+    ends: ways.some((exit) => exit.to === "end"),
+  };
+}
+
 /** The steps a step's time limits (its own, its questions') lead to; one to a step that is gone is told. */
 function timeLimitExits(draft: DesignDraft, s: number, tell: (message: string) => void): number[] {
   const step = draft.steps[s]!;
@@ -205,11 +242,14 @@ function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[
         issue: { severity: "error", code: "after_target_missing", message, stepId: step.id },
       }),
     );
+    // A wait's events are ways on too; the wizard's go on still takes the step's own way, so it never replaces it.
+    const waits = waitExits(draft, s);
+    exits.push(...waits.exits);
     for (const [a, action] of step.actions.entries()) {
       if (action.type === "end_trial") return { exits, ends: true };
       const routes = action.type === "branch" ? routesOf(step, a, indexById) : null;
       for (const route of routes ?? []) if (route.to !== null) exits.push(route.to);
-      if (routes?.length && routes.every((r) => r.to !== null)) return { exits, ends: false };
+      if (routes?.length && routes.every((r) => r.to !== null)) return { exits, ends: waits.ends };
     }
     // A loop leads two ways: back, and on after its last time.
     const ways = waysBy(draft.steps, s, step.after ?? { to: "next" }).map((way) => way.exit);
@@ -222,7 +262,7 @@ function flowIssues(draft: DesignDraft, indexById: Map<string, number>): Placed[
       });
     }
     const onward = ways.flatMap((exit) => (exit.to === "step" ? [exit.index] : []));
-    return { exits: [...exits, ...onward], ends: ways.some((exit) => exit.to !== "step") };
+    return { exits: [...exits, ...onward], ends: waits.ends || ways.some((exit) => exit.to !== "step") };
   });
   issues.push(...fallThroughIssues(draft, indexById));
   const loops = loopIssues(

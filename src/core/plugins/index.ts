@@ -16,8 +16,8 @@ export { unavailableActions, unavailableReason, type UnavailableAction } from ".
 export { resolveAction, type Resolution } from "./resolve";
 export {
   cannotStart,
-  checkingStart,
   eventProblems,
+  checkingStart,
   portability,
   type PortableExperiment,
   type PortabilityReport,

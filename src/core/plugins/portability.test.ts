@@ -1,7 +1,7 @@
 import { readFileSync } from "node:fs";
 import { describe, expect, it } from "vitest";
 import { STORYTELLER_STEPS } from "../../server/seed/storyteller";
-import { eventProblems, loadPlugin, type Plugin, portability, type PortableExperiment } from "./index";
+import { cannotStart, eventProblems, loadPlugin, type Plugin, portability, type PortableExperiment } from "./index";
 
 const plugin = (file: string) => {
   const loaded = loadPlugin(file, readFileSync(`plugins/${file}`, "utf8"));
@@ -142,5 +142,56 @@ describe("events a robot cannot report", () => {
     ],
   ])("%s", (_what, ids, plugin, expected) => {
     expect(eventProblems(ids, plugin)).toEqual(expected);
+  });
+});
+
+describe("the events a wait needs the robot to sense", () => {
+  const sensing: Plugin = {
+    ...plugin("simulated.json"),
+    events: [
+      {
+        id: "head_touched",
+        name: "Head touched",
+        topic: "/touch",
+        messageType: "std_msgs/msg/Bool",
+        when: { kind: "pressed", field: "data", equals: true },
+      },
+    ],
+  };
+  const waiting = (events: string[]): PortableExperiment => ({
+    steps: [
+      {
+        name: "Start",
+        actions: [
+          {
+            id: "wait",
+            type: "wait_for",
+            parameters: { events: events.map((event, i) => ({ id: `e${i}`, event, after: { to: "next" } })) },
+          },
+        ],
+      },
+    ],
+  });
+
+  it.each<[string, string[], string[]]>([
+    ["an event the plugin declares", ["head_touched"], []],
+    [
+      "an event it does not, named once",
+      ["head_touched", "heard_word", "heard_word"],
+      [`${sensing.name} (plugin ${sensing.version}) does not sense "heard_word" (it senses: head_touched)`],
+    ],
+  ])("%s", (_, events, expected) => {
+    expect(eventProblems(events, sensing)).toEqual(expected);
+  });
+
+  it("a wait for an event the robot cannot sense is unsupported, so a trial cannot start", () => {
+    expect(portability(waiting(["head_touched"]), sensing).portable).toBe(true);
+    expect(portability(waiting(["heard_word"]), sensing).actions[0]).toMatchObject({
+      status: "unsupported",
+      by: "runtime",
+    });
+    expect(cannotStart(waiting(["heard_word"]), sensing)).toContain(
+      `step 1 (Start), "wait_for": ${sensing.name} (plugin ${sensing.version}) does not sense "heard_word"`,
+    );
   });
 });

@@ -2,6 +2,7 @@
 // against one plugin: supported, unsupported (with the reason), or supported
 // with parameter problems (each naming the parameter). Given this server's
 // ways to the robot, an action none of them carries is unsupported here too.
+import { awaitedEvents } from "../protocol/flow";
 import type { ParameterProblem } from "./parameters";
 import { unreachable, type Channels } from "./reach";
 import { resolveAction } from "./resolve";
@@ -52,8 +53,13 @@ export function portability(experiment: PortableExperiment, plugin: Plugin, chan
       const base = { stepIndex, actionId: action.id, type: action.type, problems: [] as ParameterProblem[] };
       const resolution = resolveAction(plugin, action.type, action.parameters ?? {});
       switch (resolution.status) {
-        case "runtime":
+        case "runtime": {
+          // A "Wait for" runs in the runtime, on what the robot reports: each event it waits for must be one the robot senses.
+          const events = awaitedEvents({ type: action.type, parameters: action.parameters ?? {} }).map((e) => e.event);
+          const problems = eventProblems(events, plugin);
+          if (problems.length) return { ...base, status: "unsupported", by: "runtime", reason: problems.join(" ") };
           return { ...base, status: "supported", by: "runtime" };
+        }
         case "browser":
           return { ...base, status: "supported", by: "browser" };
         case "supported": {
@@ -120,7 +126,7 @@ export function* checkingStart(protocol: PortableExperiment, plugin: Plugin): Wo
  * waits for): one plain reason per event the plugin does not declare; empty
  * when it can report them all.
  */
-export function eventProblems(eventIds: string[], plugin: Plugin): string[] {
+export function eventProblems(eventIds: readonly string[], plugin: Plugin): string[] {
   const declared = new Set((plugin.events ?? []).map((e) => e.id));
   const offered = [...declared].join(", ") || "none";
   return [...new Set(eventIds)]

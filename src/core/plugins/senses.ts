@@ -3,7 +3,7 @@
 // null); the caller keeps the state between messages and gives each message
 // its time (messageTime: the robot's stamp, else its own clock).
 import { fieldAt, robotTimeOf } from "./completion";
-import type { Condition, RobotEvent, Sensed } from "./types";
+import type { Condition, FieldValue, RobotEvent, Sensed } from "./types";
 
 /** What one event remembers between messages: whether its sensor is held, and since when something is near. */
 export interface SenseState {
@@ -87,4 +87,20 @@ const listOf = (value: unknown): unknown[] => (Array.isArray(value) ? value : [v
 function nearest(value: unknown): number | null {
   const readings = listOf(value).filter((v): v is number => typeof v === "number" && Number.isFinite(v) && v > 0);
   return readings.length ? Math.min(...readings) : null;
+}
+
+const value = (v: FieldValue) => (typeof v === "string" ? `“${v}”` : String(v));
+
+/** A condition in a paper's words: "its field state became 1 (where button is 1)". */
+export function conditionWords(condition: Condition): string {
+  switch (condition.kind) {
+    case "pressed": {
+      const where = Object.entries(condition.where ?? {}).map(([field, v]) => `${field} is ${value(v)}`);
+      return `its field ${condition.field} became ${value(condition.equals)}${where.length ? ` where ${where.join(" and ")}` : ""}, once per press`;
+    }
+    case "heard":
+      return `one of the words ${condition.words.map((w) => `“${w}”`).join(", ")} heard with a confidence of at least ${condition.minConfidence}`;
+    case "near":
+      return `its field ${condition.field} under ${condition.below} for ${condition.forMs} ms, again only after it had been above ${condition.clearAbove}`;
+  }
 }

@@ -50,8 +50,30 @@ function describe(steps: Steps, exit: Exit): string {
   return step.name.trim() ? `"${step.name.trim()}"` : `step ${exit.index + 1}`;
 }
 
-/** A step's time limits: its own, then its questions' ("no answer in …"). */
+/** The blocks that may have a time limit of their own: a question ("no answer in …") and a wait ("nothing sensed in …"). */
+export const TIMED_BLOCKS: ReadonlySet<string> = new Set(["record_answer", "wait_for"]);
+
+/** A step's time limits: its own, then its questions' and waits'. */
 export function timeLimitsOf(step: Steps[number]): TimeLimit[] {
-  const limits = [step.timeLimit, ...step.actions.map((a) => (a.type === "record_answer" ? a.timeLimit : undefined))];
+  const limits = [step.timeLimit, ...step.actions.map((a) => (TIMED_BLOCKS.has(a.type) ? a.timeLimit : undefined))];
   return limits.filter((limit) => limit !== undefined);
+}
+
+/** One event a "Wait for" block waits for: its own id, the robot's event (a RobotEvent id), and where it leads. */
+export interface AwaitedEvent {
+  id: string;
+  event: string;
+  after: After;
+}
+
+/** The events a "Wait for" block lists, as far as they are well formed (the designer's checks report the rest). */
+export function awaitedEvents(action: { type: string; parameters: Record<string, unknown> }): AwaitedEvent[] {
+  const events = action.type === "wait_for" ? action.parameters.events : undefined;
+  if (!Array.isArray(events)) return [];
+  return events.flatMap((e: unknown) => {
+    const { id, event, after } = (e && typeof e === "object" ? e : {}) as Record<string, unknown>;
+    const to = (after as { to?: unknown } | undefined)?.to;
+    if (typeof id !== "string" || typeof event !== "string" || typeof to !== "string") return [];
+    return [{ id, event, after: after as After }];
+  });
 }

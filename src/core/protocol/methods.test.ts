@@ -275,3 +275,51 @@ describe("the methods text", () => {
     expect(methodsPlainText(rejoining)).toContain("“Goodbye *friend*!”");
   });
 });
+
+describe("the methods text of a wait for the robot's senses", () => {
+  const waiting: MethodsInput = {
+    ...storyteller,
+    events: [
+      {
+        id: "head_touched",
+        name: "Head touched",
+        description: "a touch on the head's front sensor",
+        topic: "/touch",
+        messageType: "std_msgs/msg/Bool",
+        when: { kind: "pressed", field: "data", equals: true },
+      },
+    ],
+    snapshot: snapshotOf({
+      id: "exp-3",
+      name: "Touch to start",
+      description: "",
+      robotId: "nao6-ros2",
+      steps: [
+        step("ask", "Ask", [
+          say("q", "Touch my head to start."),
+          {
+            id: "wait",
+            type: "wait_for",
+            name: "",
+            parameters: {
+              events: [
+                { id: "t", event: "head_touched", after: { to: "step", stepId: "greet" } },
+                { id: "r", event: "heard_ready", after: { to: "end" } },
+              ],
+            },
+            parallelGroup: null,
+            timeLimit: { seconds: 20, after: { to: "step", stepId: "prompt" } },
+          },
+        ]),
+        step("prompt", "Prompt", [say("p", "Go on, touch it.")], { to: "end" }),
+        step("greet", "Greet", [say("g", "Hello!")], { to: "end" }),
+      ],
+    }),
+  };
+
+  it("names each event awaited with its condition, where it led, the time limit and the wizard's go on", () => {
+    expect(methodsPlainText(waiting)).toContain(
+      '1. Ask. The robot said “Touch my head to start.” Then the trial waited for the robot to sense “Head touched” (a touch on the head\'s front sensor; its field data became true, once per press), which led to “Greet”, or “heard_ready”, which ended the trial; if nothing was sensed within 20 seconds, the trial led to “Prompt”. The wizard could also go on without it.',
+    );
+  });
+});

@@ -10,8 +10,10 @@ import type { Instrument } from "../questionnaires/definition";
 import type { StudySettings } from "../studies/settings";
 import { loopsOf } from "../trial/loops";
 import { answerOptions, branchTarget } from "../trial/protocol";
+import { conditionWords } from "../plugins/senses";
+import type { RobotEvent } from "../plugins/types";
 import type { DesignAction, ProtocolSnapshot, TimeLimit } from "./document";
-import { exitBy, exitOf, timesWords } from "./flow";
+import { type AwaitedEvent, awaitedEvents, exitBy, exitOf, timesWords } from "./flow";
 
 export interface MethodsInput {
   snapshot: ProtocolSnapshot;
@@ -27,6 +29,8 @@ export interface MethodsInput {
   questionnaires: Array<{ name: string; timing: "before" | "after"; items: number; instrument: Instrument | null }>;
   /** What to call action types: the robot's library (action-name.ts). */
   names?: ActionNames;
+  /** What the robot senses, as its plugin declares it: a wait names each event it waited for and its condition. */
+  events?: RobotEvent[];
 }
 
 export interface Style {
@@ -108,7 +112,7 @@ function methods(input: MethodsInput, s: Style): string {
 }
 
 type Steps = ProtocolSnapshot["steps"];
-type Described = Pick<MethodsInput, "snapshot" | "names">;
+type Described = Pick<MethodsInput, "snapshot" | "names" | "events">;
 
 function stepName(s: Style, steps: Steps, index: number): string {
   return quote(s, steps[index]!.name);
@@ -197,6 +201,11 @@ function stepSentences(input: Described, s: Style, index: number): { text: strin
       continue;
     }
     if (action.type === "branch") continue; // a branch with no question before it routes nothing
+    if (action.type === "wait_for") {
+      text.push(waitSentence(input, s, index, action, first));
+      first = false;
+      continue;
+    }
     // A unit: this action and the ones right after it that share its parallel group.
     const unit = [action];
     while (action.parallelGroup && actions[a + 1]?.parallelGroup === action.parallelGroup) unit.push(actions[++a]!);
@@ -293,6 +302,30 @@ function questionSentences(
     }
   }
   return { text, ended: everyRouted };
+}
+
+/** An event the robot senses in a paper's words: its name, what it is, and its condition as the plugin declares it. */
+export function eventWords(s: Style, id: string, events: RobotEvent[] | undefined): string {
+  const declared = events?.find((e) => e.id === id);
+  if (!declared) return quote(s, id);
+  const what = declared.description?.trim() ? `${s.text(declared.description.trim())}; ` : "";
+  return `${quote(s, declared.name)} (${what}${conditionWords(declared.when)})`;
+}
+
+/** A wait: each event it waited for and where it led, its time limit, and the wizard's go on. */
+function waitSentence(input: Described, s: Style, index: number, wait: DesignAction, first: boolean): string {
+  const { steps } = input.snapshot;
+  const led = (after: AwaitedEvent["after"]) => {
+    const exit = exitBy(steps, index, after);
+    return exit.to === "step" ? `led to ${stepName(s, steps, exit.index)}` : "ended the trial";
+  };
+  const events = awaitedEvents(wait).map((e) => `${eventWords(s, e.event, input.events)}, which ${led(e.after)}`);
+  const limit = wait.timeLimit
+    ? `if nothing was sensed within ${seconds(wait.timeLimit.seconds)}, the trial ${led(wait.timeLimit.after)}`
+    : "";
+  const waited = events.length ? `the trial waited for the robot to sense ${events.join(", or ")}` : "";
+  const sentence = [waited, limit].filter(Boolean).join("; ");
+  return `${stop(first ? capital(sentence) : `Then ${sentence}`)} The wizard could also go on without it.`;
 }
 
 function questionnaires(input: MethodsInput, s: Style): string {

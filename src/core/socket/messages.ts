@@ -14,6 +14,7 @@ import type { StoredEvent } from "@/core/trial";
 // 5: the heartbeat (src/core/socket/heartbeat.ts): "ping" carries the page's clock and its last round trip,
 // "pong" answers it at once with the ping's time, so each end learns when the other stopped; the runtime's
 // own "ping" asks a quiet page to ping at once.
+// Also 5: the wizard's "go_on" command ends a pending "Wait for" (src/core/trial/waits.ts).
 // Also 5: a "command" carries `at`, the page's clock when the wizard asked (src/core/trial/freshness.ts).
 export const SOCKET_MESSAGES_VERSION = 5;
 
@@ -27,6 +28,7 @@ export const commandSchema = z.discriminatedUnion("kind", [
   z.object({ kind: z.literal("skip"), actionId: id.optional() }),
   z.object({ kind: z.literal("trigger"), actionId: id }),
   z.object({ kind: z.literal("answer"), actionId: id, optionId: id }),
+  z.object({ kind: z.literal("go_on") }),
   z.object({ kind: z.literal("jump"), stepId: id }),
   z.object({ kind: z.literal("unscripted"), actionType: z.string().min(1).max(200), parameters: params }),
   z.object({ kind: z.literal("pause") }),

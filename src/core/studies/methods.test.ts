@@ -220,3 +220,41 @@ it("the Markdown says the same with headings, and escapes the researcher's words
   expect(markdown).toContain("## Participants\n\n“Expressive”: 3 enrolled");
   expect(markdown).toContain("**Only in Still**\n2. **Story.**");
 });
+
+describe("the study's methods text of waits for the robot's senses", () => {
+  const waiting = condition({
+    name: "Touch",
+    protocol: {
+      version: 1,
+      hash: "ccc333",
+      events: [
+        {
+          id: "head_touched",
+          name: "Head touched",
+          topic: "/touch",
+          messageType: "std_msgs/msg/Bool",
+          when: { kind: "pressed", field: "data", equals: true },
+        },
+      ],
+      snapshot: snapshot("Touch to start", [
+        step("w", "Wait for a touch", [
+          {
+            id: "wait",
+            type: "wait_for",
+            name: "",
+            parameters: { events: [{ id: "t", event: "head_touched", after: { to: "next" } }] },
+            parallelGroup: null,
+          },
+        ]),
+        goodbye,
+      ]),
+    },
+  });
+
+  it("has a Robot senses section naming each event awaited, its condition and its step", () => {
+    const text = studyMethodsPlainText({ ...study, conditions: [waiting, still] });
+    expect(text).toContain(
+      'Robot senses\n\nIn “Touch”, the trial waited for the robot to sense “Head touched” (its field data became true, once per press) in “Wait for a touch”; the wizard could go on without it.',
+    );
+  });
+});

@@ -7,7 +7,10 @@
 import type { Spread } from "../analysis/study-summary";
 import type { ActionNames } from "../designer/action-name";
 import type { ProtocolSnapshot } from "../protocol/document";
+import type { RobotEvent } from "../plugins/types";
+import { awaitedEvents } from "../protocol/flow";
 import {
+  eventWords,
   joinAnd,
   loopSentences,
   MARKDOWN,
@@ -24,8 +27,14 @@ export interface ConditionFacts {
   name: string;
   description: string;
   experiment: string;
-  /** The experiment's latest published version, and what to call the robot's actions (its plugin's library). */
-  protocol: { version: number; hash: string; snapshot: ProtocolSnapshot; names?: ActionNames } | null;
+  /** The experiment's latest published version, what to call the robot's actions (its plugin's library) and what the robot senses. */
+  protocol: {
+    version: number;
+    hash: string;
+    snapshot: ProtocolSnapshot;
+    names?: ActionNames;
+    events?: RobotEvent[];
+  } | null;
   /** Participants assigned to it (within subjects: every participant whose order holds it). */
   enrolled: number;
   /** Of those, how many finished a trial of it; withdrew; and were left out, by reason. */
@@ -113,6 +122,7 @@ const SECTIONS: Section[] = [
   { heading: "Robots", write: robots },
   { heading: "Protocol", write: protocol },
   { heading: "Loops", write: loops },
+  { heading: "Robot senses", write: senses },
   { heading: "Step timings", write: timings },
   { heading: "Questionnaires", write: questionnaires },
   { heading: "Coding and agreement", write: coding },
@@ -214,6 +224,25 @@ function robots(f: StudyFacts, s: Style): string[] {
 }
 
 /** Each condition's protocol in full when there is one; with several, the steps they share once and what differs by condition. */
+/** The events of the robot's senses each condition's protocol waited for, with their conditions; none leaves the section out. */
+function senses(f: StudyFacts, s: Style): string[] {
+  return f.conditions.flatMap((c) => {
+    const steps = c.protocol?.snapshot.steps ?? [];
+    const waited = steps.flatMap((step) =>
+      step.actions.flatMap((a) => awaitedEvents(a).map((e) => ({ event: e.event, step: step.name }))),
+    );
+    if (!waited.length) return [];
+    const ids = [...new Set(waited.map((w) => w.event))];
+    const listed = ids.map((id) => {
+      const where = [...new Set(waited.filter((w) => w.event === id).map((w) => quote(s, w.step)))];
+      return `${eventWords(s, id, c.protocol!.events)} in ${joinAnd(where)}`;
+    });
+    return [
+      `In ${quote(s, c.name)}, the trial waited for the robot to sense ${joinAnd(listed)}; the wizard could go on without it.`,
+    ];
+  });
+}
+
 function protocol(f: StudyFacts, s: Style): string[] {
   const described = f.conditions.filter((c) => c.protocol);
   const lines = (c: ConditionFacts) => stepParagraphs(c.protocol!, s);

@@ -5,6 +5,7 @@ import { applyInPlace } from "./fold";
 import { exitNow, follow, loopName } from "./loops";
 import { answerOptions, branchTarget, findAction, findStep, nextUnit } from "./protocol";
 import { FINISHED, timerFired, withTimers } from "./timers";
+import { goOn, sensed, waitingWords } from "./waits";
 import type { Command, Decision, DeviationKind, EngineEvent, ProtocolAction, TrialProtocol, TrialState } from "./types";
 
 const ok = (...events: EngineEvent[]): Decision => ({ ok: true, events });
@@ -34,6 +35,8 @@ function decideCommand(protocol: TrialProtocol, state: TrialState, command: Comm
       if (state.status === "completed" || state.status === "aborted") return no("This trial has already ended.");
       if (!command.text.trim()) return no("The robot's problem has no text.");
       return ok({ type: "robot.problem", text: command.text });
+    case "sensed":
+      return sensed(protocol, state, command);
     case "abort":
       if (state.status === "completed" || state.status === "aborted") return no("This trial has already ended.");
       return ok({ type: "trial.aborted", reason: command.reason });
@@ -75,6 +78,8 @@ function decideCommand(protocol: TrialProtocol, state: TrialState, command: Comm
       if (command.stepId === state.currentStepId) return no("The trial is already at that step.");
       return ok({ type: "step.entered", stepId: command.stepId, via: "manual_jump", deviation: "manual_jump" });
     }
+    case "go_on":
+      return goOn(protocol, state);
     case "timer_fired":
       return timerFired(protocol, state, command.timerId);
     case "unscripted":
@@ -125,6 +130,7 @@ function request(state: TrialState, unit: ProtocolAction[], deviation: Deviation
       return no(`Record the participant's answer: ${labels}.`);
     }
     if (action.type === "branch") return no("This branch follows the recorded answer: record the answer first.");
+    if (action.type === "wait_for") return no(waitingWords(action));
     events.push({
       type: "action.requested",
       stepId,

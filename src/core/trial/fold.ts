@@ -72,6 +72,7 @@ const ACTION_OUTCOME: Partial<Record<TrialEvent["type"], [ActionStatus, "request
   "action.skipped": ["skipped", "finishedAt"],
   "answer.recorded": ["done", "finishedAt"],
   "branch.resolved": ["done", "finishedAt"],
+  "wait.resolved": ["done", "finishedAt"],
 };
 
 /**

@@ -21,6 +21,8 @@ export const FRESH_FOR_MS: Record<Command["kind"], number | null> = {
   unscripted: ROBOT_ACTION_FRESH_MS,
   resume: ROBOT_ACTION_FRESH_MS,
   skip: null,
+  // Ends a wait and moves no robot, as a skip: the first of it and an event to reach the log decides the race.
+  go_on: null,
   pause: null,
   complete: null,
   emergency_stop: null,
@@ -34,6 +36,7 @@ export const FRESH_FOR_MS: Record<Command["kind"], number | null> = {
   unknown: null,
   timed_out: null,
   robot_problem: null,
+  sensed: null,
   // The runtime's own clock: a timer fires when it was due, however late the process got to it.
   timer_fired: null,
 };

@@ -29,6 +29,28 @@ describe("the flow map's edges", () => {
   it.each<[string, TrialProtocol, string[]]>([
     ["a straight protocol", { steps: [step("a"), step("b")] }, ["0→1", "1→end"]],
     [
+      "a wait's events, each to its way on, beside the step's own (the wizard's go on)",
+      {
+        steps: [
+          step("wait", [
+            {
+              id: "w",
+              type: "wait_for",
+              parameters: {
+                events: [
+                  { id: "t", event: "head_touched", after: { to: "step", stepId: "greet" } },
+                  { id: "r", event: "heard_ready", after: { to: "end" } },
+                ],
+              },
+            },
+          ]),
+          step("bye"),
+          step("greet"),
+        ],
+      },
+      ["0→1", "0→2 head_touched", "0→end heard_ready", "1→2", "2→end"],
+    ],
+    [
       "time limits: a step's, and a question's beside its answers",
       {
         steps: [

@@ -2,10 +2,10 @@
 // designer's flow map. Read the way the engine walks (./decide.ts): a branch
 // sends each answer to its step, "End trial" ends, and otherwise the step's
 // "after" applies. A time limit (the step's, a question's) is an edge of its
-// own, whatever else the step does. A loop is two edges: back, with its
-// bound, and on after its last time.
+// own, whatever else the step does; so is each event a "Wait for" waits for.
+// A loop is two edges: back, with its bound, and on after its last time.
 import type { After } from "../protocol/document";
-import { timeLimitsOf, timesWords, waysBy } from "../protocol/flow";
+import { awaitedEvents, exitBy, timeLimitsOf, timesWords, waysBy } from "../protocol/flow";
 import { answerOptions, branchTarget } from "./protocol";
 import type { TrialProtocol } from "./types";
 
@@ -17,15 +17,30 @@ export interface FlowEdge {
    * "after": the step's own way on; "answer": a branch, labelled with its
    * answer; "timeout": a time limit, labelled with its seconds; "loop": a
    * step's way back, labelled with its bound (a time limit's way back is a
-   * "timeout" with its bound in its label).
+   * "timeout" with its bound in its label); "sensed": a wait's event,
+   * labelled with the event.
    */
-  kind: "after" | "answer" | "timeout" | "loop";
+  kind: "after" | "answer" | "timeout" | "loop" | "sensed";
   label?: string;
 }
 
 export function flowEdges(protocol: TrialProtocol): FlowEdge[] {
   const indexOf = new Map(protocol.steps.map((s, i) => [s.id, i]));
-  return protocol.steps.flatMap((_, from) => [...routes(protocol, indexOf, from), ...timeouts(protocol, from)]);
+  return protocol.steps.flatMap((_, from) => [
+    ...routes(protocol, indexOf, from),
+    ...timeouts(protocol, from),
+    ...sensed(protocol, from),
+  ]);
+}
+
+function sensed(protocol: TrialProtocol, from: number): FlowEdge[] {
+  return protocol.steps[from]!.actions.flatMap((action) =>
+    awaitedEvents(action).flatMap((e) => {
+      const exit = exitBy(protocol.steps, from, e.after);
+      if (exit.to === "missing") return [];
+      return [{ from, to: exit.to === "end" ? "end" : exit.index, kind: "sensed" as const, label: e.event }];
+    }),
+  );
 }
 
 function timeouts(protocol: TrialProtocol, from: number): FlowEdge[] {

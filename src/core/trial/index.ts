@@ -9,3 +9,4 @@ export { type FlowEdge, flowEdges } from "./graph";
 export { pathTaken, type Upcoming, upcoming } from "./path";
 export { dueMs, remainingMs, timerExit } from "./timers";
 export { exitNow, loopsOf } from "./loops";
+export { pendingWait } from "./waits";

@@ -81,6 +81,12 @@ export function rehearse(
     const stepId = state.currentStepId;
     if (!unit.length && stepId && runOut.has(stepId) && timeRunsOut((t) => t.stepId === stepId && !t.actionId))
       continue;
+    // A wait takes the wizard's way on in a preview, unless its time is let run out: what the robot senses is not known before a trial.
+    if (unit[0]?.type === "wait_for") {
+      const wait = unit[0];
+      if (!(runOut.has(wait.id) && timeRunsOut((t) => t.actionId === wait.id))) send({ kind: "go_on" });
+      continue;
+    }
     if (question) {
       const options = answerOptions(question);
       const chosen = options.find((o) => o.id === answers[question.id]) ?? options[0];

@@ -3,7 +3,7 @@
 // are done), so every decision ends by starting the timers its events made
 // due and cancelling those they ended: the wizard acting first cancels a
 // timer in the same append, and a cancelled or fired timer never fires.
-import { type Exit, exitBy } from "../protocol/flow";
+import { type Exit, exitBy, TIMED_BLOCKS } from "../protocol/flow";
 import { applyInPlace } from "./fold";
 import { follow, loopName, timesTaken } from "./loops";
 import { findAction, findStep } from "./protocol";
@@ -12,6 +12,13 @@ import type { Decision, EngineEvent, RunningTimer, TrialProtocol, TrialState } f
 export const FINISHED = new Set(["done", "failed", "not_sent", "unknown", "timed_out", "skipped"]);
 
 type DueTimer = Omit<RunningTimer, "startedMs" | "pausedMs">;
+
+/** Whether the step's action at `index` is what the step waits on now: still waiting, every action before it finished. */
+export function awaits(step: TrialProtocol["steps"][number], index: number, state: TrialState): boolean {
+  const status = (id: string) => state.actions[id]?.status ?? "waiting";
+  if (status(step.actions[index]!.id) !== "waiting") return false;
+  return step.actions.slice(0, index).every((before) => FINISHED.has(status(before.id)));
+}
 
 /** The timers `state` should have running, by id; an id names the step's visit, so a step entered again starts anew. */
 export function timersDue(protocol: TrialProtocol, state: TrialState): Map<string, DueTimer> {
@@ -22,11 +29,9 @@ export function timersDue(protocol: TrialProtocol, state: TrialState): Map<strin
   const { step } = current;
   const visit = state.path.length;
   if (step.timeLimit) due.set(`step:${step.id}:${visit}`, { stepId: step.id, seconds: step.timeLimit.seconds });
-  const status = (id: string) => state.actions[id]?.status;
   step.actions.forEach((action, i) => {
-    if (action.type !== "record_answer" || !action.timeLimit || status(action.id) !== "waiting") return;
-    if (!step.actions.slice(0, i).every((before) => FINISHED.has(status(before.id) ?? "waiting"))) return;
-    due.set(`answer:${action.id}:${visit}`, {
+    if (!TIMED_BLOCKS.has(action.type) || !action.timeLimit || !awaits(step, i, state)) return;
+    due.set(`${action.type === "wait_for" ? "wait" : "answer"}:${action.id}:${visit}`, {
       stepId: step.id,
       actionId: action.id,
       seconds: action.timeLimit.seconds,

@@ -2,13 +2,21 @@
 // the commands it accepts, and the state it folds events into.
 
 import type { TrialProtocol } from "../protocol/document";
+import type { Sensed } from "../plugins/types";
 
 export type { TrialProtocol };
 
 export type ProtocolAction = TrialProtocol["steps"][number]["actions"][number];
 
 /** Blocks that steer the trial rather than move the robot. */
-export const CONTROL_TYPES = ["record_answer", "branch", "end_trial", "wizard_instruction", "pause"] as const;
+export const CONTROL_TYPES = [
+  "record_answer",
+  "branch",
+  "end_trial",
+  "wizard_instruction",
+  "pause",
+  "wait_for",
+] as const;
 
 export const DEVIATION_KINDS = ["skipped", "out_of_order", "unscripted", "manual_jump", "ended_early"] as const;
 export type DeviationKind = (typeof DEVIATION_KINDS)[number];
@@ -21,7 +29,7 @@ export type EventBody =
       type: "step.entered";
       stepId: string;
       /** "loop": back round a loop, under its bound; "loop_bound": its bound reached, its "onward" taken. */
-      via: "start" | "next" | "branch" | "manual_jump" | "timeout" | "loop" | "loop_bound";
+      via: "start" | "next" | "branch" | "manual_jump" | "timeout" | "loop" | "loop_bound" | "sensed" | "go_on";
       /** The loop's name (../trial/loops.ts), when a loop moved the trial. */
       loop?: string;
     }
@@ -60,6 +68,20 @@ export type EventBody =
   | { type: "note.added"; text: string }
   /** A recording of the session began `offsetMs` after t0 (negative: before it), as its recorder measured. */
   | { type: "recording.started"; recordingId: string; offsetMs: number }
+  /**
+   * The robot sensed one of its plugin's events: `at` is the robot's own time (ms since the epoch), `message`
+   * the one that matched. Logged whether or not a wait takes it; when none does, it is an observation only.
+   */
+  | ({ type: "robot.sensed" } & Sensed)
+  /** A "Wait for" ended: by the robot's event (`event`, the wait's own entry `optionId`), or by the wizard's go on. */
+  | {
+      type: "wait.resolved";
+      stepId: string;
+      actionId: string;
+      by: "sensed" | "wizard";
+      event?: string;
+      optionId?: string;
+    }
   /** An error or warning the robot's side reported (a refused subscription, a status frame), in its words. */
   | { type: "robot.problem"; text: string };
 
@@ -86,6 +108,8 @@ export type Command =
   | { kind: "skip"; actionId?: string }
   | { kind: "trigger"; actionId: string }
   | { kind: "answer"; actionId: string; optionId: string }
+  /** The wizard ends the pending "Wait for" without the robot's event: the protocol's default way on, not a deviation. */
+  | { kind: "go_on" }
   | { kind: "jump"; stepId: string }
   | { kind: "unscripted"; actionId: string; actionType: string; parameters: Record<string, unknown> }
   | { kind: "pause" }
@@ -103,6 +127,7 @@ export type Command =
   | { kind: "unknown"; actionId: string; reason: string }
   | { kind: "timed_out"; actionId: string }
   | { kind: "robot_problem"; text: string }
+  | ({ kind: "sensed" } & Sensed)
   // The runtime's clock: a timer's time ran out.
   | { kind: "timer_fired"; timerId: string };
 

@@ -10,7 +10,7 @@ import { moveWords, stepVisits } from "@/core/analysis/moves";
 import { trialNames } from "@/core/analysis/names";
 import type { TrialProtocol } from "@/core/trial";
 import { useTRPC } from "@/lib/trpc";
-import { clockDateTime } from "@/ui/clock-time";
+import { clockDateTime, clockTime } from "@/ui/clock-time";
 import { QuestionnaireAnswers } from "./questionnaire-answers";
 import { AgreementPanel } from "../coding/agreement-panel";
 import { CodeTiers } from "../coding/code-tiers";
@@ -76,7 +76,7 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
   const r = report!;
   const movedBy = new Map(visits.map((v) => [v.seq, moveWords(v.move)]));
   // What an event in the list is about: its action (with the answer recorded), else its step (with what moved
-  // the trial there); a robot's problem, in its own words.
+  // the trial there); a robot's problem, in its own words; what the robot sensed, by its own clock.
   const about = (e: object) => {
     const { stepName, actionName } = named!.of(e);
     const problem = e as { type?: string; text?: string; seq?: number };
@@ -84,6 +84,10 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
     if (actionName !== undefined) return answer === undefined ? actionName : `${actionName}: “${answer}”`;
     const moved = problem.type === "step.entered" ? movedBy.get(problem.seq!) : undefined;
     if (stepName !== undefined) return moved ? `${stepName}, by ${moved}` : stepName;
+    if (problem.type === "robot.sensed") {
+      const { event, at } = e as { event: string; at: number };
+      return `${event}, sensed at ${clockTime(new Date(at))} by the robot's clock`;
+    }
     return problem.type === "robot.problem" ? problem.text : undefined;
   };
   // One time axis for the timeline and the robot's state: to the last event, annotation or sample.
@@ -144,6 +148,13 @@ export function AnalysisPage({ trialId }: { trialId: string }) {
         <Figure label="Executed / planned" value={`${r.totals.executed} / ${r.totals.planned}`} />
         <Figure label="Deviations" value={String(Object.values(r.deviations).reduce((a, b) => a + b, 0))} />
         <Figure label="Branches by answer / by hand" value={`${r.branches.byLogic} / ${r.branches.byHand}`} />
+        {/* Only in a trial that waited for the robot: who ended its waits, and how often a time limit moved it. */}
+        {r.moves.senses + r.moves.go_on > 0 && (
+          <Figure
+            label="Moves by the robot's senses / a timer / the wizard's go on"
+            value={`${r.moves.senses} / ${r.moves.timer} / ${r.moves.go_on}`}
+          />
+        )}
       </div>
       <RecordingPlayer recording={recording} gaps={gaps} onTime={setPlayheadMs} />
       {(t.status === "completed" || t.status === "aborted") && (

@@ -397,6 +397,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
                 studyId={designer.loaded.data!.studyId}
                 robotName={robotName}
                 audioPlayer={audioPlayer(plugin)}
+                robotEvents={plugin?.events ?? []}
               />
             </fieldset>
             <IssuesPanel

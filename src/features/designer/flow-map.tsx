@@ -1,9 +1,9 @@
 "use client";
 // The experiment as a map: steps top to bottom in list order, each way on as
 // an arrow. "Next" into the step below is a short arrow; a jump or a rejoin
-// curves round on the right, an answer's branch on the left, each in its own
-// lane so arrows never overlap. A loop's way back is its own colour, with its
-// bound written at its head.
+// curves round on the right, an answer's branch or a sensed event's way on
+// the left, each in its own lane so arrows never overlap. A loop's way back is
+// its own colour, with its bound written at its head.
 import { useMemo } from "react";
 import type { DesignDraft } from "@/core/designer/types";
 import { type FlowEdge, flowEdges } from "@/core/trial";
@@ -20,7 +20,9 @@ export function FlowMap({ draft, onSelect }: { draft: DesignDraft; onSelect: (st
   // An edge with a label (a loop's way on after its last time) goes round, where its label has room.
   const around = edges.filter((e) => !(e.kind === "after" && !e.label && target(e) === e.from + 1));
   const lanes = { left: 0, right: 0 };
-  const laneOf = new Map(around.map((e) => [e, e.kind === "answer" ? ++lanes.left : ++lanes.right]));
+  const laneOf = new Map(
+    around.map((e) => [e, e.kind === "answer" || e.kind === "sensed" ? ++lanes.left : ++lanes.right]),
+  );
   const height = top(endIndex) + BOX.height + 8;
   const width = BOX.x * 2 + BOX.width;
   const name = (i: number) => draft.steps[i]?.name || `Step ${i + 1}`;
@@ -59,7 +61,7 @@ export function FlowMap({ draft, onSelect }: { draft: DesignDraft; onSelect: (st
               />
             );
           }
-          const left = e.kind === "answer";
+          const left = e.kind === "answer" || e.kind === "sensed";
           const edge = left ? BOX.x : BOX.x + BOX.width;
           const out = left ? edge - lane * LANE : edge + lane * LANE;
           return (
@@ -68,8 +70,8 @@ export function FlowMap({ draft, onSelect }: { draft: DesignDraft; onSelect: (st
                 d={`M${edge},${y1 - 6} H${out} V${y2 + 6} H${edge + (left ? -2 : 2)}`}
                 fill="none"
                 className={left ? "stroke-brand-600" : e.kind === "loop" ? "stroke-violet-700" : "stroke-amber-700"}
-                // A time limit's way on is dashed: taken only if the time runs out.
-                strokeDasharray={e.kind === "timeout" ? "4 3" : undefined}
+                // A time limit's way on is dashed: taken only if the time runs out; a sensed event's, dotted.
+                strokeDasharray={e.kind === "timeout" ? "4 3" : e.kind === "sensed" ? "1 3" : undefined}
                 markerEnd="url(#flow-arrow)"
               />
               {e.label && (

@@ -19,8 +19,16 @@ const draft: DesignDraft = {
       actions: [
         { id: "hi", type: "say", name: "", parameters: { text: "Hello" }, parallelGroup: null, note: "Smile first." },
         { id: "wave", type: "wave", name: "", parameters: {}, parallelGroup: null },
+        {
+          id: "wait",
+          type: "wait_for",
+          name: "",
+          parameters: { events: [{ id: "e1", event: "head_touched", after: { to: "step", stepId: "s2" } }] },
+          parallelGroup: null,
+        },
       ],
     },
+    { id: "s2", name: "Greet", description: "", actions: [] },
   ],
 };
 
@@ -37,6 +45,22 @@ const render = (actionId: string) =>
       studyId: "study",
       robotName: "NAO6",
       audioPlayer: "browser",
+      robotEvents: [
+        {
+          id: "head_touched",
+          name: "Head touched",
+          topic: "/touch",
+          messageType: "std_msgs/msg/Bool",
+          when: { kind: "pressed", field: "data", equals: true },
+        },
+        {
+          id: "heard_ready",
+          name: "Heard “ready”",
+          topic: "/words",
+          messageType: "std_msgs/msg/String",
+          when: { kind: "pressed", field: "data", equals: true },
+        },
+      ],
     }),
   );
 
@@ -50,5 +74,17 @@ describe("an action's note for the wizard", () => {
 
   it("is empty for an action without one", () => {
     expect(render("wave")).toMatch(/<textarea[^>]*maxLength="2000"[^>]*><\/textarea>/);
+  });
+});
+
+describe("a Wait for's properties", () => {
+  it("picks each event from what the robot senses, with where it leads, and offers a time limit", () => {
+    const html = render("wait");
+    expect(html).toContain("Events the trial waits for");
+    expect(html).toMatch(/<option value="head_touched" selected="">Head touched<\/option>/);
+    expect(html).toContain("Heard “ready”");
+    expect(html).toMatch(/<option value="s2" selected="">Go to step 2: Greet<\/option>/);
+    expect(html).toContain("Add an event");
+    expect(html).toContain("Nothing sensed in (seconds)");
   });
 });

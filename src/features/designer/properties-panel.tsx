@@ -7,7 +7,7 @@ import { type Block, WAITS_FOR_CHOICE } from "@/core/designer/blocks";
 import { commands, locateAction, locateStep, type Command } from "@/core/designer/model";
 import type { DesignIssue } from "@/core/designer/validate";
 import type { DesignAction, DesignDraft } from "@/core/designer/types";
-import type { AudioPlayer, ParameterSchema } from "@/core/plugins";
+import type { AudioPlayer, ParameterSchema, RobotEvent } from "@/core/plugins";
 import { newId } from "@/lib/new-id";
 import { Button } from "@/ui/button";
 import { Field, Input, NativeSelect, Textarea } from "@/ui/field";
@@ -16,6 +16,7 @@ import { AudioChooser } from "./audio-chooser";
 import { ThenField } from "./then-field";
 import { TimeLimitField } from "./time-limit-field";
 import type { Selection } from "./protocol-timeline";
+import { WaitEditor } from "./wait-editor";
 
 interface Props {
   draft: DesignDraft;
@@ -29,6 +30,8 @@ interface Props {
   studyId: string;
   robotName: string;
   audioPlayer: AudioPlayer;
+  /** What the experiment's robot senses, for a "Wait for". */
+  robotEvents: RobotEvent[];
 }
 
 export function PropertiesPanel(props: Props) {
@@ -144,6 +147,7 @@ function ActionProperties({
   studyId,
   robotName,
   audioPlayer,
+  robotEvents,
 }: Props & { action: DesignAction }) {
   const block = blockFor(action.type);
   const { step, index } = locateAction(draft, action.id);
@@ -178,6 +182,8 @@ function ActionProperties({
             onChange={(limit) => run(commands.setAnswerTimeLimit(action.id, limit))}
           />
         </>
+      ) : action.type === "wait_for" ? (
+        <WaitEditor draft={draft} stepId={step.id} action={action} events={robotEvents} run={run} />
       ) : action.type === "branch" ? (
         <BranchEditor draft={draft} action={action} answer={step.actions[index - 1]} run={run} />
       ) : action.type === "play_audio" ? (

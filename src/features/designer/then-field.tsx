@@ -14,7 +14,7 @@ const DEFAULT_TIMES = 2;
  * The choices of where a step leads (with `loops`, the bound shown, the steps
  * it may go back to), `value` kept when it names a step that is gone.
  */
-function LeadsToOptions({
+export function LeadsToOptions({
   draft,
   stepId,
   value,
@@ -53,13 +53,13 @@ function LeadsToOptions({
   ));
 }
 
-const afterValue = (after: After | undefined) =>
+export const afterValue = (after: After | undefined) =>
   !after || after.to === "next" || after.to === "end"
     ? (after?.to ?? "next")
     : `${after.to === "again" ? AGAIN : ""}${after.stepId}`;
 
 /** The choice `value` as an "after"; a loop keeps the bound and the way on of `loop`, the loop it was. */
-function afterOf(value: string, loop: Extract<After, { to: "again" }> | null): After {
+export function afterOf(value: string, loop: Extract<After, { to: "again" }> | null): After {
   if (value.startsWith(AGAIN))
     return {
       to: "again",

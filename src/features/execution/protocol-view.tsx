@@ -3,6 +3,7 @@
 // current step, what comes next, and each action's status and timing from
 // the event log; an action that was not done says why beside its badge.
 import { actionName, type ActionNames } from "@/core/designer/action-name";
+import { WAITS_FOR_CHOICE } from "@/core/designer/blocks";
 import { type ActionState, pathTaken, type TrialProtocol, type TrialState, upcoming } from "@/core/trial";
 import { OUTCOME_WORDS } from "@/core/trial/outcomes";
 import { cn } from "@/ui/cn";
@@ -160,7 +161,7 @@ export function StepActions({
               {onTrigger &&
                 s.status === "waiting" &&
                 state.status === "in_progress" &&
-                !["record_answer", "branch"].includes(a.type) && (
+                !WAITS_FOR_CHOICE.has(a.type) && (
                   <button
                     type="button"
                     className="text-xs text-brand-600 hover:underline pointer-coarse:min-h-11 pointer-coarse:px-2"

@@ -34,7 +34,11 @@ export function TimeLimits({
         const left = ms === null ? null : Math.ceil(ms / 1000);
         return (
           <li key={timerId} className="rounded border border-amber-300 bg-amber-50 px-3 py-2 text-amber-900">
-            {timer.actionId ? "No answer in" : "Step time left:"}{" "}
+            {timer.actionId
+              ? isWait(protocol, timer.actionId)
+                ? "Nothing sensed in"
+                : "No answer in"
+              : "Step time left:"}{" "}
             <span role="timer" className="font-mono tabular-nums" data-testid="time-left">
               {left === null ? `${timer.seconds}` : left} s
             </span>{" "}
@@ -44,6 +48,10 @@ export function TimeLimits({
       })}
     </ul>
   );
+}
+
+function isWait(protocol: TrialProtocol, actionId: string): boolean {
+  return protocol.steps.some((s) => s.actions.some((a) => a.id === actionId && a.type === "wait_for"));
 }
 
 function whereTo(protocol: TrialProtocol, timer: TrialState["timers"][string], state: TrialState): string {

@@ -161,6 +161,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
               state={live.state}
               runtime={live.runtime}
               send={live.command}
+              events={live.events}
             />
           )}
         </div>

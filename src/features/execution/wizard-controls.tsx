@@ -1,9 +1,17 @@
 "use client";
 // The wizard's controls: the next scripted action as the big button, answer
-// choices by number, and everything off script one key away.
+// choices by number, a pending wait's go on, and everything off script one key away.
 import { useId, useRef, useState } from "react";
 import { actionName, type ActionNames } from "@/core/designer/action-name";
-import { answerOptions, exitNow, nextUnit, type TrialProtocol, type TrialState } from "@/core/trial";
+import {
+  answerOptions,
+  exitNow,
+  nextUnit,
+  pendingWait,
+  type StoredEvent,
+  type TrialProtocol,
+  type TrialState,
+} from "@/core/trial";
 import type { RuntimeState } from "@/core/trial/connections";
 import { controlsOffBecause } from "@/core/trial/refusals";
 import type { WizardCommand } from "@/core/socket/messages";
@@ -11,6 +19,7 @@ import { Button } from "@/ui/button";
 import { Input } from "@/ui/field";
 import { isTyping, useKeys } from "@/ui/use-keys";
 import { UnscriptedAction } from "./unscripted-action";
+import { WaitPanel } from "./wait-panel";
 
 type Send = (c: WizardCommand) => Promise<{ ok: boolean }>;
 
@@ -18,6 +27,7 @@ export const SHORTCUTS = [
   ["N", "start / next action"],
   ["S", "skip the next action"],
   ["1–9", "record answer"],
+  ["G", "go on: end a wait for the robot's senses"],
   ["U", "unscripted speech"],
   ["P", "pause / resume"],
   ["Esc", "emergency stop"],
@@ -42,6 +52,7 @@ export function WizardControls({
   state,
   runtime,
   send,
+  events,
 }: {
   protocol: TrialProtocol;
   names: ActionNames;
@@ -49,6 +60,8 @@ export function WizardControls({
   /** The page's link to the trial runtime: unless it is live, nothing can be sent. */
   runtime: RuntimeState;
   send: Send;
+  /** The trial's log so far: a pending wait lists the robot's latest observations from it. */
+  events: ReadonlyArray<StoredEvent<string>>;
 }) {
   const speech = useRef<HTMLInputElement>(null);
   const [text, setText] = useState("");
@@ -57,6 +70,8 @@ export function WizardControls({
   const unit = nextUnit(protocol, state);
   const question = unit[0]?.type === "record_answer" ? unit[0] : null;
   const options = question ? answerOptions(question) : [];
+  const wait = pendingWait(protocol, state);
+  const goOn = () => void send({ kind: "go_on" });
   const running = state.status === "in_progress";
   // An ended trial takes no command, emergency stop included, and nothing is sent without the runtime:
   // every control is off, and the page says why.
@@ -73,7 +88,8 @@ export function WizardControls({
     }
     if (isTyping(e.target) || e.ctrlKey || e.metaKey || e.altKey || off) return;
     const key = e.key.toLowerCase();
-    if (key === "n" && !question) next();
+    if (key === "g" && wait) goOn();
+    else if (key === "n" && !question && !wait) next();
     else if (key === "s" && running) void send({ kind: "skip" });
     else if (key === "p") void send({ kind: state.status === "paused" ? "resume" : "pause" });
     else if (key === "u") {
@@ -109,7 +125,15 @@ export function WizardControls({
       )}
       <fieldset disabled={off} aria-describedby={off ? offId : undefined} className="min-w-0 space-y-4">
         <legend className="sr-only">Wizard controls</legend>
-        {question ? (
+        {wait ? (
+          <WaitPanel
+            protocol={protocol}
+            stepIndex={protocol.steps.findIndex((s) => s.id === state.currentStepId)}
+            wait={wait}
+            events={events}
+            goOn={goOn}
+          />
+        ) : question ? (
           <div className="rounded-lg border-2 border-brand-500 bg-brand-50 p-4">
             <p className="font-medium">{String(question.parameters.prompt ?? "Record the participant's answer")}</p>
             <div className="mt-3 flex flex-wrap gap-2">

@@ -51,6 +51,7 @@ export async function methodsText(db: Reader, version: VersionRow, studyId: stri
     assignment: assignmentOf(readSettings(study?.settings)),
     questionnaires: await givenQuestionnaires(db, studyId),
     names: actionNamesOf(plugin),
+    events: plugin?.events,
   };
   return {
     markdown: methodsMarkdown(input),

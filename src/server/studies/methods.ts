@@ -183,6 +183,7 @@ async function latestProtocol(
     hash: version.hash,
     snapshot: readSnapshot(version.snapshot),
     names: actionNamesOf(plugin),
+    events: plugin?.events,
   };
 }
 
