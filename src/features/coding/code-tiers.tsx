@@ -14,11 +14,23 @@ import { Card } from "@/ui/surface";
 const sec = (ms: number | null) => (ms === null ? "" : (ms / 1000).toFixed(1));
 const ms = (text: string) => (text.trim() === "" ? null : Math.max(0, Math.round(Number(text) * 1000)));
 
-export function CodeTiers({ trialId, playheadMs }: { trialId: string; playheadMs: number | null }) {
+export function CodeTiers({
+  trialId,
+  playheadMs,
+  mineOnly = false,
+}: {
+  trialId: string;
+  playheadMs: number | null;
+  /** My tier alone: for a coder who may not read the results (everyone's codes are results), e.g. blind to condition. */
+  mineOnly?: boolean;
+}) {
   const trpc = useTRPC();
   const queryClient = useQueryClient();
-  const codes = useQuery(trpc.coding.codes.queryOptions({ trialId }));
+  const everyone = useQuery({ ...trpc.coding.codes.queryOptions({ trialId }), enabled: !mineOnly });
   const mine = useQuery(trpc.coding.forTrial.queryOptions({ trialId }));
+  const codes = mineOnly
+    ? { data: mine.data?.mine.map((c) => ({ ...c, observerName: "My codes" })), error: mine.error }
+    : everyone;
   const refresh = () => queryClient.invalidateQueries();
   const add = useMutation(trpc.coding.addCode.mutationOptions({ onSuccess: refresh }));
   const move = useMutation(trpc.coding.moveCode.mutationOptions({ onSuccess: refresh }));
