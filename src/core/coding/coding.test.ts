@@ -1,16 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { tableCsv } from "@/core/analysis/table";
-import {
-  type AgreementWindow,
-  agreement,
-  type CodeMark,
-  cohenKappa,
-  confusion,
-  NONE,
-  sliceCodes,
-  strength,
-  windowSpans,
-} from "./agreement";
+import { type AgreementWindow, type Counted, countedWords } from "./counted";
+import { agreement, type CodeMark, cohenKappa, confusion, NONE, sliceCodes, strength, windowSpans } from "./agreement";
 import { codesTable } from "./export";
 import { checkScheme, codeForKey } from "./scheme";
 import { blankScheme, newCode, SCHEME_TEMPLATES, schemeTemplate } from "./templates";
@@ -371,5 +362,20 @@ describe("a new code", () => {
     expect(added.id).toBe("code-2");
     s.sets[0]!.codes.push(added);
     expect(checkScheme(s).ok).toBe(true);
+  });
+});
+
+describe("what a kappa counted, said beside it", () => {
+  const steps = [
+    { id: "s1", name: "Story" },
+    { id: "s2", name: "Recall" },
+  ];
+  it.each<[Counted, string]>([
+    [{ sliceMs: 1000, window: "trial", stepIds: [] }, "1 s slices, the whole trial"],
+    [{ sliceMs: 500, window: "bothCoding", stepIds: [] }, "0.5 s slices, from when both observers had coded"],
+    [{ sliceMs: 2000, window: "steps", stepIds: ["s2", "s1"] }, "2 s slices, steps Story, Recall"],
+    [{ sliceMs: 1000, window: "steps", stepIds: [] }, "1 s slices, steps (none chosen)"],
+  ])("%j", (counted, words) => {
+    expect(countedWords(counted, steps)).toBe(words);
   });
 });
