@@ -265,22 +265,24 @@ try {
 
   /** The study's methods text (its Methods tab and the zip's methods.md): every trial's figures, per condition. */
   async function methods() {
-    print(
-      "Study methods text (studies.methods), the trials' figures kept",
-      STUDY_SIZES,
-      "trials",
-      await byStudy((studyId) => owner.studies.methods({ studyId })),
-      1000,
-    );
+    const text = (studyId: string) => owner.studies.methods({ studyId });
     print(
       "Study methods text, first call after the trials ended (every log folded)",
       STUDY_SIZES,
       "trials",
       await byStudy(
-        (studyId) => owner.studies.methods({ studyId }),
+        text,
         (studyId) =>
           sql`delete from trial_figures using trials where trials.id = trial_id and trials.study_id = ${studyId}`,
       ),
+    );
+    // The figures the call before kept.
+    print(
+      "Study methods text (studies.methods), the trials' figures kept",
+      STUDY_SIZES,
+      "trials",
+      await byStudy(text),
+      1000,
     );
   }
 
