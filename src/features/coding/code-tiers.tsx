@@ -27,7 +27,8 @@ export function CodeTiers({
   const trpc = useTRPC();
   const queryClient = useQueryClient();
   const everyone = useQuery({ ...trpc.coding.codes.queryOptions({ trialId }), enabled: !mineOnly });
-  const mine = useQuery(trpc.coding.forTrial.queryOptions({ trialId }));
+  // Read afresh: codes marked live came over the trial's socket, past this query's last answer.
+  const mine = useQuery({ ...trpc.coding.forTrial.queryOptions({ trialId }), refetchOnMount: "always" });
   const codes = mineOnly
     ? { data: mine.data?.mine.map((c) => ({ ...c, observerName: "My codes" })), error: mine.error }
     : everyone;
@@ -88,7 +89,8 @@ export function CodeTiers({
                       <Button
                         variant="ghost"
                         size="sm"
-                        aria-label={`Move ${names?.code ?? c.codeId} at ${sec(c.startMs)} s to the playhead`}
+                        // The visible words first: a name must hold what the button shows (WCAG 2.5.3).
+                        aria-label={`Move to playhead: ${names?.code ?? c.codeId} at ${sec(c.startMs)} s`}
                         disabled={playheadMs === null}
                         onClick={() =>
                           move.mutate({
