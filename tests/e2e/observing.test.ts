@@ -231,6 +231,21 @@ describe.sequential("observing a live trial", () => {
       .getByRole("heading", { name: "Codes", exact: true })
       .evaluate((h) => h.scrollIntoView({ block: "start" }));
     await screenshot(page, "analysis-coding");
+
+    // On the study's Results tab the researcher counts from when both had coded, keeps it, and the methods text says so.
+    await page.getByRole("link", { name: "← Study" }).click();
+    await page.getByRole("tab", { name: "Results" }).click();
+    const study = page.getByRole("region", { name: "Agreement between observers" });
+    await study.getByText("The methods text counts agreement as shown here.").waitFor();
+    await study.getByLabel("Counted").selectOption("bothCoding");
+    await study.getByText("The methods text counts 1 s slices, the whole trial.").waitFor();
+    await study.getByRole("button", { name: "Keep this count for the methods text" }).click();
+    await study.getByText("The methods text counts agreement as shown here.").waitFor();
+    await page.getByRole("tab", { name: "Methods" }).click();
+    await page
+      .getByRole("region", { name: "Methods text" })
+      .getByText("agreement was counted in 1 s slices, from when both observers had coded", { exact: false })
+      .waitFor();
     await page.context().close();
   }, 240_000);
 });

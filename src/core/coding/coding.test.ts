@@ -1,6 +1,6 @@
 import { describe, expect, it } from "vitest";
 import { tableCsv } from "@/core/analysis/table";
-import { type AgreementWindow, type Counted, countedWords } from "./counted";
+import { type AgreementWindow, type Counted, countedWords, sameCount } from "./counted";
 import { agreement, type CodeMark, cohenKappa, confusion, NONE, sliceCodes, strength, windowSpans } from "./agreement";
 import { codesTable } from "./export";
 import { checkScheme, codeForKey } from "./scheme";
@@ -377,5 +377,21 @@ describe("what a kappa counted, said beside it", () => {
     [{ sliceMs: 1000, window: "steps", stepIds: [] }, "1 s slices, steps (none chosen)"],
   ])("%j", (counted, words) => {
     expect(countedWords(counted, steps)).toBe(words);
+  });
+});
+
+describe("whether two choices count the same", () => {
+  const whole: Counted = { sliceMs: 1000, window: "trial", stepIds: [] };
+  it.each<[string, Counted, boolean]>([
+    ["the same, its keys in jsonb's order", JSON.parse('{"window":"trial","sliceMs":1000,"stepIds":[]}'), true],
+    ["another slice", { ...whole, sliceMs: 500 }, false],
+    ["another window", { ...whole, window: "bothCoding" }, false],
+    ["steps chosen", { ...whole, stepIds: ["s1"] }, false],
+  ])("%s", (_, other, same) => {
+    expect(sameCount(whole, other)).toBe(same);
+  });
+  it("counts the same steps chosen in another order", () => {
+    const steps: Counted = { sliceMs: 1000, window: "steps", stepIds: ["a", "b"] };
+    expect(sameCount(steps, { ...steps, stepIds: ["b", "a"] })).toBe(true);
   });
 });

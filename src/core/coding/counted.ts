@@ -32,3 +32,13 @@ export function countedWords(counted: Counted, steps: Array<{ id: string; name: 
     counted.window === "steps" ? `steps ${chosen.join(", ") || "(none chosen)"}` : WINDOW_WORDS[counted.window];
   return `${counted.sliceMs / 1000} s slices, ${which}`;
 }
+
+/** Whether two choices count the same slices (as stored, in jsonb's order of keys, or as chosen). */
+export function sameCount(a: Counted, b: Counted): boolean {
+  return (
+    a.sliceMs === b.sliceMs &&
+    a.window === b.window &&
+    a.stepIds.length === b.stepIds.length &&
+    a.stepIds.every((id) => b.stepIds.includes(id))
+  );
+}

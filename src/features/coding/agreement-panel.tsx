@@ -10,6 +10,7 @@ import {
   type AgreementWindow,
   type Counted,
   countedWords,
+  sameCount,
   WINDOW_WORDS,
 } from "@/core/coding/counted";
 import { Button } from "@/ui/button";
@@ -87,7 +88,7 @@ function Pair({
   const { sets: named, observers, pairs, steps, counted, kept } = result.data;
   const { sliceMs, window, stepIds } = counted;
   const choose = (change: Partial<Counted>) => setAsked({ ...counted, ...change });
-  const unkept = JSON.stringify(counted) !== JSON.stringify(kept);
+  const unkept = !sameCount(counted, kept);
   if (observers.length < 2)
     return (
       <p className="text-sm text-slate-600">
