@@ -10,8 +10,10 @@
 // analysis page in Chromium is bench/analysis (it needs the built app).
 // `bun bench/scaling.ts trials` measures the trials of 1k to 100k events and the
 // trials of 1.8k to 180k robot state samples only; `… samples` the latter only;
-// `… studies` the studies of 10 to 1,000 trials only, and `… results` their
-// Trials and Results tabs only (a minute).
+// `… studies` the studies of 10 to 1,000 trials only, `… results` their
+// Trials and Results tabs only (a minute), and `… methods` the study's
+// methods text only (at 1,000 trials, 200k events; a minute or two). The
+// samples part has the MCAP export too, its schemas read off every message.
 // Takes several minutes; a part alone, a minute or two.
 import { eventsSince } from "../src/store/event-store";
 import { createDatabase } from "../src/store/client";
@@ -31,7 +33,8 @@ const SAMPLE_SIZES = [1800, 18_000, 180_000];
 const TRIALS_ONLY = process.argv[2] === "trials" || process.argv[2] === "samples";
 const SAMPLES_ONLY = process.argv[2] === "samples";
 const TABS_ONLY = process.argv[2] === "results";
-const STUDIES_ONLY = process.argv[2] === "studies" || TABS_ONLY;
+const METHODS_ONLY = process.argv[2] === "methods";
+const STUDIES_ONLY = process.argv[2] === "studies" || TABS_ONLY || METHODS_ONLY;
 
 const database = await scratchDatabase();
 const { db, close } = createDatabase(database.url, { max: 4 });
@@ -45,6 +48,8 @@ async function seedStudy(f: Awaited<ReturnType<typeof buildFixture>>, count: num
   const owner = f.api("owner");
   const study = await f.newStudy(`Scaling ${count}×${events}`);
   const { experiment, version } = await publishedVersion(owner, study.id);
+  // Every participant in the one condition, as a study's are: the methods text and results count per condition.
+  const condition = await owner.conditions.create({ studyId: study.id, name: "Gestures", experimentId: experiment.id });
   const t0 = new Date(Date.now() - 3_600_000);
   const trialIds: string[] = [];
   for (let start = 0; start < count; start += 500) {
@@ -54,6 +59,7 @@ async function seedStudy(f: Awaited<ReturnType<typeof buildFixture>>, count: num
       study_id: study.id,
       code: `P${String(start + k + 1).padStart(4, "0")}`,
       consent_status: "given",
+      condition_id: condition.id,
     }));
     await sql`insert into participants ${sql(people)}`;
     const rows = people.map((p, k) => ({
@@ -112,20 +118,15 @@ async function measure(path: () => Promise<unknown>, setup?: () => Promise<unkno
     peak = Math.max(peak, process.memoryUsage().rss);
     peakMb = Math.max(peakMb, (peak - before) / 1e6);
   }
-  return {
-    ms: percentile(
-      [...times].sort((a, b) => a - b),
-      50,
-    ),
-    peakMb,
-  };
+  const sorted = [...times].sort((a, b) => a - b);
+  return { ms: percentile(sorted, 50), p99: percentile(sorted, 99), peakMb };
 }
 
 function print(
   path: string,
   sizes: number[],
   unit: string,
-  results: { ms: number; peakMb: number }[],
+  results: { ms: number; p99: number; peakMb: number }[],
   targetMs?: number,
 ) {
   console.log(`\n${path}`);
@@ -137,7 +138,7 @@ function print(
         ? ""
         : `  target < ${targetMs} ms: ${r.ms < targetMs ? "met" : "NOT met"} (ratio ${(r.ms / targetMs).toFixed(2)})`;
     console.log(
-      `  ${String(sizes[i]).padStart(7)} ${unit.padEnd(7)} n=${RUNS}  p50=${r.ms.toFixed(1).padStart(9)} ms  peak memory +${r.peakMb.toFixed(1).padStart(6)} MB${growth}${target}`,
+      `  ${String(sizes[i]).padStart(7)} ${unit.padEnd(7)} n=${RUNS}  p50=${r.ms.toFixed(1).padStart(9)} ms  p99=${r.p99.toFixed(1).padStart(9)} ms  peak memory +${r.peakMb.toFixed(1).padStart(6)} MB${growth}${target}`,
     );
   });
 }
@@ -199,6 +200,7 @@ try {
   /** The study-sized paths: the Trials and Results tabs, the zip, the analysis API. */
   async function studies() {
     console.log(`Studies of ${STUDY_SIZES.join(", ")} trials (${EVENTS_PER_TRIAL} events each):`);
+    if (METHODS_ONLY) return methods();
     print(
       "Trials tab (trials.list)",
       STUDY_SIZES,
@@ -227,6 +229,7 @@ try {
       1000,
     );
     if (TABS_ONLY) return;
+    await methods();
     print(
       "Study zip: first byte",
       STUDY_SIZES,
@@ -257,6 +260,29 @@ try {
         const { studyEventsTable } = await import("../src/server/analysis/tables");
         return studyEventsTable(db, studyId);
       }),
+    );
+  }
+
+  /** The study's methods text (its Methods tab and the zip's methods.md): every trial's figures, per condition. */
+  async function methods() {
+    const text = (studyId: string) => owner.studies.methods({ studyId });
+    print(
+      "Study methods text, first call after the trials ended (every log folded)",
+      STUDY_SIZES,
+      "trials",
+      await byStudy(
+        text,
+        (studyId) =>
+          sql`delete from trial_figures using trials where trials.id = trial_id and trials.study_id = ${studyId}`,
+      ),
+    );
+    // The figures the call before kept.
+    print(
+      "Study methods text (studies.methods), the trials' figures kept",
+      STUDY_SIZES,
+      "trials",
+      await byStudy(text),
+      1000,
     );
   }
 
@@ -332,7 +358,7 @@ try {
   async function sampled() {
     console.log(`\nTrials of 1,000 events and ${SAMPLE_SIZES.join(", ")} robot state samples:`);
     const bytes: number[] = [];
-    const print3 = (name: string, results: { ms: number; peakMb: number }[], targetMs?: number) =>
+    const print3 = (name: string, results: { ms: number; p99: number; peakMb: number }[], targetMs?: number) =>
       print(`Trial record export (JSON): ${name}`, SAMPLE_SIZES, "samples", results, targetMs);
     print3(
       "first byte",
@@ -361,6 +387,18 @@ try {
       "built whole in memory (the zip's batch path)",
       await byTrial((trialId) => trialsFiles(db, [trialId], ["json"]), sampledBySize),
     );
+    // The MCAP is built whole (its summary and index follow the messages), each topic's schema read off every message.
+    const mcapBytes: number[] = [];
+    print(
+      "MCAP export (trials.export mcap), whole",
+      SAMPLE_SIZES,
+      "samples",
+      await byTrial(async (trialId) => {
+        mcapBytes.push(((await downloads.trials.export({ trialId, format: "mcap" })).body as Uint8Array).length);
+      }, sampledBySize),
+      2000,
+    );
+    console.log(`  (sizes: ${[0, 1, 2].map((i) => `${(mcapBytes[i * RUNS]! / 1e6).toFixed(1)} MB`).join(", ")})`);
   }
 
   console.log(

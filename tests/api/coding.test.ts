@@ -1,9 +1,11 @@
 // Coding schemes through the API: made from a template, checked and versioned
 // like questionnaires; codes added afterwards in one's own tier only.
+import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { strFromU8 } from "fflate";
 import { CODE_COLUMNS } from "../../src/core/coding/export";
 import { schemeTemplate } from "../../src/core/coding/templates";
+import { codingSchemeVersions } from "../../src/store/schema";
 import { parseCsv } from "../support/csv";
 import { freshDatabase } from "../support/db";
 import { buildFixture, publishedVersion, unzipArchive } from "./fixture";
@@ -214,13 +216,30 @@ describe("coding schemes", () => {
     );
     const observed = async (window: "trial" | "bothCoding") => {
       const result = await f.api("observer").coding.agreement({ schemeVersionId, window });
-      expect(result.window).toBe(window);
+      expect(result.counted.window).toBe(window);
       const set = result.pairs[0]!.trials.find((t) => t.trialId === coded.id)!.sets.find((s) => s.setId === "gaze")!;
       return [set.n, set.observed];
     };
     // The first two seconds only one observer coded: they disagree over the trial, and are left out from when both coded.
     expect(await observed("trial")).toEqual([4, 0.5]);
     expect(await observed("bothCoding")).toEqual([2, 1]);
+
+    // The window kept with the scheme is what agreement counts when none is asked for, and the version stays as it was.
+    const asked = () => f.api("observer").coding.agreement({ schemeVersionId });
+    expect((await asked()).counted).toEqual({ sliceMs: 1000, window: "trial", stepIds: [] });
+    const counted = { sliceMs: 1000, window: "bothCoding" as const, stepIds: [] };
+    await expect(f.api("observer").coding.keepCounted({ codingSchemeId: id, counted })).rejects.toMatchObject({
+      code: "FORBIDDEN",
+    });
+    expect(await owner.coding.keepCounted({ codingSchemeId: id, counted })).toEqual(counted);
+    const kept = await asked();
+    expect([kept.counted, kept.kept]).toEqual([counted, counted]);
+    expect(kept.pairs[0]!.trials.find((t) => t.trialId === coded.id)!.sets.find((s) => s.setId === "gaze")!.n).toBe(2);
+    expect((await owner.coding.scheme({ codingSchemeId: id })).draft.counted).toEqual(counted);
+    // A version freezes what coders code with; how agreement is counted is not part of it.
+    const republished = await owner.coding.publishScheme({ codingSchemeId: id });
+    const [frozen] = await db.select().from(codingSchemeVersions).where(eq(codingSchemeVersions.id, republished.id));
+    expect(Object.keys(frozen!.definition as object)).not.toContain("counted");
     await expect(
       f.api("observer").coding.agreement({ schemeVersionId, window: "idle" as "trial" }),
     ).rejects.toMatchObject({

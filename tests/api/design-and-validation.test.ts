@@ -87,7 +87,7 @@ describe("saving a design", () => {
     expect((await owner.experiments.get({ experimentId: e.id })).steps.map((s) => s.name)).toEqual(["Mine"]);
   });
 
-  it("publishes immutable numbered versions whose hash follows the content", async () => {
+  it("publishes immutable numbered versions whose hash follows the content, and an unchanged draft as the version it is", async () => {
     const e = await newExperiment();
     await owner.experiments.saveDesign({
       experimentId: e.id,
@@ -95,9 +95,9 @@ describe("saving a design", () => {
       steps: [{ name: "One", actions: [{ type: "say", parameters: { text: 'He said "{{hi}}" $(rm -rf /)' } }] }],
     });
     const v1 = await owner.versions.publish({ experimentId: e.id });
+    // Unchanged since version 1, on the same plugin document: publishing again is version 1, not a copy.
     const again = await owner.versions.publish({ experimentId: e.id });
-    expect([v1.version, again.version]).toEqual([1, 2]);
-    expect(again.hash).toBe(v1.hash);
+    expect([again.id, again.version, again.hash]).toEqual([v1.id, 1, v1.hash]);
     expect(v1.hash).toMatch(/^[0-9a-f]{64}$/);
     expect(v1.snapshot.steps[0]!.actions[0]!.parameters.text).toBe('He said "{{hi}}" $(rm -rf /)');
     const draft = await owner.experiments.get({ experimentId: e.id });
@@ -106,8 +106,8 @@ describe("saving a design", () => {
       baseRevision: draft.draftRevision,
       steps: draft.steps.map((s) => ({ ...s, name: "Changed" })),
     });
-    const v3 = await owner.versions.publish({ experimentId: e.id });
-    expect(v3.hash).not.toBe(v1.hash);
+    const v2 = await owner.versions.publish({ experimentId: e.id });
+    expect([v2.version, v2.hash === v1.hash]).toEqual([2, false]);
     expect(
       ((await owner.versions.get({ versionId: v1.id })).snapshot as { steps: Array<{ name: string }> }).steps[0]!.name,
     ).toBe("One");

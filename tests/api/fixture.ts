@@ -8,7 +8,7 @@ import { createAccount } from "../../src/server/auth/accounts";
 import type { Database } from "../../src/store/client";
 import { eq, sql } from "drizzle-orm";
 import { unzipSync } from "fflate";
-import { studies, studyMembers } from "../../src/store/schema";
+import { studies, studyMembers, user } from "../../src/store/schema";
 import { scratchFolder } from "../support/scratch";
 
 export const CALLERS = ["owner", "researcher", "wizard", "observer", "outsider", "admin", "anonymous"] as const;
@@ -32,6 +32,13 @@ export async function newPerson(db: Database, label: string, role: SystemRole = 
   const email = `${label}-${crypto.randomUUID().slice(0, 8)}@example.org`;
   const created = await createAccount(db, { name: label, email, password: "password-123", role });
   return { id: created.id, name: created.name, email: created.email, role };
+}
+
+/** One of the accounts the demo seed made (`researcher@demo.hristudio`…), to call the API as. */
+export async function demoPerson(db: Database, email: string): Promise<SignedInUser> {
+  const [person] = await db.select().from(user).where(eq(user.email, email));
+  if (!person) throw new Error(`The demo seed made no account ${email}: seed the demo first.`);
+  return { id: person.id, name: person.name, email: person.email, role: person.role };
 }
 
 /** Recordings in a throwaway folder, with a small limit so the limit can be tested. */

@@ -306,6 +306,13 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
     ["owner", "researcher", "observer"],
     async (f, b) => ({ schemeVersionId: (await codingRows(f.api("owner"), b.study.id, b.trial.id)).schemeVersionId }),
   ],
+  "coding.keepCounted": [
+    EDITORS,
+    async (f, b) => ({
+      codingSchemeId: (await f.api("owner").coding.createScheme({ studyId: b.study.id })).id,
+      counted: { sliceMs: 1000, window: "bothCoding", stepIds: [] },
+    }),
+  ],
   "coding.addCode": [
     MEMBERS,
     async (f, b) => ({

@@ -3,11 +3,9 @@
 // before any trial, per robot, for the seeded Interactive Storyteller.
 import { afterAll, describe, expect, it } from "vitest";
 import { cannotStart, portability } from "../../src/core/plugins";
-import { appRouter } from "../../src/server/api/root";
-import { createCallerFactory } from "../../src/server/api/trpc";
 import { seedDemo } from "../../src/server/seed/demo";
 import { freshDatabase } from "../support/db";
-import { buildFixture, DEMO_CHANNELS, pingOf, TEST_SECRET, testMedia } from "./fixture";
+import { buildFixture, demoPerson } from "./fixture";
 
 const { db, close } = await freshDatabase();
 await seedDemo(db);
@@ -15,18 +13,7 @@ const f = await buildFixture(db);
 afterAll(close);
 
 /** The demo study's owner, as the seed made them. */
-async function demoOwner() {
-  const researcher = (await db.query.user.findMany()).find((u) => u.email === "researcher@demo.hristudio")!;
-  return createCallerFactory(appRouter)({
-    db,
-    ping: pingOf(db),
-    user: { id: researcher.id, name: researcher.name, email: researcher.email, role: "researcher" },
-    secret: TEST_SECRET,
-    runtimeUrl: "ws://127.0.0.1:1",
-    media: testMedia(),
-    robotChannels: DEMO_CHANNELS,
-  });
-}
+const demoOwner = async () => f.apiAs(await demoPerson(db, "researcher@demo.hristudio"));
 
 describe("robot plugins on the server", () => {
   it("lists the first-party robots with their versions", async () => {

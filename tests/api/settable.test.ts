@@ -1,8 +1,11 @@
 // What a research team sets and where it shows: its own assignment seed (only
 // before the first assignment), the consent checkbox's words and a neutral
-// study name on the participant's page, and a blind of observers to condition.
+// study name on the participant's page, and a blind of observers to condition
+// (who still code a finished trial afterwards, against its recording).
+import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { assign } from "../../src/core/studies/assignment";
+import { trials } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
 import { buildFixture, publishedVersion } from "./fixture";
 
@@ -133,6 +136,42 @@ describe("settings a team sets", () => {
     await owner.studies.update({ studyId: study.id, settings: { blinding: { conditionsFromObservers: false } } });
     expect((await observer.trials.get({ trialId: trial.id })).experimentId).toBe(trial.experimentId);
     expect((await observer.studies.get({ studyId: study.id })).title).toBe(TITLE);
+  });
+
+  it("lets an observer blind to condition code a finished trial afterwards against its recording, the blind kept", async () => {
+    const { study, version, polite, curt, participant } = await studyWithConditions();
+    await owner.studies.update({ studyId: study.id, settings: { blinding: { conditionsFromObservers: true } } });
+    const p = await participant("C1");
+    await owner.conditions.assign({ participantId: p.id, conditionId: polite.id });
+    const trial = await owner.trials.create({ versionId: version.id, participantId: p.id });
+    const { recordingId } = await owner.recordings.start({ trialId: trial.id, kind: "video", mimeType: "video/mp4" });
+    await f.media.storage.put(`recordings/${recordingId}/chunk-000000`, new Uint8Array([1, 2, 3]), "video/mp4");
+    await owner.recordings.finish({ recordingId, durationMs: 1000 });
+    await db.update(trials).set({ status: "completed" }).where(eq(trials.id, trial.id));
+    const scheme = await owner.coding.createScheme({ studyId: study.id, template: "participant-engagement" });
+    const { id: schemeVersionId } = await owner.coding.publishScheme({ codingSchemeId: scheme.id });
+
+    // After the trial: the recording to watch, the scheme to code with, and codes of their own.
+    const observer = f.api("observer");
+    const recordings = await observer.recordings.list({ trialId: trial.id });
+    expect(recordings.map((r) => [r.id, r.status])).toEqual([[recordingId, "complete"]]);
+    expect(await observer.recordings.media({ recordingId })).toMatchObject({ mimeType: "video/mp4" });
+    const { schemes } = await observer.coding.forTrial({ trialId: trial.id });
+    expect(schemes.map((s) => s.versionId)).toEqual([schemeVersionId]);
+    const code = { trialId: trial.id, schemeVersionId, setId: "gaze", codeId: "robot", startMs: 200, endMs: 900 };
+    const added = await observer.coding.addCode(code);
+    const mine = await observer.coding.forTrial({ trialId: trial.id });
+    expect(mine.mine.map((c) => [c.id, c.startMs, c.endMs])).toEqual([[added.id, 200, 900]]);
+
+    // Nothing of it names the condition, and the blind stays: results are still refused.
+    const heard = JSON.stringify([recordings, mine, added, await observer.trials.get({ trialId: trial.id })]);
+    const secrets = [polite.id, polite.name, curt.name, trial.experimentId!, version.id];
+    expect(secrets.filter((s) => heard.includes(s))).toEqual([]);
+    await expect(observer.coding.codes({ trialId: trial.id })).rejects.toMatchObject({
+      code: "FORBIDDEN",
+      message: expect.stringContaining("hides its conditions from observers"),
+    });
+    expect((await owner.studies.get({ studyId: study.id })).settings.blinding.conditionsFromObservers).toBe(true);
   });
 
   it("shows a wizard blind to condition the neutral name in place of the title", async () => {

@@ -302,15 +302,29 @@ describe("each fact of the methods text is the database's", () => {
     expect(text).toContain("(Brooke, 1996");
   });
 
-  it("the coding scheme's agreement, as the Coding tab computes it", async () => {
-    const agreement = await owner.coding.agreement({ schemeVersionId: schemeVersion.id, sliceMs: 1000 });
+  /** The sentence on the scheme's agreement, from what the Results tab computes as the scheme keeps it. */
+  const agreementSentence = async (words: string) => {
+    const agreement = await owner.coding.agreement({ schemeVersionId: schemeVersion.id });
     const pooled = agreement.pairs[0]!.pooled[0]!;
     const [a, b] = agreement.pairs
       .map((p) => [p.a, p.b])[0]!
       .map((id) => agreement.observers.find((o) => o.id === id)!.name);
-    expect(text).toContain(
-      `Observers coded with “Wizard interventions” (version ${schemeVersion.version}), in slices of 1.0 s: “Intervention type”: Cohen's κ = ${pooled.kappa!.toFixed(2)} between ${a} and ${b} (${pooled.n} slices).`,
-    );
+    return {
+      n: pooled.n,
+      sentence: `Observers coded with “Wizard interventions” (version ${schemeVersion.version}); agreement was counted in ${words}: “Intervention type”: Cohen's κ = ${pooled.kappa!.toFixed(2)} between ${a} and ${b} (${pooled.n} slices).`,
+    };
+  };
+
+  it("the coding scheme's agreement, as the Results tab computes it, with what it counted", async () => {
+    const whole = await agreementSentence("1 s slices, the whole trial");
+    expect(text).toContain(whole.sentence);
+    // Kept with the scheme, another window is the one the text counts and says.
+    const counted = { sliceMs: 1000, window: "bothCoding" as const, stepIds: [] };
+    await owner.coding.keepCounted({ codingSchemeId: scheme.id, counted });
+    const both = await agreementSentence("1 s slices, from when both observers had coded");
+    expect(both.n).toBeLessThan(whole.n);
+    expect((await owner.studies.methods({ studyId: study.id })).text).toContain(both.sentence);
+    await owner.coding.keepCounted({ codingSchemeId: scheme.id, counted: { ...counted, window: "trial" } });
   });
 
   it.each([

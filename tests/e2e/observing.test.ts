@@ -36,9 +36,11 @@ describe.sequential("observing a live trial", () => {
     await admin.admin.users.create.mutate({ name: "Oda Observer", role: "observer", ...SECOND_OBSERVER });
     await researcher.members.add.mutate({ studyId: study!.id, email: SECOND_OBSERVER.email, role: "observer" });
     const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
-    const version = await researcher.versions.publish.mutate({ experimentId: experiment!.id });
+    // Published at seed: a newcomer's first trial needs no "Publish" first.
+    const [version] = await researcher.versions.list.query({ experimentId: experiment!.id });
+    expect(version!.version).toBe(1);
     const [participant] = await researcher.participants.list.query({ studyId: study!.id });
-    trialId = (await wizardApi.trials.create.mutate({ versionId: version.id, participantId: participant!.id })).id;
+    trialId = (await wizardApi.trials.create.mutate({ versionId: version!.id, participantId: participant!.id })).id;
     // The scheme the observers code with: Gaze (states, one set) and Expression (point events, another).
     const scheme = await researcher.coding.createScheme.mutate({
       studyId: study!.id,
@@ -159,6 +161,13 @@ describe.sequential("observing a live trial", () => {
     await wizard.getByRole("button", { name: "Complete trial" }).click();
     for (const page of observers)
       await expect.poll(() => page.getByTestId("trial-status").textContent(), { timeout: 30_000 }).toBe("completed");
+    // Ended, the observer's page codes afterwards: their own tier alone, to add to, move and delete.
+    const mine = olu.getByRole("region", { name: "Code this trial afterwards" });
+    await expect
+      .poll(() => mine.getByRole("region", { name: "Tier My codes - Gaze" }).getByRole("listitem").allTextContents())
+      .toHaveLength(2);
+    expect(await mine.getByRole("region", { name: /^Tier / }).count()).toBe(2);
+    await mine.getByRole("button", { name: "Add a code" }).waitFor();
     for (const page of [...observers, wizard]) await page.context().close();
 
     // The kappa the page must show, derived here with the project's own pure function from what was
@@ -222,6 +231,21 @@ describe.sequential("observing a live trial", () => {
       .getByRole("heading", { name: "Codes", exact: true })
       .evaluate((h) => h.scrollIntoView({ block: "start" }));
     await screenshot(page, "analysis-coding");
+
+    // On the study's Results tab the researcher counts from when both had coded, keeps it, and the methods text says so.
+    await page.getByRole("link", { name: "← Study" }).click();
+    await page.getByRole("tab", { name: "Results" }).click();
+    const study = page.getByRole("region", { name: "Agreement between observers" });
+    await study.getByText("The methods text counts agreement as shown here.").waitFor();
+    await study.getByLabel("Counted").selectOption("bothCoding");
+    await study.getByText("The methods text counts 1 s slices, the whole trial.").waitFor();
+    await study.getByRole("button", { name: "Keep this count for the methods text" }).click();
+    await study.getByText("The methods text counts agreement as shown here.").waitFor();
+    await page.getByRole("tab", { name: "Methods" }).click();
+    await page
+      .getByRole("region", { name: "Methods text" })
+      .getByText("agreement was counted in 1 s slices, from when both observers had coded", { exact: false })
+      .waitFor();
     await page.context().close();
   }, 240_000);
 });

@@ -39,6 +39,8 @@ export const STUDY_OPERATIONS = {
   "trial.run": ["owner", "researcher", "wizard"],
   "annotation.create": ["owner", "researcher", "wizard", "observer"],
   "data.read": ["owner", "researcher", "observer"],
+  // A trial's recording, to code it afterwards: it shows the trial, never its condition's name, so a condition blind lets it through.
+  "recording.read": ["owner", "researcher", "observer"],
 } as const satisfies Record<string, readonly StudyRole[]>;
 
 export type SystemOperation = keyof typeof SYSTEM_OPERATIONS;
@@ -49,7 +51,7 @@ export type Operation = SystemOperation | StudyOperation;
  * All a personal access token may do: list and read analysis data. No
  * writes, no token management, nothing a signed-in page needs.
  */
-export const TOKEN_OPERATIONS: readonly Operation[] = ["data.studies", "data.read"];
+export const TOKEN_OPERATIONS: readonly Operation[] = ["data.studies", "data.read", "recording.read"];
 
 export type Decision =
   | { allow: true }
@@ -102,7 +104,7 @@ export function decide(subject: Subject, op: Operation): Decision {
       reason: "This study hides its conditions from observers (blinding): results and exports open when it is lifted.",
     };
   }
-  if (op === "data.read" && subject.blinding?.resultsHidden) {
+  if ((op === "data.read" || op === "recording.read") && subject.blinding?.resultsHidden) {
     return { allow: false, hidden: false, reason: "This study hides results until it is marked completed (blinding)." };
   }
   return studyRoleMay(subject.studyRole, op)

@@ -294,3 +294,32 @@ group("answers by condition", () => {
     expect(counts(trials)).toEqual(expected);
   });
 });
+
+group("answers by condition in the tidy CSV", () => {
+  const asked = (condition: string | null, given: string): TrialFigures =>
+    trial(
+      condition,
+      100,
+      0,
+      [],
+      [{ stepId: "s", actionId: "q", question: "Which planet?", answer: given, options: ["Mars", "Venus"], relMs: 0 }],
+    );
+  it.each<[string, TrialFigures[], string[]]>([
+    ["no question asked: no answer rows", [trial("a", 100, 0, [])], []],
+    [
+      "each answer's count per condition in n, the ones nobody gave at zero, as the Results tab counts them",
+      [asked("praise", "Mars"), asked("praise", "Mars"), asked("neutral", "Venus"), asked(null, "Mars")],
+      [
+        "neutral,Answers to “Which planet?”: Mars,0,,,,,",
+        "praise,Answers to “Which planet?”: Mars,2,,,,,",
+        ",Answers to “Which planet?”: Mars,1,,,,,",
+        "neutral,Answers to “Which planet?”: Venus,1,,,,,",
+        "praise,Answers to “Which planet?”: Venus,0,,,,,",
+        ",Answers to “Which planet?”: Venus,0,,,,,",
+      ],
+    ],
+  ])("%s", (_, trials, rows) => {
+    const lines = byConditionCsv(resultsByCondition(trials, [])).split("\r\n");
+    expect(lines.filter((l) => l.includes("Answers to"))).toEqual(rows);
+  });
+});

@@ -126,22 +126,38 @@ function answerCounts(groups: Array<{ condition: string | null; group: TrialFigu
   }));
 }
 
-/** The tidy table: one row per condition × measure, the unit in the measure's name, durations in ms. */
-export function byConditionCsv({ measures }: ByCondition): string {
+// A count is no sample: mean, sd, median, min and max stay empty (every row has every column, for read.csv).
+const NO_FIGURES = [null, null, null, null, null];
+
+/** The measure an answer's count is in the tidy table: `Answers to “Where did Kai go?”: Mars`. */
+const answerMeasure = (question: string, answer: string) => `Answers to “${question}”: ${answer}`;
+
+/**
+ * The tidy table: one row per condition × measure, the unit in the measure's name, durations in ms; then one
+ * row per condition × question × answer, the times it was recorded in `n` (what the Results tab counts).
+ */
+export function byConditionCsv({ measures, answers }: ByCondition): string {
   const label = (m: Measure) => (m.unit === "ms" || m.unit === "%" ? `${m.measure} (${m.unit})` : m.measure);
   return csvDocument(
     ["condition", "measure", "n", "mean", "sd", "median", "min", "max"],
-    measures.flatMap((m) =>
-      m.byCondition.map(({ condition, stats }) => [
-        condition,
-        label(m),
-        stats?.n ?? 0,
-        stats?.mean,
-        stats?.sd,
-        stats?.median,
-        stats?.min,
-        stats?.max,
-      ]),
-    ),
+    [
+      ...measures.flatMap((m) =>
+        m.byCondition.map(({ condition, stats }) => [
+          condition,
+          label(m),
+          stats?.n ?? 0,
+          stats?.mean,
+          stats?.sd,
+          stats?.median,
+          stats?.min,
+          stats?.max,
+        ]),
+      ),
+      ...answers.flatMap(({ question, answers }) =>
+        answers.flatMap(({ answer, byCondition }) =>
+          byCondition.map(({ condition, count }) => [condition, answerMeasure(question, answer), count, ...NO_FIGURES]),
+        ),
+      ),
+    ],
   );
 }

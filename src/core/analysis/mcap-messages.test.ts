@@ -22,6 +22,11 @@ describe("schemaOf", () => {
       { type: "object", properties: { n: { type: "array", items: { type: "string" } }, e: { type: "array" } } },
     ],
     [
+      "an array's items of every message, an empty array adding none",
+      [{ n: [] }, { n: [1, "a"] }],
+      { type: "object", properties: { n: { type: "array", items: { type: ["number", "string"] } } } },
+    ],
+    [
       "a field named __proto__ as a field",
       [{ a: 1 }, JSON.parse('{"__proto__":"a"}')],
       { type: "object", properties: JSON.parse('{"a":{"type":"number"},"__proto__":{"type":"string"}}') },

@@ -14,40 +14,49 @@ export interface JsonSchema {
 const typeOf = (value: unknown) =>
   value === null ? "null" : Array.isArray(value) ? "array" : typeof value === "object" ? "object" : typeof value;
 
-const types = (s: JsonSchema) => (s.type === undefined ? [] : Array.isArray(s.type) ? s.type : [s.type]);
-
-/** Two shapes as one: every type either allows, properties and items merged. */
-function merged(a: JsonSchema, b: JsonSchema): JsonSchema {
-  const all = [...new Set([...types(a), ...types(b)])].sort();
-  const out: JsonSchema = { type: all.length === 1 ? all[0] : all };
-  if (a.properties || b.properties) {
-    // Without a prototype: a robot's field named __proto__ stays a field.
-    const properties: Record<string, JsonSchema> = Object.assign(Object.create(null), a.properties);
-    for (const [key, shape] of Object.entries(b.properties ?? {}))
-      properties[key] = properties[key] ? merged(properties[key], shape) : shape;
-    out.properties = properties;
-  }
-  if (a.items || b.items) out.items = a.items && b.items ? merged(a.items, b.items) : (a.items ?? b.items);
-  return out;
+/** A schema being read off messages: every type seen, and (once seen) an object's properties, an array's items. */
+interface Widening {
+  types: Set<string>;
+  properties?: Map<string, Widening>;
+  items?: Widening;
 }
 
-function shapeOf(value: unknown): JsonSchema {
+/** Widens `w` to fit `value` too: one walk of the value, nothing built per message that fits already. */
+function widen(w: Widening, value: unknown) {
   const type = typeOf(value);
+  w.types.add(type);
   if (type === "array") {
-    const items = (value as unknown[]).map(shapeOf);
-    return items.length ? { type, items: items.reduce(merged) } : { type };
+    for (const item of value as unknown[]) widen((w.items ??= { types: new Set() }), item);
+  } else if (type === "object") {
+    w.properties ??= new Map();
+    for (const [key, v] of Object.entries(value as object)) {
+      let p = w.properties.get(key);
+      if (!p) w.properties.set(key, (p = { types: new Set() }));
+      widen(p, v);
+    }
   }
-  if (type === "object")
-    return {
-      type,
-      properties: Object.fromEntries(Object.entries(value as object).map(([k, v]) => [k, shapeOf(v)])),
-    };
-  return { type };
+}
+
+/** The JSON Schema a widening reached: types in order (one alone as itself), properties in the order first met. */
+function schemaFrom(w: Widening): JsonSchema {
+  const all = [...w.types].sort();
+  const out: JsonSchema = { type: all.length === 1 ? all[0] : all };
+  if (w.properties) {
+    // Without a prototype: a robot's field named __proto__ stays a field.
+    const properties: Record<string, JsonSchema> = Object.create(null);
+    for (const [key, p] of w.properties) properties[key] = schemaFrom(p);
+    out.properties = properties;
+  }
+  if (w.items) out.items = schemaFrom(w.items);
+  return out;
 }
 
 /** The JSON Schema every one of these messages (as JSON) fits: the fields they have, typed as they are. */
 export function schemaOf(messages: unknown[]): JsonSchema {
-  return messages.length ? messages.map(shapeOf).reduce(merged) : { type: "object" };
+  if (!messages.length) return { type: "object" };
+  const w: Widening = { types: new Set() };
+  for (const m of messages) widen(w, m);
+  return schemaFrom(w);
 }
 
 /**

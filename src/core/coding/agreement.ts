@@ -2,6 +2,7 @@
 // into time slices (the code that holds in each, or "none"), the two sequences
 // make a confusion table, and Cohen's kappa is read off the table. Pooling the
 // tables of several trials gives a study's kappa. Pure: no clock, no I/O.
+import type { AgreementWindow } from "./counted";
 import type { CodeKind } from "./scheme";
 
 /** One code event as agreement needs it; a state with no end yet holds to the end of the trial. */
@@ -34,17 +35,6 @@ export function sliceCodes(marks: CodeMark[], setId: string, durationMs: number,
   }
   return slices;
 }
-
-/** Which part of each trial agreement counts: the whole trial, from when both observers had coded, or chosen steps. */
-export const AGREEMENT_WINDOWS = ["trial", "bothCoding", "steps"] as const;
-export type AgreementWindow = (typeof AGREEMENT_WINDOWS)[number];
-
-/** The window as a report names it, beside the kappa. */
-export const WINDOW_WORDS: Record<AgreementWindow, string> = {
-  trial: "the whole trial",
-  bothCoding: "from when both observers had coded",
-  steps: "the chosen steps only",
-};
 
 /** When a step of one trial held, in ms from the trial's start. */
 export type StepSpan = { stepId: string; fromMs: number; toMs: number };

@@ -1,16 +1,7 @@
 import { describe, expect, it } from "vitest";
 import { tableCsv } from "@/core/analysis/table";
-import {
-  type AgreementWindow,
-  agreement,
-  type CodeMark,
-  cohenKappa,
-  confusion,
-  NONE,
-  sliceCodes,
-  strength,
-  windowSpans,
-} from "./agreement";
+import { type AgreementWindow, type Counted, countedWords, sameCount } from "./counted";
+import { agreement, type CodeMark, cohenKappa, confusion, NONE, sliceCodes, strength, windowSpans } from "./agreement";
 import { codesTable } from "./export";
 import { checkScheme, codeForKey } from "./scheme";
 import { blankScheme, newCode, SCHEME_TEMPLATES, schemeTemplate } from "./templates";
@@ -371,5 +362,36 @@ describe("a new code", () => {
     expect(added.id).toBe("code-2");
     s.sets[0]!.codes.push(added);
     expect(checkScheme(s).ok).toBe(true);
+  });
+});
+
+describe("what a kappa counted, said beside it", () => {
+  const steps = [
+    { id: "s1", name: "Story" },
+    { id: "s2", name: "Recall" },
+  ];
+  it.each<[Counted, string]>([
+    [{ sliceMs: 1000, window: "trial", stepIds: [] }, "1 s slices, the whole trial"],
+    [{ sliceMs: 500, window: "bothCoding", stepIds: [] }, "0.5 s slices, from when both observers had coded"],
+    [{ sliceMs: 2000, window: "steps", stepIds: ["s2", "s1"] }, "2 s slices, steps Story, Recall"],
+    [{ sliceMs: 1000, window: "steps", stepIds: [] }, "1 s slices, steps (none chosen)"],
+  ])("%j", (counted, words) => {
+    expect(countedWords(counted, steps)).toBe(words);
+  });
+});
+
+describe("whether two choices count the same", () => {
+  const whole: Counted = { sliceMs: 1000, window: "trial", stepIds: [] };
+  it.each<[string, Counted, boolean]>([
+    ["the same, its keys in jsonb's order", JSON.parse('{"window":"trial","sliceMs":1000,"stepIds":[]}'), true],
+    ["another slice", { ...whole, sliceMs: 500 }, false],
+    ["another window", { ...whole, window: "bothCoding" }, false],
+    ["steps chosen", { ...whole, stepIds: ["s1"] }, false],
+  ])("%s", (_, other, same) => {
+    expect(sameCount(whole, other)).toBe(same);
+  });
+  it("counts the same steps chosen in another order", () => {
+    const steps: Counted = { sliceMs: 1000, window: "steps", stepIds: ["a", "b"] };
+    expect(sameCount(steps, { ...steps, stepIds: ["b", "a"] })).toBe(true);
   });
 });

@@ -4,6 +4,7 @@
 // which is what makes agreement between two observers computable per set.
 // A published version freezes it; every code event points at the version used.
 import { z } from "zod";
+import { countedSchema } from "./counted";
 
 const text = (max: number) =>
   z.string().trim().min(1, "must not be empty").max(max, `must be at most ${max} characters`);
@@ -45,6 +46,8 @@ export const schemeSchema = z
     name: text(200),
     description: z.string().max(5000).default(""),
     sets: z.array(codeSetSchema).min(1, "needs at least one set of codes").max(20),
+    /** How agreement is counted, chosen on the Results tab: the analysis's, so a published version leaves it out. */
+    counted: countedSchema.optional(),
   })
   .superRefine((s, ctx) => {
     const setIds = new Set<string>();

@@ -91,7 +91,7 @@ const study: StudyFacts = {
     {
       name: "Gaze",
       version: 1,
-      sliceMs: 1000,
+      counted: "1 s slices, from when both observers had coded",
       sets: [{ name: "Looks at", pairs: [{ observers: ["Ann", "Bo"], kappa: 0.7322, slices: 120 }] }],
     },
   ],
@@ -131,6 +131,10 @@ describe("the study's methods text says each fact", () => {
     ["a questionnaire's scoring reference", "(10 items; 4 responses), scored as published: odd items (answer − 1)"],
     ["a questionnaire without an instrument", "Before the trial: “Background” (2 items; 1 response)."],
     ["coding agreement", "“Looks at”: Cohen's κ = 0.73 between Ann and Bo (120 slices)."],
+    [
+      "what the kappa counted",
+      "Observers coded with “Gaze” (version 1); agreement was counted in 1 s slices, from when both observers had coded:",
+    ],
     [
       "fidelity and deviations",
       "“Expressive”: mean execution fidelity 87.5% (SD 17.7) over 2 trials; 1 of 2 without any deviation; deviations: 1 action skipped.",

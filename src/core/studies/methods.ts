@@ -82,7 +82,8 @@ export interface StudyFacts {
   coding: Array<{
     name: string;
     version: number;
-    sliceMs: number;
+    /** What the kappa counted, in words (`countedWords`): the slice and the window the scheme keeps. */
+    counted: string;
     sets: Array<{ name: string; pairs: Array<{ observers: [string, string]; kappa: number | null; slices: number }> }>;
   }>;
   software: { version: string };
@@ -312,7 +313,7 @@ function coding(f: StudyFacts, s: Style): string[] {
       );
       return `${quote(s, set.name)}: ${joinAnd(pairs)}`;
     });
-    return `Observers coded with ${quote(s, scheme.name)} (version ${scheme.version}), in slices of ${seconds(scheme.sliceMs)}: ${sets.join("; ")}.`;
+    return `Observers coded with ${quote(s, scheme.name)} (version ${scheme.version}); agreement was counted in ${scheme.counted}: ${sets.join("; ")}.`;
   });
 }
 

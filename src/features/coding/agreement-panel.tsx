@@ -2,15 +2,18 @@
 // Inter-rater agreement as a paper reports it: Cohen's kappa per set of codes
 // between two chosen observers, over time slices, with the confusion table it
 // comes from; pooled over the study's trials, or for one trial.
-import { useQuery } from "@tanstack/react-query";
+import { useMutation, useQuery, useQueryClient } from "@tanstack/react-query";
 import { useState } from "react";
+import { type SetAgreement, strength } from "@/core/coding/agreement";
 import {
   AGREEMENT_WINDOWS,
   type AgreementWindow,
-  type SetAgreement,
-  strength,
+  type Counted,
+  countedWords,
+  sameCount,
   WINDOW_WORDS,
-} from "@/core/coding/agreement";
+} from "@/core/coding/counted";
+import { Button } from "@/ui/button";
 import { useTRPC } from "@/lib/trpc";
 import { Field, NativeSelect } from "@/ui/field";
 import { Problem } from "@/ui/problem";
@@ -19,7 +22,16 @@ import { Table, Td, Th } from "@/ui/table";
 
 const SLICES = [500, 1000, 2000, 5000];
 
-export function AgreementPanel({ studyId, trialId }: { studyId: string; trialId?: string }) {
+export function AgreementPanel({
+  studyId,
+  trialId,
+  canKeep = false,
+}: {
+  studyId: string;
+  trialId?: string;
+  /** May keep what is counted with the scheme (an editor, on the study's Results tab). */
+  canKeep?: boolean;
+}) {
   const trpc = useTRPC();
   const schemes = useQuery(trpc.coding.schemes.queryOptions({ studyId }));
   const published = (schemes.data ?? []).filter((s) => s.latestVersionId);
@@ -44,21 +56,39 @@ export function AgreementPanel({ studyId, trialId }: { studyId: string; trialId?
           ))}
         </NativeSelect>
       )}
-      <Pair versionId={scheme.latestVersionId!} trialId={trialId} />
+      <Pair schemeId={scheme.id} versionId={scheme.latestVersionId!} trialId={trialId} canKeep={canKeep} />
     </section>
   );
 }
 
-function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
+function Pair({
+  schemeId,
+  versionId,
+  trialId,
+  canKeep,
+}: {
+  schemeId: string;
+  versionId: string;
+  trialId?: string;
+  canKeep: boolean;
+}) {
   const trpc = useTRPC();
-  const [sliceMs, setSliceMs] = useState(1000);
-  const [window, setWindow] = useState<AgreementWindow>("trial");
-  const [stepIds, setStepIds] = useState<string[]>([]);
+  const queryClient = useQueryClient();
+  // Null: as the scheme keeps it (the server says what that is).
+  const [asked, setAsked] = useState<Counted | null>(null);
   const [chosen, setChosen] = useState<[string, string] | null>(null);
-  const result = useQuery(trpc.coding.agreement.queryOptions({ schemeVersionId: versionId, sliceMs, window, stepIds }));
+  const result = useQuery(trpc.coding.agreement.queryOptions({ schemeVersionId: versionId, ...asked }));
+  const keep = useMutation(
+    trpc.coding.keepCounted.mutationOptions({
+      onSuccess: () => queryClient.invalidateQueries({ queryKey: trpc.coding.agreement.queryKey() }),
+    }),
+  );
   if (result.isPending) return <Spinner label="Comparing the observers…" />;
   if (result.error) return <Problem error={result.error} />;
-  const { sets: named, observers, pairs, steps } = result.data;
+  const { sets: named, observers, pairs, steps, counted, kept } = result.data;
+  const { sliceMs, window, stepIds } = counted;
+  const choose = (change: Partial<Counted>) => setAsked({ ...counted, ...change });
+  const unkept = !sameCount(counted, kept);
   if (observers.length < 2)
     return (
       <p className="text-sm text-slate-600">
@@ -70,14 +100,14 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
   const pair = pairs.find((p) => (p.a === a && p.b === b) || (p.a === b && p.b === a));
   const sets = trialId ? pair?.trials.find((t) => t.trialId === trialId)?.sets : pair?.pooled;
   const nameOf = (id: string) => observers.find((o) => o.id === id)?.name ?? id;
-  const choose = (which: 0 | 1, id: string) => setChosen(which === 0 ? [id, b] : [a, id]);
+  const pick = (which: 0 | 1, id: string) => setChosen(which === 0 ? [id, b] : [a, id]);
   return (
     <div className="space-y-3">
       <div className="flex flex-wrap items-end gap-3 text-sm">
         {([0, 1] as const).map((which) => (
           <Field key={which} label={which === 0 ? "First observer" : "Second observer"}>
             {(p) => (
-              <NativeSelect {...p} value={which === 0 ? a : b} onChange={(e) => choose(which, e.target.value)}>
+              <NativeSelect {...p} value={which === 0 ? a : b} onChange={(e) => pick(which, e.target.value)}>
                 {observers.map((o) => (
                   <option key={o.id} value={o.id}>
                     {o.name}
@@ -89,7 +119,7 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
         ))}
         <Field label="Time slice">
           {(p) => (
-            <NativeSelect {...p} value={sliceMs} onChange={(e) => setSliceMs(Number(e.target.value))}>
+            <NativeSelect {...p} value={sliceMs} onChange={(e) => choose({ sliceMs: Number(e.target.value) })}>
               {SLICES.map((ms) => (
                 <option key={ms} value={ms}>
                   {ms / 1000} s
@@ -100,7 +130,7 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
         </Field>
         <Field label="Counted">
           {(p) => (
-            <NativeSelect {...p} value={window} onChange={(e) => setWindow(e.target.value as AgreementWindow)}>
+            <NativeSelect {...p} value={window} onChange={(e) => choose({ window: e.target.value as AgreementWindow })}>
               {AGREEMENT_WINDOWS.map((w) => (
                 <option key={w} value={w}>
                   {WINDOW_WORDS[w]}
@@ -119,7 +149,9 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
                 type="checkbox"
                 checked={stepIds.includes(step.id)}
                 onChange={(e) =>
-                  setStepIds(e.target.checked ? [...stepIds, step.id] : stepIds.filter((id) => id !== step.id))
+                  choose({
+                    stepIds: e.target.checked ? [...stepIds, step.id] : stepIds.filter((id) => id !== step.id),
+                  })
                 }
               />
               {step.name}
@@ -127,6 +159,24 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
           ))}
         </fieldset>
       )}
+      {canKeep && (
+        <p className="flex flex-wrap items-center gap-2 text-sm text-slate-600">
+          {unkept
+            ? `The methods text counts ${countedWords(kept, steps)}.`
+            : "The methods text counts agreement as shown here."}
+          {unkept && (
+            <Button
+              variant="secondary"
+              size="sm"
+              disabled={keep.isPending}
+              onClick={() => keep.mutate({ codingSchemeId: schemeId, counted })}
+            >
+              Keep this count for the methods text
+            </Button>
+          )}
+        </p>
+      )}
+      <Problem error={keep.error} />
       {a === b || !pair || !sets ? (
         <p className="text-sm text-slate-600">
           {a === b ? "Choose two different observers." : "These two observers have not coded the same trial."}
@@ -145,7 +195,7 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
               key={s.setId}
               set={s}
               names={named.find((n) => n.id === s.setId)}
-              counted={countedWords(window, sliceMs, steps, stepIds)}
+              counted={countedWords(counted, steps)}
             />
           ))}
         </>
@@ -155,13 +205,6 @@ function Pair({ versionId, trialId }: { versionId: string; trialId?: string }) {
 }
 
 type SetNames = { name: string; codes: Array<{ id: string; name: string }> };
-
-/** What the kappa counted, said beside it: a paper reports the window with the value. */
-function countedWords(window: AgreementWindow, sliceMs: number, steps: SetNames["codes"], stepIds: string[]) {
-  const chosen = steps.filter((s) => stepIds.includes(s.id)).map((s) => s.name);
-  const which = window === "steps" ? `steps ${chosen.join(", ") || "(none chosen)"}` : WINDOW_WORDS[window];
-  return `${sliceMs / 1000} s slices, ${which}`;
-}
 
 function SetFigure({ set, names, counted }: { set: SetAgreement; names?: SetNames; counted: string }) {
   const kappa = set.kappa === null ? "undefined" : set.kappa.toFixed(2);

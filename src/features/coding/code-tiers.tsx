@@ -14,11 +14,24 @@ import { Card } from "@/ui/surface";
 const sec = (ms: number | null) => (ms === null ? "" : (ms / 1000).toFixed(1));
 const ms = (text: string) => (text.trim() === "" ? null : Math.max(0, Math.round(Number(text) * 1000)));
 
-export function CodeTiers({ trialId, playheadMs }: { trialId: string; playheadMs: number | null }) {
+export function CodeTiers({
+  trialId,
+  playheadMs,
+  mineOnly = false,
+}: {
+  trialId: string;
+  playheadMs: number | null;
+  /** My tier alone: for a coder who may not read the results (everyone's codes are results), e.g. blind to condition. */
+  mineOnly?: boolean;
+}) {
   const trpc = useTRPC();
   const queryClient = useQueryClient();
-  const codes = useQuery(trpc.coding.codes.queryOptions({ trialId }));
-  const mine = useQuery(trpc.coding.forTrial.queryOptions({ trialId }));
+  const everyone = useQuery({ ...trpc.coding.codes.queryOptions({ trialId }), enabled: !mineOnly });
+  // Read afresh: codes marked live came over the trial's socket, past this query's last answer.
+  const mine = useQuery({ ...trpc.coding.forTrial.queryOptions({ trialId }), refetchOnMount: "always" });
+  const codes = mineOnly
+    ? { data: mine.data?.mine.map((c) => ({ ...c, observerName: "My codes" })), error: mine.error }
+    : everyone;
   const refresh = () => queryClient.invalidateQueries();
   const add = useMutation(trpc.coding.addCode.mutationOptions({ onSuccess: refresh }));
   const move = useMutation(trpc.coding.moveCode.mutationOptions({ onSuccess: refresh }));
@@ -76,7 +89,8 @@ export function CodeTiers({ trialId, playheadMs }: { trialId: string; playheadMs
                       <Button
                         variant="ghost"
                         size="sm"
-                        aria-label={`Move ${names?.code ?? c.codeId} at ${sec(c.startMs)} s to the playhead`}
+                        // The visible words first: a name must hold what the button shows (WCAG 2.5.3).
+                        aria-label={`Move to playhead: ${names?.code ?? c.codeId} at ${sec(c.startMs)} s`}
                         disabled={playheadMs === null}
                         onClick={() =>
                           move.mutate({

@@ -12,6 +12,7 @@ import { Badge, Card, Spinner, STATUS_TONE } from "@/ui/surface";
 import { BrowserAudio } from "./browser-audio";
 import { SendVideo, WatchVideo } from "./live-video-panel";
 import { RobotCamera } from "./robot-camera";
+import { CodeAfterwards } from "../coding/code-afterwards";
 import { LiveCodingPanel } from "../coding/live-coding-panel";
 import { AnnotateForm, AnnotationList, Watching } from "./observer-panel";
 import { OffScript, StepActions, StepList } from "./protocol-view";
@@ -186,6 +187,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
             <TrialQuestionnaires studyId={trial.studyId} trialId={trial.id} participantId={trial.participantId} />
           )}
           {!wizard && !ended && <LiveCodingPanel trialId={trial.id} codes={live.codes} send={live.code} />}
+          {!wizard && ended && <CodeAfterwards trialId={trial.id} />}
           {!wizard && <AnnotateForm annotate={live.annotate} />}
           <AnnotationList annotations={live.annotations} />
           {wizard && (

@@ -5,6 +5,7 @@
 import { useQuery } from "@tanstack/react-query";
 import Link from "next/link";
 import type { StudySummary } from "@/core/analysis/study-summary";
+import { type StudyRole, studyRoleMay } from "@/core/access/policy";
 import { useTRPC } from "@/lib/trpc";
 import { Problem } from "@/ui/problem";
 import { Card, EmptyState, Spinner } from "@/ui/surface";
@@ -13,7 +14,7 @@ import { seconds } from "@/ui/format";
 import { AgreementPanel } from "../coding/agreement-panel";
 import { ResultsByCondition } from "./results-by-condition";
 
-export function ResultsTab({ studyId }: { studyId: string }) {
+export function ResultsTab({ studyId, role }: { studyId: string; role: StudyRole }) {
   const trpc = useTRPC();
   const figures = useQuery(trpc.studies.figures.queryOptions({ studyId }));
   if (figures.isPending) return <Spinner label="Computing the study's figures…" />;
@@ -49,7 +50,7 @@ export function ResultsTab({ studyId }: { studyId: string }) {
         <StepTimingPlot steps={s.steps} />
       </section>
       <ResultsByCondition studyId={studyId} />
-      <AgreementPanel studyId={studyId} />
+      <AgreementPanel studyId={studyId} canKeep={studyRoleMay(role, "experiment.edit")} />
       <section aria-label="Trials">
         <h2 className="mb-2 text-lg font-semibold">Trials</h2>
         <Table>

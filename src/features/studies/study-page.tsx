@@ -77,7 +77,7 @@ export function StudyPage({ studyId }: { studyId: string }) {
           { id: "coding", label: "Coding", content: <CodingTab studyId={studyId} role={role} /> },
           ...(studyRoleMay(role, "data.read")
             ? [
-                { id: "results", label: "Results", content: <ResultsTab studyId={studyId} /> },
+                { id: "results", label: "Results", content: <ResultsTab studyId={studyId} role={role} /> },
                 { id: "methods", label: "Methods", content: <MethodsTab studyId={studyId} /> },
               ]
             : []),

@@ -1,7 +1,8 @@
 // Agreement between every two observers who coded the study's trials with
 // one published scheme version: per trial, and pooled over all of them.
 import { and, asc, eq, inArray, isNotNull } from "drizzle-orm";
-import { type AgreementWindow, agreement, type CodeMark, stepSpans } from "@/core/coding/agreement";
+import { agreement, type CodeMark, stepSpans } from "@/core/coding/agreement";
+import type { Counted } from "@/core/coding/counted";
 import type { Scheme } from "@/core/coding/scheme";
 import type { Database } from "@/store/client";
 import { codeEvents, participants, steps, trialEvents, trials, user } from "@/store/schema";
@@ -11,9 +12,7 @@ export async function studyAgreement(
   studyId: string,
   versionId: string,
   scheme: Scheme,
-  sliceMs: number,
-  window: AgreementWindow = "trial",
-  stepIds: string[] = [],
+  { sliceMs, window, stepIds }: Counted,
 ) {
   const rows = await db
     .select({
@@ -56,7 +55,6 @@ export async function studyAgreement(
       name: set.name,
       codes: set.codes.map((code) => ({ id: code.id, name: code.name })),
     })),
-    window,
     // The steps the coded trials went through, by name, for choosing the "steps" window.
     steps: await stepNames(db, [...new Set([...entries.values()].flat().map((e) => e.stepId))]),
     observers: ids.map((id) => ({ id, name: observers.get(id)! })),

@@ -3,6 +3,7 @@
 // the latest published version of each, which observers code with.
 import { TRPCError } from "@trpc/server";
 import { desc, eq, sql } from "drizzle-orm";
+import { COUNTED_BY_DEFAULT, type Counted } from "@/core/coding/counted";
 import { checkScheme, type Scheme } from "@/core/coding/scheme";
 import { hashCanonical } from "@/core/protocol/canonical";
 import type { Database } from "@/store/client";
@@ -47,7 +48,8 @@ export async function publishedSchemes(db: Database, studyId: string) {
 export function publishScheme(db: Database, schemeId: string, userId: string) {
   return db.transaction(async (tx) => {
     const [s] = await tx.select().from(codingSchemes).where(eq(codingSchemes.id, schemeId)).for("update");
-    const definition = checkedScheme(s!.draft);
+    // What coders code with; how agreement is counted stays the scheme's, changed without a new version.
+    const { counted: _, ...definition } = checkedScheme(s!.draft);
     const [{ next }] = (await tx
       .select({ next: sql<number>`coalesce(max(${codingSchemeVersions.version}), 0)::int + 1` })
       .from(codingSchemeVersions)
@@ -62,4 +64,13 @@ export function publishScheme(db: Database, schemeId: string, userId: string) {
       });
     return version!;
   });
+}
+
+/** How a scheme's agreement is counted: as kept on its draft, or by default. */
+export async function keptCounted(db: Pick<Database, "select">, schemeId: string): Promise<Counted> {
+  const [row] = await db
+    .select({ draft: codingSchemes.draft })
+    .from(codingSchemes)
+    .where(eq(codingSchemes.id, schemeId));
+  return (row?.draft as Scheme | undefined)?.counted ?? COUNTED_BY_DEFAULT;
 }

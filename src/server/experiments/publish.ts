@@ -1,6 +1,6 @@
 // Publishing freezes the draft into an immutable, numbered, hashed version.
 import { TRPCError } from "@trpc/server";
-import { eq, getTableColumns, sql } from "drizzle-orm";
+import { desc, eq, getTableColumns, sql } from "drizzle-orm";
 import { validating } from "@/core/designer/validate";
 import { hashing } from "@/core/protocol/canonical";
 import { snapshotOf } from "@/core/protocol/snapshot";
@@ -78,15 +78,22 @@ async function publishNow(db: Database, experimentId: string, userId: string) {
         .onConflictDoNothing();
     }
     const canonical = await sliced(hashing(snapshot));
-    const [{ next }] = (await tx
-      .select({ next: sql<number>`coalesce(max(${experimentVersions.version}), 0)::int + 1` })
+    const [latest] = await tx
+      .select(columnsButSnapshot)
       .from(experimentVersions)
-      .where(eq(experimentVersions.experimentId, experimentId))) as [{ next: number }];
+      .where(eq(experimentVersions.experimentId, experimentId))
+      .orderBy(desc(experimentVersions.version))
+      .limit(1);
+    // The draft as last published, on the same plugin document: that version is the one to run, not a copy under
+    // a new number (the seeded demo is published, and a script that publishes before each trial runs it too).
+    if (latest && latest.hash === canonical.hash && latest.pluginHash === (known?.hash ?? null)) {
+      return { ...latest, snapshot };
+    }
     const [version] = await tx
       .insert(experimentVersions)
       .values({
         experimentId,
-        version: next,
+        version: (latest?.version ?? 0) + 1,
         // The text just hashed, so the snapshot is not written out a second time.
         snapshot: sql`${canonical.text}::jsonb`,
         hash: canonical.hash,

@@ -1,9 +1,11 @@
 // The demo data for a first start: one account per role and a study holding
-// the Interactive Storyteller. Never touches a database that holds data.
+// the Interactive Storyteller, published, so a newcomer's first trial starts
+// at once. Never touches a database that holds data.
 import { randomBytes } from "node:crypto";
 import { sql } from "drizzle-orm";
 import type { SystemRole, StudyRole } from "@/core/access/policy";
 import { createAccount } from "../auth/accounts";
+import { publish } from "../experiments/publish";
 import type { Database } from "@/store/client";
 import { actions, experiments, participants, steps, studies, studyMembers, user } from "@/store/schema";
 import { STORYTELLER, storytellerDraft } from "./storyteller";
@@ -45,7 +47,7 @@ export async function seedDemo(db: Database, password?: string): Promise<DemoAcc
   }
   const owner = ids.get("researcher@demo.hristudio")!;
 
-  await db.transaction(async (tx) => {
+  const experimentId = await db.transaction(async (tx) => {
     const [study] = await tx
       .insert(studies)
       .values({
@@ -87,6 +89,8 @@ export async function seedDemo(db: Database, password?: string): Promise<DemoAcc
         consentDate: new Date(),
       })),
     );
+    return experiment!.id;
   });
+  await publish(db, experimentId, owner);
   return accounts;
 }

@@ -6,6 +6,7 @@
 // page's Methods tab and the study zip.
 import { and, asc, desc, eq, isNotNull } from "drizzle-orm";
 import { studySummary } from "@/core/analysis/study-summary";
+import { countedWords } from "@/core/coding/counted";
 import { actionNamesOf } from "@/core/designer/action-name";
 import { readSnapshot } from "@/core/protocol/snapshot";
 import { conditionOfTrial, type EnrolledParticipant, enrolment, type RunTrial } from "@/core/studies/enrolment";
@@ -24,14 +25,11 @@ import {
 } from "@/store/schema";
 import packageJson from "../../../package.json";
 import { studyAgreement } from "../coding/agreement";
-import { publishedSchemes } from "../coding/schemes";
+import { keptCounted, publishedSchemes } from "../coding/schemes";
 import { assignmentOf, givenQuestionnaires, pinnedPlugin } from "../experiments/methods";
 import { fileSlug } from "../file-slug";
 import { submitted } from "../questionnaires/responses";
 import { finishedTrials } from "./summary";
-
-/** The slice agreement is computed over here, as the Coding tab's default. */
-const SLICE_MS = 1000;
 
 type VersionRow = typeof experimentVersions.$inferSelect;
 
@@ -142,12 +140,14 @@ export async function studyFacts(db: Database, studyId: string): Promise<StudyFa
     })),
     coding: await Promise.all(
       schemes.map(async (scheme) => {
-        const found = await studyAgreement(db, studyId, scheme.versionId, scheme.definition, SLICE_MS);
+        // Counted as the scheme keeps it, as the Results tab shows it.
+        const counted = await keptCounted(db, scheme.schemeId);
+        const found = await studyAgreement(db, studyId, scheme.versionId, scheme.definition, counted);
         const nameOf = (id: string) => found.observers.find((o) => o.id === id)!.name;
         return {
           name: scheme.definition.name,
           version: scheme.version,
-          sliceMs: SLICE_MS,
+          counted: countedWords(counted, found.steps),
           sets: found.sets.map((set) => ({
             name: set.name,
             pairs: found.pairs.map((pair) => {

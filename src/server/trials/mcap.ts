@@ -4,7 +4,7 @@
 // JSON Schema of its topic's messages, on a time axis that starts at the
 // trial's t0, so a roboticist sees the robot's state beside what the wizard
 // did. Messages are written in time order.
-import { McapWriter, TempBuffer } from "@mcap/core";
+import { type IWritable, McapWriter } from "@mcap/core";
 import type { Sample } from "@/core/analysis/exports";
 import {
   LOG_SCHEMA,
@@ -72,14 +72,15 @@ export async function trialMcap({
   for (const s of samples) (byTopic.get(s.topic) ?? byTopic.set(s.topic, []).get(s.topic)!).push(s);
   for (const [topic, list] of byTopic) {
     const unwrapped = list.map((s) => plottable(s.data));
-    const messages = list.map((s, i) => ({ at: atOf(s.relMs), data: asJson(unwrapped[i]) }));
+    // Samples come from jsonb (or JSON text, unwrapped): already as their JSON reads back, with no copy made.
+    const messages = list.map((s, i) => ({ at: atOf(s.relMs), data: unwrapped[i] }));
     const schema = schemaOf(messages.map((m) => m.data));
     // A String unwrapped into its JSON fields is no longer of the type the robot declared.
     const declared = unwrapped.every((d, i) => d === list[i]!.data) ? (rosTypes.get(topic) ?? null) : null;
     topics.set(topic, { schemaName: sampleSchemaName(topic, schema, declared), schema, messages });
   }
 
-  const buffer = new TempBuffer();
+  const buffer = new Pieces();
   const writer = new McapWriter({ writable: buffer });
   await writer.start({ profile: "", library: "HRIStudio" });
   const encoder = new TextEncoder();
@@ -116,5 +117,31 @@ export async function trialMcap({
     });
   }
   await writer.end();
-  return buffer.get();
+  return buffer.whole();
+}
+
+/**
+ * Where the writer writes: its pieces kept as they come, joined once at the end. (@mcap/core's TempBuffer
+ * copies all it holds on every write, gigabytes over a long trial's 50 MB.)
+ */
+class Pieces implements IWritable {
+  #pieces: Uint8Array[] = [];
+  #size = 0;
+  position() {
+    return BigInt(this.#size);
+  }
+  async write(data: Uint8Array) {
+    // A copy: the writer may fill its buffer again once this returns.
+    this.#pieces.push(data.slice());
+    this.#size += data.byteLength;
+  }
+  whole(): Uint8Array {
+    const out = new Uint8Array(this.#size);
+    let at = 0;
+    for (const piece of this.#pieces) {
+      out.set(piece, at);
+      at += piece.byteLength;
+    }
+    return out;
+  }
 }

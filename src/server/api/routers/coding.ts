@@ -5,13 +5,13 @@ import { TRPCError } from "@trpc/server";
 import { asc, eq, sql } from "drizzle-orm";
 import { z } from "zod";
 
-import { AGREEMENT_WINDOWS } from "@/core/coding/agreement";
+import { countedSchema } from "@/core/coding/counted";
 import { SCHEME_TEMPLATES, blankScheme, schemeTemplate } from "@/core/coding/templates";
 import { codeOfTrial, codeView, trialCodes } from "@/store/code-events";
 import { qualified } from "@/store/qualified";
 import { codeEvents, codingSchemeVersions, codingSchemes, user } from "@/store/schema";
 import { studyAgreement } from "../../coding/agreement";
-import { checkedScheme, insertScheme, publishScheme, publishedSchemes } from "../../coding/schemes";
+import { checkedScheme, insertScheme, keptCounted, publishScheme, publishedSchemes } from "../../coding/schemes";
 import { router, studyProcedure } from "../trpc";
 import { id, text } from "../validation";
 
@@ -103,27 +103,38 @@ export const codingRouter = router({
   /**
    * Cohen's kappa per set between every two observers who coded with this
    * version: per trial both coded, and pooled over them (the study's figure).
+   * Counted as the scheme keeps it (`keepCounted`), unless the request chooses otherwise.
    */
   agreement: studyProcedure(
     "data.read",
     "schemeVersion",
     z.object({
       schemeVersionId: id,
-      sliceMs: z.number().int().min(100).max(60_000).default(1000),
-      window: z.enum(AGREEMENT_WINDOWS, { error: `must be one of ${AGREEMENT_WINDOWS.join(", ")}` }).default("trial"),
-      stepIds: z.array(z.string().max(100)).max(200).default([]),
+      sliceMs: countedSchema.shape.sliceMs.unwrap().optional(),
+      window: countedSchema.shape.window.unwrap().optional(),
+      stepIds: countedSchema.shape.stepIds.unwrap().optional(),
     }),
-  ).query(({ ctx, input }) =>
-    studyAgreement(
-      ctx.db,
-      ctx.studyId,
-      ctx.row.id,
-      checkedScheme(ctx.row.definition),
-      input.sliceMs,
-      input.window,
-      input.stepIds,
-    ),
-  ),
+  ).query(async ({ ctx, input }) => {
+    const kept = await keptCounted(ctx.db, ctx.row.schemeId);
+    const counted = {
+      sliceMs: input.sliceMs ?? kept.sliceMs,
+      window: input.window ?? kept.window,
+      stepIds: input.stepIds ?? kept.stepIds,
+    };
+    const found = await studyAgreement(ctx.db, ctx.studyId, ctx.row.id, checkedScheme(ctx.row.definition), counted);
+    return { ...found, counted, kept };
+  }),
+
+  /** How the scheme's agreement is counted, for the Results tab and the methods text alike. */
+  keepCounted: studyProcedure(
+    "experiment.edit",
+    "codingScheme",
+    z.object({ codingSchemeId: id, counted: countedSchema }),
+  ).mutation(async ({ ctx, input }) => {
+    const draft = { ...checkedScheme(ctx.row.draft), counted: input.counted };
+    await ctx.db.update(codingSchemes).set({ draft, updatedAt: new Date() }).where(eq(codingSchemes.id, ctx.row.id));
+    return input.counted;
+  }),
 
   /** A code marked afterwards, against the recording, in the caller's own tier. */
   addCode: studyProcedure(

@@ -89,7 +89,7 @@ export const recordingsRouter = router({
     return rows.filter((r) => r.cutOff || r.status === "recording");
   }),
 
-  list: studyProcedure("data.read", "trial", z.object({ trialId: id })).query(async ({ ctx }) => {
+  list: studyProcedure("recording.read", "trial", z.object({ trialId: id })).query(async ({ ctx }) => {
     // Those whose page went away are finished first, so the trial's media is whole when it is looked at.
     await finishLeftOver(ctx.db, ctx.media, { trialId: ctx.row.id });
     return ctx.db
@@ -112,7 +112,7 @@ export const recordingsRouter = router({
    * Where the finished file is, for the media route, which streams it from
    * storage in ranges: a recording never passes through the API whole.
    */
-  media: studyProcedure("data.read", "recording", recordingId).query(async ({ ctx }) => {
+  media: studyProcedure("recording.read", "recording", recordingId).query(async ({ ctx }) => {
     const r = ctx.row;
     if (r.status !== "complete")
       throw new TRPCError({ code: "PRECONDITION_FAILED", message: "This recording is not finished yet." });
