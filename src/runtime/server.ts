@@ -134,11 +134,16 @@ const withEvents = (text: string, events: string[]) =>
  */
 async function welcomeParts(events: StoredEvent[]): Promise<{ texts: string[]; ends: number[] }> {
   const texts: string[] = [];
+  const sizes: number[] = [];
   for (let start = 0; start < events.length; start += WELCOME_PAGE) {
     if (start) await turn();
-    for (const event of events.slice(start, start + WELCOME_PAGE)) texts.push(JSON.stringify(toWire(event)));
+    for (const event of events.slice(start, start + WELCOME_PAGE)) {
+      const text = JSON.stringify(toWire(event));
+      texts.push(text);
+      sizes.push(Buffer.byteLength(text));
+    }
   }
-  return { texts, ends: partEnds(texts.map((text) => Buffer.byteLength(text))) };
+  return { texts, ends: partEnds(sizes) };
 }
 
 // Every client of a trial gets the same batch: serialise it once, not once per client.
