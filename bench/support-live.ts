@@ -246,14 +246,19 @@ export async function startLiveBench({
     heard,
     wizardId: wizardUser.id,
     /**
-     * How many events the welcome of an observer's hello carries, once it has come. Counted in its text,
-     * not parsed: parsing a 10 MB welcome here would stall this process, the simulated robot's too.
+     * How many events the welcome of an observer's hello carries with its parts, once it has come. Counted
+     * in their text, not parsed: parsing a 10 MB log here would stall this process, the simulated robot's too.
      */
     async welcomeOf(trialId: string) {
       const ws = new WebSocket(url);
       await new Promise((ok) => (ws.onopen = ok));
-      const welcome = new Promise<string>((ok) => {
-        ws.onmessage = (m) => String(m.data).startsWith('{"type":"welcome"') && ok(String(m.data));
+      let events = 0;
+      const welcome = new Promise<void>((ok) => {
+        ws.onmessage = (m) => {
+          const text = String(m.data);
+          if (text.startsWith('{"type":"welcome')) events += text.split('"seq":').length - 1;
+          if (text.startsWith('{"type":"welcome"')) ok();
+        };
       });
       ws.send(
         JSON.stringify({
@@ -263,9 +268,9 @@ export async function startLiveBench({
           lastSeq: 0,
         }),
       );
-      const text = await welcome;
+      await welcome;
       ws.close();
-      return text.split('"seq":').length - 1;
+      return events;
     },
     runTrial,
     /** The runtime's resident memory now, in MiB. */

@@ -8,10 +8,9 @@ import { parseSecretReference, type SecretReference } from "@/core/robots/secret
 import type { Database } from "@/store/client";
 import { experiments, participants, robotStudies, robots, trials } from "@/store/schema";
 import type { TransportConfig } from "./transports";
+import { LIVE_STATUSES } from "@/core/trial/types";
 
 export type RobotRecord = typeof robots.$inferSelect;
-
-const LIVE = ["in_progress", "paused"] as const;
 
 /**
  * Where the robot's SSH secret is read (null: it has none), or why the record cannot be used: one saved
@@ -106,7 +105,7 @@ export async function robotOfTrial(
   const live = await db
     .select({ robot: trials.assignedRobotId })
     .from(trials)
-    .where(and(inArray(trials.status, [...LIVE]), ne(trials.id, trialId)));
+    .where(and(inArray(trials.status, [...LIVE_STATUSES]), ne(trials.id, trialId)));
   const held = new Set(live.map((l) => l.robot).filter((r) => r !== null));
   const preferred = robotPreference(available, robotId, held);
   if (!preferred.length)
@@ -153,7 +152,7 @@ export async function drivenByLiveTrial(db: Database, robotId: string): Promise<
   const [live] = await db
     .select({ id: trials.id })
     .from(trials)
-    .where(and(eq(trials.assignedRobotId, robotId), inArray(trials.status, [...LIVE])))
+    .where(and(eq(trials.assignedRobotId, robotId), inArray(trials.status, [...LIVE_STATUSES])))
     .limit(1);
   return !!live;
 }
@@ -176,7 +175,9 @@ export async function robotHeldBy(db: Database, robot: RobotRecord, trialId: str
     .from(trials)
     .innerJoin(experiments, eq(experiments.id, trials.experimentId))
     .leftJoin(participants, eq(participants.id, trials.participantId))
-    .where(and(eq(trials.assignedRobotId, robot.id), inArray(trials.status, [...LIVE]), ne(trials.id, trialId)));
+    .where(
+      and(eq(trials.assignedRobotId, robot.id), inArray(trials.status, [...LIVE_STATUSES]), ne(trials.id, trialId)),
+    );
   if (!holder) return null;
   return robotTaken(robot.name, describeTrial(holder, holder.studyId === self?.studyId));
 }

@@ -1,7 +1,7 @@
 // The runtime's robot for a trial: each action resolved through the plugin
 // (abstract or robot-specific), dispatched over the plugin's transport, and
 // its outcome reported back as the trial's action events. One path, no other.
-import { resolveAction, type Plugin } from "@/core/plugins";
+import { resolveAction, type Plugin, type Sent } from "@/core/plugins";
 import { droppedReason, olderThan, ROBOT_ACTION_FRESH_MS } from "@/core/trial/freshness";
 import type { Transport } from "@/robots/transports";
 import { logUnexpected } from "@/store/error-reference";
@@ -39,21 +39,28 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
       console.warn(`${plugin.name}: dropped ${request.actionType}: ${reason}`);
       return report({ kind: "not_sent", actionId: request.actionId, reason });
     }
-    // What goes on the wire, recorded with the dispatch: the exports show the message, not only the action.
-    const sent = transport.sends(resolved.action, resolved.parameters);
-    report({
-      kind: "dispatched",
-      actionId: request.actionId,
-      detail: { robotAction: resolved.action.id, ...(sent ? { sent } : {}) },
-    });
+    // What goes on the wire, recorded with the dispatch as the transport built it: the exports show the
+    // message, not only the action. Once, before its outcome, even when the transport refused it unbuilt.
+    let told = false;
+    const dispatched = (sent: Sent | null) => {
+      if (told) return;
+      told = true;
+      report({
+        kind: "dispatched",
+        actionId: request.actionId,
+        detail: { robotAction: resolved.action.id, ...(sent ? { sent } : {}) },
+      });
+    };
     const freshUntil = request.askedAt === undefined ? undefined : request.askedAt + ROBOT_ACTION_FRESH_MS;
     const outcome = await transport.dispatch(resolved.action, resolved.parameters, {
       freshUntil,
+      sending: dispatched,
       // Sent, outcome unknown: the robot's own later word on it is logged against it.
       later: (o) =>
         o.status === "completed" &&
         report({ kind: "completed", actionId: request.actionId, ...(o.detail ? { detail: o.detail } : {}) }),
     });
+    dispatched(null);
     if (outcome.status === "completed")
       report({ kind: "completed", actionId: request.actionId, ...(outcome.detail ? { detail: outcome.detail } : {}) });
     else if (outcome.status === "timed_out") report({ kind: "timed_out", actionId: request.actionId });

@@ -28,6 +28,8 @@ import {
   type Viewer,
 } from "@/core/socket/messages";
 import { beforeHelloRefusal, LARGEST_FRAME_BYTES, sizeRefusal } from "@/core/socket/limits";
+import { partEnds } from "@/core/socket/welcome";
+import { Outbox } from "./outbox";
 import { loadTrialAccess, spendToken } from "./access";
 import { carryOut } from "./carry-out";
 import { recordedRobot } from "./robot-status";
@@ -74,11 +76,13 @@ interface Connection {
   leaveDoor?: () => void;
   /** Its heartbeat: when it was last heard, and its page's clock offset (`pulse.clock`) for the command path. */
   pulse: Pulse;
+  /** Every message to it, in order (set as it opens). */
+  outbox?: Outbox;
 }
 
 type Socket = {
   data: Connection;
-  send(text: string): unknown;
+  send(text: string): number;
   close(code?: number, reason?: string): void;
   /** Bytes queued to this browser and not yet sent (Bun's ServerWebSocket). */
   getBufferedAmount(): number;
@@ -109,21 +113,37 @@ const SHUT_OUT = 4403;
 const TOO_BIG = 1009;
 /** A page that stopped pinging: the browser reconnects after it, if it is still there. */
 const GONE_SILENT = 4408;
+/** A page too far behind the trial ("try again later"): the browser reconnects and catches up from the log. */
+const FELL_BEHIND = 1013;
 
 /** Events written into a welcome's text at a time: a few milliseconds of work each. */
 const WELCOME_PAGE = 2000;
 
+const turn = () => new Promise((next) => setImmediate(next));
 /**
- * Events as the text of a JSON list, a page at a time: a long trial's welcome
- * is written without holding the event loop from the other trials' clients.
+ * A message's text with its empty events replaced by events' texts, each written once: the first `"events":[]`,
+ * as "events" comes before any name.
  */
-async function eventsJson(events: StoredEvent[]): Promise<string> {
-  const pages: string[] = [];
+const withEvents = (text: string, events: string[]) =>
+  text.replace('"events":[]', () => `"events":[${events.join(",")}]`);
+
+/**
+ * Each event's text, a page at a time, and where the welcome's parts end
+ * (src/core/socket/welcome.ts): a long trial's log is written without holding
+ * the event loop from the other trials' clients.
+ */
+async function welcomeParts(events: StoredEvent[]): Promise<{ texts: string[]; ends: number[] }> {
+  const texts: string[] = [];
+  const sizes: number[] = [];
   for (let start = 0; start < events.length; start += WELCOME_PAGE) {
-    if (start) await new Promise((next) => setImmediate(next));
-    pages.push(JSON.stringify(events.slice(start, start + WELCOME_PAGE).map(toWire)).slice(1, -1));
+    if (start) await turn();
+    for (const event of events.slice(start, start + WELCOME_PAGE)) {
+      const text = JSON.stringify(toWire(event));
+      texts.push(text);
+      sizes.push(Buffer.byteLength(text));
+    }
   }
-  return `[${pages.join(",")}]`;
+  return { texts, ends: partEnds(sizes) };
 }
 
 // Every client of a trial gets the same batch: serialise it once, not once per client.
@@ -165,7 +185,7 @@ export function startRuntimeServer({
 }: RuntimeOptions) {
   /** Admitted sockets by trial: presence, annotations and access changes reach them. */
   const viewers = new Map<string, Set<Socket>>();
-  const send = (ws: Socket, message: ServerMessage): void => void ws.send(JSON.stringify(message));
+  const send = (ws: Socket, message: ServerMessage): void => ws.data.outbox!.send(JSON.stringify(message));
   const presence = (trialId: string) => {
     const sockets = [...(viewers.get(trialId) ?? [])];
     const list: Viewer[] = sockets.map((s) => ({
@@ -189,6 +209,7 @@ export function startRuntimeServer({
     ws.data.stopCamera?.();
     ws.data.stopReplay?.();
     ws.data.releaseStop?.();
+    ws.data.outbox?.close();
     const trialId = ws.data.claims?.trialId;
     if (trialId && viewers.get(trialId)?.delete(ws)) presence(trialId);
   }
@@ -230,9 +251,14 @@ export function startRuntimeServer({
     const shown = mayReadTrialLog(ws.data.access) ? log : [];
     // Until the welcome is sent, what the trial logs meanwhile waits, in order, behind it.
     let held: StoredEvent[][] | null = [];
+    // Who may run the trial gets a batch at once (its ack follows it); the others a turn later, so a
+    // trial's many observers never stand between the wizard and the ack.
     const deliver = (events: StoredEvent[]) => {
       const now = ws.data.access!;
-      if (mayReadTrialLog(now)) ws.send(eventsMessage(events));
+      if (mayReadTrialLog(now)) {
+        if (mayRun(now)) ws.data.outbox!.send(eventsMessage(events));
+        else ws.data.outbox!.later(eventsMessage(events));
+      }
       // Follow the trial's status, so a log that becomes results stops flowing.
       const status = events.reduce((s, e) => STATUS_AFTER[e.type] ?? s, now.trial.status);
       if (status !== now.trial.status) ws.data.access = { ...now, trial: { ...now.trial, status } };
@@ -251,7 +277,14 @@ export function startRuntimeServer({
       if (mayRun(ws.data.access!)) ws.data.releaseStop ??= stops.hold(trialId);
     };
     ws.data.unsubscribe = host ? host.subscribe(push, follow) : relay.follow(trialId, seen, push);
-    const events = await eventsJson(shown);
+    const { texts, ends } = await welcomeParts(shown);
+    if (ws.data.closed) return;
+    const parts: string[] = [];
+    for (const [part, end] of ends.slice(0, -1).entries()) {
+      if (part) await turn();
+      const empty = JSON.stringify({ type: "welcome.part", part, events: [] } satisfies ServerMessage);
+      parts.push(withEvents(empty, texts.slice(ends[part - 1] ?? 0, end)));
+    }
     if (ws.data.closed) return;
     const now = ws.data.access;
     const welcome = JSON.stringify({
@@ -261,12 +294,12 @@ export function startRuntimeServer({
       role: now.studyRole!,
       mayRun: mayRun(now),
       events: [],
+      parts: parts.length,
       viewers: presence(trialId),
       peerId: ws.data.peerId,
       iceServers,
     } satisfies ServerMessage);
-    // The events' text goes where the empty list is: the first one, as "events" comes before any name.
-    ws.send(welcome.replace('"events":[]', () => `"events":${events}`));
+    ws.data.outbox!.parts([...parts, withEvents(welcome, texts.slice(ends.at(-2) ?? 0))]);
     for (const events of held) deliver(events);
     held = null;
     if (!host) {
@@ -280,7 +313,8 @@ export function startRuntimeServer({
       // The robot's camera, to whoever may follow the trial now, as fast as their connection takes it.
       ws.data.stopCamera = host.watchCamera((frame) => {
         if (ws.data.closed || !mayReadTrialLog(ws.data.access!)) return;
-        if (ws.getBufferedAmount() < CAMERA_BACKLOG_BYTES) ws.send(cameraMessage(frame));
+        if (ws.data.outbox!.idle && ws.getBufferedAmount() < CAMERA_BACKLOG_BYTES)
+          ws.data.outbox!.send(cameraMessage(frame));
       });
     }
   }
@@ -523,6 +557,10 @@ export function startRuntimeServer({
       // Bun reads a whole frame before handing it over: nothing larger than the largest message is read.
       maxPayloadLength: LARGEST_FRAME_BYTES,
       open(ws) {
+        ws.data.outbox = new Outbox(
+          (text) => ws.send(text),
+          () => shut(ws, FELL_BEHIND, "This page fell too far behind the trial: it reconnects and catches up."),
+        );
         ws.data.leaveDoor = door.enter(ws.data.address, (code, reason) => shut(ws, code, reason)) ?? undefined;
       },
       async message(ws, raw): Promise<void> {
@@ -539,6 +577,10 @@ export function startRuntimeServer({
             reason: `The server could not store that; nothing was changed. Try again (reference ${ref}).`,
           });
         }
+      },
+      // The browser's buffer has room again: what waits for it goes on.
+      drain(ws) {
+        ws.data.outbox?.drain();
       },
       close(ws) {
         release(ws);

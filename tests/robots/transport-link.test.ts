@@ -53,7 +53,6 @@ describe("shared transport plumbing", () => {
     class Probe extends LinkedTransport {
       connect = async () => this.setState("connected");
       dispatch = async () => ({ status: "completed" as const });
-      sends = () => null;
       close = async () => this.setState("closed");
       lose = () => this.setState("disconnected");
     }

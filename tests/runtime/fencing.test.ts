@@ -11,22 +11,21 @@ import { eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import type { StoredEvent } from "../../src/core/trial";
-import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
+import type { Simulator } from "../../src/robots/simulator";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/store/client";
 import { startEmbeddedPostgres, type EmbeddedDatabase } from "../../src/store/embedded";
 import { eventsSince } from "../../src/store/event-store";
 import { migrateDatabase } from "../../src/store/migrate";
-import { robotStudies, robots, studies, studyMembers, trials } from "../../src/store/schema";
+import { studies, studyMembers, trials } from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
-import { firstPartyPlugin } from "../support/plugins";
+import { registerRobots } from "../support/robots";
 import { startRuntime } from "../support/runtime";
 import { scratchFolder } from "../support/scratch";
 import { connectTrial, type TrialSocket } from "../support/socket";
 import { trialOf } from "../support/trial-rows";
 
 const SECRET = "fencing-test-secret".padEnd(40, "x");
-const plugin = firstPartyPlugin("simulated.json");
 
 const snapshot: ProtocolSnapshot = {
   schemaVersion: 4,
@@ -68,12 +67,7 @@ beforeAll(async () => {
     people[role] = person.id;
     await db.insert(studyMembers).values({ studyId, userId: person.id, role });
   }
-  for (const name of ["Sim A", "Sim B"]) {
-    const sim = await startSimulator({ port: 0, nodes: simulatedRobot(plugin, { msPerChar: 0 }) });
-    const [robot] = await db.insert(robots).values({ name, simulated: true, rosbridgeUrl: sim.url }).returning();
-    await db.insert(robotStudies).values({ robotId: robot!.id, studyId });
-    sims.set(robot!.id, sim);
-  }
+  for (const robot of await registerRobots(db, studyId, ["Sim A", "Sim B"])) sims.set(robot.id, robot.sim);
   for (let i = 0; i < 2; i++) runtimes.push(await startRuntime(pg.url, SECRET));
 }, 120_000);
 

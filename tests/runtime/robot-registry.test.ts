@@ -16,7 +16,6 @@ import {
   experimentVersions,
   experiments,
   participants,
-  robotStudies,
   robots,
   studies,
   studyMembers,
@@ -25,6 +24,7 @@ import {
 import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { firstPartyPlugin } from "../support/plugins";
+import { registerRobots } from "../support/robots";
 import { startRuntime } from "../support/runtime";
 import { connectTrial, type TrialSocket } from "../support/socket";
 
@@ -95,11 +95,8 @@ beforeAll(async () => {
     await createAccount(db, { name: "Wizard", email: "w@example.org", password: "password-123", role: "researcher" })
   ).id;
   await db.insert(studyMembers).values({ studyId, userId: wizardId, role: "wizard" });
-  for (const [i, name] of ["Sim A", "Sim B"].entries()) {
-    const [robot] = await db.insert(robots).values({ name, simulated: true, rosbridgeUrl: sims[i]!.url }).returning();
-    robotIds[name] = robot!.id;
-    await db.insert(robotStudies).values({ robotId: robot!.id, studyId });
-  }
+  for (const robot of await registerRobots(db, studyId, ["Sim A", "Sim B"], (i) => sims[i]!))
+    robotIds[robot.name] = robot.id;
   // Registered, but not available to this study: never chosen for its trials.
   await db.insert(robots).values({ name: "Elsewhere", simulated: true, rosbridgeUrl: sims[0]!.url });
   runtime = await startRuntime(url, SECRET);

@@ -6,25 +6,16 @@ import { eq, inArray } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import { createAccount } from "../../src/server/auth/accounts";
-import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
+import type { Simulator } from "../../src/robots/simulator";
 import { createDatabase } from "../../src/store/client";
-import {
-  experimentVersions,
-  experiments,
-  robotStudies,
-  robots,
-  studies,
-  studyMembers,
-  trials,
-} from "../../src/store/schema";
+import { experimentVersions, experiments, studies, studyMembers, trials } from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
-import { firstPartyPlugin } from "../support/plugins";
+import { registerRobots } from "../support/robots";
 import { startRuntime } from "../support/runtime";
 import { connectTrial, type TrialSocket } from "../support/socket";
 
 const SECRET = "runtimes-together-test-secret".padEnd(40, "x");
-const plugin = firstPartyPlugin("simulated.json");
 const ROBOTS = 12;
 const TRIALS = 10;
 
@@ -92,13 +83,8 @@ beforeAll(async () => {
     await createAccount(db, { name: "Wizard", email: "w@example.org", password: "password-123", role: "researcher" })
   ).id;
   await db.insert(studyMembers).values({ studyId, userId: wizardId, role: "wizard" });
-  for (let i = 0; i < ROBOTS; i++) {
-    const sim = await startSimulator({ port: 0, nodes: simulatedRobot(plugin, { msPerChar: 0 }) });
-    const name = `Sim ${String(i).padStart(2, "0")}`;
-    const [robot] = await db.insert(robots).values({ name, simulated: true, rosbridgeUrl: sim.url }).returning();
-    await db.insert(robotStudies).values({ robotId: robot!.id, studyId });
-    sims.set(robot!.id, sim);
-  }
+  const names = Array.from({ length: ROBOTS }, (_, i) => `Sim ${String(i).padStart(2, "0")}`);
+  for (const robot of await registerRobots(db, studyId, names)) sims.set(robot.id, robot.sim);
   for (let i = 0; i < 2; i++) runtimes.push(await startRuntime(url, SECRET));
 }, 120_000);
 

@@ -2,6 +2,7 @@
 // protocol, checking every message the runtime sends as the browser does.
 import WebSocket from "ws";
 import { parseServerMessage, SOCKET_MESSAGES_VERSION, type ServerMessage } from "../../src/core/socket/messages";
+import { welcomeJoiner } from "../../src/core/socket/welcome";
 
 export interface TrialSocket {
   messages: Array<Record<string, unknown>>;
@@ -21,13 +22,18 @@ export async function connectTrial(url: string, token: string, lastSeq = 0): Pro
   const messages: Array<Record<string, unknown>> = [];
   const waiters = new Set<() => void>();
   const listeners = new Set<(m: ServerMessage) => void>();
+  const join = welcomeJoiner();
   ws.on("message", (data) => {
     const parsed = parseServerMessage(String(data));
     // Thrown here, it fails the test that received it as an unhandled error.
     if (!parsed.ok)
       throw new Error(`The runtime sent a message the browser would refuse: ${parsed.reason}\n${String(data)}`);
-    messages.push(parsed.message);
-    for (const listen of listeners) listen(parsed.message);
+    // As the page does: a welcome's parts held, and joined into it.
+    const joined = join(parsed.message);
+    if (!joined.ok) throw new Error(`The runtime's welcome did not join: ${joined.reason}`);
+    if (!joined.message) return;
+    messages.push(joined.message);
+    for (const listen of listeners) listen(joined.message);
     for (const w of [...waiters]) w();
   });
   await new Promise<void>((ok, fail) => {

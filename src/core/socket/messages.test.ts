@@ -88,6 +88,7 @@ const welcome = (events: unknown[], version: number = SOCKET_MESSAGES_VERSION) =
     role: "wizard",
     mayRun: true,
     events,
+    parts: 0,
     viewers: [],
     peerId: "p1",
     iceServers: [],
@@ -97,6 +98,7 @@ describe("the browser's check of what the runtime sends", () => {
   it.each<[string, string, string | null]>([
     ["a welcome with the log", welcome([toWire(stored)]), null],
     ["a batch of events", JSON.stringify({ type: "events", events: [toWire(stored)] }), null],
+    ["a part of a welcome", JSON.stringify({ type: "welcome.part", part: 0, events: [toWire(stored)] }), null],
     ["an ack", JSON.stringify({ type: "ack", requestId: "r1", seqs: [2, 3] }), null],
     ["a rejection of no request", JSON.stringify({ type: "rejected", requestId: null, reason: "No." }), null],
     ["the robot's status", JSON.stringify({ type: "robot", connected: false, detail: "unplugged" }), null],

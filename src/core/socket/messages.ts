@@ -16,7 +16,8 @@ import type { StoredEvent } from "@/core/trial";
 // own "ping" asks a quiet page to ping at once.
 // Also 5: the wizard's "go_on" command ends a pending "Wait for" (src/core/trial/waits.ts).
 // Also 5: a "command" carries `at`, the page's clock when the wizard asked (src/core/trial/freshness.ts).
-export const SOCKET_MESSAGES_VERSION = 5;
+// 6: a long log comes ahead of its "welcome" in "welcome.part" messages; the welcome says how many (welcome.ts).
+export const SOCKET_MESSAGES_VERSION = 6;
 
 /** Every id a message carries is declared with this, so tests can find them all. */
 export const id = z.string().min(1).max(100);
@@ -156,8 +157,10 @@ const iceServer = z.object({
 });
 
 export const serverMessageSchema = z.discriminatedUnion("type", [
-  // `events` is empty unless the caller may read the log (see mayReadTrialLog);
-  // `mayRun`: whether this caller may command this trial now.
+  // The log ahead of its welcome, in parts numbered from 0 (src/core/socket/welcome.ts).
+  z.object({ type: z.literal("welcome.part"), part: z.number().int().min(0), events: z.array(wireEvent) }),
+  // `events` is empty unless the caller may read the log (see mayReadTrialLog): its last part, after
+  // `parts` "welcome.part" messages; `mayRun`: whether this caller may command this trial now.
   z.object({
     type: z.literal("welcome"),
     version: z.literal(SOCKET_MESSAGES_VERSION),
@@ -165,6 +168,7 @@ export const serverMessageSchema = z.discriminatedUnion("type", [
     role: z.string(),
     mayRun: z.boolean(),
     events: z.array(wireEvent),
+    parts: z.number().int().min(0),
     viewers: z.array(viewer),
     /** This connection, as the others see it in `viewers`. */
     peerId: z.string(),

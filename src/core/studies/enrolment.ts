@@ -1,5 +1,7 @@
 // Who took part in each condition, counted from the participants' and trials'
 // rows as they stand: the methods text's "n per condition".
+import type { TrialStatus } from "@/core/trial/types";
+
 export interface EnrolledParticipant {
   id: string;
   consentStatus: "pending" | "given" | "declined" | "withdrawn";
@@ -11,7 +13,7 @@ export interface RunTrial {
   id: string;
   participantId: string;
   experimentId: string;
-  status: "scheduled" | "in_progress" | "paused" | "completed" | "aborted";
+  status: TrialStatus;
 }
 
 export interface Enrolment {

@@ -22,6 +22,11 @@ export const DEVIATION_KINDS = ["skipped", "out_of_order", "unscripted", "manual
 export type DeviationKind = (typeof DEVIATION_KINDS)[number];
 
 export const TRIAL_STATUSES = ["scheduled", "in_progress", "paused", "completed", "aborted"] as const;
+export type TrialStatus = (typeof TRIAL_STATUSES)[number];
+/** A live trial: started and not ended; its robot is taken. */
+export const LIVE_STATUSES = ["in_progress", "paused"] as const satisfies readonly TrialStatus[];
+/** A trial not ended: scheduled or live. */
+export const OPEN_STATUSES = ["scheduled", ...LIVE_STATUSES] as const satisfies readonly TrialStatus[];
 
 export type EventBody =
   | { type: "trial.started" }
@@ -149,7 +154,7 @@ export interface ActionState {
 }
 
 export interface TrialState {
-  status: (typeof TRIAL_STATUSES)[number];
+  status: TrialStatus;
   emergencyStopped: boolean;
   currentStepId: string | null;
   /** Scripted and unscripted actions by id. */

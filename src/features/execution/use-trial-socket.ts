@@ -18,6 +18,7 @@ import {
   type WireEvent,
   type WizardCommand,
 } from "@/core/socket/messages";
+import { welcomeJoiner } from "@/core/socket/welcome";
 import { useTRPC } from "@/lib/trpc";
 import type { LiveRobotState } from "@/core/robots/live-state";
 import type { RuntimeState } from "@/core/trial/connections";
@@ -91,6 +92,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
       }
       const ws = new WebSocket(ticket.url);
       socket.current = ws;
+      const join = welcomeJoiner();
       ws.onopen = () =>
         ws.send(
           JSON.stringify({
@@ -104,8 +106,12 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         const parsed = parseServerMessage(String(message.data));
         // A server of another version (the page outlived an upgrade) or a broken message: say so rather than fold it.
         if (!parsed.ok) return setNotice(`${parsed.reason} Reload the page.`);
-        const m = parsed.message;
-        heartbeat?.heard(m);
+        heartbeat?.heard(parsed.message);
+        // A long log comes in parts ahead of the welcome: held until it, then the welcome carries it all.
+        const joined = join(parsed.message);
+        if (!joined.ok) return setNotice(`${joined.reason} Reload the page.`);
+        const m = joined.message;
+        if (!m) return;
         if (m.type === "welcome") {
           retry = 500;
           setRuntime("live");

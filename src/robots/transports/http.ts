@@ -2,10 +2,10 @@
 // built from its templates; 2xx is completed, anything else failed with the
 // robot's answer, no answer within the plugin's timeout timed out. The API's
 // base URL is probed as a heartbeat, so a robot gone away is reported at once.
-import { httpRequest, type HttpRequest, type PluginAction, type Sent } from "../../core/plugins";
+import { httpRequest, type HttpRequest, type PluginAction } from "../../core/plugins";
 import { linkProblem } from "../../core/robots/link-problem";
 import { addressProblem, checkedParameters, LinkedTransport, timeoutOf, untilDeadline } from "./link";
-import type { DispatchOutcome } from "./transport";
+import type { DispatchOptions, DispatchOutcome } from "./transport";
 
 export interface HttpOptions {
   baseUrl: string;
@@ -25,11 +25,20 @@ export class HttpTransport extends LinkedTransport {
     this.heartbeat ??= setInterval(() => void this.probe(), this.options.heartbeatEveryMs ?? 2000);
   }
 
-  async dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome> {
+  async dispatch(
+    action: PluginAction,
+    parameters: Record<string, unknown>,
+    options: DispatchOptions = {},
+  ): Promise<DispatchOutcome> {
     const started = Date.now();
     const checked = checkedParameters(action, parameters);
     if (!checked.ok) return checked.outcome;
     const request = this.request(action, checked.parameters);
+    options.sending?.(
+      request.ok
+        ? { via: "http", method: request.method, url: request.url, ...(request.body ? { body: request.body } : {}) }
+        : null,
+    );
     if (!request.ok) return { status: "failed", reason: request.reason };
     const deadline = started + timeoutOf(action);
     const send = () =>
@@ -66,13 +75,6 @@ export class HttpTransport extends LinkedTransport {
       this.setState("disconnected", linkProblem(error));
       return { status: "failed", reason: `the robot's API did not answer: ${linkProblem(error)}` };
     }
-  }
-
-  sends(action: PluginAction, parameters: Record<string, unknown>): Sent | null {
-    const checked = checkedParameters(action, parameters);
-    const request = checked.ok ? this.request(action, checked.parameters) : null;
-    if (!request?.ok) return null;
-    return { via: "http", method: request.method, url: request.url, ...(request.body ? { body: request.body } : {}) };
   }
 
   private request(action: PluginAction, parameters: Record<string, unknown>): HttpRequest {

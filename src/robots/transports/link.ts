@@ -2,7 +2,7 @@
 // listeners told of each change, the check of an action's parameters against
 // the plugin's schema, its timeout, and the growing pause between tries. A
 // transport adds only how it reaches its robot.
-import { validateParameters, withDefaults, type PluginAction, type Sent } from "../../core/plugins";
+import { validateParameters, withDefaults, type PluginAction } from "../../core/plugins";
 import type { ConnectionState, DispatchOptions, DispatchOutcome, Health, Transport } from "./transport";
 
 export const DEFAULT_TIMEOUT_MS = 10_000;
@@ -82,7 +82,6 @@ export abstract class LinkedTransport implements Transport {
     parameters: Record<string, unknown>,
     options?: DispatchOptions,
   ): Promise<DispatchOutcome>;
-  abstract sends(action: PluginAction, parameters: Record<string, unknown>): Sent | null;
   abstract close(): Promise<void>;
 
   /** Robot state comes over rosbridge; the other transports carry commands only. */

@@ -34,7 +34,6 @@ import {
   type Outgoing,
   type Plugin,
   type PluginAction,
-  type Sent,
 } from "../../core/plugins";
 import { linkProblem } from "../../core/robots/link-problem";
 import { refusalOf, refusedAdvertise, type WatchedTopic } from "../../core/robots/silent-topics";
@@ -122,6 +121,7 @@ export class RosbridgeTransport extends LinkedTransport {
     const checked = checkedParameters(action, parameters);
     if (!checked.ok) return checked.outcome;
     const outgoing = outgoingFor(action, checked.parameters, this.options.plugin);
+    options.sending?.(sentOverRos(outgoing));
     if (outgoing.kind === "none") return { status: "failed", reason: outgoing.reason };
     if (outgoing.kind === "ssh")
       return { status: "failed", reason: `action "${action.id}" runs over SSH, not rosbridge` };
@@ -147,11 +147,6 @@ export class RosbridgeTransport extends LinkedTransport {
     if (outgoing.kind === "motion")
       return holdThenStop((m) => this.publish(outgoing.topic, outgoing.messageType, m), outgoing);
     return this.call(ros, outgoing.service, outgoing.serviceType, outgoing.args, started + timeoutMs);
-  }
-
-  sends(action: PluginAction, parameters: Record<string, unknown>): Sent | null {
-    const checked = checkedParameters(action, parameters);
-    return checked.ok ? sentOverRos(outgoingFor(action, checked.parameters, this.options.plugin)) : null;
   }
 
   /** A topic publish, completed as its rule says: a matching done message, an estimated duration, or only delivered. */

@@ -33,10 +33,6 @@ export class RoutedTransport implements Transport {
     return (isSshCommand(action) ? this.ssh! : this.primary).dispatch(action, parameters, options);
   }
 
-  sends(action: PluginAction, parameters: Record<string, unknown>) {
-    return (isSshCommand(action) ? this.ssh : this.primary)?.sends(action, parameters) ?? null;
-  }
-
   subscribe(...args: Parameters<Transport["subscribe"]>) {
     return this.primary.subscribe(...args);
   }

@@ -4,7 +4,7 @@
 import { readFileSync } from "node:fs";
 import { Client, utils, type ConnectConfig } from "ssh2";
 import { linkProblem } from "../../core/robots/link-problem";
-import { outgoingFor, shellCommand, type PluginAction, type Sent } from "../../core/plugins";
+import { outgoingFor, shellCommand, type PluginAction } from "../../core/plugins";
 import {
   backoffDelay,
   checkedParameters,
@@ -15,7 +15,7 @@ import {
   untilDeadline,
   type Backoff,
 } from "./link";
-import type { DispatchOutcome } from "./transport";
+import type { DispatchOptions, DispatchOutcome } from "./transport";
 
 export interface SshOptions {
   host: string;
@@ -51,11 +51,16 @@ export class SshTransport extends LinkedTransport {
     });
   }
 
-  async dispatch(action: PluginAction, parameters: Record<string, unknown>): Promise<DispatchOutcome> {
+  async dispatch(
+    action: PluginAction,
+    parameters: Record<string, unknown>,
+    options: DispatchOptions = {},
+  ): Promise<DispatchOutcome> {
     const started = Date.now();
     const checked = checkedParameters(action, parameters);
     if (!checked.ok) return checked.outcome;
     const built = commandOf(action, checked.parameters);
+    options.sending?.(built.ok ? { via: "ssh", command: built.command } : null);
     if (!built.ok) return { status: "failed", reason: built.reason };
     const timeoutMs = timeoutOf(action);
     const usable = this.settings();
@@ -67,12 +72,6 @@ export class SshTransport extends LinkedTransport {
       return unreached(action, started, `cannot reach the robot over SSH: ${this.status.reason ?? "no answer"}`);
     // The timeout is the command's: a slow first handshake does not eat into it.
     return this.run(client, built.command, timeoutMs, Date.now());
-  }
-
-  sends(action: PluginAction, parameters: Record<string, unknown>): Sent | null {
-    const checked = checkedParameters(action, parameters);
-    const built = checked.ok ? commandOf(action, checked.parameters) : null;
-    return built?.ok ? { via: "ssh", command: built.command } : null;
   }
 
   async close() {

@@ -20,6 +20,11 @@ export interface DispatchOptions {
   freshUntil?: number;
   /** After an outcome "unknown": the robot's own later word on it (its done message, once the link is back). */
   later?: (outcome: DispatchOutcome) => void;
+  /**
+   * What dispatch puts on the wire, told as it is built (before any wait for the link), so the record is the
+   * message sent, built once: null when the action sends nothing. Not told when it is refused before that.
+   */
+  sending?: (sent: Sent | null) => void;
 }
 
 export type ConnectionState = "connecting" | "connected" | "disconnected" | "closed";
@@ -46,8 +51,6 @@ export interface Transport {
     parameters: Record<string, unknown>,
     options?: DispatchOptions,
   ): Promise<DispatchOutcome>;
-  /** What dispatch puts on the wire for this action, built as dispatch builds it; null if it sends nothing. */
-  sends(action: PluginAction, parameters: Record<string, unknown>): Sent | null;
   /** Robot state for logging; kept across reconnects. Returns a function that stops it. */
   subscribe(
     topic: string,

@@ -19,6 +19,7 @@ import { experimentVersions, experiments } from "./experiments";
 import { createdAt, id, snapshot } from "./columns";
 import { participants, studies } from "./studies";
 import { robots } from "./robots";
+import { LIVE_STATUSES, TRIAL_STATUSES } from "../../core/trial/types";
 
 export const trials = pgTable(
   "trials",
@@ -35,9 +36,7 @@ export const trials = pgTable(
     rehearsalSnapshot: snapshot("rehearsal_snapshot"),
     participantId: text("participant_id").references(() => participants.id, { onDelete: "restrict" }),
     wizardId: text("wizard_id").references(() => user.id, { onDelete: "set null" }),
-    status: text("status", { enum: ["scheduled", "in_progress", "paused", "completed", "aborted"] })
-      .notNull()
-      .default("scheduled"),
+    status: text("status", { enum: TRIAL_STATUSES }).notNull().default("scheduled"),
     isRehearsal: boolean("is_rehearsal").notNull().default(false),
     // The registered robot the trial drives: chosen when it is created or first opened, changeable until it starts.
     assignedRobotId: text("assigned_robot_id").references(() => robots.id, { onDelete: "set null" }),
@@ -57,7 +56,9 @@ export const trials = pgTable(
     index("trials_wizard_idx").on(t.wizardId),
     index("trials_robot_idx").on(t.assignedRobotId),
     // One robot is never driven by two live trials, whichever runtime process runs them.
-    uniqueIndex("trials_live_robot_idx").on(t.assignedRobotId).where(sql`${t.status} in ('in_progress', 'paused')`),
+    uniqueIndex("trials_live_robot_idx")
+      .on(t.assignedRobotId)
+      .where(sql`${t.status} in ${sql.raw(`(${LIVE_STATUSES.map((s) => `'${s}'`).join(", ")})`)}`),
   ],
 );
 

@@ -5,6 +5,7 @@ import { and, desc, eq, inArray } from "drizzle-orm";
 import { alias } from "drizzle-orm/pg-core";
 import { BLINDED_NAME, blindingFor } from "@/core/studies/blinding";
 import { readSettings, shownTitle } from "@/core/studies/settings";
+import { LIVE_STATUSES } from "@/core/trial/types";
 import { experiments, participants, studies, studyMembers, trials, user } from "@/store/schema";
 import { guarded } from "../trpc";
 
@@ -32,7 +33,7 @@ export const liveNow = guarded("account.read").query(async ({ ctx }) => {
     .innerJoin(experiments, eq(experiments.id, trials.experimentId))
     .leftJoin(participants, eq(participants.id, trials.participantId))
     .leftJoin(wizard, eq(wizard.id, trials.wizardId))
-    .where(inArray(trials.status, ["in_progress", "paused"]))
+    .where(inArray(trials.status, [...LIVE_STATUSES]))
     .orderBy(desc(trials.t0));
   return rows.map(({ settings, studyStatus, role, ...row }) => {
     const read = readSettings(settings);

@@ -7,6 +7,7 @@ import { TRPCError } from "@trpc/server";
 import { and, asc, eq, inArray } from "drizzle-orm";
 import { z } from "zod";
 import { parseSecretReference, robotSecretNames } from "@/core/robots/secrets";
+import { LIVE_STATUSES } from "@/core/trial/types";
 import { robotStudies, robots, studies, trialEvents, trials } from "@/store/schema";
 import { audit } from "../../audit";
 import { guarded, router } from "../trpc";
@@ -84,7 +85,7 @@ export const robotsRouter = router({
     const live = await ctx.db
       .select({ robotId: trials.assignedRobotId, trialId: trials.id })
       .from(trials)
-      .where(inArray(trials.status, ["in_progress", "paused"]));
+      .where(inArray(trials.status, [...LIVE_STATUSES]));
     const driven = new Set(live.map((l) => l.robotId));
     const reported = live.length
       ? await ctx.db
@@ -159,7 +160,7 @@ export const robotsRouter = router({
       const [driving] = await ctx.db
         .select({ id: trials.id })
         .from(trials)
-        .where(and(eq(trials.assignedRobotId, input.robotId), inArray(trials.status, ["in_progress", "paused"])));
+        .where(and(eq(trials.assignedRobotId, input.robotId), inArray(trials.status, [...LIVE_STATUSES])));
       if (driving)
         throw new TRPCError({
           code: "CONFLICT",

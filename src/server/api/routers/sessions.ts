@@ -8,6 +8,7 @@ import { z } from "zod";
 import { runsAssigned, studyRoleMay } from "@/core/access/policy";
 import { blindingFor } from "@/core/studies/blinding";
 import { readSettings, shownTitle } from "@/core/studies/settings";
+import { OPEN_STATUSES } from "@/core/trial/types";
 import {
   conditions,
   experimentVersions,
@@ -126,7 +127,7 @@ export const sessionsRouter = router({
       .where(
         and(
           eq(sessions.wizardId, ctx.user.id),
-          or(isNull(sessions.trialId), inArray(trials.status, ["scheduled", "in_progress", "paused"])),
+          or(isNull(sessions.trialId), inArray(trials.status, [...OPEN_STATUSES])),
         ),
       )
       .orderBy(asc(sessions.plannedAt));
