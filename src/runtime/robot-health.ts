@@ -40,6 +40,7 @@ export function withHealth(
     onConnection: (listener) => link.onConnection(listener),
     onProblem: (listener) => link.onProblem(listener),
     watchCamera: (listener) => link.watchCamera(listener),
+    watchSenses: (listener) => link.watchSenses(listener),
     watchState(listener) {
       const stops = [link.watchState(listener), ...(moreState ? [moreState(listener)] : [])];
       return () => stops.forEach((stop) => stop());

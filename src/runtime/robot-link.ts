@@ -6,6 +6,7 @@ import { droppedReason, olderThan, ROBOT_ACTION_FRESH_MS } from "@/core/trial/fr
 import type { Transport } from "@/robots/transports";
 import { logUnexpected } from "@/store/error-reference";
 import type { CameraFrame, RobotLink, RobotReport, RobotRequest } from "./robot";
+import { watchSenses } from "./robot-senses";
 
 /** 5 frames a second unless the plugin says otherwise: what a lab's network holds for several watchers. */
 const CAMERA_THROTTLE_MS = 200;
@@ -111,6 +112,7 @@ export function pluginRobot(plugin: Plugin, transport: Transport): RobotLink {
       );
       return () => stops.forEach((stop) => stop());
     },
+    watchSenses: (listener) => watchSenses(transport, plugin, listener),
     watchCamera(listener) {
       const { camera } = plugin;
       if (!camera) return () => {};
@@ -142,6 +144,7 @@ export function unavailableRobot(reason: string): RobotLink {
     onProblem() {},
     watchState: () => () => {},
     watchCamera: () => () => {},
+    watchSenses: () => () => {},
     close() {},
   };
 }

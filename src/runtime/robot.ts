@@ -1,6 +1,7 @@
 // The trial runtime's view of a robot: perform an action and report back
 // through the same commands a wizard's reports would use. Transports (issue:
 // robots) implement it; nothing else in the runtime knows which is live.
+import type { Sensed } from "@/core/plugins/types";
 export interface RobotRequest {
   actionId: string;
   actionType: string;
@@ -33,6 +34,8 @@ export interface RobotLink {
   watchState(listener: (topic: string, message: unknown) => void): () => void;
   /** The robot's camera frames (the plugin's `camera`), base64, at its throttle; returns a function that stops them. */
   watchCamera(listener: (frame: CameraFrame) => void): () => void;
+  /** Each event the plugin says the robot senses, as it happens (./robot-senses.ts); returns a function that stops them. */
+  watchSenses(listener: (sensed: Sensed) => void): () => void;
   onConnection(listener: (connected: boolean, detail?: string) => void): void;
   /** An error or warning the robot's side reported (a refused subscription, a bridge's status frame): the trial logs it. */
   onProblem(listener: (problem: string) => void): void;

@@ -32,6 +32,7 @@ function timekeeperRobot(): RobotLink {
     onProblem() {},
     watchState: () => () => {},
     watchCamera: () => () => {},
+    watchSenses: () => () => {},
     close() {},
   };
 }

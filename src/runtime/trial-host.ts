@@ -163,6 +163,7 @@ export class TrialHost {
   private readonly browserPlays = new Set<string>();
   private readonly samples;
   private readonly stopWatching: () => void;
+  private readonly stopSensing: () => void;
   /** The trial's t0, once started: samples are timed from it. */
   private t0: number | null;
   /** The log as read to open the trial, kept up to date, until the hello that opened it takes it. */
@@ -209,6 +210,11 @@ export class TrialHost {
       if (next === this.live) return;
       this.live = next;
       for (const listener of this.liveListeners) listener(next);
+    });
+    // What the robot senses moves a waiting trial; before the start and after the end it is not the trial's.
+    this.stopSensing = robot.watchSenses((sensed) => {
+      const live = this.state.status === "in_progress" || this.state.status === "paused";
+      if (live && !this.shut) void this.sensed(sensed);
     });
   }
 
@@ -625,6 +631,7 @@ export class TrialHost {
     for (const t of this.timers) clearTimeout(t);
     this.limits.close();
     this.stopWatching();
+    this.stopSensing();
     this.stopCamera?.();
     this.stopCamera = null;
     this.cameraWatchers.clear();
