@@ -97,7 +97,7 @@ export async function startLiveBench() {
     .values({ studyId: study!.id, name: "Bench", robotId: "nao6-ros2" })
     .returning();
   const snapshot = {
-    schemaVersion: 3 as const,
+    schemaVersion: 4 as const,
     experiment: { id: experiment!.id, name: "Bench", description: "", robotId: "nao6-ros2" },
     steps: [{ id: "s", name: "S", description: "", actions: [] }],
   };

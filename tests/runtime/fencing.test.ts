@@ -29,7 +29,7 @@ const SECRET = "fencing-test-secret".padEnd(40, "x");
 const plugin = firstPartyPlugin("simulated.json");
 
 const snapshot: ProtocolSnapshot = {
-  schemaVersion: 3,
+  schemaVersion: 4,
   experiment: { id: "e", name: "Lines", description: "", robotId: "simulated" },
   steps: [
     {

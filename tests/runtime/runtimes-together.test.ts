@@ -29,7 +29,7 @@ const ROBOTS = 12;
 const TRIALS = 10;
 
 const saying = (text: string): ProtocolSnapshot => ({
-  schemaVersion: 3,
+  schemaVersion: 4,
   experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
   steps: [
     {

@@ -24,7 +24,7 @@ const SECRET = "stop-without-database-secret".padEnd(40, "x");
 const plugin = firstPartyPlugin("simulated.json");
 
 const protocol: ProtocolSnapshot = {
-  schemaVersion: 3,
+  schemaVersion: 4,
   experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
   steps: [
     {

@@ -22,7 +22,7 @@ import { trialOf } from "../support/trial-rows";
 const SECRET = "timers-test-secret".padEnd(40, "x");
 
 const protocol: ProtocolSnapshot = {
-  schemaVersion: 3,
+  schemaVersion: 4,
   experiment: { id: "e", name: "Timed", description: "", robotId: "simulated" },
   steps: [
     {

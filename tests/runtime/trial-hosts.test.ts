@@ -17,7 +17,7 @@ import { firstPartyPlugin } from "../support/plugins";
 const plugin = firstPartyPlugin("simulated.json");
 
 const protocol: ProtocolSnapshot = {
-  schemaVersion: 3,
+  schemaVersion: 4,
   experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
   steps: [
     {

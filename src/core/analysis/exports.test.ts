@@ -123,7 +123,7 @@ describe("the trial record", () => {
       trialRecordJson(
         {
           trial: {},
-          protocol: { schemaVersion: 3, experiment: {} as never, steps: [] },
+          protocol: { schemaVersion: 4, experiment: {} as never, steps: [] },
           events,
           annotations: [],
           codes: [],
@@ -145,7 +145,7 @@ describe("the trial record and events CSV written a batch at a time", () => {
   const record = {
     trial: { id: "t1", note: 'a "quoted"\n  "events": [] line', gone: undefined, at: new Date(0) },
     protocol: {
-      schemaVersion: 3 as const,
+      schemaVersion: 4 as const,
       experiment: {} as never,
       steps: [{ id: "s1", name: "Welcome", description: "", actions: [] }],
     },
@@ -193,7 +193,7 @@ describe("the trial record and events CSV written a batch at a time", () => {
     // What the paged writer must match: the whole record in one JSON.stringify, events after the protocol.
     const expected = JSON.stringify(
       {
-        schemaVersion: 3,
+        schemaVersion: 4,
         trial: record.trial,
         protocol: record.protocol,
         events: namedEvents([...all], names),

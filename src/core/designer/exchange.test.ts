@@ -182,6 +182,56 @@ describe("exporting and importing an experiment", () => {
     expect(again.steps[0]!.actions[0]!.timeLimit).toEqual({ seconds: 10, after: { to: "end" } });
   });
 
+  it("keeps each condition's variant of an action and of a step, under the condition's name", () => {
+    const draft: DesignDraft = {
+      name: "Tutor",
+      description: "",
+      robotId: "nao6-ros2",
+      steps: [
+        {
+          id: "u1",
+          name: "Feedback",
+          description: "",
+          after: { to: "next" },
+          actions: [
+            {
+              id: "a1",
+              type: "say",
+              name: "",
+              parameters: { text: "Well done." },
+              parallelGroup: null,
+              variants: { "Warm tutor": { parameters: { text: "Well done, you are great!" } } },
+            },
+          ],
+          variants: {
+            Gestures: {
+              actions: [
+                { id: "a2", type: "wave", name: "", parameters: {}, parallelGroup: "g" },
+                { id: "a3", type: "say", name: "", parameters: { text: "Well done." }, parallelGroup: "g" },
+              ],
+            },
+          },
+        },
+      ],
+    };
+    const text = exportExperiment(draft);
+    const file = JSON.parse(text);
+    expect(file.steps[0].actions[0].variants).toEqual({
+      "Warm tutor": { parameters: { text: "Well done, you are great!" } },
+    });
+    expect(file.steps[0].variants.Gestures.actions.map((a: { runTogether?: string }) => a.runTogether)).toEqual([
+      "group-1",
+      "group-1",
+    ]);
+    const again = imported(text);
+    expect(exportExperiment(again)).toBe(text);
+    // Fresh ids for the variant's actions, and for their run-together group (new-4).
+    expect(again.steps[0]!.variants!.Gestures!.actions.map((a) => [a.id, a.parallelGroup])).toEqual([
+      ["new-3", "new-4"],
+      ["new-5", "new-4"],
+    ]);
+  });
+
   it("reads a version 1 file, whose steps each go on to the next", () => {
     const file = JSON.parse(exportExperiment(storyteller));
     file.formatVersion = 1;
@@ -227,7 +277,7 @@ describe("exporting and importing an experiment", () => {
       [
         "{",
         '  "format": "hristudio.experiment",',
-        '  "formatVersion": 3,',
+        '  "formatVersion": 4,',
         '  "experiment": {',
         '    "name": "Tiny",',
         '    "description": "",',
@@ -343,10 +393,10 @@ describe("importing a bad file", () => {
     ],
     [
       "a newer format",
-      edit((f) => (f.formatVersion = 4)),
-      [["$.formatVersion", "is 4: the file comes from a newer HRIStudio"]],
+      edit((f) => (f.formatVersion = 5)),
+      [["$.formatVersion", "is 5: the file comes from a newer HRIStudio"]],
     ],
-    ["a version as text", edit((f) => (f.formatVersion = "1")), [["$.formatVersion", "must be 1 or 2 or 3"]]],
+    ["a version as text", edit((f) => (f.formatVersion = "1")), [["$.formatVersion", "must be 1 or 2 or 3 or 4"]]],
     ["no steps", edit((f) => delete f.steps), [["$.steps", "must be a list"]]],
     ["no experiment", edit((f) => delete f.experiment), [["$.experiment", "must be an object"]]],
     ["a blank robot", edit((f) => (f.experiment.robot = " ")), [["$.experiment.robot", "must be a non-empty string"]]],
@@ -429,6 +479,26 @@ describe("importing a bad file", () => {
         f.steps[2].actions[2].timeLimit = { seconds: 10 };
       }),
       [["$.steps[2].actions[2].timeLimit", "is not part of an experiment file"]],
+    ],
+    [
+      "a variant in a version 3 file, which had none",
+      edit((f) => {
+        f.formatVersion = 3;
+        f.steps[1].actions[0].variants = { Warm: { parameters: {} } };
+      }),
+      [["$.steps[1].actions[0].variants", "is not part of an experiment file"]],
+    ],
+    [
+      "variants under no name, with a field a variant has not, and a step's variant's action without a type",
+      edit((f) => {
+        f.steps[1].actions[0].variants = { " ": { parameters: {}, note: "x" } };
+        f.steps[1].variants = { Warm: { actions: [{ name: "x" }] } };
+      }),
+      [
+        ['$.steps[1].actions[0].variants[" "]', "must be under a condition's name"],
+        ['$.steps[1].actions[0].variants[" "].note', "is not part of an experiment file"],
+        ["$.steps[1].variants.Warm.actions[0].type", "must be a non-empty string"],
+      ],
     ],
     [
       "a branch to a missing step",

@@ -87,9 +87,10 @@ describe("an exchange file of an earlier format", () => {
   });
 
   it.each<[number, string, string[]]>([
-    [1, "step", ["after", "timeLimit"]],
-    [1, "action", ["timeLimit"]],
-    [2, "step", ["timeLimit"]],
+    [1, "step", ["after", "timeLimit", "variants"]],
+    [1, "action", ["timeLimit", "variants"]],
+    [2, "step", ["timeLimit", "variants"]],
+    [3, "action", ["variants"]],
     [DOCUMENT_VERSION, "step", []],
   ])("a file of version %i may not carry, in a %s: %j", (version, place, fields) => {
     expect(fieldsAfter(version, place as "step" | "action")).toEqual(fields);
