@@ -153,7 +153,7 @@ describe.sequential("a live trial in two browsers", () => {
       trialId,
     );
     expect(record).toMatchObject({
-      schemaVersion: 4,
+      schemaVersion: 3,
       protocol: { experiment: { name: "Interactive Storyteller" } },
       annotations: [{ label: "Participant hesitated" }],
     });

@@ -193,7 +193,7 @@ describe("the trial record and events CSV written a batch at a time", () => {
     // What the paged writer must match: the whole record in one JSON.stringify, events after the protocol.
     const expected = JSON.stringify(
       {
-        schemaVersion: 4,
+        schemaVersion: 3,
         trial: record.trial,
         protocol: record.protocol,
         events: namedEvents([...all], names),

@@ -13,9 +13,11 @@ type Step = Omit<TrialProtocol["steps"][number], "actions"> &
  * step's and action's variant for it in place of the shared one, marked with
  * the condition it is for (what exports name); null runs the shared design.
  * No variant is left in it: the trial, and the wizard's page, see one protocol.
+ * The rest of the document (a snapshot's experiment and version) is kept.
  */
-export function inCondition(protocol: { steps: Step[] }, condition: string | null): TrialProtocol {
+export function inCondition<P extends { steps: Step[] }>(protocol: P, condition: string | null): InCondition<P> {
   return {
+    ...protocol,
     steps: protocol.steps.map(({ variants, actions, ...step }) => {
       const own = condition === null ? undefined : variants?.[condition];
       return {
@@ -25,8 +27,19 @@ export function inCondition(protocol: { steps: Step[] }, condition: string | nul
           : actions.map((action) => actionIn(action, condition)),
       };
     }),
-  };
+  } as InCondition<P>;
 }
+
+type StepOf<P extends { steps: Step[] }> = P["steps"][number];
+
+/** A protocol as one condition runs it: its fields as they were, its steps and actions without variants, each action maybe marked. */
+export type InCondition<P extends { steps: Step[] }> = Omit<P, "steps"> & {
+  steps: Array<
+    Omit<StepOf<P>, "actions" | "variants"> & {
+      actions: Array<Omit<StepOf<P>["actions"][number], "variants"> & { variant?: string }>;
+    }
+  >;
+};
 
 function actionIn(
   { variants, ...action }: Action,
@@ -72,4 +85,30 @@ export function unknownConditions(
     steps.flatMap((step) => [step, ...step.actions].flatMap((part) => Object.keys(part.variants ?? {}))),
   );
   return [...named].filter((name) => !conditions.includes(name));
+}
+
+type Checked = { id: string; type: string; parameters?: Record<string, unknown> };
+
+/**
+ * Every action of a step as some condition may run it: its own actions, each
+ * action's variants, and the step's variants' actions, each variant with the
+ * condition it is for. What the portability report checks, so no condition
+ * meets an action its robot cannot do.
+ */
+export function everyVariant<A extends Checked>(step: {
+  actions: ReadonlyArray<A & { variants?: Record<string, { type?: string; parameters: Record<string, unknown> }> }>;
+  variants?: Record<string, { actions: ReadonlyArray<Checked> }>;
+}): Array<Checked & { condition?: string }> {
+  return [
+    ...step.actions.flatMap(({ variants, ...action }) => [
+      action,
+      ...Object.entries(variants ?? {}).map(([condition, v]) => ({
+        id: action.id,
+        type: v.type ?? action.type,
+        parameters: v.parameters,
+        condition,
+      })),
+    ]),
+    ...Object.entries(step.variants ?? {}).flatMap(([condition, v]) => v.actions.map((a) => ({ ...a, condition }))),
+  ];
 }
