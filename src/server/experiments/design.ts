@@ -220,7 +220,7 @@ async function assertVariantsOwn(tx: Tx, input: DesignInput) {
   if (unknown.length)
     throw new TRPCError({
       code: "BAD_REQUEST",
-      message: `Please correct: variants: ${unknown.map((name) => `"${name}"`).join(", ")} ${unknown.length === 1 ? "is not a condition" : "are not conditions"} of this study that run this experiment`,
+      message: `Please correct: variants: ${unknown.map((name) => `"${name}"`).join(", ")} ${unknown.length === 1 ? "is not a condition of this study that runs" : "are not conditions of this study that run"} this experiment`,
     });
 }
 
