@@ -1,0 +1,106 @@
+// Conditions in one experiment, in a real Chromium on the simulated robot: the
+// Storyteller's greeting varies by condition (a warm and a plain telling). Two
+// trials, one per condition, each run in the blinded wizard's page: the robot
+// says each condition's own greeting, byte for byte as the variant's text; the
+// wizard's page shows the greeting as it will run and never the condition's
+// name; the trial's record names the variant it ran.
+import type { Browser } from "playwright-core";
+import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
+import { launchBrowser, newContext, signInAs } from "../support/browser";
+import { apiClient, signIn } from "../support/http";
+import { listenToSpeech } from "../support/robot-ears";
+import { runToTheEndInPage } from "../support/run-trial";
+
+// Text a variant must carry unchanged: quotes, a backslash, a line break and characters beyond ASCII.
+const GREETINGS = {
+  "Warm telling QX7": 'Hello, friend! "Kai" \\ the astronaut\nça va? 🤖 赤い',
+  "Plain telling MW9": "Hello. This is a story about Kai.",
+};
+
+describe.sequential("an experiment whose conditions vary", () => {
+  let app: RunningApp;
+  let browser: Browser;
+  const trials: Array<{ id: string; condition: keyof typeof GREETINGS }> = [];
+
+  beforeAll(async () => {
+    app = await startApp();
+    browser = await launchBrowser();
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const wizard = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
+    const [study] = await researcher.studies.mine.query();
+    const studyId = study!.id;
+    const [experiment] = await researcher.experiments.list.query({ studyId });
+    const conditions = Object.keys(GREETINGS) as Array<keyof typeof GREETINGS>;
+    const ids: string[] = [];
+    for (const name of conditions)
+      ids.push((await researcher.conditions.create.mutate({ studyId, name, experimentId: experiment!.id })).id);
+    await researcher.studies.update.mutate({
+      studyId,
+      settings: { assignment: { strategy: "fixed", perCondition: 1 }, blinding: { conditionsFromWizards: true } },
+    });
+    const draft = await researcher.experiments.get.query({ experimentId: experiment!.id });
+    const [greeting] = draft.steps[0]!.actions;
+    greeting!.variants = Object.fromEntries(
+      Object.entries(GREETINGS).map(([condition, text]) => [
+        condition,
+        { parameters: { ...greeting!.parameters, text } },
+      ]),
+    );
+    await researcher.experiments.saveDesign.mutate({
+      experimentId: draft.id,
+      baseRevision: draft.draftRevision,
+      steps: draft.steps,
+    });
+    const versionId = (await researcher.versions.publish.mutate({ experimentId: experiment!.id })).id;
+    const participants = await researcher.participants.list.query({ studyId });
+    for (const [i, condition] of conditions.entries()) {
+      const participantId = participants[i]!.id;
+      await researcher.conditions.assign.mutate({ participantId, conditionId: ids[i] });
+      trials.push({ id: (await wizard.trials.create.mutate({ versionId, participantId })).id, condition });
+    }
+  }, 900_000);
+  afterAll(async () => {
+    await browser?.close();
+    await app?.stop();
+  });
+
+  it("runs each trial's own variant, byte for byte, never naming its condition to the blinded wizard", async () => {
+    const ears = await listenToSpeech(app.simulatorUrl);
+    try {
+      for (const { id, condition } of trials) {
+        const wizard = await (await newContext(browser, app.url)).newPage();
+        await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
+        await wizard.goto(`/trials/${id}`);
+        await wizard.getByText("live", { exact: true }).waitFor();
+        // The greeting as this trial will say it, and no condition's name anywhere in the page.
+        const first = GREETINGS[condition].split("\n")[0]!;
+        await expect.poll(() => wizard.locator("body").textContent(), { timeout: 30_000 }).toContain(first);
+        const html = await wizard.content();
+        for (const name of Object.keys(GREETINGS)) expect(html).not.toContain(name);
+        await wizard.getByRole("button", { name: "Start trial" }).click();
+        await runToTheEndInPage(wizard);
+        const heard = ears.take();
+        expect(heard[0], `what the robot said first in "${condition}"`).toBe(GREETINGS[condition]);
+        expect(heard).not.toContain(
+          GREETINGS[condition === "Warm telling QX7" ? "Plain telling MW9" : "Warm telling QX7"],
+        );
+        await wizard.context().close();
+      }
+    } finally {
+      ears.close();
+    }
+
+    // The researcher's record of each trial names the variant it ran.
+    const researcher = await (await newContext(browser, app.url)).newPage();
+    await signInAs(researcher, "researcher@demo.hristudio", DEMO_PASSWORD);
+    for (const { id, condition } of trials) {
+      const record = await (await researcher.request.get(`/api/trials/${id}/export?format=json`)).json();
+      expect(record.protocol.steps[0].actions[0]).toMatchObject({
+        variant: condition,
+        parameters: { text: GREETINGS[condition] },
+      });
+    }
+    await researcher.context().close();
+  }, 600_000);
+});
