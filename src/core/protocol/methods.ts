@@ -10,6 +10,7 @@ import type { StudySettings } from "../studies/settings";
 import { answerOptions, branchTarget } from "../trial/protocol";
 import type { DesignAction, ProtocolSnapshot } from "./document";
 import { exitOf } from "./flow";
+import { inCondition, variedParts } from "./variants";
 
 export interface MethodsInput {
   snapshot: ProtocolSnapshot;
@@ -94,6 +95,7 @@ function methods(input: MethodsInput, s: Style): string {
       .join(" "),
     s.heading("Procedure"),
     procedure(input, s),
+    ...variations(input, s),
     s.heading("Questionnaires"),
     questionnaires(input, s),
     s.heading("Conditions and assignment"),
@@ -115,6 +117,20 @@ function stepName(s: Style, steps: Steps, index: number): string {
 function procedure(input: MethodsInput, s: Style): string {
   const { steps } = input.snapshot;
   return [`The protocol had ${plural(steps.length, "step")}.`, stepParagraphs(input, s).join("\n")].join("\n\n");
+}
+
+/** Each condition's variants, as the lines of its protocol that differ from the procedure above; none when nothing varies. */
+function variations(input: MethodsInput, s: Style): string[] {
+  const varied = [...new Set(variedParts(input.snapshot.steps).flatMap((part) => part.conditions))];
+  if (!varied.length) return [];
+  const shared = new Set(stepParagraphs(input, s));
+  const differing = varied.map((condition) => {
+    const own = stepParagraphs({ ...input, snapshot: inCondition(input.snapshot, condition) }, s);
+    return `${s.strong(`In ${condition}`)}\n${own.filter((line) => !shared.has(line)).join("\n")}`;
+  });
+  return [
+    `Some actions differed by condition. These steps ran as follows in each condition named (numbered as above); every other condition ran the procedure above:\n\n${differing.join("\n\n")}`,
+  ];
 }
 
 /** The steps' paragraphs, numbered: the lines two conditions' protocols are compared by. */

@@ -8,6 +8,7 @@ import type { Spread } from "../analysis/study-summary";
 import type { ActionNames } from "../designer/action-name";
 import type { ProtocolSnapshot } from "../protocol/document";
 import { joinAnd, MARKDOWN, PLAIN, plural, quote, type Style, stepParagraphs } from "../protocol/methods";
+import { inCondition } from "../protocol/variants";
 import type { Instrument } from "../questionnaires/definition";
 import type { StudySettings } from "./settings";
 
@@ -206,7 +207,9 @@ function robots(f: StudyFacts, s: Style): string[] {
 /** Each condition's protocol in full when there is one; with several, the steps they share once and what differs by condition. */
 function protocol(f: StudyFacts, s: Style): string[] {
   const described = f.conditions.filter((c) => c.protocol);
-  const lines = (c: ConditionFacts) => stepParagraphs(c.protocol!, s);
+  // Each condition's protocol as it runs it: conditions of one experiment differ in their variants.
+  const lines = (c: ConditionFacts) =>
+    stepParagraphs({ ...c.protocol!, snapshot: inCondition(c.protocol!.snapshot, c.name) }, s);
   const versionOf = (c: ConditionFacts) =>
     `${quote(s, c.name)} ran version ${c.protocol!.version} of ${quote(s, c.experiment)} (SHA-256 ${s.code(c.protocol!.hash)})`;
   if (!described.length) return ["No condition's experiment has been published yet."];

@@ -1,5 +1,5 @@
-// The note for the wizard in an action's properties, rendered by React as the
-// designer renders it: every action has one, holding what the draft holds.
+// An action's properties, rendered by React as the designer renders them: the
+// note for the wizard every action has, and its variants per condition.
 import { createElement } from "react";
 import { renderToStaticMarkup } from "react-dom/server";
 import { describe, expect, it } from "vitest";
@@ -17,14 +17,22 @@ const draft: DesignDraft = {
       name: "Greeting",
       description: "",
       actions: [
-        { id: "hi", type: "say", name: "", parameters: { text: "Hello" }, parallelGroup: null, note: "Smile first." },
+        {
+          id: "hi",
+          type: "say",
+          name: "",
+          parameters: { text: "Hello" },
+          parallelGroup: null,
+          note: "Smile first.",
+          variants: { Warm: { parameters: { text: "Hello, friend!" } } },
+        },
         { id: "wave", type: "wave", name: "", parameters: {}, parallelGroup: null },
       ],
     },
   ],
 };
 
-const render = (actionId: string) =>
+const render = (actionId: string, conditions: string[] = []) =>
   renderToStaticMarkup(
     createElement(PropertiesPanel, {
       draft,
@@ -37,6 +45,7 @@ const render = (actionId: string) =>
       studyId: "study",
       robotName: "NAO6",
       audioPlayer: "browser",
+      conditions,
     }),
   );
 
@@ -50,5 +59,21 @@ describe("an action's note for the wizard", () => {
 
   it("is empty for an action without one", () => {
     expect(render("wave")).toMatch(/<textarea[^>]*maxLength="2000"[^>]*><\/textarea>/);
+  });
+});
+
+describe("an action that varies by condition", () => {
+  it("shows one editor per condition side by side: the variant's own values, or the shared action", () => {
+    const html = render("hi", ["Warm", "Plain"]);
+    expect(html).toContain("Varies by condition");
+    const warm = html.slice(html.indexOf('aria-label="In “Warm”"'), html.indexOf('aria-label="In “Plain”"'));
+    expect(warm).toMatch(/<input type="checkbox"[^>]*checked=""/);
+    expect(warm).toContain('value="Hello, friend!"');
+    const plain = html.slice(html.indexOf('aria-label="In “Plain”"'));
+    expect(plain).toContain("Runs the action as above.");
+  });
+
+  it("has no such field in a study with no conditions on this experiment", () => {
+    expect(render("hi")).not.toContain("Varies by condition");
   });
 });

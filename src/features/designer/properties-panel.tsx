@@ -15,6 +15,7 @@ import { SchemaForm } from "@/ui/schema-form";
 import { AudioChooser } from "./audio-chooser";
 import { afterOf, afterValue, LeadsToOptions, TimeLimitField } from "./time-limit-field";
 import type { Selection } from "./protocol-timeline";
+import { VariantsField } from "./variants-field";
 
 interface Props {
   draft: DesignDraft;
@@ -28,6 +29,8 @@ interface Props {
   studyId: string;
   robotName: string;
   audioPlayer: AudioPlayer;
+  /** The names of the study's conditions that run this experiment: an action may vary for each. */
+  conditions: string[];
 }
 
 export function PropertiesPanel(props: Props) {
@@ -146,6 +149,7 @@ function ActionProperties({
   studyId,
   robotName,
   audioPlayer,
+  conditions,
 }: Props & { action: DesignAction }) {
   const block = blockFor(action.type);
   const { step, index } = locateAction(draft, action.id);
@@ -192,6 +196,9 @@ function ActionProperties({
           problems={problems}
         />
       ) : null}
+      {block && !WAITS_FOR_CHOICE.has(action.type) && action.type !== "branch" && action.type !== "play_audio" && (
+        <VariantsField action={action} block={block} conditions={conditions} run={run} />
+      )}
       {!WAITS_FOR_CHOICE.has(action.type) && !WAITS_FOR_CHOICE.has(step.actions[index - 1]?.type ?? "") && (
         <label className="flex items-center gap-2 text-sm">
           <input
