@@ -22,6 +22,7 @@ describe.sequential("an experiment whose conditions vary", () => {
   let app: RunningApp;
   let browser: Browser;
   const trials: Array<{ id: string; condition: keyof typeof GREETINGS }> = [];
+  let greetingId = "";
 
   beforeAll(async () => {
     app = await startApp();
@@ -41,6 +42,7 @@ describe.sequential("an experiment whose conditions vary", () => {
     });
     const draft = await researcher.experiments.get.query({ experimentId: experiment!.id });
     const [greeting] = draft.steps[0]!.actions;
+    greetingId = greeting!.id;
     greeting!.variants = Object.fromEntries(
       Object.entries(GREETINGS).map(([condition, text]) => [
         condition,
@@ -73,12 +75,12 @@ describe.sequential("an experiment whose conditions vary", () => {
         await signInAs(wizard, "wizard@demo.hristudio", DEMO_PASSWORD);
         await wizard.goto(`/trials/${id}`);
         await wizard.getByText("live", { exact: true }).waitFor();
-        // The greeting as this trial will say it, and no condition's name anywhere in the page.
-        const first = GREETINGS[condition].split("\n")[0]!;
-        await expect.poll(() => wizard.locator("body").textContent(), { timeout: 30_000 }).toContain(first);
+        await wizard.getByRole("button", { name: "Start trial" }).click();
+        // The greeting as this trial will say it (its whole line a hover away), and no condition's name anywhere in the page.
+        const line = wizard.getByTestId(`action-${greetingId}`).locator("span[title]");
+        await expect.poll(() => line.getAttribute("title"), { timeout: 30_000 }).toBe(GREETINGS[condition]);
         const html = await wizard.content();
         for (const name of Object.keys(GREETINGS)) expect(html).not.toContain(name);
-        await wizard.getByRole("button", { name: "Start trial" }).click();
         await runToTheEndInPage(wizard);
         const heard = ears.take();
         expect(heard[0], `what the robot said first in "${condition}"`).toBe(GREETINGS[condition]);
