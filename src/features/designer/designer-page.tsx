@@ -379,6 +379,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
                     <RehearsalPreview
                       draft={draft}
                       actionName={(a) => actionName(a, names)}
+                      conditions={conditions}
                       blocked={
                         errors
                           ? "Fix the problems listed on the right first: the preview walks the experiment as a trial would."

@@ -1,8 +1,10 @@
 "use client";
 // A rehearsal without a trial: choose an answer for each question and read
 // the exact sequence the robot would perform, walked by the trial engine
-// itself, so what is shown here is what a trial of this draft would do.
+// itself, so what is shown here is what a trial of this draft would do, as
+// the chosen condition would run it (its variants).
 import { useMemo, useState } from "react";
+import { inCondition } from "@/core/protocol/variants";
 import type { DesignAction, DesignDraft } from "@/core/designer/types";
 import { answerOptions, rehearse } from "@/core/trial";
 import { Field, NativeSelect } from "@/ui/field";
@@ -11,8 +13,11 @@ export function RehearsalPreview({
   draft,
   actionName,
   blocked,
+  conditions,
 }: {
   draft: DesignDraft;
+  /** The study's conditions that run this experiment: the preview may run as one of them. */
+  conditions: string[];
   actionName: (action: DesignAction) => string;
   /** Why the draft cannot be walked yet (its errors), if so. */
   blocked: string | null;
@@ -25,20 +30,36 @@ export function RehearsalPreview({
     [draft],
   );
   const [answers, setAnswers] = useState<Record<string, string>>({});
+  // "": the design as every condition without a variant runs it.
+  const [condition, setCondition] = useState("");
   const result = useMemo(() => {
     if (blocked) return null;
     try {
-      return { ok: true as const, rehearsal: rehearse(draft, answers) };
+      return { ok: true as const, rehearsal: rehearse(inCondition(draft, condition || null), answers) };
     } catch (e) {
       return { ok: false as const, reason: (e as Error).message };
     }
-  }, [draft, answers, blocked]);
+  }, [draft, answers, blocked, condition]);
 
   return (
     <section aria-label="Rehearsal preview" className="space-y-4">
       <p className="text-sm text-slate-700">
         Choose an answer to each question to see what the robot would do, step by step. Nothing is sent to a robot.
       </p>
+      {conditions.length > 0 && (
+        <Field label="As condition">
+          {(p) => (
+            <NativeSelect {...p} value={condition} onChange={(e) => setCondition(e.target.value)}>
+              <option value="">The shared design (no condition's variants)</option>
+              {conditions.map((c) => (
+                <option key={c} value={c}>
+                  {c}
+                </option>
+              ))}
+            </NativeSelect>
+          )}
+        </Field>
+      )}
       {questions.length > 0 && (
         <div className="grid gap-3 sm:grid-cols-2">
           {questions.map(({ step, action }) => (
