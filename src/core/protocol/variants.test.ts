@@ -2,7 +2,7 @@ import { describe, expect, it } from "vitest";
 import { hashCanonical } from "./canonical";
 import { type DesignDraft, DOCUMENT_VERSION, snapshotSchema } from "./document";
 import { snapshotOf } from "./snapshot";
-import { inCondition, lackingVariants, unknownConditions } from "./variants";
+import { idsInTwoSteps, inCondition, lackingVariants, unknownConditions } from "./variants";
 
 // A tutor study's one difference between its conditions: the feedback line, and the whole goodbye step.
 const tutor = (): DesignDraft => ({
@@ -160,5 +160,22 @@ describe("variants in the published version", () => {
     delete plain.steps[0]!.actions[1]!.variants;
     delete plain.steps[1]!.variants;
     expect(JSON.stringify(snapshotOf({ ...plain, id: "exp-1" }))).not.toContain("variants");
+  });
+});
+
+describe("action ids a trial could not tell apart", () => {
+  const step = (id: string, actions: string[], variant: string[] = []) => ({
+    id,
+    actions: actions.map((a) => ({ id: a })),
+    ...(variant.length && { variants: { Warm: { actions: variant.map((a) => ({ id: a })) } } }),
+  });
+
+  it.each<[string, Parameters<typeof idsInTwoSteps>[0], string[]]>([
+    ["a step's variant reusing its step's own ids: only one of them runs", [step("s1", ["a"], ["a", "b"])], []],
+    ["a step's variant taking another step's action id", [step("s1", ["a"]), step("s2", ["b"], ["a"])], ["a"]],
+    ["two steps' own actions sharing an id", [step("s1", ["a"]), step("s2", ["a"])], ["a"]],
+    ["new actions, with no id yet", [step("s1", []), { id: "s2", actions: [{}, {}] }], []],
+  ])("%s", (_, steps, repeated) => {
+    expect(idsInTwoSteps(steps)).toEqual(repeated);
   });
 });

@@ -112,3 +112,31 @@ export function everyVariant<A extends Checked>(step: {
     ...Object.entries(step.variants ?? {}).flatMap(([condition, v]) => v.actions.map((a) => ({ ...a, condition }))),
   ];
 }
+
+/**
+ * Action ids used in more than one step, a step's variants counted as the
+ * step: a trial keeps each action's state by its id, so an action of one step
+ * must not share it with another step's. (A step's variant may reuse the
+ * step's own ids: only one of them runs.)
+ */
+export function idsInTwoSteps(
+  steps: ReadonlyArray<{
+    id?: string;
+    actions: ReadonlyArray<{ id?: string }>;
+    variants?: Record<string, { actions: ReadonlyArray<{ id: string }> }>;
+  }>,
+): string[] {
+  const stepOf = new Map<string, number>();
+  const repeated = new Set<string>();
+  steps.forEach((step, index) => {
+    const ids = new Set([
+      ...step.actions.flatMap((a) => (a.id ? [a.id] : [])),
+      ...Object.values(step.variants ?? {}).flatMap((v) => v.actions.map((a) => a.id)),
+    ]);
+    for (const id of ids) {
+      if (stepOf.has(id) && stepOf.get(id) !== index) repeated.add(id);
+      stepOf.set(id, index);
+    }
+  });
+  return [...repeated];
+}

@@ -6,7 +6,7 @@ import type { PgTable } from "drizzle-orm/pg-core";
 import type { Database } from "@/store/client";
 import { actions, conditions, experiments, steps } from "@/store/schema";
 import type { DesignStep } from "@/core/designer/types";
-import { unknownConditions } from "@/core/protocol/variants";
+import { idsInTwoSteps, unknownConditions } from "@/core/protocol/variants";
 import type { DesignInput } from "../api/routers/design-input";
 import { inTurn, LARGE_DESIGN } from "./turns";
 
@@ -217,6 +217,12 @@ async function assertVariantsOwn(tx: Tx, input: DesignInput) {
     input.steps,
     own.map((c) => c.name),
   );
+  const repeated = idsInTwoSteps(input.steps);
+  if (repeated.length)
+    throw new TRPCError({
+      code: "BAD_REQUEST",
+      message: `Please correct: variants: the action ${repeated.map((id) => `"${id}"`).join(", ")} is in two steps; a step's variant needs actions of its own`,
+    });
   if (unknown.length)
     throw new TRPCError({
       code: "BAD_REQUEST",
