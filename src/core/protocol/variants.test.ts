@@ -1,4 +1,5 @@
 import { describe, expect, it } from "vitest";
+import { rehearse } from "../trial/rehearse";
 import { hashCanonical } from "./canonical";
 import { type DesignDraft, DOCUMENT_VERSION, snapshotSchema } from "./document";
 import { snapshotOf } from "./snapshot";
@@ -103,6 +104,15 @@ describe("the protocol a trial in a condition runs", () => {
     ],
   ])("in %s", (condition, actions) => {
     expect(ran(condition)).toEqual(actions);
+  });
+
+  it.each<[string | null, string[]]>([
+    ["Warm", ["hello: Hello", "praise: Well done, you are doing great!", "bye-warm: See you soon, friend"]],
+    ["Gesture", ["hello: Hello", "praise: wave", "bye-say: Bye"]],
+    [null, ["hello: Hello", "praise: Well done.", "bye-say: Bye"]],
+  ])("walked by the trial engine in %s, each action as that condition runs it", (condition, done) => {
+    const walked = rehearse(inCondition(tutor(), condition)).steps.flatMap((s) => s.units.flat());
+    expect(walked.map((a) => `${a.id}: ${a.parameters.text ?? a.type}`)).toEqual(done);
   });
 
   it("holds no variant of any condition: the trial and the wizard's page see one protocol", () => {
