@@ -7,7 +7,7 @@
 import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
-import { launchBrowser, newContext, signInAs } from "../support/browser";
+import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
 import { listenToSpeech } from "../support/robot-ears";
 import { runToTheEndInPage } from "../support/run-trial";
@@ -23,6 +23,8 @@ describe.sequential("an experiment whose conditions vary", () => {
   let browser: Browser;
   const trials: Array<{ id: string; condition: keyof typeof GREETINGS }> = [];
   let greetingId = "";
+  let studyId = "";
+  let experimentId = "";
 
   beforeAll(async () => {
     app = await startApp();
@@ -30,8 +32,9 @@ describe.sequential("an experiment whose conditions vary", () => {
     const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
     const wizard = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
     const [study] = await researcher.studies.mine.query();
-    const studyId = study!.id;
+    studyId = study!.id;
     const [experiment] = await researcher.experiments.list.query({ studyId });
+    experimentId = experiment!.id;
     const conditions = Object.keys(GREETINGS) as Array<keyof typeof GREETINGS>;
     const ids: string[] = [];
     for (const name of conditions)
@@ -105,4 +108,29 @@ describe.sequential("an experiment whose conditions vary", () => {
     }
     await researcher.context().close();
   }, 600_000);
+
+  it("shows each condition's variant side by side in the designer, and says which condition has none", async () => {
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    await researcher.conditions.create.mutate({ studyId, name: "Silent telling", experimentId });
+    await page.goto(`/experiments/${experimentId}`);
+    await page.locator('[data-step="Introduction"] [data-action]').first().click();
+    const properties = page.getByRole("region", { name: "Properties" });
+    await properties.getByText("Varies by condition", { exact: true }).waitFor();
+    for (const [condition, text] of Object.entries(GREETINGS)) {
+      const own = properties.getByRole("group", { name: `In “${condition}”` });
+      expect(await own.getByRole("checkbox").isChecked()).toBe(true);
+      // A one-line field, as the shared action's text is: it shows the line without its break.
+      expect(await own.getByRole("textbox").inputValue()).toBe(text.replace("\n", ""));
+    }
+    const silent = properties.getByRole("group", { name: "In “Silent telling”" });
+    expect(await silent.getByRole("checkbox").isChecked()).toBe(false);
+    expect(await silent.textContent()).toContain("Runs the action as above.");
+    await expect
+      .poll(() => page.getByRole("region", { name: "Checks" }).textContent())
+      .toContain('"Silent telling" has no variant of it and runs the shared one.');
+    await screenshot(page, "designer-variants");
+    await page.context().close();
+  }, 300_000);
 });
