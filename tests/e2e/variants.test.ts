@@ -109,7 +109,7 @@ describe.sequential("an experiment whose conditions vary", () => {
     await researcher.context().close();
   }, 600_000);
 
-  it("shows each condition's variant side by side in the designer, and says which condition has none", async () => {
+  it("shows each condition's variant side by side in the designer, says which condition has none, and rehearses as one", async () => {
     const page = await (await newContext(browser, app.url)).newPage();
     await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
     const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
@@ -131,6 +131,16 @@ describe.sequential("an experiment whose conditions vary", () => {
       .poll(() => page.getByRole("region", { name: "Checks" }).textContent())
       .toContain('"Silent telling" has no variant of it and runs the shared one.');
     await screenshot(page, "designer-variants");
+
+    // A rehearsal from the Experiments tab, as one condition: its trial runs that condition's variant.
+    await page.goto(`/studies/${studyId}`);
+    await page.getByRole("tab", { name: "Experiments" }).click();
+    await page.getByLabel("Rehearse Interactive Storyteller as").selectOption("Warm telling QX7");
+    await page.getByRole("button", { name: "Rehearse Interactive Storyteller" }).click();
+    await page.waitForURL(/\/trials\//);
+    await page.getByRole("button", { name: "Start trial" }).click();
+    const line = page.getByTestId(`action-${greetingId}`).locator("span[title]");
+    await expect.poll(() => line.getAttribute("title"), { timeout: 30_000 }).toBe(GREETINGS["Warm telling QX7"]);
     await page.context().close();
   }, 300_000);
 });
