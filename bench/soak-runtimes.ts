@@ -83,7 +83,7 @@ const [experiment] = await db
   .values({ studyId: study!.id, name: "Soak", robotId: "simulated" })
   .returning();
 const snapshot = {
-  schemaVersion: 4 as const,
+  schemaVersion: 5 as const,
   experiment: { id: experiment!.id, name: "Soak", description: "", robotId: "simulated" },
   steps: [{ id: "s", name: "S", description: "", actions: [] }],
 };

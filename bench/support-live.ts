@@ -111,7 +111,7 @@ export async function startLiveBench({
     .values({ studyId: study!.id, name: "Bench", robotId: "nao6-ros2" })
     .returning();
   const snapshot = {
-    schemaVersion: 4 as const,
+    schemaVersion: 5 as const,
     experiment: { id: experiment!.id, name: "Bench", description: "", robotId: "nao6-ros2" },
     steps,
   };

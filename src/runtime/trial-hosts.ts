@@ -25,6 +25,8 @@
 import { eq } from "drizzle-orm";
 import { checkingStart, type Plugin } from "@/core/plugins";
 import { sliced } from "@/store/sliced";
+import { conditionOfTrial } from "@/store/trial-condition";
+import { inCondition } from "@/core/protocol/variants";
 import type { Database } from "@/store/client";
 import { experimentVersions, trials } from "@/store/schema";
 import { trialPlugin } from "@/robots/trial-plugin";
@@ -148,15 +150,17 @@ export function trialHosts(
       .from(trials)
       .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
       .where(eq(trials.id, trialId));
-    const protocol = row?.snapshot ?? row?.rehearsal;
-    if (!protocol) throw new Error("This trial has no protocol to run.");
+    const stored = row?.snapshot ?? row?.rehearsal;
+    if (!stored) throw new Error("This trial has no protocol to run.");
+    // A trial runs its condition's variants; a rehearsal's snapshot was frozen as the condition it chose, if any.
+    const protocol = inCondition(stored, row?.snapshot ? await conditionOfTrial(db, trialId) : null);
     const chosen = await trialPlugin(db, trialId);
     if (!chosen.ok) throw new Error(chosen.reason);
     // A robot whose plugin lacks an action of the version would fail it mid-trial: refused before the first step.
     // (A rehearsal pilots a draft, whose checks only warn.)
     const missing =
       row?.snapshot && row.status === "scheduled" && chosen.plugin
-        ? await sliced(checkingStart(row.snapshot, chosen.plugin))
+        ? await sliced(checkingStart(protocol, chosen.plugin))
         : null;
     if (missing) throw new Error(missing);
     const ended = row?.status === "completed" || row?.status === "aborted";

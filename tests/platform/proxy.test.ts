@@ -27,7 +27,7 @@ const SECRET = "proxy-test-secret".padEnd(40, "x");
 const plugin = firstPartyPlugin("simulated.json");
 
 const snapshot: ProtocolSnapshot = {
-  schemaVersion: 4,
+  schemaVersion: 5,
   experiment: { id: "e", name: "Proxied", description: "", robotId: "simulated" },
   steps: ["Hello", "Goodbye"].map((text, i) => ({
     id: `s${i}`,

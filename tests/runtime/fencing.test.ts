@@ -28,7 +28,7 @@ import { trialOf } from "../support/trial-rows";
 const SECRET = "fencing-test-secret".padEnd(40, "x");
 
 const snapshot: ProtocolSnapshot = {
-  schemaVersion: 4,
+  schemaVersion: 5,
   experiment: { id: "e", name: "Lines", description: "", robotId: "simulated" },
   steps: [
     {

@@ -33,7 +33,7 @@ let page: TrialSocket | null = null;
 let frozen = false;
 
 const snapshot: ProtocolSnapshot = {
-  schemaVersion: 4,
+  schemaVersion: 5,
   experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
   steps: [{ id: "s1", name: "One", description: "", actions: [] }],
 };

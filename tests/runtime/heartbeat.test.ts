@@ -40,7 +40,7 @@ beforeAll(async () => {
   wizardId = wizard.id;
   await db.insert(studyMembers).values({ studyId: study!.id, userId: wizard.id, role: "wizard" });
   const snapshot: ProtocolSnapshot = {
-    schemaVersion: 4,
+    schemaVersion: 5,
     experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
     steps: [{ id: "s1", name: "One", description: "", actions: [] }],
   };

@@ -18,7 +18,7 @@ import { trialOf } from "../support/trial-rows";
 
 const plugin = firstPartyPlugin("simulated.json");
 const snapshot: ProtocolSnapshot = {
-  schemaVersion: 4,
+  schemaVersion: 5,
   experiment: { id: "e", name: "Claimed", description: "", robotId: "simulated" },
   steps: [
     {

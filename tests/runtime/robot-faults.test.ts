@@ -23,7 +23,7 @@ import { trialOf } from "../support/trial-rows";
 const SECRET = "robot-faults-test-secret".padEnd(40, "x");
 
 const protocol = (robotId: string, actions: Array<[string, string, Record<string, unknown>]>): ProtocolSnapshot => ({
-  schemaVersion: 4,
+  schemaVersion: 5,
   experiment: { id: "e", name: "E", description: "", robotId },
   steps: actions.map(([id, type, parameters], i) => ({
     id: `s${i}`,

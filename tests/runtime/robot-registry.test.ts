@@ -32,7 +32,7 @@ const SECRET = "robot-registry-test-secret".padEnd(40, "x");
 const plugin = firstPartyPlugin("simulated.json");
 
 const saying = (text: string): ProtocolSnapshot => ({
-  schemaVersion: 4,
+  schemaVersion: 5,
   experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
   steps: [
     {

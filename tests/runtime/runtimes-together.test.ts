@@ -20,7 +20,7 @@ const ROBOTS = 12;
 const TRIALS = 10;
 
 const saying = (text: string): ProtocolSnapshot => ({
-  schemaVersion: 4,
+  schemaVersion: 5,
   experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
   steps: [
     {

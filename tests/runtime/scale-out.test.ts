@@ -14,7 +14,7 @@ import { connectTrial } from "../support/socket";
 
 const SECRET = "scale-out-test-secret".padEnd(40, "x");
 const protocol = {
-  schemaVersion: 4 as const,
+  schemaVersion: 5 as const,
   experiment: { id: "e", name: "E", description: "", robotId: "no-robot" },
   steps: [
     {

@@ -75,7 +75,7 @@ it("a state topic the robot never publishes is told to the wizard in plain words
     .returning();
   await db.insert(robotStudies).values({ robotId: robot!.id, studyId: study!.id });
   const snapshot: ProtocolSnapshot = {
-    schemaVersion: 4,
+    schemaVersion: 5,
     experiment: { id: "e", name: "E", description: "", robotId: "nao6-ros2" },
     steps: [
       {

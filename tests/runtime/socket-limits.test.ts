@@ -194,7 +194,7 @@ describe("the trial socket after hello", () => {
     });
     await db.insert(studyMembers).values({ studyId: study!.id, userId: wizard.id, role: "wizard" });
     const snapshot: ProtocolSnapshot = {
-      schemaVersion: 4,
+      schemaVersion: 5,
       experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
       steps: [{ id: "s1", name: "One", description: "", actions: [] }],
     };

@@ -24,7 +24,7 @@ const SECRET = "stop-without-database-secret".padEnd(40, "x");
 const plugin = firstPartyPlugin("simulated.json");
 
 const protocol: ProtocolSnapshot = {
-  schemaVersion: 4,
+  schemaVersion: 5,
   experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
   steps: [
     {

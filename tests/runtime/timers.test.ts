@@ -23,7 +23,7 @@ import { trialOf } from "../support/trial-rows";
 const SECRET = "timers-test-secret".padEnd(40, "x");
 
 const protocol: ProtocolSnapshot = {
-  schemaVersion: 4,
+  schemaVersion: 5,
   experiment: { id: "e", name: "Timed", description: "", robotId: "simulated" },
   steps: [
     {

@@ -17,7 +17,7 @@ import { firstPartyPlugin } from "../support/plugins";
 const plugin = firstPartyPlugin("simulated.json");
 
 const protocol: ProtocolSnapshot = {
-  schemaVersion: 4,
+  schemaVersion: 5,
   experiment: { id: "e", name: "E", description: "", robotId: "simulated" },
   steps: [
     {

@@ -23,7 +23,7 @@ const plugin = firstPartyPlugin("simulated.json");
 
 // "Touch my head to start": head touched → Greet; the wizard's go on → Goodbye, the step's own way on.
 const protocol: ProtocolSnapshot = {
-  schemaVersion: 4,
+  schemaVersion: 5,
   experiment: { id: "e", name: "Touch to start", description: "", robotId: "simulated" },
   steps: [
     {

@@ -25,7 +25,7 @@ import { connectTrial } from "./socket";
 export const SECRET = "socket-access-test-secret".padEnd(40, "x");
 
 const protocolOf = (tag: string) => ({
-  schemaVersion: 4 as const,
+  schemaVersion: 5 as const,
   experiment: { id: `${tag}-experiment`, name: `${tag} experiment`, description: "", robotId: "no-robot" },
   steps: [
     {

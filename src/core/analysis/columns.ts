@@ -75,6 +75,12 @@ const EVENT: Columns<typeof EVENT_COLUMNS> = {
   action_type: { type: "text", optional: true, description: "The action's type, on its request." },
   step_name: { type: "text", optional: true, description: "The step's name." },
   action_name: { type: "text", optional: true, description: "The action's name." },
+  variant: {
+    type: "text",
+    optional: true,
+    description:
+      "The condition whose variant of the action ran (the condition's name); empty for the action every condition shares.",
+  },
   answer: {
     type: "text",
     optional: true,

@@ -70,6 +70,7 @@ describe("the events CSV", () => {
       "action_type",
       "step_name",
       "action_name",
+      "variant",
       "answer",
       "deviation",
       "rel_ms",
@@ -77,8 +78,8 @@ describe("the events CSV", () => {
       "actor_id",
       "payload",
     ]);
-    expect(rows.map((r) => JSON.parse(r[15]!))).toEqual(JSON.parse(JSON.stringify(events)));
-    expect(rows[1]!.slice(0, 15)).toEqual([
+    expect(rows.map((r) => JSON.parse(r[16]!))).toEqual(JSON.parse(JSON.stringify(events)));
+    expect(rows[1]!.slice(0, 16)).toEqual([
       "t1",
       "Wim Wizard",
       "Rita Researcher",
@@ -90,11 +91,31 @@ describe("the events CSV", () => {
       "Welcome",
       'Say: She said "hi", then left; {{x}}…',
       "",
+      "",
       "unscripted",
       "12.5",
       "2026-01-01T10:00:00.012Z",
       "u1",
     ]);
+  });
+
+  it("names the condition whose variant of an action ran, in its own column and on the record's events", () => {
+    const scripted = { ...events[1]!, scripted: true, deviation: undefined } as StoredEvent;
+    const varied = trialNames(
+      {
+        steps: [
+          {
+            id: "s1",
+            name: "Welcome",
+            actions: [{ id: "a1", type: "say", parameters: { text: "Hello, friend" }, variant: "Warm tutor" }],
+          },
+        ],
+      },
+      [scripted],
+    );
+    const [, row] = parseCsv(eventsCsv("t1", [scripted], people, varied));
+    expect(row![EVENT_COLUMNS.indexOf("variant")]).toBe("Warm tutor");
+    expect(namedEvents([scripted], varied)[0]).toMatchObject({ actionId: "a1", variant: "Warm tutor" });
   });
 });
 
@@ -123,7 +144,7 @@ describe("the trial record", () => {
       trialRecordJson(
         {
           trial: {},
-          protocol: { schemaVersion: 4, experiment: {} as never, steps: [] },
+          protocol: { schemaVersion: 5, experiment: {} as never, steps: [] },
           events,
           annotations: [],
           codes: [],
@@ -145,7 +166,7 @@ describe("the trial record and events CSV written a batch at a time", () => {
   const record = {
     trial: { id: "t1", note: 'a "quoted"\n  "events": [] line', gone: undefined, at: new Date(0) },
     protocol: {
-      schemaVersion: 4 as const,
+      schemaVersion: 5 as const,
       experiment: {} as never,
       steps: [{ id: "s1", name: "Welcome", description: "", actions: [] }],
     },

@@ -23,6 +23,7 @@ export const EVENT_COLUMNS = [
   "action_type",
   "step_name",
   "action_name",
+  "variant",
   "answer",
   "deviation",
   "rel_ms",
@@ -51,7 +52,7 @@ export function eventRows(
   return events.map((e) => {
     // Columns for the fields some kinds of event have; the payload column holds all of it.
     const { stepId, actionId, actionType } = e as { stepId?: string | null; actionId?: string; actionType?: string };
-    const { stepName, actionName } = names.of(e);
+    const { stepName, actionName, variant } = names.of(e);
     // An empty cell is null: empty in the CSV, null in the analysis API's JSON (never "" for a number).
     return [
       trialId,
@@ -64,6 +65,7 @@ export function eventRows(
       actionType ?? null,
       stepName ?? null,
       actionName ?? null,
+      variant ?? null,
       answerOf(e) ?? null,
       e.deviation ?? null,
       e.relMs,

@@ -7,8 +7,8 @@ import type { TrialEvent, TrialProtocol } from "@/core/trial";
 export interface TrialNames {
   step(stepId: string | null | undefined): string | undefined;
   action(actionId: string | null | undefined): string | undefined;
-  /** The step's and the action's names an event carries ids of. */
-  of(event: object): { stepName?: string; actionName?: string };
+  /** The step's and the action's names an event carries ids of, and the condition whose variant of the action ran. */
+  of(event: object): { stepName?: string; actionName?: string; variant?: string };
 }
 
 type Named = { stepId?: string | null; actionId?: string; actionType?: string; parameters?: Record<string, unknown> };
@@ -27,6 +27,10 @@ export function trialNames(
 ): TrialNames & { learn(events: readonly object[]): void } {
   const steps = new Map(protocol.steps.map((s) => [s.id, s.name]));
   const actions = new Map(protocol.steps.flatMap((s) => s.actions.map((a) => [a.id, actionName(a, names)])));
+  // A protocol as its trial's condition ran it marks each action of a condition's variant (core/protocol/variants.ts).
+  const variants = new Map(
+    protocol.steps.flatMap((s) => s.actions.flatMap((a) => (a.variant === undefined ? [] : [[a.id, a.variant]]))),
+  );
   const learn = (events: readonly object[]) => {
     for (const e of events as Array<TrialEvent & Named>)
       if (e.type === "action.requested" && e.actionId && !actions.has(e.actionId))
@@ -43,7 +47,12 @@ export function trialNames(
       const { stepId, actionId } = event as Named;
       const stepName = step(stepId);
       const actionName = action(actionId);
-      return { ...(stepName !== undefined && { stepName }), ...(actionName !== undefined && { actionName }) };
+      const variant = actionId ? variants.get(actionId) : undefined;
+      return {
+        ...(stepName !== undefined && { stepName }),
+        ...(actionName !== undefined && { actionName }),
+        ...(variant !== undefined && { variant }),
+      };
     },
   };
 }

@@ -12,7 +12,7 @@ const act = (
 ) => ({ id, type, name, parameters, parallelGroup });
 
 const base: Snapshot = {
-  schemaVersion: 4 as const,
+  schemaVersion: 5 as const,
   experiment: { id: "exp", name: "Storyteller", description: "Kai on Mars", robotId: "nao6-ros2" },
   steps: [
     {

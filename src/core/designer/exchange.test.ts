@@ -222,6 +222,56 @@ describe("exporting and importing an experiment", () => {
     expect(exportExperiment(again)).toBe(text);
   });
 
+  it("keeps each condition's variant of an action and of a step, under the condition's name", () => {
+    const draft: DesignDraft = {
+      name: "Tutor",
+      description: "",
+      robotId: "nao6-ros2",
+      steps: [
+        {
+          id: "u1",
+          name: "Feedback",
+          description: "",
+          after: { to: "next" },
+          actions: [
+            {
+              id: "a1",
+              type: "say",
+              name: "",
+              parameters: { text: "Well done." },
+              parallelGroup: null,
+              variants: { "Warm tutor": { parameters: { text: "Well done, you are great!" } } },
+            },
+          ],
+          variants: {
+            Gestures: {
+              actions: [
+                { id: "a2", type: "wave", name: "", parameters: {}, parallelGroup: "g" },
+                { id: "a3", type: "say", name: "", parameters: { text: "Well done." }, parallelGroup: "g" },
+              ],
+            },
+          },
+        },
+      ],
+    };
+    const text = exportExperiment(draft);
+    const file = JSON.parse(text);
+    expect(file.steps[0].actions[0].variants).toEqual({
+      "Warm tutor": { parameters: { text: "Well done, you are great!" } },
+    });
+    expect(file.steps[0].variants.Gestures.actions.map((a: { runTogether?: string }) => a.runTogether)).toEqual([
+      "group-1",
+      "group-1",
+    ]);
+    const again = imported(text);
+    expect(exportExperiment(again)).toBe(text);
+    // Fresh ids for the variant's actions, and for their run-together group (new-4).
+    expect(again.steps[0]!.variants!.Gestures!.actions.map((a) => [a.id, a.parallelGroup])).toEqual([
+      ["new-3", "new-4"],
+      ["new-5", "new-4"],
+    ]);
+  });
+
   it("keeps where a wait's events lead, named by key like a step's after", () => {
     const draft: DesignDraft = {
       name: "Touch",
@@ -318,7 +368,7 @@ describe("exporting and importing an experiment", () => {
       [
         "{",
         '  "format": "hristudio.experiment",',
-        '  "formatVersion": 4,',
+        '  "formatVersion": 5,',
         '  "experiment": {',
         '    "name": "Tiny",',
         '    "description": "",',
@@ -434,10 +484,10 @@ describe("importing a bad file", () => {
     ],
     [
       "a newer format",
-      edit((f) => (f.formatVersion = 5)),
-      [["$.formatVersion", "is 5: the file comes from a newer HRIStudio"]],
+      edit((f) => (f.formatVersion = 6)),
+      [["$.formatVersion", "is 6: the file comes from a newer HRIStudio"]],
     ],
-    ["a version as text", edit((f) => (f.formatVersion = "1")), [["$.formatVersion", "must be 1 or 2 or 3 or 4"]]],
+    ["a version as text", edit((f) => (f.formatVersion = "1")), [["$.formatVersion", "must be 1 or 2 or 3 or 4 or 5"]]],
     ["no steps", edit((f) => delete f.steps), [["$.steps", "must be a list"]]],
     ["no experiment", edit((f) => delete f.experiment), [["$.experiment", "must be an object"]]],
     ["a blank robot", edit((f) => (f.experiment.robot = " ")), [["$.experiment.robot", "must be a non-empty string"]]],

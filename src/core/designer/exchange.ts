@@ -13,8 +13,10 @@
 //         "after": "@step-5",
 //         "timeLimit": { "seconds": 30, "after": "end" },
 //         "actions": [
-//           { "type": "say", "name": "…", "parameters": { "text": "…" }, "runTogether": "group-1" }
-//         ]
+//           { "type": "say", "name": "…", "parameters": { "text": "…" }, "runTogether": "group-1",
+//             "variants": { "Warm tutor": { "parameters": { "text": "…" } } } }
+//         ],
+//         "variants": { "Warm tutor": { "actions": [ … ] } }
 //       }
 //     ]
 //   }
@@ -28,7 +30,8 @@
 // "times": 2, "onward": "end" } ("onward" written as an "after", left out for
 // the next step), and run-together groups are renamed
 // "group-1", "group-2"… in order of first appearance ("runTogether" is left out
-// for an action that runs alone). The writer is deterministic (fixed key order,
+// for an action that runs alone). Variants (version 4) are kept under their
+// condition's name; a step's variant's actions are written as the step's are. The writer is deterministic (fixed key order,
 // parameters sorted, 2-space indent, final newline) so an exported file diffs
 // cleanly and exporting an imported export gives the same bytes.
 //
@@ -85,6 +88,7 @@ const STEP_FIELDS = {
   after: "after",
   timeLimit: "timeLimit",
   actions: "actions",
+  variants: "variants",
 } as const satisfies Record<keyof DesignStep, string>;
 const ACTION_FIELDS = {
   id: null,
@@ -94,6 +98,7 @@ const ACTION_FIELDS = {
   parallelGroup: "runTogether",
   note: "note",
   timeLimit: "timeLimit",
+  variants: "variants",
 } as const satisfies Record<keyof DesignAction, string | null>;
 
 /** An action as the declaration reads it (defaults left out), with its run-together group named. The note is absent when there is none. */
@@ -119,11 +124,12 @@ interface FileTimeLimit {
 }
 
 /** A step keyed "step-K"; "after" is "@step-K", "end" or a loop, absent for the next step. */
-type FileStep = Omit<z.input<typeof stepSchema>, "id" | "after" | "actions" | "timeLimit"> & {
+type FileStep = Omit<z.input<typeof stepSchema>, "id" | "after" | "actions" | "timeLimit" | "variants"> & {
   key: string;
   after?: FileAfter;
   timeLimit?: FileTimeLimit;
   actions: FileAction[];
+  variants?: Record<string, { actions: FileAction[] }>;
 };
 
 export interface ExperimentFile {
@@ -145,6 +151,20 @@ export function exportExperiment(draft: DesignDraft): string {
   const keys = new Map(draft.steps.map((step, i) => [step.id, `@step-${i + 1}`]));
   const groups = new Map<string, string>();
   const group = (id: string) => groups.get(id) ?? groups.set(id, `group-${groups.size + 1}`).get(id)!;
+  const fileAction = (action: Omit<DesignAction, "variants"> & Pick<Partial<DesignAction>, "variants">) => ({
+    ...toFile(action, ACTION_FIELDS),
+    type: action.type,
+    // A target that is no step of the draft is already an error in the designer; an id would mean nothing elsewhere.
+    parameters:
+      action.type === "branch"
+        ? swapTargets(action.parameters, (id) => keys.get(id))
+        : action.type === "wait_for"
+          ? swapWaitAfters(action.parameters, (after) => fileAfter(after as After, keys))
+          : action.parameters,
+    runTogether: action.parallelGroup ? group(action.parallelGroup) : undefined,
+    note: action.note || undefined,
+    timeLimit: fileLimit(action.timeLimit, keys),
+  });
   const file: ExperimentFile = {
     format: FORMAT,
     formatVersion: DOCUMENT_VERSION,
@@ -155,20 +175,8 @@ export function exportExperiment(draft: DesignDraft): string {
       name: step.name,
       after: fileAfter(step.after, keys),
       timeLimit: fileLimit(step.timeLimit, keys),
-      actions: step.actions.map((action) => ({
-        ...toFile(action, ACTION_FIELDS),
-        type: action.type,
-        // A target that is no step of the draft is already an error in the designer; an id would mean nothing elsewhere.
-        parameters:
-          action.type === "branch"
-            ? swapTargets(action.parameters, (id) => keys.get(id))
-            : action.type === "wait_for"
-              ? swapWaitAfters(action.parameters, (after) => fileAfter(after as After, keys))
-              : action.parameters,
-        runTogether: action.parallelGroup ? group(action.parallelGroup) : undefined,
-        note: action.note || undefined,
-        timeLimit: fileLimit(action.timeLimit, keys),
-      })),
+      actions: step.actions.map(fileAction),
+      variants: mapVariants(step.variants, (variant) => ({ actions: variant.actions.map(fileAction) })),
     })),
   };
   return `${write(file, "", false)}\n`;
@@ -238,6 +246,21 @@ export function draftOf(
   const ids = new Map(file.steps.map((step) => [`@${step.key}`, newId()]));
   const groups = new Map<string, string>();
   const group = (name: string) => groups.get(name) ?? groups.set(name, newId()).get(name)!;
+  const draftAction = (action: FileAction): DesignAction => ({
+    ...fromFile(action, ACTION_FIELDS),
+    id: newId(),
+    type: action.type,
+    name: action.name ?? "",
+    parameters:
+      action.type === "branch"
+        ? swapTargets(action.parameters ?? {}, (key) => ids.get(key))
+        : action.type === "wait_for"
+          ? swapWaitAfters(action.parameters ?? {}, (after) => draftAfter(after as string | undefined, ids))
+          : (action.parameters ?? {}),
+    parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
+    note: action.note || undefined,
+    timeLimit: draftLimit(action.timeLimit, ids),
+  });
   function* steps(): Generator<DesignStep, void, void> {
     for (const step of file.steps) {
       yield {
@@ -247,20 +270,10 @@ export function draftOf(
         description: step.description ?? "",
         after: draftAfter(step.after, ids),
         timeLimit: draftLimit(step.timeLimit, ids),
-        actions: step.actions.map((action) => ({
-          ...fromFile(action, ACTION_FIELDS),
-          id: newId(),
-          type: action.type,
-          name: action.name ?? "",
-          parameters:
-            action.type === "branch"
-              ? swapTargets(action.parameters ?? {}, (key) => ids.get(key))
-              : action.type === "wait_for"
-                ? swapWaitAfters(action.parameters ?? {}, (after) => draftAfter(after as string | undefined, ids))
-                : (action.parameters ?? {}),
-          parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
-          note: action.note || undefined,
-          timeLimit: draftLimit(action.timeLimit, ids),
+        actions: step.actions.map(draftAction),
+        variants: mapVariants(step.variants, (variant) => ({
+          // A step's variant's actions are its own: they carry no variants inside.
+          actions: variant.actions.map(({ variants: _, ...action }) => draftAction(action)),
         })),
       };
     }
@@ -292,6 +305,11 @@ function fromFile(value: object, names: Readonly<Record<string, string | null>>)
     name === null ? [] : [[field, (value as Record<string, unknown>)[name]] as const],
   );
   return Object.fromEntries(fields);
+}
+
+/** Each condition's variant made anew; none stays none (left out of the file and the draft). */
+function mapVariants<T, U>(variants: Record<string, T> | undefined, map: (variant: T) => U) {
+  return variants && Object.fromEntries(Object.entries(variants).map(([condition, v]) => [condition, map(v)]));
 }
 
 function fileAfter(after: After | undefined, keys: Map<string, string>): FileAfter | undefined {
@@ -491,36 +509,67 @@ function* check(file: unknown): Work<ImportProblem[]> {
     leadsTo(step.after, `$.steps[${s}].after`);
     timeLimit(step, `$.steps[${s}]`);
   });
+  /** Variants by condition name, each checked by `each` at its place. */
+  const variants = (owner: Record<string, unknown>, path: string, each: (variant: unknown, at: string) => void) => {
+    if (owner.variants === undefined || !object(owner.variants, `${path}.variants`, Object.keys(owner.variants ?? {})))
+      return;
+    const named = Object.entries(owner.variants);
+    if (!named.length) flag(`${path}.variants`, "must hold at least one condition's variant, or be left out");
+    for (const [condition, variant] of named) {
+      const at = member(`${path}.variants`, condition);
+      if (!condition.trim() || condition.length > MAX_NAME)
+        flag(at, `must be under a condition's name, of 1 to ${MAX_NAME} characters`);
+      each(variant, at);
+    }
+  };
+  const parameters = (owner: Record<string, unknown>, path: string) => {
+    if (owner.parameters === undefined) return;
+    if (!isObject(owner.parameters)) flag(`${path}.parameters`, "must be an object ({ … })");
+    else values(owner.parameters, `${path}.parameters`, 0);
+  };
+  const actionAt = (action: unknown, path: string, fields: string[]) => {
+    if (!object(action, path, fields)) return;
+    variants(action, path, (variant, at) => {
+      if (!object(variant, at, ["type", "parameters"])) return;
+      text(variant, "type", at, MAX_NAME, "optional");
+      parameters(variant, at);
+    });
+    text(action, "type", path, MAX_NAME, "required");
+    text(action, "name", path, MAX_NAME, "optional");
+    text(action, "note", path, MAX_NOTE, "optional");
+    text(action, "runTogether", path, MAX_NAME, "optional");
+    timeLimit(action, path);
+    if (action.runTogether === "")
+      flag(`${path}.runTogether`, "must be a non-empty string, or left out for an action that runs alone");
+    parameters(action, path);
+    if (isObject(action.parameters)) {
+      if (action.type === "wait_for" && Array.isArray(action.parameters.events))
+        action.parameters.events.forEach((event: unknown, e) => {
+          if (isObject(event)) leadsTo(event.after, `${path}.parameters.events[${e}].after`);
+        });
+      if (action.type === "branch" && isObject(action.parameters.targets)) {
+        for (const [option, target] of Object.entries(action.parameters.targets)) {
+          const at = member(`${path}.parameters.targets`, option);
+          if (typeof target !== "string" || !target.startsWith("@"))
+            flag(at, 'must name a step by "@" and its key, such as "@step-2"');
+          else if (!keys.has(target.slice(1))) flag(at, `"${target}" names no step of this file`);
+        }
+      }
+    }
+  };
   for (const [s, step] of file.steps.entries()) {
     yield;
     if (!isObject(step) || !list(step.actions, `$.steps[${s}].actions`, MAX_ACTIONS, "actions", "a step")) continue;
-    step.actions.forEach((action, a) => {
-      const path = `$.steps[${s}].actions[${a}]`;
-      if (!object(action, path, actionKeys)) return;
-      text(action, "type", path, MAX_NAME, "required");
-      text(action, "name", path, MAX_NAME, "optional");
-      text(action, "note", path, MAX_NOTE, "optional");
-      text(action, "runTogether", path, MAX_NAME, "optional");
-      timeLimit(action, path);
-      if (action.runTogether === "")
-        flag(`${path}.runTogether`, "must be a non-empty string, or left out for an action that runs alone");
-      if (action.parameters === undefined) return;
-      if (!isObject(action.parameters)) flag(`${path}.parameters`, "must be an object ({ … })");
-      else {
-        values(action.parameters, `${path}.parameters`, 0);
-        if (action.type === "wait_for" && Array.isArray(action.parameters.events))
-          action.parameters.events.forEach((event: unknown, e) => {
-            if (isObject(event)) leadsTo(event.after, `${path}.parameters.events[${e}].after`);
-          });
-        if (action.type === "branch" && isObject(action.parameters.targets)) {
-          for (const [option, target] of Object.entries(action.parameters.targets)) {
-            const at = member(`${path}.parameters.targets`, option);
-            if (typeof target !== "string" || !target.startsWith("@"))
-              flag(at, 'must name a step by "@" and its key, such as "@step-2"');
-            else if (!keys.has(target.slice(1))) flag(at, `"${target}" names no step of this file`);
-          }
-        }
-      }
+    step.actions.forEach((action, a) => actionAt(action, `$.steps[${s}].actions[${a}]`, actionKeys));
+    variants(step, `$.steps[${s}]`, (variant, at) => {
+      if (
+        !object(variant, at, ["actions"]) ||
+        !list(variant.actions, `${at}.actions`, MAX_ACTIONS, "actions", "a step")
+      )
+        return;
+      // A variant's actions have no variants of their own.
+      const own = actionKeys.filter((k) => k !== "variants");
+      variant.actions.forEach((action, a) => actionAt(action, `${at}.actions[${a}]`, own));
     });
   }
   return problems;

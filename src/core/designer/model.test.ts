@@ -149,6 +149,18 @@ describe("designer commands", () => {
       { seconds: 10, after: { to: "step", stepId: "end" } },
     ],
     ["rename experiment", commands.setDetails({ name: "Storyteller v2" }), (d) => d.name, "Storyteller v2"],
+    [
+      "vary an action for a condition",
+      commands.setVariant("tale", "Warm", { parameters: { text: "Once, friend" } }),
+      (d) => d.steps[1]!.actions[0]!.variants,
+      { Warm: { parameters: { text: "Once, friend" } } },
+    ],
+    [
+      "leave a condition to the shared action: no variant is none kept",
+      commands.setVariant("tale", "Warm", null),
+      (d) => "variants" in d.steps[1]!.actions[0]!,
+      false,
+    ],
   ];
 
   it.each(cases)("%s, and undo restores the draft exactly", (_label, command, read, expected) => {

@@ -1,7 +1,7 @@
 // The designer as a headless model: named commands over a draft, with undo
 // and redo. The page only renders a draft and sends commands, so every edit a
 // researcher can make is tested here without a browser.
-import { actionSchema, experimentFields, stepSchema, type TimeLimit } from "../protocol/document";
+import { type ActionVariant, actionSchema, experimentFields, stepSchema, type TimeLimit } from "../protocol/document";
 import type { DesignAction, DesignDraft, DesignStep, NewId, After } from "./types";
 import { WAITS_FOR_CHOICE } from "./blocks";
 
@@ -280,6 +280,18 @@ export const commands = {
     label: "set the answer's time limit",
     mergeKey: `answer-time-limit:${actionId}`,
     apply: (d) => replaceAction(d, actionId, ({ timeLimit: _, ...a }) => (limit ? { ...a, timeLimit: limit } : a)),
+  }),
+
+  /** The action as `condition` runs it; null: that condition runs the shared action. The last one gone, none is left. */
+  setVariant: (actionId: string, condition: string, variant: ActionVariant | null): Command => ({
+    label: `vary for ${condition}`,
+    mergeKey: `variant:${actionId}:${condition}`,
+    apply: (d) =>
+      replaceAction(d, actionId, ({ variants = {}, ...a }) => {
+        const { [condition]: _, ...others } = variants;
+        const next = variant ? { ...others, [condition]: variant } : others;
+        return Object.keys(next).length ? { ...a, variants: next } : a;
+      }),
   }),
 
   /** `undefined` removes the parameter, so the block's default applies. */

@@ -349,8 +349,14 @@ function runsInto(draft: DesignDraft, from: number, answers: Map<number, string>
 }
 
 function* robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>, channels?: Channels): Work<Placed[]> {
+  // A step's variant's actions are placed after the step's own; an action's variant is placed on its action.
   const position = new Map(
-    draft.steps.flatMap((step, s) => step.actions.map((action, a) => [action.id, { step, s, action, a }] as const)),
+    draft.steps.flatMap((step, s) => [
+      ...step.actions.map((action, a) => [action.id, { step, s, action, a }] as const),
+      ...Object.values(step.variants ?? {}).flatMap((variant) =>
+        variant.actions.map((action) => [action.id, { step, s, action, a: step.actions.length }] as const),
+      ),
+    ]),
   );
   const placed: Placed[] = [];
   // A step at a time: the report of 50,000 actions at once would hold the server for most of a second.
@@ -362,14 +368,14 @@ function* robotIssues(draft: DesignDraft, plugin: Plugin, reported: Set<string>,
 
   function placedOf(result: ActionPortability): Placed[] {
     const { step, s, action, a } = position.get(result.actionId)!;
-    const block = blockFor(action.type, plugin);
+    const block = blockFor(result.type, plugin);
     if (!block) return []; // already an unknown block
     const place = (issue: Omit<DesignIssue, "stepId" | "actionId">): Placed => ({
       step: s,
       action: a,
       issue: { ...issue, stepId: step.id, actionId: action.id },
     });
-    const name = actionLabel(action, block);
+    const name = `${actionLabel(action, block)}${result.condition === undefined ? "" : ` in condition "${result.condition}"`}`;
     if (result.status === "unsupported") {
       return [
         place({

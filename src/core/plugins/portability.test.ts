@@ -195,3 +195,40 @@ describe("the events a wait needs the robot to sense", () => {
     );
   });
 });
+
+describe("portability of each condition's variant", () => {
+  // The shared design beeps; one condition's variant of the action speaks, another's whole step does.
+  const varied: PortableExperiment = {
+    steps: [
+      {
+        id: "s",
+        actions: [
+          {
+            id: "go",
+            type: "turtlebot3-burger.beep",
+            parameters: { pattern: 2 },
+            variants: { Talkative: { type: "say", parameters: { text: "Here I come" } } },
+          },
+        ],
+        variants: { Polite: { actions: [{ id: "hi", type: "say", parameters: { text: "Hello" } }] } },
+      },
+    ],
+  };
+
+  it.each<[string, string[]]>([
+    [
+      "turtlebot3-burger.json",
+      ["go turtlebot3-burger.beep supported", "go say unsupported Talkative", "hi say unsupported Polite"],
+    ],
+    [
+      "nao6-ros2.json",
+      ["go turtlebot3-burger.beep unsupported", "go say supported Talkative", "hi say supported Polite"],
+    ],
+  ])("on %s: each action as each condition runs it", (file, rows) => {
+    const report = portability(varied, plugin(file));
+    expect(report.actions.map((a) => [a.actionId, a.type, a.status, a.condition].filter(Boolean).join(" "))).toEqual(
+      rows,
+    );
+    expect(report.portable).toBe(false);
+  });
+});

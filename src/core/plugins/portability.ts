@@ -9,13 +9,20 @@ import { resolveAction } from "./resolve";
 import { dispatchName, reachableNames } from "./topic";
 import type { Plugin, PluginAction } from "./types";
 import { finish, type Work } from "../work";
+import { everyVariant } from "../protocol/variants";
 
-/** The experiment shape the report reads: steps of typed actions. */
+/** The experiment shape the report reads: steps of typed actions, each with its variants per condition. */
 export interface PortableExperiment {
   steps: Array<{
     id?: string;
     name?: string;
-    actions: Array<{ id: string; type: string; parameters?: Record<string, unknown> }>;
+    actions: Array<{
+      id: string;
+      type: string;
+      parameters?: Record<string, unknown>;
+      variants?: Record<string, { type?: string; parameters: Record<string, unknown> }>;
+    }>;
+    variants?: Record<string, { actions: Array<{ id: string; type: string; parameters?: Record<string, unknown> }> }>;
   }>;
 }
 
@@ -25,6 +32,8 @@ export interface ActionPortability {
   stepIndex: number;
   actionId: string;
   type: string;
+  /** The condition whose variant this is; absent for the action every other condition runs. */
+  condition?: string;
   status: PortabilityStatus;
   /** Who carries it out: the robot, the trial runtime (pause, branch...), or the wizard's browser (play audio). */
   by: "robot" | "runtime" | "browser";
@@ -49,8 +58,14 @@ export interface PortabilityReport {
 
 export function portability(experiment: PortableExperiment, plugin: Plugin, channels?: Channels): PortabilityReport {
   const actions = experiment.steps.flatMap((step, stepIndex) =>
-    step.actions.map((action): ActionPortability => {
-      const base = { stepIndex, actionId: action.id, type: action.type, problems: [] as ParameterProblem[] };
+    everyVariant(step).map((action): ActionPortability => {
+      const base = {
+        stepIndex,
+        actionId: action.id,
+        type: action.type,
+        ...(action.condition !== undefined && { condition: action.condition }),
+        problems: [] as ParameterProblem[],
+      };
       const resolution = resolveAction(plugin, action.type, action.parameters ?? {});
       switch (resolution.status) {
         case "runtime": {

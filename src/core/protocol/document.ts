@@ -7,8 +7,8 @@
 // The document carries its format version (a snapshot's schemaVersion, a
 // file's formatVersion); ./versions.ts reads every earlier one. What the
 // issue's later parts add goes here, each a bump of DOCUMENT_VERSION with its
-// upgrade in ./versions.ts (time limits came in 3, bounded loops in 4):
-// - a variant per condition of an action or a step: a field of actionSchema and stepSchema.
+// upgrade in ./versions.ts (time limits came in 3, bounded loops in 4,
+// variants per condition in 5).
 import { z } from "zod";
 
 /**
@@ -92,7 +92,7 @@ export const timeLimitSchema = z.object({
   after: afterSchema,
 });
 
-export const actionSchema = z.object({
+const actionFields = z.object({
   id: key,
   type: named("Action type", DESIGN_LIMITS.name),
   name: plain("Action name", DESIGN_LIMITS.name).default(""),
@@ -114,6 +114,35 @@ export const actionSchema = z.object({
   timeLimit: timeLimitSchema.optional(),
 });
 
+/**
+ * Variants are keyed by the condition's name, not its row id: a name is unique
+ * in its study and is what the researcher reads, so an exchange file carried to
+ * another study (whose rows have other ids) and a published version read years
+ * later still say which condition each variant is for.
+ */
+const byCondition = <T extends z.ZodType>(variant: T) =>
+  z
+    .record(named("Condition name", DESIGN_LIMITS.name), variant, { error: "must name each variant's condition" })
+    .refine((variants) => Object.keys(variants).length > 0, "must hold at least one condition's variant")
+    .optional();
+
+/** What an action does in one condition: its parameters, and its type when the condition runs another action. */
+export const actionVariantSchema = z.object({
+  type: named("Action type", DESIGN_LIMITS.name).optional(),
+  parameters: actionFields.shape.parameters,
+});
+
+export const actionSchema = actionFields.extend({
+  /** The action in a named condition; a condition without one runs the action as above. Left out when none. */
+  variants: byCondition(actionVariantSchema),
+});
+
+const stepActions = <T extends z.ZodType>(action: T) =>
+  z.array(action).max(DESIGN_LIMITS.actionsPerStep, `A step can hold at most ${DESIGN_LIMITS.actionsPerStep} actions`);
+
+/** A step's actions in one condition, in place of its own (which carry no variants of their own there). */
+export const stepVariantSchema = z.object({ actions: stepActions(actionFields) });
+
 export const stepSchema = z.object({
   id: key,
   name: named("Step name", DESIGN_LIMITS.name),
@@ -122,9 +151,9 @@ export const stepSchema = z.object({
   after: afterSchema.optional(),
   /** How long the step may last from its entry before the trial moves on. Left out when none. */
   timeLimit: timeLimitSchema.optional(),
-  actions: z
-    .array(actionSchema)
-    .max(DESIGN_LIMITS.actionsPerStep, `A step can hold at most ${DESIGN_LIMITS.actionsPerStep} actions`),
+  actions: stepActions(actionSchema),
+  /** The step's actions in a named condition; a condition without one runs the step's own. Left out when none. */
+  variants: byCondition(stepVariantSchema),
 });
 
 export const experimentFields = z.object({
@@ -175,6 +204,8 @@ export type Onward = z.infer<typeof onwardSchema>;
 export type Loop = z.infer<typeof loopSchema>;
 export type TimeLimit = z.infer<typeof timeLimitSchema>;
 export type DesignAction = z.infer<typeof actionSchema>;
+export type ActionVariant = z.infer<typeof actionVariantSchema>;
+export type StepVariant = z.infer<typeof stepVariantSchema>;
 export type DesignStep = z.infer<typeof stepSchema>;
 /** What a researcher edits before publishing. Branch targets are step ids (parameters.targets[optionId]). */
 export type DesignDraft = z.infer<typeof draftSchema>;
@@ -186,9 +217,11 @@ export type DesignDraft = z.infer<typeof draftSchema>;
  * design without notes hashes as before). 3: a step and a record_answer may
  * have a time limit ("timeLimit", left out when none, so earlier documents
  * read and hash as they were). 4: an "after" may go back to a step a bounded
- * number of times (`{ to: "again", stepId, times, onward }`).
+ * number of times (`{ to: "again", stepId, times, onward }`). 5: an action
+ * and a step may vary by condition ("variants", by condition name, left out
+ * when none, likewise).
  */
-export const DOCUMENT_VERSION = 4;
+export const DOCUMENT_VERSION = 5;
 
 /** The published form: the draft under the experiment's id and the document's version, frozen. */
 export const snapshotSchema = z.object({
@@ -210,7 +243,10 @@ export interface TrialProtocol {
       Partial<Pick<DesignStep, "description">> & {
         actions: Array<
           Pick<DesignAction, "id" | "type" | "parameters"> &
-            Partial<Pick<DesignAction, "name" | "parallelGroup" | "note" | "timeLimit">>
+            Partial<Pick<DesignAction, "name" | "parallelGroup" | "note" | "timeLimit">> & {
+              /** The condition whose variant this is (./variants.ts); absent when the action is the shared one. */
+              variant?: string;
+            }
         >;
       }
   >;

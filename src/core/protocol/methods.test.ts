@@ -323,3 +323,36 @@ describe("the methods text of a wait for the robot's senses", () => {
     );
   });
 });
+
+describe("the methods text of an experiment whose conditions vary", () => {
+  const tutor = (variants: boolean): MethodsInput => ({
+    ...storyteller,
+    snapshot: snapshotOf({
+      id: "exp-3",
+      name: "Tutor",
+      description: "",
+      robotId: "nao6-ros2",
+      steps: [
+        step("hi", "Welcome", [say("h", "Hello.")]),
+        step("fb", "Feedback", [
+          {
+            ...say("f", "Well done."),
+            ...(variants && { variants: { Warm: { parameters: { text: "Well done, friend!" } } } }),
+          },
+        ]),
+      ],
+    }),
+  });
+
+  it("describes the shared procedure, then the one line each condition's variant changes", () => {
+    const text = methodsPlainText(tutor(true));
+    expect(text).toContain("2. Feedback. The robot said “Well done.”");
+    expect(text).toContain(
+      "Some actions differed by condition. These steps ran as follows in each condition named (numbered as above); every other condition ran the procedure above:\n\nIn Warm\n2. Feedback. The robot said “Well done, friend!” The trial then ended.\n\nQuestionnaires",
+    );
+  });
+
+  it("says nothing of variants when none is designed", () => {
+    expect(methodsPlainText(tutor(false))).not.toContain("differed by condition");
+  });
+});

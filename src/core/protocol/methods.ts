@@ -14,6 +14,7 @@ import { conditionWords } from "../plugins/senses";
 import type { RobotEvent } from "../plugins/types";
 import type { DesignAction, ProtocolSnapshot, TimeLimit } from "./document";
 import { type AwaitedEvent, awaitedEvents, exitBy, exitOf, timesWords } from "./flow";
+import { inCondition, variedParts } from "./variants";
 
 export interface MethodsInput {
   snapshot: ProtocolSnapshot;
@@ -101,6 +102,7 @@ function methods(input: MethodsInput, s: Style): string {
     s.heading("Procedure"),
     procedure(input, s),
     ...loops(input.snapshot, s),
+    ...variations(input, s),
     s.heading("Questionnaires"),
     questionnaires(input, s),
     s.heading("Conditions and assignment"),
@@ -145,6 +147,20 @@ export function loopSentences(snapshot: Pick<ProtocolSnapshot, "steps">, s: Styl
 function procedure(input: MethodsInput, s: Style): string {
   const { steps } = input.snapshot;
   return [`The protocol had ${plural(steps.length, "step")}.`, stepParagraphs(input, s).join("\n")].join("\n\n");
+}
+
+/** Each condition's variants, as the lines of its protocol that differ from the procedure above; none when nothing varies. */
+function variations(input: MethodsInput, s: Style): string[] {
+  const varied = [...new Set(variedParts(input.snapshot.steps).flatMap((part) => part.conditions))];
+  if (!varied.length) return [];
+  const shared = new Set(stepParagraphs(input, s));
+  const differing = varied.map((condition) => {
+    const own = stepParagraphs({ ...input, snapshot: inCondition(input.snapshot, condition) }, s);
+    return `${s.strong(`In ${condition}`)}\n${own.filter((line) => !shared.has(line)).join("\n")}`;
+  });
+  return [
+    `Some actions differed by condition. These steps ran as follows in each condition named (numbered as above); every other condition ran the procedure above:\n\n${differing.join("\n\n")}`,
+  ];
 }
 
 /** The steps' paragraphs, numbered: the lines two conditions' protocols are compared by. */

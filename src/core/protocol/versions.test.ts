@@ -98,11 +98,14 @@ describe("an exchange file of an earlier format", () => {
   });
 
   it.each<[number, string, string[]]>([
-    [1, "step", ["after", "timeLimit"]],
-    [1, "action", ["timeLimit"]],
-    [2, "step", ["timeLimit"]],
+    [1, "step", ["after", "timeLimit", "variants"]],
+    [1, "action", ["timeLimit", "variants"]],
+    [2, "step", ["timeLimit", "variants"]],
     // A loop is a value of "after", not a field: a file of version 3 holding one is refused by the after's own check.
-    [3, "step", []],
+    [3, "step", ["variants"]],
+    [3, "action", ["variants"]],
+    [4, "step", ["variants"]],
+    [4, "action", ["variants"]],
     [DOCUMENT_VERSION, "step", []],
   ])("a file of version %i may not carry, in a %s: %j", (version, place, fields) => {
     expect(fieldsAfter(version, place as "step" | "action")).toEqual(fields);

@@ -49,6 +49,13 @@ const UPGRADES: Upgrade[] = [
     snapshot: (snapshot) => snapshot,
     file: (file) => file,
   },
+  {
+    to: 5,
+    fileFields: { step: ["variants"], action: ["variants"] },
+    // Version 3 had no variants: every condition ran the one design, as a document without variants still does.
+    snapshot: (snapshot) => snapshot,
+    file: (file) => file,
+  },
 ];
 
 /** Every version this HRIStudio reads: 1 up to today's. */

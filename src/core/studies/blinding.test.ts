@@ -96,4 +96,17 @@ describe("who a blind hides what from", () => {
       protocol: { experiment: { robotId: "nao6-ros2" }, steps: [] },
     });
   });
+
+  it("keeps the actions as the trial runs them, never which condition's variant each is", () => {
+    const say = { id: "a1", type: "say", parameters: { text: "Well done, friend!" } };
+    const trial = {
+      protocol: {
+        experiment: { id: "e1", name: "Tutor", description: "", robotId: "nao6-ros2" },
+        steps: [{ id: "s1", name: "Feedback", actions: [{ ...say, variant: "Warm-tutor-QX7" }] }],
+      },
+    };
+    const blinded = blindTrial(trial);
+    expect(JSON.stringify(blinded)).not.toContain("Warm-tutor-QX7");
+    expect(blinded.protocol.steps[0]!.actions).toEqual([say]);
+  });
 });

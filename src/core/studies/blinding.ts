@@ -35,7 +35,9 @@ export function blindTrial<
     protocol?: unknown;
   },
 >(trial: T): T {
-  const protocol = trial.protocol as { experiment?: Record<string, unknown> } | undefined;
+  const protocol = trial.protocol as
+    | { experiment?: Record<string, unknown>; steps?: Array<{ actions: Array<{ variant?: string }> }> }
+    | undefined;
   return {
     ...trial,
     ...("experimentId" in trial ? { experimentId: null } : {}),
@@ -52,6 +54,11 @@ export function blindTrial<
               description: "",
               robotId: protocol.experiment.robotId,
             },
+            // The actions as the trial runs them, never which condition's variant each is.
+            steps: protocol.steps?.map((step) => ({
+              ...step,
+              actions: step.actions.map(({ variant: _, ...action }) => action),
+            })),
           },
         }
       : {}),

@@ -194,6 +194,30 @@ describe("the study's design decides what is said", () => {
     },
     { name: "no trial yet", facts: { ...study, robots: [] }, says: "No trial has run on a robot yet." },
     {
+      name: "two conditions of one experiment: each runs its own variant, the differing line",
+      facts: {
+        ...study,
+        conditions: [
+          condition({
+            name: "Warm",
+            experiment: "Tutor",
+            protocol: {
+              version: 1,
+              hash: "ccc333",
+              snapshot: snapshot("Tutor", [
+                greeting,
+                step("f", "Feedback", [
+                  { ...say("f1", "Well done."), variants: { Warm: { parameters: { text: "Great!" } } } },
+                ]),
+              ]),
+            },
+          }),
+          condition({ name: "Plain", experiment: "Tutor" }),
+        ].map((c, i, [warm]) => (i ? { ...c, protocol: warm!.protocol } : c)),
+      },
+      says: "Only in Warm\n2. Feedback. The robot said “Great!” The trial then ended.\n\nOnly in Plain\n2. Feedback. The robot said “Well done.” The trial then ended.",
+    },
+    {
       name: "observers and coders blind to condition",
       facts: { ...study, blinding: { ...study.blinding, conditionsFromObservers: true } },
       says: "Observers and coders were blind to condition",

@@ -20,6 +20,7 @@ import {
   type Style,
   stepParagraphs,
 } from "../protocol/methods";
+import { inCondition } from "../protocol/variants";
 import type { Instrument } from "../questionnaires/definition";
 import type { StudySettings } from "./settings";
 
@@ -246,7 +247,9 @@ function senses(f: StudyFacts, s: Style): string[] {
 
 function protocol(f: StudyFacts, s: Style): string[] {
   const described = f.conditions.filter((c) => c.protocol);
-  const lines = (c: ConditionFacts) => stepParagraphs(c.protocol!, s);
+  // Each condition's protocol as it runs it: conditions of one experiment differ in their variants.
+  const lines = (c: ConditionFacts) =>
+    stepParagraphs({ ...c.protocol!, snapshot: inCondition(c.protocol!.snapshot, c.name) }, s);
   const versionOf = (c: ConditionFacts) =>
     `${quote(s, c.name)} ran version ${c.protocol!.version} of ${quote(s, c.experiment)} (SHA-256 ${s.code(c.protocol!.hash)})`;
   if (!described.length) return ["No condition's experiment has been published yet."];

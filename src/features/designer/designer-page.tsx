@@ -22,6 +22,7 @@ import { libraryEntries } from "@/core/designer/library";
 import { commands, locateAction, locateStep } from "@/core/designer/model";
 import type { DesignDraft } from "@/core/designer/types";
 import { hasErrors, validateDesign } from "@/core/designer/validate";
+import { variantIssues } from "@/core/designer/variant-issues";
 import { abstractAction, audioPlayer, type Plugin } from "@/core/plugins";
 import { newId } from "@/lib/new-id";
 import { useTRPC } from "@/lib/trpc";
@@ -39,6 +40,7 @@ import { PropertiesPanel } from "./properties-panel";
 import { ProtocolTimeline, type Marks, type Selection } from "./protocol-timeline";
 import { RehearsalPreview } from "./rehearsal-preview";
 import { collision, TIMELINE_END, TimelineEnd } from "./timeline-end";
+import { useConditionNames } from "./use-conditions";
 import { useDesigner, type SaveState } from "./use-designer";
 import { VersionsPanel } from "./versions-panel";
 
@@ -81,7 +83,11 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const checked = useDeferredValue(draft);
   // Checked against this server's ways to the robot too: what it calls runnable, the runtime runs.
   const channels = robots.data?.channels;
-  const issues = useMemo(() => (checked ? validateDesign(checked, plugin, channels) : []), [checked, plugin, channels]);
+  const conditions = useConditionNames(designer.loaded.data?.studyId, experimentId);
+  const issues = useMemo(
+    () => (checked ? [...validateDesign(checked, plugin, channels), ...variantIssues(checked, conditions)] : []),
+    [checked, plugin, channels, conditions],
+  );
   const marks = useMemo(() => {
     const map = new Map<string, Marks>();
     for (const issue of issues) {
@@ -373,6 +379,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
                     <RehearsalPreview
                       draft={draft}
                       actionName={(a) => actionName(a, names)}
+                      conditions={conditions}
                       blocked={
                         errors
                           ? "Fix the problems listed on the right first: the preview walks the experiment as a trial would."
@@ -398,6 +405,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
                 robotName={robotName}
                 audioPlayer={audioPlayer(plugin)}
                 robotEvents={plugin?.events ?? []}
+                conditions={conditions}
               />
             </fieldset>
             <IssuesPanel

@@ -1,5 +1,5 @@
-// The note for the wizard in an action's properties, rendered by React as the
-// designer renders it: every action has one, holding what the draft holds.
+// An action's properties, rendered by React as the designer renders them: the
+// note for the wizard every action has, and its variants per condition.
 import { createElement } from "react";
 import { renderToStaticMarkup } from "react-dom/server";
 import { describe, expect, it } from "vitest";
@@ -17,7 +17,15 @@ const draft: DesignDraft = {
       name: "Greeting",
       description: "",
       actions: [
-        { id: "hi", type: "say", name: "", parameters: { text: "Hello" }, parallelGroup: null, note: "Smile first." },
+        {
+          id: "hi",
+          type: "say",
+          name: "",
+          parameters: { text: "Hello" },
+          parallelGroup: null,
+          note: "Smile first.",
+          variants: { Warm: { parameters: { text: "Hello, friend!" } } },
+        },
         { id: "wave", type: "wave", name: "", parameters: {}, parallelGroup: null },
         {
           id: "wait",
@@ -32,7 +40,7 @@ const draft: DesignDraft = {
   ],
 };
 
-const render = (actionId: string) =>
+const render = (actionId: string, conditions: string[] = []) =>
   renderToStaticMarkup(
     createElement(PropertiesPanel, {
       draft,
@@ -61,6 +69,7 @@ const render = (actionId: string) =>
           when: { kind: "pressed", field: "data", equals: true },
         },
       ],
+      conditions,
     }),
   );
 
@@ -86,5 +95,21 @@ describe("a Wait for's properties", () => {
     expect(html).toMatch(/<option value="s2" selected="">Go to step 2: Greet<\/option>/);
     expect(html).toContain("Add an event");
     expect(html).toContain("Nothing sensed in (seconds)");
+  });
+});
+
+describe("an action that varies by condition", () => {
+  it("shows one editor per condition side by side: the variant's own values, or the shared action", () => {
+    const html = render("hi", ["Warm", "Plain"]);
+    expect(html).toContain("Varies by condition");
+    const warm = html.slice(html.indexOf('aria-label="In “Warm”"'), html.indexOf('aria-label="In “Plain”"'));
+    expect(warm).toMatch(/<input type="checkbox"[^>]*checked=""/);
+    expect(warm).toContain('value="Hello, friend!"');
+    const plain = html.slice(html.indexOf('aria-label="In “Plain”"'));
+    expect(plain).toContain("Runs the action as above.");
+  });
+
+  it("has no such field in a study with no conditions on this experiment", () => {
+    expect(render("hi")).not.toContain("Varies by condition");
   });
 });

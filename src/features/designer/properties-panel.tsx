@@ -17,6 +17,7 @@ import { ThenField } from "./then-field";
 import { TimeLimitField } from "./time-limit-field";
 import type { Selection } from "./protocol-timeline";
 import { WaitEditor } from "./wait-editor";
+import { VariantsField } from "./variants-field";
 
 interface Props {
   draft: DesignDraft;
@@ -32,6 +33,8 @@ interface Props {
   audioPlayer: AudioPlayer;
   /** What the experiment's robot senses, for a "Wait for". */
   robotEvents: RobotEvent[];
+  /** The names of the study's conditions that run this experiment: an action may vary for each. */
+  conditions: string[];
 }
 
 export function PropertiesPanel(props: Props) {
@@ -148,6 +151,7 @@ function ActionProperties({
   robotName,
   audioPlayer,
   robotEvents,
+  conditions,
 }: Props & { action: DesignAction }) {
   const block = blockFor(action.type);
   const { step, index } = locateAction(draft, action.id);
@@ -196,6 +200,9 @@ function ActionProperties({
           problems={problems}
         />
       ) : null}
+      {block && !WAITS_FOR_CHOICE.has(action.type) && action.type !== "branch" && action.type !== "play_audio" && (
+        <VariantsField action={action} block={block} conditions={conditions} run={run} />
+      )}
       {!WAITS_FOR_CHOICE.has(action.type) && !WAITS_FOR_CHOICE.has(step.actions[index - 1]?.type ?? "") && (
         <label className="flex items-center gap-2 text-sm">
           <input

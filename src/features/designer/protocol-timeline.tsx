@@ -256,7 +256,8 @@ const ActionCard = memo(function ActionCard({
         <div className="min-w-0 flex-1">
           <div>
             <span className="font-medium">{action.name || label}</span>
-            {action.name && <span className="ml-1.5 text-xs text-slate-500">{label}</span>}
+            {/* slate-600: slate-500 is 4.4:1 on a selected block's brand-50 */}
+            {action.name && <span className="ml-1.5 text-xs text-slate-600">{label}</span>}
           </div>
           {summary && <div className="truncate text-xs text-slate-600">{summary}</div>}
         </div>

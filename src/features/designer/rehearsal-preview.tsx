@@ -2,8 +2,10 @@
 // A rehearsal without a trial: choose an answer for each question (or, where
 // there is a time limit, let the time run out) and read the exact sequence
 // the robot would perform, walked by the trial engine itself, so what is
-// shown here is what a trial of this draft would do.
+// shown here is what a trial of this draft would do, as the chosen condition
+// would run it (its variants).
 import { useMemo, useState } from "react";
+import { inCondition } from "@/core/protocol/variants";
 import type { DesignAction, DesignDraft } from "@/core/designer/types";
 import { answerOptions, rehearse } from "@/core/trial";
 import { Field, NativeSelect } from "@/ui/field";
@@ -15,8 +17,11 @@ export function RehearsalPreview({
   draft,
   actionName,
   blocked,
+  conditions,
 }: {
   draft: DesignDraft;
+  /** The study's conditions that run this experiment: the preview may run as one of them. */
+  conditions: string[];
   actionName: (action: DesignAction) => string;
   /** Why the draft cannot be walked yet (its errors), if so. */
   blocked: string | null;
@@ -38,14 +43,16 @@ export function RehearsalPreview({
     else next.delete(id);
     setRunOut(next);
   };
+  // "": the design as every condition without a variant runs it.
+  const [condition, setCondition] = useState("");
   const result = useMemo(() => {
     if (blocked) return null;
     try {
-      return { ok: true as const, rehearsal: rehearse(draft, answers, runOut) };
+      return { ok: true as const, rehearsal: rehearse(inCondition(draft, condition || null), answers, runOut) };
     } catch (e) {
       return { ok: false as const, reason: (e as Error).message };
     }
-  }, [draft, answers, runOut, blocked]);
+  }, [draft, answers, runOut, blocked, condition]);
 
   return (
     <section aria-label="Rehearsal preview" className="space-y-4">
@@ -53,6 +60,20 @@ export function RehearsalPreview({
         Choose an answer to each question, or let a time limit run out, to see what the robot would do, step by step.
         Nothing is sent to a robot.
       </p>
+      {conditions.length > 0 && (
+        <Field label="As condition">
+          {(p) => (
+            <NativeSelect {...p} value={condition} onChange={(e) => setCondition(e.target.value)}>
+              <option value="">The shared design (no condition's variants)</option>
+              {conditions.map((c) => (
+                <option key={c} value={c}>
+                  {c}
+                </option>
+              ))}
+            </NativeSelect>
+          )}
+        </Field>
+      )}
       {questions.length + limited.length > 0 && (
         <div className="grid gap-3 sm:grid-cols-2">
           {questions.map(({ step, action }) => (

@@ -13,6 +13,7 @@ import { Badge, EmptyState, Spinner } from "@/ui/surface";
 import { ListView } from "@/ui/list-view";
 import { Td, Th } from "@/ui/table";
 import { DuplicateExperimentDialog } from "./duplicate-experiment-dialog";
+import { RehearseButton } from "./rehearse-button";
 
 export function ExperimentsTab({ studyId, role }: { studyId: string; role: StudyRole }) {
   const trpc = useTRPC();
@@ -26,6 +27,10 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
     trpc.trials.rehearse.mutationOptions({ onSuccess: (trial) => router.push(`/trials/${trial.id}`) }),
   );
   const canRehearse = studyRoleMay(role, "trial.create");
+  // (A wizard blinded to conditions has no Experiments tab.)
+  const conditions = useQuery({ ...trpc.conditions.list.queryOptions({ studyId }), enabled: canRehearse });
+  const conditionsOf = (experimentId: string) =>
+    (conditions.data ?? []).filter((c) => c.experimentId === experimentId).map((c) => c.name);
   return (
     <div className="space-y-4">
       {edit && (
@@ -69,15 +74,12 @@ export function ExperimentsTab({ studyId, role }: { studyId: string; role: Study
                 </Link>
               </Button>
               {canRehearse && (
-                <Button
-                  variant="ghost"
-                  size="sm"
-                  aria-label={`Rehearse ${e.name}`}
-                  disabled={rehearse.isPending}
-                  onClick={() => rehearse.mutate({ experimentId: e.id })}
-                >
-                  Rehearse
-                </Button>
+                <RehearseButton
+                  experiment={e}
+                  conditions={conditionsOf(e.id)}
+                  pending={rehearse.isPending}
+                  onRehearse={(input) => rehearse.mutate(input)}
+                />
               )}
               {edit && <DuplicateExperimentDialog studyId={studyId} experiment={e} />}
               {edit && (

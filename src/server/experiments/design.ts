@@ -4,8 +4,9 @@ import { TRPCError } from "@trpc/server";
 import { asc, eq, inArray, sql } from "drizzle-orm";
 import type { PgTable } from "drizzle-orm/pg-core";
 import type { Database } from "@/store/client";
-import { actions, experiments, steps } from "@/store/schema";
+import { actions, conditions, experiments, steps } from "@/store/schema";
 import type { DesignStep } from "@/core/designer/types";
+import { idsInTwoSteps, unknownConditions } from "@/core/protocol/variants";
 import type { DesignInput } from "../api/routers/design-input";
 import { inTurn, LARGE_DESIGN } from "./turns";
 
@@ -46,10 +47,12 @@ export async function loadDesign(db: Database | Tx, experimentId: string) {
     steps: stepRows.map((s) => ({
       ...s,
       timeLimit: s.timeLimit ?? undefined,
+      variants: s.variants ?? undefined,
       actions: actionsOf.get(s.id)!.map((a) => ({
         ...a,
         parameters: a.parameters as Record<string, unknown>,
         timeLimit: a.timeLimit ?? undefined,
+        variants: a.variants ?? undefined,
       })),
     })),
   };
@@ -83,6 +86,7 @@ export function saveDesign(db: Database, input: DesignInput, userId: string) {
 async function saveNow(db: Database, input: DesignInput, userId: string) {
   return db.transaction(async (tx) => {
     await bumpRevision(tx, input.experimentId, userId, input.baseRevision);
+    await assertVariantsOwn(tx, input);
     if (input.details && Object.keys(input.details).length) {
       const [before] = await tx
         .select({ robotId: experiments.robotId })
@@ -154,6 +158,7 @@ export async function insertSteps(tx: Tx, experimentId: string, draftSteps: Iter
       description: s.description,
       after: s.after ?? { to: "next" },
       time_limit: s.timeLimit,
+      variants: s.variants,
     });
     for (const [at, a] of s.actions.entries()) {
       actionRows.push({
@@ -166,6 +171,7 @@ export async function insertSteps(tx: Tx, experimentId: string, draftSteps: Iter
         parallel_group: a.parallelGroup,
         note: a.note ?? "",
         time_limit: a.timeLimit,
+        variants: a.variants,
       });
     }
     if (actionRows.length < ROWS_PER_INSERT) continue;
@@ -181,9 +187,9 @@ export async function insertSteps(tx: Tx, experimentId: string, draftSteps: Iter
 /** Rows per insert (a step's actions may take one a little past it): a few milliseconds of work each. */
 const ROWS_PER_INSERT = 1000;
 const STEP_COLUMNS =
-  "id text, experiment_id text, position integer, name text, description text, after jsonb, time_limit jsonb";
+  "id text, experiment_id text, position integer, name text, description text, after jsonb, time_limit jsonb, variants jsonb";
 const ACTION_COLUMNS =
-  "id text, step_id text, position integer, type text, name text, parameters jsonb, parallel_group text, note text, time_limit jsonb";
+  "id text, step_id text, position integer, type text, name text, parameters jsonb, parallel_group text, note text, time_limit jsonb, variants jsonb";
 
 /**
  * Inserts rows (keys named as `columns`) as one JSON text that PostgreSQL
@@ -199,6 +205,29 @@ async function insertRows(tx: Tx, table: PgTable, columns: string, rows: object[
   await tx.execute(
     sql`insert into ${table} (${sql.raw(names)}) select * from jsonb_to_recordset(${JSON.stringify(rows)}::jsonb) as r(${sql.raw(columns)})`,
   );
+}
+
+/** A variant is for a condition of this study that runs this experiment: any other name would never run. */
+async function assertVariantsOwn(tx: Tx, input: DesignInput) {
+  const own = await tx
+    .select({ name: conditions.name })
+    .from(conditions)
+    .where(eq(conditions.experimentId, input.experimentId));
+  const unknown = unknownConditions(
+    input.steps,
+    own.map((c) => c.name),
+  );
+  const repeated = idsInTwoSteps(input.steps);
+  if (repeated.length)
+    throw new TRPCError({
+      code: "BAD_REQUEST",
+      message: `Please correct: variants: the action ${repeated.map((id) => `"${id}"`).join(", ")} is in two steps; a step's variant needs actions of its own`,
+    });
+  if (unknown.length)
+    throw new TRPCError({
+      code: "BAD_REQUEST",
+      message: `Please correct: variants: ${unknown.map((name) => `"${name}"`).join(", ")} ${unknown.length === 1 ? "is not a condition of this study that runs" : "are not conditions of this study that run"} this experiment`,
+    });
 }
 
 /** A client may name a new block's id itself (so branches can point at it), but only a fresh UUID. */

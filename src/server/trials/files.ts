@@ -31,6 +31,8 @@ import { eventPages, eventsOfTrials, lastSeqOf } from "@/store/event-store";
 import { lastSampleOf, samplePages, samplesOfTrials } from "@/store/samples";
 import type { ActionNames } from "@/core/designer/action-name";
 import { trialPlugin } from "@/robots/trial-plugin";
+import { inCondition } from "@/core/protocol/variants";
+import { conditionsOfTrials } from "@/store/trial-condition";
 import { trialActionNames } from "./action-names";
 import { annotationPages, annotationsOf } from "./annotations";
 import { trialMcap } from "./mcap";
@@ -72,6 +74,10 @@ async function trialsOf(db: Database, trialIds: string[]) {
     db,
     trialRows.flatMap((t) => [t.wizardId, t.createdBy]),
   );
+  const conditionOf = await conditionsOfTrials(
+    db,
+    trialRows.filter((t) => !t.isRehearsal).map((t) => t.id),
+  );
   const namesByRun = new Map<string, Promise<ActionNames>>();
   const order = new Map(trialIds.map((id, i) => [id, i]));
   return Promise.all(
@@ -79,9 +85,11 @@ async function trialsOf(db: Database, trialIds: string[]) {
       .sort((a, b) => order.get(a.id)! - order.get(b.id)!)
       .map(async (trial) => {
         const version = versions.find((v) => v.id === trial.versionId);
-        const protocol = version?.snapshot ?? trial.rehearsalSnapshot;
+        const stored = version?.snapshot ?? trial.rehearsalSnapshot;
         // Every trial runs a published version or, for a rehearsal, the draft frozen when it began.
-        if (!protocol) throw new Error(`Trial ${trial.id} has neither a version nor a rehearsal snapshot`);
+        if (!stored) throw new Error(`Trial ${trial.id} has neither a version nor a rehearsal snapshot`);
+        // As its condition ran it: each action of a condition's variant names the condition (the version's hash keeps them all).
+        const protocol = inCondition(stored, conditionOf.get(trial.id) ?? null);
         // Trials of one version run with one plugin document: its names are read once.
         const run = trial.versionId ?? `draft:${trial.experimentId}`;
         if (!namesByRun.has(run)) namesByRun.set(run, trialActionNames(db, trial.id));

@@ -1,6 +1,6 @@
 import { sql } from "drizzle-orm";
 import { index, integer, jsonb, pgTable, text, timestamp, uniqueIndex } from "drizzle-orm/pg-core";
-import type { After, TimeLimit } from "../../core/protocol/document";
+import type { ActionVariant, After, StepVariant, TimeLimit } from "../../core/protocol/document";
 import { user } from "./auth";
 import { createdAt, id, snapshot } from "./columns";
 import { studies } from "./studies";
@@ -43,6 +43,8 @@ export const steps = pgTable(
     after: jsonb("after").$type<After>().notNull().default({ to: "next" }),
     // How long the step may last, and where it leads then; null: no limit.
     timeLimit: jsonb("time_limit").$type<TimeLimit>(),
+    // The step's actions per condition, by the condition's name; null: the same in every condition.
+    variants: jsonb("variants").$type<Record<string, StepVariant>>(),
   },
   (t) => [index("steps_experiment_idx").on(t.experimentId, t.position)],
 );
@@ -64,6 +66,8 @@ export const actions = pgTable(
     note: text("note").notNull().default(""),
     // A record_answer's "no answer in N s" and where it leads then; null: no limit.
     timeLimit: jsonb("time_limit").$type<TimeLimit>(),
+    // The action per condition (its parameters, maybe its type), by the condition's name; null: the same in every condition.
+    variants: jsonb("variants").$type<Record<string, ActionVariant>>(),
   },
   (t) => [index("actions_step_idx").on(t.stepId, t.position)],
 );

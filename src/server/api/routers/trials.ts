@@ -7,9 +7,20 @@ import { studyRoleMay } from "@/core/access/policy";
 import { blindTrial } from "@/core/studies/blinding";
 import type { Instrument } from "@/core/questionnaires/definition";
 import { publishedScores } from "@/core/questionnaires/published-scores";
-import { annotations, experimentVersions, experiments, participants, trialSamples, trials, user } from "@/store/schema";
+import {
+  annotations,
+  conditions,
+  experimentVersions,
+  experiments,
+  participants,
+  trialSamples,
+  trials,
+  user,
+} from "@/store/schema";
 import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "@/core/protocol/snapshot";
+import { inCondition } from "@/core/protocol/variants";
+import { conditionOfTrial } from "@/store/trial-condition";
 import { trialLog } from "@/store/event-store";
 import { trialFile } from "../../trials/files";
 import { trialActionNames } from "../../trials/action-names";
@@ -82,21 +93,29 @@ export const trialsRouter = router({
     return ctx.blinding.conditionsHidden ? blindTrial(row!) : row!;
   }),
 
-  /** A rehearsal runs the current draft (no published version needed), marked as rehearsal everywhere. */
-  rehearse: studyProcedure("trial.create", "experiment", z.object({ experimentId: id })).mutation(async ({ ctx }) => {
+  /**
+   * A rehearsal runs the current draft (no published version needed), marked as rehearsal everywhere;
+   * "as" a condition of this experiment, it runs that condition's variants (frozen so into its snapshot).
+   */
+  rehearse: studyProcedure(
+    "trial.create",
+    "experiment",
+    z.object({ experimentId: id, condition: text("Condition", 200).optional() }),
+  ).mutation(async ({ ctx, input }) => {
     const design = await loadDesign(ctx.db, ctx.row.id);
     if (design.steps.length === 0)
       throw new TRPCError({
         code: "BAD_REQUEST",
         message: "This experiment has no steps yet: add at least one before rehearsing.",
       });
+    if (input.condition !== undefined) await assertConditionOf(ctx.db, design.id, input.condition);
     const [row] = await ctx.db
       .insert(trials)
       .values({
         studyId: design.studyId,
         experimentId: design.id,
         isRehearsal: true,
-        rehearsalSnapshot: snapshotOf(design),
+        rehearsalSnapshot: inCondition(snapshotOf(design), input.condition ?? null),
         wizardId: ctx.user.id,
         createdBy: ctx.user.id,
       })
@@ -271,8 +290,24 @@ export const trialsRouter = router({
       .leftJoin(user, eq(user.id, trials.wizardId))
       .leftJoin(creator, eq(creator.id, trials.createdBy))
       .where(eq(trials.id, ctx.row.id));
+    // The protocol as this trial runs it: its condition's variants (a rehearsal's were frozen as it began).
+    const condition = row!.isRehearsal ? null : await conditionOfTrial(ctx.db, ctx.row.id);
+    const protocol = row!.protocol && inCondition(row!.protocol, condition);
     // The library's names of the robot's own actions, for actions without a label.
-    const trial = { ...row!, actionNames: await trialActionNames(ctx.db, ctx.row.id), myRole: ctx.studyRole };
+    const trial = { ...row!, protocol, actionNames: await trialActionNames(ctx.db, ctx.row.id), myRole: ctx.studyRole };
     return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
   }),
 });
+
+/** A rehearsal "as" a condition names one of this study's conditions that run this experiment. */
+async function assertConditionOf(db: Parameters<typeof conditionOfTrial>[0], experimentId: string, name: string) {
+  const [own] = await db
+    .select({ id: conditions.id })
+    .from(conditions)
+    .where(and(eq(conditions.experimentId, experimentId), eq(conditions.name, name)));
+  if (!own)
+    throw new TRPCError({
+      code: "BAD_REQUEST",
+      message: `Please correct: condition: "${name}" is not a condition of this study that runs this experiment`,
+    });
+}
