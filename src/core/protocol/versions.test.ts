@@ -17,6 +17,8 @@ describe("a version published before today's format", () => {
     ["storyteller.v1.snapshot.json", 1],
     ["storyteller.v2.snapshot.json", 2],
     ["quiz.v2.snapshot.json", 2],
+    ["quiz.v3.snapshot.json", 3],
+    ["quiz.v4.snapshot.json", 4],
   ])("%s (version %i) still verifies, reads as today's shape and leaves its stored value alone", (name, version) => {
     const { hash, snapshot } = published(name);
     expect(snapshot.schemaVersion).toBe(version);
@@ -29,7 +31,7 @@ describe("a version published before today's format", () => {
     expect(hashCanonical(snapshot)).toBe(hash);
   });
 
-  it.each(["storyteller.v2.snapshot.json", "quiz.v2.snapshot.json"])(
+  it.each(["storyteller.v2.snapshot.json", "quiz.v2.snapshot.json", "quiz.v3.snapshot.json", "quiz.v4.snapshot.json"])(
     "%s: the same design published today hashes as it did, but for the version it names",
     (name) => {
       const { hash, snapshot } = published(name);
@@ -79,6 +81,8 @@ describe("an exchange file of an earlier format", () => {
     ["storyteller.v1.hristudio.json", "storyteller.v2.hristudio.json"],
     ["storyteller.v2.hristudio.json", "storyteller.v2.hristudio.json"],
     ["quiz.v2.hristudio.json", "quiz.v2.hristudio.json"],
+    ["quiz.v3.hristudio.json", "quiz.v3.hristudio.json"],
+    ["quiz.v4.hristudio.json", "quiz.v4.hristudio.json"],
   ])("%s imports, and exports today as %s did", (name, written) => {
     const imported = importExperiment(fixture(name), ids());
     if (!imported.ok) throw new Error(JSON.stringify(imported.problems));
