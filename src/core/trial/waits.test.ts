@@ -137,7 +137,7 @@ describe("Wait for", () => {
       "next does not pass a pending wait",
       protocol,
       [...waiting, { kind: "next" }],
-      "The trial waits for the robot to sense head_touched or heard_ready: go on to move on without it.",
+      "The trial waits for the robot to sense “head_touched” or “heard_ready”: go on to move on without it.",
     ],
     [
       "go on with nothing waiting is refused",
@@ -188,6 +188,22 @@ describe("Wait for", () => {
       ok: false,
       reason: "This trial has already ended.",
     });
+  });
+
+  it.each([
+    [
+      "by its plugin's names",
+      { head_touched: "Head touched", heard_ready: 'Heard "ready"' },
+      'The trial waits for the robot to sense “Head touched” or “Heard "ready"”: go on to move on without it.',
+    ],
+    [
+      "by id where the plugin names none",
+      { head_touched: "Head touched" },
+      "The trial waits for the robot to sense “Head touched” or “heard_ready”: go on to move on without it.",
+    ],
+  ])("next at a pending wait names the awaited events %s", (_, names, reason) => {
+    const { log } = simulate(protocol, waiting);
+    expect(decide(protocol, fold(protocol, log), { kind: "next" }, names)).toEqual({ ok: false, reason });
   });
 
   it("keeps the message that matched in the log", () => {

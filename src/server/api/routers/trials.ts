@@ -12,7 +12,7 @@ import { loadDesign } from "../../experiments/design";
 import { snapshotOf } from "@/core/protocol/snapshot";
 import { trialLog } from "@/store/event-store";
 import { trialFile } from "../../trials/files";
-import { trialActionNames } from "../../trials/action-names";
+import { trialPluginNames } from "../../trials/action-names";
 import { assertMayTakePart } from "../../studies/consent-gate";
 import { assertNotWithdrawn } from "../../trials/withdrawn";
 import { assertRunsTrials } from "../../studies/status-gate";
@@ -271,8 +271,8 @@ export const trialsRouter = router({
       .leftJoin(user, eq(user.id, trials.wizardId))
       .leftJoin(creator, eq(creator.id, trials.createdBy))
       .where(eq(trials.id, ctx.row.id));
-    // The library's names of the robot's own actions, for actions without a label.
-    const trial = { ...row!, actionNames: await trialActionNames(ctx.db, ctx.row.id), myRole: ctx.studyRole };
+    // The library's names of the robot's own actions (for actions without a label) and of its events.
+    const trial = { ...row!, ...(await trialPluginNames(ctx.db, ctx.row.id)), myRole: ctx.studyRole };
     return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
   }),
 });
