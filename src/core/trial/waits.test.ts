@@ -211,7 +211,17 @@ describe("Wait for", () => {
     expect(log.find((e) => e.type === "robot.sensed")).toMatchObject({ message: { data: true } });
   });
 
-  it("a rehearsal preview takes the wizard's go on: what the robot senses is not known before a trial", () => {
-    expect(rehearse(protocol).steps.map((s) => s.stepId)).toEqual(["ask", "bye"]);
+  it.each([
+    ["nothing chosen: the wizard's go on", {}, [], ["ask", "bye"], undefined],
+    ["the head touched: its edge", { wait: "touch" }, [], ["ask", "greet"], "head_touched"],
+    ["'ready' heard: its edge, the end", { wait: "ready" }, [], ["ask"], "heard_ready"],
+    ["nothing sensed, the time let run out: the limit's edge", {}, ["wait"], ["ask", "prompt"], undefined],
+    ["an event chosen wins over the time running out", { wait: "touch" }, ["wait"], ["ask", "greet"], "head_touched"],
+    ["a choice the wait does not offer: the wizard's go on", { wait: "elsewhere" }, [], ["ask", "bye"], undefined],
+  ])("a rehearsal at a wait: %s", (_, chosen: Record<string, string>, runOut: string[], path, event) => {
+    const { steps, ending } = rehearse(protocol, chosen, new Set(runOut));
+    expect(steps.map((s) => s.stepId)).toEqual(path);
+    expect(steps[0]!.sensed?.event).toBe(event);
+    expect(ending).toBe("completed");
   });
 });
