@@ -245,7 +245,17 @@ describe("the fidelity report of waits for the robot's senses", () => {
 
   it("counts which moves the robot's senses made, which a timer, which the wizard", () => {
     const r = fidelityReport(waits, simulate(waits, commands).log);
-    expect(r.moves).toEqual({ start: 1, next: 0, answer: 0, jump: 0, timer: 1, loop: 0, bound: 0, senses: 1, go_on: 1 });
+    expect(r.moves).toEqual({
+      start: 1,
+      next: 0,
+      answer: 0,
+      jump: 0,
+      timer: 1,
+      loop: 0,
+      bound: 0,
+      senses: 1,
+      go_on: 1,
+    });
     // A wait ended by the senses or the wizard was carried out as designed; one its limit ended, as an unanswered question, not.
     expect(r.actions.map((a) => [a.actionId, a.outcome])).toEqual([
       ["wa", "executed"],

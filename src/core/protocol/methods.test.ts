@@ -319,7 +319,7 @@ describe("the methods text of a wait for the robot's senses", () => {
 
   it("names each event awaited with its condition, where it led, the time limit and the wizard's go on", () => {
     expect(methodsPlainText(waiting)).toContain(
-      '1. Ask. The robot said “Touch my head to start.” Then the trial waited for the robot to sense “Head touched” (a touch on the head\'s front sensor; its field data became true, once per press), which led to “Greet”, or “heard_ready”, which ended the trial; if nothing was sensed within 20 seconds, the trial led to “Prompt”. The wizard could also go on without it.',
+      "1. Ask. The robot said “Touch my head to start.” Then the trial waited for the robot to sense “Head touched” (a touch on the head's front sensor; its field data became true, once per press), which led to “Greet”, or “heard_ready”, which ended the trial; if nothing was sensed within 20 seconds, the trial led to “Prompt”. The wizard could also go on without it.",
     );
   });
 });

@@ -258,7 +258,7 @@ describe("the study's methods text of waits for the robot's senses", () => {
   it("has a Robot senses section naming each event awaited, its condition and its step", () => {
     const text = studyMethodsPlainText({ ...study, conditions: [waiting, still] });
     expect(text).toContain(
-      'Robot senses\n\nIn “Touch”, the trial waited for the robot to sense “Head touched” (its field data became true, once per press) in “Wait for a touch”; the wizard could go on without it.',
+      "Robot senses\n\nIn “Touch”, the trial waited for the robot to sense “Head touched” (its field data became true, once per press) in “Wait for a touch”; the wizard could go on without it.",
     );
   });
 });
