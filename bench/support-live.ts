@@ -242,6 +242,8 @@ export async function startLiveBench({
     db,
     newTrial,
     socket,
+    /** The simulated robot: its address (a Robot page's, to fire its senses) and what it has received. */
+    sim,
     /** The robot's listeners by the text it hears: each is told when that text arrives. */
     heard,
     wizardId: wizardUser.id,

@@ -29,14 +29,20 @@ export function watchSenses(
     byTopic.set(key, [...(byTopic.get(key) ?? []), event]);
   }
   const stops = [...byTopic.values()].map((events) =>
-    transport.subscribe(events[0]!.topic, events[0]!.messageType, (message) => {
-      const at = messageTime(message, now());
-      for (const event of events) {
-        const step = sense(event, states.get(event.id) ?? UNSENSED, message, at);
-        states.set(event.id, step.state);
-        if (step.sensed) onSensed(step.sensed);
-      }
-    }),
+    transport.subscribe(
+      events[0]!.topic,
+      events[0]!.messageType,
+      (message) => {
+        const at = messageTime(message, now());
+        for (const event of events) {
+          const step = sense(event, states.get(event.id) ?? UNSENSED, message, at);
+          states.set(event.id, step.state);
+          if (step.sensed) onSensed(step.sensed);
+        }
+      },
+      // A touch topic is quiet until someone touches: its silence is no fault to report.
+      { kind: "event" },
+    ),
   );
   return () => stops.forEach((stop) => stop());
 }

@@ -20,6 +20,7 @@ import { areTheseEvents } from "@/core/trial/landed";
 import { CONTROL_TYPES } from "@/core/trial/types";
 import { droppedReason, staleness } from "@/core/trial/freshness";
 import type { CameraFrame, RobotLink, RobotReport } from "./robot";
+import { type EventNames, NO_EVENT_NAMES } from "@/core/plugins/event-names";
 import type { Sensed } from "@/core/plugins/types";
 import { sampleRecorder } from "./samples";
 import { TrialTimers } from "./trial-timers";
@@ -177,6 +178,8 @@ export class TrialHost {
   private readonly liveListeners = new Set<(state: LiveRobotState) => void>();
   /** The registered robot's name, shown to the wizard before the trial starts. */
   robotName: string | null = null;
+  /** The plugin's names of its robot's events, for the wizard's refusals ("Head touched", not head_touched). */
+  eventNames: EventNames = NO_EVENT_NAMES;
   /** Wraps the start: the runtime refuses one whose robot another live trial drives (trial-hosts.ts). */
   private startGuard = (start: () => Promise<CommandResult>) => start();
 
@@ -387,7 +390,7 @@ export class TrialHost {
     if (before) return { ok: false, reason: before === "stopped" ? NOT_CARRIED_OUT : LOG_UNAVAILABLE };
     const stale = staleness(command.kind, moment, Date.now());
     if (stale) return { ok: false, reason: this.dropped(command.kind, droppedReason(QUEUE, stale)) };
-    const decision = decide(this.protocol, this.state, command);
+    const decision = decide(this.protocol, this.state, command, this.eventNames);
     if (!decision.ok) return decision;
     const written = await this.write(() => decision.events, actorId, requestId);
     const halting = command.kind === "emergency_stop" || command.kind === "abort";

@@ -23,7 +23,7 @@
 // Each send also waits until the process knows it still holds the lock
 // (`fencedRobot`): a process thawed after a freeze asks before it sends.
 import { eq } from "drizzle-orm";
-import { checkingStart, type Plugin } from "@/core/plugins";
+import { checkingStart, eventNamesOf, type Plugin } from "@/core/plugins";
 import { sliced } from "@/store/sliced";
 import { conditionOfTrial } from "@/store/trial-condition";
 import { inCondition } from "@/core/protocol/variants";
@@ -186,6 +186,7 @@ export function trialHosts(
       letGo(trialId);
       throw error;
     }
+    host.eventNames = eventNamesOf(chosen.plugin);
     if (registered) {
       const own = registered;
       host.robotName = own.name;

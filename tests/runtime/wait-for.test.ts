@@ -153,7 +153,9 @@ describe("the robot's senses on a live trial", () => {
   });
 
   it("a published trial waiting for an event its robot does not sense is refused at its start, with the reason", async () => {
-    const trialId = await trialOf(db, { studyId, wizardId, snapshot: protocol, withParticipant: true });
-    await expect(hosts.get(trialId)).rejects.toThrow(/does not sense the event "head_touched"/);
+    // The simulated robot senses what a NAO6 does: a wagged tail is no event of its.
+    const wagged = JSON.parse(JSON.stringify(protocol).replace('"head_touched"', '"tail_wagged"')) as ProtocolSnapshot;
+    const trialId = await trialOf(db, { studyId, wizardId, snapshot: wagged, withParticipant: true });
+    await expect(hosts.get(trialId)).rejects.toThrow(/does not sense "tail_wagged"/);
   });
 });

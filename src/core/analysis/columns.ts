@@ -86,6 +86,12 @@ const EVENT: Columns<typeof EVENT_COLUMNS> = {
     optional: true,
     description: "The participant's answer, as the wizard recorded it (its label), on an answer.recorded row.",
   },
+  sensed: {
+    type: "text",
+    optional: true,
+    description:
+      "What the robot sensed (the id of its plugin's event, e.g. head_touched), on a robot.sensed row; its time and message are in the payload.",
+  },
   deviation: {
     type: "text",
     optional: true,

@@ -72,14 +72,15 @@ describe("the events CSV", () => {
       "action_name",
       "variant",
       "answer",
+      "sensed",
       "deviation",
       "rel_ms",
       "server_time",
       "actor_id",
       "payload",
     ]);
-    expect(rows.map((r) => JSON.parse(r[16]!))).toEqual(JSON.parse(JSON.stringify(events)));
-    expect(rows[1]!.slice(0, 16)).toEqual([
+    expect(rows.map((r) => JSON.parse(r[17]!))).toEqual(JSON.parse(JSON.stringify(events)));
+    expect(rows[1]!.slice(0, 17)).toEqual([
       "t1",
       "Wim Wizard",
       "Rita Researcher",
@@ -90,6 +91,7 @@ describe("the events CSV", () => {
       "say",
       "Welcome",
       'Say: She said "hi", then left; {{x}}…',
+      "",
       "",
       "",
       "unscripted",
@@ -126,6 +128,30 @@ describe("the events CSV's answer column", () => {
   ])("%s", (_, row, answer) => {
     const [header, ...rows] = parseCsv(eventsCsv("t1", [...events, answered], people, names));
     expect(rows[row]![header!.indexOf("answer")]).toBe(answer);
+  });
+});
+
+/** The robot sensing its head touched: its time and message stay in the payload. */
+const sensed: StoredEvent = {
+  seq: 4,
+  type: "robot.sensed",
+  relMs: 55,
+  trialId: "t1",
+  serverTime: new Date("2026-01-01T10:00:00.055Z"),
+  actorId: null,
+  event: "head_touched",
+  at: 1_767_261_600_050,
+  message: { button: 2, state: 1 },
+};
+
+describe("the events CSV's sensed column", () => {
+  it.each([
+    ["what the robot sensed: its event's id", 3, "head_touched"],
+    ["a recorded answer: empty", 2, ""],
+    ["any other event: empty", 1, ""],
+  ])("%s", (_, row, event) => {
+    const [header, ...rows] = parseCsv(eventsCsv("t1", [...events, answered, sensed], people, names));
+    expect(rows[row]![header!.indexOf("sensed")]).toBe(event);
   });
 });
 

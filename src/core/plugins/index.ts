@@ -23,6 +23,7 @@ export {
   type PortabilityReport,
   type ActionPortability,
 } from "./portability";
+export { eventName, eventNamesOf, NO_EVENT_NAMES, type EventNames } from "./event-names";
 export { messageTime, sense, UNSENSED, type SenseState, type SenseStep } from "./senses";
 export { channelOf, isSshCommand, unreachable, type Channel, type Channels, type Reachable } from "./reach";
 export { outgoingFor, type Outgoing } from "./payload";

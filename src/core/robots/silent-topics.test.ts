@@ -17,6 +17,13 @@ const battery: WatchedTopic = {
   messageType: "sensor_msgs/msg/BatteryState",
   throttleRate: undefined,
 };
+const touch: WatchedTopic = {
+  ...joints,
+  topic: "/head_touch",
+  messageType: "naoqi_bridge_msgs/msg/HeadTouch",
+  kind: "event",
+  throttleRate: undefined,
+};
 const done: WatchedTopic = { ...joints, topic: "/speech_done", messageType: "std_msgs/msg/String", kind: "completion" };
 
 describe("which declared topics are silent, and why", () => {
@@ -60,6 +67,14 @@ describe("which declared topics are silent, and why", () => {
       "The robot never sent /joint_states (expected about every 0.1 s): the bridge refused to subscribe to it as std_msgs/String: Tried to register topic /joint_states with type std_msgs/String but it is already established with type sensor_msgs/JointState.",
     ],
     ["a completion topic no action has waited on", done, 60_000, null],
+    ["an event topic never heard: nothing was sensed yet, no fault", touch, 60_000, null],
+    ["an event topic that spoke, then fell quiet", { ...touch, lastAt: 1_000 }, 60_000, null],
+    [
+      "an event topic the bridge refused",
+      { ...touch, refused: "naoqi_bridge_msgs/msg/HeadTouch is not a valid type string" },
+      1,
+      "The robot never sent /head_touch (expected when the robot senses something): the bridge refused its type naoqi_bridge_msgs/msg/HeadTouch — a ROS 1 bridge names it naoqi_bridge_msgs/HeadTouch.",
+    ],
     [
       "a completion topic an action waited on to its timeout, never heard",
       { ...done, waitedOut: true },

@@ -17,8 +17,11 @@ export const SILENT_FLOOR_MS = 5000;
 export interface WatchedTopic {
   topic: string;
   messageType: string;
-  /** state: the robot sends it steadily; completion: it answers actions (a done topic). */
-  kind: "state" | "completion";
+  /**
+   * state: the robot sends it steadily; completion: it answers actions (a done topic); event: it speaks when
+   * the robot senses something (a touch, a word), so its silence says nothing, only a bridge's refusal does.
+   */
+  kind: "state" | "completion" | "event";
   throttleRate?: number;
   /** When it was subscribed on the live connection. */
   since: number;
@@ -75,6 +78,7 @@ function usualCause(t: WatchedTopic): string {
 }
 
 function expected(t: WatchedTopic): string {
+  if (t.kind === "event") return "expected when the robot senses something";
   return t.kind === "state"
     ? `expected about every ${seconds(expectedEveryMs(t))}`
     : "expected after each action that waits for it";
@@ -90,6 +94,7 @@ export function silence(t: WatchedTopic, now: number, floorMs = SILENT_FLOOR_MS)
         : `the bridge refused to subscribe to it as ${t.messageType}: ${t.refused}`;
     return `The robot never sent ${t.topic} (${expected(t)}): ${why}.`;
   }
+  if (t.kind === "event") return null;
   if (t.kind === "completion") {
     if (!t.waitedOut || t.lastAt !== null) return null;
     return `The robot never sent ${t.topic} (${expected(t)}; an action waited for it until its timeout): ${usualCause(t)}.`;

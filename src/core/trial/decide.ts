@@ -1,6 +1,7 @@
 // The trial engine: (state, command) → the events it causes, or a rejection
 // the wizard can read. Pure: the runtime supplies ids, clock and robot.
 import { actionName } from "../designer/action-name";
+import { type EventNames, NO_EVENT_NAMES } from "../plugins/event-names";
 import { applyInPlace } from "./fold";
 import { exitNow, follow, loopName } from "./loops";
 import { answerOptions, branchTarget, findAction, findStep, nextUnit } from "./protocol";
@@ -11,13 +12,18 @@ import type { Command, Decision, DeviationKind, EngineEvent, ProtocolAction, Tri
 const ok = (...events: EngineEvent[]): Decision => ({ ok: true, events });
 const no = (reason: string): Decision => ({ ok: false, reason });
 
-/** What `command` causes in `state`, with the timers it starts and cancels. */
-export function decide(protocol: TrialProtocol, state: TrialState, command: Command): Decision {
-  const decision = decideCommand(protocol, state, command);
+/** What `command` causes in `state`, with the timers it starts and cancels; `names` name the robot's events in refusals. */
+export function decide(
+  protocol: TrialProtocol,
+  state: TrialState,
+  command: Command,
+  names: EventNames = NO_EVENT_NAMES,
+): Decision {
+  const decision = decideCommand(protocol, state, command, names);
   return decision.ok ? ok(...withTimers(protocol, state, decision.events)) : decision;
 }
 
-function decideCommand(protocol: TrialProtocol, state: TrialState, command: Command): Decision {
+function decideCommand(protocol: TrialProtocol, state: TrialState, command: Command, names: EventNames): Decision {
   switch (command.kind) {
     case "start": {
       if (state.status !== "scheduled") return no("This trial has already started.");
@@ -65,9 +71,9 @@ function decideCommand(protocol: TrialProtocol, state: TrialState, command: Comm
         ...(reachedEnd(protocol, state) ? {} : { deviation: "ended_early" as const }),
       });
     case "next":
-      return next(protocol, state);
+      return next(protocol, state, names);
     case "trigger":
-      return trigger(protocol, state, command.actionId);
+      return trigger(protocol, state, command.actionId, names);
     case "skip":
       return skip(protocol, state, command.actionId);
     case "answer":
@@ -96,7 +102,7 @@ function decideCommand(protocol: TrialProtocol, state: TrialState, command: Comm
   }
 }
 
-function next(protocol: TrialProtocol, state: TrialState): Decision {
+function next(protocol: TrialProtocol, state: TrialState, names: EventNames): Decision {
   // A designed pause holds the protocol: what follows waits until it is over.
   const holding = findStep(protocol, state.currentStepId)!.step.actions.find(
     (a) =>
@@ -104,22 +110,27 @@ function next(protocol: TrialProtocol, state: TrialState): Decision {
   );
   if (holding) return no(`Wait: the ${Number(holding.parameters.seconds ?? 0)} s pause is still running.`);
   const unit = nextUnit(protocol, state);
-  if (unit.length > 0) return request(state, unit, undefined);
+  if (unit.length > 0) return request(state, unit, undefined, names);
   const { step, index } = findStep(protocol, state.currentStepId)!;
   return ok(...follow(protocol, state, index, step.after ?? { to: "next" }, loopName(step.id), "next"));
 }
 
-function trigger(protocol: TrialProtocol, state: TrialState, actionId: string): Decision {
+function trigger(protocol: TrialProtocol, state: TrialState, actionId: string, names: EventNames): Decision {
   const found = findAction(protocol, actionId);
   if (!found) return no("That action is not in this protocol; use an unscripted action instead.");
   if (found.step.id !== state.currentStepId)
     return no(`"${actionName(found.action)}" belongs to another step: jump to "${found.step.name}" first.`);
   if (state.actions[actionId]?.status !== "waiting") return no(`"${actionName(found.action)}" has already run.`);
   const inTurn = nextUnit(protocol, state).some((a) => a.id === actionId);
-  return request(state, [found.action], inTurn ? undefined : "out_of_order");
+  return request(state, [found.action], inTurn ? undefined : "out_of_order", names);
 }
 
-function request(state: TrialState, unit: ProtocolAction[], deviation: DeviationKind | undefined): Decision {
+function request(
+  state: TrialState,
+  unit: ProtocolAction[],
+  deviation: DeviationKind | undefined,
+  names: EventNames,
+): Decision {
   const stepId = state.currentStepId!;
   const events: EngineEvent[] = [];
   for (const action of unit) {
@@ -130,7 +141,7 @@ function request(state: TrialState, unit: ProtocolAction[], deviation: Deviation
       return no(`Record the participant's answer: ${labels}.`);
     }
     if (action.type === "branch") return no("This branch follows the recorded answer: record the answer first.");
-    if (action.type === "wait_for") return no(waitingWords(action));
+    if (action.type === "wait_for") return no(waitingWords(action, names));
     events.push({
       type: "action.requested",
       stepId,

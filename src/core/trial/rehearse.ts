@@ -1,10 +1,12 @@
 // The rehearsal preview: the exact sequence a robot would perform for a chosen
-// answer to each question (or its time running out), walked through the real
-// engine without a trial.
+// answer to each question and a chosen happening at each wait (an awaited
+// event, the wizard's go on, or its time running out), walked through the
+// real engine without a trial.
 // The designer shows it; tests use it to say what a path must be.
 import { decide } from "./decide";
 import { apply, initialState } from "./fold";
 import { answerOptions, findStep, nextUnit } from "./protocol";
+import { awaitedEvents } from "../protocol/flow";
 import type { Command, ProtocolAction, RunningTimer, TrialProtocol, TrialState } from "./types";
 
 export interface RehearsedStep {
@@ -18,6 +20,8 @@ export interface RehearsedStep {
   again?: number;
   /** The answer recorded in this step, if it asks a question. */
   answer?: { actionId: string; optionId: string; label: string };
+  /** The awaited event that happened here, if a wait took one's edge: the robot's plugin's event id. */
+  sensed?: { actionId: string; event: string };
   /** The time limit that ran out here, if one did: a question's ("no answer in …") or the step's. */
   timeout?: { seconds: number; question: boolean };
 }
@@ -33,6 +37,8 @@ const MAX_STEPS = 1000;
 
 /**
  * `answers` maps a question (record_answer action id) to an option id; unset questions take their first answer.
+ * It maps a wait (wait_for action id) to the awaited event that happens there (its option id, the edge's); an
+ * unset wait takes the wizard's go on.
  * `runOut` holds the steps and questions whose time limit the rehearsal lets run out: a question's at the
  * question, unanswered; a step's once its actions are done, the wizard never moving on.
  */
@@ -81,10 +87,15 @@ export function rehearse(
     const stepId = state.currentStepId;
     if (!unit.length && stepId && runOut.has(stepId) && timeRunsOut((t) => t.stepId === stepId && !t.actionId))
       continue;
-    // A wait takes the wizard's way on in a preview, unless its time is let run out: what the robot senses is not known before a trial.
+    // A wait: the event chosen to happen (the robot's own time and message play no part in a preview), its
+    // time let run out, or else the wizard's go on.
     if (unit[0]?.type === "wait_for") {
       const wait = unit[0];
-      if (!(runOut.has(wait.id) && timeRunsOut((t) => t.actionId === wait.id))) send({ kind: "go_on" });
+      const happens = awaitedEvents(wait).find((e) => e.id === answers[wait.id]);
+      if (happens) {
+        steps.at(-1)!.sensed = { actionId: wait.id, event: happens.event };
+        send({ kind: "sensed", event: happens.event, at: seq, message: null });
+      } else if (!(runOut.has(wait.id) && timeRunsOut((t) => t.actionId === wait.id))) send({ kind: "go_on" });
       continue;
     }
     if (question) {

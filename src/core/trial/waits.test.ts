@@ -137,7 +137,7 @@ describe("Wait for", () => {
       "next does not pass a pending wait",
       protocol,
       [...waiting, { kind: "next" }],
-      "The trial waits for the robot to sense head_touched or heard_ready: go on to move on without it.",
+      "The trial waits for the robot to sense “head_touched” or “heard_ready”: go on to move on without it.",
     ],
     [
       "go on with nothing waiting is refused",
@@ -190,12 +190,38 @@ describe("Wait for", () => {
     });
   });
 
+  it.each([
+    [
+      "by its plugin's names",
+      { head_touched: "Head touched", heard_ready: 'Heard "ready"' },
+      'The trial waits for the robot to sense “Head touched” or “Heard "ready"”: go on to move on without it.',
+    ],
+    [
+      "by id where the plugin names none",
+      { head_touched: "Head touched" },
+      "The trial waits for the robot to sense “Head touched” or “heard_ready”: go on to move on without it.",
+    ],
+  ])("next at a pending wait names the awaited events %s", (_, names, reason) => {
+    const { log } = simulate(protocol, waiting);
+    expect(decide(protocol, fold(protocol, log), { kind: "next" }, names)).toEqual({ ok: false, reason });
+  });
+
   it("keeps the message that matched in the log", () => {
     const { log } = simulate(protocol, [...waiting, touch]);
     expect(log.find((e) => e.type === "robot.sensed")).toMatchObject({ message: { data: true } });
   });
 
-  it("a rehearsal preview takes the wizard's go on: what the robot senses is not known before a trial", () => {
-    expect(rehearse(protocol).steps.map((s) => s.stepId)).toEqual(["ask", "bye"]);
+  it.each([
+    ["nothing chosen: the wizard's go on", {}, [], ["ask", "bye"], undefined],
+    ["the head touched: its edge", { wait: "touch" }, [], ["ask", "greet"], "head_touched"],
+    ["'ready' heard: its edge, the end", { wait: "ready" }, [], ["ask"], "heard_ready"],
+    ["nothing sensed, the time let run out: the limit's edge", {}, ["wait"], ["ask", "prompt"], undefined],
+    ["an event chosen wins over the time running out", { wait: "touch" }, ["wait"], ["ask", "greet"], "head_touched"],
+    ["a choice the wait does not offer: the wizard's go on", { wait: "elsewhere" }, [], ["ask", "bye"], undefined],
+  ])("a rehearsal at a wait: %s", (_, chosen: Record<string, string>, runOut: string[], path, event) => {
+    const { steps, ending } = rehearse(protocol, chosen, new Set(runOut));
+    expect(steps.map((s) => s.stepId)).toEqual(path);
+    expect(steps[0]!.sensed?.event).toBe(event);
+    expect(ending).toBe("completed");
   });
 });

@@ -4,6 +4,7 @@
 // after finds nothing waiting: an event is then the robot's observation only,
 // a go on is refused, a timer is already cancelled.
 import { awaitedEvents, exitBy, exitOf, type Exit } from "../protocol/flow";
+import { type EventNames, eventName } from "../plugins/event-names";
 import { findStep } from "./protocol";
 import { awaits } from "./timers";
 import type { Command, Decision, EngineEvent, ProtocolAction, TrialProtocol, TrialState } from "./types";
@@ -66,8 +67,8 @@ function enter(protocol: TrialProtocol, exit: Exit, via: "sensed" | "go_on"): En
 }
 
 /** What the wizard is told when "next" reaches a wait. */
-export function waitingWords(wait: ProtocolAction): string {
-  const events = awaitedEvents(wait).map((e) => e.event);
+export function waitingWords(wait: ProtocolAction, names: EventNames): string {
+  const events = awaitedEvents(wait).map((e) => `“${eventName(e.event, names)}”`);
   const what = events.length ? `the robot to sense ${events.join(" or ")}` : "its time limit";
   return `The trial waits for ${what}: go on to move on without it.`;
 }

@@ -23,7 +23,7 @@ import { commands, locateAction, locateStep } from "@/core/designer/model";
 import type { DesignDraft } from "@/core/designer/types";
 import { hasErrors, validateDesign } from "@/core/designer/validate";
 import { variantIssues } from "@/core/designer/variant-issues";
-import { abstractAction, audioPlayer, type Plugin } from "@/core/plugins";
+import { abstractAction, audioPlayer, eventName, eventNamesOf, type Plugin } from "@/core/plugins";
 import { newId } from "@/lib/new-id";
 import { useTRPC } from "@/lib/trpc";
 import { Button } from "@/ui/button";
@@ -78,6 +78,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
   const blockFor = useCallback((type: string) => findBlock(type, plugin), [plugin]);
   const blockName = useCallback((type: string) => findBlock(type, plugin)?.name ?? type, [plugin]);
   const names = useMemo(() => actionNamesOf(plugin), [plugin]);
+  const eventNames = useMemo(() => eventNamesOf(plugin), [plugin]);
 
   // Checks run a beat behind typing: the timeline stays responsive on big protocols.
   const checked = useDeferredValue(draft);
@@ -380,6 +381,7 @@ export function DesignerPage({ experimentId }: { experimentId: string }) {
                       draft={draft}
                       actionName={(a) => actionName(a, names)}
                       conditions={conditions}
+                      eventName={(id) => eventName(id, eventNames)}
                       blocked={
                         errors
                           ? "Fix the problems listed on the right first: the preview walks the experiment as a trial would."

@@ -31,7 +31,13 @@ const draft: DesignDraft = {
 
 const render = (conditions: string[]) =>
   renderToStaticMarkup(
-    createElement(RehearsalPreview, { draft, actionName: (a) => a.name, blocked: null, conditions }),
+    createElement(RehearsalPreview, {
+      draft,
+      actionName: (a) => a.name,
+      eventName: (id) => id,
+      blocked: null,
+      conditions,
+    }),
   );
 
 describe("the rehearsal preview of an experiment whose conditions vary", () => {

@@ -1,12 +1,14 @@
 "use client";
-// A rehearsal without a trial: choose an answer for each question (or, where
-// there is a time limit, let the time run out) and read the exact sequence
+// A rehearsal without a trial: choose an answer for each question and what
+// happens at each wait (an event the robot senses, the wizard's go on), or,
+// where there is a time limit, let the time run out, and read the exact sequence
 // the robot would perform, walked by the trial engine itself, so what is
 // shown here is what a trial of this draft would do, as the chosen condition
 // would run it (its variants).
 import { useMemo, useState } from "react";
 import { inCondition } from "@/core/protocol/variants";
 import type { DesignAction, DesignDraft } from "@/core/designer/types";
+import { awaitedEvents } from "@/core/protocol/flow";
 import { answerOptions, rehearse } from "@/core/trial";
 import { Field, NativeSelect } from "@/ui/field";
 
@@ -16,6 +18,7 @@ const RUN_OUT = "run-out";
 export function RehearsalPreview({
   draft,
   actionName,
+  eventName,
   blocked,
   conditions,
 }: {
@@ -23,6 +26,8 @@ export function RehearsalPreview({
   /** The study's conditions that run this experiment: the preview may run as one of them. */
   conditions: string[];
   actionName: (action: DesignAction) => string;
+  /** What the robot's plugin calls one of its events ("Head touched"). */
+  eventName: (id: string) => string;
   /** Why the draft cannot be walked yet (its errors), if so. */
   blocked: string | null;
 }) {
@@ -30,6 +35,13 @@ export function RehearsalPreview({
     () =>
       draft.steps.flatMap((step) =>
         step.actions.filter((a) => a.type === "record_answer").map((action) => ({ step, action })),
+      ),
+    [draft],
+  );
+  const waits = useMemo(
+    () =>
+      draft.steps.flatMap((step) =>
+        step.actions.filter((a) => a.type === "wait_for").map((action) => ({ step, action })),
       ),
     [draft],
   );
@@ -57,8 +69,8 @@ export function RehearsalPreview({
   return (
     <section aria-label="Rehearsal preview" className="space-y-4">
       <p className="text-sm text-slate-700">
-        Choose an answer to each question, or let a time limit run out, to see what the robot would do, step by step.
-        Nothing is sent to a robot.
+        Choose an answer to each question and what the robot senses at each wait, or let a time limit run out, to see
+        what the robot would do, step by step. Nothing is sent to a robot.
       </p>
       {conditions.length > 0 && (
         <Field label="As condition">
@@ -74,7 +86,7 @@ export function RehearsalPreview({
           )}
         </Field>
       )}
-      {questions.length + limited.length > 0 && (
+      {questions.length + waits.length + limited.length > 0 && (
         <div className="grid gap-3 sm:grid-cols-2">
           {questions.map(({ step, action }) => (
             <Field key={action.id} label={`${step.name}: ${actionName(action)}`}>
@@ -94,6 +106,30 @@ export function RehearsalPreview({
                   ))}
                   {action.timeLimit && (
                     <option value={RUN_OUT}>No answer: let the time run out ({action.timeLimit.seconds} s)</option>
+                  )}
+                </NativeSelect>
+              )}
+            </Field>
+          ))}
+          {waits.map(({ step, action }) => (
+            <Field key={action.id} label={`${step.name}: ${actionName(action)}`}>
+              {(p) => (
+                <NativeSelect
+                  {...p}
+                  value={runOut.has(action.id) ? RUN_OUT : (answers[action.id] ?? "")}
+                  onChange={(e) => {
+                    letRunOut(action.id, e.target.value === RUN_OUT);
+                    setAnswers({ ...answers, [action.id]: e.target.value === RUN_OUT ? "" : e.target.value });
+                  }}
+                >
+                  <option value="">Nothing sensed: the wizard goes on</option>
+                  {awaitedEvents(action).map((a) => (
+                    <option key={a.id} value={a.id}>
+                      The robot senses: {eventName(a.event)}
+                    </option>
+                  ))}
+                  {action.timeLimit && (
+                    <option value={RUN_OUT}>Nothing sensed: let the time run out ({action.timeLimit.seconds} s)</option>
                   )}
                 </NativeSelect>
               )}
@@ -144,6 +180,9 @@ export function RehearsalPreview({
                 ))}
               </ol>
               {step.answer && <p className="mt-1 text-xs text-brand-800">Answer: {step.answer.label}</p>}
+              {step.sensed && (
+                <p className="mt-1 text-xs text-brand-800">The robot sensed: {eventName(step.sensed.event)}</p>
+              )}
               {step.timeout && (
                 <p className="mt-1 text-xs text-amber-900">
                   {step.timeout.question ? "No answer" : "The step went on"}: its {step.timeout.seconds} s ran out.

@@ -4,6 +4,7 @@ import Link from "next/link";
 import { useCallback, useEffect, useMemo, useState } from "react";
 import { studyRoleMay } from "@/core/access/policy";
 import type { ActionNames } from "@/core/designer/action-name";
+import type { EventNames } from "@/core/plugins/event-names";
 import { actionProblems, type TrialProtocol, type TrialState } from "@/core/trial";
 import { indicators } from "@/core/trial/connections";
 import { useTRPC } from "@/lib/trpc";
@@ -54,6 +55,7 @@ type Trial = {
   createdByName: string | null;
   myRole: "owner" | "researcher" | "wizard" | "observer";
   actionNames: ActionNames;
+  eventNames: EventNames;
 };
 
 function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: TrialProtocol; refresh: () => void }) {
@@ -159,6 +161,7 @@ function LiveTrial({ trial, protocol, refresh }: { trial: Trial; protocol: Trial
             <WizardControls
               protocol={protocol}
               names={trial.actionNames}
+              eventNames={trial.eventNames}
               state={live.state}
               runtime={live.runtime}
               send={live.command}

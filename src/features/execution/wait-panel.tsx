@@ -3,6 +3,7 @@
 // with where it leads), the last things the robot sensed, and the wizard's
 // go on, one key away. The log's robot.sensed events are what is shown: the
 // page reads what the runtime logged, never the robot directly.
+import { type EventNames, eventName } from "@/core/plugins/event-names";
 import { awaitedEvents, exitBy } from "@/core/protocol/flow";
 import type { ProtocolAction, StoredEvent, TrialProtocol } from "@/core/trial";
 import { Button } from "@/ui/button";
@@ -18,12 +19,14 @@ export function WaitPanel({
   stepIndex,
   wait,
   events,
+  names,
   goOn,
 }: {
   protocol: TrialProtocol;
   stepIndex: number;
   wait: ProtocolAction;
   events: ReadonlyArray<StoredEvent<string>>;
+  names: EventNames;
   goOn: () => void;
 }) {
   const recent = events
@@ -40,7 +43,7 @@ export function WaitPanel({
       <ul className="mt-2 space-y-1 text-sm">
         {awaitedEvents(wait).map((e) => (
           <li key={e.id}>
-            <strong>{e.event}</strong> → {where(e.after)}
+            <strong>{eventName(e.event, names)}</strong> → {where(e.after)}
           </li>
         ))}
         {wait.timeLimit && (
@@ -56,7 +59,7 @@ export function WaitPanel({
         <ul aria-label="Last sensed" className="text-sm">
           {recent.map((e) => (
             <li key={e.seq}>
-              {e.event} <span className="text-slate-600">at {clockTime(new Date(e.at))}</span>
+              {eventName(e.event, names)} <span className="text-slate-600">at {clockTime(new Date(e.at))}</span>
             </li>
           ))}
         </ul>

@@ -3,6 +3,7 @@
 // choices by number, a pending wait's go on, and everything off script one key away.
 import { useId, useRef, useState } from "react";
 import { actionName, type ActionNames } from "@/core/designer/action-name";
+import type { EventNames } from "@/core/plugins/event-names";
 import {
   answerOptions,
   exitNow,
@@ -49,6 +50,7 @@ export function nextLabel(protocol: TrialProtocol, state: TrialState, names: Act
 export function WizardControls({
   protocol,
   names,
+  eventNames,
   state,
   runtime,
   send,
@@ -56,6 +58,8 @@ export function WizardControls({
 }: {
   protocol: TrialProtocol;
   names: ActionNames;
+  /** The plugin's names of what its robot senses: the wait panel says "Head touched", not head_touched. */
+  eventNames: EventNames;
   state: TrialState;
   /** The page's link to the trial runtime: unless it is live, nothing can be sent. */
   runtime: RuntimeState;
@@ -131,6 +135,7 @@ export function WizardControls({
             stepIndex={protocol.steps.findIndex((s) => s.id === state.currentStepId)}
             wait={wait}
             events={events}
+            names={eventNames}
             goOn={goOn}
           />
         ) : question ? (

@@ -244,9 +244,10 @@ export class RosbridgeTransport extends LinkedTransport {
     topic: string,
     messageType: string,
     onMessage: (message: unknown) => void,
-    options: { throttleRate?: number } = {},
+    options: { throttleRate?: number; kind?: "state" | "event" } = {},
   ) {
-    return this.watch({ topic, messageType, onMessage, throttleRate: options.throttleRate ?? 0, kind: "state" });
+    const { throttleRate = 0, kind = "state" } = options;
+    return this.watch({ topic, messageType, onMessage, throttleRate, kind });
   }
 
   private watch(subscription: StateSubscription) {

@@ -51,12 +51,15 @@ export interface Transport {
     parameters: Record<string, unknown>,
     options?: DispatchOptions,
   ): Promise<DispatchOutcome>;
-  /** Robot state for logging; kept across reconnects. Returns a function that stops it. */
+  /**
+   * Robot state for logging, or what the robot senses (kind "event": sent only when something happens, so
+   * never reported silent); kept across reconnects. Returns a function that stops it.
+   */
   subscribe(
     topic: string,
     messageType: string,
     onMessage: (message: unknown) => void,
-    options?: { throttleRate?: number },
+    options?: { throttleRate?: number; kind?: "state" | "event" },
   ): () => void;
   health(): Health;
   /** Called at once on every change of connection state. */

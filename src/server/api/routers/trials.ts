@@ -23,7 +23,7 @@ import { inCondition } from "@/core/protocol/variants";
 import { conditionOfTrial } from "@/store/trial-condition";
 import { trialLog } from "@/store/event-store";
 import { trialFile } from "../../trials/files";
-import { trialActionNames } from "../../trials/action-names";
+import { trialPluginNames } from "../../trials/action-names";
 import { assertMayTakePart } from "../../studies/consent-gate";
 import { assertNotWithdrawn } from "../../trials/withdrawn";
 import { assertRunsTrials } from "../../studies/status-gate";
@@ -293,8 +293,8 @@ export const trialsRouter = router({
     // The protocol as this trial runs it: its condition's variants (a rehearsal's were frozen as it began).
     const condition = row!.isRehearsal ? null : await conditionOfTrial(ctx.db, ctx.row.id);
     const protocol = row!.protocol && inCondition(row!.protocol, condition);
-    // The library's names of the robot's own actions, for actions without a label.
-    const trial = { ...row!, protocol, actionNames: await trialActionNames(ctx.db, ctx.row.id), myRole: ctx.studyRole };
+    // The library's names of the robot's own actions (for actions without a label) and of its events.
+    const trial = { ...row!, protocol, ...(await trialPluginNames(ctx.db, ctx.row.id)), myRole: ctx.studyRole };
     return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
   }),
 });
