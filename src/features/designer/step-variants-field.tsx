@@ -29,7 +29,8 @@ export function StepVariantsField({
   return (
     <fieldset className="space-y-2">
       <legend className="text-sm font-medium text-slate-700">Varies by condition</legend>
-      <div className="grid gap-2" style={{ gridTemplateColumns: `repeat(${conditions.length + 1}, minmax(0, 1fr))` }}>
+      {/* Side by side while each column has room for a line of text; under each other in a narrow panel. */}
+      <div className="grid grid-cols-[repeat(auto-fit,minmax(9rem,1fr))] gap-2">
         <fieldset aria-label="Shared" className="min-w-0 space-y-1 rounded border border-slate-200 p-2">
           <p className="text-sm font-medium">Shared</p>
           <ActionNames actions={step.actions} nameOf={nameOf} />
