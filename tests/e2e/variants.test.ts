@@ -126,7 +126,8 @@ describe.sequential("an experiment whose conditions vary", () => {
     const text = column.getByRole("textbox").first();
     await text.fill(own);
     await expect.poll(() => page.locator("[data-save-state]").getAttribute("data-save-state")).toBe("saved");
-    await properties.getByText("Varies by condition", { exact: true }).scrollIntoViewIfNeeded();
+    // The whole field in view: the shared actions, the plain telling's own, and the warm telling's (wrapped below).
+    await properties.getByRole("group", { name: "In “Warm telling QX7”" }).scrollIntoViewIfNeeded();
     await screenshot(page, "designer-step-variants");
     await page.context().close();
 
