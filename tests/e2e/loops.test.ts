@@ -8,7 +8,7 @@ import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { expectAccessible } from "../support/accessibility";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
-import { launchBrowser, newContext, signInAs } from "../support/browser";
+import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
 import { Researcher } from "../support/researcher";
 
@@ -119,6 +119,7 @@ describe.sequential("a bounded loop on the wizard's page", () => {
     expect(await r.properties.getByLabel("At most (times back)").inputValue()).toBe("2");
     await r.selectOption(r.properties.getByLabel("Then, after the last time"), "Go on to the next step (Bye)");
     await expectAccessible(page, "the designer with a loop's bound and its way on");
+    await screenshot(page, "designer-loop");
     const checks = page.getByRole("region", { name: "Checks" });
     await expect.poll(() => checks.textContent()).toContain("Ready to publish");
 
@@ -126,6 +127,7 @@ describe.sequential("a bounded loop on the wizard's page", () => {
     await page.getByRole("group", { name: "Flow map of the experiment" }).waitFor();
     await page.getByText("Ask (back, at most 2 times) leads to Ask").waitFor({ state: "attached" });
     await page.getByText("Ask (after 2 times) leads to Bye").waitFor({ state: "attached" });
+    await screenshot(page, "designer-flow-map-loop");
 
     await r.click(page.getByRole("tab", { name: "Rehearse" }));
     const preview = page.getByRole("region", { name: "Rehearsal preview" });

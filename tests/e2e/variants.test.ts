@@ -3,14 +3,15 @@
 // trials, one per condition, each run in the blinded wizard's page: the robot
 // says each condition's own greeting, byte for byte as the variant's text; the
 // wizard's page shows the greeting as it will run and never the condition's
-// name; the trial's record names the variant it ran.
+// name; the trial's record names the variant it ran. A whole step's own
+// actions, made in the designer, are saved, published and run in their condition.
 import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
 import { apiClient, signIn } from "../support/http";
 import { listenToSpeech } from "../support/robot-ears";
-import { runToTheEndInPage } from "../support/run-trial";
+import { runToTheEndInPage, runWholeTrial } from "../support/run-trial";
 
 // Text a variant must carry unchanged: quotes, a backslash, a line break and characters beyond ASCII.
 const GREETINGS = {
@@ -25,6 +26,7 @@ describe.sequential("an experiment whose conditions vary", () => {
   let greetingId = "";
   let studyId = "";
   let experimentId = "";
+  const conditionIds: Record<string, string> = {};
 
   beforeAll(async () => {
     app = await startApp();
@@ -37,8 +39,10 @@ describe.sequential("an experiment whose conditions vary", () => {
     experimentId = experiment!.id;
     const conditions = Object.keys(GREETINGS) as Array<keyof typeof GREETINGS>;
     const ids: string[] = [];
-    for (const name of conditions)
+    for (const name of conditions) {
       ids.push((await researcher.conditions.create.mutate({ studyId, name, experimentId: experiment!.id })).id);
+      conditionIds[name] = ids.at(-1)!;
+    }
     await researcher.studies.update.mutate({
       studyId,
       settings: { assignment: { strategy: "fixed", perCondition: 1 }, blinding: { conditionsFromWizards: true } },
@@ -107,6 +111,51 @@ describe.sequential("an experiment whose conditions vary", () => {
       });
     }
     await researcher.context().close();
+  }, 600_000);
+
+  it("saves a whole step's own actions made in the designer, publishes them and runs them in a trial of that condition", async () => {
+    const plain = "Plain telling MW9";
+    const own = 'Welcome. "Step" \\ variant for Plain.';
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await page.goto(`/experiments/${experimentId}`);
+    await page.getByRole("button", { name: /^Step 1: Introduction/ }).click();
+    const properties = page.getByRole("region", { name: "Properties" });
+    const column = properties.getByRole("group", { name: `In “${plain}”` });
+    await column.getByRole("checkbox", { name: `Own actions in “${plain}”` }).check();
+    const text = column.getByRole("textbox").first();
+    await text.fill(own);
+    await expect.poll(() => page.locator("[data-save-state]").getAttribute("data-save-state")).toBe("saved");
+    // The whole field in view: the shared actions, the plain telling's own, and the warm telling's (wrapped below).
+    await properties.getByRole("group", { name: "In “Warm telling QX7”" }).scrollIntoViewIfNeeded();
+    await screenshot(page, "designer-step-variants");
+    await page.context().close();
+
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const saved = await researcher.experiments.get.query({ experimentId });
+    const variant = saved.steps[0]!.variants?.[plain];
+    expect(variant?.actions[0]?.parameters.text).toBe(own);
+    // A copy of the step's actions, each another action (a new id), without the greeting's own variants.
+    expect(variant?.actions.map((a) => a.id)).not.toContain(greetingId);
+    expect(variant?.actions).toHaveLength(saved.steps[0]!.actions.length);
+
+    const versionId = (await researcher.versions.publish.mutate({ experimentId })).id;
+    const participant = await researcher.participants.create.mutate({
+      studyId,
+      code: "STEP-PLAIN",
+      consentStatus: "given",
+      consentDate: new Date(),
+    });
+    await researcher.conditions.assign.mutate({ participantId: participant.id, conditionId: conditionIds[plain] });
+    const wizard = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
+    const trialId = (await wizard.trials.create.mutate({ versionId, participantId: participant.id })).id;
+    const ears = await listenToSpeech(app.simulatorUrl);
+    try {
+      await runWholeTrial(wizard, trialId);
+      expect(ears.take()[0], "what the robot said first in the step's own actions").toBe(own);
+    } finally {
+      ears.close();
+    }
   }, 600_000);
 
   it("shows each condition's variant side by side in the designer, says which condition has none, and rehearses as one", async () => {

@@ -183,6 +183,10 @@ describe.sequential("a wait for the robot's senses in the wizard's page", () => 
     const page = await (await newContext(browser, app.url)).newPage();
     await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
     await page.goto(`/experiments/${experimentId}`);
+    // The Wait for's properties: each event by the robot's name for it, with where it leads.
+    await page.locator('[data-step="Wait"] [data-action]').first().click();
+    await page.getByRole("region", { name: "Properties" }).getByText("Events the trial waits for").waitFor();
+    await screenshot(page, "designer-wait-for");
     await page.getByRole("tab", { name: "Rehearse" }).click();
     const preview = page.getByRole("region", { name: "Rehearsal preview" });
     const steps = preview.getByRole("list", { name: "What the robot would do" });

@@ -17,7 +17,9 @@ export function actionNamesOf(plugin: Plugin | null): ActionNames {
 
 /** The setting that says what an action does, in the order looked for: free text first, then choices. */
 const MAIN_PARAMETERS = ["text", "prompt", "seconds", "posture", "name", "direction"] as const;
-const FREE_TEXT = new Set(["text", "prompt"]);
+/** The parameters that hold what an action says or asks in words: its main text. */
+export const FREE_TEXT_PARAMETERS: readonly string[] = ["text", "prompt"];
+const FREE_TEXT = new Set(FREE_TEXT_PARAMETERS);
 const SHORT = 32;
 
 /** A setting or a robot's own identifier as words: "animations/Stand/Gestures/Hey_1" → "Hey 1", "turn_left" → "Turn left". */

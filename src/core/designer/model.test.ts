@@ -250,3 +250,94 @@ describe("designer commands", () => {
     expect(redo(startHistory(draft())).present).toEqual(draft());
   });
 });
+
+describe("a step's own actions in a condition", () => {
+  const warmWave = { id: "warm-wave", type: "wave", name: "Wave", parameters: {}, parallelGroup: "w" };
+  // The Storyteller with a story whose line varies, and a step that already has its own actions in two conditions.
+  const varied = (): DesignDraft => {
+    const d = draft();
+    d.steps[1]!.actions[0]!.variants = { Warm: { parameters: { text: "Once, friend" } } };
+    d.steps.push({
+      id: "varied",
+      name: "Varied",
+      description: "",
+      actions: [],
+      variants: {
+        Warm: { actions: [{ id: "warm-hi", ...say("Hello"), parallelGroup: "w" }, warmWave] },
+        Plain: { actions: [] },
+      },
+    });
+    return d;
+  };
+
+  it.each<[string, Command, (d: DesignDraft) => unknown, unknown]>([
+    [
+      "own: a copy of the step's actions with new ids, their groups kept",
+      commands.setStepVariant("intro", "Warm", true),
+      (d) => d.steps[0]!.variants,
+      {
+        Warm: {
+          actions: [
+            { id: "id-1", type: "say", name: "Hello", parameters: { text: "Hello" }, parallelGroup: "g" },
+            { id: "id-2", type: "wave", name: "Wave", parameters: {}, parallelGroup: "g" },
+            { id: "id-3", type: "nao6-ros2.bow", name: "Bow", parameters: {}, parallelGroup: null },
+          ],
+        },
+      },
+    ],
+    [
+      "own, of a step whose action varies: the copy is the shared action, without variants of its own",
+      commands.setStepVariant("story", "Plain", true),
+      (d) => d.steps[1]!.variants,
+      { Plain: { actions: [{ id: "id-1", ...say("Once"), parallelGroup: null }] } },
+    ],
+    [
+      "the text of one of its actions edited",
+      commands.setStepVariantParameter("varied", "Warm", "warm-hi", "text", "Hello, friend"),
+      (d) => d.steps[3]!.variants,
+      {
+        Warm: { actions: [{ id: "warm-hi", ...say("Hello, friend"), parallelGroup: "w" }, warmWave] },
+        Plain: { actions: [] },
+      },
+    ],
+    [
+      "one of its actions removed: the group of one left is no group",
+      commands.removeStepVariantAction("varied", "Warm", "warm-hi"),
+      (d) => d.steps[3]!.variants?.Warm,
+      { actions: [{ ...warmWave, parallelGroup: null }] },
+    ],
+    [
+      "not own: that condition runs the step's actions",
+      commands.setStepVariant("varied", "Warm", false),
+      (d) => d.steps[3]!.variants,
+      { Plain: { actions: [] } },
+    ],
+  ])("%s, and undo restores the draft exactly", (_label, command, read, expected) => {
+    const after = execute(startHistory(varied()), command, ids());
+    expect(read(after.present)).toEqual(expected);
+    expect(undo(after).present).toEqual(varied());
+    expect(redo(undo(after)).present).toEqual(after.present);
+  });
+
+  it("keeps no variants once the last condition runs the step's actions, and ticking what is ticked changes nothing", () => {
+    let h = startHistory(varied());
+    h = execute(h, commands.setStepVariant("varied", "Warm", false), ids());
+    h = execute(h, commands.setStepVariant("varied", "Plain", false), ids());
+    expect("variants" in h.present.steps[3]!).toBe(false);
+    expect(h.past.map((p) => p.label)).toEqual(["share step with Warm", "share step with Plain"]);
+    expect(execute(h, commands.setStepVariant("varied", "Plain", false), ids())).toBe(h);
+  });
+
+  it("types into one action's text as one undo, and refuses an action or a condition that is gone, in words", () => {
+    let h = startHistory(varied());
+    for (const text of ["H", "Hi"])
+      h = execute(h, commands.setStepVariantParameter("varied", "Warm", "warm-hi", "text", text), ids());
+    expect(h.past.map((p) => p.label)).toEqual(["set text in Warm"]);
+    expect(() => execute(h, commands.removeStepVariantAction("varied", "Warm", "nope"), ids())).toThrow(
+      'That action is no longer in this step\'s actions in "Warm".',
+    );
+    expect(() => execute(h, commands.removeStepVariantAction("intro", "Warm", "hello"), ids())).toThrow(
+      'This step has no actions of its own in "Warm".',
+    );
+  });
+});

@@ -1,7 +1,14 @@
 // The designer as a headless model: named commands over a draft, with undo
 // and redo. The page only renders a draft and sends commands, so every edit a
 // researcher can make is tested here without a browser.
-import { type ActionVariant, actionSchema, experimentFields, stepSchema, type TimeLimit } from "../protocol/document";
+import {
+  type ActionVariant,
+  actionSchema,
+  experimentFields,
+  type StepVariant,
+  stepSchema,
+  type TimeLimit,
+} from "../protocol/document";
 import type { DesignAction, DesignDraft, DesignStep, NewId, After } from "./types";
 import { WAITS_FOR_CHOICE } from "./blocks";
 
@@ -109,16 +116,34 @@ function replaceStep(draft: DesignDraft, stepId: string, change: (s: DesignStep)
 }
 
 /** A group of one is no group: an action left alone by an edit runs on its own again. */
-function withoutLoneGroups(step: DesignStep): DesignStep {
+function withoutLoneGroups<T extends { actions: Array<{ parallelGroup: string | null }> }>(part: T): T {
   const count = new Map<string, number>();
-  for (const a of step.actions) if (a.parallelGroup) count.set(a.parallelGroup, (count.get(a.parallelGroup) ?? 0) + 1);
-  if (![...count.values()].includes(1)) return step;
+  for (const a of part.actions) if (a.parallelGroup) count.set(a.parallelGroup, (count.get(a.parallelGroup) ?? 0) + 1);
+  if (![...count.values()].includes(1)) return part;
   return {
-    ...step,
-    actions: step.actions.map((a) =>
+    ...part,
+    actions: part.actions.map((a) =>
       a.parallelGroup && count.get(a.parallelGroup) === 1 ? { ...a, parallelGroup: null } : a,
     ),
   };
+}
+
+/** The step's actions in `condition`, changed where one of them is `actionId`. */
+function replaceStepVariant(
+  draft: DesignDraft,
+  stepId: string,
+  condition: string,
+  actionId: string,
+  change: (actions: StepVariant["actions"]) => StepVariant["actions"],
+): DesignDraft {
+  const variant = locateStep(draft, stepId).step.variants?.[condition];
+  if (!variant) throw new DesignerError(`This step has no actions of its own in "${condition}".`);
+  if (!variant.actions.some((a) => a.id === actionId))
+    throw new DesignerError(`That action is no longer in this step's actions in "${condition}".`);
+  return replaceStep(draft, stepId, (s) => ({
+    ...s,
+    variants: { ...s.variants, [condition]: withoutLoneGroups({ actions: change(variant.actions) }) },
+  }));
 }
 
 function replaceAction(draft: DesignDraft, actionId: string, change: (a: DesignAction) => DesignAction): DesignDraft {
@@ -292,6 +317,54 @@ export const commands = {
         const next = variant ? { ...others, [condition]: variant } : others;
         return Object.keys(next).length ? { ...a, variants: next } : a;
       }),
+  }),
+
+  /**
+   * The step's own actions in `condition`: own, a copy of the step's actions
+   * with new ids (a trial keeps each action's state by id, and the copy is
+   * another action), without variants of their own; not own, none, so that
+   * condition runs the step's actions. The last one gone, none is left.
+   */
+  setStepVariant: (stepId: string, condition: string, own: boolean): Command => ({
+    label: own ? `vary step for ${condition}` : `share step with ${condition}`,
+    apply: (d, newId) => {
+      if (own === Boolean(locateStep(d, stepId).step.variants?.[condition])) return d;
+      return replaceStep(d, stepId, ({ variants = {}, ...s }) => {
+        const { [condition]: _, ...others } = variants;
+        if (own) return { ...s, variants: { ...others, [condition]: { actions: s.actions.map(copy) } } };
+        return Object.keys(others).length ? { ...s, variants: others } : s;
+      });
+      function copy({ variants: _, ...action }: DesignAction): StepVariant["actions"][number] {
+        return { ...action, id: newId() };
+      }
+    },
+  }),
+
+  /** A parameter of an action of the step's own in `condition`; `undefined` removes it. */
+  setStepVariantParameter: (
+    stepId: string,
+    condition: string,
+    actionId: string,
+    parameter: string,
+    value: unknown,
+  ): Command => ({
+    label: `set ${parameter} in ${condition}`,
+    mergeKey: `step-variant-parameter:${stepId}:${condition}:${actionId}:${parameter}`,
+    apply: (d) =>
+      replaceStepVariant(d, stepId, condition, actionId, (actions) =>
+        actions.map((a) => {
+          if (a.id !== actionId) return a;
+          const { [parameter]: _, ...parameters } = a.parameters;
+          return { ...a, parameters: value === undefined ? parameters : { ...parameters, [parameter]: value } };
+        }),
+      ),
+  }),
+
+  /** Removes an action from the step's own in `condition` (the step's shared actions keep theirs). */
+  removeStepVariantAction: (stepId: string, condition: string, actionId: string): Command => ({
+    label: `delete action in ${condition}`,
+    apply: (d) =>
+      replaceStepVariant(d, stepId, condition, actionId, (actions) => actions.filter((a) => a.id !== actionId)),
   }),
 
   /** `undefined` removes the parameter, so the block's default applies. */

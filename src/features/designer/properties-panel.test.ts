@@ -1,5 +1,6 @@
-// An action's properties, rendered by React as the designer renders them: the
-// note for the wizard every action has, and its variants per condition.
+// An action's and a step's properties, rendered by React as the designer
+// renders them: the note for the wizard every action has, and the variants per
+// condition of an action and of a step.
 import { createElement } from "react";
 import { renderToStaticMarkup } from "react-dom/server";
 import { describe, expect, it } from "vitest";
@@ -37,14 +38,36 @@ const draft: DesignDraft = {
       ],
     },
     { id: "s2", name: "Greet", description: "", actions: [] },
+    {
+      id: "s3",
+      name: "Feedback",
+      description: "",
+      actions: [
+        { id: "praise", type: "say", name: "", parameters: { text: "Well done." }, parallelGroup: null },
+        { id: "nod", type: "nod", name: "", parameters: {}, parallelGroup: null },
+      ],
+      variants: {
+        Warm: {
+          actions: [
+            {
+              id: "warm-praise",
+              type: "say",
+              name: "",
+              parameters: { text: "Well done, friend!" },
+              parallelGroup: null,
+            },
+          ],
+        },
+      },
+    },
   ],
 };
 
-const render = (actionId: string, conditions: string[] = []) =>
+const render = (id: string, conditions: string[] = [], kind: "action" | "step" = "action") =>
   renderToStaticMarkup(
     createElement(PropertiesPanel, {
       draft,
-      selection: { kind: "action", id: actionId },
+      selection: { kind, id },
       issues: [],
       blockFor: (type: string) => blockFor(type, null),
       run: () => {},
@@ -111,5 +134,24 @@ describe("an action that varies by condition", () => {
 
   it("has no such field in a study with no conditions on this experiment", () => {
     expect(render("hi")).not.toContain("Varies by condition");
+  });
+});
+
+describe("a step that varies by condition", () => {
+  it("shows the shared actions beside each condition's own: their text to edit and remove, or the shared ones run", () => {
+    const html = render("s3", ["Warm", "Plain"], "step");
+    expect(html).toContain("Varies by condition");
+    const shared = html.slice(html.indexOf('aria-label="Shared"'), html.indexOf('aria-label="In “Warm”"'));
+    expect(shared).toContain("Say: Well done.");
+    expect(shared).toContain("Nod");
+    const warm = html.slice(html.indexOf('aria-label="In “Warm”"'), html.indexOf('aria-label="In “Plain”"'));
+    expect(warm).toMatch(/<input type="checkbox"[^>]*checked=""/);
+    expect(warm).toContain("Own actions in “Warm”");
+    expect(warm).toMatch(/aria-label="Text of Say: Well done, friend!, action 1 in “Warm”" value="Well done, friend!"/);
+    expect(warm).toContain('aria-label="Remove Say: Well done, friend!, action 1 in “Warm”"');
+    expect(warm).not.toContain("Nod");
+    const plain = html.slice(html.indexOf('aria-label="In “Plain”"'));
+    expect(plain).not.toMatch(/<input type="checkbox"[^>]*checked=""/);
+    expect(plain).toContain("Runs the step&#x27;s actions.");
   });
 });

@@ -17,6 +17,7 @@ import { ThenField } from "./then-field";
 import { TimeLimitField } from "./time-limit-field";
 import type { Selection } from "./protocol-timeline";
 import { WaitEditor } from "./wait-editor";
+import { StepVariantsField } from "./step-variants-field";
 import { VariantsField } from "./variants-field";
 
 interface Props {
@@ -33,7 +34,7 @@ interface Props {
   audioPlayer: AudioPlayer;
   /** What the experiment's robot senses, for a "Wait for". */
   robotEvents: RobotEvent[];
-  /** The names of the study's conditions that run this experiment: an action may vary for each. */
+  /** The names of the study's conditions that run this experiment: an action or a step may vary for each. */
   conditions: string[];
 }
 
@@ -85,7 +86,16 @@ function Toolbar({ what, onMove, onDelete }: { what: string; onMove: Props["onMo
   );
 }
 
-function StepProperties({ draft, stepId, issues, run, onMove, onDelete }: Props & { stepId: string }) {
+function StepProperties({
+  draft,
+  stepId,
+  issues,
+  blockFor,
+  run,
+  onMove,
+  onDelete,
+  conditions,
+}: Props & { stepId: string }) {
   const { step, index } = locateStep(draft, stepId);
   const own = issues.filter((i) => i.stepId === stepId && !i.actionId);
   return (
@@ -118,6 +128,7 @@ function StepProperties({ draft, stepId, issues, run, onMove, onDelete }: Props 
         hint="The longest this step may last from when the trial enters it. Leave empty for no limit."
         onChange={(limit) => run(commands.setStepTimeLimit(stepId, limit))}
       />
+      <StepVariantsField step={step} conditions={conditions} blockFor={blockFor} run={run} />
       <IssueList issues={own} />
       <Toolbar what="step" onMove={onMove} onDelete={onDelete} />
     </div>

@@ -1,6 +1,6 @@
 "use client";
 // The names of the study's conditions that run this experiment: the
-// conditions an action may vary for (variants are kept by condition name).
+// conditions an action or a step may vary for (variants are kept by condition name).
 import { useQuery } from "@tanstack/react-query";
 import { useMemo } from "react";
 import { useTRPC } from "@/lib/trpc";
