@@ -7,12 +7,11 @@
   finished saying what naoqi_driver passed it from /speech;
 - /speech_stop and /animation_stop (std_msgs/Empty): an emergency stop
   silences the robot and ends its gesture at once."""
-import os
 
-import qi
-import rclpy
 from rclpy.node import Node
 from std_msgs.msg import Empty, String
+
+from naoqi_node import run
 
 
 class Relay(Node):
@@ -65,16 +64,7 @@ class Relay(Node):
 
 
 def main() -> None:
-    url = f"tcp://{os.environ['NAO_IP']}:{os.environ.get('NAO_PORT', '9559')}"
-    app = qi.Application(["hristudio-animation-relay", f"--qi-url={url}"])
-    app.start()
-    rclpy.init()
-    node = Relay(app.session)
-    try:
-        rclpy.spin(node)
-    finally:
-        node.destroy_node()
-        rclpy.shutdown()
+    run("hristudio-animation-relay", Relay)
 
 
 if __name__ == "__main__":

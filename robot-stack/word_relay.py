@@ -5,10 +5,10 @@ The vocabulary is SPEECH_VOCABULARY (comma-separated): the words the plugins'
 "heard" events listen for, unless a lab sets its own."""
 import os
 
-import qi
-import rclpy
 from naoqi_bridge_msgs.msg import WordRecognized
 from rclpy.node import Node
+
+from naoqi_node import run
 
 VOCABULARY = "ready,I'm ready,yes,no,stop"
 
@@ -38,16 +38,7 @@ class WordRelay(Node):
 
 
 def main() -> None:
-    url = f"tcp://{os.environ['NAO_IP']}:{os.environ.get('NAO_PORT', '9559')}"
-    app = qi.Application(["hristudio-word-relay", f"--qi-url={url}"])
-    app.start()
-    rclpy.init()
-    node = WordRelay(app.session)
-    try:
-        rclpy.spin(node)
-    finally:
-        node.destroy_node()
-        rclpy.shutdown()
+    run("hristudio-word-relay", WordRelay)
 
 
 if __name__ == "__main__":

@@ -29,7 +29,7 @@ describe("robot-stack", () => {
 
   it("has shell and Python files that parse", () => {
     expect(spawnSync("bash", ["-n", join(dir, "entrypoint.sh")]).status).toBe(0);
-    for (const file of ["init_robot.py", "animation_relay.py", "word_relay.py"]) {
+    for (const file of ["init_robot.py", "naoqi_node.py", "animation_relay.py", "word_relay.py"]) {
       const check = spawnSync(
         "python3",
         ["-c", "import ast,sys; ast.parse(open(sys.argv[1]).read())", join(dir, file)],
