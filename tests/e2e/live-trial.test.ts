@@ -351,7 +351,7 @@ describe.sequential("a live trial in two browsers", () => {
   it("shows on the robot page what the simulated robot is doing", async () => {
     const page = await (await newContext(browser, app.url)).newPage();
     await signInAs(page, "observer@demo.hristudio", DEMO_PASSWORD);
-    await page.getByRole("link", { name: "Robot" }).click();
+    await page.getByRole("link", { name: "Robot", exact: true }).click();
     await page.getByText("connected", { exact: true }).waitFor();
     const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
     const [study] = await researcher.studies.mine.query();

@@ -65,8 +65,10 @@ describe.sequential("a bounded loop on the wizard's page", () => {
     await wizard.getByText("robot connected").waitFor();
     await wizard.getByRole("button", { name: /Start trial/ }).click();
     // Asked, then back to ask again, twice: the page says where the step leads each time.
-    for (const then of ["Go to “Ask”", "Go to “Ask”", "Go to “Bye”"]) {
+    for (const [round, then] of ["Go to “Ask”", "Go to “Ask”", "Go to “Bye”"].entries()) {
       await next(wizard, "Say: What color was I?");
+      // The docs' picture: asked again once, about to go back a second time.
+      if (round === 1) await screenshot(wizard, "wizard-loop");
       await next(wizard, then);
     }
     await expect.poll(() => wizard.getByTestId("current-step").textContent()).toBe("Bye");
@@ -87,6 +89,7 @@ describe.sequential("a bounded loop on the wizard's page", () => {
         "From “Ask” back to “Ask”: went back 2 of at most 2 times; its bound was reached and the trial went on",
       ]);
     await expect(loops.getByText("Steps entered more than once: “Ask” 3 times.").count()).resolves.toBe(1);
+    await screenshot(page, "analysis-loops");
     const path = page.getByRole("region", { name: "What moved the trial" });
     await expect
       .poll(() => path.getByRole("listitem").allTextContents())

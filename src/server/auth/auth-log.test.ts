@@ -11,7 +11,8 @@ import { createAuth } from "./auth";
 afterEach(() => vi.restoreAllMocks());
 
 describe("the sign-in library's log", () => {
-  it("says a session lookup failed without the session's token", async () => {
+  // Creating and force-dropping a database wait on the server's disk, which a whole suite keeps busy: more time than a test's default.
+  it("says a session lookup failed without the session's token", { timeout: 90_000 }, async () => {
     const url = await freshDatabaseUrl();
     const { db, close } = createDatabase(url, { max: 2 });
     const auth = createAuth({
