@@ -10,6 +10,7 @@ import { commands, type Command } from "@/core/designer/model";
 import type { DesignStep } from "@/core/designer/types";
 import { Button } from "@/ui/button";
 import { Input } from "@/ui/field";
+import { ConditionColumn } from "./variants-field";
 
 type Action = { id: string; type: string; name: string; parameters: Record<string, unknown> };
 
@@ -38,20 +39,13 @@ export function StepVariantsField({
         {conditions.map((condition) => {
           const variant = step.variants?.[condition];
           return (
-            <fieldset
+            <ConditionColumn
               key={condition}
-              aria-label={`In “${condition}”`}
-              className="min-w-0 space-y-2 rounded border border-slate-200 p-2"
+              condition={condition}
+              own={Boolean(variant)}
+              ownLabel={`Own actions in “${condition}”`}
+              onOwn={(own) => run(commands.setStepVariant(step.id, condition, own))}
             >
-              <label className="flex items-center gap-2 text-sm">
-                <input
-                  type="checkbox"
-                  className="h-4 w-4"
-                  checked={Boolean(variant)}
-                  onChange={(e) => run(commands.setStepVariant(step.id, condition, e.target.checked))}
-                />
-                Own actions in “{condition}”
-              </label>
               {!variant ? (
                 <p className="text-xs text-slate-500">Runs the step's actions.</p>
               ) : !variant.actions.length ? (
@@ -90,7 +84,7 @@ export function StepVariantsField({
                   })}
                 </ol>
               )}
-            </fieldset>
+            </ConditionColumn>
           );
         })}
       </div>

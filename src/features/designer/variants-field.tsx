@@ -5,6 +5,7 @@
 import type { Block } from "@/core/designer/blocks";
 import { commands, type Command } from "@/core/designer/model";
 import type { DesignAction } from "@/core/designer/types";
+import type { ReactNode } from "react";
 import { SchemaForm } from "@/ui/schema-form";
 
 export function VariantsField({
@@ -28,20 +29,13 @@ export function VariantsField({
           const variant = variants[condition];
           const set = (next: typeof variant | null) => run(commands.setVariant(action.id, condition, next ?? null));
           return (
-            <fieldset
+            <ConditionColumn
               key={condition}
-              aria-label={`In “${condition}”`}
-              className="min-w-0 space-y-2 rounded border border-slate-200 p-2"
+              condition={condition}
+              own={Boolean(variant)}
+              ownLabel={`Own in “${condition}”`}
+              onOwn={(own) => set(own ? { parameters: action.parameters } : null)}
             >
-              <label className="flex items-center gap-2 text-sm">
-                <input
-                  type="checkbox"
-                  className="h-4 w-4"
-                  checked={Boolean(variant)}
-                  onChange={(e) => set(e.target.checked ? { parameters: action.parameters } : null)}
-                />
-                Own in “{condition}”
-              </label>
               {variant ? (
                 <SchemaForm
                   schema={block.parameterSchema}
@@ -51,10 +45,35 @@ export function VariantsField({
               ) : (
                 <p className="text-xs text-slate-500">Runs the action as above.</p>
               )}
-            </fieldset>
+            </ConditionColumn>
           );
         })}
       </div>
+    </fieldset>
+  );
+}
+
+/** One condition's column of a "Varies by condition": whether it has its own, and what it runs. */
+export function ConditionColumn({
+  condition,
+  own,
+  ownLabel,
+  onOwn,
+  children,
+}: {
+  condition: string;
+  own: boolean;
+  ownLabel: string;
+  onOwn: (own: boolean) => void;
+  children: ReactNode;
+}) {
+  return (
+    <fieldset aria-label={`In “${condition}”`} className="min-w-0 space-y-2 rounded border border-slate-200 p-2">
+      <label className="flex items-center gap-2 text-sm">
+        <input type="checkbox" className="h-4 w-4" checked={own} onChange={(e) => onOwn(e.target.checked)} />
+        {ownLabel}
+      </label>
+      {children}
     </fieldset>
   );
 }
