@@ -40,6 +40,10 @@ export class Researcher {
     await this.page.mouse.down();
     await this.page.mouse.move(s.x + s.width / 2 + 12, s.y + s.height / 2, { steps: 3 });
     await this.page.mouse.move(t.x + t.width / 2, t.y + t.height / 2, { steps: 12 });
+    // The timeline may have moved under the pointer as the drag began (an open block's properties, a slow
+    // render): the drop lands where the zone is now, not where it was.
+    const now = (await target.boundingBox())!;
+    await this.page.mouse.move(now.x + now.width / 2, now.y + now.height / 2, { steps: 2 });
     await this.page.mouse.up();
     // A new block is selected: its properties open beside the timeline. ("Run together" adds none.)
     const name = (await source.locator("span").first().textContent())!;
