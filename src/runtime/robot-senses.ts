@@ -14,17 +14,6 @@ import {
 } from "@/core/plugins";
 import type { Transport } from "@/robots/transports";
 
-/**
- * How often a distance is read: a sonar or a laser reports all along (10 Hz or
- * more) whether anyone is near or not, and every reading crosses the link and
- * is matched. A fifth of a second is finer than any "for a time" a study sets;
- * at full rate fifty robots' sonars cost the other trials' commands their tail
- * (bench/trial-latency, 50 trials × 10 observers paced, quiet machine: p99
- * 110–157 ms with every reading, 62–96 ms with five a second, about 40 ms with
- * none). A touch or a heard word is never thinned.
- */
-export const DISTANCE_READING_MS = 200;
-
 /** Watches every declared event until the returned function is called. */
 export function watchSenses(
   transport: Pick<Transport, "subscribe">,
@@ -52,11 +41,17 @@ export function watchSenses(
         }
       },
       // A touch topic is quiet until someone touches: its silence is no fault to report.
-      {
-        kind: "event",
-        ...(events.every((e) => e.when.kind === "near") ? { throttleRate: DISTANCE_READING_MS } : {}),
-      },
+      // A topic that reports all along (a sonar) is read at its declared rate: fifty robots' sonars at full rate cost
+      // the other trials' tail (bench/trial-latency, 50 × 10 paced: p99 110–157 ms, 62–96 ms at 200 ms). The slowest
+      // rate its events allow, and none if one of them leaves it out (a touch: no press may be missed).
+      { kind: "event", ...throttleOf(events) },
     ),
   );
   return () => stops.forEach((stop) => stop());
+}
+
+function throttleOf(events: RobotEvent[]): { throttleRate?: number } {
+  const rates = events.map((e) => e.throttleRate ?? 0);
+  const rate = Math.min(...rates);
+  return rate > 0 ? { throttleRate: rate } : {};
 }

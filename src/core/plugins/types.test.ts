@@ -55,6 +55,7 @@ const EVENT: Fields<RobotEvent> = {
   description: true,
   topic: true,
   messageType: true,
+  throttleRate: true,
   when: true,
 };
 type Kind<K extends Condition["kind"]> = Fields<Extract<Condition, { kind: K }>>;

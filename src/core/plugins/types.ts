@@ -121,6 +121,8 @@ export interface RobotEvent {
   description?: string;
   topic: string;
   messageType: string;
+  /** Least milliseconds between the messages read (rosbridge's throttle): for a topic that reports all along, such as a sonar. */
+  throttleRate?: number;
   /** The condition on the message that makes it this event (senses.ts matches it). */
   when: Condition;
 }
