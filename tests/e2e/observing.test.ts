@@ -136,8 +136,9 @@ describe.sequential("observing a live trial", () => {
     /** One key press, confirmed by the runtime: the page counts it and names it as my last code. */
     const press = async (page: Page, key: string, count: number, name: string) => {
       await page.keyboard.press(key);
+      // The runtime's confirmation may take longer than expect.poll's default second in a loaded run.
       await expect
-        .poll(() => marked(page).textContent())
+        .poll(() => marked(page).textContent(), { timeout: 15_000 })
         .toBe(`${count} code${count === 1 ? "" : "s"} marked; last: ${name}`);
     };
     for (const page of observers) await marked(page).waitFor({ timeout: 30_000 });
