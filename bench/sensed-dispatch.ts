@@ -48,13 +48,14 @@ const steps: ProtocolSnapshot["steps"] = [
 
 // The robot says its line at once: the speaking would set the pace, not what is measured.
 const live = await startLiveBench({ steps, msPerChar: 0 });
-const trial = await live.newTrial();
+const trial = await live.newTrial(0);
+const sim = live.sims[0]!;
 
 // The Robot page: a roslib client on the simulated robot, one publisher of stimuli.
-const page = new ROSLIB.Ros({ url: live.sim.url });
+const page = new ROSLIB.Ros({ url: sim.url });
 await new Promise<void>((ok, fail) => {
   page.on("connection", () => ok());
-  page.on("error", (e) => fail(new Error(`Could not reach the simulated robot at ${live.sim.url}: ${String(e)}`)));
+  page.on("error", (e) => fail(new Error(`Could not reach the simulated robot at ${sim.url}: ${String(e)}`)));
 });
 const control = new ROSLIB.Topic({ ros: page, name: STIMULUS_TOPIC, messageType: "std_msgs/msg/String" });
 const fire = () => control.publish({ data: JSON.stringify(READY) });
@@ -83,7 +84,7 @@ const wizard = await live.socket(trial.id, live.wizardId, (events) => {
 });
 // The trial's robot link watches /word_recognized from the wizard's hello on: before that a word is lost.
 while (
-  !live.sim.received.some((r) => {
+  !sim.received.some((r) => {
     const m = r.message as { op?: string; topic?: string };
     return m.op === "subscribe" && m.topic === "/word_recognized";
   })

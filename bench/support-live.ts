@@ -6,6 +6,7 @@ import { spawn } from "node:child_process";
 import { readFileSync } from "node:fs";
 import { join } from "node:path";
 import type { ProtocolSnapshot } from "../src/core/protocol/document";
+import type { Simulator } from "../src/robots/simulator";
 import { startDefaultSimulator } from "../src/robots/simulator/main";
 import { SOCKET_MESSAGES_VERSION } from "../src/core/socket/messages";
 import { freePort } from "../src/store/embedded";
@@ -33,26 +34,42 @@ export async function startLiveBench({
   let refused = 0;
   const reasons = new Set<string>();
   const OBSERVERS = 10;
-  /** The most trials a bench runs at once (50), and the warm-up's. */
-  const ROBOTS = 51;
-
   const database = await scratchDatabase();
   const { db, close } = createDatabase(database.url, { max: 4 });
-  const sim = await startDefaultSimulator({
-    SIM_PORT: "0",
-    ...(msPerChar === undefined ? {} : { SIM_MS_PER_CHAR: String(msPerChar) }),
-  });
   const heard = new Map<string, (at: number) => void>();
-  const record = sim.received.push.bind(sim.received);
-  // Every message the robot receives, timed as it arrives.
-  sim.received.push = (...items) => {
-    const at = performance.now();
-    for (const item of items) {
-      const text = (item.message.msg as { data?: string } | undefined)?.data;
-      if (text) heard.get(text)?.(at);
+  /** The simulated robots, one per registered robot, and each one's row id, in the order they were added. */
+  const sims: Simulator[] = [];
+  const robotIds: string[] = [];
+
+  /**
+   * Registers robots until there are `count`, each its own simulated robot, as in a lab, where each robot is its
+   * own rosbridge: robots sharing one would each hear every other's topics (their done messages, their state),
+   * which no lab sees. Added when a bench needs them, so that a bench of one trial runs beside one robot's timers.
+   */
+  async function robotsUpTo(count: number) {
+    while (sims.length < count) {
+      const sim = await startDefaultSimulator({
+        SIM_PORT: "0",
+        ...(msPerChar === undefined ? {} : { SIM_MS_PER_CHAR: String(msPerChar) }),
+      });
+      const record = sim.received.push.bind(sim.received);
+      // Every message the robot receives, timed as it arrives.
+      sim.received.push = (...items) => {
+        const at = performance.now();
+        for (const item of items) {
+          const text = (item.message.msg as { data?: string } | undefined)?.data;
+          if (text) heard.get(text)?.(at);
+        }
+        return record(...items);
+      };
+      const [robot] = await db
+        .insert(robots)
+        .values({ name: `Bench robot ${sims.length + 1}`, simulated: true, rosbridgeUrl: sim.url, allStudies: true })
+        .returning({ id: robots.id });
+      sims.push(sim);
+      robotIds.push(robot!.id);
     }
-    return record(...items);
-  };
+  }
 
   const runtimePort = await freePort();
   // BENCH_PROFILE=<folder>: the runtime writes a CPU profile there as it stops (Bun's, in Markdown), to find a tail's cause.
@@ -65,7 +82,8 @@ export async function startLiveBench({
       BETTER_AUTH_SECRET: SECRET,
       HRI_RUNTIME_PORT: String(runtimePort),
       HOST: "127.0.0.1",
-      HRI_ROSBRIDGE_URL: sim.url,
+      // No robot from the environment: the bench's robots are the registered ones, each its own simulator.
+      HRI_ROSBRIDGE_URL: undefined,
       // Each socket stands in for a browser of its own: the bench says which, as a lab's proxy
       // would, so the runtime's cap on connections per address that have not said hello counts
       // browsers rather than this one process.
@@ -91,15 +109,8 @@ export async function startLiveBench({
     password: "bench-password",
     role: "observer",
   });
-  // A robot drives one live trial at a time: as many robots as trials run at once, all the one simulator.
-  await db.insert(robots).values(
-    Array.from({ length: ROBOTS }, (_, i) => ({
-      name: `Bench robot ${i + 1}`,
-      simulated: true,
-      rosbridgeUrl: sim.url,
-      allStudies: true,
-    })),
-  );
+  // A robot drives one live trial at a time: two to begin with (a trial, and the last one still letting go).
+  await robotsUpTo(2);
   const [study] = await db.insert(studies).values({ title: "Bench", status: "active" }).returning();
   // The runtime looks each caller's role up in the study at hello.
   await db.insert(studyMembers).values([
@@ -120,10 +131,16 @@ export async function startLiveBench({
     .values({ experimentId: experiment!.id, version: 1, snapshot, hash: "bench", robotId: "nao6-ros2" })
     .returning();
 
+  /**
+   * A browser's socket on the trial. `onEvents` gets each batch of events with when it arrived; with `wants`, only
+   * the batches whose text holds it are parsed: the many browsers live in this one process, where a browser's own
+   * parsing (on its own computer in a lab) would stand between the runtime and the next browser's timing.
+   */
   async function socket(
     trialId: string,
     userId: string,
-    onEvents: (events: Array<{ type: string; parameters?: { text?: string } }>) => void,
+    onEvents: (events: Array<{ type: string; parameters?: { text?: string } }>, at: number) => void,
+    wants?: string,
   ) {
     browsers++;
     // A documentation address (192.0.2.0/24) per socket, only ever a header: nothing is sent there.
@@ -135,9 +152,12 @@ export async function startLiveBench({
       // Shut before its welcome (an expired link, an overloaded runtime): the bench says why rather than wait.
       ws.onclose = (e) => fail(new Error(`The runtime closed a socket before its welcome: ${e.reason || e.code}`));
       ws.onmessage = (m) => {
-        const message = JSON.parse(String(m.data));
+        const at = performance.now();
+        const text = String(m.data);
+        if (wants && text.startsWith('{"type":"events"') && !text.includes(wants)) return;
+        const message = JSON.parse(text);
         if (message.type === "welcome") ok();
-        if (message.type === "events") onEvents(message.events);
+        if (message.type === "events") onEvents(message.events, at);
         if (message.type === "rejected") {
           refused++;
           // Each reason once: a bench that is refused should say why.
@@ -171,7 +191,10 @@ export async function startLiveBench({
   /**
    * One trial: a wizard and `observers` observers; `commands` unscripted lines, one after another, at most one
    * per `paceMs`. `toObservers` gets each line's time until the last observer has it; `toEach`, when given,
-   * each observer's own times, one list per observer.
+   * each observer's own times, one list per observer. `together`, when given, holds the lines until every
+   * trial of the group has started (its robot linked, its observers welcomed), and the end until every trial
+   * has sent its lines: the group's figures are those of trials running side by side, not of trials starting
+   * or ending beside them. `toStart` gets the time until the start was acknowledged.
    */
   async function runTrial(
     commands: number,
@@ -180,11 +203,11 @@ export async function startLiveBench({
     paceMs = 0,
     observing = OBSERVERS,
     toEach?: number[][],
+    together?: { started: () => Promise<void>; sent: () => Promise<void>; toStart: number[] },
   ) {
     const trial = await newTrial();
     const seen = new Map<string, { sent: number; left: number; done: (at: number) => void }>();
-    const observe = (k: number) => (events: Array<{ type: string; parameters?: { text?: string } }>) => {
-      const at = performance.now();
+    const observe = (k: number) => (events: Array<{ type: string; parameters?: { text?: string } }>, at: number) => {
       for (const e of events) {
         const waiting = e.type === "action.requested" && e.parameters?.text ? seen.get(e.parameters.text) : undefined;
         if (!waiting) continue;
@@ -193,11 +216,14 @@ export async function startLiveBench({
       }
     };
     const observers = await Promise.all(
-      Array.from({ length: observing }, (_, k) => socket(trial!.id, observerUser.id, observe(k))),
+      Array.from({ length: observing }, (_, k) => socket(trial!.id, observerUser.id, observe(k), '"action.requested"')),
     );
     const wizard = await socket(trial!.id, wizardUser.id, () => {});
+    const starting = performance.now();
     const notStarted = await wizard.command({ kind: "start" });
     if (notStarted) throw new Error(`The runtime refused to start a trial: ${notStarted}`);
+    together?.toStart.push(performance.now() - starting);
+    await together?.started();
     for (let i = 0; i < commands; i++) {
       const text = `line ${trial!.id} ${i}`;
       const sent = performance.now();
@@ -223,17 +249,42 @@ export async function startLiveBench({
       const rest = paceMs - (performance.now() - sent);
       if (rest > 0) await new Promise((r) => setTimeout(r, rest));
     }
+    await together?.sent();
     // Ended, so that its robot is free for the next trial.
     await wizard.command({ kind: "complete" });
     [wizard, ...observers].forEach((s) => s.close());
     return trial!.id;
   }
 
-  /** A new trial of the bench's study, not yet started. */
-  async function newTrial() {
+  /**
+   * Trials run side by side (runTrial's `together`): `size` of them, their start times into `toStart`. Once all
+   * have started, each begins its lines at its own moment within the first `paceMs`, as wizards who do not
+   * press together would: released at once, every trial's line would come in the same instant, each time.
+   */
+  function group(size: number, paceMs: number, toStart: number[]) {
+    const allStarted = barrier(size);
+    let joined = 0;
+    return {
+      started: async () => {
+        const phase = (joined++ / size) * paceMs;
+        await allStarted();
+        await new Promise((r) => setTimeout(r, phase));
+      },
+      sent: barrier(size),
+      toStart,
+    };
+  }
+
+  /** A new trial of the bench's study, not yet started; on `sims[robot]` when `robot` is given, else on a free one. */
+  async function newTrial(robot?: number) {
     const [trial] = await db
       .insert(trials)
-      .values({ studyId: study!.id, experimentId: experiment!.id, versionId: version!.id })
+      .values({
+        studyId: study!.id,
+        experimentId: experiment!.id,
+        versionId: version!.id,
+        assignedRobotId: robot === undefined ? null : robotIds[robot]!,
+      })
       .returning();
     return trial!;
   }
@@ -242,8 +293,9 @@ export async function startLiveBench({
     db,
     newTrial,
     socket,
-    /** The simulated robot: its address (a Robot page's, to fire its senses) and what it has received. */
-    sim,
+    /** The simulated robots, one per registered robot: each one's address (a Robot page's, to fire its senses) and what it has received. */
+    sims,
+    robotsUpTo,
     /** The robot's listeners by the text it hears: each is told when that text arrives. */
     heard,
     wizardId: wizardUser.id,
@@ -275,6 +327,7 @@ export async function startLiveBench({
       return events;
     },
     runTrial,
+    group,
     /** The runtime's resident memory now, in MiB. */
     runtimeMemoryMiB: () =>
       Number(/VmRSS:\s+(\d+)/.exec(readFileSync(`/proc/${runtime.pid}/status`, "utf8"))![1]) / 1024,
@@ -297,9 +350,20 @@ export async function startLiveBench({
     async stop() {
       runtime.kill("SIGTERM");
       await new Promise((ok) => runtime.once("exit", ok));
-      await sim.close();
+      await Promise.all(sims.map((sim) => sim.close()));
       await close();
       await database.stop();
     },
+  };
+}
+
+/** Resolves each caller once `size` callers have come. */
+function barrier(size: number) {
+  let arrived = 0;
+  let open: () => void;
+  const opened = new Promise<void>((ok) => (open = ok));
+  return () => {
+    if (++arrived === size) open();
+    return opened;
   };
 }

@@ -34,8 +34,13 @@ const worst = each.reduce((w, samples) => (p99Of(samples) > p99Of(w) ? samples :
 report(`1 trial × ${CROWD} observers: → the slowest observer (by p99)`, worst, 5);
 report(`1 trial × ${CROWD} observers: → all ${CROWD} observers updated`, crowd.observers);
 
-const many = { robot: [] as number[], observers: [] as number[] };
-await Promise.all(Array.from({ length: 50 }, () => runTrial(40, many.robot, many.observers, PACE_MS)));
+const many = { robot: [] as number[], observers: [] as number[], started: [] as number[] };
+await live.robotsUpTo(51);
+const fifty = live.group(50, PACE_MS, many.started);
+await Promise.all(
+  Array.from({ length: 50 }, () => runTrial(40, many.robot, many.observers, PACE_MS, undefined, undefined, fifty)),
+);
+report("50 trials × 10 observers, started at once: start → acknowledged", many.started);
 report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → robot received`, many.robot, 25);
 report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → all observers updated`, many.observers, 25);
 
