@@ -17,6 +17,8 @@ const MINUTES = Number(process.env.SOAK_MINUTES ?? 10);
 const PACE_MS = 2000;
 
 const live = await startLiveBench();
+// A robot for each of the 50 trials, and one for the trial before them still letting go.
+await live.robotsUpTo(51);
 await live.runTrial(30, [], []); // warm-up
 const idle = live.runtimeMemoryMiB();
 const began = performance.now();
@@ -25,8 +27,15 @@ const sample = () => memory.push({ s: Math.round((performance.now() - began) / 1
 const sampler = setInterval(sample, 2_000);
 
 const lines = Math.floor((MINUTES * 60_000) / PACE_MS);
-const paced = { robot: [] as number[], observers: [] as number[] };
-await Promise.all(Array.from({ length: 50 }, () => live.runTrial(lines, paced.robot, paced.observers, PACE_MS)));
+const paced = { robot: [] as number[], observers: [] as number[], started: [] as number[] };
+// Side by side once all have started, each wizard beginning at its own moment (see runTrial's `together`).
+const fifty = live.group(50, PACE_MS, paced.started);
+await Promise.all(
+  Array.from({ length: 50 }, () =>
+    live.runTrial(lines, paced.robot, paced.observers, PACE_MS, undefined, undefined, fifty),
+  ),
+);
+report("soak: 50 trials × 10 observers, started at once: start → acknowledged", paced.started);
 const running = (performance.now() - began) / 1000;
 report(`soak: 50 trials × 10 observers, ${MINUTES} min: → robot`, paced.robot, 25);
 report(`soak: 50 trials × 10 observers, ${MINUTES} min: → all observers`, paced.observers, 25);
