@@ -24,6 +24,8 @@ export function stopLinks(
   linkFor: (plugin: Plugin, robot: RobotRecord) => RobotLink | null,
 ) {
   const held = new Map<string, Held>();
+  /** Closed as the process stops: a page that follows a trial now (its host closing) opens no link to read for. */
+  let shut = false;
 
   async function connect(trialId: string, entry: Held) {
     const chosen = await trialPlugin(db, trialId);
@@ -43,6 +45,7 @@ export function stopLinks(
   return {
     /** Keeps the trial's stop link open until the function returned is called. */
     hold(trialId: string): () => void {
+      if (shut) return () => {};
       let entry = held.get(trialId);
       if (!entry) {
         const fresh: Held = { count: 0, link: null, closed: false };
@@ -70,6 +73,7 @@ export function stopLinks(
       return true;
     },
     closeAll() {
+      shut = true;
       for (const entry of held.values()) {
         entry.closed = true;
         entry.link?.close();
