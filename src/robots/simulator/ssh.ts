@@ -24,12 +24,24 @@ export interface SimulatedSsh {
 }
 
 const digest = (text: string) => createHash("sha256").update(text).digest();
+
+/**
+ * A fresh ed25519 host key that ssh2 itself can read. Its generator writes the public key as a number, so one
+ * whose first byte is zero comes out 31 bytes long and is refused as malformed (about one key in 200: the
+ * simulated robot then failed to start now and again); such a key is made again.
+ */
+export function hostKey(): string {
+  for (;;) {
+    const key = utils.generateKeyPairSync("ed25519").private;
+    if (!(utils.parseKey(key) instanceof Error)) return key;
+  }
+}
 const same = (a: string, b: string) => timingSafeEqual(digest(a), digest(b));
 
 export async function startSimulatedSsh(options: SimulatedSshOptions, state: RobotState): Promise<SimulatedSsh> {
   const commands: SimulatedSsh["commands"] = [];
   const clients = new Set<{ end(): unknown }>();
-  const server = new Server({ hostKeys: [utils.generateKeyPairSync("ed25519").private] }, (client) => {
+  const server = new Server({ hostKeys: [hostKey()] }, (client) => {
     clients.add(client);
     client.on("close", () => clients.delete(client));
     client.on("error", () => client.end());
