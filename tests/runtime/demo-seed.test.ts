@@ -3,37 +3,22 @@
 // "Publish this experiment first"; publishing the unchanged draft again is
 // that same version 1, not a copy under a new number.
 import { sql } from "drizzle-orm";
-import { afterAll, beforeAll, expect, it } from "vitest";
+import { afterAll, expect, it } from "vitest";
 import { hashCanonical } from "../../src/core/protocol/canonical";
-import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
-import { RosbridgeTransport } from "../../src/robots/transports/rosbridge";
-import { pluginRobot } from "../../src/runtime/robot-link";
-import { trialHosts, type TrialHosts } from "../../src/runtime/trial-hosts";
 import { seedDemo } from "../../src/server/seed/demo";
-import { createSessionClient } from "../../src/store/client";
 import { buildFixture, demoPerson } from "../api/fixture";
 import { freshDatabase } from "../support/db";
 import { firstPartyPlugin } from "../support/plugins";
+import { simulatedHosts } from "../support/simulated-hosts";
 
 const nao = firstPartyPlugin("nao6-ros2.json");
 const { db, url, close } = await freshDatabase();
 await seedDemo(db);
 const f = await buildFixture(db);
-let sim: Simulator;
-let hosts: TrialHosts;
+const { hosts, close: closeHosts } = await simulatedHosts(db, url, nao);
 
-beforeAll(async () => {
-  sim = await startSimulator({ port: 0, nodes: simulatedRobot(nao, { msPerChar: 0 }) });
-  hosts = trialHosts(
-    db,
-    () => createSessionClient(url),
-    () => pluginRobot(nao, new RosbridgeTransport({ url: sim.url })),
-    () => {},
-  );
-});
 afterAll(async () => {
-  await hosts.closeAll();
-  await sim.close();
+  await closeHosts();
   await close();
 });
 

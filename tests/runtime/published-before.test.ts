@@ -4,38 +4,23 @@
 // the simulated NAO6 to its end, and its stored value is never rewritten.
 import { readFileSync } from "node:fs";
 import { eq, sql } from "drizzle-orm";
-import { afterAll, beforeAll, expect, it } from "vitest";
+import { afterAll, expect, it } from "vitest";
 import { hashCanonical } from "../../src/core/protocol/canonical";
 import { nextUnit } from "../../src/core/trial";
-import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
-import { RosbridgeTransport } from "../../src/robots/transports/rosbridge";
-import { pluginRobot } from "../../src/runtime/robot-link";
-import { trialHosts, type TrialHosts } from "../../src/runtime/trial-hosts";
-import { createSessionClient } from "../../src/store/client";
 import { experimentVersions, experiments, studies, trials } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
 import { firstPartyPlugin } from "../support/plugins";
+import { simulatedHosts } from "../support/simulated-hosts";
 
 const nao = firstPartyPlugin("nao6-ros2.json");
 // The storyteller as commit 3912942 published it: format version 1, the robot named robotPluginId.
 const { hash, snapshot } = JSON.parse(readFileSync("tests/fixtures/documents/storyteller.v1.snapshot.json", "utf8"));
 
 const { db, url, close } = await freshDatabase();
-let sim: Simulator;
-let hosts: TrialHosts;
+const { sim, hosts, close: closeHosts } = await simulatedHosts(db, url, nao);
 
-beforeAll(async () => {
-  sim = await startSimulator({ port: 0, nodes: simulatedRobot(nao, { msPerChar: 0 }) });
-  hosts = trialHosts(
-    db,
-    () => createSessionClient(url),
-    () => pluginRobot(nao, new RosbridgeTransport({ url: sim.url })),
-    () => {},
-  );
-});
 afterAll(async () => {
-  await hosts.closeAll();
-  await sim.close();
+  await closeHosts();
   await close();
 });
 

@@ -8,16 +8,13 @@ import { afterAll, beforeAll, expect, it } from "vitest";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import type { StoredEvent } from "../../src/core/trial";
 import { type Stimulus, STIMULUS_TOPIC } from "../../src/core/robots/stimulus";
-import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
-import { RosbridgeTransport } from "../../src/robots/transports/rosbridge";
-import { pluginRobot } from "../../src/runtime/robot-link";
-import { trialHosts, type TrialHosts } from "../../src/runtime/trial-hosts";
 import { createAccount } from "../../src/server/auth/accounts";
-import { createSessionClient } from "../../src/store/client";
 import { eventsSince } from "../../src/store/event-store";
-import { experiments, studies, trials } from "../../src/store/schema";
+import { studies } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
 import { firstPartyPlugin } from "../support/plugins";
+import { simulatedHosts } from "../support/simulated-hosts";
+import { rehearsalOf } from "../support/trial-rows";
 
 const plugin = firstPartyPlugin("simulated.json");
 
@@ -45,20 +42,12 @@ const protocol: ProtocolSnapshot = {
 };
 
 const { db, url, close } = await freshDatabase();
-let sim: Simulator;
-let hosts: TrialHosts;
+const { sim, hosts, close: closeHosts } = await simulatedHosts(db, url, plugin);
 let page: ROSLIB.Ros;
 let studyId = "";
 let wizardId = "";
 
 beforeAll(async () => {
-  sim = await startSimulator({ port: 0, nodes: simulatedRobot(plugin, { msPerChar: 0 }) });
-  hosts = trialHosts(
-    db,
-    () => createSessionClient(url),
-    () => pluginRobot(plugin, new RosbridgeTransport({ url: sim.url })),
-    () => {},
-  );
   page = new ROSLIB.Ros({ url: sim.url });
   await new Promise<void>((ok, fail) => {
     page.on("connection", () => ok());
@@ -78,8 +67,7 @@ beforeAll(async () => {
 
 afterAll(async () => {
   page?.close();
-  await hosts.closeAll();
-  await sim?.close();
+  await closeHosts();
   await close();
 });
 
@@ -107,16 +95,12 @@ function headMessages() {
 
 /** A rehearsal of the protocol, open on its host and started, its robot watching the head: the wait is pending. */
 async function waitingTrial() {
-  const [experiment] = await db.insert(experiments).values({ studyId, name: "E", robotId: "simulated" }).returning();
-  const [trial] = await db
-    .insert(trials)
-    .values({ studyId, experimentId: experiment!.id, isRehearsal: true, rehearsalSnapshot: protocol })
-    .returning({ id: trials.id });
+  const trialId = await rehearsalOf(db, studyId, protocol);
   const watching = subscriptions("/head_touch");
-  const host = (await hosts.get(trial!.id))!;
+  const host = (await hosts.get(trialId))!;
   await expect.poll(() => subscriptions("/head_touch"), { timeout: 10_000 }).toBeGreaterThan(watching);
   expect(await host.command({ kind: "start" }, wizardId)).toMatchObject({ ok: true });
-  return { trialId: trial!.id, host };
+  return { trialId, host };
 }
 
 /** What moved the trial, and what the robot sensed, in order. */

@@ -3,16 +3,12 @@
 // locks a runtime holds are bounded by the trials being run, with the real
 // roslib client against the simulated robot and the real advisory locks.
 import { sql } from "drizzle-orm";
-import { afterAll, beforeAll, describe, expect, it } from "vitest";
+import { afterAll, describe, expect, it } from "vitest";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
-import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
-import { RosbridgeTransport } from "../../src/robots/transports/rosbridge";
-import { pluginRobot } from "../../src/runtime/robot-link";
-import { trialHosts, type TrialHosts } from "../../src/runtime/trial-hosts";
-import { createSessionClient } from "../../src/store/client";
 import { experiments, studies, trials } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
 import { firstPartyPlugin } from "../support/plugins";
+import { simulatedHosts } from "../support/simulated-hosts";
 
 const plugin = firstPartyPlugin("simulated.json");
 
@@ -36,23 +32,11 @@ const protocol: ProtocolSnapshot = {
 };
 
 const { db, url, close } = await freshDatabase();
-let sim: Simulator;
-let hosts: TrialHosts;
 const IDLE_MS = 200;
+const { sim, hosts, close: closeHosts } = await simulatedHosts(db, url, plugin, IDLE_MS);
 
-beforeAll(async () => {
-  sim = await startSimulator({ port: 0, nodes: simulatedRobot(plugin, { msPerChar: 0 }) });
-  hosts = trialHosts(
-    db,
-    () => createSessionClient(url),
-    () => pluginRobot(plugin, new RosbridgeTransport({ url: sim.url })),
-    () => {},
-    IDLE_MS,
-  );
-});
 afterAll(async () => {
-  await hosts.closeAll();
-  await sim.close();
+  await closeHosts();
   await close();
 });
 

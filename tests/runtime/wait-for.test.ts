@@ -7,17 +7,13 @@
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import type { StoredEvent } from "../../src/core/trial";
-import { simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
-import { RosbridgeTransport } from "../../src/robots/transports/rosbridge";
-import { pluginRobot } from "../../src/runtime/robot-link";
-import { trialHosts, type TrialHosts } from "../../src/runtime/trial-hosts";
 import { createAccount } from "../../src/server/auth/accounts";
-import { createSessionClient } from "../../src/store/client";
 import { eventsSince } from "../../src/store/event-store";
-import { experiments, studies, trials } from "../../src/store/schema";
+import { studies } from "../../src/store/schema";
 import { freshDatabase } from "../support/db";
 import { firstPartyPlugin } from "../support/plugins";
-import { trialOf } from "../support/trial-rows";
+import { simulatedHosts } from "../support/simulated-hosts";
+import { rehearsalOf, trialOf } from "../support/trial-rows";
 
 const plugin = firstPartyPlugin("simulated.json");
 
@@ -48,19 +44,11 @@ const protocol: ProtocolSnapshot = {
 const touched = { event: "head_touched", at: 1_800_000_000_250, message: { data: true } };
 
 const { db, url, close } = await freshDatabase();
-let sim: Simulator;
-let hosts: TrialHosts;
+const { hosts, close: closeHosts } = await simulatedHosts(db, url, plugin);
 let studyId = "";
 let wizardId = "";
 
 beforeAll(async () => {
-  sim = await startSimulator({ port: 0, nodes: simulatedRobot(plugin, { msPerChar: 0 }) });
-  hosts = trialHosts(
-    db,
-    () => createSessionClient(url),
-    () => pluginRobot(plugin, new RosbridgeTransport({ url: sim.url })),
-    () => {},
-  );
   const [study] = await db.insert(studies).values({ title: "Waits", status: "active" }).returning();
   studyId = study!.id;
   wizardId = (
@@ -74,21 +62,16 @@ beforeAll(async () => {
 }, 60_000);
 
 afterAll(async () => {
-  await hosts.closeAll();
-  await sim?.close();
+  await closeHosts();
   await close();
 });
 
 /** A rehearsal of the protocol, open on its host and started: the wait is pending. */
 async function waitingTrial() {
-  const [experiment] = await db.insert(experiments).values({ studyId, name: "E", robotId: "simulated" }).returning();
-  const [trial] = await db
-    .insert(trials)
-    .values({ studyId, experimentId: experiment!.id, isRehearsal: true, rehearsalSnapshot: protocol })
-    .returning({ id: trials.id });
-  const host = (await hosts.get(trial!.id))!;
+  const trialId = await rehearsalOf(db, studyId, protocol);
+  const host = (await hosts.get(trialId))!;
   expect(await host.command({ kind: "start" }, wizardId)).toMatchObject({ ok: true });
-  return { trialId: trial!.id, host };
+  return { trialId, host };
 }
 
 const from = (log: StoredEvent[], type: string) => log.slice(log.findIndex((e) => e.type === type));

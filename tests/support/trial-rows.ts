@@ -1,6 +1,7 @@
 // A trial of a study straight in the database, for runtime tests: its
 // experiment, that experiment's published version of `snapshot`, and (for a
-// run that needs one) a participant. The study and its wizard are the test's own.
+// run that needs one) a participant; or a rehearsal of a snapshot. The study
+// and its wizard are the test's own.
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import type { Database } from "../../src/store/client";
 import { experimentVersions, experiments, participants, trials } from "../../src/store/schema";
@@ -24,5 +25,19 @@ export async function trialOf(
     .insert(trials)
     .values({ studyId, experimentId: experiment!.id, versionId: version!.id, participantId: participant?.id, wizardId })
     .returning();
+  return trial!.id;
+}
+
+/** A rehearsal of `snapshot` in the study, straight in the database: its experiment and the trial, with no version. */
+export async function rehearsalOf(db: Database, studyId: string, snapshot: ProtocolSnapshot): Promise<string> {
+  const robotId = snapshot.experiment.robotId;
+  const [experiment] = await db
+    .insert(experiments)
+    .values({ studyId, name: snapshot.experiment.name, robotId })
+    .returning();
+  const [trial] = await db
+    .insert(trials)
+    .values({ studyId, experimentId: experiment!.id, isRehearsal: true, rehearsalSnapshot: snapshot })
+    .returning({ id: trials.id });
   return trial!.id;
 }
