@@ -16,7 +16,7 @@ import * as ROSLIB from "roslib";
 import type { ProtocolSnapshot } from "../src/core/protocol/document";
 import { type Stimulus, STIMULUS_TOPIC } from "../src/core/robots/stimulus";
 import { report } from "./support";
-import { startLiveBench } from "./support-live";
+import { sayStep, startLiveBench } from "./support-live";
 
 const EVENTS = 300;
 const WARM_UP = 20;
@@ -37,13 +37,7 @@ const steps: ProtocolSnapshot["steps"] = [
       },
     ],
   },
-  {
-    id: "say",
-    name: "Say",
-    description: "",
-    after: { to: "step", stepId: "wait" },
-    actions: [{ id: "line", type: "say", name: "", parameters: { text: LINE }, parallelGroup: null }],
-  },
+  sayStep(LINE),
 ];
 
 // The robot says its line at once: the speaking would set the pace, not what is measured.
@@ -60,48 +54,32 @@ await new Promise<void>((ok, fail) => {
 const control = new ROSLIB.Topic({ ros: page, name: STIMULUS_TOPIC, messageType: "std_msgs/msg/String" });
 const fire = () => control.publish({ data: JSON.stringify(READY) });
 
-/** When each stimulus and each line reached the robot (performance.now()). */
+/** When each stimulus reached the robot (performance.now()). */
 const fired: number[] = [];
-const receipts: number[] = [];
-let done: () => void;
-const finished = new Promise<void>((ok) => (done = ok));
 live.heard.set(JSON.stringify(READY), (at) => fired.push(at));
-live.heard.set(LINE, (at) => {
-  receipts.push(at);
-  if (receipts.length === EVENTS + WARM_UP) done();
+const { receipts, seconds, refusedPresses } = await live.loop(trial.id, {
+  line: LINE,
+  via: "sensed",
+  count: EVENTS + WARM_UP,
+  // The wait pending: the participant says "ready" (the first after the start too).
+  onWait: fire,
+  // The trial's robot link watches /word_recognized from the wizard's hello on: before that a word is lost.
+  beforeStart: async () => {
+    while (
+      !sim.received.some((r) => {
+        const m = r.message as { op?: string; topic?: string };
+        return m.op === "subscribe" && m.topic === "/word_recognized";
+      })
+    )
+      await new Promise((r) => setTimeout(r, 20));
+  },
 });
-let fails = 0;
-const wizard = await live.socket(trial.id, live.wizardId, (events) => {
-  for (const e of events as Array<{ type: string; stepId?: string; via?: string; actionId?: string }>) {
-    // The wait pending: the participant says "ready" (the first after the start too).
-    if (e.type === "step.entered" && e.stepId === "wait" && receipts.length < EVENTS + WARM_UP) fire();
-    // Next at once: on "Say" entered by the event (its line), and once the line is said (back to "Wait").
-    const press =
-      (e.type === "step.entered" && e.stepId === "say" && e.via === "sensed") ||
-      (e.type === "action.completed" && e.actionId === "line");
-    if (press) void wizard.command({ kind: "next" }).then((refusal) => refusal && fails++);
-  }
-});
-// The trial's robot link watches /word_recognized from the wizard's hello on: before that a word is lost.
-while (
-  !sim.received.some((r) => {
-    const m = r.message as { op?: string; topic?: string };
-    return m.op === "subscribe" && m.topic === "/word_recognized";
-  })
-)
-  await new Promise((r) => setTimeout(r, 20));
-const began = performance.now();
-const refused = await wizard.command({ kind: "start" });
-if (refused) throw new Error(`The runtime refused to start the trial: ${refused}`);
-await finished;
-await wizard.command({ kind: "complete" });
-wizard.close();
 page.close();
 
 // The k-th line follows the k-th word; the first few warm the runtime and the socket.
 const lateness = receipts.slice(WARM_UP).map((at, k) => at - fired[WARM_UP + k]!);
 report("robot event published → next action received by the robot", lateness, 10);
-console.log(`${"duration of the events".padEnd(58)} ${((performance.now() - began) / 1000).toFixed(1)} s`);
-if (fails) console.error(`refused Next presses: ${fails}`);
+console.log(`${"duration of the events".padEnd(58)} ${seconds.toFixed(1)} s`);
+if (refusedPresses) console.error(`refused Next presses: ${refusedPresses}`);
 await live.stop();
 process.exit(0);

@@ -289,8 +289,47 @@ export async function startLiveBench({
     return trial!;
   }
 
+  /**
+   * The looping benches' run ("Wait", then `sayStep`, and back): a wizard on the trial starts it, presses Next
+   * the moment it enters "Say" `via` its wait, and again once the line is said (back to "Wait"), until the
+   * robot has received `line` `count` times. `onWait` is told each time the trial enters "Wait" until then;
+   * `beforeStart` runs once the wizard has said hello. Each receipt's time is on this process's clock.
+   */
+  async function loop(
+    trialId: string,
+    options: { line: string; via: string; count: number; onWait?: () => void; beforeStart?: () => Promise<void> },
+  ) {
+    const receipts: number[] = [];
+    let done: () => void;
+    const finished = new Promise<void>((ok) => (done = ok));
+    heard.set(options.line, (at) => {
+      receipts.push(at);
+      if (receipts.length === options.count) done();
+    });
+    let refusedPresses = 0;
+    const wizard = await socket(trialId, wizardUser.id, (events) => {
+      for (const e of events as Array<{ type: string; stepId?: string; via?: string; actionId?: string }>) {
+        if (e.type === "step.entered" && e.stepId === "wait" && receipts.length < options.count) options.onWait?.();
+        const press =
+          (e.type === "step.entered" && e.stepId === "say" && e.via === options.via) ||
+          (e.type === "action.completed" && e.actionId === "line");
+        if (press) void wizard.command({ kind: "next" }).then((refusal) => refusal && refusedPresses++);
+      }
+    });
+    await options.beforeStart?.();
+    const began = performance.now();
+    const refused = await wizard.command({ kind: "start" });
+    if (refused) throw new Error(`The runtime refused to start the trial: ${refused}`);
+    await finished;
+    const seconds = (performance.now() - began) / 1000;
+    await wizard.command({ kind: "complete" });
+    wizard.close();
+    return { receipts, seconds, refusedPresses };
+  }
+
   return {
     db,
+    loop,
     newTrial,
     socket,
     /** The simulated robots, one per registered robot: each one's address (a Robot page's, to fire its senses) and what it has received. */
@@ -365,5 +404,16 @@ function barrier(size: number) {
   return () => {
     if (++arrived === size) open();
     return opened;
+  };
+}
+
+/** The looping benches' second step: one line, then back to "Wait" (the first step, each bench's own). */
+export function sayStep(line: string): ProtocolSnapshot["steps"][number] {
+  return {
+    id: "say",
+    name: "Say",
+    description: "",
+    after: { to: "step", stepId: "wait" },
+    actions: [{ id: "line", type: "say", name: "", parameters: { text: line }, parallelGroup: null }],
   };
 }

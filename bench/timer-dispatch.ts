@@ -11,7 +11,7 @@
 import type { ProtocolSnapshot } from "../src/core/protocol/document";
 import { eventsSince } from "../src/store/event-store";
 import { report } from "./support";
-import { startLiveBench } from "./support-live";
+import { sayStep, startLiveBench } from "./support-live";
 
 const FIRES = 300;
 const WARM_UP = 20;
@@ -24,42 +24,17 @@ const steps: ProtocolSnapshot["steps"] = [
     actions: [],
     timeLimit: { seconds: 0.05, after: { to: "step", stepId: "say" } },
   },
-  {
-    id: "say",
-    name: "Say",
-    description: "",
-    after: { to: "step", stepId: "wait" },
-    actions: [{ id: "line", type: "say", name: "", parameters: { text: LINE }, parallelGroup: null }],
-  },
+  sayStep(LINE),
 ];
 
 // The robot says its line at once: the speaking would set the pace, not what is measured.
 const live = await startLiveBench({ steps, msPerChar: 0 });
 const trial = await live.newTrial();
-/** When each line reached the robot, on the wall clock (the runtime's due times are on it too). */
-const receipts: number[] = [];
-let done: () => void;
-const finished = new Promise<void>((ok) => (done = ok));
-live.heard.set(LINE, (at) => {
-  receipts.push(performance.timeOrigin + at);
-  if (receipts.length === FIRES + WARM_UP) done();
+const { receipts, seconds, refusedPresses } = await live.loop(trial.id, {
+  line: LINE,
+  via: "timeout",
+  count: FIRES + WARM_UP,
 });
-let fails = 0;
-const wizard = await live.socket(trial.id, live.wizardId, (events) => {
-  for (const e of events as Array<{ type: string; stepId?: string; via?: string; actionId?: string }>) {
-    // Next at once: on "Say" entered by the time limit (its line), and once the line is said (back to "Wait").
-    const press =
-      (e.type === "step.entered" && e.stepId === "say" && e.via === "timeout") ||
-      (e.type === "action.completed" && e.actionId === "line");
-    if (press) void wizard.command({ kind: "next" }).then((refusal) => refusal && fails++);
-  }
-});
-const began = performance.now();
-const refused = await wizard.command({ kind: "start" });
-if (refused) throw new Error(`The runtime refused to start the trial: ${refused}`);
-await finished;
-await wizard.command({ kind: "complete" });
-wizard.close();
 
 const log = await eventsSince(live.db, trial.id);
 const t0 = log.find((e) => e.type === "trial.started")!.serverTime.getTime();
@@ -70,9 +45,10 @@ const due = log
     return t0 + e.relMs! + seconds * 1000;
   });
 // The k-th line follows the k-th time limit; the first few warm the runtime and the socket.
-const lateness = receipts.slice(WARM_UP).map((at, k) => at - due[WARM_UP + k]!);
+// Receipts on the wall clock, as the runtime's due times are.
+const lateness = receipts.slice(WARM_UP).map((at, k) => performance.timeOrigin + at - due[WARM_UP + k]!);
 report("time limit due → next action received by the robot", lateness, 10);
-console.log(`${"duration of the fires".padEnd(58)} ${((performance.now() - began) / 1000).toFixed(1)} s`);
-if (fails) console.error(`refused Next presses: ${fails}`);
+console.log(`${"duration of the fires".padEnd(58)} ${seconds.toFixed(1)} s`);
+if (refusedPresses) console.error(`refused Next presses: ${refusedPresses}`);
 await live.stop();
 process.exit(0);
