@@ -9,7 +9,7 @@ import { createDatabase } from "../../src/store/client";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, signInAs } from "../support/browser";
 import { freshDatabaseUrl } from "../support/db";
-import { apiClient, signIn } from "../support/http";
+import { publishDemoDesign } from "../support/demo-design";
 
 const ACTIONS = 300;
 
@@ -24,29 +24,19 @@ describe.sequential("the analysis of a long trial", () => {
     app = await startApp({ env: { DATABASE_URL: url, HRI_SEED_DEMO: "true" } });
     database = createDatabase(url, { max: 2 });
     browser = await launchBrowser();
-    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
-    const [study] = await researcher.studies.mine.query();
-    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
-    const draft = await researcher.experiments.get.query({ experimentId: experiment!.id });
-    await researcher.experiments.saveDesign.mutate({
-      experimentId: draft.id,
-      baseRevision: draft.draftRevision,
-      steps: [
-        {
-          name: "A long story",
-          description: "",
-          actions: Array.from({ length: ACTIONS }, (_, i) => ({
-            type: "say",
-            name: `Line ${i + 1}`,
-            parameters: { text: `Line ${i + 1}` },
-            parallelGroup: null,
-          })),
-        },
-      ],
-    });
-    const version = await researcher.versions.publish.mutate({ experimentId: experiment!.id });
-    const [participant] = await researcher.participants.list.query({ studyId: study!.id });
-    trialId = (await researcher.trials.create.mutate({ versionId: version.id, participantId: participant!.id })).id;
+    const { researcher, versionId, participantId } = await publishDemoDesign(app.url, [
+      {
+        name: "A long story",
+        description: "",
+        actions: Array.from({ length: ACTIONS }, (_, i) => ({
+          type: "say",
+          name: `Line ${i + 1}`,
+          parameters: { text: `Line ${i + 1}` },
+          parallelGroup: null,
+        })),
+      },
+    ]);
+    trialId = (await researcher.trials.create.mutate({ versionId, participantId })).id;
     const [step] = (await researcher.trials.get.query({ trialId })).protocol.steps;
 
     // The log as the runtime writes it: the start, the step, every action in turn, the end; a second apart.

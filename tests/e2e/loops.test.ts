@@ -9,10 +9,9 @@ import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { expectAccessible } from "../support/accessibility";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
+import { publishDemoDesign, say } from "../support/demo-design";
 import { apiClient, signIn } from "../support/http";
 import { Researcher } from "../support/researcher";
-
-const say = (text: string) => ({ type: "say", name: "", parameters: { text }, parallelGroup: null });
 
 describe.sequential("a bounded loop on the wizard's page", () => {
   let app: RunningApp;
@@ -23,29 +22,19 @@ describe.sequential("a bounded loop on the wizard's page", () => {
   beforeAll(async () => {
     app = await startApp();
     browser = await launchBrowser();
-    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
     wizardApi = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
-    const [study] = await researcher.studies.mine.query();
-    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
-    const draft = await researcher.experiments.get.query({ experimentId: experiment!.id });
     const ask = randomUUID();
-    await researcher.experiments.saveDesign.mutate({
-      experimentId: draft.id,
-      baseRevision: draft.draftRevision,
-      steps: [
-        {
-          id: ask,
-          name: "Ask",
-          description: "",
-          after: { to: "again", stepId: ask, times: 2, onward: { to: "next" } },
-          actions: [say("What color was I?")],
-        },
-        { name: "Bye", description: "", after: { to: "end" }, actions: [say("Goodbye.")] },
-      ],
-    });
-    const version = await researcher.versions.publish.mutate({ experimentId: experiment!.id });
-    const [participant] = await researcher.participants.list.query({ studyId: study!.id });
-    trialId = (await wizardApi.trials.create.mutate({ versionId: version.id, participantId: participant!.id })).id;
+    const { versionId, participantId } = await publishDemoDesign(app.url, [
+      {
+        id: ask,
+        name: "Ask",
+        description: "",
+        after: { to: "again", stepId: ask, times: 2, onward: { to: "next" } },
+        actions: [say("What color was I?")],
+      },
+      { name: "Bye", description: "", after: { to: "end" }, actions: [say("Goodbye.")] },
+    ]);
+    trialId = (await wizardApi.trials.create.mutate({ versionId, participantId })).id;
   });
   afterAll(async () => {
     await browser?.close();

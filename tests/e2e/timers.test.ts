@@ -9,9 +9,8 @@ import type { Browser } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
+import { publishDemoDesign, say } from "../support/demo-design";
 import { apiClient, signIn } from "../support/http";
-
-const say = (text: string) => ({ type: "say", name: "", parameters: { text }, parallelGroup: null });
 
 describe.sequential("a time limit in the wizard's page", () => {
   let app: RunningApp;
@@ -23,44 +22,35 @@ describe.sequential("a time limit in the wizard's page", () => {
   beforeAll(async () => {
     app = await startApp();
     browser = await launchBrowser();
-    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
     wizardApi = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
-    const [study] = await researcher.studies.mine.query();
-    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
-    experimentId = experiment!.id;
-    const draft = await researcher.experiments.get.query({ experimentId: experiment!.id });
     const prompt = randomUUID();
-    await researcher.experiments.saveDesign.mutate({
-      experimentId: draft.id,
-      baseRevision: draft.draftRevision,
-      steps: [
-        {
-          name: "Ask",
-          description: "",
-          actions: [
-            { type: "say", name: "", parameters: { text: "What color was I?" }, parallelGroup: null },
-            {
-              type: "record_answer",
-              name: "",
-              parameters: {
-                options: [
-                  { id: "red", label: "red" },
-                  { id: "other", label: "other" },
-                ],
-              },
-              parallelGroup: null,
-              // Long enough for the page to be checked and photographed while it counts down.
-              timeLimit: { seconds: 8, after: { to: "step", stepId: prompt } },
+    const published = await publishDemoDesign(app.url, [
+      {
+        name: "Ask",
+        description: "",
+        actions: [
+          { type: "say", name: "", parameters: { text: "What color was I?" }, parallelGroup: null },
+          {
+            type: "record_answer",
+            name: "",
+            parameters: {
+              options: [
+                { id: "red", label: "red" },
+                { id: "other", label: "other" },
+              ],
             },
-          ],
-        },
-        { name: "Bye", description: "", after: { to: "end" }, actions: [say("Goodbye.")] },
-        { id: prompt, name: "Prompt", description: "", after: { to: "end" }, actions: [say("Take your time.")] },
-      ],
-    });
-    const version = await researcher.versions.publish.mutate({ experimentId: experiment!.id });
-    const [participant] = await researcher.participants.list.query({ studyId: study!.id });
-    trialId = (await wizardApi.trials.create.mutate({ versionId: version.id, participantId: participant!.id })).id;
+            parallelGroup: null,
+            // Long enough for the page to be checked and photographed while it counts down.
+            timeLimit: { seconds: 8, after: { to: "step", stepId: prompt } },
+          },
+        ],
+      },
+      { name: "Bye", description: "", after: { to: "end" }, actions: [say("Goodbye.")] },
+      { id: prompt, name: "Prompt", description: "", after: { to: "end" }, actions: [say("Take your time.")] },
+    ]);
+    experimentId = published.experimentId;
+    const { versionId, participantId } = published;
+    trialId = (await wizardApi.trials.create.mutate({ versionId, participantId })).id;
   });
   afterAll(async () => {
     await browser?.close();

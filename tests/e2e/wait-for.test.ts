@@ -10,9 +10,9 @@ import type { Browser, Page } from "playwright-core";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { DEMO_PASSWORD, startApp, type RunningApp } from "../support/app";
 import { launchBrowser, newContext, screenshot, signInAs } from "../support/browser";
+import { publishDemoDesign, say } from "../support/demo-design";
 import { apiClient, signIn } from "../support/http";
 
-const say = (text: string) => ({ type: "say", name: "", parameters: { text }, parallelGroup: null });
 /** A step that says one line, then ends the trial. */
 const saying = (name: string, line: string) => ({
   name,
@@ -34,44 +34,34 @@ describe.sequential("a wait for the robot's senses in the wizard's page", () => 
   beforeAll(async () => {
     app = await startApp();
     browser = await launchBrowser();
-    researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
     wizardApi = apiClient(app.url, await signIn(app.url, "wizard@demo.hristudio", DEMO_PASSWORD));
-    const [study] = await researcher.studies.mine.query();
-    const [experiment] = await researcher.experiments.list.query({ studyId: study!.id });
-    experimentId = experiment!.id;
-    const draft = await researcher.experiments.get.query({ experimentId });
     const touched = randomUUID();
     const ready = randomUUID();
     // "Touch my head to start": head touched → Touched, 'ready' heard → Ready, the go on → Greet (the step's way on).
-    await researcher.experiments.saveDesign.mutate({
-      experimentId: draft.id,
-      baseRevision: draft.draftRevision,
-      steps: [
-        {
-          name: "Wait",
-          description: "",
-          actions: [
-            {
-              type: "wait_for",
-              name: "",
-              parameters: {
-                events: [
-                  { id: "touch", event: "head_touched", after: { to: "step", stepId: touched } },
-                  { id: "ready", event: "heard_ready", after: { to: "step", stepId: ready } },
-                ],
-              },
-              parallelGroup: null,
-              timeLimit: { seconds: 600, after: { to: "end" } },
+    const published = await publishDemoDesign(app.url, [
+      {
+        name: "Wait",
+        description: "",
+        actions: [
+          {
+            type: "wait_for",
+            name: "",
+            parameters: {
+              events: [
+                { id: "touch", event: "head_touched", after: { to: "step", stepId: touched } },
+                { id: "ready", event: "heard_ready", after: { to: "step", stepId: ready } },
+              ],
             },
-          ],
-        },
-        { name: "Greet", description: "", after: { to: "end" }, actions: [say("Hello!")] },
-        { ...saying("Touched", "You touched my head."), id: touched },
-        { ...saying("Ready", "Let us begin."), id: ready },
-      ],
-    });
-    versionId = (await researcher.versions.publish.mutate({ experimentId })).id;
-    studyId = study!.id;
+            parallelGroup: null,
+            timeLimit: { seconds: 600, after: { to: "end" } },
+          },
+        ],
+      },
+      { name: "Greet", description: "", after: { to: "end" }, actions: [say("Hello!")] },
+      { ...saying("Touched", "You touched my head."), id: touched },
+      { ...saying("Ready", "Let us begin."), id: ready },
+    ]);
+    ({ researcher, experimentId, versionId, studyId } = published);
     // The simulated robot's Robot page, open beside the wizard's all along, as a pilot's second window.
     robot = await (await newContext(browser, app.url)).newPage();
     await signInAs(robot, "researcher@demo.hristudio", DEMO_PASSWORD);
