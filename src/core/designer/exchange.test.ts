@@ -10,6 +10,13 @@ function ids(prefix = "new") {
 }
 
 const storyteller = storytellerDraft((key) => `db-${key}`);
+/** A draft for the NAO6 with no description: what most cases here export and import. */
+const nao6Draft = (name: string, steps: DesignDraft["steps"]): DesignDraft => ({
+  name,
+  description: "",
+  robotId: "nao6-ros2",
+  steps,
+});
 
 // Everything a naive writer or reader could trip on.
 const awkward: DesignDraft = {
@@ -127,16 +134,11 @@ describe("exporting and importing an experiment", () => {
   });
 
   it("keeps where each step leads: a rejoin, an end, and the next step left out", () => {
-    const draft: DesignDraft = {
-      name: "Quiz",
-      description: "",
-      robotId: "nao6-ros2",
-      steps: [
-        { id: "u1", name: "Right", description: "", after: { to: "step", stepId: "u3" }, actions: [] },
-        { id: "u2", name: "Wrong", description: "", after: { to: "end" }, actions: [] },
-        { id: "u3", name: "Bye", description: "", after: { to: "next" }, actions: [] },
-      ],
-    };
+    const draft = nao6Draft("Quiz", [
+      { id: "u1", name: "Right", description: "", after: { to: "step", stepId: "u3" }, actions: [] },
+      { id: "u2", name: "Wrong", description: "", after: { to: "end" }, actions: [] },
+      { id: "u3", name: "Bye", description: "", after: { to: "next" }, actions: [] },
+    ]);
     const text = exportExperiment(draft);
     expect(JSON.parse(text).steps.map((s: { after?: string }) => s.after)).toEqual(["@step-3", "end", undefined]);
     expect(normalized(imported(text))).toEqual(normalized(draft));
@@ -144,31 +146,26 @@ describe("exporting and importing an experiment", () => {
 
   it("keeps time limits, their way on named by key like a step's after", () => {
     const question = { options: [{ id: "y", label: "yes" }] };
-    const draft: DesignDraft = {
-      name: "Timed",
-      description: "",
-      robotId: "nao6-ros2",
-      steps: [
-        {
-          id: "u1",
-          name: "Ask",
-          description: "",
-          timeLimit: { seconds: 30, after: { to: "step", stepId: "u3" } },
-          actions: [
-            {
-              id: "a1",
-              type: "record_answer",
-              name: "",
-              parameters: question,
-              parallelGroup: null,
-              timeLimit: { seconds: 10, after: { to: "end" } },
-            },
-          ],
-        },
-        { id: "u2", name: "Next", description: "", timeLimit: { seconds: 5, after: { to: "next" } }, actions: [] },
-        { id: "u3", name: "Bye", description: "", actions: [] },
-      ],
-    };
+    const draft = nao6Draft("Timed", [
+      {
+        id: "u1",
+        name: "Ask",
+        description: "",
+        timeLimit: { seconds: 30, after: { to: "step", stepId: "u3" } },
+        actions: [
+          {
+            id: "a1",
+            type: "record_answer",
+            name: "",
+            parameters: question,
+            parallelGroup: null,
+            timeLimit: { seconds: 10, after: { to: "end" } },
+          },
+        ],
+      },
+      { id: "u2", name: "Next", description: "", timeLimit: { seconds: 5, after: { to: "next" } }, actions: [] },
+      { id: "u3", name: "Bye", description: "", actions: [] },
+    ]);
     const file = JSON.parse(exportExperiment(draft));
     expect(file.steps.map((s: { timeLimit?: unknown }) => s.timeLimit)).toEqual([
       { seconds: 30, after: "@step-3" },
@@ -183,28 +180,23 @@ describe("exporting and importing an experiment", () => {
   });
 
   it("keeps loops, their steps named by key, on a step and on a time limit", () => {
-    const draft: DesignDraft = {
-      name: "Ask again",
-      description: "",
-      robotId: "nao6-ros2",
-      steps: [
-        {
-          id: "u1",
-          name: "Ask",
-          description: "",
-          after: { to: "again", stepId: "u1", times: 2, onward: { to: "next" } },
-          timeLimit: { seconds: 10, after: { to: "again", stepId: "u1", times: 1, onward: { to: "end" } } },
-          actions: [],
-        },
-        {
-          id: "u2",
-          name: "Bye",
-          description: "",
-          after: { to: "again", stepId: "u1", times: 3, onward: { to: "step", stepId: "u2" } },
-          actions: [],
-        },
-      ],
-    };
+    const draft = nao6Draft("Ask again", [
+      {
+        id: "u1",
+        name: "Ask",
+        description: "",
+        after: { to: "again", stepId: "u1", times: 2, onward: { to: "next" } },
+        timeLimit: { seconds: 10, after: { to: "again", stepId: "u1", times: 1, onward: { to: "end" } } },
+        actions: [],
+      },
+      {
+        id: "u2",
+        name: "Bye",
+        description: "",
+        after: { to: "again", stepId: "u1", times: 3, onward: { to: "step", stepId: "u2" } },
+        actions: [],
+      },
+    ]);
     const text = exportExperiment(draft);
     const file = JSON.parse(text);
     expect(file.steps.map((s: { after?: unknown }) => s.after)).toEqual([
@@ -223,37 +215,32 @@ describe("exporting and importing an experiment", () => {
   });
 
   it("keeps each condition's variant of an action and of a step, under the condition's name", () => {
-    const draft: DesignDraft = {
-      name: "Tutor",
-      description: "",
-      robotId: "nao6-ros2",
-      steps: [
-        {
-          id: "u1",
-          name: "Feedback",
-          description: "",
-          after: { to: "next" },
-          actions: [
-            {
-              id: "a1",
-              type: "say",
-              name: "",
-              parameters: { text: "Well done." },
-              parallelGroup: null,
-              variants: { "Warm tutor": { parameters: { text: "Well done, you are great!" } } },
-            },
-          ],
-          variants: {
-            Gestures: {
-              actions: [
-                { id: "a2", type: "wave", name: "", parameters: {}, parallelGroup: "g" },
-                { id: "a3", type: "say", name: "", parameters: { text: "Well done." }, parallelGroup: "g" },
-              ],
-            },
+    const draft = nao6Draft("Tutor", [
+      {
+        id: "u1",
+        name: "Feedback",
+        description: "",
+        after: { to: "next" },
+        actions: [
+          {
+            id: "a1",
+            type: "say",
+            name: "",
+            parameters: { text: "Well done." },
+            parallelGroup: null,
+            variants: { "Warm tutor": { parameters: { text: "Well done, you are great!" } } },
+          },
+        ],
+        variants: {
+          Gestures: {
+            actions: [
+              { id: "a2", type: "wave", name: "", parameters: {}, parallelGroup: "g" },
+              { id: "a3", type: "say", name: "", parameters: { text: "Well done." }, parallelGroup: "g" },
+            ],
           },
         },
-      ],
-    };
+      },
+    ]);
     const text = exportExperiment(draft);
     const file = JSON.parse(text);
     expect(file.steps[0].actions[0].variants).toEqual({
@@ -273,35 +260,30 @@ describe("exporting and importing an experiment", () => {
   });
 
   it("keeps where a wait's events lead, named by key like a step's after", () => {
-    const draft: DesignDraft = {
-      name: "Touch",
-      description: "",
-      robotId: "nao6-ros2",
-      steps: [
-        {
-          id: "u1",
-          name: "Wait",
-          description: "",
-          actions: [
-            {
-              id: "a1",
-              type: "wait_for",
-              name: "",
-              parameters: {
-                events: [
-                  { id: "t", event: "head_touched", after: { to: "step", stepId: "u3" } },
-                  { id: "r", event: "heard_ready", after: { to: "end" } },
-                  { id: "h", event: "hand_touched", after: { to: "next" } },
-                ],
-              },
-              parallelGroup: null,
+    const draft = nao6Draft("Touch", [
+      {
+        id: "u1",
+        name: "Wait",
+        description: "",
+        actions: [
+          {
+            id: "a1",
+            type: "wait_for",
+            name: "",
+            parameters: {
+              events: [
+                { id: "t", event: "head_touched", after: { to: "step", stepId: "u3" } },
+                { id: "r", event: "heard_ready", after: { to: "end" } },
+                { id: "h", event: "hand_touched", after: { to: "next" } },
+              ],
             },
-          ],
-        },
-        { id: "u2", name: "Next", description: "", actions: [] },
-        { id: "u3", name: "Greet", description: "", actions: [] },
-      ],
-    };
+            parallelGroup: null,
+          },
+        ],
+      },
+      { id: "u2", name: "Next", description: "", actions: [] },
+      { id: "u3", name: "Greet", description: "", actions: [] },
+    ]);
     const text = exportExperiment(draft);
     expect(JSON.parse(text).steps[0].actions[0].parameters.events).toEqual([
       { after: "@step-3", event: "head_touched", id: "t" },
@@ -330,40 +312,35 @@ describe("exporting and importing an experiment", () => {
   });
 
   it("writes a stable, readable file with no database ids in it", () => {
-    const draft: DesignDraft = {
-      name: "Tiny",
-      description: "",
-      robotId: "nao6-ros2",
-      steps: [
-        {
-          id: "uuid-ask",
-          name: "Ask",
-          description: "",
-          actions: [
-            {
-              id: "uuid-q",
-              type: "record_answer",
-              name: "Ready?",
-              parameters: { prompt: "Ready?", options: [{ label: "Yes", id: "y" }] },
-              parallelGroup: null,
-            },
-            {
-              id: "uuid-b",
-              type: "branch",
-              name: "Go",
-              parameters: { targets: { y: "uuid-bye", n: "uuid-deleted" } },
-              parallelGroup: null,
-            },
-          ],
-        },
-        {
-          id: "uuid-bye",
-          name: "Bye",
-          description: "",
-          actions: [{ id: "uuid-w", type: "wave", name: "Wave", parameters: {}, parallelGroup: "uuid-g" }],
-        },
-      ],
-    };
+    const draft = nao6Draft("Tiny", [
+      {
+        id: "uuid-ask",
+        name: "Ask",
+        description: "",
+        actions: [
+          {
+            id: "uuid-q",
+            type: "record_answer",
+            name: "Ready?",
+            parameters: { prompt: "Ready?", options: [{ label: "Yes", id: "y" }] },
+            parallelGroup: null,
+          },
+          {
+            id: "uuid-b",
+            type: "branch",
+            name: "Go",
+            parameters: { targets: { y: "uuid-bye", n: "uuid-deleted" } },
+            parallelGroup: null,
+          },
+        ],
+      },
+      {
+        id: "uuid-bye",
+        name: "Bye",
+        description: "",
+        actions: [{ id: "uuid-w", type: "wave", name: "Wave", parameters: {}, parallelGroup: "uuid-g" }],
+      },
+    ]);
     expect(exportExperiment(draft)).toBe(
       [
         "{",
