@@ -47,15 +47,16 @@ const design = (variant: string) => [
   },
 ];
 
+/** Saves the design with the warm tutor's variants as the experiment's draft. */
+async function saveWarm(experimentId: string) {
+  const draft = await owner.experiments.get({ experimentId });
+  await owner.experiments.saveDesign({ experimentId, baseRevision: draft.draftRevision, steps: design("Warm tutor") });
+}
+
 describe("an experiment whose conditions vary", () => {
   it("is saved, published and reopened with each condition's variants, which the hash covers", async () => {
     const { experiment } = await tutorStudy();
-    const draft = await owner.experiments.get({ experimentId: experiment.id });
-    await owner.experiments.saveDesign({
-      experimentId: experiment.id,
-      baseRevision: draft.draftRevision,
-      steps: design("Warm tutor"),
-    });
+    await saveWarm(experiment.id);
     const reopened = await owner.experiments.get({ experimentId: experiment.id });
     expect(reopened.steps[0]!.actions[0]!.variants).toEqual({
       "Warm tutor": { parameters: { text: "Well done, you are doing great!" } },
@@ -70,12 +71,7 @@ describe("an experiment whose conditions vary", () => {
 
   it("gives a trial in each condition that condition's variants, and one of no variant the shared design", async () => {
     const { study, experiment, warm, neutral } = await tutorStudy();
-    const draft = await owner.experiments.get({ experimentId: experiment.id });
-    await owner.experiments.saveDesign({
-      experimentId: experiment.id,
-      baseRevision: draft.draftRevision,
-      steps: design("Warm tutor"),
-    });
+    await saveWarm(experiment.id);
     const version = await owner.versions.publish({ experimentId: experiment.id });
     const said = async (conditionId: string, code: string) => {
       const participant = await owner.participants.create({
