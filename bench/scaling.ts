@@ -197,6 +197,17 @@ try {
     return body as ReadableStream<Uint8Array>;
   };
 
+  /**
+   * A study path that reads its ended trials' figures: first with none kept (each ended trial's log is folded
+   * once and its figures kept, on the first call after it ends), then with them kept (the 1 s target).
+   */
+  async function firstThenKept(path: (studyId: string) => Promise<unknown>, first: string, kept: string) {
+    const dropFigures = (studyId: string) =>
+      sql`delete from trial_figures using trials where trials.id = trial_id and trials.study_id = ${studyId}`;
+    print(first, STUDY_SIZES, "trials", await byStudy(path, dropFigures));
+    print(kept, STUDY_SIZES, "trials", await byStudy(path), 1000);
+  }
+
   /** The study-sized paths: the Trials and Results tabs, the zip, the analysis API. */
   async function studies() {
     console.log(`Studies of ${STUDY_SIZES.join(", ")} trials (${EVENTS_PER_TRIAL} events each):`);
@@ -210,23 +221,10 @@ try {
     );
     const resultsTab = (studyId: string) =>
       Promise.all([owner.studies.figures({ studyId }), owner.studies.resultsByCondition({ studyId })]);
-    // Each ended trial's figures are folded once and kept: the first call after trials end folds their logs.
-    print(
+    await firstThenKept(
+      resultsTab,
       "Results tab, first call after the trials ended (no figures kept yet: every log folded)",
-      STUDY_SIZES,
-      "trials",
-      await byStudy(
-        resultsTab,
-        (studyId) =>
-          sql`delete from trial_figures using trials where trials.id = trial_id and trials.study_id = ${studyId}`,
-      ),
-    );
-    print(
       "Results tab (studies.figures and resultsByCondition)",
-      STUDY_SIZES,
-      "trials",
-      await byStudy(resultsTab),
-      1000,
     );
     if (TABS_ONLY) return;
     await methods();
@@ -266,23 +264,10 @@ try {
   /** The study's methods text (its Methods tab and the zip's methods.md): every trial's figures, per condition. */
   async function methods() {
     const text = (studyId: string) => owner.studies.methods({ studyId });
-    print(
+    await firstThenKept(
+      text,
       "Study methods text, first call after the trials ended (every log folded)",
-      STUDY_SIZES,
-      "trials",
-      await byStudy(
-        text,
-        (studyId) =>
-          sql`delete from trial_figures using trials where trials.id = trial_id and trials.study_id = ${studyId}`,
-      ),
-    );
-    // The figures the call before kept.
-    print(
       "Study methods text (studies.methods), the trials' figures kept",
-      STUDY_SIZES,
-      "trials",
-      await byStudy(text),
-      1000,
     );
   }
 
