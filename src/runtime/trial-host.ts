@@ -487,9 +487,10 @@ export class TrialHost {
     this.opening?.push(...stored);
     applyInPlace(this.state, stored);
     this.t0 ??= startedAt(stored);
-    this.limits.follow(this.state, this.t0);
     if (withheld) this.withhold(stored, withheld);
     else this.carryOut(stored, moment);
+    // Armed from their logged start, so arming after the robot is told changes no due time.
+    this.limits.follow(this.state, this.t0);
     for (const listener of this.listeners.keys()) listener(stored);
     if (this.state.status === "completed" || this.state.status === "aborted") this.lifecycle.ended();
   }
