@@ -50,7 +50,10 @@ export function stopLinks(
       if (!entry) {
         const fresh: Held = { count: 0, link: null, closed: false };
         held.set(trialId, fresh);
-        void connect(trialId, fresh).catch((error: unknown) => logUnexpected(error, "opening a robot link to stop"));
+        // A read cut off by the process closing (its pool ended under it) is no fault: the link was not wanted any more.
+        void connect(trialId, fresh).catch(
+          (error: unknown) => fresh.closed || logUnexpected(error, "opening a robot link to stop"),
+        );
         entry = fresh;
       }
       entry.count++;
