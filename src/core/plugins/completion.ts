@@ -111,8 +111,13 @@ export function fieldAt(message: unknown, path: string): unknown {
 }
 
 /**
- * Two strings (a say's text, the usual match) compared as they are, without
- * serialising: every done message is matched against every action waiting.
+ * A value as a match compares it: two values are the same when their keys
+ * are. A string (a say's text, the usual match) is its own key, unserialised;
+ * anything else is its JSON. Waiting actions are found by the key of the
+ * value they expect (src/robots/transports/done-topics.ts).
  */
+export const valueKey = (value: unknown): string =>
+  typeof value === "string" ? `s${value}` : `j${JSON.stringify(value)}`;
+
 const sameJson = (a: unknown, b: unknown) =>
-  typeof a === "string" && typeof b === "string" ? a === b : JSON.stringify(a) === JSON.stringify(b);
+  typeof a === "string" && typeof b === "string" ? a === b : valueKey(a) === valueKey(b);

@@ -48,6 +48,8 @@ export {
   completionOf,
   expectedDone,
   matchesDone,
+  fieldAt,
+  valueKey,
   estimatedMs,
   robotTimeOf,
   serviceRefusal,
