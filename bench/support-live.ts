@@ -275,6 +275,15 @@ export async function startLiveBench({
     };
   }
 
+  /**
+   * Resolves once no robot is speaking: a phase's figures are not those of a robot still saying the last phase's
+   * lines (a thousand lines sent in two seconds take three to say), whose done messages the next trial on that
+   * robot would hear. In a lab, the next session begins with the robot quiet.
+   */
+  async function quiet() {
+    while (sims.some((sim) => sim.state.speaking !== null)) await new Promise((r) => setTimeout(r, 50));
+  }
+
   /** A new trial of the bench's study, not yet started; on `sims[robot]` when `robot` is given, else on a free one. */
   async function newTrial(robot?: number) {
     const [trial] = await db
@@ -367,6 +376,7 @@ export async function startLiveBench({
     },
     runTrial,
     group,
+    quiet,
     /** The runtime's resident memory now, in MiB. */
     runtimeMemoryMiB: () =>
       Number(/VmRSS:\s+(\d+)/.exec(readFileSync(`/proc/${runtime.pid}/status`, "utf8"))![1]) / 1024,

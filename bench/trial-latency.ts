@@ -17,10 +17,12 @@ const p99Of = (samples: number[]) =>
   );
 
 const live = await startLiveBench();
-const { runTrial } = live;
+const { runTrial, quiet } = live;
 
 const single = { robot: [] as number[], observers: [] as number[] };
 await runTrial(30, [], []); // warm-up
+// Each phase begins with every robot quiet (see `quiet`).
+await quiet();
 await runTrial(1000, single.robot, single.observers);
 report("1 trial: wizard message → robot received", single.robot, 5);
 report("1 trial: wizard message → 10 observers updated", single.observers, 5);
@@ -29,6 +31,7 @@ report("1 trial: wizard message → 10 observers updated", single.observers, 5);
 const CROWD = 50;
 const crowd = { robot: [] as number[], observers: [] as number[] };
 const each = Array.from({ length: CROWD }, () => [] as number[]);
+await quiet();
 await runTrial(1000, crowd.robot, crowd.observers, 0, CROWD, each);
 const worst = each.reduce((w, samples) => (p99Of(samples) > p99Of(w) ? samples : w));
 report(`1 trial × ${CROWD} observers: → the slowest observer (by p99)`, worst, 5);
@@ -36,6 +39,7 @@ report(`1 trial × ${CROWD} observers: → all ${CROWD} observers updated`, crow
 
 const many = { robot: [] as number[], observers: [] as number[], started: [] as number[] };
 await live.robotsUpTo(51);
+await quiet();
 const fifty = live.group(50, PACE_MS, many.started);
 await Promise.all(
   Array.from({ length: 50 }, () => runTrial(40, many.robot, many.observers, PACE_MS, undefined, undefined, fifty)),
@@ -45,6 +49,7 @@ report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → robot received`
 report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → all observers updated`, many.observers, 25);
 
 const flood = { robot: [] as number[], observers: [] as number[] };
+await quiet();
 await Promise.all(Array.from({ length: 50 }, () => runTrial(20, flood.robot, flood.observers)));
 report("50 trials × 10 observers, back to back (saturation): → robot", flood.robot);
 report("50 trials × 10 observers, back to back (saturation): → observers", flood.observers);
@@ -54,6 +59,7 @@ report("50 trials × 10 observers, back to back (saturation): → observers", fl
 // committed before the robot is told; its outcomes share a commit when they come together.
 const WIZARDS = 20;
 const wizards = { robot: [] as number[] };
+await quiet();
 const began = performance.now();
 const wizardTrials = await Promise.all(Array.from({ length: WIZARDS }, () => runTrial(150, wizards.robot, [], 0, 0)));
 const seconds = (performance.now() - began) / 1000;
