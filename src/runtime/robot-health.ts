@@ -25,7 +25,10 @@ export function withHealth(
     void recordHealth(db, robotId, health).catch((error: unknown) =>
       logUnexpected(error, "recording a robot's health"),
     );
-  link.onConnection((connected) => write({ connected }));
+  // Closed, the link's record says disconnected once, as it closes; the socket's own close, heard after
+  // (as the process stops, once the database is closed too), is no news to the record or to anyone.
+  let closed = false;
+  link.onConnection((connected) => closed || write({ connected }));
   let batteryAt = Number.NEGATIVE_INFINITY;
   const stopBattery = link.watchState((_, message) => {
     const battery = batteryPercent(message);
@@ -37,7 +40,7 @@ export function withHealth(
     perform: (request, report) => link.perform(request, report),
     halt: () => link.halt(),
     connected: () => link.connected(),
-    onConnection: (listener) => link.onConnection(listener),
+    onConnection: (listener) => link.onConnection((connected, detail) => closed || listener(connected, detail)),
     onProblem: (listener) => link.onProblem(listener),
     watchCamera: (listener) => link.watchCamera(listener),
     watchSenses: (listener) => link.watchSenses(listener),
@@ -46,6 +49,7 @@ export function withHealth(
       return () => stops.forEach((stop) => stop());
     },
     close() {
+      closed = true;
       stopBattery();
       link.close();
       write({ connected: false });
