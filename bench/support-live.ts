@@ -8,6 +8,7 @@ import { join } from "node:path";
 import type { ProtocolSnapshot } from "../src/core/protocol/document";
 import type { Simulator } from "../src/robots/simulator";
 import { startDefaultSimulator } from "../src/robots/simulator/main";
+import { runtimeEngine } from "../src/runtime/engine";
 import { SOCKET_MESSAGES_VERSION } from "../src/core/socket/messages";
 import { freePort } from "../src/store/embedded";
 import { createAccount } from "../src/server/auth/accounts";
@@ -77,6 +78,7 @@ export async function startLiveBench({
   const main = join(import.meta.dirname, "..", "src", "runtime", "main.ts");
   const runtime = spawn(process.execPath, [...profile, "run", main], {
     env: {
+      ...runtimeEngine(process.env),
       ...process.env,
       DATABASE_URL: database.url,
       BETTER_AUTH_SECRET: SECRET,

@@ -129,8 +129,11 @@ const RESTARTED =
 /** A timer this late means the process itself was stalled (frozen, or starved of the processor). */
 const STALL_SLACK_MS = 1000;
 
-/** Events read and folded at a time when a trial opens: a few milliseconds of work each. */
-const OPENING_PAGE = 2000;
+/**
+ * Events read and folded at a time when a trial opens: a few milliseconds of work each, as the
+ * runtime's engine runs it (src/runtime/engine.ts), so the other trials' commands wait no longer.
+ */
+const OPENING_PAGE = 1000;
 
 function answeredBy(run: Promise<CommandResult>, at: number): Promise<CommandResult> {
   let timer: ReturnType<typeof setTimeout> | undefined;
