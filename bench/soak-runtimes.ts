@@ -13,7 +13,7 @@ import { join } from "node:path";
 import { eq } from "drizzle-orm";
 import { SOCKET_MESSAGES_VERSION } from "../src/core/socket/messages";
 import { startDefaultSimulator } from "../src/robots/simulator/main";
-import { runtimeEngine } from "../src/runtime/engine";
+import { runtimeEngine } from "../src/launcher/runtime-engine";
 import type { Simulator } from "../src/robots/simulator";
 import { createAccount } from "../src/server/auth/accounts";
 import { createDatabase } from "../src/store/client";

@@ -8,7 +8,7 @@ import { join } from "node:path";
 import type { ProtocolSnapshot } from "../src/core/protocol/document";
 import type { Simulator } from "../src/robots/simulator";
 import { startDefaultSimulator } from "../src/robots/simulator/main";
-import { runtimeEngine } from "../src/runtime/engine";
+import { runtimeEngine } from "../src/launcher/runtime-engine";
 import { SOCKET_MESSAGES_VERSION } from "../src/core/socket/messages";
 import { freePort } from "../src/store/embedded";
 import { createAccount } from "../src/server/auth/accounts";

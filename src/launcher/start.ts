@@ -14,7 +14,7 @@ import { buildIfChanged } from "./build";
 import { forgetChildren, rememberChildren, stopChild, stopOrphanedChildren } from "./children";
 import { authSecret } from "./secret";
 import { bundleWebServer } from "./web-bundle";
-import { runtimeEngine } from "../runtime/engine";
+import { runtimeEngine } from "./runtime-engine";
 
 const root = resolve(import.meta.dirname, "..", "..");
 const dev = process.argv.includes("--dev") || process.env.npm_lifecycle_event === "dev";

@@ -131,7 +131,7 @@ const STALL_SLACK_MS = 1000;
 
 /**
  * Events read and folded at a time when a trial opens: a few milliseconds of work each, as the
- * runtime's engine runs it (src/runtime/engine.ts), so the other trials' commands wait no longer.
+ * runtime's engine runs it (src/launcher/runtime-engine.ts), so the other trials' commands wait no longer.
  */
 const OPENING_PAGE = 1000;
 

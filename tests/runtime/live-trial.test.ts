@@ -115,7 +115,7 @@ describe.sequential("a live trial through the runtime", () => {
     const acked = seqsOf(wizard);
     const lastSeen = Math.max(...acked);
     const runtimePid = childPid(app, "runtime/main.ts");
-    // Started by the launcher with its engine's settings (src/runtime/engine.ts).
+    // Started by the launcher with its engine's settings (src/launcher/runtime-engine.ts).
     expect(readFileSync(`/proc/${runtimePid}/environ`, "utf8").split("\0")).toContain("BUN_JSC_useFTLJIT=false");
     process.kill(runtimePid, "SIGKILL");
     // The launcher starts a new runtime; the wizard reconnects from what it saw.

@@ -1,6 +1,6 @@
 // A trial runtime process (Bun) against a test database, as the launcher starts it.
 import { spawn, type ChildProcess } from "node:child_process";
-import { runtimeEngine } from "../../src/runtime/engine";
+import { runtimeEngine } from "../../src/launcher/runtime-engine";
 import { freePort } from "../../src/store/embedded";
 import { BUN } from "./app";
 
