@@ -1,6 +1,7 @@
-// A robot link's health on its record: each connection change written and
-// told, and once the link is closed, one "disconnected" as it closes and
-// nothing after (its socket's close, heard later, as the process stops).
+// A robot link's health on its record: each connection change written, and
+// once the link is closed, one "disconnected" as it closes and nothing after
+// (its socket's close, heard later, as the process stops); its listeners
+// hear every change, that one too (the wizard's page says "released").
 import { describe, expect, it } from "vitest";
 import type { Database } from "@/store/client";
 import type { RobotLink } from "./robot";
@@ -25,7 +26,7 @@ function setUp() {
 const connectedOf = (written: unknown[]) => written.map((w) => (w as { connected?: boolean }).connected);
 
 describe("a robot link's health", () => {
-  it("writes and tells each change while open, and nothing the socket says after it is closed", async () => {
+  it("writes each change while open and nothing the socket says after it is closed, and tells them all", async () => {
     const { link, change, written } = setUp();
     const told: boolean[] = [];
     link.onConnection((connected) => told.push(connected));
@@ -36,6 +37,6 @@ describe("a robot link's health", () => {
     change(false);
     await new Promise((r) => setImmediate(r));
     expect(connectedOf(written)).toEqual([true, false, false]);
-    expect(told).toEqual([true, false]);
+    expect(told).toEqual([true, false, true, false]);
   });
 });

@@ -26,7 +26,8 @@ export function withHealth(
       logUnexpected(error, "recording a robot's health"),
     );
   // Closed, the link's record says disconnected once, as it closes; the socket's own close, heard after
-  // (as the process stops, once the database is closed too), is no news to the record or to anyone.
+  // (as the process stops, once the database is closed too), is no news to the record. Its listeners
+  // still hear it: the wizard's page says the robot was released.
   let closed = false;
   link.onConnection((connected) => closed || write({ connected }));
   let batteryAt = Number.NEGATIVE_INFINITY;
@@ -40,7 +41,7 @@ export function withHealth(
     perform: (request, report) => link.perform(request, report),
     halt: () => link.halt(),
     connected: () => link.connected(),
-    onConnection: (listener) => link.onConnection((connected, detail) => closed || listener(connected, detail)),
+    onConnection: (listener) => link.onConnection(listener),
     onProblem: (listener) => link.onProblem(listener),
     watchCamera: (listener) => link.watchCamera(listener),
     watchSenses: (listener) => link.watchSenses(listener),

@@ -29,13 +29,20 @@ export async function robotStatusRelay(
       logUnexpected(error, "a robot status announced by another runtime");
     }
   });
+  // Closed as the process stops: a link's close heard after it (its socket closing late) is told to nobody,
+  // the database going too.
+  let closed = false;
   return {
     announce(trialId: string, status: RobotStatus) {
+      if (closed) return;
       void sql
         .notify(CHANNEL, JSON.stringify({ trialId, ...status }))
         .catch((error: unknown) => logUnexpected(error, "announcing a robot status"));
     },
-    close: () => listener.unlisten(),
+    close: () => {
+      closed = true;
+      return listener.unlisten();
+    },
   };
 }
 
