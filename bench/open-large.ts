@@ -18,7 +18,7 @@ const PACE_MS = 10;
 
 const live = await startLiveBench();
 console.log(`load average at the start: ${(await Bun.file("/proc/loadavg").text()).split(" ").slice(0, 3).join(" ")}`);
-await live.runTrial(30, [], [], 0, 0); // warm-up
+await live.runTrial(30, [], [], { observing: 0 }); // warm-up
 
 /** A finished trial of EVENTS unscripted lines, as bench/analysis seeds one. */
 async function largeTrial() {
@@ -32,13 +32,13 @@ async function largeTrial() {
 }
 
 const alone: number[] = [];
-await live.runTrial(LINES, alone, [], PACE_MS, 0);
+await live.runTrial(LINES, alone, [], { paceMs: PACE_MS, observing: 0 });
 
 const opening: number[] = [];
 const meanwhile: number[] = [];
 for (let run = 0; run < RUNS; run++) {
   const trialId = await largeTrial();
-  const other = live.runTrial(LINES, meanwhile, [], PACE_MS, 0);
+  const other = live.runTrial(LINES, meanwhile, [], { paceMs: PACE_MS, observing: 0 });
   await Bun.sleep(200); // the other wizard is under way
   const began = performance.now();
   const received = await live.welcomeOf(trialId);

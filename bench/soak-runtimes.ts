@@ -13,7 +13,7 @@ import { join } from "node:path";
 import { eq } from "drizzle-orm";
 import { SOCKET_MESSAGES_VERSION } from "../src/core/socket/messages";
 import { startDefaultSimulator } from "../src/robots/simulator/main";
-import { runtimeEngine } from "../src/launcher/runtime-engine";
+import { withRuntimeEngine } from "../src/launcher/runtime-engine";
 import type { Simulator } from "../src/robots/simulator";
 import { createAccount } from "../src/server/auth/accounts";
 import { createDatabase } from "../src/store/client";
@@ -112,8 +112,7 @@ async function startRuntime(slot: number) {
   const port = await freePort();
   const child = spawn(process.execPath, ["run", join(import.meta.dirname, "..", "src", "runtime", "main.ts")], {
     env: {
-      ...runtimeEngine(process.env),
-      ...process.env,
+      ...withRuntimeEngine(process.env),
       DATABASE_URL: database.url,
       BETTER_AUTH_SECRET: SECRET,
       HRI_RUNTIME_PORT: String(port),

@@ -32,7 +32,7 @@ const paced = { robot: [] as number[], observers: [] as number[], started: [] as
 const fifty = live.group(50, PACE_MS, paced.started);
 await Promise.all(
   Array.from({ length: 50 }, () =>
-    live.runTrial(lines, paced.robot, paced.observers, PACE_MS, undefined, undefined, fifty),
+    live.runTrial(lines, paced.robot, paced.observers, { paceMs: PACE_MS, together: fifty }),
   ),
 );
 report("soak: 50 trials × 10 observers, started at once: start → acknowledged", paced.started);
@@ -41,7 +41,7 @@ report(`soak: 50 trials × 10 observers, ${MINUTES} min: → robot`, paced.robot
 report(`soak: 50 trials × 10 observers, ${MINUTES} min: → all observers`, paced.observers, 25);
 
 const burst = { robot: [] as number[] };
-await Promise.all(Array.from({ length: 20 }, () => live.runTrial(150, burst.robot, [], 0, 0)));
+await Promise.all(Array.from({ length: 20 }, () => live.runTrial(150, burst.robot, [], { observing: 0 })));
 report("soak: then 20 wizards back to back: → robot", burst.robot, 25);
 
 sample();

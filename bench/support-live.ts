@@ -8,7 +8,7 @@ import { join } from "node:path";
 import type { ProtocolSnapshot } from "../src/core/protocol/document";
 import type { Simulator } from "../src/robots/simulator";
 import { startDefaultSimulator } from "../src/robots/simulator/main";
-import { runtimeEngine } from "../src/launcher/runtime-engine";
+import { withRuntimeEngine } from "../src/launcher/runtime-engine";
 import { SOCKET_MESSAGES_VERSION } from "../src/core/socket/messages";
 import { freePort } from "../src/store/embedded";
 import { createAccount } from "../src/server/auth/accounts";
@@ -78,8 +78,7 @@ export async function startLiveBench({
   const main = join(import.meta.dirname, "..", "src", "runtime", "main.ts");
   const runtime = spawn(process.execPath, [...profile, "run", main], {
     env: {
-      ...runtimeEngine(process.env),
-      ...process.env,
+      ...withRuntimeEngine(process.env),
       DATABASE_URL: database.url,
       BETTER_AUTH_SECRET: SECRET,
       HRI_RUNTIME_PORT: String(runtimePort),
@@ -191,21 +190,23 @@ export async function startLiveBench({
   }
 
   /**
-   * One trial: a wizard and `observers` observers; `commands` unscripted lines, one after another, at most one
-   * per `paceMs`. `toObservers` gets each line's time until the last observer has it; `toEach`, when given,
-   * each observer's own times, one list per observer. `together`, when given, holds the lines until every
-   * trial of the group has started (its robot linked, its observers welcomed), and the end until every trial
-   * has sent its lines: the group's figures are those of trials running side by side, not of trials starting
-   * or ending beside them. `toStart` gets the time until the start was acknowledged.
+   * One trial: a wizard and `observing` observers (10 unless said); `commands` unscripted lines, one after
+   * another, at most one per `paceMs`. `toObservers` gets each line's time until the last observer has it;
+   * `toEach`, when given, each observer's own times, one list per observer. `together` (a `group`), when
+   * given, holds the lines until every trial of the group has started (its robot linked, its observers
+   * welcomed), and the end until every trial has sent its lines: the group's figures are those of trials
+   * running side by side, not of trials starting or ending beside them.
    */
   async function runTrial(
     commands: number,
     toRobot: number[],
     toObservers: number[],
-    paceMs = 0,
-    observing = OBSERVERS,
-    toEach?: number[][],
-    together?: { started: () => Promise<void>; sent: () => Promise<void>; toStart: number[] },
+    {
+      paceMs = 0,
+      observing = OBSERVERS,
+      toEach,
+      together,
+    }: { paceMs?: number; observing?: number; toEach?: number[][]; together?: ReturnType<typeof group> } = {},
   ) {
     const trial = await newTrial();
     const seen = new Map<string, { sent: number; left: number; done: (at: number) => void }>();

@@ -32,7 +32,7 @@ const CROWD = 50;
 const crowd = { robot: [] as number[], observers: [] as number[] };
 const each = Array.from({ length: CROWD }, () => [] as number[]);
 await quiet();
-await runTrial(1000, crowd.robot, crowd.observers, 0, CROWD, each);
+await runTrial(1000, crowd.robot, crowd.observers, { observing: CROWD, toEach: each });
 const worst = each.reduce((w, samples) => (p99Of(samples) > p99Of(w) ? samples : w));
 report(`1 trial × ${CROWD} observers: → the slowest observer (by p99)`, worst, 5);
 report(`1 trial × ${CROWD} observers: → all ${CROWD} observers updated`, crowd.observers);
@@ -42,7 +42,7 @@ await live.robotsUpTo(51);
 await quiet();
 const fifty = live.group(50, PACE_MS, many.started);
 await Promise.all(
-  Array.from({ length: 50 }, () => runTrial(40, many.robot, many.observers, PACE_MS, undefined, undefined, fifty)),
+  Array.from({ length: 50 }, () => runTrial(40, many.robot, many.observers, { paceMs: PACE_MS, together: fifty })),
 );
 report("50 trials × 10 observers, started at once: start → acknowledged", many.started);
 report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → robot received`, many.robot, 25);
@@ -61,7 +61,9 @@ const WIZARDS = 20;
 const wizards = { robot: [] as number[] };
 await quiet();
 const began = performance.now();
-const wizardTrials = await Promise.all(Array.from({ length: WIZARDS }, () => runTrial(150, wizards.robot, [], 0, 0)));
+const wizardTrials = await Promise.all(
+  Array.from({ length: WIZARDS }, () => runTrial(150, wizards.robot, [], { observing: 0 })),
+);
 const seconds = (performance.now() - began) / 1000;
 report(`${WIZARDS} wizards back to back: wizard message → robot`, wizards.robot, 25);
 const perSecond = wizards.robot.length / seconds;

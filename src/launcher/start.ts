@@ -14,7 +14,7 @@ import { buildIfChanged } from "./build";
 import { forgetChildren, rememberChildren, stopChild, stopOrphanedChildren } from "./children";
 import { authSecret } from "./secret";
 import { bundleWebServer } from "./web-bundle";
-import { runtimeEngine } from "./runtime-engine";
+import { withRuntimeEngine } from "./runtime-engine";
 
 const root = resolve(import.meta.dirname, "..", "..");
 const dev = process.argv.includes("--dev") || process.env.npm_lifecycle_event === "dev";
@@ -168,7 +168,7 @@ async function main() {
   const simulator: Record<string, string> = simulatorUrl ? { HRI_SIMULATOR_URL: simulatorUrl } : {};
   // Not `robot`: the runtime would register the simulator a second time as "the robot from the environment".
   supervise("trial runtime", "src/runtime/main.ts", {
-    ...runtimeEngine(process.env),
+    ...withRuntimeEngine(process.env),
     ...shared,
     ...passwords,
     ...simulator,

@@ -1,6 +1,6 @@
 // A trial runtime process (Bun) against a test database, as the launcher starts it.
 import { spawn, type ChildProcess } from "node:child_process";
-import { runtimeEngine } from "../../src/launcher/runtime-engine";
+import { withRuntimeEngine } from "../../src/launcher/runtime-engine";
 import { freePort } from "../../src/store/embedded";
 import { BUN } from "./app";
 
@@ -13,8 +13,7 @@ export async function startRuntime(
   const port = await freePort();
   const child = spawn(BUN, ["run", "src/runtime/main.ts"], {
     env: {
-      ...runtimeEngine(process.env),
-      ...process.env,
+      ...withRuntimeEngine(process.env),
       DATABASE_URL: databaseUrl,
       BETTER_AUTH_SECRET: secret,
       HRI_RUNTIME_PORT: String(port),
