@@ -2,10 +2,14 @@
 // through PostgreSQL while the relay is open, nothing once it has closed (as
 // the process stops, a link's late close would go to a closed database).
 import type postgres from "postgres";
-import { describe, expect, it } from "vitest";
-import { robotStatusRelay } from "./robot-status";
+import { afterAll, describe, expect, it } from "vitest";
+import { freshDatabase } from "../../tests/support/db";
+import { type RobotStatus, robotStatusRelay } from "./robot-status";
 
-describe("the robot status relay", () => {
+describe("the robot status relay", async () => {
+  const { sql, close } = await freshDatabase();
+  afterAll(close);
+
   it("announces each change until it is closed, then none", async () => {
     const sent: string[] = [];
     const sql = {
@@ -17,5 +21,21 @@ describe("the robot status relay", () => {
     await relay.close();
     relay.announce("trial-1", { connected: false, detail: "closed" });
     expect(sent.map((p) => JSON.parse(p))).toEqual([{ trialId: "trial-1", connected: true }]);
+  });
+
+  it("announces a trial's changes in the order they happened, however fast they come (a link dropping and coming back)", async () => {
+    const heard: Array<RobotStatus & { trialId: string }> = [];
+    const listening = await robotStatusRelay(sql, (trialId, status) => heard.push({ trialId, ...status }));
+    const announcing = await robotStatusRelay(sql, () => {});
+    // Five trials, each with 100 changes said back to back (the pool has several connections to say them on).
+    const said = Array.from({ length: 500 }, (_, i) => ({
+      trialId: `trial-${i % 5}`,
+      connected: i % 2 === 0,
+      ...(i % 2 ? { detail: `lost ${i}` } : {}),
+    }));
+    for (const { trialId, ...status } of said) announcing.announce(trialId, status);
+    for (let i = 0; i < 250 && heard.length < said.length; i++) await new Promise((r) => setTimeout(r, 20));
+    expect(heard).toEqual(said);
+    await Promise.all([listening.close(), announcing.close()]);
   });
 });

@@ -32,11 +32,14 @@ export async function robotStatusRelay(
   // Closed as the process stops: a link's close heard after it (its socket closing late) is told to nobody,
   // the database going too.
   let closed = false;
+  // One after another: notices sent at once would go out on several of the pool's connections and commit in
+  // any order, and a page elsewhere could be left on "dropped" after the robot came back.
+  let sending: Promise<unknown> = Promise.resolve();
   return {
     announce(trialId: string, status: RobotStatus) {
       if (closed) return;
-      void sql
-        .notify(CHANNEL, JSON.stringify({ trialId, ...status }))
+      sending = sending
+        .then(() => sql.notify(CHANNEL, JSON.stringify({ trialId, ...status })))
         .catch((error: unknown) => logUnexpected(error, "announcing a robot status"));
     },
     close: () => {
