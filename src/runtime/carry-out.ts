@@ -55,43 +55,59 @@ export async function carryOut(
   return { ...result, claimed };
 }
 
-/** Commands other processes forward: carried out if this process runs the trial, checked as on its own socket. */
+/**
+ * Commands other processes forward: carried out if this process runs the trial, checked as on its own socket.
+ * A trial's commands are taken in the order they arrived, as on the wizard's own socket: each one's access is
+ * read from the database, and those reads may come back in any order.
+ */
 export function forwardedCommands(db: Database, hosts: TrialHosts) {
+  const turns = new Map<string, Promise<void>>();
   return async (request: Forwarded): Promise<ForwardAnswer | null> => {
-    const host = await hosts.owned(request.trialId);
-    if (!host) return null;
-    const parsed = parseClientMessage(
-      JSON.stringify({ type: "command", requestId: request.requestId, retry: request.retry, command: request.command }),
-    );
-    if (!parsed.ok || parsed.message.type !== "command")
-      return { ok: false, reason: parsed.ok ? "That is not a command." : parsed.reason };
-    const access = await loadTrialAccess(db, request.trialId, request.userId);
-    const lost = access ? lostAccess(access) : "This trial no longer exists.";
-    if (lost || !access) return { ok: false, reason: lost ?? "" };
-    const verdict = commandVerdict(access, parsed.message.command.kind);
-    if (!verdict.allow) return { ok: false, reason: verdict.reason };
-    const askedAt = request.askedAt ?? Date.now();
-    const { kind } = parsed.message.command;
-    // A sound's end is the browser's report: a fact, never stale.
-    const stale = kind === "played" ? null : staleness(kind, askedAt, Date.now());
-    if (stale) {
-      const reason = droppedReason("forwarding to the runtime running this trial", stale);
-      console.warn(`[runtime] trial ${request.trialId}: dropped ${kind}: ${reason}`);
-      return { ok: false, reason };
+    const before = turns.get(request.trialId) ?? Promise.resolve();
+    let taken!: () => void;
+    const mine = new Promise<void>((ok) => (taken = ok));
+    turns.set(request.trialId, mine);
+    try {
+      const checked = await checkForwarded(db, hosts, request);
+      if (!checked?.ok) return checked;
+      const { host, access, message, claim, askedAt } = checked;
+      // A stop waits for nothing: the host stops the robot ahead of every command it holds.
+      const { kind } = message.command;
+      if (kind !== "emergency_stop" && kind !== "abort") await before;
+      let halted = false;
+      // Called now, the command is in its host's queue when the next one's turn comes.
+      const carried = carryOut(db, host, request.trialId, access, message, claim, () => (halted = true), askedAt);
+      taken();
+      return { ...(await carried), halted };
+    } finally {
+      taken();
+      if (turns.get(request.trialId) === mine) turns.delete(request.trialId);
     }
-    let halted = false;
-    const result = await carryOut(
-      db,
-      host,
-      request.trialId,
-      access,
-      parsed.message,
-      verdict.claim,
-      () => {
-        halted = true;
-      },
-      askedAt,
-    );
-    return { ...result, halted };
   };
+}
+
+/** A forwarded command checked as one on this process's own socket: what carries it out, or the answer at once. */
+async function checkForwarded(db: Database, hosts: TrialHosts, request: Forwarded) {
+  const host = await hosts.owned(request.trialId);
+  if (!host) return null;
+  const parsed = parseClientMessage(
+    JSON.stringify({ type: "command", requestId: request.requestId, retry: request.retry, command: request.command }),
+  );
+  if (!parsed.ok || parsed.message.type !== "command")
+    return { ok: false as const, reason: parsed.ok ? "That is not a command." : parsed.reason };
+  const access = await loadTrialAccess(db, request.trialId, request.userId);
+  const lost = access ? lostAccess(access) : "This trial no longer exists.";
+  if (lost || !access) return { ok: false as const, reason: lost ?? "" };
+  const verdict = commandVerdict(access, parsed.message.command.kind);
+  if (!verdict.allow) return { ok: false as const, reason: verdict.reason };
+  const askedAt = request.askedAt ?? Date.now();
+  const { kind } = parsed.message.command;
+  // A sound's end is the browser's report: a fact, never stale.
+  const stale = kind === "played" ? null : staleness(kind, askedAt, Date.now());
+  if (stale) {
+    const reason = droppedReason("forwarding to the runtime running this trial", stale);
+    console.warn(`[runtime] trial ${request.trialId}: dropped ${kind}: ${reason}`);
+    return { ok: false as const, reason };
+  }
+  return { ok: true as const, host, access, message: parsed.message, claim: verdict.claim, askedAt };
 }

@@ -69,6 +69,14 @@ export async function commandForwarding(
     );
     await sql`select pg_notify(${channel}, p) from unnest(${parts}::text[]) as p`;
   };
+  // Requests one after another: sent at once, they would go out on several of the pool's connections and
+  // reach the owner in any order (a wizard's lines said out of turn).
+  let requesting: Promise<unknown> = Promise.resolve();
+  const request = (message: Request) => {
+    const sent = requesting.then(() => notify(REQUESTS, message));
+    requesting = sent.catch(() => {});
+    return sent;
+  };
   return {
     /** The owner's answer, or null when no process answered in time (its owner may have gone). */
     async forward(command: Forwarded): Promise<ForwardAnswer | null> {
@@ -81,7 +89,7 @@ export async function commandForwarding(
         });
       });
       try {
-        await notify(REQUESTS, { ...command, id, from: self } satisfies Request);
+        await request({ ...command, id, from: self });
         return await answered;
       } finally {
         waiting.delete(id);

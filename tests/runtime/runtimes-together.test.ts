@@ -2,13 +2,13 @@
 // sockets, the real roslib client: trials opened at once through both each
 // take a robot of their own.
 import type { ChildProcess } from "node:child_process";
-import { eq, inArray } from "drizzle-orm";
+import { and, eq, inArray } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import { createAccount } from "../../src/server/auth/accounts";
 import type { Simulator } from "../../src/robots/simulator";
 import { createDatabase } from "../../src/store/client";
-import { experimentVersions, experiments, studies, studyMembers, trials } from "../../src/store/schema";
+import { experimentVersions, experiments, studies, studyMembers, trialEvents, trials } from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { registerRobots } from "../support/robots";
@@ -161,6 +161,32 @@ describe.sequential("several runtimes, many robots", () => {
           .map((r) => r.connection),
       ).size;
     await expect.poll(senders).toBe(2);
+  });
+
+  it("carries out a wizard's lines sent back to back through the runtime that does not run the trial in the order sent", {
+    timeout: 60_000,
+  }, async () => {
+    const trialId = await newTrial("Order");
+    const owner = await open(runtimes[1]!.url, trialId);
+    await owner.next((m) => m.type === "robot" && m.connected === true, 10_000);
+    expect(await owner.command("order-start", { kind: "start" })).toMatchObject({ type: "ack" });
+    const wizard = await open(runtimes[0]!.url, trialId);
+    // Sent as fast as the socket takes them, none waiting for the last's answer.
+    const lines = Array.from({ length: 100 }, (_, i) => `line ${i}`);
+    const answers = await Promise.all(
+      lines.map((text, i) =>
+        wizard.command(`order-${i}`, { kind: "unscripted", actionType: "say", parameters: { text } }),
+      ),
+    );
+    expect(answers.map((a) => a.type)).toEqual(lines.map(() => "ack"));
+    const logged = await db
+      .select({ payload: trialEvents.payload })
+      .from(trialEvents)
+      .where(and(eq(trialEvents.trialId, trialId), eq(trialEvents.type, "action.requested")))
+      .orderBy(trialEvents.seq);
+    expect(logged.map((e) => (e.payload as { parameters?: { text?: string } }).parameters?.text)).toEqual(lines);
+    const sim = await simOf(trialId);
+    await expect.poll(() => published(sim, "/speech").filter((t) => String(t).startsWith("line "))).toEqual(lines);
   });
 
   it("tells a page on the runtime that does not run the trial of its robot: its name, and when it drops and comes back", {
