@@ -163,31 +163,36 @@ describe.sequential("several runtimes, many robots", () => {
     await expect.poll(senders).toBe(2);
   });
 
-  it("carries out a wizard's lines sent back to back through the runtime that does not run the trial in the order sent", {
-    timeout: 60_000,
-  }, async () => {
-    const trialId = await newTrial("Order");
-    const owner = await open(runtimes[1]!.url, trialId);
-    await owner.next((m) => m.type === "robot" && m.connected === true, 10_000);
-    expect(await owner.command("order-start", { kind: "start" })).toMatchObject({ type: "ack" });
-    const wizard = await open(runtimes[0]!.url, trialId);
-    // Sent as fast as the socket takes them, none waiting for the last's answer.
-    const lines = Array.from({ length: 100 }, (_, i) => `line ${i}`);
-    const answers = await Promise.all(
-      lines.map((text, i) =>
-        wizard.command(`order-${i}`, { kind: "unscripted", actionType: "say", parameters: { text } }),
-      ),
-    );
-    expect(answers.map((a) => a.type)).toEqual(lines.map(() => "ack"));
-    const logged = await db
-      .select({ payload: trialEvents.payload })
-      .from(trialEvents)
-      .where(and(eq(trialEvents.trialId, trialId), eq(trialEvents.type, "action.requested")))
-      .orderBy(trialEvents.seq);
-    expect(logged.map((e) => (e.payload as { parameters?: { text?: string } }).parameters?.text)).toEqual(lines);
-    const sim = await simOf(trialId);
-    await expect.poll(() => published(sim, "/speech").filter((t) => String(t).startsWith("line "))).toEqual(lines);
-  });
+  it.each([
+    ["the runtime that runs the trial", 1],
+    ["the runtime that does not run the trial", 0],
+  ])(
+    "carries out a wizard's lines sent back to back through %s in the order sent",
+    { timeout: 60_000 },
+    async (_, through) => {
+      const trialId = await newTrial(`Order ${through}`);
+      const owner = await open(runtimes[1]!.url, trialId);
+      await owner.next((m) => m.type === "robot" && m.connected === true, 10_000);
+      expect(await owner.command("order-start", { kind: "start" })).toMatchObject({ type: "ack" });
+      const wizard = through === 1 ? owner : await open(runtimes[through]!.url, trialId);
+      // Sent as fast as the socket takes them, none waiting for the last's answer.
+      const lines = Array.from({ length: 100 }, (_, i) => `line ${i}`);
+      const answers = await Promise.all(
+        lines.map((text, i) =>
+          wizard.command(`order-${i}`, { kind: "unscripted", actionType: "say", parameters: { text } }),
+        ),
+      );
+      expect(answers.map((a) => a.type)).toEqual(lines.map(() => "ack"));
+      const logged = await db
+        .select({ payload: trialEvents.payload })
+        .from(trialEvents)
+        .where(and(eq(trialEvents.trialId, trialId), eq(trialEvents.type, "action.requested")))
+        .orderBy(trialEvents.seq);
+      expect(logged.map((e) => (e.payload as { parameters?: { text?: string } }).parameters?.text)).toEqual(lines);
+      const sim = await simOf(trialId);
+      await expect.poll(() => published(sim, "/speech").filter((t) => String(t).startsWith("line "))).toEqual(lines);
+    },
+  );
 
   it("tells a page on the runtime that does not run the trial of its robot: its name, and when it drops and comes back", {
     timeout: 30_000,
