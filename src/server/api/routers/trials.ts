@@ -275,26 +275,30 @@ export const trialsRouter = router({
   })),
 
   get: studyProcedure("trial.read", "trial", z.object({ trialId: id })).query(async ({ ctx }) => {
-    const [row] = await ctx.db
-      .select({
-        ...columns,
-        studyId: trials.studyId,
-        protocol: sql`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})`.mapWith(
-          trials.rehearsalSnapshot,
-        ),
-      })
-      .from(trials)
-      .innerJoin(experiments, eq(experiments.id, trials.experimentId))
-      .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
-      .leftJoin(participants, eq(participants.id, trials.participantId))
-      .leftJoin(user, eq(user.id, trials.wizardId))
-      .leftJoin(creator, eq(creator.id, trials.createdBy))
-      .where(eq(trials.id, ctx.row.id));
+    // Three reads at once, each by the trial's id: its row, its condition, its robot's names.
+    const [[row], condition, names] = await Promise.all([
+      ctx.db
+        .select({
+          ...columns,
+          studyId: trials.studyId,
+          protocol: sql`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})`.mapWith(
+            trials.rehearsalSnapshot,
+          ),
+        })
+        .from(trials)
+        .innerJoin(experiments, eq(experiments.id, trials.experimentId))
+        .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
+        .leftJoin(participants, eq(participants.id, trials.participantId))
+        .leftJoin(user, eq(user.id, trials.wizardId))
+        .leftJoin(creator, eq(creator.id, trials.createdBy))
+        .where(eq(trials.id, ctx.row.id)),
+      conditionOfTrial(ctx.db, ctx.row.id),
+      // The library's names of the robot's own actions (for actions without a label) and of its events.
+      trialPluginNames(ctx.db, ctx.row.id),
+    ]);
     // The protocol as this trial runs it: its condition's variants (a rehearsal's were frozen as it began).
-    const condition = row!.isRehearsal ? null : await conditionOfTrial(ctx.db, ctx.row.id);
-    const protocol = row!.protocol && inCondition(row!.protocol, condition);
-    // The library's names of the robot's own actions (for actions without a label) and of its events.
-    const trial = { ...row!, protocol, ...(await trialPluginNames(ctx.db, ctx.row.id)), myRole: ctx.studyRole };
+    const protocol = row!.protocol && inCondition(row!.protocol, row!.isRehearsal ? null : condition);
+    const trial = { ...row!, protocol, ...names, myRole: ctx.studyRole };
     return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
   }),
 });
