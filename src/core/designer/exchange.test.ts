@@ -305,6 +305,88 @@ describe("exporting and importing an experiment", () => {
     });
   });
 
+  it("names the steps a condition's variant of an action leads to by key, as the action's own, and checks them", () => {
+    const step = (id: string, actions: DesignDraft["steps"][number]["actions"] = []) => ({
+      id,
+      name: `Step ${id.slice(1)}`,
+      description: "",
+      actions,
+    });
+    const draft = nao6Draft("Leads", [
+      step("u1", [
+        {
+          id: "b",
+          type: "branch",
+          name: "",
+          parameters: { targets: { yes: "u2", no: "u3" } },
+          parallelGroup: null,
+          // Another way in one condition; in another the branch waits for a touch instead.
+          variants: {
+            Swapped: { parameters: { targets: { yes: "u3", no: "u2" } } },
+            Touch: {
+              type: "wait_for",
+              parameters: { events: [{ id: "t", event: "head_touched", after: { to: "step", stepId: "u3" } }] },
+            },
+          },
+        },
+        {
+          id: "s",
+          type: "say",
+          name: "",
+          parameters: { text: "Which one?" },
+          parallelGroup: null,
+          // A line in the shared protocol, a branch in one condition.
+          variants: { Branching: { type: "branch", parameters: { targets: { go: "u3" } } } },
+        },
+      ]),
+      step("u2"),
+      step("u3"),
+    ]);
+    const text = exportExperiment(draft);
+    expect(text).not.toMatch(/"u[123]"/);
+    const [branch, say] = JSON.parse(text).steps[0].actions;
+    expect(branch.variants).toEqual({
+      Swapped: { parameters: { targets: { no: "@step-2", yes: "@step-3" } } },
+      Touch: { parameters: { events: [{ after: "@step-3", event: "head_touched", id: "t" }] }, type: "wait_for" },
+    });
+    expect(say.variants).toEqual({ Branching: { parameters: { targets: { go: "@step-3" } }, type: "branch" } });
+    const again = imported(text);
+    const [, u2, u3] = again.steps.map((s) => s.id);
+    const [b, s2] = again.steps[0]!.actions;
+    expect(b!.parameters).toEqual({ targets: { yes: u2, no: u3 } });
+    expect(b!.variants).toEqual({
+      Swapped: { parameters: { targets: { yes: u3, no: u2 } } },
+      Touch: {
+        type: "wait_for",
+        parameters: { events: [{ id: "t", event: "head_touched", after: { to: "step", stepId: u3 } }] },
+      },
+    });
+    expect(s2!.variants).toEqual({ Branching: { type: "branch", parameters: { targets: { go: u3 } } } });
+    expect(exportExperiment(again)).toBe(text);
+    // A variant's target that names no step is a problem at its place, as the action's own would be.
+    const broken = JSON.parse(text);
+    broken.steps[0].actions[0].variants.Swapped.parameters.targets.yes = "@step-9";
+    broken.steps[0].actions[1].variants.Branching.parameters.targets.go = "4f1c";
+    broken.steps[0].actions[0].variants.Touch.parameters.events[0].after = "@step-7";
+    expect(importExperiment(JSON.stringify(broken), ids())).toMatchObject({
+      ok: false,
+      problems: [
+        {
+          path: "$.steps[0].actions[0].variants.Swapped.parameters.targets.yes",
+          message: '"@step-9" names no step of this file',
+        },
+        {
+          path: "$.steps[0].actions[0].variants.Touch.parameters.events[0].after",
+          message: '"@step-7" names no step of this file',
+        },
+        {
+          path: "$.steps[0].actions[1].variants.Branching.parameters.targets.go",
+          message: 'must name a step by "@" and its key, such as "@step-2"',
+        },
+      ],
+    });
+  });
+
   it("reads a version 1 file, whose steps each go on to the next", () => {
     const file = JSON.parse(exportExperiment(storyteller));
     file.formatVersion = 1;

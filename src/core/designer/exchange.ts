@@ -151,16 +151,20 @@ export function exportExperiment(draft: DesignDraft): string {
   const keys = new Map(draft.steps.map((step, i) => [step.id, `@step-${i + 1}`]));
   const groups = new Map<string, string>();
   const group = (id: string) => groups.get(id) ?? groups.set(id, `group-${groups.size + 1}`).get(id)!;
+  // A target that is no step of the draft is already an error in the designer; an id would mean nothing elsewhere.
+  const fileParameters = leadsRewritten(
+    (id) => keys.get(id),
+    (after) => fileAfter(after as After, keys),
+  );
   const fileAction = (action: Omit<DesignAction, "variants"> & Pick<Partial<DesignAction>, "variants">) => ({
     ...toFile(action, ACTION_FIELDS),
     type: action.type,
-    // A target that is no step of the draft is already an error in the designer; an id would mean nothing elsewhere.
-    parameters:
-      action.type === "branch"
-        ? swapTargets(action.parameters, (id) => keys.get(id))
-        : action.type === "wait_for"
-          ? swapWaitAfters(action.parameters, (after) => fileAfter(after as After, keys))
-          : action.parameters,
+    parameters: fileParameters(action.type, action.parameters),
+    // A condition's variant may branch elsewhere, or be a branch where the action is not.
+    variants: mapVariants(action.variants, (v) => ({
+      ...v,
+      parameters: fileParameters(v.type ?? action.type, v.parameters),
+    })),
     runTogether: action.parallelGroup ? group(action.parallelGroup) : undefined,
     note: action.note || undefined,
     timeLimit: fileLimit(action.timeLimit, keys),
@@ -246,17 +250,20 @@ export function draftOf(
   const ids = new Map(file.steps.map((step) => [`@${step.key}`, newId()]));
   const groups = new Map<string, string>();
   const group = (name: string) => groups.get(name) ?? groups.set(name, newId()).get(name)!;
+  const draftParameters = leadsRewritten(
+    (key) => ids.get(key),
+    (after) => draftAfter(after as string | undefined, ids),
+  );
   const draftAction = (action: FileAction): DesignAction => ({
     ...fromFile(action, ACTION_FIELDS),
     id: newId(),
     type: action.type,
     name: action.name ?? "",
-    parameters:
-      action.type === "branch"
-        ? swapTargets(action.parameters ?? {}, (key) => ids.get(key))
-        : action.type === "wait_for"
-          ? swapWaitAfters(action.parameters ?? {}, (after) => draftAfter(after as string | undefined, ids))
-          : (action.parameters ?? {}),
+    parameters: draftParameters(action.type, action.parameters ?? {}),
+    variants: mapVariants(action.variants, (v) => ({
+      ...v,
+      parameters: draftParameters(v.type ?? action.type, v.parameters ?? {}),
+    })),
     parallelGroup: action.runTogether === undefined ? null : group(action.runTogether),
     note: action.note || undefined,
     timeLimit: draftLimit(action.timeLimit, ids),
@@ -339,6 +346,19 @@ function fileLimit(limit: TimeLimit | undefined, keys: Map<string, string>): Fil
 
 function draftLimit(limit: FileTimeLimit | undefined, ids: Map<string, string>): TimeLimit | undefined {
   return limit && { seconds: limit.seconds, after: draftAfter(limit.after, ids) };
+}
+
+/**
+ * An action's parameters with where they lead rewritten (a branch's targets, a wait's events' ways on), by the
+ * type the action has where they are: its own, or the one a condition's variant gives it.
+ */
+function leadsRewritten(rename: (target: string) => string | undefined, rewrite: (after: unknown) => unknown) {
+  return (type: string, parameters: Record<string, unknown>) =>
+    type === "branch"
+      ? swapTargets(parameters, rename)
+      : type === "wait_for"
+        ? swapWaitAfters(parameters, rewrite)
+        : parameters;
 }
 
 /** A branch's targets renamed one by one; a target with no new name is dropped. */
@@ -527,12 +547,29 @@ function* check(file: unknown): Work<ImportProblem[]> {
     if (!isObject(owner.parameters)) flag(`${path}.parameters`, "must be an object ({ … })");
     else values(owner.parameters, `${path}.parameters`, 0);
   };
+  /** Where an action of `type` leads (a wait's events, a branch's targets), each named by a key of this file. */
+  const leads = (type: unknown, parameters: unknown, path: string) => {
+    if (!isObject(parameters)) return;
+    if (type === "wait_for" && Array.isArray(parameters.events))
+      parameters.events.forEach((event: unknown, e) => {
+        if (isObject(event)) leadsTo(event.after, `${path}.parameters.events[${e}].after`);
+      });
+    if (type === "branch" && isObject(parameters.targets)) {
+      for (const [option, target] of Object.entries(parameters.targets)) {
+        const at = member(`${path}.parameters.targets`, option);
+        if (typeof target !== "string" || !target.startsWith("@"))
+          flag(at, 'must name a step by "@" and its key, such as "@step-2"');
+        else if (!keys.has(target.slice(1))) flag(at, `"${target}" names no step of this file`);
+      }
+    }
+  };
   const actionAt = (action: unknown, path: string, fields: string[]) => {
     if (!object(action, path, fields)) return;
     variants(action, path, (variant, at) => {
       if (!object(variant, at, ["type", "parameters"])) return;
       text(variant, "type", at, MAX_NAME, "optional");
       parameters(variant, at);
+      leads(variant.type ?? action.type, variant.parameters, at);
     });
     text(action, "type", path, MAX_NAME, "required");
     text(action, "name", path, MAX_NAME, "optional");
@@ -542,20 +579,7 @@ function* check(file: unknown): Work<ImportProblem[]> {
     if (action.runTogether === "")
       flag(`${path}.runTogether`, "must be a non-empty string, or left out for an action that runs alone");
     parameters(action, path);
-    if (isObject(action.parameters)) {
-      if (action.type === "wait_for" && Array.isArray(action.parameters.events))
-        action.parameters.events.forEach((event: unknown, e) => {
-          if (isObject(event)) leadsTo(event.after, `${path}.parameters.events[${e}].after`);
-        });
-      if (action.type === "branch" && isObject(action.parameters.targets)) {
-        for (const [option, target] of Object.entries(action.parameters.targets)) {
-          const at = member(`${path}.parameters.targets`, option);
-          if (typeof target !== "string" || !target.startsWith("@"))
-            flag(at, 'must name a step by "@" and its key, such as "@step-2"');
-          else if (!keys.has(target.slice(1))) flag(at, `"${target}" names no step of this file`);
-        }
-      }
-    }
+    leads(action.type, action.parameters, path);
   };
   for (const [s, step] of file.steps.entries()) {
     yield;
