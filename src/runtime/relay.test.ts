@@ -9,7 +9,6 @@ import { eventRelay } from "./relay";
 
 describe("the event relay", async () => {
   const { db, sql, close } = await freshDatabase();
-  afterAll(close);
   /** Another process's writes: `count` notes after `lastSeq`, one commit each. */
   const write = async (trialId: string, lastSeq: number, count: number) => {
     for (let i = 0; i < count; i++)
@@ -25,7 +24,10 @@ describe("the event relay", async () => {
   };
   const seqs = (batches: StoredEvent[][]) => batches.flat().map((e) => e.seq);
   const relay = await eventRelay(db, sql);
-  afterAll(() => relay.close());
+  afterAll(async () => {
+    await relay.close();
+    await close();
+  });
 
   it("gives a follower what committed before it followed, then each commit, and nothing once it stops", async () => {
     const trialId = await bareTrial(db);
