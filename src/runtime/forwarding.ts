@@ -4,6 +4,7 @@
 // on its own socket, carries it out, and answers on a second channel to the
 // process that asked. No other broker.
 import type postgres from "postgres";
+import { oneAfterAnother } from "@/core/one-after-another";
 import type { CommandResult } from "./trial-host";
 
 const REQUESTS = "hri_trial_commands";
@@ -71,12 +72,7 @@ export async function commandForwarding(
   };
   // Requests one after another: sent at once, they would go out on several of the pool's connections and
   // reach the owner in any order (a wizard's lines said out of turn).
-  let requesting: Promise<unknown> = Promise.resolve();
-  const request = (message: Request) => {
-    const sent = requesting.then(() => notify(REQUESTS, message));
-    requesting = sent.catch(() => {});
-    return sent;
-  };
+  const inTurn = oneAfterAnother();
   return {
     /** The owner's answer, or null when no process answered in time (its owner may have gone). */
     async forward(command: Forwarded): Promise<ForwardAnswer | null> {
@@ -89,7 +85,7 @@ export async function commandForwarding(
         });
       });
       try {
-        await request({ ...command, id, from: self });
+        await inTurn(() => notify(REQUESTS, { ...command, id, from: self } satisfies Request));
         return await answered;
       } finally {
         waiting.delete(id);

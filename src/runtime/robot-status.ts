@@ -5,6 +5,7 @@
 // record (src/runtime/robot-health.ts).
 import { eq } from "drizzle-orm";
 import type postgres from "postgres";
+import { oneAfterAnother } from "@/core/one-after-another";
 import type { Database } from "@/store/client";
 import { logUnexpected } from "@/store/error-reference";
 import { robots, trials } from "@/store/schema";
@@ -34,13 +35,13 @@ export async function robotStatusRelay(
   let closed = false;
   // One after another: notices sent at once would go out on several of the pool's connections and commit in
   // any order, and a page elsewhere could be left on "dropped" after the robot came back.
-  let sending: Promise<unknown> = Promise.resolve();
+  const inTurn = oneAfterAnother();
   return {
     announce(trialId: string, status: RobotStatus) {
       if (closed) return;
-      sending = sending
-        .then(() => sql.notify(CHANNEL, JSON.stringify({ trialId, ...status })))
-        .catch((error: unknown) => logUnexpected(error, "announcing a robot status"));
+      void inTurn(() => sql.notify(CHANNEL, JSON.stringify({ trialId, ...status }))).catch((error: unknown) =>
+        logUnexpected(error, "announcing a robot status"),
+      );
     },
     close: () => {
       closed = true;

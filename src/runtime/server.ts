@@ -2,6 +2,7 @@
 // the socket messages (src/core/socket/messages.ts) and decided against the
 // socket's access, which the runtime keeps fresh from the database: loaded at hello, reloaded whenever
 // PostgreSQL announces a change (see access.ts), never trusted from the client.
+import { oneAfterAnother } from "@/core/one-after-another";
 import { askedAt } from "@/core/trial/freshness";
 import {
   annotateVerdict,
@@ -69,7 +70,7 @@ interface Connection {
   /** Lets go of the link that stops the robot of a trial another process runs. */
   releaseStop?: () => void;
   /** The connection's replay messages, one after another. */
-  replayQueue?: Promise<unknown>;
+  replayTurns?: ReturnType<typeof oneAfterAnother>;
   /** Where it comes from: connections that have not said hello are counted per address. */
   address: string;
   /** Until hello: takes it off its address's count of waiting connections, and stops its deadline. */
@@ -507,9 +508,8 @@ export function startRuntimeServer({
     if (message.type === "signal") return signal(ws, message);
     if (message.type === "replay" || message.type === "replay_stop") {
       // One at a time: a quick run of seeks ends with the last one playing, and held by this connection.
-      const run = (ws.data.replayQueue ?? Promise.resolve()).then(() => replay(ws, message));
-      ws.data.replayQueue = run.catch(() => undefined);
-      return run;
+      ws.data.replayTurns ??= oneAfterAnother();
+      return ws.data.replayTurns(() => replay(ws, message));
     }
     if (message.type === "code") return code(ws, message);
     return act(ws, message);
