@@ -6,6 +6,7 @@ import { parseClientMessage, type ClientMessage } from "@/core/socket/messages";
 import { droppedReason, staleness } from "@/core/trial/freshness";
 import type { Database } from "@/store/client";
 import { logUnexpected } from "@/store/error-reference";
+import { type Turn, arrivalOrder } from "@/core/arrival-order";
 import { claimTrial, isRecordingOf, loadTrialAccess } from "./access";
 import type { ForwardAnswer, Forwarded } from "./forwarding";
 import type { CommandResult, TrialHost } from "./trial-host";
@@ -13,6 +14,7 @@ import type { TrialHosts } from "./trial-hosts";
 
 export type CommandMessage = Extract<ClientMessage, { type: "command" }>;
 
+/** Carries out a command on its own host once its turn comes; a stop goes at once. */
 export async function carryOut(
   db: Database,
   host: TrialHost,
@@ -25,35 +27,54 @@ export async function carryOut(
   halted: () => void,
   /** When the wizard asked, on this process's clock (src/core/trial/freshness.ts). */
   askedAt: number,
+  /** Taken as the command arrived: it enters the host's queue after those that arrived before it. */
+  turn: Turn,
 ): Promise<CommandResult & { claimed?: boolean }> {
-  if (message.command.kind === "played")
-    return host.browserPlayed(message.command.actionId, message.command.failed, access.userId);
-  const command =
-    message.command.kind === "unscripted" ? { ...message.command, actionId: crypto.randomUUID() } : message.command;
-  // A recording is a row of its own: it must belong to this very trial.
-  if (command.kind === "recording" && !(await isRecordingOf(db, command.recordingId, trialId)))
-    return { ok: false, reason: "That recording belongs to another trial: it was not logged here." };
-  let claimed = false;
-  if (claim && host.current.status === "scheduled") {
-    if (!(await claimTrial(db, trialId, access.userId)))
-      return { ok: false, reason: "Another wizard has just claimed this trial: you may watch it but not run it." };
-    claimed = true;
+  try {
+    const command =
+      message.command.kind === "unscripted" ? { ...message.command, actionId: crypto.randomUUID() } : message.command;
+    // A recording is a row of its own: it must belong to this very trial.
+    if (command.kind === "recording" && !(await isRecordingOf(db, command.recordingId, trialId)))
+      return { ok: false, reason: "That recording belongs to another trial: it was not logged here." };
+    let claimed = false;
+    if (claim && host.current.status === "scheduled") {
+      if (!(await claimTrial(db, trialId, access.userId)))
+        return { ok: false, reason: "Another wizard has just claimed this trial: you may watch it but not run it." };
+      claimed = true;
+    }
+    const halting = command.kind === "emergency_stop" || command.kind === "abort";
+    // A stop waits for nothing: the host stops the robot ahead of every command it holds.
+    if (!halting) await turn.wait();
+    if (command.kind === "played") {
+      const played = host.browserPlayed(command.actionId, command.failed, access.userId);
+      turn.done();
+      return await played;
+    }
+    // Safety before logging: the host stops the robot as it takes the command, whatever the database is doing.
+    const logged = host.command(command, access.userId, { id: message.requestId, retry: message.retry, askedAt });
+    turn.done();
+    // Asked again, a stop halted the robot the first time it arrived, or not at all (the answer says which).
+    if (halting && !message.retry) halted();
+    const result = await logged.catch((error: unknown) => {
+      if (!halting) throw error;
+      const ref = logUnexpected(error, "logging a stop");
+      return {
+        ok: false as const,
+        reason: `The robot was stopped, but the stop could not be logged (reference ${ref}).`,
+      };
+    });
+    return { ...result, claimed };
+  } finally {
+    turn.done();
   }
-  // Safety before logging: the host stops the robot as it takes the command, whatever the database is doing.
-  const logged = host.command(command, access.userId, { id: message.requestId, retry: message.retry, askedAt });
-  const halting = command.kind === "emergency_stop" || command.kind === "abort";
-  // Asked again, a stop halted the robot the first time it arrived, or not at all (the answer says which).
-  if (halting && !message.retry) halted();
-  const result = await logged.catch((error: unknown) => {
-    if (!halting) throw error;
-    const ref = logUnexpected(error, "logging a stop");
-    return {
-      ok: false as const,
-      reason: `The robot was stopped, but the stop could not be logged (reference ${ref}).`,
-    };
-  });
-  return { ...result, claimed };
 }
+
+/**
+ * How long a command waits for those that arrived before it to enter the queue: one held by a database that
+ * does not answer (its access, recording or claim read) stops holding the rest then, and they meet the log's
+ * deadline themselves.
+ */
+export const TURN_WAIT_MS = 3000;
 
 /**
  * Commands other processes forward: carried out if this process runs the trial, checked as on its own socket.
@@ -61,27 +82,28 @@ export async function carryOut(
  * read from the database, and those reads may come back in any order.
  */
 export function forwardedCommands(db: Database, hosts: TrialHosts) {
-  const turns = new Map<string, Promise<void>>();
+  const turnOf = arrivalOrder(TURN_WAIT_MS);
   return async (request: Forwarded): Promise<ForwardAnswer | null> => {
-    const before = turns.get(request.trialId) ?? Promise.resolve();
-    let taken!: () => void;
-    const mine = new Promise<void>((ok) => (taken = ok));
-    turns.set(request.trialId, mine);
+    const turn = turnOf(request.trialId);
     try {
       const checked = await checkForwarded(db, hosts, request);
       if (!checked?.ok) return checked;
       const { host, access, message, claim, askedAt } = checked;
-      // A stop waits for nothing: the host stops the robot ahead of every command it holds.
-      const { kind } = message.command;
-      if (kind !== "emergency_stop" && kind !== "abort") await before;
       let halted = false;
-      // Called now, the command is in its host's queue when the next one's turn comes.
-      const carried = carryOut(db, host, request.trialId, access, message, claim, () => (halted = true), askedAt);
-      taken();
-      return { ...(await carried), halted };
+      const carried = await carryOut(
+        db,
+        host,
+        request.trialId,
+        access,
+        message,
+        claim,
+        () => (halted = true),
+        askedAt,
+        turn,
+      );
+      return { ...carried, halted };
     } finally {
-      taken();
-      if (turns.get(request.trialId) === mine) turns.delete(request.trialId);
+      turn.done();
     }
   };
 }

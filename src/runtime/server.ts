@@ -3,6 +3,7 @@
 // socket's access, which the runtime keeps fresh from the database: loaded at hello, reloaded whenever
 // PostgreSQL announces a change (see access.ts), never trusted from the client.
 import { oneAfterAnother } from "@/core/one-after-another";
+import { arrivalOrder, type Turn } from "@/core/arrival-order";
 import { askedAt } from "@/core/trial/freshness";
 import {
   annotateVerdict,
@@ -32,7 +33,7 @@ import { beforeHelloRefusal, LARGEST_FRAME_BYTES, sizeRefusal } from "@/core/soc
 import { partEnds } from "@/core/socket/welcome";
 import { Outbox } from "./outbox";
 import { loadTrialAccess, spendToken } from "./access";
-import { carryOut } from "./carry-out";
+import { carryOut, TURN_WAIT_MS } from "./carry-out";
 import { recordedRobot } from "./robot-status";
 import type { CommandForwarding } from "./forwarding";
 import type { StopLinks } from "./stop-links";
@@ -200,6 +201,8 @@ export function startRuntimeServer({
   };
 
   const door = helloDoor();
+  /** Each trial's commands, in the order they came on this process's sockets. */
+  const turnOf = arrivalOrder(TURN_WAIT_MS);
 
   /** Drops everything the socket held, at once, whoever closes it. */
   function release(ws: Socket) {
@@ -400,7 +403,27 @@ export function startRuntimeServer({
     // When the wizard asked, on this process's clock, from the page's time and the connection's offset.
     const asked = askedAt(message.at, ws.data.pulse.clock?.offsetMs ?? null, Date.now());
     if (!asked.ok) return reject(asked.reason);
-    const host = await hosts.get(claims.trialId);
+    // Taken before anything is awaited: the trial's commands reach its queue in the order they came.
+    const turn = turnOf(claims.trialId);
+    try {
+      await carry(ws, message, claims.trialId, access, verdict.claim, asked.at, turn);
+    } finally {
+      turn.done();
+    }
+  }
+
+  /** A wizard's command, in its turn: to its host here, or to the process that runs the trial. */
+  async function carry(
+    ws: Socket,
+    message: Extract<ClientMessage, { type: "command" }>,
+    trialId: string,
+    access: TrialAccess,
+    claim: boolean,
+    at: number,
+    turn: Turn,
+  ): Promise<void> {
+    const reject = (reason: string) => send(ws, { type: "rejected", requestId: message.requestId, reason });
+    const host = await hosts.get(trialId);
     const halting = message.command.kind === "emergency_stop" || message.command.kind === "abort";
     let halted = false;
     const tellHalted = () => {
@@ -409,22 +432,25 @@ export function startRuntimeServer({
       send(ws, { type: "halted", requestId: message.requestId });
     };
     let result: CommandResult & { claimed?: boolean };
-    if (host) result = await carryOut(db, host, claims.trialId, access, message, verdict.claim, tellHalted, asked.at);
+    if (host) result = await carryOut(db, host, trialId, access, message, claim, tellHalted, at, turn);
     else {
       // Run by another process: a stop goes to the robot from here too, never waiting on the database.
-      if (halting && !message.retry && stops.halt(claims.trialId)) tellHalted();
-      const answer = await forwarding.forward({
-        trialId: claims.trialId,
+      if (halting && !message.retry && stops.halt(trialId)) tellHalted();
+      if (!halting) await turn.wait();
+      // Handed on in turn: the forwarding keeps the order from here (forwarding.ts).
+      const forwarded = forwarding.forward({
+        trialId,
         userId: access.userId,
         requestId: message.requestId,
         retry: message.retry,
         command: message.command,
-        askedAt: asked.at,
+        askedAt: at,
       });
+      turn.done();
+      const answer = await forwarded;
       // No process answered: its owner is gone, and this one takes the trial over.
-      const taken = answer ? null : await hosts.get(claims.trialId);
-      if (taken)
-        result = await carryOut(db, taken, claims.trialId, access, message, verdict.claim, tellHalted, asked.at);
+      const taken = answer ? null : await hosts.get(trialId);
+      if (taken) result = await carryOut(db, taken, trialId, access, message, claim, tellHalted, at, turnOf(trialId));
       else if (!answer)
         return reject(
           "The runtime process running this trial did not answer in time: the trial's log shows whether this was done.",

@@ -8,7 +8,15 @@ import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import { createAccount } from "../../src/server/auth/accounts";
 import type { Simulator } from "../../src/robots/simulator";
 import { createDatabase } from "../../src/store/client";
-import { experimentVersions, experiments, studies, studyMembers, trialEvents, trials } from "../../src/store/schema";
+import {
+  experimentVersions,
+  experiments,
+  mediaRecordings,
+  studies,
+  studyMembers,
+  trialEvents,
+  trials,
+} from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { registerRobots } from "../support/robots";
@@ -46,7 +54,8 @@ const runtimes: Array<{ url: string; child: ChildProcess }> = [];
 let wizardId = "";
 let studyId = "";
 
-async function newTrial(text: string) {
+/** A trial of its own experiment; `assigned: false` leaves it for the first wizard to start it to claim. */
+async function newTrial(text: string, assigned = true) {
   const [experiment] = await db.insert(experiments).values({ studyId, name: text, robotId: "simulated" }).returning();
   const [version] = await db
     .insert(experimentVersions)
@@ -54,7 +63,7 @@ async function newTrial(text: string) {
     .returning();
   const [trial] = await db
     .insert(trials)
-    .values({ studyId, experimentId: experiment!.id, versionId: version!.id, wizardId })
+    .values({ studyId, experimentId: experiment!.id, versionId: version!.id, wizardId: assigned ? wizardId : null })
     .returning();
   return trial!.id;
 }
@@ -167,29 +176,63 @@ describe.sequential("several runtimes, many robots", () => {
     ["the runtime that runs the trial", 1],
     ["the runtime that does not run the trial", 0],
   ])(
-    "carries out a wizard's lines sent back to back through %s in the order sent",
+    "carries out a wizard's commands sent back to back through %s in the order sent, those that read the database first too",
     { timeout: 60_000 },
     async (_, through) => {
-      const trialId = await newTrial(`Order ${through}`);
+      // Unassigned: the start claims it for the wizard, a read and a write before it enters the trial's queue.
+      const trialId = await newTrial(`Order ${through}`, false);
+      const recordings = await db
+        .insert(mediaRecordings)
+        .values(
+          ["a", "b"].map((k) => ({
+            trialId,
+            kind: "video" as const,
+            storageKey: `order-${k}`,
+            mimeType: "video/webm",
+          })),
+        )
+        .returning({ id: mediaRecordings.id });
+      // The trial's first page opens it where it is asked for: through the owner, or the other runtime forwards.
       const owner = await open(runtimes[1]!.url, trialId);
       await owner.next((m) => m.type === "robot" && m.connected === true, 10_000);
-      expect(await owner.command("order-start", { kind: "start" })).toMatchObject({ type: "ack" });
       const wizard = through === 1 ? owner : await open(runtimes[through]!.url, trialId);
+      // A recording's owner is read before it is logged: one among the first lines and one half way.
+      const commands: Array<{ logged: string; command: Record<string, unknown> }> = [
+        { logged: "started", command: { kind: "start" } },
+        ...Array.from({ length: 100 }, (_, i) => ({
+          logged: `line ${i}`,
+          command: { kind: "unscripted", actionType: "say", parameters: { text: `line ${i}` } },
+        })),
+      ];
+      for (const [at, recording] of [
+        [3, recordings[0]!],
+        [52, recordings[1]!],
+      ] as const)
+        commands.splice(at, 0, {
+          logged: `recording ${recording.id}`,
+          command: { kind: "recording", recordingId: recording.id, offsetMs: 0 },
+        });
       // Sent as fast as the socket takes them, none waiting for the last's answer.
-      const lines = Array.from({ length: 100 }, (_, i) => `line ${i}`);
-      const answers = await Promise.all(
-        lines.map((text, i) =>
-          wizard.command(`order-${i}`, { kind: "unscripted", actionType: "say", parameters: { text } }),
-        ),
-      );
-      expect(answers.map((a) => a.type)).toEqual(lines.map(() => "ack"));
+      const answers = await Promise.all(commands.map((c, i) => wizard.command(`order-${through}-${i}`, c.command)));
+      expect(answers.map((a) => a.type)).toEqual(commands.map(() => "ack"));
       const logged = await db
-        .select({ payload: trialEvents.payload })
+        .select({ type: trialEvents.type, payload: trialEvents.payload })
         .from(trialEvents)
-        .where(and(eq(trialEvents.trialId, trialId), eq(trialEvents.type, "action.requested")))
+        .where(
+          and(
+            eq(trialEvents.trialId, trialId),
+            inArray(trialEvents.type, ["trial.started", "action.requested", "recording.started"]),
+          ),
+        )
         .orderBy(trialEvents.seq);
-      expect(logged.map((e) => (e.payload as { parameters?: { text?: string } }).parameters?.text)).toEqual(lines);
+      const named = logged.map(({ type, payload }) => {
+        const p = payload as { parameters?: { text?: string }; recordingId?: string };
+        if (type === "trial.started") return "started";
+        return type === "recording.started" ? `recording ${p.recordingId}` : p.parameters?.text;
+      });
+      expect(named).toEqual(commands.map((c) => c.logged));
       const sim = await simOf(trialId);
+      const lines = commands.map((c) => c.logged).filter((l) => l.startsWith("line "));
       await expect.poll(() => published(sim, "/speech").filter((t) => String(t).startsWith("line "))).toEqual(lines);
     },
   );
