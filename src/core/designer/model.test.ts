@@ -1,5 +1,7 @@
 import { describe, expect, it } from "vitest";
-import { commands, DesignerError, execute, redo, startHistory, undo, type Command } from "./model";
+import { commands } from "./model";
+import { execute, redo, startHistory, undo, type Command } from "./history";
+import { DesignerError } from "./draft";
 import type { DesignDraft } from "./types";
 
 function ids() {

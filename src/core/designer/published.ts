@@ -4,7 +4,7 @@
 // another source, or a sync brought a newer version) is worth a new version.
 import type { ProtocolSnapshot } from "../protocol/snapshot";
 import { same } from "./diff";
-import { draftFrom } from "./model";
+import { draftFrom } from "./draft";
 import type { DesignDraft } from "./types";
 
 export interface PublishedVersion {

@@ -2,7 +2,7 @@
 // frozen. Trials, exports and reports read this, never the live draft. A
 // stored snapshot keeps the bytes it was hashed with; older versions are
 // upgraded as they are read (./versions.ts), so the rest of the code knows one shape.
-import { draftFrom } from "../designer/model";
+import { draftFrom } from "../designer/draft";
 import { type DesignDraft, DOCUMENT_VERSION, type ProtocolSnapshot } from "./document";
 
 export type { ProtocolSnapshot } from "./document";

@@ -3,7 +3,8 @@
 // who plays it on this robot. Choosing a file writes its id with its name and
 // content hash, so the published version pins the very sound chosen.
 import { useQuery, useQueryClient } from "@tanstack/react-query";
-import { commands, type Command } from "@/core/designer/model";
+import { commands } from "@/core/designer/model";
+import type { Command } from "@/core/designer/history";
 import type { DesignAction } from "@/core/designer/types";
 import { audioPlayerText, type AudioPlayer } from "@/core/plugins";
 import { audioLength, audioUrl } from "@/lib/audio-upload";

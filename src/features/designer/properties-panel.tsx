@@ -4,7 +4,9 @@
 // own editors, so nobody types JSON or an id.
 import { ArrowDown, ArrowUp, Plus, Trash2, X } from "lucide-react";
 import { type Block, WAITS_FOR_CHOICE } from "@/core/designer/blocks";
-import { commands, locateAction, locateStep, type Command } from "@/core/designer/model";
+import { commands } from "@/core/designer/model";
+import type { Command } from "@/core/designer/history";
+import { locateAction, locateStep } from "@/core/designer/draft";
 import type { DesignIssue } from "@/core/designer/validate";
 import type { DesignAction, DesignDraft } from "@/core/designer/types";
 import type { AudioPlayer, ParameterSchema, RobotEvent } from "@/core/plugins";

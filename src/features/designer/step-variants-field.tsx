@@ -6,7 +6,8 @@
 import { X } from "lucide-react";
 import type { Block } from "@/core/designer/blocks";
 import { actionName, FREE_TEXT_PARAMETERS } from "@/core/designer/action-name";
-import { commands, type Command } from "@/core/designer/model";
+import { commands } from "@/core/designer/model";
+import type { Command } from "@/core/designer/history";
 import type { DesignStep } from "@/core/designer/types";
 import { Button } from "@/ui/button";
 import { Input } from "@/ui/field";

@@ -4,7 +4,8 @@
 // and chooses; nothing is overwritten silently).
 import { useMutation, useQuery } from "@tanstack/react-query";
 import { useCallback, useEffect, useRef, useState } from "react";
-import { draftFrom, execute, redo, startHistory, undo, type Command, type History } from "@/core/designer/model";
+import { execute, redo, startHistory, undo, type Command, type History } from "@/core/designer/history";
+import { draftFrom } from "@/core/designer/draft";
 import { describeSaveIssues, type FieldIssue } from "@/core/designer/save-problems";
 import type { DesignDraft } from "@/core/designer/types";
 import { newId } from "@/lib/new-id";

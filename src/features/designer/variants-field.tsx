@@ -3,7 +3,8 @@
 // that runs this experiment, side by side. A condition left unticked runs the
 // action as it is designed above; a ticked one starts from a copy of it.
 import type { Block } from "@/core/designer/blocks";
-import { commands, type Command } from "@/core/designer/model";
+import { commands } from "@/core/designer/model";
+import type { Command } from "@/core/designer/history";
 import type { DesignAction } from "@/core/designer/types";
 import type { ReactNode } from "react";
 import { SchemaForm } from "@/ui/schema-form";

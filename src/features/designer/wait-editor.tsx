@@ -4,7 +4,8 @@
 // it leads, and a time limit with its own way on. The wizard's go on needs no
 // setting: it takes what follows the block, then the step's own "Then".
 import { Plus, X } from "lucide-react";
-import { commands, type Command } from "@/core/designer/model";
+import { commands } from "@/core/designer/model";
+import type { Command } from "@/core/designer/history";
 import type { DesignAction, DesignDraft } from "@/core/designer/types";
 import type { RobotEvent } from "@/core/plugins";
 import { awaitedEvents, type AwaitedEvent } from "@/core/protocol/flow";

@@ -3,7 +3,7 @@
 // The format lives in the core (exchange.ts).
 import { TRPCError } from "@trpc/server";
 import { checking, draftOf, exportExperiment, importing } from "@/core/designer/exchange";
-import { draftFrom } from "@/core/designer/model";
+import { draftFrom } from "@/core/designer/draft";
 import type { DesignDraft, DesignStep } from "@/core/designer/types";
 import type { Database } from "@/store/client";
 import { experiments } from "@/store/schema";
