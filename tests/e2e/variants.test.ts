@@ -192,4 +192,25 @@ describe.sequential("an experiment whose conditions vary", () => {
     await expect.poll(() => line.getAttribute("title"), { timeout: 30_000 }).toBe(GREETINGS["Warm telling QX7"]);
     await page.context().close();
   }, 300_000);
+
+  it("edits a step's own action's other settings in the designer, beside its main text", async () => {
+    const plain = "Plain telling MW9";
+    const page = await (await newContext(browser, app.url)).newPage();
+    await signInAs(page, "researcher@demo.hristudio", DEMO_PASSWORD);
+    await page.goto(`/experiments/${experimentId}`);
+    await page.getByRole("button", { name: /^Step 3: Recall question/ }).click();
+    const column = page.getByRole("region", { name: "Properties" }).getByRole("group", { name: `In “${plain}”` });
+    await column.getByRole("checkbox", { name: `Own actions in “${plain}”` }).check();
+    // The pause's length, folded under its "More settings": a condition that holds still for less.
+    await column.getByLabel(/^More settings of Hold still, action 1/).click();
+    await column.getByRole("spinbutton", { name: /Seconds/ }).fill("1");
+    await expect.poll(() => page.locator("[data-save-state]").getAttribute("data-save-state")).toBe("saved");
+    await page.context().close();
+    const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
+    const saved = await researcher.experiments.get.query({ experimentId });
+    const recall = saved.steps.find((s) => s.name === "Recall question")!;
+    expect(recall.variants?.[plain]?.actions[0]).toMatchObject({ type: "pause", parameters: { seconds: 1 } });
+    // The shared pause is as it was.
+    expect(recall.actions[0]).toMatchObject({ type: "pause", parameters: { seconds: 2 } });
+  }, 300_000);
 });

@@ -56,6 +56,7 @@ const draft: DesignDraft = {
               parameters: { text: "Well done, friend!" },
               parallelGroup: null,
             },
+            { id: "warm-sit", type: "posture", name: "", parameters: { posture: "sit" }, parallelGroup: null },
           ],
         },
       },
@@ -150,6 +151,10 @@ describe("a step that varies by condition", () => {
     expect(warm).toMatch(/aria-label="Text of Say: Well done, friend!, action 1 in “Warm”" value="Well done, friend!"/);
     expect(warm).toContain('aria-label="Remove Say: Well done, friend!, action 1 in “Warm”"');
     expect(warm).not.toContain("Nod");
+    // Settings beside the main text, folded away: a posture's choice, the say's text only once.
+    expect(warm).toContain('aria-label="More settings of Posture: Sit, action 2 in “Warm”"');
+    expect(warm).toMatch(/<option selected="">sit<\/option>/);
+    expect(warm).not.toContain("More settings of Say");
     const plain = html.slice(html.indexOf('aria-label="In “Plain”"'));
     expect(plain).not.toMatch(/<input type="checkbox"[^>]*checked=""/);
     expect(plain).toContain("Runs the step&#x27;s actions.");

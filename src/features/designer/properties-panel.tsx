@@ -5,6 +5,7 @@
 import { ArrowDown, ArrowUp, Plus, Trash2, X } from "lucide-react";
 import { type Block, WAITS_FOR_CHOICE } from "@/core/designer/blocks";
 import { commands } from "@/core/designer/model";
+import { changedParameters } from "@/core/designer/changed-parameters";
 import type { Command } from "@/core/designer/history";
 import { locateAction, locateStep } from "@/core/designer/draft";
 import type { DesignIssue } from "@/core/designer/validate";
@@ -171,8 +172,7 @@ function ActionProperties({
   const own = issues.filter((i) => i.actionId === action.id);
   const problems = own.filter((i) => i.parameter).map((i) => ({ parameter: i.parameter!, message: i.message }));
   const setParameters = (values: Record<string, unknown>) => {
-    for (const [k, v] of Object.entries(values))
-      if (v !== action.parameters[k]) run(commands.setParameter(action.id, k, v));
+    for (const [k, v] of changedParameters(action.parameters, values)) run(commands.setParameter(action.id, k, v));
   };
   return (
     <div className="space-y-3">

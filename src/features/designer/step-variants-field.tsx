@@ -2,15 +2,18 @@
 // A step's "Varies by condition": beside the step's shared actions, one column
 // per condition of the study that runs this experiment. A ticked condition has
 // its own actions (a copy of the shared ones to start from), each with its
-// main text to edit and a way to remove it; an unticked one runs the shared.
+// main text to edit, its other settings under "More settings", and a way to
+// remove it; an unticked one runs the shared.
 import { X } from "lucide-react";
-import type { Block } from "@/core/designer/blocks";
+import { type Block, WAITS_FOR_CHOICE } from "@/core/designer/blocks";
+import { changedParameters } from "@/core/designer/changed-parameters";
 import { actionName, FREE_TEXT_PARAMETERS } from "@/core/designer/action-name";
 import { commands } from "@/core/designer/model";
 import type { Command } from "@/core/designer/history";
 import type { DesignStep } from "@/core/designer/types";
 import { Button } from "@/ui/button";
 import { Input } from "@/ui/field";
+import { SchemaForm } from "@/ui/schema-form";
 import { ConditionColumn } from "./variants-field";
 
 type Action = { id: string; type: string; name: string; parameters: Record<string, unknown> };
@@ -80,6 +83,15 @@ export function StepVariantsField({
                             }
                           />
                         )}
+                        <MoreSettings
+                          block={blockFor(action.type)}
+                          action={action}
+                          besides={text}
+                          label={label}
+                          onChange={(name, value) =>
+                            run(commands.setStepVariantParameter(step.id, condition, action.id, name, value))
+                          }
+                        />
                       </li>
                     );
                   })}
@@ -103,5 +115,43 @@ function ActionNames({ actions, nameOf }: { actions: Action[]; nameOf: (a: Actio
         </li>
       ))}
     </ol>
+  );
+}
+
+/** Blocks whose settings are more than a form: a question's answers, a wait's events, a branch's targets, a sound. */
+const OWN_EDITORS = new Set([...WAITS_FOR_CHOICE, "branch", "play_audio"]);
+
+/** An own action's settings beside its main text, folded away: the column stays a list of actions to read. */
+function MoreSettings({
+  block,
+  action,
+  besides,
+  label,
+  onChange,
+}: {
+  block: Block | undefined;
+  action: Action;
+  besides: string | undefined;
+  label: string;
+  onChange: (name: string, value: unknown) => void;
+}) {
+  if (!block || OWN_EDITORS.has(action.type)) return null;
+  const { [besides ?? ""]: _, ...properties } = block.parameterSchema.properties ?? {};
+  if (!Object.keys(properties).length) return null;
+  return (
+    <details className="text-xs">
+      <summary className="cursor-pointer text-slate-600" aria-label={`More settings of ${label}`}>
+        More settings
+      </summary>
+      <div className="pt-2">
+        <SchemaForm
+          schema={{ ...block.parameterSchema, properties }}
+          value={action.parameters}
+          onChange={(values) => {
+            for (const [name, value] of changedParameters(action.parameters, values)) onChange(name, value);
+          }}
+        />
+      </div>
+    </details>
   );
 }
