@@ -36,15 +36,15 @@ export interface Rehearsal {
 const MAX_STEPS = 1000;
 
 /**
- * `answers` maps a question (record_answer action id) to an option id; unset questions take their first answer.
- * It maps a wait (wait_for action id) to the awaited event that happens there (its option id, the edge's); an
- * unset wait takes the wizard's go on.
+ * `choices` says what happens at each point of choice, by its action id: a question's answer (an option id;
+ * unset, its first answer), a wait's awaited event (the event's option id, the edge's; unset, the wizard's
+ * go on).
  * `runOut` holds the steps and questions whose time limit the rehearsal lets run out: a question's at the
  * question, unanswered; a step's once its actions are done, the wizard never moving on.
  */
 export function rehearse(
   protocol: TrialProtocol,
-  answers: Record<string, string> = {},
+  choices: Record<string, string> = {},
   runOut: ReadonlySet<string> = new Set(),
 ): Rehearsal {
   let state = initialState(protocol);
@@ -91,7 +91,7 @@ export function rehearse(
     // time let run out, or else the wizard's go on.
     if (unit[0]?.type === "wait_for") {
       const wait = unit[0];
-      const happens = awaitedEvents(wait).find((e) => e.id === answers[wait.id]);
+      const happens = awaitedEvents(wait).find((e) => e.id === choices[wait.id]);
       if (happens) {
         steps.at(-1)!.sensed = { actionId: wait.id, event: happens.event };
         send({ kind: "sensed", event: happens.event, at: seq, message: null });
@@ -100,7 +100,7 @@ export function rehearse(
     }
     if (question) {
       const options = answerOptions(question);
-      const chosen = options.find((o) => o.id === answers[question.id]) ?? options[0];
+      const chosen = options.find((o) => o.id === choices[question.id]) ?? options[0];
       if (!chosen) throw new Error(`The question "${question.name || question.id}" has no answers to choose from.`);
       send({ kind: "answer", actionId: question.id, optionId: chosen.id });
       continue;

@@ -46,7 +46,7 @@ export function RehearsalPreview({
     [draft],
   );
   const limited = useMemo(() => draft.steps.filter((step) => step.timeLimit), [draft]);
-  const [answers, setAnswers] = useState<Record<string, string>>({});
+  const [choices, setChoices] = useState<Record<string, string>>({});
   /** The steps and questions whose time limit runs out in this rehearsal. */
   const [runOut, setRunOut] = useState<ReadonlySet<string>>(new Set());
   const letRunOut = (id: string, yes: boolean) => {
@@ -60,11 +60,11 @@ export function RehearsalPreview({
   const result = useMemo(() => {
     if (blocked) return null;
     try {
-      return { ok: true as const, rehearsal: rehearse(inCondition(draft, condition || null), answers, runOut) };
+      return { ok: true as const, rehearsal: rehearse(inCondition(draft, condition || null), choices, runOut) };
     } catch (e) {
       return { ok: false as const, reason: (e as Error).message };
     }
-  }, [draft, answers, runOut, blocked, condition]);
+  }, [draft, choices, runOut, blocked, condition]);
 
   return (
     <section aria-label="Rehearsal preview" className="space-y-4">
@@ -93,10 +93,10 @@ export function RehearsalPreview({
               {(p) => (
                 <NativeSelect
                   {...p}
-                  value={runOut.has(action.id) ? RUN_OUT : (answers[action.id] ?? answerOptions(action)[0]?.id ?? "")}
+                  value={runOut.has(action.id) ? RUN_OUT : (choices[action.id] ?? answerOptions(action)[0]?.id ?? "")}
                   onChange={(e) => {
                     letRunOut(action.id, e.target.value === RUN_OUT);
-                    if (e.target.value !== RUN_OUT) setAnswers({ ...answers, [action.id]: e.target.value });
+                    if (e.target.value !== RUN_OUT) setChoices({ ...choices, [action.id]: e.target.value });
                   }}
                 >
                   {answerOptions(action).map((o) => (
@@ -116,10 +116,10 @@ export function RehearsalPreview({
               {(p) => (
                 <NativeSelect
                   {...p}
-                  value={runOut.has(action.id) ? RUN_OUT : (answers[action.id] ?? "")}
+                  value={runOut.has(action.id) ? RUN_OUT : (choices[action.id] ?? "")}
                   onChange={(e) => {
                     letRunOut(action.id, e.target.value === RUN_OUT);
-                    setAnswers({ ...answers, [action.id]: e.target.value === RUN_OUT ? "" : e.target.value });
+                    setChoices({ ...choices, [action.id]: e.target.value === RUN_OUT ? "" : e.target.value });
                   }}
                 >
                   <option value="">Nothing sensed: the wizard goes on</option>
