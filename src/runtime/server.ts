@@ -57,6 +57,8 @@ interface Connection {
   peerId: string;
   /** Set at the first hello: a connection follows one trial, once. */
   greeted: boolean;
+  /** The first hello's work, until its welcome is on its way: what the page sends meanwhile waits for it. */
+  hello?: Promise<void>;
   closed: boolean;
   claims: SocketClaims | null;
   /** The caller's access now; only set once hello has admitted them. */
@@ -526,11 +528,17 @@ export function startRuntimeServer({
     if (message.type === "ping") return send(ws, answer(ws.data.pulse, message));
     if (message.type === "hello") {
       // A hello that fails half way must not leave a connection that follows nothing.
-      return hello(ws, message.token, message.lastSeq).catch((error: unknown) => {
+      const said = hello(ws, message.token, message.lastSeq).catch((error: unknown) => {
         const ref = logUnexpected(error, "trial socket hello");
         shut(ws, 1011, `The server could not open this trial (reference ${ref}). Reload the page.`);
       });
+      ws.data.hello ??= said;
+      return said;
     }
+    // Sent right behind the hello, before its welcome (a key pressed as the page opens): taken, in the order
+    // sent, once the hello is done, rather than refused as if no hello had been said.
+    if (ws.data.hello) await ws.data.hello;
+    if (ws.data.closed) return;
     if (message.type === "signal") return signal(ws, message);
     if (message.type === "replay" || message.type === "replay_stop") {
       // One at a time: a quick run of seeks ends with the last one playing, and held by this connection.

@@ -142,6 +142,10 @@ describe.sequential("observing a live trial", () => {
         .toBe(`${count} code${count === 1 ? "" : "s"} marked; last: ${name}`);
     };
     for (const page of observers) await marked(page).waitFor({ timeout: 30_000 });
+    // The panel shows before the page's connection is welcomed (the last test reloaded one page): a key
+    // pressed before it is open is refused, and says so; it is pressed once the page is live, as an observer would.
+    for (const page of observers)
+      await expect.poll(() => page.getByTestId("runtime-status").textContent(), { timeout: 30_000 }).toBe("live");
     // Both look at the robot; then Olu sees a smile and the gaze move to the task,
     // Oda a hesitation and the gaze move away: they agree on some slices, not all.
     // Each page counts its own codes alone: nobody else's are shown while coding.

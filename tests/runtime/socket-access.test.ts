@@ -75,6 +75,34 @@ describe.sequential("the trial socket's access", () => {
     wizard.close();
   });
 
+  it("takes what a page sends right behind its hello, before the welcome, once the hello is done, in order", async () => {
+    const trialId = await f.a.trial(f.a.people.wizard!, "live");
+    const notes = ["Sat down", "Looked at the robot", "Smiled"];
+    const wizard = await connectTrial(
+      f.url,
+      f.token(f.a.people.wizard!, trialId),
+      0,
+      notes.map((text, i) => ({ type: "command", requestId: `early-${i}`, command: { kind: "note", text } })),
+    );
+    const answers = await Promise.all(
+      notes.map((_, i) =>
+        wizard.next((m) => m.requestId === `early-${i}` && (m.type === "ack" || m.type === "rejected")),
+      ),
+    );
+    expect(answers.map((a) => a.type)).toEqual(["ack", "ack", "ack"]);
+    // After the welcome, and in the order sent.
+    expect(wizard.messages.findIndex((m) => m.type === "welcome")).toBeLessThan(
+      wizard.messages.findIndex((m) => m.requestId === "early-0"),
+    );
+    const logged = await f.db
+      .select({ payload: trialEvents.payload })
+      .from(trialEvents)
+      .where(and(eq(trialEvents.trialId, trialId), eq(trialEvents.type, "note.added")))
+      .orderBy(trialEvents.seq);
+    expect(logged.map((e) => (e.payload as { text: string }).text)).toEqual(notes);
+    wizard.close();
+  });
+
   it("cuts off a removed member at once, and refuses them a new connection", async () => {
     const trialId = await f.a.trial(f.a.people.wizard!, "live");
     const researcher = await f.open("researcher", trialId);

@@ -17,7 +17,13 @@ export interface TrialSocket {
   close(): void;
 }
 
-export async function connectTrial(url: string, token: string, lastSeq = 0): Promise<TrialSocket> {
+/** `sentWithHello`: messages sent right behind the hello, before its welcome, as a page may. */
+export async function connectTrial(
+  url: string,
+  token: string,
+  lastSeq = 0,
+  sentWithHello: Array<Record<string, unknown>> = [],
+): Promise<TrialSocket> {
   const ws = new WebSocket(url);
   const messages: Array<Record<string, unknown>> = [];
   const waiters = new Set<() => void>();
@@ -77,6 +83,7 @@ export async function connectTrial(url: string, token: string, lastSeq = 0): Pro
     }),
   );
   socket.send({ type: "hello", version: SOCKET_MESSAGES_VERSION, token, lastSeq });
+  for (const message of sentWithHello) socket.send(message);
   await Promise.race([socket.next((m) => m.type === "welcome" || m.type === "rejected"), closed]);
   return socket;
 }

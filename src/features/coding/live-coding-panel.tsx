@@ -12,13 +12,19 @@ import { Card } from "@/ui/surface";
 import { isTyping, useKeys } from "@/ui/use-keys";
 import type { LiveCode } from "../execution/use-trial-socket";
 
-type Send = (mark: { schemeVersionId: string; setId: string; codeId: string }) => Promise<{ ok: boolean }>;
+type Send = (mark: {
+  schemeVersionId: string;
+  setId: string;
+  codeId: string;
+}) => Promise<{ ok: true } | { ok: false; reason: string }>;
 
 export function LiveCodingPanel({ trialId, codes, send }: { trialId: string; codes: LiveCode[]; send: Send }) {
   const trpc = useTRPC();
   const loaded = useQuery(trpc.coding.forTrial.queryOptions({ trialId }));
   const [chosen, setChosen] = useState<string | null>(null);
   const [last, setLast] = useState<string>("");
+  /** A code the runtime did not mark, and why: said, so a press is never lost without a word. */
+  const [notMarked, setNotMarked] = useState<string | null>(null);
   const schemes = loaded.data?.schemes ?? [];
   const current = schemes.find((s) => s.versionId === chosen) ?? schemes[0];
   // Mine: those loaded with the page, updated by what the runtime confirmed since.
@@ -32,7 +38,10 @@ export function LiveCodingPanel({ trialId, codes, send }: { trialId: string; cod
   const mark = (setId: string, code: { id: string; name: string }) => {
     if (!current) return;
     void send({ schemeVersionId: current.versionId, setId, codeId: code.id }).then((r) => {
-      if (r.ok) setLast(code.name);
+      if (r.ok) {
+        setLast(code.name);
+        setNotMarked(null);
+      } else setNotMarked(`“${code.name}” was not marked: ${r.reason}`);
     });
   };
   useKeys((e) => {
@@ -92,6 +101,11 @@ export function LiveCodingPanel({ trialId, codes, send }: { trialId: string; cod
         {mine.length} code{mine.length === 1 ? "" : "s"} marked
         {last && <span>; last: {last}</span>}
       </p>
+      {notMarked && (
+        <p role="alert" className="text-sm text-red-700">
+          {notMarked}
+        </p>
+      )}
     </Card>
   );
 }
