@@ -3,6 +3,7 @@
 // another process whose socket it came on (forwarding.ts). One path for both.
 import { commandVerdict, lostAccess, type TrialAccess } from "@/core/access/trial-socket";
 import { parseClientMessage, type ClientMessage } from "@/core/socket/messages";
+import { haltsTheRobot } from "@/core/trial";
 import { droppedReason, staleness } from "@/core/trial/freshness";
 import type { Database } from "@/store/client";
 import { logUnexpected } from "@/store/error-reference";
@@ -42,7 +43,7 @@ export async function carryOut(
         return { ok: false, reason: "Another wizard has just claimed this trial: you may watch it but not run it." };
       claimed = true;
     }
-    const halting = command.kind === "emergency_stop" || command.kind === "abort";
+    const halting = haltsTheRobot(command.kind);
     // A stop waits for nothing: the host stops the robot ahead of every command it holds.
     if (!halting) await turn.wait();
     if (command.kind === "played") {

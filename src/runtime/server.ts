@@ -19,7 +19,7 @@ import {
 } from "@/core/access/trial-socket";
 import type { Database } from "@/store/client";
 import { verifySocketToken, type SocketClaims } from "@/store/socket-token";
-import type { StoredEvent } from "@/core/trial";
+import { haltsTheRobot, type StoredEvent } from "@/core/trial";
 import { eventsSince, STATUS_AFTER } from "@/store/event-store";
 import {
   parseClientMessage,
@@ -57,7 +57,7 @@ interface Connection {
   peerId: string;
   /** Set at the first hello: a connection follows one trial, once. */
   greeted: boolean;
-  /** The first hello's work, until its welcome is on its way: what the page sends meanwhile waits for it. */
+  /** The first hello's work while it is under way (until its welcome is on its way): what the page sends meanwhile waits for it. */
   hello?: Promise<void>;
   closed: boolean;
   claims: SocketClaims | null;
@@ -426,7 +426,7 @@ export function startRuntimeServer({
   ): Promise<void> {
     const reject = (reason: string) => send(ws, { type: "rejected", requestId: message.requestId, reason });
     const host = await hosts.get(trialId);
-    const halting = message.command.kind === "emergency_stop" || message.command.kind === "abort";
+    const halting = haltsTheRobot(message.command.kind);
     let halted = false;
     const tellHalted = () => {
       if (halted) return;
@@ -532,7 +532,11 @@ export function startRuntimeServer({
         const ref = logUnexpected(error, "trial socket hello");
         shut(ws, 1011, `The server could not open this trial (reference ${ref}). Reload the page.`);
       });
-      ws.data.hello ??= said;
+      if (!ws.data.hello) {
+        ws.data.hello = said;
+        // Done, it is forgotten: what comes later goes straight on (those waiting for it resume first, in order).
+        void said.finally(() => (ws.data.hello = undefined));
+      }
       return said;
     }
     // Sent right behind the hello, before its welcome (a key pressed as the page opens): taken, in the order

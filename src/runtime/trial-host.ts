@@ -6,6 +6,7 @@ import {
   decide,
   decideReports,
   fold,
+  haltsTheRobot,
   type Command,
   type EngineEvent,
   type StoredEvent,
@@ -359,7 +360,7 @@ export class TrialHost {
     requestId: string | null,
     moment?: number,
   ): Promise<CommandResult> {
-    if (command.kind === "emergency_stop" || command.kind === "abort") {
+    if (haltsTheRobot(command.kind)) {
       this.halts++;
       this.robot.halt();
     }
@@ -396,7 +397,7 @@ export class TrialHost {
     const decision = decide(this.protocol, this.state, command, this.eventNames);
     if (!decision.ok) return decision;
     const written = await this.write(() => decision.events, actorId, requestId);
-    const halting = command.kind === "emergency_stop" || command.kind === "abort";
+    const halting = haltsTheRobot(command.kind);
     if (written === "fenced") return { ok: false, reason: TAKEN_OVER };
     if (written === "refused") return { ok: false, reason: halting ? STOP_NOT_LOGGED : LOG_UNAVAILABLE };
     if (written === "unknown") return { ok: false, reason: halting ? STOP_UNCONFIRMED : NOT_ANSWERED };

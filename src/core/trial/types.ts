@@ -107,6 +107,11 @@ export type StoredEvent<Time extends Date | string = Date> = TrialEvent & {
   actorId: string | null;
 };
 
+/** An emergency stop or an abort: the robot is stopped at once, ahead of every command waiting to be logged. */
+export function haltsTheRobot(kind: string): boolean {
+  return kind === "emergency_stop" || kind === "abort";
+}
+
 export type Command =
   | { kind: "start" }
   | { kind: "next" }
