@@ -156,6 +156,12 @@ function robotBlocks(plugin: Plugin): Block[] {
 export const WAITS_FOR_CHOICE: ReadonlySet<string> = new Set(["record_answer", "branch", "wait_for"]);
 
 /**
+ * Blocks whose settings are more than a form (a question's answers, a wait's events, a branch's targets, a
+ * sound): set on the shared action only; a condition's variant or own copy changes no more than their text.
+ */
+export const OWN_EDITORS: ReadonlySet<string> = new Set([...WAITS_FOR_CHOICE, "play_audio"]);
+
+/**
  * Not an action: a tool that makes an action start together with the one
  * above it (dropped onto it, or with the action selected). The group is then
  * a frame around the actions, each still editable on its own.

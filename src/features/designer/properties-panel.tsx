@@ -3,7 +3,7 @@
 // comes from the block's JSON Schema; answers and branch targets have their
 // own editors, so nobody types JSON or an id.
 import { ArrowDown, ArrowUp, Plus, Trash2, X } from "lucide-react";
-import { type Block, WAITS_FOR_CHOICE } from "@/core/designer/blocks";
+import { type Block, OWN_EDITORS, WAITS_FOR_CHOICE } from "@/core/designer/blocks";
 import { commands } from "@/core/designer/model";
 import { changedParameters } from "@/core/designer/changed-parameters";
 import type { Command } from "@/core/designer/history";
@@ -213,7 +213,7 @@ function ActionProperties({
           problems={problems}
         />
       ) : null}
-      {block && !WAITS_FOR_CHOICE.has(action.type) && action.type !== "branch" && action.type !== "play_audio" && (
+      {block && !OWN_EDITORS.has(action.type) && (
         <VariantsField action={action} block={block} conditions={conditions} run={run} />
       )}
       {!WAITS_FOR_CHOICE.has(action.type) && !WAITS_FOR_CHOICE.has(step.actions[index - 1]?.type ?? "") && (

@@ -5,7 +5,7 @@
 // main text to edit, its other settings under "More settings", and a way to
 // remove it; an unticked one runs the shared.
 import { X } from "lucide-react";
-import { type Block, WAITS_FOR_CHOICE } from "@/core/designer/blocks";
+import { type Block, OWN_EDITORS } from "@/core/designer/blocks";
 import { changedParameters } from "@/core/designer/changed-parameters";
 import { actionName, FREE_TEXT_PARAMETERS } from "@/core/designer/action-name";
 import { commands } from "@/core/designer/model";
@@ -117,9 +117,6 @@ function ActionNames({ actions, nameOf }: { actions: Action[]; nameOf: (a: Actio
     </ol>
   );
 }
-
-/** Blocks whose settings are more than a form: a question's answers, a wait's events, a branch's targets, a sound. */
-const OWN_EDITORS = new Set([...WAITS_FOR_CHOICE, "branch", "play_audio"]);
 
 /** An own action's settings beside its main text, folded away: the column stays a list of actions to read. */
 function MoreSettings({
