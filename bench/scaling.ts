@@ -287,10 +287,15 @@ try {
       1000,
     );
     print(
-      "Analysis page's data (trials.get and trials.events)",
+      "Analysis page's data (trials.get and its log's route, trials.eventsJson)",
       TRIAL_SIZES,
       "events",
-      await byTrial((trialId) => Promise.all([owner.trials.get({ trialId }), owner.trials.events({ trialId })])),
+      await byTrial((trialId) =>
+        Promise.all([
+          owner.trials.get({ trialId }),
+          downloads.trials.eventsJson({ trialId }).then(({ body }) => drain(streamed(body))),
+        ]),
+      ),
     );
     for (const [format, name] of [
       ["csv", "Events export (CSV)"],

@@ -15,7 +15,16 @@ import {
   takeTrial,
   type TrialCursor,
   trialLog,
+  trialLogJson,
+  withPlace,
 } from "./event-store";
+
+/** Every piece a generator yields (this Node has no Array.fromAsync). */
+async function piecesOf(pieces: AsyncGenerator<string>): Promise<string[]> {
+  const all: string[] = [];
+  for await (const piece of pieces) all.push(piece);
+  return all;
+}
 
 describe("the trial event store", async () => {
   const { db, sql, close } = await freshDatabase();
@@ -88,6 +97,50 @@ describe("the trial event store", async () => {
     expect(await trialLog(db, trialId)).toEqual(
       (await eventsSince(db, trialId)).map(({ trialId: _, serverTime: __, actorId: ___, ...event }) => event),
     );
+  });
+
+  it("gives the log as JSON text made from the stored payloads: the same events, at a long trial's size", async () => {
+    const trialId = await newTrial();
+    let clock = Date.parse("2026-01-01T10:00:00Z");
+    const now = () => new Date(clock);
+    // Before the start (no time since t0 yet), then two hours of a busy trial: 20,000 events in all.
+    await appendEvents(db, await cursor(trialId), [{ type: "note.added", text: "set-up" }], null, { now });
+    await appendEvents(db, await cursor(trialId), [{ type: "trial.started" }], null, { now });
+    const awkward = ['"quoted" \\ back\\slash', "line\nbreak\ttab", "émoji 🤖 and 中文", "{}", "}", ""];
+    for (let batch = 0; batch < 20; batch++) {
+      clock += 360_000;
+      const events = Array.from({ length: batch === 19 ? 998 : 1000 }, (_, i) => ({
+        type: "action.requested" as const,
+        stepId: "s1",
+        actionId: `a${batch}-${i}`,
+        actionType: "say",
+        parameters: { text: awkward[i % awkward.length]!, nested: { list: [1, 2.5, null, true] } },
+        scripted: i % 7 !== 0,
+        ...(i % 7 === 0 ? { deviation: "unscripted" as const } : {}),
+      }));
+      await appendEvents(db, await cursor(trialId), events, null, { now });
+    }
+    // Written a page at a time: more than one piece, which together are the whole log.
+    const pieces = await piecesOf(trialLogJson(db, trialId));
+    expect(pieces.length).toBeGreaterThan(2);
+    const text = pieces.join("");
+    const expected = (await eventsSince(db, trialId)).map(
+      ({ trialId: _, serverTime: __, actorId: ___, ...event }) => event,
+    );
+    expect(expected).toHaveLength(20_000);
+    expect(JSON.parse(text)).toEqual(expected);
+    expect(expected[0]).toMatchObject({ seq: 1, relMs: null });
+    expect(await trialLog(db, trialId, 19_990)).toEqual(expected.slice(19_990));
+    expect((await piecesOf(trialLogJson(db, trialId, 20_000))).join("")).toBe("[]");
+  });
+
+  it.each([
+    ['{"type": "trial.started"}', 3, 0, '{"type": "trial.started","seq":3,"relMs":0}'],
+    ['{"type": "note.added", "text": "}"}', 1, null, '{"type": "note.added", "text": "}","seq":1,"relMs":null}'],
+    ["{}", 2, 5, '{"seq":2,"relMs":5}'],
+  ])("places seq and time at the end of the payload %s", (payload, seq, relMs, json) => {
+    expect(withPlace(payload, seq, relMs)).toBe(json);
+    expect(JSON.parse(withPlace(payload, seq, relMs))).toEqual({ ...JSON.parse(payload), seq, relMs });
   });
 
   it("never lets two writers both write seq N: a stale cursor's append fails whole", async () => {

@@ -367,6 +367,7 @@ export const MATRIX: Record<string, [Caller[], Input]> = {
   "trials.socketToken": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
   "trials.annotations": [MEMBERS, (_f, b) => ({ trialId: b.trial.id })],
   "trials.events": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
+  "trials.eventsJson": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
   "trials.export": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id, format: "json" })],
   "trials.samples": [["owner", "researcher", "observer"], (_f, b) => ({ trialId: b.trial.id })],
   "admin.users.list": [ADMIN, () => undefined],

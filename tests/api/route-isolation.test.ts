@@ -135,6 +135,7 @@ describe("REST routes keep studies apart", () => {
         "GET recordings/[recordingId]/media",
         "PUT recordings/[recordingId]/chunks/[index]",
         "GET trials/[trialId]/export",
+        "GET trials/[trialId]/events",
         "GET audio/[audioFileId]",
         "POST studies/[studyId]/audio",
       ]),

@@ -27,11 +27,12 @@ import { Badge, Card, Spinner } from "@/ui/surface";
 import { JointAngles } from "./joint-angles";
 import { ReplayControl } from "./replay-control";
 import { TrialPeople } from "@/features/execution/trial-people";
+import { fetchTrialLog } from "./trial-log";
 
 export function AnalysisPage({ trialId }: { trialId: string }) {
   const trpc = useTRPC();
   const trial = useQuery(trpc.trials.get.queryOptions({ trialId }));
-  const events = useQuery(trpc.trials.events.queryOptions({ trialId }));
+  const events = useQuery({ queryKey: ["trial-log", trialId], queryFn: () => fetchTrialLog(trialId) });
   const annotations = useQuery(trpc.trials.annotations.queryOptions({ trialId }));
   const recording = useTrialRecording(trialId, trial.data?.myRole !== "wizard");
   const [playheadMs, setPlayheadMs] = useState<number | null>(null);
