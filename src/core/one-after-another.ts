@@ -12,3 +12,20 @@ export function oneAfterAnother() {
     return turn;
   };
 }
+
+/**
+ * A lane per key (a trial's): jobs of one key one after another, of different keys side by side; a key's lane
+ * is let go once its last job has settled, so a long-running process holds only the lanes in use.
+ */
+export function oneAfterAnotherBy<K>() {
+  const lanes = new Map<K, { inTurn: ReturnType<typeof oneAfterAnother>; jobs: number }>();
+  const by = <T>(key: K, job: () => Promise<T>): Promise<T> => {
+    const lane = lanes.get(key) ?? { inTurn: oneAfterAnother(), jobs: 0 };
+    lanes.set(key, lane);
+    lane.jobs++;
+    return lane.inTurn(job).finally(() => {
+      if (--lane.jobs === 0) lanes.delete(key);
+    });
+  };
+  return Object.assign(by, { held: () => lanes.size });
+}

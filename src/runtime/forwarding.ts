@@ -4,7 +4,7 @@
 // on its own socket, carries it out, and answers on a second channel to the
 // process that asked. No other broker.
 import type postgres from "postgres";
-import { oneAfterAnother } from "@/core/one-after-another";
+import { oneAfterAnotherBy } from "@/core/one-after-another";
 import type { CommandResult } from "./trial-host";
 
 const REQUESTS = "hri_trial_commands";
@@ -70,9 +70,9 @@ export async function commandForwarding(
     );
     await sql`select pg_notify(${channel}, p) from unnest(${parts}::text[]) as p`;
   };
-  // Requests one after another: sent at once, they would go out on several of the pool's connections and
-  // reach the owner in any order (a wizard's lines said out of turn).
-  const inTurn = oneAfterAnother();
+  // A trial's requests one after another: sent at once, they would go out on several of the pool's connections
+  // and reach the owner in any order (a wizard's lines said out of turn). Other trials' go beside them.
+  const inTurn = oneAfterAnotherBy<string>();
   return {
     /** The owner's answer, or null when no process answered in time (its owner may have gone). */
     async forward(command: Forwarded): Promise<ForwardAnswer | null> {
@@ -85,7 +85,7 @@ export async function commandForwarding(
         });
       });
       try {
-        await inTurn(() => notify(REQUESTS, { ...command, id, from: self } satisfies Request));
+        await inTurn(command.trialId, () => notify(REQUESTS, { ...command, id, from: self } satisfies Request));
         return await answered;
       } finally {
         waiting.delete(id);
