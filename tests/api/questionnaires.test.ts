@@ -128,6 +128,9 @@ describe("the answers CSV, in long form", () => {
       { name: "Godspeed questionnaire · Perceived Intelligence", score: 5 },
       { name: "Godspeed questionnaire · Perceived Safety", score: 2 },
     ]);
+    // Scores are results: the wizard, who may not read the data, sees the trial without them.
+    const [asWizard] = await f.api("wizard").trials.list({ studyId: study.id });
+    expect(asWizard).toMatchObject({ id: listed!.id, scores: [] });
   });
 });
 

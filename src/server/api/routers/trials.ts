@@ -1,6 +1,6 @@
 import { assertWizardOf } from "../../studies/wizard-gate";
 import { TRPCError } from "@trpc/server";
-import { and, asc, desc, eq, sql } from "drizzle-orm";
+import { and, asc, desc, eq, type SQL, sql } from "drizzle-orm";
 import { alias } from "drizzle-orm/pg-core";
 import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
@@ -22,6 +22,7 @@ import { snapshotOf } from "@/core/protocol/snapshot";
 import { inCondition } from "@/core/protocol/variants";
 import { conditionOfTrial } from "@/store/trial-condition";
 import { trialLog, trialLogJson } from "@/store/event-store";
+import type { Database } from "@/store/client";
 import { trialFile } from "../../trials/files";
 import { trialPluginNames } from "../../trials/action-names";
 import { assertMayTakePart } from "../../studies/consent-gate";
@@ -66,6 +67,22 @@ const questionnaireScores = sql<Array<{ name: string; instrument: Instrument | n
   join questionnaire_versions v on v.id = l.version_id
   join questionnaires q on q.id = v.questionnaire_id
   where l.trial_id = ${qualified(trials.id)} and r.status = 'submitted' and r.score is not null)`;
+
+/**
+ * A study's trials as its table and a trial's page show them: each with its experiment, version, participant,
+ * wizard and creator by name.
+ */
+function trialRows(db: Database, where: SQL) {
+  return db
+    .select(columns)
+    .from(trials)
+    .innerJoin(experiments, eq(experiments.id, trials.experimentId))
+    .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
+    .leftJoin(participants, eq(participants.id, trials.participantId))
+    .leftJoin(user, eq(user.id, trials.wizardId))
+    .leftJoin(creator, eq(creator.id, trials.createdBy))
+    .where(where);
+}
 
 export const trialsRouter = router({
   liveNow,
@@ -125,27 +142,27 @@ export const trialsRouter = router({
   }),
 
   list: studyProcedure("trial.read", "study", z.object({ studyId: id })).query(async ({ ctx }) => {
-    const rows = await ctx.db
-      .select({ ...columns, scores: questionnaireScores })
-      .from(trials)
-      .innerJoin(experiments, eq(experiments.id, trials.experimentId))
-      .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
-      .leftJoin(participants, eq(participants.id, trials.participantId))
-      .leftJoin(user, eq(user.id, trials.wizardId))
-      .leftJoin(creator, eq(creator.id, trials.createdBy))
-      .where(eq(trials.studyId, ctx.studyId))
-      .orderBy(desc(trials.createdAt));
     // Scores are results: only for those who may read the data, and not under a results blind.
     const showScores = studyRoleMay(ctx.studyRole, "data.read") && !ctx.blinding.resultsHidden;
+    const [rows, scored] = await Promise.all([
+      trialRows(ctx.db, eq(trials.studyId, ctx.studyId)).orderBy(desc(trials.createdAt)),
+      showScores
+        ? ctx.db
+            .select({ id: trials.id, scores: questionnaireScores })
+            .from(trials)
+            .where(eq(trials.studyId, ctx.studyId))
+        : [],
+    ]);
+    const scoresOf = new Map(scored.map((s) => [s.id, s.scores ?? []]));
     // The scores the instrument publishes, by their published names: no overall Godspeed score.
-    const published = (scores: NonNullable<(typeof rows)[number]["scores"]>) =>
+    const published = (scores: NonNullable<(typeof scored)[number]["scores"]>) =>
       scores.flatMap((q) =>
         publishedScores(q.instrument, q.score as Parameters<typeof publishedScores>[1]).map((s) => ({
           name: s.subscale ? `${q.name} · ${s.subscale}` : q.name,
           score: s.value,
         })),
       );
-    const shown = rows.map((r) => ({ ...r, scores: showScores ? published(r.scores ?? []) : [] }));
+    const shown = rows.map((r) => ({ ...r, scores: published(scoresOf.get(r.id) ?? []) }));
     return ctx.blinding.conditionsHidden ? shown.map(blindTrial) : shown;
   }),
 
@@ -297,30 +314,25 @@ export const trialsRouter = router({
   })),
 
   get: studyProcedure("trial.read", "trial", z.object({ trialId: id })).query(async ({ ctx }) => {
-    // Three reads at once, each by the trial's id: its row, its condition, its robot's names.
-    const [[row], condition, names] = await Promise.all([
+    // Four reads at once, each by the trial's id: its row, its protocol, its condition, its robot's names.
+    const [[row], [read], condition, names] = await Promise.all([
+      trialRows(ctx.db, eq(trials.id, ctx.row.id)),
       ctx.db
         .select({
-          ...columns,
-          studyId: trials.studyId,
           protocol: sql`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})`.mapWith(
             trials.rehearsalSnapshot,
           ),
         })
         .from(trials)
-        .innerJoin(experiments, eq(experiments.id, trials.experimentId))
         .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
-        .leftJoin(participants, eq(participants.id, trials.participantId))
-        .leftJoin(user, eq(user.id, trials.wizardId))
-        .leftJoin(creator, eq(creator.id, trials.createdBy))
         .where(eq(trials.id, ctx.row.id)),
       conditionOfTrial(ctx.db, ctx.row.id),
       // The library's names of the robot's own actions (for actions without a label) and of its events.
       trialPluginNames(ctx.db, ctx.row.id),
     ]);
     // The protocol as this trial runs it: its condition's variants (a rehearsal's were frozen as it began).
-    const protocol = row!.protocol && inCondition(row!.protocol, row!.isRehearsal ? null : condition);
-    const trial = { ...row!, protocol, ...names, myRole: ctx.studyRole };
+    const protocol = read!.protocol && inCondition(read!.protocol, row!.isRehearsal ? null : condition);
+    const trial = { ...row!, studyId: ctx.studyId, protocol, ...names, myRole: ctx.studyRole };
     return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
   }),
 });
