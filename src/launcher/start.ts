@@ -6,7 +6,7 @@ import { mkdirSync, writeFileSync } from "node:fs";
 import { join, resolve } from "node:path";
 import { readConfig } from "../store/config";
 import { createDatabase } from "../store/client";
-import { freePort, startEmbeddedPostgres, type EmbeddedDatabase } from "../store/embedded";
+import { freePort, portIsFree, startEmbeddedPostgres, type EmbeddedDatabase } from "../store/embedded";
 import { migrateDatabase } from "../store/migrate";
 import { type RobotSeed, seedSimulators, simulatorPasswordVariable, simulatorSeed } from "../store/robot-seeds";
 import { seedDemo, type DemoAccount } from "../server/seed/demo";
@@ -218,13 +218,7 @@ async function listening(port: number): Promise<void> {
 }
 
 async function firstFreePort(preferred: number): Promise<number> {
-  const { createServer } = await import("node:net");
-  const free = await new Promise<boolean>((ok) => {
-    const s = createServer();
-    s.once("error", () => ok(false));
-    s.listen(preferred, "127.0.0.1", () => s.close(() => ok(true)));
-  });
-  return free ? preferred : freePort();
+  return (await portIsFree(preferred)) ? preferred : freePort();
 }
 
 function printDemoAccounts(accounts: DemoAccount[], dataDir: string) {

@@ -6,7 +6,7 @@ import { existsSync, mkdirSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 import { afterAll, describe, expect, it } from "vitest";
 import { scratchFolder } from "../../tests/support/scratch";
-import { stopOrphan } from "./embedded";
+import { freePort, portIsFree, stopOrphan } from "./embedded";
 
 describe("a postmaster.pid left by a crash", () => {
   const stranger = spawn("sleep", ["60"], { stdio: "ignore" });
@@ -25,5 +25,29 @@ describe("a postmaster.pid left by a crash", () => {
     // Still running, untouched: the signal that ends it is the one sent now.
     stranger.kill("SIGKILL");
     expect(await ended).toBe("SIGKILL");
+  });
+});
+
+describe("a port for a service of ours", () => {
+  it("is one nothing listens on, below the system's range for outgoing connections, and never one in use", async () => {
+    const { createServer } = await import("node:net");
+    const ports = new Set<number>();
+    for (let i = 0; i < 200; i++) {
+      const port = await freePort();
+      expect(port).toBeGreaterThanOrEqual(20_000);
+      expect(port).toBeLessThan(32_768);
+      ports.add(port);
+    }
+    // Chosen at random across the range, not one port again and again.
+    expect(ports.size).toBeGreaterThan(150);
+    const held = createServer();
+    const port = await freePort();
+    await new Promise<void>((ok) => held.listen(port, "127.0.0.1", ok));
+    try {
+      expect(await portIsFree(port)).toBe(false);
+    } finally {
+      await new Promise((ok) => held.close(ok));
+    }
+    expect(await portIsFree(port)).toBe(true);
   });
 });
