@@ -156,21 +156,18 @@ export async function startEmbeddedPostgres(options: EmbeddedOptions): Promise<E
   };
 }
 
-/**
- * Where a port of ours is chosen: below the range the system hands out for outgoing connections (32768–60999 on
- * Linux, 49152 and up on macOS and Windows). A port from that range, free when checked, can be taken by any
- * outgoing connection (to the database, a socket, a browser) before our server listens on it; the tests saw
- * exactly that ("EADDRINUSE" on a port just found free).
- */
-const OWN_PORTS = { from: 20_000, to: 32_767 } as const;
-
-/** A port nothing listens on now at 127.0.0.1, for a service of ours to take. */
+/** A port nothing listens on now at 127.0.0.1, as the system picks one, for a service of ours to take. */
 export async function freePort(): Promise<number> {
-  for (let tries = 0; tries < 100; tries++) {
-    const port = OWN_PORTS.from + Math.floor(Math.random() * (OWN_PORTS.to - OWN_PORTS.from + 1));
-    if (await portIsFree(port)) return port;
-  }
-  throw new Error(`No free port between ${OWN_PORTS.from} and ${OWN_PORTS.to} after 100 tries.`);
+  const { createServer } = await import("node:net");
+  return new Promise((resolvePort, reject) => {
+    const server = createServer();
+    server.once("error", reject);
+    server.listen(0, "127.0.0.1", () => {
+      const address = server.address();
+      const port = typeof address === "object" && address ? address.port : 0;
+      server.close(() => resolvePort(port));
+    });
+  });
 }
 
 /** Whether a server could listen on `port` at 127.0.0.1 now. */

@@ -41,15 +41,32 @@ export function newDataDir(): string {
   return scratchFolder("app-");
 }
 
-export async function startApp(
-  options: {
-    dataDir?: string;
-    env?: Record<string, string>;
-    /** Through `npm start`'s own way in (scripts/bootstrap.mjs) rather than the launcher itself. */
-    npmStart?: boolean;
-  } = {},
-): Promise<RunningApp> {
-  const dataDir = options.dataDir ?? newDataDir();
+type StartOptions = {
+  dataDir?: string;
+  env?: Record<string, string>;
+  /** Through `npm start`'s own way in (scripts/bootstrap.mjs) rather than the launcher itself. */
+  npmStart?: boolean;
+};
+
+/** How many times an app whose port was taken as it started is started again, on other ports. */
+const PORT_TAKEN_TRIES = 3;
+
+/**
+ * The app on ports the system found free. A port found free can still be taken before the app listens on it
+ * (the system hands the same range to every outgoing connection, and to the launcher's own services): the app
+ * then stops with EADDRINUSE, and is started again on other ports (in the data folder given, else a new one).
+ */
+export async function startApp(options: StartOptions = {}): Promise<RunningApp> {
+  for (let attempt = 1; ; attempt++) {
+    try {
+      return await startOnce(options, options.dataDir ?? newDataDir());
+    } catch (error) {
+      if (attempt === PORT_TAKEN_TRIES || !/EADDRINUSE/.test(String(error))) throw error;
+    }
+  }
+}
+
+async function startOnce(options: StartOptions, dataDir: string): Promise<RunningApp> {
   const port = await freePort();
   const runtimePort = await freePort();
   const simulatorPort = await freePort();
@@ -96,9 +113,13 @@ export async function startApp(
       fail(new Error(`The launcher exited with ${code}:\n${output}`));
     });
   });
-  await waitForHttp(`${url}/api/auth/ok`).catch((error: Error) => {
+  // A web app whose port was taken says so and stops: no use waiting the whole two minutes for it.
+  const portTaken = () => /EADDRINUSE/.test(output);
+  await waitForHttp(`${url}/api/auth/ok`, portTaken).catch(async (error: Error) => {
     // Why, in the app's own words (a web app that stopped says so in its output).
+    const gone = new Promise<void>((ok) => (child.exitCode === null ? child.once("close", () => ok()) : ok()));
     process.kill(-child.pid!, "SIGKILL");
+    await gone;
     throw new Error(`${error.message}. The app's output:\n${output.split("\n").slice(-40).join("\n")}`);
   });
   const exited = new Promise<void>((ok) => child.once("exit", () => ok()));
@@ -128,9 +149,9 @@ export async function startApp(
 }
 
 // Two minutes: a loaded machine can take a minute to start the web app; a stuck one never answers.
-async function waitForHttp(url: string) {
+async function waitForHttp(url: string, failed: () => boolean = () => false) {
   const deadline = Date.now() + 120_000;
-  while (Date.now() < deadline) {
+  while (Date.now() < deadline && !failed()) {
     try {
       const res = await fetch(url, { signal: AbortSignal.timeout(5000) });
       if (res.ok) return;
