@@ -216,8 +216,9 @@ export async function eventsSince(db: Database, trialId: string, afterSeq = 0, p
 
 /**
  * The events after `afterSeq`, in order, as the fold reads them (see
- * toTrialEvent). A trial of 100k events is half the bytes to read, send and
- * parse (what the analysis page loads).
+ * toTrialEvent): half the bytes of the stored events. Parsed from the text
+ * trialLogJson makes, in one go, for the API's callers; the analysis page
+ * takes the text itself.
  */
 export async function trialLog(db: Database, trialId: string, afterSeq = 0): Promise<TrialEvent[]> {
   let text = "";

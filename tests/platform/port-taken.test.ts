@@ -1,6 +1,7 @@
 // An app whose web port is taken as it starts stops with EADDRINUSE; the tests'
-// startApp says so at once (it does not wait its two minutes for an answer)
-// and, on ports it chose itself, starts the app again on others (see app.ts).
+// startApp says so at once (it does not wait its two minutes for an answer).
+// On ports it chose itself it starts the app again on others (see app.ts); a
+// port the test named is the test's, and its refusal comes back at once.
 import { createServer, type Socket } from "node:net";
 import { afterAll, expect, it } from "vitest";
 import { startApp } from "../support/app";

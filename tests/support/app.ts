@@ -54,14 +54,16 @@ const PORT_TAKEN_TRIES = 3;
 /**
  * The app on ports the system found free. A port found free can still be taken before the app listens on it
  * (the system hands the same range to every outgoing connection, and to the launcher's own services): the app
- * then stops with EADDRINUSE, and is started again on other ports (in the data folder given, else a new one).
+ * then stops with EADDRINUSE, and is started again on other ports (in the data folder given, else a new one),
+ * unless the test named the web port itself.
  */
 export async function startApp(options: StartOptions = {}): Promise<RunningApp> {
   for (let attempt = 1; ; attempt++) {
     try {
       return await startOnce(options, options.dataDir ?? newDataDir());
     } catch (error) {
-      if (attempt === PORT_TAKEN_TRIES || !/EADDRINUSE/.test(String(error))) throw error;
+      // A web port the test gave is its own choice: taken, it is the test's answer, not a race to try again.
+      if (attempt === PORT_TAKEN_TRIES || options.env?.PORT || !/EADDRINUSE/.test(String(error))) throw error;
     }
   }
 }
