@@ -31,7 +31,8 @@ export async function robotStatusRelay(
     }
   });
   // Closed as the process stops: a link's close heard after it (its socket closing late) is told to nobody,
-  // the database going too.
+  // the database going too. What was said before it still goes out: the links the stop closes say so to the
+  // pages of the other processes, before the pool ends under them.
   let closed = false;
   // One after another: notices sent at once would go out on several of the pool's connections and commit in
   // any order, and a page elsewhere could be left on "dropped" after the robot came back.
@@ -43,9 +44,10 @@ export async function robotStatusRelay(
         logUnexpected(error, "announcing a robot status"),
       );
     },
-    close: () => {
+    close: async () => {
       closed = true;
-      return listener.unlisten();
+      await inTurn(async () => {});
+      await listener.unlisten();
     },
   };
 }
