@@ -19,7 +19,7 @@ import { stopLinks } from "./stop-links";
 import { simulatorReplays } from "./replay";
 import { startRuntimeServer } from "./server";
 import { trialHosts, type RobotChoice } from "./trial-hosts";
-import { withHealth } from "./robot-health";
+import { robotHealth } from "./robot-health";
 
 const config = readConfig();
 if (!config.DATABASE_URL || !config.BETTER_AUTH_SECRET) {
@@ -42,6 +42,7 @@ const linkFor = (plugin: Plugin, robot: RobotRecord) => {
 };
 // The plugin document is the trial's own (pinned by its version), and the robot the registered one
 // it was given, both chosen in trialHosts; the robot's health goes to its record as it changes.
+const health = robotHealth(db);
 const robotFor = (plugin: Plugin | null, robotId: string, robot: RobotChoice) => {
   if (!plugin) return unavailableRobot(`no robot plugin "${robotId}" is installed`);
   if (!robot.ok) return unavailableRobot(robot.reason);
@@ -52,7 +53,7 @@ const robotFor = (plugin: Plugin | null, robotId: string, robot: RobotChoice) =>
     ? (listener: (topic: string, message: unknown) => void) =>
         transport.subscribe(ROBOT_STATE_TOPIC, "std_msgs/msg/String", (m) => listener(ROBOT_STATE_TOPIC, m))
     : undefined;
-  return withHealth(db, robot.robot.id, link, report);
+  return health.withHealth(robot.robot.id, link, report);
 };
 let announceRobot: (trialId: string, connected: boolean, detail?: string) => void = () => {};
 let announceRobotState: (trialId: string, state: LiveRobotState) => void = () => {};
@@ -122,7 +123,7 @@ const stop = async () => {
   await hosts.closeAll();
   // Ending the pool ends the listening connection too; unlistening first is a courtesy that a database
   // already gone (stopped, or crashed) answers with an error worth nothing at this point.
-  await Promise.allSettled([relay.close(), forwarding.close(), access.close(), robotStatus.close()]);
+  await Promise.allSettled([relay.close(), forwarding.close(), access.close(), robotStatus.close(), health.settled()]);
   await close();
   process.exit(0);
 };
