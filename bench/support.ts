@@ -57,16 +57,25 @@ export function percentile(sorted: number[], p: number): number {
   return sorted[Math.min(sorted.length - 1, Math.floor((p / 100) * sorted.length))]!;
 }
 
-/** One line per measurement: count, median, p99, max (milliseconds), the target, and the floor when the bench has a database. */
+/** Fewer figures than this have no p99 worth the name: their line gives the median and the slowest only. */
+const P99_FROM = 100;
+
+/**
+ * One line per measurement: count, median, p99 (from 100 figures), max (milliseconds), the target, and the
+ * floor when the bench has a database.
+ */
 export function report(name: string, samples: number[], targetP99Ms?: number) {
   const sorted = [...samples].sort((a, b) => a - b);
   const p99 = percentile(sorted, 99);
+  const quoted = sorted.length >= P99_FROM;
   const verdict =
     targetP99Ms === undefined
       ? ""
-      : `  target p99 < ${targetP99Ms} ms: ${p99 < targetP99Ms ? "met" : "NOT met"} (ratio ${(p99 / targetP99Ms).toFixed(2)})`;
+      : quoted
+        ? `  target p99 < ${targetP99Ms} ms: ${p99 < targetP99Ms ? "met" : "NOT met"} (ratio ${(p99 / targetP99Ms).toFixed(2)})`
+        : `  target p99 < ${targetP99Ms} ms: not measured (n < ${P99_FROM})`;
   console.log(
-    `${name.padEnd(58)} n=${String(sorted.length).padStart(6)}  p50=${percentile(sorted, 50).toFixed(3)} ms  p99=${p99.toFixed(3)} ms  max=${sorted.at(-1)!.toFixed(3)} ms${verdict}${floor ? `  floor p50=${percentile(floor, 50).toFixed(3)} p99=${percentile(floor, 99).toFixed(3)} ms` : ""}`,
+    `${name.padEnd(58)} n=${String(sorted.length).padStart(6)}  p50=${percentile(sorted, 50).toFixed(3)} ms  ${quoted ? `p99=${p99.toFixed(3)} ms  ` : ""}max=${sorted.at(-1)!.toFixed(3)} ms${verdict}${floor ? `  floor p50=${percentile(floor, 50).toFixed(3)} p99=${percentile(floor, 99).toFixed(3)} ms` : ""}`,
   );
 }
 
