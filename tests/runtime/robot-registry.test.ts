@@ -3,7 +3,8 @@
 // two trials drive two robots at once, each wizard told its robot's name
 // before starting; a second live trial on a robot is refused in plain words
 // naming the trial that holds it, by the runtime and by the database; the
-// robot's health reaches its record and its live state the wizard's page.
+// robot's health reaches its record and its live state the wizard's page,
+// and a runtime that stops leaves each record saying disconnected.
 import type { ChildProcess } from "node:child_process";
 import { eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
@@ -173,5 +174,18 @@ describe("robots as records, in the runtime", () => {
     expect(state.battery).toBeGreaterThan(90);
     // While the robot spoke the trial's line, the wizard was told so, with its text.
     await one.next((m) => m.type === "robotState" && m.speaking === "Hello from trial one");
+  });
+
+  it("stopping, says on each robot's record that it is no longer connected, and logs no error doing so", {
+    timeout: 60_000,
+  }, async () => {
+    let logged = "";
+    runtime.child.stderr!.on("data", (d) => (logged += String(d)));
+    const exited = new Promise((ok) => runtime.child.once("exit", ok));
+    runtime.child.kill("SIGTERM");
+    await exited;
+    const records = await db.select({ name: robots.name, connected: robots.connected }).from(robots);
+    expect(records.filter((r) => r.name !== "Elsewhere").map((r) => r.connected)).toEqual([false, false]);
+    expect(logged).not.toContain("[hristudio] error");
   });
 });
