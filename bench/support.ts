@@ -53,6 +53,7 @@ function floorText(sorted: number[]) {
   return `n=${String(sorted.length).padStart(6)}  p50=${percentile(sorted, 50).toFixed(3)} ms  p99=${percentile(sorted, 99).toFixed(3)} ms`;
 }
 
+/** The figure at rank floor(p% × n) counted from 0, erring high: with 100 figures the p99 is the slowest. */
 export function percentile(sorted: number[], p: number): number {
   return sorted[Math.min(sorted.length - 1, Math.floor((p / 100) * sorted.length))]!;
 }
