@@ -1,7 +1,7 @@
 import { assertWizardOf } from "../../studies/wizard-gate";
 import { TRPCError } from "@trpc/server";
 import { and, asc, desc, eq, type SQL, sql } from "drizzle-orm";
-import { alias } from "drizzle-orm/pg-core";
+import { alias, type SelectedFields } from "drizzle-orm/pg-core";
 import { z } from "zod";
 import { studyRoleMay } from "@/core/access/policy";
 import { blindTrial } from "@/core/studies/blinding";
@@ -70,11 +70,11 @@ const questionnaireScores = sql<Array<{ name: string; instrument: Instrument | n
 
 /**
  * A study's trials as its table and a trial's page show them: each with its experiment, version, participant,
- * wizard and creator by name.
+ * wizard and creator by name, and what else the caller selects over the same joins (a trial's protocol).
  */
-function trialRows(db: Database, where: SQL) {
+function trialRows<More extends SelectedFields>(db: Database, where: SQL, more: More = {} as More) {
   return db
-    .select(columns)
+    .select({ ...columns, ...more })
     .from(trials)
     .innerJoin(experiments, eq(experiments.id, trials.experimentId))
     .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
@@ -144,25 +144,19 @@ export const trialsRouter = router({
   list: studyProcedure("trial.read", "study", z.object({ studyId: id })).query(async ({ ctx }) => {
     // Scores are results: only for those who may read the data, and not under a results blind.
     const showScores = studyRoleMay(ctx.studyRole, "data.read") && !ctx.blinding.resultsHidden;
-    const [rows, scored] = await Promise.all([
-      trialRows(ctx.db, eq(trials.studyId, ctx.studyId)).orderBy(desc(trials.createdAt)),
-      showScores
-        ? ctx.db
-            .select({ id: trials.id, scores: questionnaireScores })
-            .from(trials)
-            .where(eq(trials.studyId, ctx.studyId))
-        : [],
-    ]);
-    const scoresOf = new Map(scored.map((s) => [s.id, s.scores ?? []]));
+    // Read with the rows, and only for those who may see them (the others' are never read).
+    const rows = await trialRows(ctx.db, eq(trials.studyId, ctx.studyId), {
+      scores: showScores ? questionnaireScores : sql<null>`null`,
+    }).orderBy(desc(trials.createdAt));
     // The scores the instrument publishes, by their published names: no overall Godspeed score.
-    const published = (scores: NonNullable<(typeof scored)[number]["scores"]>) =>
+    const published = (scores: NonNullable<(typeof rows)[number]["scores"]>) =>
       scores.flatMap((q) =>
         publishedScores(q.instrument, q.score as Parameters<typeof publishedScores>[1]).map((s) => ({
           name: s.subscale ? `${q.name} · ${s.subscale}` : q.name,
           score: s.value,
         })),
       );
-    const shown = rows.map((r) => ({ ...r, scores: published(scoresOf.get(r.id) ?? []) }));
+    const shown = rows.map((r) => ({ ...r, scores: published(r.scores ?? []) }));
     return ctx.blinding.conditionsHidden ? shown.map(blindTrial) : shown;
   }),
 
@@ -314,24 +308,19 @@ export const trialsRouter = router({
   })),
 
   get: studyProcedure("trial.read", "trial", z.object({ trialId: id })).query(async ({ ctx }) => {
-    // Four reads at once, each by the trial's id: its row, its protocol, its condition, its robot's names.
-    const [[row], [read], condition, names] = await Promise.all([
-      trialRows(ctx.db, eq(trials.id, ctx.row.id)),
-      ctx.db
-        .select({
-          protocol: sql`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})`.mapWith(
-            trials.rehearsalSnapshot,
-          ),
-        })
-        .from(trials)
-        .leftJoin(experimentVersions, eq(experimentVersions.id, trials.versionId))
-        .where(eq(trials.id, ctx.row.id)),
+    // Three reads at once, each by the trial's id: its row with its protocol, its condition, its robot's names.
+    const [[row], condition, names] = await Promise.all([
+      trialRows(ctx.db, eq(trials.id, ctx.row.id), {
+        protocol: sql`coalesce(${experimentVersions.snapshot}, ${trials.rehearsalSnapshot})`.mapWith(
+          trials.rehearsalSnapshot,
+        ),
+      }),
       conditionOfTrial(ctx.db, ctx.row.id),
       // The library's names of the robot's own actions (for actions without a label) and of its events.
       trialPluginNames(ctx.db, ctx.row.id),
     ]);
     // The protocol as this trial runs it: its condition's variants (a rehearsal's were frozen as it began).
-    const protocol = read!.protocol && inCondition(read!.protocol, row!.isRehearsal ? null : condition);
+    const protocol = row!.protocol && inCondition(row!.protocol, row!.isRehearsal ? null : condition);
     const trial = { ...row!, studyId: ctx.studyId, protocol, ...names, myRole: ctx.studyRole };
     return ctx.blinding.conditionsHidden ? blindTrial(trial) : trial;
   }),
