@@ -73,8 +73,10 @@ export async function startLiveBench({
   }
 
   const runtimePort = await freePort();
-  // BENCH_PROFILE=<folder>: the runtime writes a CPU profile there as it stops (Bun's, in Markdown), to find a tail's cause.
-  const profile = process.env.BENCH_PROFILE ? ["--cpu-prof-md", `--cpu-prof-dir=${process.env.BENCH_PROFILE}`] : [];
+  // BENCH_PROFILE=<folder>: the runtime writes a CPU profile there as it stops, to find a tail's cause: the
+  // .cpuprofile (Chrome DevTools, speedscope), whose samples are counted where they fell; Bun's Markdown
+  // summary charges the idle time to the function that ran last.
+  const profile = process.env.BENCH_PROFILE ? ["--cpu-prof", `--cpu-prof-dir=${process.env.BENCH_PROFILE}`] : [];
   const main = join(import.meta.dirname, "..", "src", "runtime", "main.ts");
   const runtime = spawn(process.execPath, [...profile, "run", main], {
     env: {
