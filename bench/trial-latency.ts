@@ -5,6 +5,7 @@
 // Everything real: PostgreSQL, the runtime process as the launcher runs it,
 // the NAO6 plugin, roslib and the simulator (see support-live.ts).
 // Takes about 40 s.
+import { cpuShare } from "./cpu-share";
 import { percentile, report } from "./support";
 import { startLiveBench } from "./support-live";
 
@@ -23,36 +24,48 @@ const single = { robot: [] as number[], observers: [] as number[] };
 await runTrial(30, [], []); // warm-up
 // Each phase begins with every robot quiet (see `quiet`).
 await quiet();
+let cpu = cpuShare();
 await runTrial(1000, single.robot, single.observers);
+const singleCpu = cpu();
 report("1 trial: wizard message → robot received", single.robot, 5);
 report("1 trial: wizard message → 10 observers updated", single.observers, 5);
+console.log(singleCpu);
 
 // One trial followed by many: each observer's own latency, not only the last's.
 const CROWD = 50;
 const crowd = { robot: [] as number[], observers: [] as number[] };
 const each = Array.from({ length: CROWD }, () => [] as number[]);
 await quiet();
+cpu = cpuShare();
 await runTrial(1000, crowd.robot, crowd.observers, { observing: CROWD, toEach: each });
+const crowdCpu = cpu();
 const worst = each.reduce((w, samples) => (p99Of(samples) > p99Of(w) ? samples : w));
 report(`1 trial × ${CROWD} observers: → the slowest observer (by p99)`, worst, 5);
 report(`1 trial × ${CROWD} observers: → all ${CROWD} observers updated`, crowd.observers);
+console.log(crowdCpu);
 
 const many = { robot: [] as number[], observers: [] as number[], started: [] as number[] };
 await live.robotsUpTo(51);
 await quiet();
 const fifty = live.group(50, PACE_MS, many.started);
+cpu = cpuShare();
 await Promise.all(
   Array.from({ length: 50 }, () => runTrial(40, many.robot, many.observers, { paceMs: PACE_MS, together: fifty })),
 );
+const manyCpu = cpu();
 report("50 trials × 10 observers, started at once: start → acknowledged", many.started);
 report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → robot received`, many.robot, 25);
 report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → all observers updated`, many.observers, 25);
+console.log(manyCpu);
 
 const flood = { robot: [] as number[], observers: [] as number[] };
 await quiet();
+cpu = cpuShare();
 await Promise.all(Array.from({ length: 50 }, () => runTrial(20, flood.robot, flood.observers)));
+const floodCpu = cpu();
 report("50 trials × 10 observers, back to back (saturation): → robot", flood.robot);
 report("50 trials × 10 observers, back to back (saturation): → observers", flood.observers);
+console.log(floodCpu);
 
 // Many wizards at once, each sending its next line as soon as the robot has the last: what one runtime
 // and one database carry. Each action is three events (requested, dispatched, completed): the request is
@@ -60,16 +73,20 @@ report("50 trials × 10 observers, back to back (saturation): → observers", fl
 const WIZARDS = 20;
 const wizards = { robot: [] as number[] };
 await quiet();
+cpu = cpuShare();
 const began = performance.now();
 const wizardTrials = await Promise.all(
   Array.from({ length: WIZARDS }, () => runTrial(150, wizards.robot, [], { observing: 0 })),
 );
 const seconds = (performance.now() - began) / 1000;
+const wizardsCpu = cpu();
 report(`${WIZARDS} wizards back to back: wizard message → robot`, wizards.robot, 25);
 const perSecond = wizards.robot.length / seconds;
 console.log(
   `${`${WIZARDS} wizards back to back: throughput`.padEnd(58)} n=${String(wizards.robot.length).padStart(6)}  ${perSecond.toFixed(0)} actions/s  target ≥ 1500: ${perSecond >= 1500 ? "met" : "NOT met"} (ratio ${(perSecond / 1500).toFixed(2)})`,
 );
+
+console.log(wizardsCpu);
 
 const commits = await live.commits(wizardTrials);
 console.log(
