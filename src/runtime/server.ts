@@ -190,6 +190,14 @@ export function startRuntimeServer({
   /** Admitted sockets by trial: presence, annotations and access changes reach them. */
   const viewers = new Map<string, Set<Socket>>();
   const send = (ws: Socket, message: ServerMessage): void => ws.data.outbox!.send(JSON.stringify(message));
+  /** A trial's sockets whose people may read its log now. */
+  const readersOf = (trialId: string) =>
+    [...(viewers.get(trialId) ?? [])].filter((s) => mayReadTrialLog(s.data.access!));
+  /** One message to many sockets: serialised once, not once per socket (a robot's state goes to a whole trial, many times a second). */
+  const sendAll = (sockets: Iterable<Socket>, message: ServerMessage): void => {
+    const text = JSON.stringify(message);
+    for (const s of sockets) s.data.outbox!.send(text);
+  };
   const presence = (trialId: string) => {
     const sockets = [...(viewers.get(trialId) ?? [])];
     const list: Viewer[] = sockets.map((s) => ({
@@ -198,7 +206,7 @@ export function startRuntimeServer({
       role: s.data.access!.studyRole ?? "",
       peerId: s.data.peerId,
     }));
-    for (const s of sockets) send(s, { type: "presence", viewers: list });
+    sendAll(sockets, { type: "presence", viewers: list });
     return list;
   };
 
@@ -370,13 +378,12 @@ export function startRuntimeServer({
 
   /** Tells everyone in a trial at once when its robot drops or comes back. */
   const announceRobot = (trialId: string, connected: boolean, detail?: string) => {
-    for (const s of viewers.get(trialId) ?? []) send(s, { type: "robot", connected, ...(detail ? { detail } : {}) });
+    sendAll(viewers.get(trialId) ?? [], { type: "robot", connected, ...(detail ? { detail } : {}) });
   };
 
   /** Tells those in a trial who may read its log what its robot is doing now (what it says is the log's business). */
   const announceRobotState = (trialId: string, state: LiveRobotState) => {
-    for (const s of viewers.get(trialId) ?? [])
-      if (mayReadTrialLog(s.data.access!)) send(s, { type: "robotState", ...state });
+    sendAll(readersOf(trialId), { type: "robotState", ...state });
   };
 
   async function act(ws: Socket, message: Extract<ClientMessage, { type: "command" | "annotate" }>): Promise<void> {
@@ -398,8 +405,7 @@ export function startRuntimeServer({
         message.label,
         message.note,
       );
-      for (const s of viewers.get(claims.trialId) ?? [])
-        if (mayReadTrialLog(s.data.access!)) send(s, { type: "annotation", annotation });
+      sendAll(readersOf(claims.trialId), { type: "annotation", annotation });
       return send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
     }
     // When the wizard asked, on this process's clock, from the page's time and the connection's offset.
