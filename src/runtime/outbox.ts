@@ -35,13 +35,9 @@ export class Outbox {
     else this.queue(text, true);
   }
 
-  /**
-   * After whatever this turn started (an observer's copy of the wizard's batch, after the wizard's ack): two
-   * turns on, since the database client sends a short query on the next turn, and a trial's next append
-   * would otherwise wait behind every observer's copy of the last batch.
-   */
+  /** On a later turn, after whatever is sent now (an observer's copy of the wizard's batch, after the wizard's ack). */
   later(text: string) {
-    this.queue(text, true, 2);
+    this.queue(text, true);
   }
 
   /** A welcome in parts: one turn at a time, before anything sent after it. */
@@ -64,24 +60,23 @@ export class Outbox {
     if (this.write(text) === -1) this.full = true;
   }
 
-  private queue(text: string, counted: boolean, turns: 1 | 2 = 1) {
+  private queue(text: string, counted: boolean) {
     this.waiting.push({ text, counted });
     if (counted) this.bytes += text.length;
     if (this.bytes > WAITING_LIMIT_BYTES) {
       this.close();
       return this.behind();
     }
-    this.schedule(turns);
+    this.schedule();
   }
 
-  private schedule(turns: 1 | 2 = 1) {
+  private schedule() {
     if (this.scheduled || this.full || this.waiting.length === 0) return;
     this.scheduled = true;
-    const go = () => {
+    setImmediate(() => {
       this.scheduled = false;
       this.turn();
-    };
-    setImmediate(turns === 2 ? () => setImmediate(go) : go);
+    });
   }
 
   private turn() {
