@@ -10,21 +10,20 @@ import { availableParallelism } from "node:os";
 type Part = "runtime" | "database" | "bench" | "other";
 
 /** Clock ticks of CPU (user and system) each part has used so far. */
-function ticks(): Record<Part, number> {
+function ticks(runtimePid: number): Record<Part, number> {
   const used: Record<Part, number> = { runtime: 0, database: 0, bench: 0, other: 0 };
   for (const pid of readdirSync("/proc").filter((name) => /^\d+$/.test(name))) {
     try {
       const stat = readFileSync(`/proc/${pid}/stat`, "utf8");
       // The command name may hold spaces and parentheses: the fields are counted after its closing one.
       const fields = stat.slice(stat.lastIndexOf(")") + 2).split(" ");
-      const command = readFileSync(`/proc/${pid}/cmdline`, "utf8");
       const part: Part =
         Number(pid) === process.pid
           ? "bench"
-          : command.includes("postgres")
-            ? "database"
-            : command.includes("runtime/main")
-              ? "runtime"
+          : Number(pid) === runtimePid
+            ? "runtime"
+            : readFileSync(`/proc/${pid}/cmdline`, "utf8").includes("postgres")
+              ? "database"
               : "other";
       used[part] += Number(fields[11]) + Number(fields[12]);
     } catch {
@@ -34,16 +33,15 @@ function ticks(): Record<Part, number> {
   return used;
 }
 
-/** Starts counting; the function returned says each part's share of one core since, as a line. */
-export function cpuShare(): () => string {
-  if (!existsSync("/proc/self/stat")) return () => "";
-  const began = { at: performance.now(), used: ticks() };
-  return () => {
-    const seconds = (performance.now() - began.at) / 1000;
-    const used = ticks();
-    // Linux counts CPU time in ticks of 1/100 s (USER_HZ).
-    const share = (part: Part) => `${part} ${Math.round((used[part] - began.used[part]) / seconds)}%`;
-    const parts = (["runtime", "database", "bench", "other"] as const).map(share).join(", ");
-    return `${"  cpu while measured (% of one core)".padEnd(58)} ${parts}; ${availableParallelism()} cores`;
-  };
+/** Runs `work`: what it gives, and each part's share of one core meanwhile as a line ("" where there is no /proc). */
+export async function cpuWhile<T>(runtimePid: number, work: () => Promise<T>): Promise<[T, string]> {
+  if (!existsSync("/proc/self/stat")) return [await work(), ""];
+  const began = { at: performance.now(), used: ticks(runtimePid) };
+  const result = await work();
+  const seconds = (performance.now() - began.at) / 1000;
+  const used = ticks(runtimePid);
+  // Linux counts CPU time in ticks of 1/100 s (USER_HZ).
+  const share = (part: Part) => `${part} ${Math.round((used[part] - began.used[part]) / seconds)}%`;
+  const parts = (["runtime", "database", "bench", "other"] as const).map(share).join(", ");
+  return [result, `${"  cpu while measured (% of one core)".padEnd(58)} ${parts}; ${availableParallelism()} cores`];
 }

@@ -382,6 +382,8 @@ export async function startLiveBench({
     runTrial,
     group,
     quiet,
+    /** The runtime's process id (its CPU is counted by it: cpu-share.ts). */
+    runtimePid: runtime.pid!,
     /** The runtime's resident memory now, in MiB. */
     runtimeMemoryMiB: () =>
       Number(/VmRSS:\s+(\d+)/.exec(readFileSync(`/proc/${runtime.pid}/status`, "utf8"))![1]) / 1024,

@@ -5,7 +5,7 @@
 // Everything real: PostgreSQL, the runtime process as the launcher runs it,
 // the NAO6 plugin, roslib and the simulator (see support-live.ts).
 // Takes about 40 s.
-import { cpuShare } from "./cpu-share";
+import { cpuWhile } from "./cpu-share";
 import { percentile, report } from "./support";
 import { startLiveBench } from "./support-live";
 
@@ -24,9 +24,8 @@ const single = { robot: [] as number[], observers: [] as number[] };
 await runTrial(30, [], []); // warm-up
 // Each phase begins with every robot quiet (see `quiet`).
 await quiet();
-let cpu = cpuShare();
-await runTrial(1000, single.robot, single.observers);
-const singleCpu = cpu();
+const cpu = <T>(work: () => Promise<T>) => cpuWhile(live.runtimePid, work);
+const [, singleCpu] = await cpu(() => runTrial(1000, single.robot, single.observers));
 report("1 trial: wizard message → robot received", single.robot, 5);
 report("1 trial: wizard message → 10 observers updated", single.observers, 5);
 console.log(singleCpu);
@@ -36,9 +35,7 @@ const CROWD = 50;
 const crowd = { robot: [] as number[], observers: [] as number[] };
 const each = Array.from({ length: CROWD }, () => [] as number[]);
 await quiet();
-cpu = cpuShare();
-await runTrial(1000, crowd.robot, crowd.observers, { observing: CROWD, toEach: each });
-const crowdCpu = cpu();
+const [, crowdCpu] = await cpu(() => runTrial(1000, crowd.robot, crowd.observers, { observing: CROWD, toEach: each }));
 const worst = each.reduce((w, samples) => (p99Of(samples) > p99Of(w) ? samples : w));
 report(`1 trial × ${CROWD} observers: → the slowest observer (by p99)`, worst, 5);
 report(`1 trial × ${CROWD} observers: → all ${CROWD} observers updated`, crowd.observers);
@@ -48,11 +45,11 @@ const many = { robot: [] as number[], observers: [] as number[], started: [] as 
 await live.robotsUpTo(51);
 await quiet();
 const fifty = live.group(50, PACE_MS, many.started);
-cpu = cpuShare();
-await Promise.all(
-  Array.from({ length: 50 }, () => runTrial(40, many.robot, many.observers, { paceMs: PACE_MS, together: fifty })),
+const [, manyCpu] = await cpu(() =>
+  Promise.all(
+    Array.from({ length: 50 }, () => runTrial(40, many.robot, many.observers, { paceMs: PACE_MS, together: fifty })),
+  ),
 );
-const manyCpu = cpu();
 report("50 trials × 10 observers, started at once: start → acknowledged", many.started);
 report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → robot received`, many.robot, 25);
 report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → all observers updated`, many.observers, 25);
@@ -60,9 +57,9 @@ console.log(manyCpu);
 
 const flood = { robot: [] as number[], observers: [] as number[] };
 await quiet();
-cpu = cpuShare();
-await Promise.all(Array.from({ length: 50 }, () => runTrial(20, flood.robot, flood.observers)));
-const floodCpu = cpu();
+const [, floodCpu] = await cpu(() =>
+  Promise.all(Array.from({ length: 50 }, () => runTrial(20, flood.robot, flood.observers))),
+);
 report("50 trials × 10 observers, back to back (saturation): → robot", flood.robot);
 report("50 trials × 10 observers, back to back (saturation): → observers", flood.observers);
 console.log(floodCpu);
@@ -73,13 +70,14 @@ console.log(floodCpu);
 const WIZARDS = 20;
 const wizards = { robot: [] as number[] };
 await quiet();
-cpu = cpuShare();
-const began = performance.now();
-const wizardTrials = await Promise.all(
-  Array.from({ length: WIZARDS }, () => runTrial(150, wizards.robot, [], { observing: 0 })),
-);
-const seconds = (performance.now() - began) / 1000;
-const wizardsCpu = cpu();
+// Timed inside, so that reading the CPU counters is not in the throughput.
+const [[wizardTrials, seconds], wizardsCpu] = await cpu(async () => {
+  const began = performance.now();
+  const ids = await Promise.all(
+    Array.from({ length: WIZARDS }, () => runTrial(150, wizards.robot, [], { observing: 0 })),
+  );
+  return [ids, (performance.now() - began) / 1000] as const;
+});
 report(`${WIZARDS} wizards back to back: wizard message → robot`, wizards.robot, 25);
 const perSecond = wizards.robot.length / seconds;
 console.log(
