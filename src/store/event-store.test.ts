@@ -1,7 +1,7 @@
 import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
 import { bareTrial, freshDatabase } from "../../tests/support/db";
-import { trials } from "./schema";
+import { trials, user } from "./schema";
 import {
   appendEvents,
   appendMany,
@@ -75,6 +75,32 @@ describe("the trial event store", async () => {
       t0: new Date("2026-01-01T10:00:01Z"),
       endedAt: new Date("2026-01-01T10:00:03.500Z"),
     });
+  });
+
+  it("reads back each event as its append gave it: body, seq, time since t0, trial, server time and actor", async () => {
+    const trialId = await newTrial();
+    const [wizard] = await db
+      .insert(user)
+      .values({ id: `u-${trialId}`, name: "Wizard", email: `${trialId}@example.org` })
+      .returning();
+    const now = () => new Date("2026-03-04T05:06:07.089Z");
+    const appended = [
+      ...(await appendEvents(db, await cursor(trialId), [{ type: "note.added", text: "ready" }], null, { now })),
+      ...(await appendEvents(
+        db,
+        await cursor(trialId),
+        [{ type: "trial.started" }, { type: "step.entered", stepId: "s1", via: "start" }],
+        wizard!.id,
+        { now },
+      )),
+    ];
+    const read = await eventsSince(db, trialId);
+    expect(read).toEqual(appended);
+    expect(read.map((e) => [e.serverTime.toISOString(), e.actorId, e.trialId])).toEqual([
+      ["2026-03-04T05:06:07.089Z", null, trialId],
+      ["2026-03-04T05:06:07.089Z", wizard!.id, trialId],
+      ["2026-03-04T05:06:07.089Z", wizard!.id, trialId],
+    ]);
   });
 
   it("reads the log as the fold reads it: each event's body, seq and time since t0, nothing each event repeats", async () => {
