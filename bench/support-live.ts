@@ -134,6 +134,10 @@ export async function startLiveBench({
     .values({ experimentId: experiment!.id, version: 1, snapshot, hash: "bench", robotId: "nao6-ros2" })
     .returning();
 
+  /** The messages a bench browser reads, and where a message's type starts in its text. */
+  const READ = new Set(["welcome", "events", "ack", "rejected"]);
+  const TYPE_AT = '{"type":"'.length;
+
   /**
    * A browser's socket on the trial. `onEvents` gets each batch of events with when it arrived; with `wants`, only
    * the batches whose text holds it are parsed: the many browsers live in this one process, where a browser's own
@@ -157,7 +161,10 @@ export async function startLiveBench({
       ws.onmessage = (m) => {
         const at = performance.now();
         const text = String(m.data);
-        if (wants && text.startsWith('{"type":"events"') && !text.includes(wants)) return;
+        // Every message begins {"type":"…": what the bench does not read (the robot's camera frames, 15 a
+        // second to every browser, its state, presence) is never parsed.
+        const type = text.slice(TYPE_AT, text.indexOf('"', TYPE_AT));
+        if (!READ.has(type) || (wants && type === "events" && !text.includes(wants))) return;
         const message = JSON.parse(text);
         if (message.type === "welcome") ok();
         if (message.type === "events") onEvents(message.events, at);
