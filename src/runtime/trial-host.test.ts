@@ -105,6 +105,23 @@ describe("a live trial host", async () => {
     await second.close();
   });
 
+  it("gives the log it opened with, and what it appended since, to one hello only: after the seq asked for", async () => {
+    const trialId = await newTrialId();
+    const first = await TrialHost.open(db, trialId, protocol, timekeeperRobot());
+    await first.command({ kind: "start" }, null);
+    await first.close();
+    const opened = () => TrialHost.open(db, trialId, protocol, timekeeperRobot());
+    const whole = await opened();
+    await whole.command({ kind: "skip", actionId: "hold" }, null);
+    const all = await eventsSince(db, trialId);
+    expect(whole.takeOpeningLog(0)).toEqual(all);
+    expect(whole.takeOpeningLog(0)).toBeNull();
+    await whole.close();
+    const after = await opened();
+    expect(after.takeOpeningLog(2)).toEqual(all.filter((e) => e.seq > 2));
+    await after.close();
+  });
+
   /** The log's append (src/store/event-store.ts appendMany), not the host's other reads through the same client. */
   const isAppend = (first: unknown) =>
     Array.isArray(first) && "raw" in first && first.join("").includes("insert into trial_events");
