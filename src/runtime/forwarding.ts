@@ -5,6 +5,7 @@
 // process that asked. No other broker.
 import type postgres from "postgres";
 import { oneAfterAnotherBy } from "@/core/one-after-another";
+import { answered as within } from "@/store/client";
 import type { CommandResult } from "./trial-host";
 
 const REQUESTS = "hri_trial_commands";
@@ -77,16 +78,27 @@ export async function commandForwarding(
     /** The owner's answer, or null when no process answered in time (its owner may have gone). */
     async forward(command: Forwarded): Promise<ForwardAnswer | null> {
       const id = crypto.randomUUID();
+      let over = false;
       const answered = new Promise<ForwardAnswer | null>((resolve) => {
-        const timer = setTimeout(() => resolve(null), ANSWER_MS);
+        const timer = setTimeout(() => {
+          over = true;
+          resolve(null);
+        }, ANSWER_MS);
         waiting.set(id, (answer) => {
           clearTimeout(timer);
           resolve(answer);
         });
       });
       try {
-        await inTurn(command.trialId, () => notify(REQUESTS, { ...command, id, from: self } satisfies Request));
-        return await answered;
+        // Sent in turn, and waited for no longer than the answer: a request the database does not take in time
+        // (a connection caught by a restart) is an owner that did not answer, the requests behind it in the
+        // trial's lane go on, and one whose wizard was already told so is never sent. Found by
+        // tests/runtime/fencing.test.ts, where a wizard's line after a restart waited for good.
+        const sent = inTurn(command.trialId, async () => {
+          if (over) return;
+          await within(notify(REQUESTS, { ...command, id, from: self } satisfies Request), "Not sent in time.");
+        });
+        return await Promise.race([sent.then(() => answered), answered]);
       } finally {
         waiting.delete(id);
       }
