@@ -74,4 +74,29 @@ describe("the event relay", async () => {
     await until(() => seqs(heard).length === 4);
     expect(seqs(heard)).toEqual([1, 2, 3, 4]);
   });
+
+  it("reads again at the next notice after a read of the log failed, and the failure ends nothing", async () => {
+    // The log's reads fail while `failing` (as PostgreSQL shutting down answers); the rest is the database as it is.
+    let failing = false;
+    const real = db.$client;
+    const flaky = Object.assign(Object.create(db) as typeof db, {
+      $client: ((...args: Parameters<typeof real>) =>
+        failing
+          ? Promise.reject(Object.assign(new Error("shutting down"), { code: "57P03" }))
+          : real(...args)) as typeof real,
+    });
+    const own = await eventRelay(flaky, sql);
+    const trialId = await bareTrial(db);
+    const heard: StoredEvent[][] = [];
+    own.follow(trialId, 0, (events) => heard.push(events));
+    failing = true;
+    await write(trialId, 0, 2);
+    await new Promise((r) => setTimeout(r, 200));
+    failing = false;
+    expect(seqs(heard)).toEqual([]);
+    await write(trialId, 2, 1);
+    await until(() => seqs(heard).length === 3);
+    expect(seqs(heard)).toEqual([1, 2, 3]);
+    await own.close();
+  });
 });

@@ -25,12 +25,21 @@ export async function eventRelay(db: Database, sql: postgres.Sql) {
       f.push(fresh);
     }
   };
+  /**
+   * A read that fails (the database restarting) is read again from the same place at the trial's next notice or
+   * the listener's reconnection: nothing is lost, and the failure never takes the process down (an unhandled
+   * rejection ends a Bun process: found by tests/runtime/fencing.test.ts, whose runtime died as PostgreSQL shut down).
+   */
+  const catchUpSoon = (trialId: string) =>
+    void catchUp(trialId).catch((error: unknown) =>
+      console.warn(`[runtime] trial ${trialId}: its new events are read at the next notice: ${String(error)}`),
+    );
   const listener = await sql.listen(
     NOTIFY_CHANNEL,
-    (payload) => void catchUp(payload.split(":")[0]!),
+    (payload) => catchUpSoon(payload.split(":")[0]!),
     // Listening again after the listening connection was lost: what committed meanwhile notified no one here.
     () => {
-      for (const trialId of followers.keys()) void catchUp(trialId);
+      for (const trialId of followers.keys()) catchUpSoon(trialId);
     },
   );
   return {
@@ -40,7 +49,7 @@ export async function eventRelay(db: Database, sql: postgres.Sql) {
       const group = followers.get(trialId) ?? new Set();
       followers.set(trialId, group.add(follower));
       // Anything committed between the caller's read and this subscription.
-      void catchUp(trialId);
+      catchUpSoon(trialId);
       return () => {
         group.delete(follower);
         if (!group.size && followers.get(trialId) === group) followers.delete(trialId);
