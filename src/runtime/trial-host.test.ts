@@ -1,6 +1,6 @@
 import { afterAll, describe, expect, it } from "vitest";
 import { bareTrial, freshDatabase } from "../../tests/support/db";
-import { eventsSince } from "@/store/event-store";
+import { eventsSince, takeTrial } from "@/store/event-store";
 import type { TrialProtocol } from "@/core/trial";
 import { groupWriter } from "./log-writer";
 import type { RobotLink, RobotReport } from "./robot";
@@ -224,6 +224,32 @@ describe("a live trial host", async () => {
     expect(performed).toEqual([]);
     // The host carries on from the log as it is.
     expect(await host.command({ kind: "note", text: "after" }, null)).toMatchObject({ ok: true });
+    await host.close();
+  });
+
+  it("refuses a line logged as its lock was lost, before the new owner came: the robot is not told, the log says so", async () => {
+    const trialId = await newTrialId();
+    let owned = true;
+    const ownership = { epoch: (await takeTrial(db, trialId))!, lost() {}, owns: async () => owned };
+    const { performed, robot } = recordingRobot();
+    const host = await TrialHost.open(db, trialId, protocol, robot, undefined, ownership);
+    expect((await host.command({ kind: "start" }, null)).ok).toBe(true);
+    // The lock is found lost (another process took it) while the append, still under the host's epoch, goes in.
+    owned = false;
+    expect(await host.command(say("unsaid"), null)).toEqual({
+      ok: false,
+      reason: expect.stringMatching(
+        /^Not carried out: another runtime process took this trial over as this was logged/,
+      ),
+    });
+    await settle(host, () => host.current.actions.unsaid?.status === "not_sent");
+    expect((await eventsSince(db, trialId)).slice(2)).toMatchObject([
+      { type: "action.requested", actionId: "unsaid" },
+      { type: "action.not_sent", actionId: "unsaid", reason: expect.stringMatching(/^Not sent: another runtime/) },
+    ]);
+    expect(performed).toEqual([]);
+    // What the robot is not asked to do is carried out as before.
+    expect(await host.command({ kind: "note", text: "still logged" }, null)).toMatchObject({ ok: true });
     await host.close();
   });
 

@@ -34,10 +34,14 @@ function startedAt(events: StoredEvent[]): number | null {
 
 export type CommandResult = { ok: true; seqs: number[] } | { ok: false; reason: string };
 
-/** The ownership a host writes under: its epoch (`takeTrial`), and whom to tell once another process took the trial. */
+/**
+ * The ownership a host writes under: its epoch (`takeTrial`), whom to tell once another process took the
+ * trial, and whether this process still holds it (`TrialLocks.owns`, what the robot link's sends wait on).
+ */
 export interface Ownership {
   epoch: number;
   lost: () => void;
+  owns: () => Promise<boolean>;
 }
 
 /**
@@ -51,6 +55,10 @@ export interface Request {
 }
 
 const BLOCKS_WITHOUT_ROBOT = new Set<string>(CONTROL_TYPES);
+
+/** An action the robot link is asked to carry out once logged (a pause is held by the host itself). */
+const sentToRobot = (event: EngineEvent) =>
+  event.type === "action.requested" && event.actionType !== "pause" && !BLOCKS_WITHOUT_ROBOT.has(event.actionType);
 
 /**
  * How long the trial log may take to answer before the wizard's commands are
@@ -85,7 +93,11 @@ const NOT_CARRIED_OUT = "Not carried out: the robot was stopped after you asked 
 const NOT_SENT = {
   stopped: "Not sent: the robot was stopped before this reached it.",
   late: "Not sent: the trial log answered too late, so this would have reached the robot late.",
+  takenOver: "Not sent: another runtime process took this trial over as this was logged, so the robot was not told.",
 } as const;
+
+const TAKEN_OVER_AS_LOGGED =
+  "Not carried out: another runtime process took this trial over as this was logged, so the robot was not told. Ask again: it goes to that process.";
 
 /** Where a command too old is dropped before the robot link: the runtime's queue (a resumed process's too). */
 const QUEUE = "the runtime's queue";
@@ -411,6 +423,13 @@ export class TrialHost {
       if (ALWAYS_LOGGED.has(command.kind)) return this.execute(command, actorId, requestId, halts, asked, moment);
       return { ok: false, reason: LOG_MOVED };
     }
+    // The lock lost as this was logged, before the new owner moved the epoch on (so the append went in): the
+    // robot link would not send it (`fencedRobot`), so the wizard hears that now, not an ack for a line
+    // never said. Asked in the same turn as the send, so the two cannot disagree.
+    if (this.ownership && written.events.some(sentToRobot) && !(await this.ownership.owns())) {
+      this.take(written.events, NOT_SENT.takenOver);
+      return { ok: false, reason: TAKEN_OVER_AS_LOGGED };
+    }
     // Stopped, or the log answered too late, while this was being logged: it is in the log as asked
     // for, and goes no further.
     const after = this.overtaken(command, halts, asked);
@@ -595,17 +614,7 @@ export class TrialHost {
     for (const event of events) {
       if (event.type !== "action.requested") continue;
       const report = (r: RobotReport) => this.report(r);
-      if (event.actionType === "pause") {
-        // The clock starts once "dispatched" is stored, so the logged hold is never shorter than designed.
-        const seconds = Number(event.parameters.seconds ?? 0);
-        void this.command({ kind: "dispatched", actionId: event.actionId }, null).then(() => {
-          const timer = setTimeout(() => {
-            this.timers.delete(timer);
-            report({ kind: "completed", actionId: event.actionId, detail: { heldMs: seconds * 1000 } });
-          }, seconds * 1000);
-          this.timers.add(timer);
-        });
-      } else if (!BLOCKS_WITHOUT_ROBOT.has(event.actionType)) {
+      if (sentToRobot(event)) {
         this.robot.perform(
           {
             actionId: event.actionId,
@@ -615,6 +624,16 @@ export class TrialHost {
           },
           report,
         );
+      } else if (event.actionType === "pause") {
+        // The clock starts once "dispatched" is stored, so the logged hold is never shorter than designed.
+        const seconds = Number(event.parameters.seconds ?? 0);
+        void this.command({ kind: "dispatched", actionId: event.actionId }, null).then(() => {
+          const timer = setTimeout(() => {
+            this.timers.delete(timer);
+            report({ kind: "completed", actionId: event.actionId, detail: { heldMs: seconds * 1000 } });
+          }, seconds * 1000);
+          this.timers.add(timer);
+        });
       }
     }
   }

@@ -179,7 +179,11 @@ export function trialHosts(
     }
     let host: TrialHost;
     // Fenced out (another process took the trial since): closed here, the lock given back if held again.
-    const ownership = { epoch, lost: () => void retire(trialId, host, true).catch(retireFailed) };
+    const ownership = {
+      epoch,
+      lost: () => void retire(trialId, host, true).catch(retireFailed),
+      owns: () => locks.owns(trialId),
+    };
     try {
       host = await TrialHost.open(db, trialId, protocol, robot, log, ownership);
     } catch (error) {
