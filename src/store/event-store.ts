@@ -10,10 +10,6 @@ export const NOTIFY_CHANNEL = "hri_trial_events";
 
 type Row = typeof trialEvents.$inferSelect;
 
-function toStored(row: Row): StoredEvent {
-  return Object.assign(toTrialEvent(row), { trialId: row.trialId, serverTime: row.serverTime, actorId: row.actorId });
-}
-
 /**
  * An event as the fold reads it: its body (the payload is the engine's event
  * itself, deviation kind included) with its seq and time since t0, without
@@ -186,7 +182,7 @@ type Page = { limit: number; upTo?: number };
 /** The largest seq a log can hold (its column is an integer): "up to" when no page says. */
 const LAST_SEQ = 2 ** 31 - 1;
 
-/** A stored event's columns as the driver gives them, read for one trial. */
+/** A stored event's columns as the driver gives them. */
 type LogRow = {
   seq: number;
   rel_ms: number | null;
@@ -194,6 +190,18 @@ type LogRow = {
   actor_id: string | null;
   payload: EngineEvent;
 };
+
+/** A stored event, built on its payload as the driver parsed it for this row alone (as toTrialEvent). */
+function toStored(row: LogRow, trialId: string): StoredEvent {
+  return Object.assign(row.payload, {
+    seq: row.seq,
+    relMs: row.rel_ms,
+    trialId,
+    // As drizzle has the driver give timestamps: PostgreSQL's text, which Date reads.
+    serverTime: new Date(row.server_time),
+    actorId: row.actor_id,
+  });
+}
 
 /** The seq of the trial's last event (0 before the first): where a file read page by page stops. */
 export async function lastSeqOf(db: Database, trialId: string): Promise<number> {
@@ -218,16 +226,7 @@ export async function eventsSince(db: Database, trialId: string, afterSeq = 0, p
     select seq, rel_ms, server_time, actor_id, payload from trial_events
     where trial_id = ${trialId} and seq > ${afterSeq} and seq <= ${page?.upTo ?? LAST_SEQ}
     order by seq limit ${page?.limit ?? null}`;
-  return rows.map((row) =>
-    Object.assign(row.payload, {
-      seq: row.seq,
-      relMs: row.rel_ms,
-      trialId,
-      // As drizzle has the driver give timestamps: PostgreSQL's text, which Date reads.
-      serverTime: new Date(row.server_time),
-      actorId: row.actor_id,
-    }),
-  );
+  return rows.map((row) => toStored(row, trialId));
 }
 
 /**
@@ -300,13 +299,12 @@ export async function answeredRequests(db: Database, trialId: string): Promise<M
 
 /** Every event of several trials in one query, each trial's in order: what exports read a batch of trials with. */
 export async function eventsOfTrials(db: Database, trialIds: string[]): Promise<Map<string, StoredEvent[]>> {
-  if (!trialIds.length) return byTrial(trialIds, [], toStored);
-  const rows = await db
-    .select()
-    .from(trialEvents)
-    .where(inArray(trialEvents.trialId, trialIds))
-    .orderBy(asc(trialEvents.trialId), asc(trialEvents.seq));
-  return byTrial(trialIds, rows, toStored);
+  if (!trialIds.length) return new Map();
+  // The driver's read, as eventsSince's: the same five columns and the trial's.
+  const rows = await db.$client<Array<LogRow & { trialId: string }>>`
+    select trial_id as "trialId", seq, rel_ms, server_time, actor_id, payload from trial_events
+    where trial_id = any(${trialIds}::text[]) order by trial_id, seq`;
+  return byTrial(trialIds, rows, (row) => toStored(row, row.trialId));
 }
 
 /**
