@@ -6,7 +6,7 @@ import WebSocket from "ws";
 import { eq } from "drizzle-orm";
 import { afterAll, beforeAll, describe, expect, it } from "vitest";
 import { insertLog, unscriptedLog } from "../../bench/support";
-import { parseServerMessage, SOCKET_MESSAGES_VERSION } from "../../src/core/socket/messages";
+import { parseServerMessage, SOCKET_MESSAGES_VERSION, type WireEvent } from "../../src/core/socket/messages";
 import { WELCOME_PART_BYTES, welcomeJoiner } from "../../src/core/socket/welcome";
 import { trials } from "../../src/store/schema";
 import type { TrialSocket } from "../support/socket";
@@ -56,10 +56,8 @@ describe.sequential("the order the runtime sends in", () => {
     timeout: 180_000,
   }, async () => {
     const large = await f.a.trial(f.a.people.wizard!, "scheduled");
-    await insertLog(
-      f.db,
-      unscriptedLog(large, EVENTS, new Date(Date.now() - 3_600_000), (i) => i * 30),
-    );
+    const stored = unscriptedLog(large, EVENTS, new Date(Date.now() - 3_600_000), (i) => i * 30);
+    await insertLog(f.db, stored);
     await f.db.update(trials).set({ status: "completed" }).where(eq(trials.id, large));
     const other = await f.open({ userId: f.b.people.wizard! }, await f.b.trial(f.b.people.wizard!, "live"));
     sockets.push(other);
@@ -67,8 +65,8 @@ describe.sequential("the order the runtime sends in", () => {
     const order: string[] = [];
     other.listen((m) => m.type === "ack" && order.push("ack"));
     const join = welcomeJoiner();
-    let welcomed: (events: number) => void;
-    const welcome = new Promise<number>((ok) => (welcomed = ok));
+    let welcomed: (events: WireEvent[]) => void;
+    const welcome = new Promise<WireEvent[]>((ok) => (welcomed = ok));
     const reader = new WebSocket(f.url);
     await new Promise((ok) => reader.once("open", ok));
     reader.on("message", (data) => {
@@ -90,7 +88,7 @@ describe.sequential("the order the runtime sends in", () => {
       }
       if (joined.message?.type === "welcome") {
         order.push("welcome");
-        welcomed(joined.message.events.length);
+        welcomed(joined.message.events);
       }
     });
     reader.send(
@@ -101,8 +99,20 @@ describe.sequential("the order the runtime sends in", () => {
         lastSeq: 0,
       }),
     );
-    expect(await welcome).toBe(EVENTS);
+    // The whole log as stored, each event in its place: what the trial's opening read (the driver's).
+    const events = await welcome;
     reader.close();
+    expect(events).toHaveLength(EVENTS);
+    expect(events.filter((e, i) => e.seq !== i + 1)).toEqual([]);
+    for (const i of [0, 1, 2, 3, 50_000, EVENTS - 1])
+      expect(events[i], `event ${i + 1}`).toMatchObject({
+        ...JSON.parse(stored[i]!.payload),
+        seq: i + 1,
+        relMs: i * 30,
+        trialId: large,
+        serverTime: stored[i]!.server_time,
+        actorId: null,
+      });
     const parts = order.filter((o) => o === "part").length;
     expect(parts).toBeGreaterThanOrEqual(Math.floor((9 * 1024 * 1024) / WELCOME_PART_BYTES));
     expect(order.indexOf("ack"), `${parts} parts`).toBeGreaterThan(order.indexOf("part"));
