@@ -39,6 +39,18 @@ const [, crowdCpu] = await cpu(() => runTrial(1000, crowd.robot, crowd.observers
 const worst = each.reduce((w, samples) => (p99Of(samples) > p99Of(w) ? samples : w));
 report(`1 trial × ${CROWD} observers: → the slowest observer (by p99)`, worst, 5);
 report(`1 trial × ${CROWD} observers: → all ${CROWD} observers updated`, crowd.observers);
+// One line reaches the bench's pages one after another (the runtime's writes, then this one process's reads
+// in turn): the first page's figure and the spread to the last tell the two apart from the path itself.
+const ofLine = (i: number) => each.map((samples) => samples[i]!);
+const lines = each[0]!.map((_, i) => i);
+report(
+  `1 trial × ${CROWD} observers: → the first observer of each line`,
+  lines.map((i) => Math.min(...ofLine(i))),
+);
+report(
+  `1 trial × ${CROWD} observers: first to last observer of each line`,
+  lines.map((i) => Math.max(...ofLine(i)) - Math.min(...ofLine(i))),
+);
 console.log(crowdCpu);
 
 const many = { robot: [] as number[], observers: [] as number[], started: [] as number[] };
