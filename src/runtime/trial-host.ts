@@ -36,7 +36,7 @@ export type CommandResult = { ok: true; seqs: number[] } | { ok: false; reason: 
 
 /**
  * The ownership a host writes under: its epoch (`takeTrial`), whom to tell once another process took the
- * trial, and whether this process still holds it (`TrialLocks.owns`, what the robot link's sends wait on).
+ * trial, and whether this process still holds it (`TrialLocks.owns`, what each send to the robot waits on).
  */
 export interface Ownership {
   epoch: number;
@@ -423,9 +423,11 @@ export class TrialHost {
       if (ALWAYS_LOGGED.has(command.kind)) return this.execute(command, actorId, requestId, halts, asked, moment);
       return { ok: false, reason: LOG_MOVED };
     }
-    // The lock lost as this was logged, before the new owner moved the epoch on (so the append went in): the
-    // robot link would not send it (`fencedRobot`), so the wizard hears that now, not an ack for a line
-    // never said. Asked in the same turn as the send, so the two cannot disagree.
+    // Sent only while this process still holds the trial (`Ownership.owns`), asked in the same turn as the
+    // send: a process that lost its lock, or was thawed after another took the trial, sends nothing. Only a
+    // command requests actions (the robot's reports never do), so this is every send's one check; an
+    // emergency stop is never asked (any process may stop a robot). The lock lost as this was logged, before
+    // the new owner moved the epoch on (so the append went in): the wizard hears that now, not an ack.
     if (this.ownership && written.events.some(sentToRobot) && !(await this.ownership.owns())) {
       this.take(written.events, NOT_SENT.takenOver);
       return { ok: false, reason: TAKEN_OVER_AS_LOGGED };

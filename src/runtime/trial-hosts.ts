@@ -21,7 +21,8 @@
 // nothing and, as it sends the robot only what it has just logged, commands
 // the robot no more: its host closes and its clients follow the new owner.
 // Each send also waits until the process knows it still holds the lock
-// (`fencedRobot`): a process thawed after a freeze asks before it sends.
+// (the host asks `locks.owns`): a process thawed after a freeze asks before
+// it sends.
 import { eq } from "drizzle-orm";
 import { checkingStart, eventNamesOf, type Plugin } from "@/core/plugins";
 import { sliced } from "@/store/sliced";
@@ -37,7 +38,6 @@ import type { LiveRobotState } from "@/core/robots/live-state";
 import type { RobotLink } from "./robot";
 import { unavailableRobot } from "./robot-link";
 import { type NewSession, trialLocks } from "./trial-locks";
-import { fencedRobot } from "./fenced-robot";
 import { robotClaims, type RobotClaims } from "./robot-claims";
 import { logUnexpected } from "@/store/error-reference";
 import { TrialHost, type CommandResult } from "./trial-host";
@@ -171,7 +171,7 @@ export function trialHosts(
       const choice = await chooseRobot(trialId, chosen.robotId);
       registered = choice.ok ? choice.robot : null;
       try {
-        robot = fencedRobot(await robotFor(chosen.plugin, chosen.robotId, choice), () => locks.owns(trialId));
+        robot = await robotFor(chosen.plugin, chosen.robotId, choice);
       } catch (error) {
         letGo(trialId);
         throw error;
