@@ -41,15 +41,14 @@ report(`1 trial × ${CROWD} observers: → the slowest observer (by p99)`, worst
 report(`1 trial × ${CROWD} observers: → all ${CROWD} observers updated`, crowd.observers);
 // One line reaches the bench's pages one after another (the runtime's writes, then this one process's reads
 // in turn): the first page's figure and the spread to the last tell the two apart from the path itself.
-const ofLine = (i: number) => each.map((samples) => samples[i]!);
-const lines = each[0]!.map((_, i) => i);
+const byLine = each[0]!.map((_, i) => each.map((samples) => samples[i]!));
 report(
   `1 trial × ${CROWD} observers: → the first observer of each line`,
-  lines.map((i) => Math.min(...ofLine(i))),
+  byLine.map((line) => Math.min(...line)),
 );
 report(
   `1 trial × ${CROWD} observers: first to last observer of each line`,
-  lines.map((i) => Math.max(...ofLine(i)) - Math.min(...ofLine(i))),
+  byLine.map((line) => Math.max(...line) - Math.min(...line)),
 );
 console.log(crowdCpu);
 
