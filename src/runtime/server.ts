@@ -7,6 +7,7 @@ import { arrivalOrder, type Turn } from "@/core/arrival-order";
 import { askedAt } from "@/core/trial/freshness";
 import {
   annotateVerdict,
+  cameraVerdict,
   codeVerdict,
   commandVerdict,
   lostAccess,
@@ -37,7 +38,7 @@ import { carryOut, TURN_WAIT_MS } from "./carry-out";
 import { recordedRobot } from "./robot-status";
 import type { CommandForwarding } from "./forwarding";
 import type { StopLinks } from "./stop-links";
-import type { CommandResult } from "./trial-host";
+import type { CommandResult, TrialHost } from "./trial-host";
 import { logUnexpected } from "@/store/error-reference";
 import type { LiveRobotState } from "@/core/robots/live-state";
 import { annotate } from "./annotations";
@@ -66,8 +67,12 @@ interface Connection {
   /** Counts reloads, so an older reload finishing late never overwrites a newer one. */
   reloads: number;
   unsubscribe?: () => void;
-  /** Stops the robot's camera frames to this connection. */
+  /** Stops the robot's camera frames to this connection (set while it gets them). */
   stopCamera?: () => void;
+  /** The host its camera frames come from: the trial's, when this process ran it at hello. */
+  cameraHost?: TrialHost;
+  /** The page said it does not show the camera (a hidden tab, a closed panel): no frames until it says it does. */
+  cameraHidden?: boolean;
   /** Stops this connection's replay, if one is playing. */
   stopReplay?: () => void;
   /** Lets go of the link that stops the robot of a trial another process runs. */
@@ -221,6 +226,7 @@ export function startRuntimeServer({
     ws.data.closed = true;
     ws.data.unsubscribe?.();
     ws.data.stopCamera?.();
+    ws.data.cameraHost = undefined;
     ws.data.stopReplay?.();
     ws.data.releaseStop?.();
     ws.data.outbox?.close();
@@ -324,13 +330,36 @@ export function startRuntimeServer({
     if (host) {
       send(ws, { type: "robot", connected: host.robotStatus(), ...(host.robotName ? { name: host.robotName } : {}) });
       if (mayReadTrialLog(ws.data.access!)) send(ws, { type: "robotState", ...host.robotState });
-      // The robot's camera, to whoever may follow the trial now, as fast as their connection takes it.
-      ws.data.stopCamera = host.watchCamera((frame) => {
-        if (ws.data.closed || !mayReadTrialLog(ws.data.access!)) return;
-        if (ws.data.outbox!.idle && ws.getBufferedAmount() < CAMERA_BACKLOG_BYTES)
-          ws.data.outbox!.send(cameraMessage(frame));
-      });
+      ws.data.cameraHost = host;
+      showCamera(ws);
     }
+  }
+
+  /** The robot's camera, to whoever may follow the trial now and shows it, as fast as their connection takes it. */
+  function showCamera(ws: Socket) {
+    const host = ws.data.cameraHost;
+    if (!host || ws.data.stopCamera || ws.data.cameraHidden || ws.data.closed) return;
+    ws.data.stopCamera = host.watchCamera((frame) => {
+      if (ws.data.closed || !mayReadTrialLog(ws.data.access!)) return;
+      if (ws.data.outbox!.idle && ws.getBufferedAmount() < CAMERA_BACKLOG_BYTES)
+        ws.data.outbox!.send(cameraMessage(frame));
+    });
+  }
+
+  /** The page shows the robot's camera now, or not: the frames start or stop (the robot's with the last watcher). */
+  function camera(ws: Socket, message: Extract<ClientMessage, { type: "camera" }>) {
+    const { claims, access } = ws.data;
+    const reject = (reason: string) => send(ws, { type: "rejected", requestId: message.requestId, reason });
+    if (!claims || !access) return reject("Say hello with your trial link first.");
+    const verdict = cameraVerdict(access, message.watch);
+    if (!verdict.allow) return reject(verdict.reason);
+    ws.data.cameraHidden = !message.watch;
+    if (message.watch) showCamera(ws);
+    else {
+      ws.data.stopCamera?.();
+      ws.data.stopCamera = undefined;
+    }
+    send(ws, { type: "ack", requestId: message.requestId, seqs: [] });
   }
 
   /** Reloads one socket's access; closes it if its user may no longer be here. */
@@ -556,6 +585,7 @@ export function startRuntimeServer({
       return ws.data.replayTurns(() => replay(ws, message));
     }
     if (message.type === "code") return code(ws, message);
+    if (message.type === "camera") return camera(ws, message);
     return act(ws, message);
   }
 

@@ -316,6 +316,8 @@ export class TrialHost {
 
   /** The robot's camera frames, for one watcher; apart from the commands and the log. */
   watchCamera(listener: (frame: CameraFrame) => void) {
+    // Closed (the trial moved or ended): its robot link is closed too, and watching it would open nothing.
+    if (this.shut) return () => {};
     this.cameraWatchers.add(listener);
     this.stopCamera ??= this.robot.watchCamera((frame) => {
       for (const watch of this.cameraWatchers) watch(frame);

@@ -157,6 +157,7 @@ describe.sequential("every socket message × every role × own, other and mixed 
         "replay",
         "replay_stop",
         "signal",
+        "camera",
         ...commandSchema.options.map((c) => `command ${String(c.shape.kind.value)}`),
       ]),
     );

@@ -2,6 +2,7 @@ import { describe, expect, it } from "vitest";
 import { NOT_BLINDED } from "../studies/blinding";
 import {
   annotateVerdict,
+  cameraVerdict,
   codeVerdict,
   commandVerdict,
   mayReadTrialLog,
@@ -176,6 +177,22 @@ describe("who receives a trial's event log", () => {
     ["a disabled owner, live trial", access({ studyRole: "owner", active: false }), false],
   ])("%s → %s", (_name, who, readable) => {
     expect(mayReadTrialLog(who)).toBe(readable);
+  });
+});
+
+describe("who may watch a trial's robot camera", () => {
+  const ENDED = "This trial has ended: its robot's camera ended with it.";
+  it.each<[string, TrialAccess, boolean, string | null]>([
+    ["an observer, live trial, watching", access({ studyRole: "observer" }), true, null],
+    ["a wizard, paused trial, watching", access({ status: "paused" }), true, null],
+    ["a researcher, finished trial, watching", access({ studyRole: "researcher", status: "completed" }), true, null],
+    ["a wizard (no data.read), finished trial, watching", access({ status: "completed" }), true, ENDED],
+    ["a wizard (no data.read), finished trial, stopping", access({ status: "completed" }), false, null],
+    ["a removed member, watching", access({ studyRole: null }), true, "You are no longer a member of this study."],
+    ["a removed member, stopping", access({ studyRole: null }), false, "You are no longer a member of this study."],
+  ])("%s", (_name, who, watch, refusal) => {
+    const verdict = cameraVerdict(who, watch);
+    expect(verdict.allow ? null : verdict.reason).toBe(refusal);
   });
 });
 

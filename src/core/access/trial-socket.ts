@@ -111,6 +111,17 @@ export function replayVerdict(access: TrialAccess): SocketVerdict {
 }
 
 /**
+ * May the caller watch the trial's robot camera? Whoever may follow its log
+ * (the camera shows what the log describes). Stopping is never refused.
+ */
+export function cameraVerdict(access: TrialAccess, watch: boolean): SocketVerdict {
+  const lost = lostAccess(access);
+  if (lost) return refuse(lost);
+  if (watch && !mayReadTrialLog(access)) return refuse("This trial has ended: its robot's camera ended with it.");
+  return { allow: true, claim: false };
+}
+
+/**
  * May one connection pass a live video signal to another? Only within one
  * trial (the runtime looks the recipient up among that trial's connections),
  * and only between the video's source, someone who may run the trial, and a

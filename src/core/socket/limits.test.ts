@@ -31,6 +31,12 @@ describe("the trial socket's limits", () => {
     ["a ping of a few bytes", "ping", 15, null],
     ["a ping padded out", "ping", 2000, "That ping message is too large (2 KB; at most 1 KB): nothing was done."],
     ["a signal with a long session description", "signal", 200 * 1024, null],
+    [
+      "a camera message padded out",
+      "camera",
+      4096,
+      "That camera message is too large (4 KB; at most 1 KB): nothing was done.",
+    ],
   ])("after hello: %s", (_name, type, bytes, refusal) => {
     expect(sizeRefusal(type, bytes)).toBe(refusal);
   });

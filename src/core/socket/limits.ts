@@ -30,6 +30,7 @@ export const MESSAGE_BYTES: Record<ClientMessage["type"], number> = {
   ping: 1 * KB,
   replay: 1 * KB,
   replay_stop: 1 * KB,
+  camera: 1 * KB,
   // A WebRTC session description of up to 100,000 characters.
   signal: 256 * KB,
 };

@@ -38,6 +38,12 @@ describe("the socket messages", () => {
       JSON.stringify({ type: "signal", requestId: "r1", peerId: "p2", signal: { kind: "shout" } }),
       "The message is not understood: signal.kind: ",
     ],
+    ["a page that hides the robot's camera", JSON.stringify({ type: "camera", requestId: "r1", watch: false }), null],
+    [
+      "a camera message that does not say whether",
+      JSON.stringify({ type: "camera", requestId: "r1", watch: "no" }),
+      "The message is not understood: watch: ",
+    ],
     ["not JSON", "{nope", "The message is not valid JSON."],
     ["an unknown type", JSON.stringify({ type: "shout" }), "The message is not understood: type: "],
     [

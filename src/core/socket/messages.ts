@@ -17,6 +17,7 @@ import type { StoredEvent } from "@/core/trial";
 // Also 5: the wizard's "go_on" command ends a pending "Wait for" (src/core/trial/waits.ts).
 // Also 5: a "command" carries `at`, the page's clock when the wizard asked (src/core/trial/freshness.ts).
 // 6: a long log comes ahead of its "welcome" in "welcome.part" messages; the welcome says how many (welcome.ts).
+// Also 6: the page's "camera" says whether it shows the robot's camera now; a page that never says gets it.
 export const SOCKET_MESSAGES_VERSION = 6;
 
 /** Every id a message carries is declared with this, so tests can find them all. */
@@ -126,6 +127,9 @@ export const clientMessageSchema = z.discriminatedUnion("type", [
   z.object({ type: z.literal("replay_stop"), requestId: id }),
   // Live video: to another connection of the same trial (its `peerId`), one side of which is the trial's wizard.
   z.object({ type: z.literal("signal"), requestId: id, peerId: id, signal: signalSchema }),
+  // Whether this page shows the robot's camera now: a hidden tab or a closed camera panel says `watch: false`
+  // and gets no frames (5 a second, each a picture) until it says `true`. A connection starts watching.
+  z.object({ type: z.literal("camera"), requestId: id, watch: z.boolean() }),
 ]);
 
 export type ClientMessage = z.infer<typeof clientMessageSchema>;

@@ -59,8 +59,11 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
   const unheardSignals = useRef<Array<Parameters<SignalListener>>>([]);
   // The robot's camera goes straight to the picture that shows it: a frame re-renders nothing else.
   const cameraListeners = useRef(new Set<(frame: CameraFrame) => void>());
-  // Signals' outcomes are the video's business: a refused one never becomes the page's notice.
-  const signalRequests = useRef(new Set<string>());
+  // Whether this connection gets the robot's camera now, as last said (null until welcomed): the runtime sends
+  // frames until told otherwise, and a page hidden or without the picture says so, so that none are sent for nothing.
+  const cameraSaid = useRef<boolean | null>(null);
+  // Signals' and the camera's outcomes are theirs: a refused one never becomes the page's notice.
+  const quietRequests = useRef(new Set<string>());
   const socket = useRef<WebSocket | null>(null);
   const lastSeq = useRef(0);
   // Each request awaiting its answer: what was sent (sent again, as a retry, after a reconnect) and, for a
@@ -121,6 +124,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
           setViewers(m.viewers);
           setMayRun(m.mayRun);
           setPeer({ peerId: m.peerId, iceServers: m.iceServers });
+          cameraSaid.current = true;
+          sayCamera();
           receive(m.events);
           // Commands sent before the connection dropped: asked again by their id, answered with what became
           // of them, never carried out twice nor late.
@@ -141,12 +146,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         else if (m.type === "signal") {
           if (signalListeners.current.size === 0) unheardSignals.current.push([m.peerId, m.signal]);
           for (const listen of signalListeners.current) listen(m.peerId, m.signal);
-        } else if (
-          (m.type === "ack" || m.type === "rejected") &&
-          m.requestId &&
-          signalRequests.current.has(m.requestId)
-        )
-          signalRequests.current.delete(m.requestId);
+        } else if ((m.type === "ack" || m.type === "rejected") && m.requestId && quietRequests.current.has(m.requestId))
+          quietRequests.current.delete(m.requestId);
         else if (m.type === "codes")
           setCodes((c) => [...c.filter((x) => !m.codes.some((y) => y.id === x.id)), ...m.codes]);
         else if (m.type === "halted") {
@@ -171,7 +172,8 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
         heartbeat = null;
         setRuntime("reconnecting");
         setPeer(null);
-        signalRequests.current.clear();
+        cameraSaid.current = null;
+        quietRequests.current.clear();
         unheardSignals.current = [];
         // An annotation or a signal is not asked again (no idempotency key); a command is, once reconnected.
         const dropped = (all: boolean) => {
@@ -223,7 +225,7 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     const ws = socket.current;
     if (!ws || ws.readyState !== WebSocket.OPEN) return;
     const requestId = crypto.randomUUID();
-    signalRequests.current.add(requestId);
+    quietRequests.current.add(requestId);
     ws.send(JSON.stringify({ type: "signal", requestId, peerId, signal } satisfies ClientMessage));
   }, []);
   const onSignal = useCallback((listen: SignalListener) => {
@@ -232,10 +234,32 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     return () => void signalListeners.current.delete(listen);
   }, []);
 
-  const onCamera = useCallback((show: (frame: CameraFrame) => void) => {
-    cameraListeners.current.add(show);
-    return () => void cameraListeners.current.delete(show);
+  /** Tells the runtime when the page starts or stops showing the robot's camera (a picture shown, the tab visible). */
+  const sayCamera = useCallback(() => {
+    const ws = socket.current;
+    if (cameraSaid.current === null || !ws || ws.readyState !== WebSocket.OPEN) return;
+    const watch = cameraListeners.current.size > 0 && document.visibilityState !== "hidden";
+    if (watch === cameraSaid.current) return;
+    cameraSaid.current = watch;
+    const requestId = crypto.randomUUID();
+    quietRequests.current.add(requestId);
+    ws.send(JSON.stringify({ type: "camera", requestId, watch } satisfies ClientMessage));
   }, []);
+  useEffect(() => {
+    document.addEventListener("visibilitychange", sayCamera);
+    return () => document.removeEventListener("visibilitychange", sayCamera);
+  }, [sayCamera]);
+  const onCamera = useCallback(
+    (show: (frame: CameraFrame) => void) => {
+      cameraListeners.current.add(show);
+      sayCamera();
+      return () => {
+        cameraListeners.current.delete(show);
+        sayCamera();
+      };
+    },
+    [sayCamera],
+  );
   const video = useMemo(() => (peer ? { ...peer, signal, onSignal } : null), [peer, signal, onSignal]);
 
   // Events only ever arrive appended: each batch is applied to the state so far, never refolded from the start.
