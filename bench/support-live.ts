@@ -161,7 +161,7 @@ export async function startLiveBench({
       ws.onmessage = (m) => {
         const at = performance.now();
         const text = String(m.data);
-        // Every message begins {"type":"…": what the bench does not read (the robot's camera frames, 15 a
+        // Every message begins {"type":"…": what the bench does not read (the robot's camera frames, five a
         // second to every browser, its state, presence) is never parsed.
         const type = text.slice(TYPE_AT, text.indexOf('"', TYPE_AT));
         if (!READ.has(type) || (wants && type === "events" && !text.includes(wants))) return;
@@ -187,13 +187,17 @@ export async function startLiveBench({
       }),
     );
     await welcomed;
+    /** Sends a request; resolves with null once acknowledged, else why it was refused. */
+    const ask = (message: Record<string, unknown>) =>
+      new Promise<string | null>((ok) => {
+        const requestId = crypto.randomUUID();
+        pending.set(requestId, ok);
+        ws.send(JSON.stringify({ ...message, requestId }));
+      });
     return {
-      command: (command: Record<string, unknown>) =>
-        new Promise<string | null>((ok) => {
-          const requestId = crypto.randomUUID();
-          pending.set(requestId, ok);
-          ws.send(JSON.stringify({ type: "command", requestId, command }));
-        }),
+      command: (command: Record<string, unknown>) => ask({ type: "command", command }),
+      /** Says whether this page shows the robot's camera (a page starts showing it, as the trial page does). */
+      camera: (watch: boolean) => ask({ type: "camera", watch }),
       close: () => ws.close(),
     };
   }
@@ -204,7 +208,8 @@ export async function startLiveBench({
    * `toEach`, when given, each observer's own times, one list per observer. `together` (a `group`), when
    * given, holds the lines until every trial of the group has started (its robot linked, its observers
    * welcomed), and the end until every trial has sent its lines: the group's figures are those of trials
-   * running side by side, not of trials starting or ending beside them.
+   * running side by side, not of trials starting or ending beside them. `cameraHidden`: the observers' pages
+   * do not show the robot's camera (hidden tabs, the panel closed), as they say; the wizard's page shows it.
    */
   async function runTrial(
     commands: number,
@@ -215,7 +220,14 @@ export async function startLiveBench({
       observing = OBSERVERS,
       toEach,
       together,
-    }: { paceMs?: number; observing?: number; toEach?: number[][]; together?: ReturnType<typeof group> } = {},
+      cameraHidden = false,
+    }: {
+      paceMs?: number;
+      observing?: number;
+      toEach?: number[][];
+      together?: ReturnType<typeof group>;
+      cameraHidden?: boolean;
+    } = {},
   ) {
     const trial = await newTrial();
     const seen = new Map<string, { sent: number; left: number; done: (at: number) => void }>();
@@ -230,6 +242,7 @@ export async function startLiveBench({
     const observers = await Promise.all(
       Array.from({ length: observing }, (_, k) => socket(trial!.id, observerUser.id, observe(k), '"action.requested"')),
     );
+    if (cameraHidden) await Promise.all(observers.map((o) => o.camera(false)));
     const wizard = await socket(trial!.id, wizardUser.id, () => {});
     const starting = performance.now();
     const notStarted = await wizard.command({ kind: "start" });

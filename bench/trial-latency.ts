@@ -1,10 +1,11 @@
 // bench/trial-latency: wizard message in → robot message received by the
 // simulated robot, and → every observer updated, for 1 trial and for 50
-// concurrent trials with 10 observers each, and 20 wizards back to back; and
+// concurrent trials with 10 observers each (their pages showing the robot's
+// camera, then not), and 20 wizards back to back; and
 // one trial followed by 50 observers, each observer's latency its own.
 // Everything real: PostgreSQL, the runtime process as the launcher runs it,
 // the NAO6 plugin, roslib and the simulator (see support-live.ts).
-// Takes about 40 s.
+// Takes about 45 s.
 import { cpuWhile } from "./cpu-share";
 import { percentile, report } from "./support";
 import { startLiveBench } from "./support-live";
@@ -65,6 +66,23 @@ report("50 trials × 10 observers, started at once: start → acknowledged", man
 report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → robot received`, many.robot, 25);
 report(`50 trials × 10 observers, 1 msg/${PACE_MS} ms each: → all observers updated`, many.observers, 25);
 console.log(manyCpu);
+
+// The same, the observers' pages not showing the robot's camera (hidden tabs, the panel closed): 500 of the
+// phase's 550 pages get no pictures, so this is the lines' cost without the camera's (five a second, a picture
+// each, to each page that shows it). No target: the row above, every page showing it, is the one held to it.
+const hidden = { robot: [] as number[], observers: [] as number[], started: [] as number[] };
+await quiet();
+const fiftyHidden = live.group(50, PACE_MS, hidden.started);
+const [, hiddenCpu] = await cpu(() =>
+  Promise.all(
+    Array.from({ length: 50 }, () =>
+      runTrial(40, hidden.robot, hidden.observers, { paceMs: PACE_MS, together: fiftyHidden, cameraHidden: true }),
+    ),
+  ),
+);
+report(`same, the observers' camera hidden: → robot received`, hidden.robot);
+report(`same, the observers' camera hidden: → all observers updated`, hidden.observers);
+console.log(hiddenCpu);
 
 const flood = { robot: [] as number[], observers: [] as number[] };
 await quiet();
