@@ -6,7 +6,7 @@
 // Everything real: PostgreSQL, the runtime process as the launcher runs it,
 // the NAO6 plugin, roslib and the simulator (see support-live.ts).
 // Takes about 45 s.
-import { cpuWhile } from "./cpu-share";
+import { cpuWhile } from "./support-cpu";
 import { percentile, report } from "./support";
 import { startLiveBench } from "./support-live";
 
