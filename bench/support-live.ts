@@ -402,7 +402,7 @@ export async function startLiveBench({
     runTrial,
     group,
     quiet,
-    /** The runtime's process id (its CPU is counted by it: cpu-share.ts). */
+    /** The runtime's process id (its CPU is counted by it: support-cpu.ts). */
     runtimePid: runtime.pid!,
     /** The runtime's resident memory now, in MiB. */
     runtimeMemoryMiB: () =>
