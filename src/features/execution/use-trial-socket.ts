@@ -220,14 +220,22 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
     });
   }, []);
 
-  /** Sends a live video signal, fire and forget: the video copes with a lost one, the trial never waits on it. */
-  const signal = useCallback((peerId: string, signal: Signal) => {
+  /** Sends a request whose answer is nobody's notice, fire and forget; false when not connected. */
+  const sendQuietly = useCallback((message: (requestId: string) => ClientMessage) => {
     const ws = socket.current;
-    if (!ws || ws.readyState !== WebSocket.OPEN) return;
+    if (!ws || ws.readyState !== WebSocket.OPEN) return false;
     const requestId = crypto.randomUUID();
     quietRequests.current.add(requestId);
-    ws.send(JSON.stringify({ type: "signal", requestId, peerId, signal } satisfies ClientMessage));
+    ws.send(JSON.stringify(message(requestId)));
+    return true;
   }, []);
+
+  /** Sends a live video signal, fire and forget: the video copes with a lost one, the trial never waits on it. */
+  const signal = useCallback(
+    (peerId: string, signal: Signal) =>
+      void sendQuietly((requestId) => ({ type: "signal", requestId, peerId, signal })),
+    [sendQuietly],
+  );
   const onSignal = useCallback((listen: SignalListener) => {
     signalListeners.current.add(listen);
     for (const [peerId, signal] of unheardSignals.current.splice(0)) listen(peerId, signal);
@@ -236,15 +244,10 @@ export function useTrialSocket(trialId: string, protocol: TrialProtocol) {
 
   /** Tells the runtime when the page starts or stops showing the robot's camera (a picture shown, the tab visible). */
   const sayCamera = useCallback(() => {
-    const ws = socket.current;
-    if (cameraSaid.current === null || !ws || ws.readyState !== WebSocket.OPEN) return;
     const watch = cameraListeners.current.size > 0 && document.visibilityState !== "hidden";
-    if (watch === cameraSaid.current) return;
-    cameraSaid.current = watch;
-    const requestId = crypto.randomUUID();
-    quietRequests.current.add(requestId);
-    ws.send(JSON.stringify({ type: "camera", requestId, watch } satisfies ClientMessage));
-  }, []);
+    if (cameraSaid.current === null || watch === cameraSaid.current) return;
+    if (sendQuietly((requestId) => ({ type: "camera", requestId, watch }))) cameraSaid.current = watch;
+  }, [sendQuietly]);
   useEffect(() => {
     document.addEventListener("visibilitychange", sayCamera);
     return () => document.removeEventListener("visibilitychange", sayCamera);
