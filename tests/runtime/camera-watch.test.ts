@@ -5,17 +5,16 @@
 // unsubscribes from the robot's camera, and subscribes again when one does.
 import type { ChildProcess } from "node:child_process";
 import { afterAll, beforeAll, expect, it } from "vitest";
-import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import { CAMERA_TOPIC, simulatedRobot, startSimulator, type Simulator } from "../../src/robots/simulator";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/store/client";
-import { robotStudies, robots, studies, studyMembers } from "../../src/store/schema";
+import { studies, studyMembers } from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { firstPartyPlugin } from "../support/plugins";
 import { startRuntime } from "../support/runtime";
 import { connectTrial, type TrialSocket } from "../support/socket";
-import { trialOf } from "../support/trial-rows";
+import { naoTrialOf } from "../support/trial-rows";
 
 const SECRET = "camera-watch-test-secret".padEnd(40, "x");
 
@@ -66,24 +65,12 @@ it("sends the robot's camera only to the pages that show it, and asks the robot 
   };
   const wizardId = await person("Wizard", "wizard");
   const observerId = await person("Observer", "observer");
-  const [robot] = await db
-    .insert(robots)
-    .values({ name: "NAO", pluginRobotId: "nao6-ros2", rosbridgeUrl: sim.url })
-    .returning();
-  await db.insert(robotStudies).values({ robotId: robot!.id, studyId: study!.id });
-  const snapshot: ProtocolSnapshot = {
-    schemaVersion: 5,
-    experiment: { id: "e", name: "E", description: "", robotId: "nao6-ros2" },
-    steps: [
-      {
-        id: "s0",
-        name: "Hello",
-        description: "",
-        actions: [{ id: "hi", type: "say", name: "", parameters: { text: "hi" }, parallelGroup: null }],
-      },
-    ],
-  };
-  const trialId = await trialOf(db, { studyId: study!.id, wizardId, snapshot, withParticipant: true });
+  const trialId = await naoTrialOf(db, {
+    studyId: study!.id,
+    wizardId: wizardId,
+    rosbridgeUrl: sim.url,
+    robotName: "NAO",
+  });
   const open = async (userId: string) => {
     const socket = await connectTrial(runtime.url, signSocketToken({ userId, trialId }, SECRET));
     sockets.push(socket);

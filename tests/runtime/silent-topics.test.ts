@@ -5,7 +5,6 @@
 // plain words, beside "robot connected", and the trial's log has it.
 import type { ChildProcess } from "node:child_process";
 import { afterAll, beforeAll, expect, it } from "vitest";
-import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import {
   camera,
   jointStates,
@@ -17,13 +16,13 @@ import {
 } from "../../src/robots/simulator";
 import { createAccount } from "../../src/server/auth/accounts";
 import { createDatabase } from "../../src/store/client";
-import { robotStudies, robots, studies, studyMembers } from "../../src/store/schema";
+import { studies, studyMembers } from "../../src/store/schema";
 import { signSocketToken } from "../../src/store/socket-token";
 import { freshDatabaseUrl } from "../support/db";
 import { firstPartyPlugin } from "../support/plugins";
 import { startRuntime } from "../support/runtime";
 import { connectTrial, type TrialSocket } from "../support/socket";
-import { trialOf } from "../support/trial-rows";
+import { naoTrialOf } from "../support/trial-rows";
 
 const SECRET = "silent-topics-test-secret".padEnd(40, "x");
 const SILENT =
@@ -69,24 +68,12 @@ it("a state topic the robot never publishes is told to the wizard in plain words
     role: "researcher",
   });
   await db.insert(studyMembers).values({ studyId: study!.id, userId: wizard.id, role: "wizard" });
-  const [robot] = await db
-    .insert(robots)
-    .values({ name: "NAO without a battery report", pluginRobotId: "nao6-ros2", rosbridgeUrl: sim.url })
-    .returning();
-  await db.insert(robotStudies).values({ robotId: robot!.id, studyId: study!.id });
-  const snapshot: ProtocolSnapshot = {
-    schemaVersion: 5,
-    experiment: { id: "e", name: "E", description: "", robotId: "nao6-ros2" },
-    steps: [
-      {
-        id: "s0",
-        name: "Hello",
-        description: "",
-        actions: [{ id: "hi", type: "say", name: "", parameters: { text: "hi" }, parallelGroup: null }],
-      },
-    ],
-  };
-  const trialId = await trialOf(db, { studyId: study!.id, wizardId: wizard.id, snapshot, withParticipant: true });
+  const trialId = await naoTrialOf(db, {
+    studyId: study!.id,
+    wizardId: wizard.id,
+    rosbridgeUrl: sim.url,
+    robotName: "NAO without a battery report",
+  });
   socket = await connectTrial(runtime.url, signSocketToken({ userId: wizard.id, trialId }, SECRET));
   expect((await socket.command("c1", { kind: "start" })).type).toBe("ack");
 

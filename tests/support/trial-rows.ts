@@ -4,7 +4,7 @@
 // and its wizard are the test's own.
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import type { Database } from "../../src/store/client";
-import { experimentVersions, experiments, participants, trials } from "../../src/store/schema";
+import { experimentVersions, experiments, participants, robotStudies, robots, trials } from "../../src/store/schema";
 
 export async function trialOf(
   db: Database,
@@ -40,4 +40,30 @@ export async function rehearsalOf(db: Database, studyId: string, snapshot: Proto
     .values({ studyId, experimentId: experiment!.id, isRehearsal: true, rehearsalSnapshot: snapshot })
     .returning({ id: trials.id });
   return trial!.id;
+}
+
+/** A NAO6 at `rosbridgeUrl` registered for the study (named `robotName`), and a trial of one line ("hi") on it. */
+export async function naoTrialOf(
+  db: Database,
+  input: { studyId: string; wizardId: string; rosbridgeUrl: string; robotName: string },
+): Promise<string> {
+  const { studyId, wizardId, rosbridgeUrl, robotName } = input;
+  const [robot] = await db
+    .insert(robots)
+    .values({ name: robotName, pluginRobotId: "nao6-ros2", rosbridgeUrl })
+    .returning();
+  await db.insert(robotStudies).values({ robotId: robot!.id, studyId });
+  const snapshot: ProtocolSnapshot = {
+    schemaVersion: 5,
+    experiment: { id: "e", name: "E", description: "", robotId: "nao6-ros2" },
+    steps: [
+      {
+        id: "s0",
+        name: "Hello",
+        description: "",
+        actions: [{ id: "hi", type: "say", name: "", parameters: { text: "hi" }, parallelGroup: null }],
+      },
+    ],
+  };
+  return trialOf(db, { studyId, wizardId, snapshot, withParticipant: true });
 }
