@@ -37,7 +37,7 @@ afterAll(async () => {
 });
 
 const frames = (s: TrialSocket) => s.messages.filter((m) => m.type === "camera").length;
-/** Frames this socket receives from now until `more` more have come, or none if it gets none. */
+/** Resolves once this socket has received `more` frames from now; fails after 10 s without them. */
 const moreFrames = (s: TrialSocket, more: number) => {
   const from = frames(s);
   return s.next(() => frames(s) >= from + more, 10_000);
@@ -67,7 +67,7 @@ it("sends the robot's camera only to the pages that show it, and asks the robot 
   const observerId = await person("Observer", "observer");
   const trialId = await naoTrialOf(db, {
     studyId: study!.id,
-    wizardId: wizardId,
+    wizardId,
     rosbridgeUrl: sim.url,
     robotName: "NAO",
   });

@@ -4,6 +4,7 @@
 // and its wizard are the test's own.
 import type { ProtocolSnapshot } from "../../src/core/protocol/document";
 import type { Database } from "../../src/store/client";
+import { oneStep } from "./protocols";
 import { experimentVersions, experiments, participants, robotStudies, robots, trials } from "../../src/store/schema";
 
 export async function trialOf(
@@ -53,17 +54,6 @@ export async function naoTrialOf(
     .values({ name: robotName, pluginRobotId: "nao6-ros2", rosbridgeUrl })
     .returning();
   await db.insert(robotStudies).values({ robotId: robot!.id, studyId });
-  const snapshot: ProtocolSnapshot = {
-    schemaVersion: 5,
-    experiment: { id: "e", name: "E", description: "", robotId: "nao6-ros2" },
-    steps: [
-      {
-        id: "s0",
-        name: "Hello",
-        description: "",
-        actions: [{ id: "hi", type: "say", name: "", parameters: { text: "hi" }, parallelGroup: null }],
-      },
-    ],
-  };
+  const snapshot = oneStep([{ id: "hi", type: "say", parameters: { text: "hi" } }]);
   return trialOf(db, { studyId, wizardId, snapshot, withParticipant: true });
 }
