@@ -77,22 +77,27 @@ describe("the event relay", async () => {
 
   it("reads again at the next notice after a read of the log failed, and the failure ends nothing", async () => {
     // The log's reads fail while `failing` (as PostgreSQL shutting down answers); the rest is the database as it is.
-    let failing = false;
+    // Failing from the start and counted: the follower's first read and the two notices' reads are all refused
+    // before the reads succeed again, however slowly the machine runs them (a first read let through once ran
+    // after both writes had committed, under CI's load, and gave them).
+    let failing = true;
+    let refused = 0;
     const real = db.$client;
     const flaky = Object.assign(Object.create(db) as typeof db, {
-      $client: ((...args: Parameters<typeof real>) =>
-        failing
-          ? Promise.reject(Object.assign(new Error("shutting down"), { code: "57P03" }))
-          : real(...args)) as typeof real,
+      $client: ((...args: Parameters<typeof real>) => {
+        if (!failing) return real(...args);
+        refused++;
+        return Promise.reject(Object.assign(new Error("shutting down"), { code: "57P03" }));
+      }) as typeof real,
     });
     const own = await eventRelay(flaky, sql);
     const trialId = await bareTrial(db);
     const heard: StoredEvent[][] = [];
     own.follow(trialId, 0, (events) => heard.push(events));
-    failing = true;
     await write(trialId, 0, 2);
-    await new Promise((r) => setTimeout(r, 200));
+    await until(() => refused === 3);
     failing = false;
+    expect(refused).toBe(3);
     expect(seqs(heard)).toEqual([]);
     await write(trialId, 2, 1);
     await until(() => seqs(heard).length === 3);
