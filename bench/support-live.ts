@@ -331,7 +331,15 @@ export async function startLiveBench({
    */
   async function loop(
     trialId: string,
-    options: { line: string; via: string; count: number; onWait?: () => void; beforeStart?: () => Promise<void> },
+    options: {
+      line: string;
+      via: string;
+      count: number;
+      onWait?: () => void;
+      /** The wizard pressed Next as the trial entered "say" by `via`, at this moment of the bench's clock. */
+      onPress?: (at: number) => void;
+      beforeStart?: () => Promise<void>;
+    },
   ) {
     const receipts: number[] = [];
     let done: () => void;
@@ -347,7 +355,9 @@ export async function startLiveBench({
         const press =
           (e.type === "step.entered" && e.stepId === "say" && e.via === options.via) ||
           (e.type === "action.completed" && e.actionId === "line");
-        if (press) void wizard.command({ kind: "next" }).then((refusal) => refusal && refusedPresses++);
+        if (!press) continue;
+        if (e.type === "step.entered") options.onPress?.(performance.now());
+        void wizard.command({ kind: "next" }).then((refusal) => refusal && refusedPresses++);
       }
     });
     await options.beforeStart?.();

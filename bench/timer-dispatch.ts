@@ -7,7 +7,10 @@
 // plus its limit, on the runtime's clock), so it counts the runtime's own
 // timer, the fire's commit, the wizard told, the request's commit and the
 // dispatch. Everything real (see support-live.ts). Takes about 30 s after
-// the database has started.
+// the database has started. Its three parts are printed too, without a
+// target, to show where a slow one lost its time: the fire as logged (whole
+// milliseconds of the runtime's clock), the wizard told of it (the bench's
+// clock; one machine, one wall clock), and the wizard's Next to the robot.
 import type { ProtocolSnapshot } from "../src/core/protocol/document";
 import { eventsSince } from "../src/store/event-store";
 import { report } from "./support";
@@ -30,10 +33,12 @@ const steps: ProtocolSnapshot["steps"] = [
 // The robot says its line at once: the speaking would set the pace, not what is measured.
 const live = await startLiveBench({ steps, msPerChar: 0 });
 const trial = await live.newTrial();
+const told: number[] = [];
 const { receipts, seconds, refusedPresses } = await live.loop(trial.id, {
   line: LINE,
   via: "timeout",
   count: FIRES + WARM_UP,
+  onPress: (at) => told.push(at),
 });
 
 const log = await eventsSince(live.db, trial.id);
@@ -46,8 +51,25 @@ const due = log
   });
 // The k-th line follows the k-th time limit; the first few warm the runtime and the socket.
 // Receipts on the wall clock, as the runtime's due times are.
-const lateness = receipts.slice(WARM_UP).map((at, k) => performance.timeOrigin + at - due[WARM_UP + k]!);
+const wall = (at: number) => performance.timeOrigin + at;
+const lateness = receipts.slice(WARM_UP).map((at, k) => wall(at) - due[WARM_UP + k]!);
+const fired = log
+  .filter((e) => e.type === "step.entered" && "via" in e && e.via === "timeout")
+  .map((e) => t0 + e.relMs!);
+const counted = (parts: (k: number) => number) => Array.from({ length: FIRES }, (_, i) => parts(WARM_UP + i));
 report("time limit due → next action received by the robot", lateness, 10);
+report(
+  "  of which: due → the fire logged (whole ms)",
+  counted((k) => fired[k]! - due[k]!),
+);
+report(
+  "  of which: the fire logged → the wizard told",
+  counted((k) => wall(told[k]!) - fired[k]!),
+);
+report(
+  "  of which: the wizard's Next → received by the robot",
+  counted((k) => receipts[k]! - told[k]!),
+);
 console.log(`${"duration of the fires".padEnd(58)} ${seconds.toFixed(1)} s`);
 if (refusedPresses) console.error(`refused Next presses: ${refusedPresses}`);
 await live.stop();
