@@ -41,6 +41,33 @@ describe("a trial's time limits", () => {
     expect(fired[1]!.at).toBeGreaterThanOrEqual(t0 + 60);
   });
 
+  it("fires each of 200 limits of 50 trials once, never before its due time, as a runtime running 50 trials has them", async () => {
+    const fired = new Map<string, number[]>();
+    const t0 = Date.now();
+    const due = new Map<string, number>();
+    for (let trial = 0; trial < 50; trial++) {
+      const limits: Record<string, RunningTimer> = {};
+      for (let k = 0; k < 4; k++) {
+        // Due times spread over 20-119 ms, several on the same millisecond.
+        const ms = 20 + ((trial * 7 + k * 31) % 100);
+        limits[`limit ${k}`] = limit(ms / 1000);
+        due.set(`${trial}/limit ${k}`, t0 + ms);
+      }
+      const t = timers((timerId) => {
+        const id = `${trial}/${timerId}`;
+        fired.set(id, [...(fired.get(id) ?? []), Date.now()]);
+      });
+      t.follow(stateWith(limits), t0);
+    }
+    await until(() => fired.size === 200);
+    await sleep(20);
+    expect(fired.size).toBe(200);
+    for (const [id, at] of fired) {
+      expect(at, id).toHaveLength(1);
+      expect(at[0], id).toBeGreaterThanOrEqual(due.get(id)!);
+    }
+  });
+
   it("fires at once a limit already past (a runtime that opened the trial again after its due time)", async () => {
     const fired: string[] = [];
     const t = timers((timerId) => fired.push(timerId));

@@ -19,7 +19,7 @@ import { dueMs, type TrialState } from "@/core/trial";
 const WAKE_EARLY_MS = 4;
 
 export class TrialTimers {
-  /** Each armed timer's disarm: a sleeping timer's clearTimeout, or a waiting one's clearImmediate. */
+  /** Each armed timer's disarm: asleep or awake and waiting, it then never fires. */
   private readonly armed = new Map<string, () => void>();
 
   constructor(private readonly fire: (timerId: string) => void) {}
@@ -52,16 +52,17 @@ export class TrialTimers {
 
   /** Sleeps until just before `at`, then waits on the event loop (other work goes between) until it is here. */
   private arm(timerId: string, at: number) {
+    let armed = true;
     const onTime = () => {
-      if (Date.now() < at) {
-        const waiting = setImmediate(onTime);
-        this.armed.set(timerId, () => clearImmediate(waiting));
-        return;
-      }
+      if (!armed) return;
+      if (Date.now() < at) return void setImmediate(onTime);
       this.armed.delete(timerId);
       this.fire(timerId);
     };
     const sleeping = setTimeout(onTime, Math.max(0, at - WAKE_EARLY_MS - Date.now()));
-    this.armed.set(timerId, () => clearTimeout(sleeping));
+    this.armed.set(timerId, () => {
+      armed = false;
+      clearTimeout(sleeping);
+    });
   }
 }
