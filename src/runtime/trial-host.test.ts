@@ -321,6 +321,101 @@ describe("a live trial host", async () => {
     await other.close();
   });
 
+  /** A robot that reports only when the test tells it to, on the last action it was asked to perform. */
+  const toldRobot = () => {
+    const robot = { tell: (_report: RobotReport) => {} };
+    const link: RobotLink = { ...timekeeperRobot(), perform: (_, report) => void (robot.tell = report) };
+    return { robot, link };
+  };
+
+  it("carries the robot's reports that wait in the next command's append: the next line and the last one's outcomes, one commit", async () => {
+    const trialId = await newTrialId();
+    const { robot, link } = toldRobot();
+    const host = await TrialHost.open(db, trialId, protocol, link);
+    await host.command({ kind: "start" }, null);
+    await host.command(say("one"), null);
+    robot.tell({ kind: "dispatched", actionId: "one" });
+    robot.tell({ kind: "completed", actionId: "one" });
+    // The wizard's next line, straight after: the answer names its own events only.
+    expect(await host.command(say("two"), null)).toEqual({ ok: true, seqs: [6] });
+    expect((await eventsSince(db, trialId)).slice(2).map((e) => [e.seq, e.type, e.actionId])).toEqual([
+      [3, "action.requested", "one"],
+      [4, "action.dispatched", "one"],
+      [5, "action.completed", "one"],
+      [6, "action.requested", "two"],
+    ]);
+    const [, , requested, dispatched, completed, next] = await transactions(trialId);
+    expect([completed, next]).toEqual([dispatched, dispatched]);
+    expect(requested).not.toBe(dispatched);
+    expect(host.current.actions.one?.status).toBe("done");
+    await host.close();
+  });
+
+  it("leaves the reports waiting when the command is refused: they go in an append of their own", async () => {
+    const trialId = await newTrialId();
+    const { robot, link } = toldRobot();
+    const host = await TrialHost.open(db, trialId, protocol, link);
+    await host.command({ kind: "start" }, null);
+    await host.command(say("one"), null);
+    robot.tell({ kind: "dispatched", actionId: "one" });
+    expect(await host.command({ kind: "jump", stepId: "s1" }, null)).toEqual({
+      ok: false,
+      reason: "The trial is already at that step.",
+    });
+    await settle(host, () => host.current.actions.one?.status === "running");
+    expect((await eventsSince(db, trialId)).slice(2).map((e) => [e.type, e.actionId])).toEqual([
+      ["action.requested", "one"],
+      ["action.dispatched", "one"],
+    ]);
+    await host.close();
+  });
+
+  it("logs the robot's reports that wait as the host closes: they came while it ran the trial", async () => {
+    const trialId = await newTrialId();
+    const { robot, link } = toldRobot();
+    const host = await TrialHost.open(db, trialId, protocol, link);
+    await host.command({ kind: "start" }, null);
+    await host.command(say("one"), null);
+    robot.tell({ kind: "dispatched", actionId: "one" });
+    await host.close();
+    // After the close: not from here.
+    robot.tell({ kind: "completed", actionId: "one" });
+    await new Promise((r) => setTimeout(r, 20));
+    expect((await eventsSince(db, trialId)).slice(2).map((e) => [e.type, e.actionId])).toEqual([
+      ["action.requested", "one"],
+      ["action.dispatched", "one"],
+    ]);
+  });
+
+  it("writes the reports a command carried that met an earlier write landed late: the log holds them", async () => {
+    const trialId = await newTrialId();
+    // Refused at once, committed a moment later: as a statement sent just before its connection broke.
+    const ghost = withNextAppend((append) => {
+      setTimeout(() => void append(), 100);
+      return Promise.reject(Object.assign(new Error("write CONNECTION_CLOSED"), { code: "CONNECTION_CLOSED" }));
+    });
+    const { robot, link } = toldRobot();
+    const host = await TrialHost.open(ghost.db, trialId, protocol, link);
+    await host.command({ kind: "start" }, null);
+    await host.command(say("one"), null);
+    ghost.arm();
+    await expect(host.command(say("ghost-line"), null)).rejects.toThrow("CONNECTION_CLOSED");
+    await expect.poll(async () => (await eventsSince(db, trialId)).length).toBe(4);
+    robot.tell({ kind: "dispatched", actionId: "one" });
+    expect(await host.command({ kind: "note", text: "after" }, null)).toEqual({
+      ok: false,
+      reason: expect.stringMatching(/^Not carried out: an earlier command reached the trial log late/),
+    });
+    await settle(host, () => host.current.actions["ghost-line"]?.status === "not_sent");
+    expect((await eventsSince(db, trialId)).slice(2).map((e) => [e.seq, e.type, e.actionId])).toEqual([
+      [3, "action.requested", "one"],
+      [4, "action.requested", "ghost-line"],
+      [5, "action.dispatched", "one"],
+      [6, "action.not_sent", "ghost-line"],
+    ]);
+    await host.close();
+  });
+
   it("carries out a request once, answering the same id again with its first outcome, after a restart too", async () => {
     const trialId = await newTrialId();
     const first = await TrialHost.open(db, trialId, protocol, timekeeperRobot());

@@ -3,7 +3,7 @@
 // tell every client. Robot and clock reports come back as commands too.
 import {
   applyInPlace,
-  decide,
+  decideAfterReports,
   decideReports,
   fold,
   haltsTheRobot,
@@ -139,6 +139,14 @@ const DEADLINE_MARGIN_MS = 250;
 const RESTARTED =
   "The trial runtime restarted while this action was under way: it may have reached the robot and been done.";
 
+/**
+ * How long the robot's reports wait for a command to carry them before they go in an append of their own. A
+ * wizard going line after line gives the next a moment after the last one's answer, as the robot reports
+ * the dispatch: one commit then carries both, where two in turn held the next line back. A report is
+ * logged this much later at most.
+ */
+const REPORTS_WAIT_MS = 2;
+
 /** A timer this late means the process itself was stalled (frozen, or starved of the processor). */
 const STALL_SLACK_MS = 1000;
 
@@ -185,8 +193,10 @@ export class TrialHost {
   private t0: number | null;
   /** The log as read to open the trial, kept up to date, until the hello that opened it takes it. */
   private opening: StoredEvent[] | null;
-  /** The robot's reports waiting for their append to be made up: any that come before it is, join it. */
+  /** The robot's reports waiting for their append to be made up (a command's, or their own): any that come before it is, join it. */
   private reports: RobotReport[] | null = null;
+  /** When the reports waiting stop waiting for a command and go in their own append. */
+  private reportsDue: ReturnType<typeof setTimeout> | undefined;
   /** Each request's outcome by its id, so a request sent again is answered, never carried out twice. */
   private readonly requests = new Map<string, Promise<CommandResult>>();
   /** What the wizard sees of the robot now (speaking, gesture, posture, battery), and who is told of changes. */
@@ -411,9 +421,12 @@ export class TrialHost {
     if (before) return { ok: false, reason: before === "stopped" ? NOT_CARRIED_OUT : LOG_UNAVAILABLE };
     const stale = staleness(command.kind, moment, Date.now());
     if (stale) return { ok: false, reason: this.dropped(command.kind, droppedReason(QUEUE, stale)) };
-    const decision = decide(this.protocol, this.state, command, this.eventNames);
+    // The robot's reports waiting go first, in this command's append; refused, it leaves them waiting.
+    const waiting = this.reports ?? [];
+    const { reports, decision } = decideAfterReports(this.protocol, this.state, waiting, command, this.eventNames);
     if (!decision.ok) return decision;
-    const written = await this.write(() => decision.events, actorId, requestId);
+    if (waiting.length) this.takeReports();
+    const written = await this.write(() => [...reports, ...decision.events], actorId, requestId);
     const halting = haltsTheRobot(command.kind);
     if (written === "fenced") return { ok: false, reason: TAKEN_OVER };
     if (written === "refused") return { ok: false, reason: halting ? STOP_NOT_LOGGED : LOG_UNAVAILABLE };
@@ -421,6 +434,8 @@ export class TrialHost {
     if (written.earlier) {
       // An earlier command the wizard was told had not answered in time, landed late: taken in, never sent.
       this.take(written.events, NOT_SENT.late);
+      // The robot's reports it carried are facts the log must hold: written on their own after it.
+      if (waiting.length) await this.writeReports(waiting);
       // A report of the robot's, or a stop, is a fact the log must hold: written again after it.
       if (ALWAYS_LOGGED.has(command.kind)) return this.execute(command, actorId, requestId, halts, asked, moment);
       return { ok: false, reason: LOG_MOVED };
@@ -443,37 +458,58 @@ export class TrialHost {
       after ? NOT_SENT[after] : staleNow && this.dropped(command.kind, droppedReason(QUEUE, staleNow)),
       moment,
     );
-    return { ok: true, seqs: written.events.map((e) => e.seq) };
+    return { ok: true, seqs: written.events.slice(reports.length).map((e) => e.seq) };
   }
 
   /**
    * What the robot's side reports (dispatched, completed, failed, timed out),
-   * logged in turn like a command, never refused for lateness. Reports that
-   * come until their append is made up (the group writer makes it up as its
-   * commit begins) are decided together and written in that one append: an
-   * action's outcomes that happen together, such as a completion right after
-   * the dispatch, cost one commit, not one each.
+   * logged in turn like a command, never refused for lateness. Reports wait
+   * `REPORTS_WAIT_MS` for a command, whose append carries them; then they go
+   * in the queue for their own. Reports that come until their append is made
+   * up (the group writer makes it up as its commit begins) are decided
+   * together and written in that one append: an action's outcomes that happen
+   * together, such as a completion right after the dispatch, cost one commit,
+   * not one each.
    */
   private report(report: RobotReport) {
+    // Reports after the host closed: the trial is no longer run from here.
+    if (this.shut) return;
     if (report.kind === "dispatched" && report.detail?.playedBy === "browser") this.browserPlays.add(report.actionId);
     if (this.reports) {
       this.reports.push(report);
       return;
     }
-    const together = [report];
-    this.reports = together;
-    const run = this.queue.then(() => this.writeReports(together));
+    this.reports = [report];
+    this.reportsDue = setTimeout(() => this.queueReports(), REPORTS_WAIT_MS);
+  }
+
+  /**
+   * The reports waiting, into the queue for their own append, which they go in unless a command's carried
+   * them first. Those that came while the host was open are written even as it closes, unless another
+   * process has taken the trial: they happened while this one ran it.
+   */
+  private queueReports() {
+    clearTimeout(this.reportsDue);
+    const together = this.reports;
+    if (!together) return;
+    const run = this.queue.then(() => {
+      if (this.reports === together && !this.fenced) return this.writeReports(together);
+    });
     this.queue = run.catch(
       (error: unknown) => void logUnexpected(error, `logging the robot's reports of trial ${this.trialId}`),
     );
+  }
+
+  /** The reports waiting, taken by the append of the command that carries them. */
+  private takeReports() {
+    clearTimeout(this.reportsDue);
+    this.reports = null;
   }
 
   private async writeReports(together: RobotReport[]): Promise<void> {
     const seal = () => {
       if (this.reports === together) this.reports = null;
     };
-    // Reports after the host closed: the trial is no longer run from here.
-    if (this.shut) return seal();
     const written = await this.write(
       () => {
         seal();
@@ -659,6 +695,7 @@ export class TrialHost {
   }
 
   async close() {
+    this.queueReports();
     this.shut = true;
     // Its clients still follow the trial, from whichever process runs it now.
     const moved = [...this.listeners.values()];

@@ -2,7 +2,7 @@
 // the wizard can read. Pure: the runtime supplies ids, clock and robot.
 import { actionName } from "../designer/action-name";
 import { type EventNames, NO_EVENT_NAMES } from "../plugins/event-names";
-import { applyInPlace } from "./fold";
+import { applyInPlace, readThrough } from "./fold";
 import { exitNow, follow, loopName } from "./loops";
 import { answerOptions, branchTarget, findAction, findStep, nextUnit } from "./protocol";
 import { FINISHED, timerFired, withTimers } from "./timers";
@@ -242,6 +242,27 @@ export function decideReports(
   }
   // A question's clock starts once the actions before it are reported done.
   return events.length ? withTimers(protocol, state, events) : events;
+}
+
+/**
+ * A command, and the robot's reports that came before it and wait for their
+ * append: the reports' events first (they happened first), then the
+ * command's, decided as if the reports' were in the log already (a pause
+ * reported over lets the wizard go on). The reports' events stand even when
+ * the command is refused.
+ */
+export function decideAfterReports(
+  protocol: TrialProtocol,
+  state: TrialState,
+  reports: readonly RobotReportCommand[],
+  command: Command,
+  names: EventNames = NO_EVENT_NAMES,
+): { reports: EngineEvent[]; decision: Decision } {
+  const logged = reports.length ? decideReports(protocol, state, reports) : [];
+  return {
+    reports: logged,
+    decision: decide(protocol, logged.length ? readThrough(state, logged) : state, command, names),
+  };
 }
 
 function robotReport(state: TrialState, command: RobotReportCommand): Decision {

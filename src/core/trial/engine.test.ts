@@ -3,6 +3,7 @@ import {
   apply,
   applyAll,
   applyInPlace,
+  decideAfterReports,
   decideReports,
   fold,
   simulate,
@@ -378,6 +379,99 @@ describe("robot reports that came together", () => {
       { kind: "dispatched", actionId: "hello" },
       { kind: "completed", actionId: "hello" },
     ]);
+    expect(state).toEqual(before);
+  });
+});
+
+describe("a command with the robot's reports that wait for their append", () => {
+  // Each case: the log so far, the reports waiting, the command.
+  it.each<[string, Command[], RobotReportCommand[], Command, unknown]>([
+    [
+      "the pause reported over lets the wizard go on, in the same append",
+      [...introDone, { kind: "next" }, { kind: "next" }],
+      [
+        { kind: "dispatched", actionId: "hold" },
+        { kind: "completed", actionId: "hold" },
+      ],
+      { kind: "next" },
+      [
+        ["action.dispatched", "hold", null],
+        ["action.completed", "hold", null],
+        ["action.requested", "ask", null],
+      ],
+    ],
+    [
+      "the last line's outcomes, then the wizard's next line",
+      [...start, { kind: "next" }],
+      [
+        { kind: "dispatched", actionId: "hello" },
+        { kind: "completed", actionId: "hello" },
+      ],
+      { kind: "unscripted", actionId: "ad-lib", actionType: "say", parameters: { text: "Hm." } },
+      [
+        ["action.dispatched", "hello", null],
+        ["action.completed", "hello", null],
+        ["action.requested", "ad-lib", "unscripted"],
+      ],
+    ],
+    [
+      "a report on an action already finished is left out, the command goes on",
+      [...introDone],
+      [{ kind: "completed", actionId: "hello" }],
+      { kind: "note", text: "fine" },
+      [["note.added", null, null]],
+    ],
+    [
+      "no reports: the command alone",
+      [...start],
+      [],
+      { kind: "next" },
+      [
+        ["action.requested", "hello", null],
+        ["action.requested", "wave", null],
+      ],
+    ],
+  ])("%s", (_name, before, reports, command, expected) => {
+    const { state, log } = run(before);
+    const { reports: logged, decision } = decideAfterReports(protocol, state, reports, command);
+    expect(decision.ok).toBe(true);
+    const events = [...logged, ...(decision.ok ? decision.events : [])];
+    expect(brief(events)).toEqual(expected);
+    // The same events as the reports logged first, each in turn, then the command decided after them.
+    const inTurn = simulate(protocol, [...before, ...reports, command]).log.slice(log.length);
+    expect(events).toEqual(inTurn.map(({ seq: _, relMs: __, ...event }) => event));
+  });
+
+  it("keeps the reports' events when the command is refused, refused as it would be after them", () => {
+    const { state } = run([...start, { kind: "next" }]);
+    const { reports, decision } = decideAfterReports(protocol, state, [{ kind: "dispatched", actionId: "hello" }], {
+      kind: "jump",
+      stepId: "intro",
+    });
+    expect(brief(reports)).toEqual([["action.dispatched", "hello", null]]);
+    expect(decision).toEqual({ ok: false, reason: "The trial is already at that step." });
+  });
+
+  it("refuses what only the reports allow when they are not there: the pause still running", () => {
+    const { state } = run([...introDone, { kind: "next" }, { kind: "next" }]);
+    expect(decideAfterReports(protocol, state, [], { kind: "next" }).decision).toEqual({
+      ok: false,
+      reason: "Wait: the 2 s pause is still running.",
+    });
+  });
+
+  it("leaves the state it was given as it was", () => {
+    const { state } = run([...introDone, { kind: "next" }, { kind: "next" }]);
+    const before = structuredClone(state);
+    decideAfterReports(
+      protocol,
+      state,
+      [
+        { kind: "dispatched", actionId: "hold" },
+        { kind: "completed", actionId: "hold" },
+      ],
+      { kind: "next" },
+    );
     expect(state).toEqual(before);
   });
 });

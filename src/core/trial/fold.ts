@@ -3,7 +3,7 @@
 // a batch copies the state once and then changes the copy in place, so a
 // trial of 100k events (most of them unscripted lines, each its own action)
 // never copies its growing map of actions once per event.
-import type { ActionStatus, TrialEvent, TrialProtocol, TrialState } from "./types";
+import type { ActionStatus, EngineEvent, TrialEvent, TrialProtocol, TrialState } from "./types";
 
 const WAITING = { status: "waiting", requestedAt: null, finishedAt: null } as const;
 
@@ -50,6 +50,27 @@ export function applyAll(state: TrialState, events: readonly TrialEvent[]): Tria
  */
 export function applyInPlace(state: TrialState, events: readonly TrialEvent[]): void {
   for (const event of events) advance(state, event);
+}
+
+/**
+ * The state after `events` decided but not yet stored (no seq, no time), for a decision to read. It reads
+ * through to `state`'s actions rather than copy them all: the live host's cost per command must not grow
+ * with the trial. `state` itself is left as it was.
+ */
+export function readThrough(state: TrialState, events: readonly EngineEvent[]): TrialState {
+  const after: TrialState = {
+    ...state,
+    actions: Object.create(state.actions),
+    answers: { ...state.answers },
+    path: [...state.path],
+    timers: { ...state.timers },
+    loops: { ...state.loops },
+  };
+  applyInPlace(
+    after,
+    events.map((event) => ({ ...event, seq: state.lastSeq, relMs: null })),
+  );
+  return after;
 }
 
 export function apply(state: TrialState, event: TrialEvent): TrialState {

@@ -1,4 +1,4 @@
-export { decide, decideReports, type RobotReportCommand } from "./decide";
+export { decide, decideAfterReports, decideReports, type RobotReportCommand } from "./decide";
 export { apply, applyAll, applyInPlace, fold, initialState } from "./fold";
 export { answerOptions, nextUnit } from "./protocol";
 export { actionProblems } from "./problems";

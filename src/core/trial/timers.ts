@@ -4,7 +4,7 @@
 // due and cancelling those they ended: the wizard acting first cancels a
 // timer in the same append, and a cancelled or fired timer never fires.
 import { type Exit, exitBy, TIMED_BLOCKS } from "../protocol/flow";
-import { applyInPlace } from "./fold";
+import { readThrough } from "./fold";
 import { follow, loopName, timesTaken } from "./loops";
 import { findAction, findStep } from "./protocol";
 import type { Decision, EngineEvent, RunningTimer, TrialProtocol, TrialState } from "./types";
@@ -63,19 +63,7 @@ export function remainingMs(timer: RunningTimer, state: TrialState, nowMs: numbe
 
 /** `events` (decided on `state`) followed by the timers they cancel and start. */
 export function withTimers(protocol: TrialProtocol, state: TrialState, events: EngineEvent[]): EngineEvent[] {
-  // Read through to `state`'s actions rather than copy them all: the live host's cost per command must not grow with the trial.
-  const after: TrialState = {
-    ...state,
-    actions: Object.create(state.actions),
-    answers: { ...state.answers },
-    path: [...state.path],
-    timers: { ...state.timers },
-    loops: { ...state.loops },
-  };
-  applyInPlace(
-    after,
-    events.map((event) => ({ ...event, seq: state.lastSeq, relMs: null })),
-  );
+  const after = readThrough(state, events);
   const due = timersDue(protocol, after);
   const cancelled: EngineEvent[] = Object.keys(after.timers)
     .filter((timerId) => !due.has(timerId))
