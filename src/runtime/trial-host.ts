@@ -558,8 +558,9 @@ export class TrialHost {
     this.t0 ??= startedAt(stored);
     if (withheld) this.withhold(stored, withheld);
     else this.carryOut(stored, moment);
-    // Armed from their logged start, so arming after the robot is told changes no due time.
-    this.limits.follow(this.state, this.t0);
+    // Armed from their logged start, so arming after the robot is told changes no due time. None once the
+    // host has closed (the reports it had, written as it closed, may start a question's clock).
+    if (!this.shut) this.limits.follow(this.state, this.t0);
     for (const listener of this.listeners.keys()) listener(stored);
     if (this.state.status === "completed" || this.state.status === "aborted") this.lifecycle.ended();
   }
