@@ -103,6 +103,59 @@ describe("the trial event store", async () => {
     ]);
   });
 
+  it("stores every column as given, whatever the text holds, for 40 trials of 1 to 7 events in one append", async () => {
+    const awkward = [
+      'say "hi"',
+      "back\\slash",
+      "{braces}, commas",
+      "null",
+      "NULL",
+      "",
+      "naïve ☃ 日本",
+      "two\nlines",
+      "'",
+    ];
+    const ids = await Promise.all(Array.from({ length: 40 }, () => newTrial()));
+    const appends = await Promise.all(
+      ids.map(async (id, t) => ({
+        cursor: await cursor(id),
+        actorId: null,
+        requestId: t % 2 ? `request-${t}` : null,
+        events: [
+          { type: "trial.started" as const },
+          ...Array.from({ length: t % 7 }, (_, i) => ({
+            type: "action.requested" as const,
+            stepId: i % 3 ? "s1" : null,
+            actionId: `${awkward[(t + i) % awkward.length]}-${i}`,
+            actionType: "say",
+            parameters: { text: awkward[(t + i) % awkward.length]!, volume: 0.5 },
+            scripted: false,
+            ...(i % 2 ? { deviation: "unscripted" as const } : {}),
+          })),
+        ],
+      })),
+    );
+    const stored = await appendMany(db, appends);
+    for (const [t, id] of ids.entries()) {
+      expect(await eventsSince(db, id)).toEqual(stored[t]);
+      expect(
+        stored[t]!.map(({ seq, relMs, trialId, serverTime: _, actorId: __, ...event }) => [seq, relMs, trialId, event]),
+      ).toEqual(appends[t]!.events.map((event, i) => [i + 1, 0, id, event]));
+    }
+    const columns = await sql<
+      Array<{ step_id: string | null; action_id: string | null; deviation: boolean; request_id: string | null }>
+    >`
+      select step_id, action_id, deviation, request_id from trial_events where trial_id = ${ids[13]!} order by seq`;
+    expect(columns).toEqual(
+      appends[13]!.events.map((event) => ({
+        step_id: "stepId" in event ? event.stepId : null,
+        action_id: "actionId" in event ? event.actionId : null,
+        deviation: "deviation" in event,
+        request_id: "request-13",
+      })),
+    );
+  });
+
   it("reads the log as the fold reads it: each event's body, seq and time since t0, nothing each event repeats", async () => {
     const trialId = await newTrial();
     const now = () => new Date("2026-01-01T10:00:00Z");
