@@ -330,12 +330,18 @@ describe("a live trial host", async () => {
     return { robot, link };
   };
 
-  it("carries the robot's reports that wait in the next command's append: the next line and the last one's outcomes, one commit", async () => {
+  /** A trial started on a told robot, its line "one" logged and sent: the robot has reported nothing yet. */
+  const oneLineSaid = async (database = db) => {
     const trialId = await newTrialId();
     const { robot, link } = toldRobot();
-    const host = await TrialHost.open(db, trialId, protocol, link);
+    const host = await TrialHost.open(database, trialId, protocol, link);
     await host.command({ kind: "start" }, null);
     await host.command(say("one"), null);
+    return { trialId, robot, host };
+  };
+
+  it("carries the robot's reports that wait in the next command's append: the next line and the last one's outcomes, one commit", async () => {
+    const { trialId, robot, host } = await oneLineSaid();
     robot.tell({ kind: "dispatched", actionId: "one" });
     robot.tell({ kind: "completed", actionId: "one" });
     // The wizard's next line, straight after: the answer names its own events only.
@@ -354,11 +360,7 @@ describe("a live trial host", async () => {
   });
 
   it("leaves the reports waiting when the command is refused: they go in an append of their own", async () => {
-    const trialId = await newTrialId();
-    const { robot, link } = toldRobot();
-    const host = await TrialHost.open(db, trialId, protocol, link);
-    await host.command({ kind: "start" }, null);
-    await host.command(say("one"), null);
+    const { trialId, robot, host } = await oneLineSaid();
     robot.tell({ kind: "dispatched", actionId: "one" });
     expect(await host.command({ kind: "jump", stepId: "s1" }, null)).toEqual({
       ok: false,
@@ -373,11 +375,7 @@ describe("a live trial host", async () => {
   });
 
   it("logs the robot's reports that wait as the host closes: they came while it ran the trial", async () => {
-    const trialId = await newTrialId();
-    const { robot, link } = toldRobot();
-    const host = await TrialHost.open(db, trialId, protocol, link);
-    await host.command({ kind: "start" }, null);
-    await host.command(say("one"), null);
+    const { trialId, robot, host } = await oneLineSaid();
     robot.tell({ kind: "dispatched", actionId: "one" });
     await host.close();
     // After the close: not from here.
@@ -390,16 +388,12 @@ describe("a live trial host", async () => {
   });
 
   it("writes the reports a command carried that met an earlier write landed late: the log holds them", async () => {
-    const trialId = await newTrialId();
     // Refused at once, committed a moment later: as a statement sent just before its connection broke.
     const ghost = withNextAppend((append) => {
       setTimeout(() => void append(), 100);
       return Promise.reject(Object.assign(new Error("write CONNECTION_CLOSED"), { code: "CONNECTION_CLOSED" }));
     });
-    const { robot, link } = toldRobot();
-    const host = await TrialHost.open(ghost.db, trialId, protocol, link);
-    await host.command({ kind: "start" }, null);
-    await host.command(say("one"), null);
+    const { trialId, robot, host } = await oneLineSaid(ghost.db);
     ghost.arm();
     await expect(host.command(say("ghost-line"), null)).rejects.toThrow("CONNECTION_CLOSED");
     await expect.poll(async () => (await eventsSince(db, trialId)).length).toBe(4);
