@@ -1,6 +1,7 @@
 import { afterAll, describe, expect, it } from "vitest";
 import { bareTrial, freshDatabase } from "../../tests/support/db";
-import { eventsSince, takeTrial } from "@/store/event-store";
+import { answeredRequests, eventsSince, takeTrial } from "@/store/event-store";
+import { user } from "@/store/schema";
 import type { StoredEvent, TrialProtocol } from "@/core/trial";
 import { groupWriter } from "./log-writer";
 import type { RobotLink, RobotReport } from "./robot";
@@ -342,16 +343,22 @@ describe("a live trial host", async () => {
 
   it("carries the robot's reports that wait in the next command's append: the next line and the last one's outcomes, one commit", async () => {
     const { trialId, robot, host } = await oneLineSaid();
+    const [wizard] = await db
+      .insert(user)
+      .values({ id: `w-${trialId}`, name: "Wizard", email: `${trialId}@example.org` })
+      .returning();
     robot.tell({ kind: "dispatched", actionId: "one" });
     robot.tell({ kind: "completed", actionId: "one" });
     // The wizard's next line, straight after: the answer names its own events only.
-    expect(await host.command(say("two"), null)).toEqual({ ok: true, seqs: [6] });
-    expect((await eventsSince(db, trialId)).slice(2).map((e) => [e.seq, e.type, actionOf(e)])).toEqual([
-      [3, "action.requested", "one"],
-      [4, "action.dispatched", "one"],
-      [5, "action.completed", "one"],
-      [6, "action.requested", "two"],
+    expect(await host.command(say("two"), wizard!.id, { id: "request-two" })).toEqual({ ok: true, seqs: [6] });
+    // The reports are the robot's, by no one and answering no request, as in an append of their own.
+    expect((await eventsSince(db, trialId)).slice(2).map((e) => [e.seq, e.type, actionOf(e), e.actorId])).toEqual([
+      [3, "action.requested", "one", null],
+      [4, "action.dispatched", "one", null],
+      [5, "action.completed", "one", null],
+      [6, "action.requested", "two", wizard!.id],
     ]);
+    expect(await answeredRequests(db, trialId)).toEqual(new Map([["request-two", [6]]]));
     const [, , requested, dispatched, completed, next] = await transactions(trialId);
     expect([completed, next]).toEqual([dispatched, dispatched]);
     expect(requested).not.toBe(dispatched);

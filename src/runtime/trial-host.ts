@@ -427,7 +427,7 @@ export class TrialHost {
     const { reports, decision } = decideAfterReports(this.protocol, this.state, waiting, command, this.eventNames);
     if (!decision.ok) return decision;
     if (waiting.length) this.takeReports();
-    const written = await this.write(() => [...reports, ...decision.events], actorId, requestId);
+    const written = await this.write(() => decision.events, actorId, requestId, reports);
     const halting = haltsTheRobot(command.kind);
     if (written === "fenced") return { ok: false, reason: TAKEN_OVER };
     if (written === "refused") return { ok: false, reason: halting ? STOP_NOT_LOGGED : LOG_UNAVAILABLE };
@@ -581,6 +581,8 @@ export class TrialHost {
     decideEvents: () => EngineEvent[],
     actorId: string | null,
     requestId: string | null,
+    /** The robot's reports a command carries: before its events, by no one. */
+    reports: EngineEvent[] = [],
   ): Promise<{ events: StoredEvent[]; earlier: boolean } | "refused" | "unknown" | "fenced"> {
     let cursor: TrialCursor | null = null;
     let events: EngineEvent[] = [];
@@ -592,7 +594,7 @@ export class TrialHost {
         ...(this.ownership ? { epoch: this.ownership.epoch } : {}),
       };
       events = decideEvents();
-      return { cursor, events, actorId, requestId };
+      return { cursor, events, actorId, requestId, reports };
     };
     const unwatch = this.watchWrite();
     try {
@@ -610,7 +612,7 @@ export class TrialHost {
       const landed = await eventsSince(this.db, this.trialId, after).catch(() => null);
       if (landed === null) return "unknown";
       if (landed.length === 0) throw error;
-      return { events: landed, earlier: !areTheseEvents(landed, events) };
+      return { events: landed, earlier: !areTheseEvents(landed, [...reports, ...events]) };
     } finally {
       unwatch();
     }

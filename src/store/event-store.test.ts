@@ -3,6 +3,7 @@ import { afterAll, describe, expect, it } from "vitest";
 import { bareTrial, freshDatabase } from "../../tests/support/db";
 import { trials, user } from "./schema";
 import {
+  answeredRequests,
   appendEvents,
   appendMany,
   eventPages,
@@ -154,6 +155,30 @@ describe("the trial event store", async () => {
         request_id: "request-13",
       })),
     );
+  });
+
+  it("logs the robot's reports a command carries first, by no one and answering no request", async () => {
+    const trialId = await newTrial();
+    const [wizard] = await db
+      .insert(user)
+      .values({ id: `u-${trialId}`, name: "Wizard", email: `${trialId}@example.org` })
+      .returning();
+    await appendEvents(db, await cursor(trialId), [{ type: "trial.started" }], null);
+    const [stored] = await appendMany(db, [
+      {
+        cursor: await cursor(trialId),
+        reports: [{ type: "note.added", text: "the robot's" }],
+        events: [{ type: "note.added", text: "the wizard's" }],
+        actorId: wizard!.id,
+        requestId: "request-1",
+      },
+    ]);
+    expect(stored!.map((e) => [e.seq, e.actorId])).toEqual([
+      [2, null],
+      [3, wizard!.id],
+    ]);
+    expect(await eventsSince(db, trialId, 1)).toEqual(stored);
+    expect(await answeredRequests(db, trialId)).toEqual(new Map([["request-1", [3]]]));
   });
 
   it("reads the log as the fold reads it: each event's body, seq and time since t0, nothing each event repeats", async () => {

@@ -69,6 +69,8 @@ export interface Append {
   events: EngineEvent[];
   actorId: string | null;
   requestId?: string | null;
+  /** The robot's reports a command carries: logged before its events, by no one, answering no request. */
+  reports?: EngineEvent[];
 }
 
 /**
@@ -107,13 +109,14 @@ export async function appendMany(
     epoch: [] as Array<string | null>,
   };
   const notices: string[] = [];
-  const stored = appends.map(({ cursor, events, actorId, requestId }) => {
+  const stored = appends.map(({ cursor, events, actorId, requestId, reports = [] }) => {
     let t0 = cursor.t0;
     let status: string | null = null;
-    const mine = events.map((event, i) => {
+    const mine = [...reports, ...events].map((event, i) => {
       if (event.type === "trial.started") t0 ??= at;
       status = STATUS_AFTER[event.type] ?? status;
-      return rowOf(cursor, i, event, at, t0, actorId, requestId ?? null);
+      const ours = i >= reports.length;
+      return rowOf(cursor, i, event, at, t0, ours ? actorId : null, ours ? (requestId ?? null) : null);
     });
     if (mine.length) {
       rows.push(...mine.map((r) => ({ ...r, payload: JSON.stringify(r.payload) })));
