@@ -1,7 +1,6 @@
 import { afterAll, describe, expect, it } from "vitest";
-import { bareTrial, freshDatabase } from "../../tests/support/db";
+import { bareTrial, bareWizard, freshDatabase } from "../../tests/support/db";
 import { answeredRequests, eventsSince, takeTrial } from "@/store/event-store";
-import { user } from "@/store/schema";
 import type { StoredEvent, TrialProtocol } from "@/core/trial";
 import { groupWriter } from "./log-writer";
 import type { RobotLink, RobotReport } from "./robot";
@@ -331,38 +330,54 @@ describe("a live trial host", async () => {
     return { robot, link };
   };
 
-  /** A trial started on a told robot, its line "one" logged and sent: the robot has reported nothing yet. */
+  /**
+   * A trial started on a told robot by a wizard going back to back (so the robot's reports wait for the next
+   * command), its line "one" logged and sent: the robot has reported nothing yet.
+   */
   const oneLineSaid = async (database = db) => {
-    const trialId = await newTrialId();
+    const [trialId, wizard] = [await newTrialId(), await bareWizard(db)];
     const { robot, link } = toldRobot();
     const host = await TrialHost.open(database, trialId, protocol, link);
-    await host.command({ kind: "start" }, null);
-    await host.command(say("one"), null);
-    return { trialId, robot, host };
+    // The line asked for before the start is answered: back to back, whatever the machine's pace.
+    await Promise.all([host.command({ kind: "start" }, wizard), host.command(say("one"), wizard)]);
+    return { trialId, wizard, robot, host };
   };
 
   it("carries the robot's reports that wait in the next command's append: the next line and the last one's outcomes, one commit", async () => {
-    const { trialId, robot, host } = await oneLineSaid();
-    const [wizard] = await db
-      .insert(user)
-      .values({ id: `w-${trialId}`, name: "Wizard", email: `${trialId}@example.org` })
-      .returning();
+    const { trialId, wizard, robot, host } = await oneLineSaid();
     robot.tell({ kind: "dispatched", actionId: "one" });
     robot.tell({ kind: "completed", actionId: "one" });
     // The wizard's next line, straight after: the answer names its own events only.
-    expect(await host.command(say("two"), wizard!.id, { id: "request-two" })).toEqual({ ok: true, seqs: [6] });
+    expect(await host.command(say("two"), wizard, { id: "request-two" })).toEqual({ ok: true, seqs: [6] });
     // The reports are the robot's, by no one and answering no request, as in an append of their own.
     expect((await eventsSince(db, trialId)).slice(2).map((e) => [e.seq, e.type, actionOf(e), e.actorId])).toEqual([
-      [3, "action.requested", "one", null],
+      [3, "action.requested", "one", wizard],
       [4, "action.dispatched", "one", null],
       [5, "action.completed", "one", null],
-      [6, "action.requested", "two", wizard!.id],
+      [6, "action.requested", "two", wizard],
     ]);
     expect(await answeredRequests(db, trialId)).toEqual(new Map([["request-two", [6]]]));
     const [, , requested, dispatched, completed, next] = await transactions(trialId);
     expect([completed, next]).toEqual([dispatched, dispatched]);
     expect(requested).not.toBe(dispatched);
     expect(host.current.actions.one?.status).toBe("done");
+    await host.close();
+  });
+
+  it("logs the robot's reports at once for a wizard at a human pace: in their own commit, as they came", async () => {
+    const { trialId, wizard, robot, host } = await oneLineSaid();
+    // A moment to think (not a measure of anything: longer than a wizard going back to back takes).
+    await new Promise((r) => setTimeout(r, 20));
+    await host.command(say("two"), wizard);
+    robot.tell({ kind: "dispatched", actionId: "two" });
+    expect(await host.command({ kind: "note", text: "right after" }, wizard)).toMatchObject({ ok: true });
+    expect((await eventsSince(db, trialId)).slice(3).map((e) => [e.seq, e.type])).toEqual([
+      [4, "action.requested"],
+      [5, "action.dispatched"],
+      [6, "note.added"],
+    ]);
+    const [, , , requested, dispatched, note] = await transactions(trialId);
+    expect(new Set([requested, dispatched, note]).size).toBe(3);
     await host.close();
   });
 

@@ -140,11 +140,12 @@ const RESTARTED =
   "The trial runtime restarted while this action was under way: it may have reached the robot and been done.";
 
 /**
- * How long the robot's reports wait for a command to carry them before they go in an append of their own. A
- * wizard going line after line gives the next a moment after the last one's answer, as the robot reports
- * the dispatch: one commit then carries both, where two in turn held the next line back. At 2 ms a line
- * slower than that still met its reports' commit under way now and then (the queue's wait p99 1.0-1.4 ms,
- * 0.04 at 5). A report is logged this much later at most: a few milliseconds, within a commit's own spread.
+ * A wizard giving commands back to back (each within this long of the answer to the last): the robot's
+ * reports wait this long for the next command, whose append carries them. The next line comes a moment after
+ * the last one's answer, as the robot reports its dispatch: one commit then carries both, where two in turn
+ * held the next line back. At 2 ms a line slower than that still met its reports' commit under way now and
+ * then (the queue's wait p99 1.0-1.4 ms, 0.04 at 5). A wizard at a human pace never waits on them: their
+ * reports are logged at once, at the time they came, as before.
  */
 const REPORTS_WAIT_MS = 5;
 
@@ -198,6 +199,11 @@ export class TrialHost {
   private reports: RobotReport[] | null = null;
   /** When the reports waiting stop waiting for a command and go in their own append. */
   private reportsDue: ReturnType<typeof setTimeout> | undefined;
+  /**
+   * The wizard's commands not yet answered, when the last was, and whether the latest came back to back:
+   * before the one ahead of it was answered, or within REPORTS_WAIT_MS of its answer.
+   */
+  private readonly pace = { waiting: 0, answeredAt: Number.NEGATIVE_INFINITY, backToBack: false };
   /** Each request's outcome by its id, so a request sent again is answered, never carried out twice. */
   private readonly requests = new Map<string, Promise<CommandResult>>();
   /** What the wizard sees of the robot now (speaking, gesture, posture, battery), and who is told of changes. */
@@ -403,6 +409,15 @@ export class TrialHost {
     const execute = () => this.execute(command, actorId, requestId, halts, asked, moment ?? asked);
     const run = this.queue.then(() => (command.kind === "start" ? this.startGuard(execute) : execute()));
     this.queue = run.catch(() => undefined);
+    if (actorId !== null) {
+      this.pace.backToBack = this.pace.waiting > 0 || asked - this.pace.answeredAt < REPORTS_WAIT_MS;
+      this.pace.waiting++;
+      const answered = () => {
+        this.pace.waiting--;
+        this.pace.answeredAt = Date.now();
+      };
+      void run.then(answered, answered);
+    }
     return ALWAYS_LOGGED.has(command.kind) ? run : answeredBy(run, asked + LOG_DEADLINE_MS + DEADLINE_MARGIN_MS);
   }
 
@@ -464,9 +479,10 @@ export class TrialHost {
 
   /**
    * What the robot's side reports (dispatched, completed, failed, timed out),
-   * logged in turn like a command, never refused for lateness. Reports wait
-   * `REPORTS_WAIT_MS` for a command, whose append carries them; then they go
-   * in the queue for their own. Reports that come until their append is made
+   * logged in turn like a command, never refused for lateness. While the
+   * wizard gives commands back to back, reports wait `REPORTS_WAIT_MS` for the
+   * next, whose append carries them; else (and then) they go in the queue for
+   * their own, which a command's still carries if it comes first. Reports that come until their append is made
    * up (the group writer makes it up as its commit begins) are decided
    * together and written in that one append: an action's outcomes that happen
    * together, such as a completion right after the dispatch, cost one commit,
@@ -481,7 +497,8 @@ export class TrialHost {
       return;
     }
     this.reports = [report];
-    this.reportsDue = setTimeout(() => this.queueReports(), REPORTS_WAIT_MS);
+    if (this.pace.backToBack) this.reportsDue = setTimeout(() => this.queueReports(), REPORTS_WAIT_MS);
+    else this.queueReports();
   }
 
   /**

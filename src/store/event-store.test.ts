@@ -1,7 +1,7 @@
 import { eq } from "drizzle-orm";
 import { afterAll, describe, expect, it } from "vitest";
-import { bareTrial, freshDatabase } from "../../tests/support/db";
-import { trials, user } from "./schema";
+import { bareTrial, bareWizard, freshDatabase } from "../../tests/support/db";
+import { trials } from "./schema";
 import {
   answeredRequests,
   appendEvents,
@@ -80,10 +80,7 @@ describe("the trial event store", async () => {
 
   it("reads back each event as its append gave it: body, seq, time since t0, trial, server time and actor", async () => {
     const trialId = await newTrial();
-    const [wizard] = await db
-      .insert(user)
-      .values({ id: `u-${trialId}`, name: "Wizard", email: `${trialId}@example.org` })
-      .returning();
+    const wizard = await bareWizard(db);
     const now = () => new Date("2026-03-04T05:06:07.089Z");
     const appended = [
       ...(await appendEvents(db, await cursor(trialId), [{ type: "note.added", text: "ready" }], null, { now })),
@@ -91,7 +88,7 @@ describe("the trial event store", async () => {
         db,
         await cursor(trialId),
         [{ type: "trial.started" }, { type: "step.entered", stepId: "s1", via: "start" }],
-        wizard!.id,
+        wizard,
         { now },
       )),
     ];
@@ -99,8 +96,8 @@ describe("the trial event store", async () => {
     expect(read).toEqual(appended);
     expect(read.map((e) => [e.serverTime.toISOString(), e.actorId, e.trialId])).toEqual([
       ["2026-03-04T05:06:07.089Z", null, trialId],
-      ["2026-03-04T05:06:07.089Z", wizard!.id, trialId],
-      ["2026-03-04T05:06:07.089Z", wizard!.id, trialId],
+      ["2026-03-04T05:06:07.089Z", wizard, trialId],
+      ["2026-03-04T05:06:07.089Z", wizard, trialId],
     ]);
   });
 
@@ -159,23 +156,20 @@ describe("the trial event store", async () => {
 
   it("logs the robot's reports a command carries first, by no one and answering no request", async () => {
     const trialId = await newTrial();
-    const [wizard] = await db
-      .insert(user)
-      .values({ id: `u-${trialId}`, name: "Wizard", email: `${trialId}@example.org` })
-      .returning();
+    const wizard = await bareWizard(db);
     await appendEvents(db, await cursor(trialId), [{ type: "trial.started" }], null);
     const [stored] = await appendMany(db, [
       {
         cursor: await cursor(trialId),
         reports: [{ type: "note.added", text: "the robot's" }],
         events: [{ type: "note.added", text: "the wizard's" }],
-        actorId: wizard!.id,
+        actorId: wizard,
         requestId: "request-1",
       },
     ]);
     expect(stored!.map((e) => [e.seq, e.actorId])).toEqual([
       [2, null],
-      [3, wizard!.id],
+      [3, wizard],
     ]);
     expect(await eventsSince(db, trialId, 1)).toEqual(stored);
     expect(await answeredRequests(db, trialId)).toEqual(new Map([["request-1", [3]]]));

@@ -1,7 +1,7 @@
 import { inject } from "vitest";
 import postgres from "postgres";
 import { createDatabase, type Database } from "../../src/store/client";
-import { experiments, studies, trials } from "../../src/store/schema";
+import { experiments, studies, trials, user } from "../../src/store/schema";
 import { withDatabase } from "../../src/store/url";
 
 const TEMPLATE_DB = "hristudio_template";
@@ -40,4 +40,11 @@ export async function bareTrial(db: Database): Promise<string> {
     .values({ studyId: study!.id, experimentId: experiment!.id, isRehearsal: true })
     .returning();
   return trial!.id;
+}
+
+/** A wizard straight in the database (no account, no study role): an actor the event store's rows can name. */
+export async function bareWizard(db: Database): Promise<string> {
+  const id = crypto.randomUUID();
+  await db.insert(user).values({ id, name: "Wizard", email: `${id}@example.org` });
+  return id;
 }
