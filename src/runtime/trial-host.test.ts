@@ -366,8 +366,8 @@ describe("a live trial host", async () => {
 
   it("logs the robot's reports at once for a wizard at a human pace: in their own commit, as they came", async () => {
     const { trialId, wizard, robot, host } = await oneLineSaid();
-    // A moment to think (not a measure of anything: longer than a wizard going back to back takes).
-    await new Promise((r) => setTimeout(r, 20));
+    // A moment to think, as a person takes (longer than BACK_TO_BACK_MS; not a measure of anything).
+    await new Promise((r) => setTimeout(r, 150));
     await host.command(say("two"), wizard);
     robot.tell({ kind: "dispatched", actionId: "two" });
     expect(await host.command({ kind: "note", text: "right after" }, wizard)).toMatchObject({ ok: true });

@@ -140,12 +140,19 @@ const RESTARTED =
   "The trial runtime restarted while this action was under way: it may have reached the robot and been done.";
 
 /**
- * A wizard giving commands back to back (each within this long of the answer to the last): the robot's
- * reports wait this long for the next command, whose append carries them. The next line comes a moment after
- * the last one's answer, as the robot reports its dispatch: one commit then carries both, where two in turn
- * held the next line back. At 2 ms a line slower than that still met its reports' commit under way now and
- * then (the queue's wait p99 1.0-1.4 ms, 0.04 at 5). A wizard at a human pace never waits on them: their
- * reports are logged at once, at the time they came, as before.
+ * Commands given back to back: each came within this long of the answer to the one before it, faster than a
+ * person reacts to what the screen shows (a tool, a test, a bench; a wizard clicking twice comes before the
+ * answer). While the wizard's commands come so, the robot's reports wait for the next; at a human pace
+ * they are logged at once, at the time they came.
+ */
+const BACK_TO_BACK_MS = 100;
+
+/**
+ * How long the robot's reports wait for the next of a wizard's commands given back to back, whose append
+ * carries them: the next line comes a moment after the last one's answer, as the robot reports its
+ * dispatch, and one commit then carries both, where two in turn held the next line back. At 2 ms a line
+ * slower than that still met its reports' commit under way now and then (the queue's wait p99 1.0-1.4 ms,
+ * 0.04 at 5).
  */
 const REPORTS_WAIT_MS = 5;
 
@@ -201,7 +208,7 @@ export class TrialHost {
   private reportsDue: ReturnType<typeof setTimeout> | undefined;
   /**
    * The wizard's commands not yet answered, when the last was, and whether the latest came back to back:
-   * before the one ahead of it was answered, or within REPORTS_WAIT_MS of its answer.
+   * before the one ahead of it was answered, or within BACK_TO_BACK_MS of its answer.
    */
   private readonly pace = { waiting: 0, answeredAt: Number.NEGATIVE_INFINITY, backToBack: false };
   /** Each request's outcome by its id, so a request sent again is answered, never carried out twice. */
@@ -410,7 +417,7 @@ export class TrialHost {
     const run = this.queue.then(() => (command.kind === "start" ? this.startGuard(execute) : execute()));
     this.queue = run.catch(() => undefined);
     if (actorId !== null) {
-      this.pace.backToBack = this.pace.waiting > 0 || asked - this.pace.answeredAt < REPORTS_WAIT_MS;
+      this.pace.backToBack = this.pace.waiting > 0 || asked - this.pace.answeredAt < BACK_TO_BACK_MS;
       this.pace.waiting++;
       const answered = () => {
         this.pace.waiting--;
