@@ -381,6 +381,17 @@ describe("a live trial host", async () => {
     await host.close();
   });
 
+  it("logs at once a report long after the last answer (a line's end), though the wizard went back to back", async () => {
+    const { trialId, wizard, robot, host } = await oneLineSaid();
+    // Longer than BACK_TO_BACK_MS after the last answer: such a wizard would have sent the next command by now.
+    await new Promise((r) => setTimeout(r, 150));
+    robot.tell({ kind: "dispatched", actionId: "one" });
+    expect(await host.command({ kind: "note", text: "right after" }, wizard)).toMatchObject({ ok: true });
+    const [, , , dispatched, note] = await transactions(trialId);
+    expect(dispatched).not.toBe(note);
+    await host.close();
+  });
+
   it("leaves the reports waiting when the command is refused: they go in an append of their own", async () => {
     const { trialId, robot, host } = await oneLineSaid();
     robot.tell({ kind: "dispatched", actionId: "one" });
@@ -415,10 +426,13 @@ describe("a live trial host", async () => {
       setTimeout(() => void append(), 100);
       return Promise.reject(Object.assign(new Error("write CONNECTION_CLOSED"), { code: "CONNECTION_CLOSED" }));
     });
-    const { trialId, robot, host } = await oneLineSaid(ghost.db);
+    const { trialId, wizard, robot, host } = await oneLineSaid(ghost.db);
     ghost.arm();
     await expect(host.command(say("ghost-line"), null)).rejects.toThrow("CONNECTION_CLOSED");
     await expect.poll(async () => (await eventsSince(db, trialId)).length).toBe(4);
+    // Two commands at once (refused, logging nothing): the wizard back to back again, so the report waits for the note.
+    const jump = { kind: "jump", stepId: "s1" } as const;
+    await Promise.all([host.command(jump, wizard), host.command(jump, wizard)]);
     robot.tell({ kind: "dispatched", actionId: "one" });
     expect(await host.command({ kind: "note", text: "after" }, null)).toEqual({
       ok: false,

@@ -504,8 +504,18 @@ export class TrialHost {
       return;
     }
     this.reports = [report];
-    if (this.pace.backToBack) this.reportsDue = setTimeout(() => this.queueReports(), REPORTS_WAIT_MS);
+    if (this.nextCommandSoon()) this.reportsDue = setTimeout(() => this.queueReports(), REPORTS_WAIT_MS);
     else this.queueReports();
+  }
+
+  /**
+   * Whether the wizard's next command is likely in a moment: their commands come back to back, and the last
+   * was answered within BACK_TO_BACK_MS (later, such a wizard would have sent the next). A report long after
+   * (a line's end, seconds on) is logged at once, at the time it came.
+   */
+  private nextCommandSoon(): boolean {
+    const { backToBack, waiting, answeredAt } = this.pace;
+    return backToBack && (waiting > 0 || Date.now() - answeredAt < BACK_TO_BACK_MS);
   }
 
   /**
