@@ -487,13 +487,14 @@ export class TrialHost {
   /**
    * What the robot's side reports (dispatched, completed, failed, timed out),
    * logged in turn like a command, never refused for lateness. While the
-   * wizard gives commands back to back, reports wait `REPORTS_WAIT_MS` for the
-   * next, whose append carries them; else (and then) they go in the queue for
-   * their own, which a command's still carries if it comes first. Reports that come until their append is made
-   * up (the group writer makes it up as its commit begins) are decided
-   * together and written in that one append: an action's outcomes that happen
-   * together, such as a completion right after the dispatch, cost one commit,
-   * not one each.
+   * wizard's next command is likely in a moment (`nextCommandSoon`), reports
+   * wait `REPORTS_WAIT_MS` for it, and its append carries them; else (and
+   * then) they go in the queue for their own, which a command's still carries
+   * if it comes first. Reports that come until their append is made up (the
+   * group writer makes it up as its commit begins) are decided together and
+   * written in that one append: an action's outcomes that happen together,
+   * such as a completion right after the dispatch, cost one commit, not one
+   * each.
    */
   private report(report: RobotReport) {
     // Reports after the host closed: the trial is no longer run from here.
