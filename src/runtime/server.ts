@@ -262,13 +262,9 @@ export function startRuntimeServer({
     // Admitted: from here on, access changes reach this socket (and may close it).
     viewers.set(trialId, (viewers.get(trialId) ?? new Set()).add(ws));
     const host = await hosts.get(trialId);
+    if (ws.data.closed) return;
     // Run by another process: a wizard's stop must reach the robot from here too, with nothing to read first.
     if (!host && mayRun(access)) ws.data.releaseStop = stops.hold(trialId);
-    // Just opened for this hello: the log the host read to open it, kept up to date (one read, not two, and
-    // nothing can fall between it and the subscription below). Else the log is read here.
-    const log = host?.takeOpeningLog(lastSeq) ?? (await eventsSince(db, trialId, lastSeq));
-    if (ws.data.closed) return;
-    const shown = mayReadTrialLog(ws.data.access) ? log : [];
     // Until the welcome is sent, what the trial logs meanwhile waits, in order, behind it.
     let held: StoredEvent[][] | null = [];
     // Who may run the trial gets a batch at once (its ack follows it); the others a turn later, so a
@@ -283,9 +279,9 @@ export function startRuntimeServer({
       const status = events.reduce((s, e) => STATUS_AFTER[e.type] ?? s, now.trial.status);
       if (status !== now.trial.status) ws.data.access = { ...now, trial: { ...now.trial, status } };
     };
-    let seen = log.at(-1)?.seq ?? lastSeq;
+    let seen = lastSeq;
     const push = (events: StoredEvent[]) => {
-      seen = events.at(-1)?.seq ?? seen;
+      seen = Math.max(seen, events.at(-1)?.seq ?? seen);
       if (held) held.push(events);
       else deliver(events);
     };
@@ -296,7 +292,19 @@ export function startRuntimeServer({
       ws.data.unsubscribe = relay.follow(trialId, seen, push);
       if (mayRun(ws.data.access!)) ws.data.releaseStop ??= stops.hold(trialId);
     };
-    ws.data.unsubscribe = host ? host.subscribe(push, follow) : relay.follow(trialId, seen, push);
+    // Just opened for this hello: the log the host read to open it, kept up to date (one read, not two).
+    // Else the log is read here, after subscribing: what the host gives out during the read is held, and
+    // what the read has too dropped from it. Subscribed after the read, an event committed after the
+    // read's snapshot but given out before the subscription reached this page never (found by CI).
+    const opening = host?.takeOpeningLog(lastSeq);
+    if (host) ws.data.unsubscribe = host.subscribe(push, follow);
+    const log = opening ?? (await eventsSince(db, trialId, lastSeq));
+    if (ws.data.closed) return;
+    const logged = log.at(-1)?.seq ?? lastSeq;
+    seen = Math.max(seen, logged);
+    // The relay reads what committed between the read and this subscription itself.
+    if (!host) ws.data.unsubscribe = relay.follow(trialId, seen, push);
+    const shown = mayReadTrialLog(ws.data.access) ? log : [];
     const { texts, ends } = await welcomeParts(shown);
     if (ws.data.closed) return;
     const parts: string[] = [];
@@ -320,7 +328,10 @@ export function startRuntimeServer({
       iceServers,
     } satisfies ServerMessage);
     ws.data.outbox!.parts([...parts, withEvents(welcome, texts.slice(ends.at(-2) ?? 0))]);
-    for (const events of held) deliver(events);
+    for (const events of held) {
+      const fresh = events.filter((e) => e.seq > logged);
+      if (fresh.length) deliver(fresh);
+    }
     held = null;
     if (!host) {
       // Run by another process: its robot as the owner last recorded it; changes come as the owner says them.

@@ -109,6 +109,38 @@ describe.sequential("a live trial through the runtime", () => {
     observer.close();
   });
 
+  it("misses nothing for observers who join while the wizard's lines stream in", { timeout: 120_000 }, async () => {
+    // Found by CI: a hello read the log, then subscribed to the host; an event committed after the read's
+    // snapshot and given out before the subscription reached that observer never (seq 2,209 of 2,294).
+    const wizard = await open(wizardApi);
+    let streaming = true;
+    const stream = (async () => {
+      for (let batch = 0; streaming; batch++)
+        await Promise.all(
+          Array.from({ length: 10 }, (_, i) =>
+            wizard.command(`s${batch}-${i}`, { kind: "note", text: `Streamed ${batch}-${i}` }),
+          ),
+        );
+    })();
+    const observers: TrialSocket[] = [];
+    for (let i = 0; i < 20; i++) {
+      const observer = await open(observerApi);
+      await observer.next((m) => m.type === "welcome");
+      observers.push(observer);
+    }
+    streaming = false;
+    await stream;
+    const last = Math.max(...((await wizard.command("joined", { kind: "note", text: "All in" })).seqs as number[]));
+    for (const observer of observers) {
+      await observer.next(() => seqsOf(observer).includes(last));
+      const seen = seqsOf(observer);
+      expect(seen).toEqual(Array.from({ length: last - seen[0]! + 1 }, (_, i) => seen[0]! + i));
+      expect(seen[0]).toBe(1);
+      observer.close();
+    }
+    wizard.close();
+  });
+
   it("survives kill -9 of the runtime: the wizard resumes with nothing lost or repeated", async () => {
     const wizard = await open(wizardApi);
     const r2 = await wizard.command("r2", { kind: "next" });
