@@ -2,11 +2,11 @@
 // postmaster.pid names, and only that: a pid another program holds now is left
 // alone, and the stale file goes so that our own server can start.
 import { spawn } from "node:child_process";
-import { existsSync, mkdirSync, writeFileSync } from "node:fs";
+import { existsSync, mkdirSync, rmSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 import { afterAll, describe, expect, it } from "vitest";
 import { scratchFolder } from "../../tests/support/scratch";
-import { freePort, portIsFree, stopOrphan } from "./embedded";
+import { freePort, portIsFree, startEmbeddedPostgres, stopOrphan } from "./embedded";
 
 describe("a postmaster.pid left by a crash", () => {
   const stranger = spawn("sleep", ["60"], { stdio: "ignore" });
@@ -41,5 +41,22 @@ describe("a port for a service of ours", () => {
       await new Promise((ok) => held.close(ok));
     }
     expect(await portIsFree(port)).toBe(true);
+  });
+});
+
+describe("an embedded server stopped, then started again", () => {
+  it("stops at the next stop, and leaves its folder to be removed", { timeout: 120_000 }, async () => {
+    const dataDir = scratchFolder("restarted-");
+    const pg = await startEmbeddedPostgres({ dataDir });
+    const pidFile = join(dataDir, "postgres", "postmaster.pid");
+    await pg.stop();
+    expect(existsSync(pidFile)).toBe(false);
+    await pg.restart();
+    expect(existsSync(pidFile)).toBe(true);
+    await pg.stop();
+    // Stopped for good: no server left running past its stop, its pid file gone with it.
+    expect(existsSync(pidFile)).toBe(false);
+    expect(await portIsFree(pg.port)).toBe(true);
+    rmSync(dataDir, { recursive: true, force: true });
   });
 });

@@ -17,7 +17,7 @@ export interface EmbeddedDatabase {
    * the launcher starts it again, on the same data and port.
    */
   onCrash(listener: () => void): void;
-  /** Starts the server again after a crash; committed data is recovered from its log. */
+  /** Starts the server again after a crash or a stop; committed data is recovered from its log. */
   restart(): Promise<void>;
 }
 
@@ -150,6 +150,9 @@ export async function startEmbeddedPostgres(options: EmbeddedOptions): Promise<E
       crashed = listener;
     },
     async restart() {
+      // Running again: a stop after this one stops it (a restart after a stop had left the server running
+      // past the next stop, writing to a folder its test was removing: found by CI).
+      stopped = false;
       await pg.start();
       watch();
     },
