@@ -23,7 +23,7 @@ import { droppedReason, staleness } from "@/core/trial/freshness";
 import type { CameraFrame, RobotLink, RobotReport } from "./robot";
 import { type EventNames, NO_EVENT_NAMES } from "@/core/plugins/event-names";
 import type { Sensed } from "@/core/plugins/types";
-import { sampleRecorder } from "./samples";
+import { type SampleRecorder, type SampleWriter, sampleWriter } from "./samples";
 import { TrialTimers } from "./trial-timers";
 import { foldLiveState, UNKNOWN_STATE, type LiveRobotState } from "@/core/robots/live-state";
 
@@ -195,7 +195,7 @@ export class TrialHost {
   private readonly limits = new TrialTimers((timerId) => void this.command({ kind: "timer_fired", timerId }, null));
   /** Sounds handed to the wizard's browser to play, by action id, until it reports their end. */
   private readonly browserPlays = new Set<string>();
-  private readonly samples;
+  private readonly samples: SampleRecorder;
   private readonly stopWatching: () => void;
   private readonly stopSensing: () => void;
   /** The trial's t0, once started: samples are timed from it. */
@@ -232,13 +232,12 @@ export class TrialHost {
     state: TrialState,
     private readonly log: LogWriter,
     private readonly ownership: Ownership | null,
+    samples: SampleWriter,
   ) {
     this.state = state;
     this.t0 = startedAt(history);
     this.opening = history;
-    this.samples = sampleRecorder(db, trialId, (error) =>
-      console.error(`[runtime] trial ${trialId}: samples not stored: ${String(error)}`),
-    );
+    this.samples = samples.recorder(trialId);
     // What the robot's side reports goes in the log, for the analysis and the exports; the same one told again in a row, once.
     let lastProblem: string | null = null;
     robot.onProblem((text) => {
@@ -270,6 +269,8 @@ export class TrialHost {
     log: LogWriter = directWriter(db),
     /** Null for a host that is no process's owner (tests, tools): its appends are not fenced. */
     ownership: Ownership | null = null,
+    /** The process's, shared by its hosts; a host on its own (tests, tools) writes its samples alone. */
+    samples: SampleWriter = sampleWriter(db),
   ) {
     // Read and folded a page at a time: between pages, the event loop serves the other trials of this process.
     const history: StoredEvent[] = [];
@@ -278,7 +279,7 @@ export class TrialHost {
       for (const event of page) history.push(event);
       applyInPlace(state, page);
     }
-    const host = new TrialHost(db, trialId, protocol, robot, history, state, log, ownership);
+    const host = new TrialHost(db, trialId, protocol, robot, history, state, log, ownership, samples);
     for (const [id, seqs] of await answeredRequests(db, trialId))
       host.requests.set(id, Promise.resolve({ ok: true, seqs }));
     // Looked for without a pair per action: a long trial's tens of thousands held the event loop for 6-10 ms.

@@ -42,6 +42,7 @@ import { robotClaims, type RobotClaims } from "./robot-claims";
 import { logUnexpected } from "@/store/error-reference";
 import { TrialHost, type CommandResult } from "./trial-host";
 import { groupWriter } from "./log-writer";
+import { sampleWriter } from "./samples";
 
 export type RobotChoice = { ok: true; robot: RobotRecord } | { ok: false; reason: string };
 
@@ -80,6 +81,7 @@ export function trialHosts(
   const hosts = new Map<string, Promise<TrialHost | null>>();
   // Every trial of this process appends through one writer: one commit for what arrives together.
   const log = groupWriter(db);
+  const samples = sampleWriter(db);
   /** The robot claim each trial open here holds (none when its robot was claimed elsewhere as it opened). */
   const claimOf = new Map<string, Held>();
   /** Robots whose trial is starting now (not yet live in the database), or that a replay plays on. */
@@ -185,7 +187,7 @@ export function trialHosts(
       owns: () => locks.owns(trialId),
     };
     try {
-      host = await TrialHost.open(db, trialId, protocol, robot, log, ownership);
+      host = await TrialHost.open(db, trialId, protocol, robot, log, ownership, samples);
     } catch (error) {
       letGo(trialId);
       throw error;
