@@ -9,6 +9,7 @@ import { refusedByDatabase } from "@/store/client";
 import { insertSamples, type SampleRow } from "@/store/samples";
 
 const FLUSH_EVERY_MS = 500;
+/** Rows that are written at once, not half a second on: a statement's size stays bounded whatever the robots send. */
 const FLUSH_AT = 2000;
 
 /** One trial's samples, into the process's writer. */
