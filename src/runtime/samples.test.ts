@@ -40,6 +40,27 @@ describe("the sample writer", async () => {
     }
   });
 
+  it("writes two minutes of fifty trials' joint states sent at once, in bounded statements, none lost or reordered", {
+    timeout: 120_000,
+  }, async () => {
+    const writer = sampleWriter(db);
+    const trials = await Promise.all(Array.from({ length: 50 }, () => bareTrial(db)));
+    const recorders = trials.map((id) => writer.recorder(id));
+    // 10 a second for 120 s, each trial's in turn as they come: 60,000 rows, past the writer's bound many times over.
+    for (let k = 0; k < 1200; k++) recorders.forEach((r) => r.add("/joint_states", 100 * k, { k }));
+    await recorders[0]!.close();
+    const rows = await db.$client<Array<{ trial_id: string; k: number; xmin: string }>>`
+      select trial_id, (data->>'k')::int as k, xmin::text from trial_samples
+      where trial_id in ${db.$client(trials)} order by trial_id, id`;
+    expect(rows).toHaveLength(60_000);
+    for (const trialId of trials)
+      expect(rows.filter((r) => r.trial_id === trialId).map((r) => r.k)).toEqual(
+        Array.from({ length: 1200 }, (_, k) => k),
+      );
+    // Bounded: 2,000 rows a statement, so thirty commits, not one of 60,000 rows.
+    expect(new Set(rows.map((r) => r.xmin)).size).toBe(30);
+  });
+
   it("writes what waits half a second after the first sample came, without being asked", async () => {
     const writer = sampleWriter(db);
     const trialId = await bareTrial(db);

@@ -36,7 +36,11 @@ export function sampleWriter(db: Database, onError: (trialId: string, error: unk
       await insertSamples(db, rows);
     } catch (error) {
       const trials = new Map<string, SampleRow[]>();
-      for (const row of rows) trials.set(row.trialId, [...(trials.get(row.trialId) ?? []), row]);
+      for (const row of rows) {
+        const own = trials.get(row.trialId);
+        if (own) own.push(row);
+        else trials.set(row.trialId, [row]);
+      }
       if (trials.size === 1 || !refusedByDatabase(error)) {
         for (const trialId of trials.keys()) onError(trialId, error);
         return;
