@@ -73,8 +73,11 @@ describe.sequential("two robots, two wizards", () => {
     const trialIds = trialPaths.map((p) => p.split("/").pop()!);
     for (const ear of ears)
       await explained(expect.poll(() => ear.heard, { timeout: 15_000 }).toEqual([GREETING]), { app, trialIds, pages });
-    // The analysis times each greeting as the robot spoke it: the simulator's speaking time (so many ms a
-    // character), within 50 ms, and confirmed by the robot's own "said" message, not estimated.
+    // The analysis times each greeting as the robot spoke it, confirmed by the robot's own "said" message,
+    // not estimated: from the request to the robot's end, so never shorter than the simulator's speaking time
+    // (so many ms a character). Longer by the path there and back, on a machine the whole suite shares: a
+    // CI run once took 452 ms for 400, so the bound above is wide; one that ends at the dispatch would be
+    // far below the lower.
     const researcher = apiClient(app.url, await signIn(app.url, "researcher@demo.hristudio", DEMO_PASSWORD));
     const greetingOf = async (trialId: string) => {
       const { protocol } = await researcher.trials.get.query({ trialId });
@@ -88,7 +91,10 @@ describe.sequential("two robots, two wizards", () => {
         pages,
       });
       const took = (await greetingOf(trialId)).durationMs!;
-      expect(Math.abs(took - SIMULATOR_MS_PER_CHAR * GREETING.length), `took ${took} ms`).toBeLessThanOrEqual(50);
+      const speaking = SIMULATOR_MS_PER_CHAR * GREETING.length;
+      // A timer may fire a millisecond early, and each time is rounded to the millisecond.
+      expect(took, `took ${took} ms`).toBeGreaterThanOrEqual(speaking - 2);
+      expect(took, `took ${took} ms`).toBeLessThanOrEqual(speaking + 250);
     }
     // What the robot is doing reaches the wizard's page: its posture and battery, from the robot.
     for (const page of pages) {
