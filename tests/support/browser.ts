@@ -2,7 +2,7 @@
 // page they reach is checked against WCAG 2.1 AA (./accessibility): the
 // sign-in form, each screenshot, and each page as a test leaves it.
 import { chromium, type Browser, type BrowserContext, type Page } from "playwright-core";
-import { mkdirSync, mkdtempSync, writeFileSync } from "node:fs";
+import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, resolve } from "node:path";
 import { checkPagesOnClose, expectAccessible } from "./accessibility";
@@ -19,18 +19,23 @@ const root = resolve(import.meta.dirname, "..", "..");
 export async function launchBrowser({ lowPriority = false } = {}): Promise<Browser> {
   const found = findChromium();
   if (!found) throw new Error("Chromium not found: install Debian's chromium package or set HRI_CHROMIUM.");
-  let executablePath = found;
-  if (lowPriority) {
-    executablePath = join(mkdtempSync(join(tmpdir(), "hri-chromium-")), "chromium");
-    // Playwright starts the browser in a session of its own, and the kernel's autogroup scheduling shares
-    // the CPU between sessions before it looks at nice: the session's own weight must be lowered too.
-    writeFileSync(
-      executablePath,
-      `#!/bin/sh\necho 19 > /proc/self/autogroup 2>/dev/null\nexec nice -n 19 ${JSON.stringify(found)} "$@"\n`,
-      { mode: 0o755 },
-    );
-  }
-  return chromium.launch({ executablePath, args: CHROMIUM_ARGS, headless: true });
+  if (!lowPriority) return chromium.launch({ executablePath: found, args: CHROMIUM_ARGS, headless: true });
+  const wrapper = mkdtempSync(join(tmpdir(), "hri-chromium-"));
+  const executablePath = join(wrapper, "chromium");
+  // Playwright starts the browser in a session of its own, and the kernel's autogroup scheduling shares
+  // the CPU between sessions before it looks at nice: the session's own weight must be lowered too.
+  writeFileSync(
+    executablePath,
+    `#!/bin/sh\necho 19 > /proc/self/autogroup 2>/dev/null\nexec nice -n 19 ${JSON.stringify(found)} "$@"\n`,
+    { mode: 0o755 },
+  );
+  // Removed as the browser goes: a wrapper in the machine's temporary folder, one a run, was left behind.
+  const browser = await chromium.launch({ executablePath, args: CHROMIUM_ARGS, headless: true }).catch((error) => {
+    rmSync(wrapper, { recursive: true, force: true });
+    throw error;
+  });
+  browser.on("disconnected", () => rmSync(wrapper, { recursive: true, force: true }));
+  return browser;
 }
 
 /**
