@@ -267,16 +267,23 @@ export function startRuntimeServer({
     if (!host && mayRun(access)) ws.data.releaseStop = stops.hold(trialId);
     // Until the welcome is sent, what the trial logs meanwhile waits, in order, behind it.
     let held: StoredEvent[][] | null = [];
+    // The last seq this page has: each event reaches it once, in order. A batch committed before the log's
+    // read may be given out by the host after the welcome (the two answers come on different connections):
+    // what the read had is not sent again (found by CI: an observer got seq 2,569 twice).
+    let given = lastSeq;
     // Who may run the trial gets a batch at once (its ack follows it); the others a turn later, so a
     // trial's many observers never stand between the wizard and the ack.
-    const deliver = (events: StoredEvent[]) => {
+    const deliver = (batch: StoredEvent[]) => {
       const now = ws.data.access!;
-      if (mayReadTrialLog(now)) {
+      // The host's batch itself when all of it is new: its text is then made once for all its pages.
+      const events = (batch[0]?.seq ?? 0) > given ? batch : batch.filter((e) => e.seq > given);
+      if (events.length) given = events.at(-1)!.seq;
+      if (events.length && mayReadTrialLog(now)) {
         if (mayRun(now)) ws.data.outbox!.send(eventsMessage(events));
         else ws.data.outbox!.later(eventsMessage(events));
       }
       // Follow the trial's status, so a log that becomes results stops flowing.
-      const status = events.reduce((s, e) => STATUS_AFTER[e.type] ?? s, now.trial.status);
+      const status = batch.reduce((s, e) => STATUS_AFTER[e.type] ?? s, now.trial.status);
       if (status !== now.trial.status) ws.data.access = { ...now, trial: { ...now.trial, status } };
     };
     let seen = lastSeq;
@@ -302,6 +309,7 @@ export function startRuntimeServer({
     if (ws.data.closed) return;
     const logged = log.at(-1)?.seq ?? lastSeq;
     seen = Math.max(seen, logged);
+    given = logged;
     // The relay reads what committed between the read and this subscription itself.
     if (!host) ws.data.unsubscribe = relay.follow(trialId, seen, push);
     const shown = mayReadTrialLog(ws.data.access) ? log : [];
@@ -328,10 +336,7 @@ export function startRuntimeServer({
       iceServers,
     } satisfies ServerMessage);
     ws.data.outbox!.parts([...parts, withEvents(welcome, texts.slice(ends.at(-2) ?? 0))]);
-    for (const events of held) {
-      const fresh = events.filter((e) => e.seq > logged);
-      if (fresh.length) deliver(fresh);
-    }
+    for (const events of held) deliver(events);
     held = null;
     if (!host) {
       // Run by another process: its robot as the owner last recorded it; changes come as the owner says them.
