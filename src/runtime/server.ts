@@ -283,7 +283,7 @@ export function startRuntimeServer({
         else ws.data.outbox!.later(eventsMessage(events));
       }
       // Follow the trial's status, so a log that becomes results stops flowing.
-      const status = batch.reduce((s, e) => STATUS_AFTER[e.type] ?? s, now.trial.status);
+      const status = events.reduce((s, e) => STATUS_AFTER[e.type] ?? s, now.trial.status);
       if (status !== now.trial.status) ws.data.access = { ...now, trial: { ...now.trial, status } };
     };
     let seen = lastSeq;
